@@ -1,4 +1,4 @@
-//! A thin wrapper over the `roots` crate's Brent method: analytic bracket in,
+//! A thin wrapper over the `roots` crate: analytic bracket (and a guess) in,
 //! root and evaluation count out.
 //!
 //! Every event time of the exact solver is the unique sign change of a function
@@ -36,29 +36,66 @@ impl roots::Convergency<f64> for Tolerance {
     }
 }
 
-/// Root of `f` on `[lo, hi]`, where `f(lo)` and `f(hi)` should have opposite signs.
+/// Root of `f` on `[lo, hi]`, where `f(lo)` and `f(hi)` should have opposite signs,
+/// by the Illinois variant of regula falsi (`roots::find_root_regula_falsi`).
 ///
-/// `rtol` is the relative width at which the search stops. If rounding has
+/// `rtol` is the relative bracket width at which the search stops. If rounding has
 /// removed the sign change (a collapsed bracket), the end with the smaller `|f|`
-/// is returned. Brent's method cannot fail on a valid bracket within its
-/// iteration limit; if it ever did, the last bracket midpoint is returned.
-pub fn brent(f: impl Fn(f64) -> f64, lo: f64, hi: f64, rtol: f64) -> Root {
+/// is returned without iterating.
+pub fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, rtol: f64) -> Root {
     let count = Cell::new(0u32);
     let g = |x: f64| {
         count.set(count.get() + 1);
         f(x)
     };
     let (flo, fhi) = (g(lo), g(hi));
-    if flo == 0.0 {
-        return Root { x: lo, evaluations: count.get() };
-    }
-    if fhi == 0.0 || flo.signum() == fhi.signum() {
-        let x = if fhi.abs() <= flo.abs() { hi } else { lo };
+    if let Some(x) = collapsed(lo, flo, hi, fhi) {
         return Root { x, evaluations: count.get() };
     }
+    // The crate evaluates the ends again; the two extra calls are counted too.
     let mut tol = Tolerance { rtol, max_iter: 200 };
-    let x = roots::find_root_brent(lo, hi, &g, &mut tol).unwrap_or(0.5 * (lo + hi));
+    let x = roots::find_root_regula_falsi(lo, hi, &g, &mut tol).unwrap_or(0.5 * (lo + hi));
     Root { x, evaluations: count.get() }
+}
+
+/// The root when the bracket has no sign change left (or an end is a root).
+fn collapsed(lo: f64, flo: f64, hi: f64, fhi: f64) -> Option<f64> {
+    if flo == 0.0 {
+        Some(lo)
+    } else if fhi == 0.0 || flo.signum() == fhi.signum() {
+        Some(if fhi.abs() <= flo.abs() { hi } else { lo })
+    } else {
+        None
+    }
+}
+
+/// Root of `f` (derivative `df`) in `[lo, hi]` by Newton's method from `guess`
+/// (`roots::find_root_newton_raphson`), which stops once a step is below
+/// `rtol * |x|` (the last step then squares the error). If Newton fails or leaves
+/// the bracket, [`bracketed`] takes over on `[lo, hi]`.
+pub fn newton(
+    f: impl Fn(f64) -> f64,
+    df: impl Fn(f64) -> f64,
+    lo: f64,
+    hi: f64,
+    guess: f64,
+    rtol: f64,
+) -> Root {
+    let count = Cell::new(0u32);
+    let g = |x: f64| {
+        count.set(count.get() + 1);
+        f(x)
+    };
+    let mut tol = Tolerance { rtol, max_iter: 12 };
+    let start = guess.clamp(lo, hi);
+    match roots::find_root_newton_raphson(start, &g, &df, &mut tol) {
+        Ok(x) if x >= lo && x <= hi => Root { x, evaluations: count.get() },
+        _ => {
+            let mut r = bracketed(f, lo, hi, rtol);
+            r.evaluations += count.get();
+            r
+        }
+    }
 }
 
 #[cfg(test)]
@@ -67,15 +104,34 @@ mod tests {
 
     #[test]
     fn finds_a_simple_root_to_the_requested_tolerance() {
-        let r = brent(|x| x * x - 2.0, 0.0, 2.0, 1e-15);
+        let r = bracketed(|x| x * x - 2.0, 0.0, 2.0, 1e-15);
         assert!((r.x - std::f64::consts::SQRT_2).abs() < 4e-15);
         assert!(r.evaluations > 2 && r.evaluations < 20, "{}", r.evaluations);
     }
 
     #[test]
     fn collapsed_bracket_returns_the_better_end() {
-        let r = brent(|x| (x - 1.0).powi(2), 1.0 + 1e-9, 3.0, 1e-15);
+        let r = bracketed(|x| (x - 1.0).powi(2), 1.0 + 1e-9, 3.0, 1e-15);
         assert_eq!(r.x, 1.0 + 1e-9);
         assert_eq!(r.evaluations, 2);
+    }
+}
+
+#[cfg(test)]
+mod newton_tests {
+    use super::*;
+
+    #[test]
+    fn newton_converges_quadratically_from_a_close_guess() {
+        let r = newton(|x| x * x - 2.0, |x| 2.0 * x, 0.0, 2.0, 1.4, 1e-10);
+        assert!((r.x - std::f64::consts::SQRT_2).abs() < 4e-16);
+        assert!(r.evaluations <= 5, "{}", r.evaluations);
+    }
+
+    #[test]
+    fn newton_leaving_the_bracket_falls_back_to_regula_falsi() {
+        // From 0.1 the first Newton step of x^2 - 2 jumps to 10.05, outside [0, 2].
+        let r = newton(|x| x * x - 2.0, |x| 2.0 * x, 0.0, 2.0, 0.1, 1e-14);
+        assert!((r.x - std::f64::consts::SQRT_2).abs() < 1e-14);
     }
 }

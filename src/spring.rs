@@ -168,10 +168,34 @@ fn velocity_angles(vbar: f64) -> (f64, f64) {
     (w, 2.0 * (0.5 * w).sqrt().asin())
 }
 
+/// Newton start for the stick length of a tangent start, `L(alpha)`: a fit of
+/// `L/alpha = 3 + 0.1 alpha^2 + ...` (exact slope `3` as `vbar -> 1`), and
+/// `L = 2 pi - 2 sqrt(pi vbar)(1 + 0.45 vbar)` as `vbar -> 0` (within 1 %).
+fn tangent_length_guess(alpha: f64, vbar: f64) -> f64 {
+    if vbar < 0.2 {
+        TAU - 2.0 * (PI * vbar).sqrt() * (1.0 + 0.45 * vbar)
+    } else {
+        let a2 = alpha * alpha;
+        alpha * (3.0 + a2 * (0.1 + a2 * (0.01 + 0.018 * a2)))
+    }
+}
+
 /// Solve the stick phase starting at `beta` (root of `H` and the deficit).
-fn stick_phase(beta: f64, w: f64, alpha: f64, x_max: f64, rtol: f64) -> (f64, f64, u32) {
+///
+/// The root lies in `[alpha + beta, x_max]`, where `H` falls from its maximum.
+/// Newton starts from [`tangent_length_guess`], scaled for a start at contact
+/// by the ratio `L / (alpha + beta)`, which runs from 2 (`beta -> -alpha`, where
+/// `H ~ eps x - |s| x^2/2`) to the tangent value.
+fn stick_phase(beta: f64, vbar: f64, w: f64, alpha: f64, x_max: f64, rtol: f64) -> (f64, f64, u32) {
     let lo = alpha + beta;
-    let r = root::brent(|x| gap(beta, w, x), lo, x_max, rtol);
+    let lt = tangent_length_guess(alpha, vbar);
+    let guess = if beta == alpha {
+        lt
+    } else {
+        let ratio_t = lt / (2.0 * alpha);
+        lo * (2.0 + (ratio_t - 2.0) * lo / (2.0 * alpha))
+    };
+    let r = root::newton(|x| gap(beta, w, x), |x| (beta - x).cos() - vbar, lo, x_max, guess, rtol);
     // The deficit is a mean of a non-negative gap; rounding must not flip it.
     let d = (deficit_2pi(beta, w, r.x) / TAU).max(0.0);
     (r.x, d, r.evaluations)
@@ -225,7 +249,7 @@ impl Spring {
             out.regime = Regime::JumpingSlip;
             return out;
         };
-        let (length, deficit, evals) = stick_phase(beta, w, alpha, x_max, rtol);
+        let (length, deficit, evals) = stick_phase(beta, vbar, w, alpha, x_max, rtol);
         let start_force = if regime == Regime::JumpingStickFirst { 0.0 } else { s - c };
         out.regime = regime;
         out.deficit = deficit;
