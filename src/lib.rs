@@ -30,3 +30,7 @@ pub mod spring;
 pub mod stepper;
 
 pub use error::{Error, Result};
+pub mod batch;
+pub mod grid;
+pub mod output;
+pub mod shape;

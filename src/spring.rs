@@ -292,13 +292,15 @@ impl Spring {
             });
         }
         if let Some(st) = self.stick {
-            let t0 = st.start();
+            // A stick from contact starts exactly at the contact phase theta.
+            let t0 = if self.regime == Regime::JumpingStickFirst { self.s.acos() } else { st.start() };
             let t1 = t0 + st.length;
             let f1 = st.start_force + self.vbar * st.length;
             let n0 = if self.regime == Regime::JumpingStickFirst { 0.0 } else { bound(t0) };
             ev.push(Event { kind: EventKind::Stick, tau: wrap(t0), normal: n0, tangential: st.start_force });
             ev.push(Event { kind: EventKind::Slip, tau: wrap(t1), normal: bound(t1), tangential: f1 });
         }
+        // Stable sort: at equal phases the contact precedes the stick it starts.
         ev.sort_by(|a, b| a.tau.total_cmp(&b.tau));
         ev
     }
