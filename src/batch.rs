@@ -16,7 +16,10 @@ pub const MAX_ROWS: usize = 10_000_000;
 
 /// Evaluate every row of `text` (a JSON array); `source` names the input in errors.
 pub fn run(text: &str, source: &str) -> Result<Vec<Map<String, Value>>> {
-    let parse_err = |reason: String| Error::Parse { context: source.into(), reason };
+    let parse_err = |reason: String| Error::Parse {
+        context: source.into(),
+        reason,
+    };
     if text.trim().is_empty() {
         return Err(parse_err("empty input (expected a JSON array)".into()));
     }
@@ -25,7 +28,11 @@ pub fn run(text: &str, source: &str) -> Result<Vec<Map<String, Value>>> {
         return Err(parse_err("expected a JSON array of objects".into()));
     };
     if rows.len() > MAX_ROWS {
-        return Err(Error::TooLarge { what: format!("batch {source}"), count: rows.len() as u128, limit: MAX_ROWS as u128 });
+        return Err(Error::TooLarge {
+            what: format!("batch {source}"),
+            count: rows.len() as u128,
+            limit: MAX_ROWS as u128,
+        });
     }
     let mut shapes: HashMap<String, Shape> = HashMap::new();
     let mut out = Vec::with_capacity(rows.len());
@@ -40,7 +47,9 @@ pub fn run(text: &str, source: &str) -> Result<Vec<Map<String, Value>>> {
             None => return Err(row_err("missing field 'shape'".into())),
         };
         let number = |name: &str| match obj.get(name) {
-            Some(Value::Number(n)) => n.as_f64().ok_or_else(|| row_err(format!("'{name}' is not a finite number"))),
+            Some(Value::Number(n)) => n
+                .as_f64()
+                .ok_or_else(|| row_err(format!("'{name}' is not a finite number"))),
             Some(_) => Err(row_err(format!("'{name}' must be a number"))),
             None => Err(row_err(format!("missing field '{name}'"))),
         };

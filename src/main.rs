@@ -12,7 +12,11 @@ use std::io::{self, Read, Write};
 use std::process::ExitCode;
 
 #[derive(Parser)]
-#[command(name = "fricosc", version, about = "Exact friction under normal oscillation (Popov, Popov, Popov 2017)")]
+#[command(
+    name = "fricosc",
+    version,
+    about = "Exact friction under normal oscillation (Popov, Popov, Popov 2017)"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -79,7 +83,10 @@ fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
 }
 
 fn io_err(e: io::Error) -> Error {
-    Error::Io { path: "stdout".into(), reason: e.to_string() }
+    Error::Io {
+        path: "stdout".into(),
+        reason: e.to_string(),
+    }
 }
 
 fn point(a: PointArgs) -> Result<()> {
@@ -93,7 +100,10 @@ fn point(a: PointArgs) -> Result<()> {
     let json = match shape {
         Shape::Flat => {
             let p = fricosc::flat::point(vbar, amp)?;
-            let mut v = serde_json::to_value(&p).map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })?;
+            let mut v = serde_json::to_value(&p).map_err(|e| Error::Parse {
+                context: "output".into(),
+                reason: e.to_string(),
+            })?;
             let mut obj = serde_json::Map::new();
             obj.insert("shape".into(), shape.name().into());
             if let serde_json::Value::Object(m) = &mut v {
@@ -117,7 +127,11 @@ fn table(a: TableArgs) -> Result<()> {
     };
     let total = amps.len() as u128 * vels.len() as u128;
     if total > fricosc::grid::MAX_LIST {
-        return Err(Error::TooLarge { what: "table".into(), count: total, limit: fricosc::grid::MAX_LIST });
+        return Err(Error::TooLarge {
+            what: "table".into(),
+            count: total,
+            limit: fricosc::grid::MAX_LIST,
+        });
     }
     // Validate every input before the first byte is written.
     for &amp in &amps {
@@ -153,11 +167,17 @@ fn read_input(file: Option<String>) -> Result<(String, String)> {
     match file.as_deref() {
         None | Some("-") => {
             let mut s = String::new();
-            io::stdin().read_to_string(&mut s).map_err(|e| Error::Io { path: "stdin".into(), reason: e.to_string() })?;
+            io::stdin().read_to_string(&mut s).map_err(|e| Error::Io {
+                path: "stdin".into(),
+                reason: e.to_string(),
+            })?;
             Ok((s, "stdin".into()))
         }
         Some(p) => {
-            let s = std::fs::read_to_string(p).map_err(|e| Error::Io { path: p.into(), reason: e.to_string() })?;
+            let s = std::fs::read_to_string(p).map_err(|e| Error::Io {
+                path: p.into(),
+                reason: e.to_string(),
+            })?;
             Ok((s, p.into()))
         }
     }
@@ -186,8 +206,12 @@ fn main() -> ExitCode {
             } else {
                 // One line: clap's message up to its usage block, joined.
                 let msg = e.to_string();
-                let text: Vec<&str> =
-                    msg.lines().map(str::trim).take_while(|l| !l.starts_with("Usage:")).filter(|l| !l.is_empty()).collect();
+                let text: Vec<&str> = msg
+                    .lines()
+                    .map(str::trim)
+                    .take_while(|l| !l.starts_with("Usage:"))
+                    .filter(|l| !l.is_empty())
+                    .collect();
                 eprintln!("{}", text.join(" "));
             }
             return ExitCode::from(code);

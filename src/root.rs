@@ -50,12 +50,18 @@ pub fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, rtol: f64) -> Root {
     };
     let (flo, fhi) = (g(lo), g(hi));
     if let Some(x) = collapsed(lo, flo, hi, fhi) {
-        return Root { x, evaluations: count.get() };
+        return Root {
+            x,
+            evaluations: count.get(),
+        };
     }
     // The crate evaluates the ends again; the two extra calls are counted too.
     let mut tol = Tolerance { rtol, max_iter: 200 };
     let x = roots::find_root_regula_falsi(lo, hi, &g, &mut tol).unwrap_or(0.5 * (lo + hi));
-    Root { x, evaluations: count.get() }
+    Root {
+        x,
+        evaluations: count.get(),
+    }
 }
 
 /// The root when the bracket has no sign change left (or an end is a root).
@@ -73,14 +79,7 @@ fn collapsed(lo: f64, flo: f64, hi: f64, fhi: f64) -> Option<f64> {
 /// (`roots::find_root_newton_raphson`), which stops once a step is below
 /// `rtol * |x|` (the last step then squares the error). If Newton fails or leaves
 /// the bracket, [`bracketed`] takes over on `[lo, hi]`.
-pub fn newton(
-    f: impl Fn(f64) -> f64,
-    df: impl Fn(f64) -> f64,
-    lo: f64,
-    hi: f64,
-    guess: f64,
-    rtol: f64,
-) -> Root {
+pub fn newton(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, hi: f64, guess: f64, rtol: f64) -> Root {
     let count = Cell::new(0u32);
     let g = |x: f64| {
         count.set(count.get() + 1);
@@ -89,7 +88,10 @@ pub fn newton(
     let mut tol = Tolerance { rtol, max_iter: 12 };
     let start = guess.clamp(lo, hi);
     match roots::find_root_newton_raphson(start, &g, &df, &mut tol) {
-        Ok(x) if x >= lo && x <= hi => Root { x, evaluations: count.get() },
+        Ok(x) if x >= lo && x <= hi => Root {
+            x,
+            evaluations: count.get(),
+        },
         _ => {
             let mut r = bracketed(f, lo, hi, rtol);
             r.evaluations += count.get();

@@ -17,7 +17,10 @@ impl Shape {
     pub fn parse(spec: &str) -> Result<Shape> {
         match spec.trim() {
             "flat" => Ok(Shape::Flat),
-            other => Err(Error::InvalidShape { spec: other.into(), reason: "unknown shape (known: flat)".into() }),
+            other => Err(Error::InvalidShape {
+                spec: other.into(),
+                reason: "unknown shape (known: flat)".into(),
+            }),
         }
     }
 
@@ -46,6 +49,9 @@ pub const FLAT_ERROR_BOUND: f64 = 1e-15;
 /// Evaluate `mu_macro/mu0` for `shape` at `(vbar, amp)`; both finite and `>= 0`.
 pub fn evaluate(shape: &Shape, vbar: f64, amp: f64) -> Result<Evaluation> {
     match shape {
-        Shape::Flat => Ok(Evaluation { ratio: flat::ratio(vbar, amp)?, error_estimate: FLAT_ERROR_BOUND }),
+        Shape::Flat => Ok(Evaluation {
+            ratio: flat::ratio(vbar, amp)?,
+            error_estimate: FLAT_ERROR_BOUND,
+        }),
     }
 }

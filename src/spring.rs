@@ -233,7 +233,11 @@ impl Spring {
             return out;
         }
         if vbar >= 1.0 {
-            out.regime = if s >= 1.0 { Regime::PermanentSlip } else { Regime::JumpingSlip };
+            out.regime = if s >= 1.0 {
+                Regime::PermanentSlip
+            } else {
+                Regime::JumpingSlip
+            };
             return out;
         }
         let (w, alpha) = velocity_angles(vbar);
@@ -250,10 +254,18 @@ impl Spring {
             return out;
         };
         let (length, deficit, evals) = stick_phase(beta, vbar, w, alpha, x_max, rtol);
-        let start_force = if regime == Regime::JumpingStickFirst { 0.0 } else { s - c };
+        let start_force = if regime == Regime::JumpingStickFirst {
+            0.0
+        } else {
+            s - c
+        };
         out.regime = regime;
         out.deficit = deficit;
-        out.stick = Some(Stick { beta, length, start_force });
+        out.stick = Some(Stick {
+            beta,
+            length,
+            start_force,
+        });
         out.root_evaluations = evals;
         out
     }
@@ -283,7 +295,12 @@ impl Spring {
         if self.s < 1.0 {
             // Contact from theta = arccos s to 2 pi - theta (eq. 18).
             let theta = self.s.acos();
-            ev.push(Event { kind: EventKind::Contact, tau: theta, normal: 0.0, tangential: 0.0 });
+            ev.push(Event {
+                kind: EventKind::Contact,
+                tau: theta,
+                normal: 0.0,
+                tangential: 0.0,
+            });
             ev.push(Event {
                 kind: EventKind::LossOfContact,
                 tau: wrap(TAU - theta),
@@ -293,12 +310,30 @@ impl Spring {
         }
         if let Some(st) = self.stick {
             // A stick from contact starts exactly at the contact phase theta.
-            let t0 = if self.regime == Regime::JumpingStickFirst { self.s.acos() } else { st.start() };
+            let t0 = if self.regime == Regime::JumpingStickFirst {
+                self.s.acos()
+            } else {
+                st.start()
+            };
             let t1 = t0 + st.length;
             let f1 = st.start_force + self.vbar * st.length;
-            let n0 = if self.regime == Regime::JumpingStickFirst { 0.0 } else { bound(t0) };
-            ev.push(Event { kind: EventKind::Stick, tau: wrap(t0), normal: n0, tangential: st.start_force });
-            ev.push(Event { kind: EventKind::Slip, tau: wrap(t1), normal: bound(t1), tangential: f1 });
+            let n0 = if self.regime == Regime::JumpingStickFirst {
+                0.0
+            } else {
+                bound(t0)
+            };
+            ev.push(Event {
+                kind: EventKind::Stick,
+                tau: wrap(t0),
+                normal: n0,
+                tangential: st.start_force,
+            });
+            ev.push(Event {
+                kind: EventKind::Slip,
+                tau: wrap(t1),
+                normal: bound(t1),
+                tangential: f1,
+            });
         }
         // Stable sort: at equal phases the contact precedes the stick it starts.
         ev.sort_by(|a, b| a.tau.total_cmp(&b.tau));

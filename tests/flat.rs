@@ -1,4 +1,6 @@
 //! The single spring (flat punch) against derived limits and independent values.
+// Reference values keep all their published digits on purpose.
+#![allow(clippy::excessive_precision)]
 mod common;
 use common::tol;
 use fricosc::flat::ratio;
@@ -26,7 +28,11 @@ fn reduction_keeps_full_relative_accuracy_down_to_1_minus_vbar_1e_12() {
     for (amp, v, red) in NEAR_CRITICAL {
         let r = ratio(v, amp).unwrap();
         let rel = (r.reduction - red).abs() / red;
-        assert!(rel <= tol::REDUCTION_REL, "amp={amp} vbar={v}: {} vs {red} (rel {rel:e})", r.reduction);
+        assert!(
+            rel <= tol::REDUCTION_REL,
+            "amp={amp} vbar={v}: {} vs {red} (rel {rel:e})",
+            r.reduction
+        );
         // mu_ratio itself is 1 - reduction to rounding.
         assert!((r.mu_ratio - (1.0 - red)).abs() <= f64::EPSILON);
     }
@@ -54,7 +60,10 @@ fn zero_velocity_limit_is_1_minus_amp_without_contact_loss_and_0_with_it() {
         assert!((mu(0.0, a) - (1.0 - a)).abs() <= tol::FLAT_ABS, "a = {a}");
         // Approach: mu = 1 - a + a pi vbar + O(vbar^{3/2}) (eq. 12's first terms).
         let v = 1e-10;
-        assert!((mu(v, a) - (1.0 - a + a * PI * v)).abs() < 10.0 * v.powf(1.5) + 1e-15, "a = {a}");
+        assert!(
+            (mu(v, a) - (1.0 - a + a * PI * v)).abs() < 10.0 * v.powf(1.5) + 1e-15,
+            "a = {a}"
+        );
     }
     for a in [1.0 + 1e-12, 1.5, 2.0, 10.0, 1e300] {
         assert!(mu(0.0, a).abs() <= tol::FLAT_ABS, "a = {a}: {}", mu(0.0, a));
@@ -135,7 +144,14 @@ fn continuous_at_the_critical_velocity() {
 
 #[test]
 fn bad_parameters_are_errors_not_panics() {
-    for (v, a) in [(f64::NAN, 0.5), (0.5, f64::NAN), (f64::INFINITY, 0.5), (0.5, f64::INFINITY), (-0.1, 0.5), (0.5, -1e-300)] {
+    for (v, a) in [
+        (f64::NAN, 0.5),
+        (0.5, f64::NAN),
+        (f64::INFINITY, 0.5),
+        (0.5, f64::INFINITY),
+        (-0.1, 0.5),
+        (0.5, -1e-300),
+    ] {
         assert!(ratio(v, a).is_err(), "v={v} a={a}");
         assert!(fricosc::flat::point(v, a).is_err());
     }
@@ -155,9 +171,19 @@ fn events_are_on_the_bound_and_in_order() {
         }
     }
     // Stick from contact: contact, stick at the same phase, slip, loss.
-    let kinds: Vec<_> = fricosc::flat::point(0.3, 1.5).unwrap().events.iter().map(|e| format!("{:?}", e.kind)).collect();
+    let kinds: Vec<_> = fricosc::flat::point(0.3, 1.5)
+        .unwrap()
+        .events
+        .iter()
+        .map(|e| format!("{:?}", e.kind))
+        .collect();
     assert_eq!(kinds, ["Contact", "Stick", "Slip", "LossOfContact"]);
-    let kinds: Vec<_> = fricosc::flat::point(0.95, 4.0).unwrap().events.iter().map(|e| format!("{:?}", e.kind)).collect();
+    let kinds: Vec<_> = fricosc::flat::point(0.95, 4.0)
+        .unwrap()
+        .events
+        .iter()
+        .map(|e| format!("{:?}", e.kind))
+        .collect();
     assert_eq!(kinds, ["Contact", "Stick", "Slip", "LossOfContact"]);
 }
 

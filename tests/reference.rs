@@ -7,7 +7,10 @@ fn the_copy_in_data_equals_shared_when_present() {
     let shared = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/reference-values.json");
     if let Ok(text) = std::fs::read_to_string(shared) {
         let ours = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/reference-values.json")).unwrap();
-        assert_eq!(text, ours, "data/reference-values.json is stale: copy shared/reference-values.json");
+        assert_eq!(
+            text, ours,
+            "data/reference-values.json is stale: copy shared/reference-values.json"
+        );
     }
 }
 
@@ -17,10 +20,22 @@ fn flat_cases_match_to_1e_14() {
     for c in reference_cases().iter().filter(|c| c.shape == "flat") {
         let r = fricosc::flat::ratio(c.vbar, c.amp).unwrap();
         let err = (r.mu_ratio - c.mu_ratio).abs();
-        assert!(err <= tol::FLAT_ABS, "flat vbar={} amp={}: {} vs {} (err {err:e})", c.vbar, c.amp, r.mu_ratio, c.mu_text);
+        assert!(
+            err <= tol::FLAT_ABS,
+            "flat vbar={} amp={}: {} vs {} (err {err:e})",
+            c.vbar,
+            c.amp,
+            r.mu_ratio,
+            c.mu_text
+        );
         if c.reduction > 0.0 {
             let rel = (r.reduction - c.reduction).abs() / c.reduction;
-            assert!(rel <= 1e-13, "reduction rel err {rel:e} at vbar={} amp={}", c.vbar, c.amp);
+            assert!(
+                rel <= 1e-13,
+                "reduction rel err {rel:e} at vbar={} amp={}",
+                c.vbar,
+                c.amp
+            );
         } else {
             assert_eq!(r.reduction, 0.0);
         }

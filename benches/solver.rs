@@ -1,0 +1,21 @@
+//! Criterion benchmarks of the hot paths. `cargo bench --bench solver`
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+
+fn flat(c: &mut Criterion) {
+    // A sweep over regimes: permanent contact, jumping stick-first and slip-first.
+    let points: Vec<(f64, f64)> = (0..100)
+        .map(|i| ((i % 10) as f64 / 10.0 + 0.05, [0.5, 1.5, 3.0, 0.9][i % 4]))
+        .collect();
+    c.bench_function("flat point (mean over 100 regimes mix)", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for &(v, a) in &points {
+                acc += fricosc::flat::ratio(black_box(v), black_box(a)).unwrap().mu_ratio;
+            }
+            acc
+        })
+    });
+}
+
+criterion_group!(benches, flat);
+criterion_main!(benches);

@@ -1,0 +1,175 @@
+//! The command-line interface: each subcommand, and bad input.
+// Reference values keep all their published digits on purpose.
+#![allow(clippy::excessive_precision)]
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn fricosc(args: &[&str], stdin: Option<&str>) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_fricosc"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut input = child.stdin.take().unwrap();
+    if let Some(s) = stdin {
+        input.write_all(s.as_bytes()).unwrap();
+    }
+    drop(input);
+    child.wait_with_output().unwrap()
+}
+
+fn json(out: &Output) -> serde_json::Value {
+    assert!(out.status.success(), "stderr: {}", String::from_utf8_lossy(&out.stderr));
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn point_prints_one_json_object() {
+    let v = json(&fricosc(
+        &["point", "--shape", "flat", "--vbar", "0.2", "--amp", "0.5"],
+        None,
+    ));
+    assert_eq!(v["shape"], "flat");
+    assert_eq!(v["regime"], "permanent_stick_slip");
+    assert!((v["mu_ratio"].as_f64().unwrap() - 0.7145191049466343399125).abs() < 1e-15);
+    assert_eq!(v["events"].as_array().unwrap().len(), 2);
+    // --vhat: vbar = vhat / amp.
+    let w = json(&fricosc(&["point", "--vhat", "0.1", "--amp", "0.5"], None));
+    assert_eq!(w["vbar"], 0.2);
+    assert_eq!(w["mu_ratio"], v["mu_ratio"]);
+}
+
+#[test]
+fn table_json_and_csv_agree() {
+    let v = json(&fricosc(
+        &["table", "--shape", "flat", "--amp", "0,0.2,0.4", "--vbar", "0:1.2:121"],
+        None,
+    ));
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 363);
+    assert_eq!(rows[0]["vbar"], 0.0);
+    assert_eq!(rows[362]["vbar"], 1.2);
+    let csv = fricosc(
+        &["table", "--amp", "0,0.2,0.4", "--vbar", "0:1.2:121", "--format", "csv"],
+        None,
+    );
+    let text = String::from_utf8(csv.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "shape,vbar,amp,mu_ratio,reduction");
+    assert_eq!(lines.len(), 364);
+    for (line, row) in lines[1..].iter().zip(rows) {
+        let f: Vec<&str> = line.split(',').collect();
+        // Round-trip precision: the CSV text parses to the same f64 as the JSON number.
+        assert_eq!(f[3].parse::<f64>().unwrap(), row["mu_ratio"].as_f64().unwrap());
+    }
+}
+
+#[test]
+fn batch_keeps_other_fields_and_order() {
+    let input = r#"[{"id": 7, "shape": "flat", "vbar": 0.5, "amp": 2.0, "note": "x"},
+                    {"shape": "flat", "vbar": 1.2, "amp": 0.7}]"#;
+    let v = json(&fricosc(&["batch"], Some(input)));
+    let a = v.as_array().unwrap();
+    assert_eq!(a.len(), 2);
+    let keys: Vec<&String> = a[0].as_object().unwrap().keys().collect();
+    assert_eq!(keys, ["id", "shape", "vbar", "amp", "note", "mu_ratio", "reduction"]);
+    assert!((a[0]["mu_ratio"].as_f64().unwrap() - 0.7482912652565906262288).abs() < 1e-15);
+    assert_eq!(a[1]["mu_ratio"], 1.0);
+    // The same from a file, and '-' for stdin.
+    let dir = std::env::temp_dir().join(format!("fricosc-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("in.json");
+    std::fs::write(&f, input).unwrap();
+    assert_eq!(json(&fricosc(&["batch", f.to_str().unwrap()], None)), v);
+    assert_eq!(json(&fricosc(&["batch", "-"], Some(input))), v);
+}
+
+#[test]
+fn batch_of_a_hundred_thousand_rows() {
+    let rows: Vec<String> = (0..100_000)
+        .map(|i| {
+            format!(
+                r#"{{"shape":"flat","vbar":{},"amp":{}}}"#,
+                (i % 120) as f64 / 100.0,
+                (i % 30) as f64 / 10.0
+            )
+        })
+        .collect();
+    let out = fricosc(&["batch"], Some(&format!("[{}]", rows.join(","))));
+    assert_eq!(json(&out).as_array().unwrap().len(), 100_000);
+}
+
+/// Each bad input: exit 2, one line on stderr naming the problem, nothing on stdout.
+#[test]
+fn bad_input_is_one_line_exit_2_and_no_stdout() {
+    let cases: &[(&[&str], Option<&str>, &str)] = &[
+        (&["point", "--vbar", "nan", "--amp", "1"], None, "not finite"),
+        (&["point", "--vbar", "inf", "--amp", "1"], None, "not finite"),
+        (&["point", "--vbar", "1e999", "--amp", "1"], None, "not finite"),
+        (&["point", "--vbar", "-0.1", "--amp", "1"], None, "must be >= 0"),
+        (&["point", "--vbar", "0.1", "--amp", "-1"], None, "must be >= 0"),
+        (&["point", "--vbar", "", "--amp", "1"], None, "not a number"),
+        (&["point", "--vbar", "abc", "--amp", "1"], None, "not a number"),
+        (&["point", "--vhat", "0.1", "--amp", "0"], None, "amp > 0"),
+        (&["point", "--vbar", "0.1"], None, "--amp"),
+        (
+            &["point", "--shape", "sphere", "--vbar", "0.1", "--amp", "1"],
+            None,
+            "unknown shape",
+        ),
+        (&["table", "--amp", "1", "--vbar", "1:0:3"], None, "below start"),
+        (&["table", "--amp", "1", "--vbar", "0:1:0"], None, "count must be >= 1"),
+        (
+            &["table", "--amp", "1", "--vbar", "0:1:1000000000000"],
+            None,
+            "more than the limit",
+        ),
+        (
+            &["table", "--amp", "0:1:100000", "--vbar", "0:1:100000"],
+            None,
+            "more than the limit",
+        ),
+        (&["table", "--amp", "1,x", "--vbar", "0"], None, "not a number"),
+        (
+            &["batch"],
+            Some("[{\"shape\":\"flat\",\"vbar\":0.1,\"amp\":1}"),
+            "malformed JSON",
+        ),
+        (&["batch"], Some(""), "empty input"),
+        (&["batch"], Some("{}"), "JSON array"),
+        (
+            &["batch"],
+            Some("[{\"shape\":\"flat\",\"amp\":1}]"),
+            "missing field 'vbar'",
+        ),
+        (
+            &["batch"],
+            Some("[{\"shape\":\"flat\",\"vbar\":\"0.1\",\"amp\":1}]"),
+            "must be a number",
+        ),
+        (
+            &["batch"],
+            Some("[{\"shape\":1,\"vbar\":0.1,\"amp\":1}]"),
+            "'shape' must be a string",
+        ),
+        (
+            &["batch"],
+            Some("[{\"shape\":\"flat\",\"vbar\":0.1,\"amp\":1},{\"shape\":\"flat\",\"vbar\":-1,\"amp\":1}]"),
+            "row 1",
+        ),
+        (&["batch", "/nonexistent/file.json"], None, "cannot read"),
+        (&["batch", "/"], None, "cannot read"),
+        (&["frobnicate"], None, "unrecognized subcommand"),
+    ];
+    for (args, stdin, fragment) in cases {
+        let out = fricosc(args, *stdin);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(out.stdout.is_empty(), "{args:?} wrote to stdout");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(fragment), "{args:?}: '{err}' lacks '{fragment}'");
+        assert!(!err.contains("panicked"));
+    }
+}
