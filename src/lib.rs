@@ -34,3 +34,5 @@ pub mod batch;
 pub mod grid;
 pub mod output;
 pub mod shape;
+pub mod quad;
+pub mod mdr;

@@ -7,7 +7,7 @@ use fricosc::batch;
 use fricosc::error::{Error, Result};
 use fricosc::grid::{parse_number, parse_values};
 use fricosc::output::{Format, TableWriter};
-use fricosc::shape::{evaluate, Shape};
+use fricosc::shape::{check_tol, evaluate_with, Shape};
 use std::io::{self, Read, Write};
 use std::process::ExitCode;
 
@@ -49,7 +49,7 @@ struct Velocity {
 
 #[derive(Args)]
 struct PointArgs {
-    /// Indenter shape: flat.
+    /// Indenter shape: flat, parabolic, cone, power:N.
     #[arg(long, default_value = "flat")]
     shape: String,
     #[command(flatten)]
@@ -57,11 +57,14 @@ struct PointArgs {
     /// Amplitude du/u0 (>= 0).
     #[arg(long, allow_hyphen_values = true)]
     amp: String,
+    /// Relative quadrature tolerance for MDR shapes (default: as accurate as f64 allows).
+    #[arg(long, allow_hyphen_values = true)]
+    tol: Option<String>,
 }
 
 #[derive(Args)]
 struct TableArgs {
-    /// Indenter shape: flat.
+    /// Indenter shape: flat, parabolic, cone, power:N.
     #[arg(long, default_value = "flat")]
     shape: String,
     #[command(flatten)]
@@ -72,6 +75,16 @@ struct TableArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "json")]
     format: Format,
+    /// Relative quadrature tolerance for MDR shapes (default: as accurate as f64 allows).
+    #[arg(long, allow_hyphen_values = true)]
+    tol: Option<String>,
+}
+
+fn tol_of(t: &Option<String>) -> Result<f64> {
+    match t {
+        Some(t) => check_tol(parse_number("--tol", t)?),
+        None => Ok(fricosc::mdr::DEFAULT_TOL),
+    }
 }
 
 fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
@@ -97,21 +110,18 @@ fn point(a: PointArgs) -> Result<()> {
         (None, Some(h)) => vbar_of(parse_number("--vhat", h)?, amp)?,
         (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
     };
-    let json = match shape {
-        Shape::Flat => {
-            let p = fricosc::flat::point(vbar, amp)?;
-            let mut v = serde_json::to_value(&p).map_err(|e| Error::Parse {
-                context: "output".into(),
-                reason: e.to_string(),
-            })?;
-            let mut obj = serde_json::Map::new();
-            obj.insert("shape".into(), shape.name().into());
-            if let serde_json::Value::Object(m) = &mut v {
-                obj.extend(std::mem::take(m));
-            }
-            serde_json::Value::Object(obj)
-        }
-    };
+    let tol = tol_of(&a.tol)?;
+    let body = match shape {
+        Shape::Flat => serde_json::to_value(fricosc::flat::point(vbar, amp)?),
+        Shape::Power(n) => serde_json::to_value(fricosc::mdr::point(n, vbar, amp, tol)?),
+    }
+    .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })?;
+    let mut obj = serde_json::Map::new();
+    obj.insert("shape".into(), shape.name().into());
+    if let serde_json::Value::Object(m) = body {
+        obj.extend(m);
+    }
+    let json = serde_json::Value::Object(obj);
     let mut out = io::stdout().lock();
     serde_json::to_writer_pretty(&mut out, &json).map_err(|e| io_err(e.into()))?;
     writeln!(out).map_err(io_err)
@@ -119,6 +129,7 @@ fn point(a: PointArgs) -> Result<()> {
 
 fn table(a: TableArgs) -> Result<()> {
     let shape = Shape::parse(&a.shape)?;
+    let tol = tol_of(&a.tol)?;
     let amps = parse_values("--amp", &a.amp)?;
     let (vels, is_vhat) = match (&a.velocity.vbar, &a.velocity.vhat) {
         (Some(v), _) => (parse_values("--vbar", v)?, false),
@@ -150,7 +161,7 @@ fn table(a: TableArgs) -> Result<()> {
     for &amp in &amps {
         for &v in &vels {
             let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
-            let e = evaluate(&shape, vbar, amp)?;
+            let e = evaluate_with(&shape, vbar, amp, tol)?;
             let (m, r) = (e.ratio.mu_ratio, e.ratio.reduction);
             if is_vhat {
                 w.row(&name, &[v, vbar, amp, m, r])

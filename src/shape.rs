@@ -1,8 +1,9 @@
 //! Indenter shapes, as named on the command line and in batch files.
 
-use crate::error::{Error, Result};
+use crate::error::{check_nonneg, Error, Result};
 use crate::flat;
 use crate::flat::Ratio;
+use crate::mdr;
 use serde::Serialize;
 
 /// A contact geometry.
@@ -10,24 +11,39 @@ use serde::Serialize;
 pub enum Shape {
     /// Flat cylindrical punch: one spring (seed section 2).
     Flat,
+    /// MDR equivalent profile `g ~ |x|^n`, `n > 0` (`cone`: 1, `parabolic`: 2).
+    Power(f64),
 }
 
 impl Shape {
-    /// Parse `flat`.
+    /// Parse `flat`, `parabolic`, `cone` or `power:N` (`N` finite, `> 0`).
     pub fn parse(spec: &str) -> Result<Shape> {
+        let bad = |reason: &str| Error::InvalidShape { spec: spec.trim().into(), reason: reason.into() };
         match spec.trim() {
             "flat" => Ok(Shape::Flat),
-            other => Err(Error::InvalidShape {
-                spec: other.into(),
-                reason: "unknown shape (known: flat)".into(),
-            }),
+            "parabolic" => Ok(Shape::Power(2.0)),
+            "cone" => Ok(Shape::Power(1.0)),
+            other => match other.strip_prefix("power:") {
+                Some(n) => {
+                    let n: f64 = n.trim().parse().map_err(|_| bad("the exponent is not a number"))?;
+                    if !n.is_finite() || n <= 0.0 {
+                        Err(bad("the exponent must be finite and > 0"))
+                    } else {
+                        Ok(Shape::Power(n))
+                    }
+                }
+                None => Err(bad("unknown shape (known: flat, parabolic, cone, power:N)")),
+            },
         }
     }
 
-    /// The name as printed in outputs.
+    /// The canonical name as printed in outputs.
     pub fn name(&self) -> String {
         match self {
             Shape::Flat => "flat".into(),
+            Shape::Power(n) if *n == 2.0 => "parabolic".into(),
+            Shape::Power(n) if *n == 1.0 => "cone".into(),
+            Shape::Power(n) => format!("power:{n:?}"),
         }
     }
 }
@@ -46,12 +62,31 @@ pub struct Evaluation {
 /// 40-digit references and the derived limits (`tests/flat.rs`).
 pub const FLAT_ERROR_BOUND: f64 = 1e-15;
 
-/// Evaluate `mu_macro/mu0` for `shape` at `(vbar, amp)`; both finite and `>= 0`.
+/// Evaluate `mu_macro/mu0` at the default tolerance.
 pub fn evaluate(shape: &Shape, vbar: f64, amp: f64) -> Result<Evaluation> {
+    evaluate_with(shape, vbar, amp, mdr::DEFAULT_TOL)
+}
+
+/// Evaluate `mu_macro/mu0` for `shape` at `(vbar, amp)`, both finite and `>= 0`;
+/// `tol` is the relative quadrature tolerance of MDR shapes (ignored for `flat`).
+pub fn evaluate_with(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
+    check_nonneg("vbar", vbar)?;
+    check_nonneg("amp", amp)?;
+    check_tol(tol)?;
     match shape {
-        Shape::Flat => Ok(Evaluation {
-            ratio: flat::ratio(vbar, amp)?,
-            error_estimate: FLAT_ERROR_BOUND,
-        }),
+        Shape::Flat => Ok(Evaluation { ratio: flat::ratio(vbar, amp)?, error_estimate: FLAT_ERROR_BOUND }),
+        Shape::Power(n) => {
+            let r = mdr::power_law(*n, vbar, amp, tol, false);
+            Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate })
+        }
+    }
+}
+
+/// Check a tolerance: finite, `> 0` and `< 1`.
+pub fn check_tol(tol: f64) -> Result<f64> {
+    if tol.is_finite() && tol > 0.0 && tol < 1.0 {
+        Ok(tol)
+    } else {
+        Err(Error::param("tol", tol, "must be finite, > 0 and < 1"))
     }
 }

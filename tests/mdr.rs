@@ -1,0 +1,115 @@
+//! MDR contacts (power-law profiles) against the references, the stepper and limits.
+mod common;
+use common::{reference_cases, tol};
+use fricosc::mdr::{power_law, DEFAULT_TOL};
+use fricosc::shape::{evaluate, Shape};
+
+#[test]
+fn parabolic_and_cone_references_to_1e_13_within_the_error_estimate() {
+    let mut n = 0;
+    for c in reference_cases().iter().filter(|c| c.shape != "flat") {
+        let shape = Shape::parse(&c.shape).unwrap();
+        let e = evaluate(&shape, c.vbar, c.amp).unwrap();
+        let err = (e.ratio.mu_ratio - c.mu_ratio).abs();
+        assert!(err <= tol::MDR_ABS, "{} vbar={} amp={}: err {err:e}", c.shape, c.vbar, c.amp);
+        assert!(err <= e.error_estimate, "{} vbar={} amp={}: err {err:e} > estimate {:e}", c.shape, c.vbar, c.amp, e.error_estimate);
+        let rel = (e.ratio.reduction - c.reduction).abs() / c.reduction;
+        assert!(rel <= 1e-12, "reduction rel err {rel:e}");
+        n += 1;
+    }
+    assert_eq!(n, 7);
+}
+
+#[test]
+fn named_shapes_are_power_laws() {
+    for (v, a) in [(0.3, 0.5), (0.7, 1.3)] {
+        let cone = evaluate(&Shape::parse("cone").unwrap(), v, a).unwrap();
+        let p1 = evaluate(&Shape::parse("power:1").unwrap(), v, a).unwrap();
+        assert_eq!(cone, p1);
+        let par = evaluate(&Shape::parse("parabolic").unwrap(), v, a).unwrap();
+        let p2 = evaluate(&Shape::parse("power:2.0").unwrap(), v, a).unwrap();
+        assert_eq!(par, p2);
+    }
+}
+
+#[test]
+fn steep_power_laws_approach_the_flat_punch_like_1_over_n() {
+    for (v, a) in [(0.3, 0.5), (0.5, 2.0)] {
+        let flat = fricosc::flat::ratio(v, a).unwrap().mu_ratio;
+        let d = |n: f64| (power_law(n, v, a, DEFAULT_TOL, false).ratio.mu_ratio - flat).abs();
+        let (d100, d1000) = (d(100.0), d(1000.0));
+        assert!(d1000 < 2.0 / 1000.0, "v={v} a={a}: {d1000:e}");
+        assert!(d1000 < 0.2 * d100, "not O(1/N): {d100:e} -> {d1000:e}");
+    }
+}
+
+/// The seed's scheme on many springs (midpoint grid in z), first order in both
+/// the spring spacing and the time step once springs lose contact.
+#[test]
+fn time_stepping_agrees_in_every_regime() {
+    for (n, v, a) in [(2.0, 0.3, 0.4), (2.0, 0.6, 1.0), (2.0, 0.3, 1.6), (1.0, 0.5, 2.0), (2.0, 1.1, 1.5)] {
+        let exact = power_law(n, v, a, DEFAULT_TOL, false).ratio.mu_ratio;
+        let mut errs = vec![];
+        for k in [1000usize, 4000] {
+            let zmax = (1.0f64 + a).powf(1.0 / n);
+            let dz = zmax / k as f64;
+            let s: Vec<f64> = (0..k).map(|i| (1.0 - ((i as f64 + 0.5) * dz).powf(n)) / a).collect();
+            let run = fricosc::stepper::run(&s, &vec![dz; k], v, k, 2);
+            errs.push((run.mu_ratio() - exact).abs());
+        }
+        assert!(errs[1] <= 1.0 / 4000.0, "n={n} v={v} a={a}: {errs:?}");
+        assert!(errs[1] <= 0.5 * errs[0] || errs[1] < 1e-12, "n={n} v={v} a={a}: not converging {errs:?}");
+    }
+}
+
+#[test]
+fn looser_tolerance_does_less_work_within_its_estimate() {
+    for (n, v, a) in [(2.0, 0.3, 0.4), (2.0, 0.6, 1.0), (1.0, 0.5, 2.0), (2.5, 0.2, 1.5)] {
+        let fine = power_law(n, v, a, DEFAULT_TOL, false);
+        let loose = power_law(n, v, a, 1e-6, false);
+        assert!(loose.nodes < fine.nodes, "n={n} v={v} a={a}: {} vs {}", loose.nodes, fine.nodes);
+        let err = (loose.ratio.mu_ratio - fine.ratio.mu_ratio).abs();
+        assert!(err <= loose.error_estimate, "n={n} v={v} a={a}: err {err:e} > estimate {:e}", loose.error_estimate);
+    }
+}
+
+#[test]
+fn limits_of_amplitude_and_velocity() {
+    for n in [1.0, 2.0, 3.7] {
+        // No oscillation, or at/above the critical velocity: mu = mu0 exactly.
+        assert_eq!(power_law(n, 0.4, 0.0, DEFAULT_TOL, false).ratio.mu_ratio, 1.0);
+        for v in [1.0, 1.5] {
+            let r = power_law(n, v, 0.7, DEFAULT_TOL, false);
+            assert_eq!((r.ratio.mu_ratio, r.nodes), (1.0, 0), "vbar >= 1 needs no spring computation");
+        }
+        // Static limit: minimum over mean normal force; 0 once the centre loses contact.
+        assert_eq!(power_law(n, 0.0, 1.5, DEFAULT_TOL, false).ratio.mu_ratio, 0.0);
+        // Small amplitude: 1 - amp * 9 (1-vbar)^2/(4 pi) ... the seed's eq. 14 regime:
+        // the reduction per normal force is amp * D(vbar) * (kz du)/(F_N) -> amp D (n+1)/n.
+        let v = 0.5;
+        let d = fricosc::spring::Spring::new(10.0, v).deficit;
+        let amp = 1e-6;
+        let red = power_law(n, v, amp, DEFAULT_TOL, false).ratio.reduction;
+        let lead = amp * d * (n + 1.0) / n;
+        assert!((red / lead - 1.0).abs() < 1e-4, "n={n}: {red:e} vs {lead:e}");
+    }
+}
+
+#[test]
+fn near_critical_reduction_keeps_relative_accuracy() {
+    // reduction / (1 - vbar)^2 = A + B sqrt(w) + O(w) as w = 1 - vbar -> 0 (the
+    // stick-first band has width ~ sqrt(2 w)). Two values fix A and B; the third
+    // must follow to O(w) -- a check of relative accuracy at w = 1e-12 that a
+    // difference 1 - mu (all digits lost there) cannot pass.
+    for n in [1.0, 2.0] {
+        for amp in [0.5, 2.0] {
+            let f = |w: f64| power_law(n, 1.0 - w, amp, DEFAULT_TOL, false).ratio.reduction / (w * w);
+            // The f64 nearest to 1 - w: use w that are exact in binary near 1.
+            let (w1, w2, w3) = (2f64.powi(-30), 2f64.powi(-34), 2f64.powi(-40));
+            let b = (f(w2) - f(w1)) / (w2.sqrt() - w1.sqrt());
+            let predicted = f(w2) + b * (w3.sqrt() - w2.sqrt());
+            let rel = (f(w3) / predicted - 1.0).abs();
+            assert!(rel < 1e-8, "n={n} amp={amp}: rel {rel:e}");
+        }
+    }
+}
