@@ -17,5 +17,15 @@ fn flat(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, flat);
+fn parabolic(c: &mut Criterion) {
+    c.bench_function("parabolic point (vbar 0.3, amp 0.4)", |b| {
+        b.iter(|| fricosc::mdr::power_law(2.0, black_box(0.3), black_box(0.4), fricosc::mdr::DEFAULT_TOL, false))
+    });
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().measurement_time(std::time::Duration::from_secs(3));
+    targets = flat, parabolic
+}
 criterion_main!(benches);

@@ -23,8 +23,9 @@ pub fn parse_number(what: &str, text: &str) -> Result<f64> {
 
 /// A comma list `a,b,c` or an inclusive range `start:stop:count` (`count >= 1`,
 /// `stop >= start`; `count = 1` gives `start`). Values are
-/// `start + (stop - start) k / (count - 1)` in f64, the last one `stop` exactly;
-/// outputs print the value actually used.
+/// `start + (stop - start) k / (count - 1)` rounded to 15 significant digits (so
+/// `0:1.2:13` gives 0.1, 0.2, ... rather than 0.09999999999999999), the last one
+/// `stop` exactly; outputs print the value actually used.
 pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
     let t = text.trim();
     if t.is_empty() {
@@ -74,7 +75,7 @@ pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
                     if k + 1 == n {
                         stop
                     } else {
-                        start + span * k as f64 / last
+                        decimal(start + span * k as f64 / last)
                     }
                 })
                 .collect())
@@ -84,6 +85,11 @@ pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
             reason: format!("'{t}' is neither a comma list nor start:stop:count"),
         }),
     }
+}
+
+/// Round to 15 significant digits: removes the binary noise of `k * step`.
+fn decimal(x: f64) -> f64 {
+    format!("{x:.14e}").parse().unwrap_or(x)
 }
 
 #[cfg(test)]
@@ -96,7 +102,8 @@ mod tests {
         let r = parse_values("v", "0:1.2:121").unwrap();
         assert_eq!(r.len(), 121);
         assert_eq!(r[120], 1.2);
-        assert!((r[60] - 0.6).abs() < 1e-15);
+        assert_eq!(r[60], 0.6);
+        assert_eq!(parse_values("v", "0:1.2:13").unwrap()[1], 0.1);
         assert_eq!(parse_values("v", "0.5:0.5:1").unwrap(), vec![0.5]);
         for bad in [
             "",

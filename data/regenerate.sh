@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Regenerates the example tables of README.md; with --check, compares instead of writing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cargo build --release --quiet
+B=target/release/fricosc
+check=${1:-}
+emit() { # emit FILE command...
+  local file=$1; shift
+  if [ "$check" = "--check" ]; then
+    if ! diff -q <("$@") "$file" >/dev/null; then echo "stale: $file (run bash data/regenerate.sh)" >&2; exit 1; fi
+  else
+    "$@" > "$file"
+  fi
+}
+emit data/flat-fig3.csv $B table --shape flat --amp 0,0.2,0.4,0.6,0.8,1.0 --vbar 0:1.2:13 --format csv
+emit data/flat-fig5.csv $B table --shape flat --amp 1:2:11 --vbar 0:1.2:13 --format csv
+emit data/parabolic-fig7.csv $B table --shape parabolic --amp 0,0.2,0.4,0.6,0.8,1.0 --vbar 0:1.2:13 --format csv
+emit data/point-flat.json $B point --shape flat --vbar 0.3 --amp 1.5
+emit data/point-parabolic.json $B point --shape parabolic --vbar 0.6 --amp 1
+echo "data/ is up to date"
