@@ -115,7 +115,10 @@ fn point(a: PointArgs) -> Result<()> {
         Shape::Flat => serde_json::to_value(fricosc::flat::point(vbar, amp)?),
         Shape::Power(n) => serde_json::to_value(fricosc::mdr::point(n, vbar, amp, tol)?),
     }
-    .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })?;
+    .map_err(|e| Error::Parse {
+        context: "output".into(),
+        reason: e.to_string(),
+    })?;
     let mut obj = serde_json::Map::new();
     obj.insert("shape".into(), shape.name().into());
     if let serde_json::Value::Object(m) = body {

@@ -182,11 +182,25 @@ impl Problem {
             let next = self.pass(p, q, 2 * m);
             nodes += 2 * m;
             let d = ((next.0 - cur.0).abs(), (next.1 - cur.1).abs());
-            let predict = |dc: f64, dp: f64| if dc == 0.0 { 0.0 } else if dc < dp { 10.0 * dc * dc / dp } else { dc };
+            let predict = |dc: f64, dp: f64| {
+                if dc == 0.0 {
+                    0.0
+                } else if dc < dp {
+                    10.0 * dc * dc / dp
+                } else {
+                    dc
+                }
+            };
             let (en, ed) = (predict(d.0, d_prev.0), predict(d.1, d_prev.1));
             cur = next;
             if (en <= self.tol * cur.0.abs() && ed <= self.tol * cur.1.abs()) || 2 * m >= MAX_ORDER {
-                return Sums { normal: cur.0, deficit: cur.1, err_normal: en, err_deficit: ed, nodes };
+                return Sums {
+                    normal: cur.0,
+                    deficit: cur.1,
+                    err_normal: en,
+                    err_deficit: ed,
+                    nodes,
+                };
             }
             d_prev = d;
         }
@@ -217,21 +231,43 @@ impl Problem {
 /// is the relative quadrature tolerance; `bands` asks for the per-band report.
 pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResult {
     let tol = tol.max(DEFAULT_TOL);
-    let unit = MdrResult { ratio: Ratio { mu_ratio: 1.0, reduction: 0.0 }, error_estimate: 0.0, bands: vec![], nodes: 0 };
+    let unit = MdrResult {
+        ratio: Ratio {
+            mu_ratio: 1.0,
+            reduction: 0.0,
+        },
+        error_estimate: 0.0,
+        bands: vec![],
+        nodes: 0,
+    };
     if amp == 0.0 || (vbar >= 1.0 && !bands) {
         return unit;
     }
     let c = if vbar < 1.0 { (1.0 - vbar * vbar).sqrt() } else { 0.0 };
-    let d_perm = if vbar < 1.0 { Spring::new(f64::MAX, vbar).deficit } else { 0.0 };
+    let d_perm = if vbar < 1.0 {
+        Spring::new(f64::MAX, vbar).deficit
+    } else {
+        0.0
+    };
     // Band limits in y = 1 - amp s, clipped to [0, 1 + amp].
     let y_of = |s: f64| (1.0 - amp * s).clamp(0.0, 1.0 + amp);
     let (y1, yc, ymc, yend) = (y_of(1.0), y_of(c), y_of(-c), 1.0 + amp);
     let z_of = |y: f64| y.powf(1.0 / n);
-    let mk = |stick: bool| Problem { n, amp, vbar, tol, stick };
+    let mk = |stick: bool| Problem {
+        n,
+        amp,
+        vbar,
+        tol,
+        stick,
+    };
 
     // Permanent contact: int_0^{z1} (1 - z^n) dz, deficit D(vbar) z1 (scaled by amp).
     let z1 = z_of(y1);
-    let perm = Sums { normal: z1 - z1 * y1 / (n + 1.0), deficit: amp * d_perm * z1, ..Default::default() };
+    let perm = Sums {
+        normal: z1 - z1 * y1 / (n + 1.0),
+        deficit: amp * d_perm * z1,
+        ..Default::default()
+    };
     let mut slip_first = mk(false).band(y1, yc);
     slip_first.deficit = amp * d_perm * (z_of(yc) - z1);
     let stick_first = mk(vbar < 1.0).band(yc, ymc);
@@ -263,14 +299,23 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
                 kind,
                 x_range: [z_of(ya), z_of(yb)],
                 normal_share: if nn > 0.0 { s.normal / nn } else { 0.0 },
-                tangential_share: if tangential > 0.0 { (s.normal - s.deficit) / tangential } else { 0.0 },
+                tangential_share: if tangential > 0.0 {
+                    (s.normal - s.deficit) / tangential
+                } else {
+                    0.0
+                },
                 nodes: s.nodes,
             })
             .collect()
     } else {
         vec![]
     };
-    MdrResult { ratio, error_estimate, bands: band_list, nodes: total.nodes }
+    MdrResult {
+        ratio,
+        error_estimate,
+        bands: band_list,
+        nodes: total.nodes,
+    }
 }
 
 /// A full MDR point: the result plus the static limit, for `fricosc point`.
@@ -294,5 +339,10 @@ pub fn point(n: f64, vbar: f64, amp: f64, tol: f64) -> crate::Result<MdrPoint> {
     crate::shape::check_tol(tol)?;
     let result = power_law(n, vbar, amp, tol, true);
     let mu_static_ratio = power_law(n, 0.0, amp, tol, false).ratio.mu_ratio;
-    Ok(MdrPoint { vbar, amp, result, mu_static_ratio })
+    Ok(MdrPoint {
+        vbar,
+        amp,
+        result,
+        mu_static_ratio,
+    })
 }

@@ -18,7 +18,10 @@ pub enum Shape {
 impl Shape {
     /// Parse `flat`, `parabolic`, `cone` or `power:N` (`N` finite, `> 0`).
     pub fn parse(spec: &str) -> Result<Shape> {
-        let bad = |reason: &str| Error::InvalidShape { spec: spec.trim().into(), reason: reason.into() };
+        let bad = |reason: &str| Error::InvalidShape {
+            spec: spec.trim().into(),
+            reason: reason.into(),
+        };
         match spec.trim() {
             "flat" => Ok(Shape::Flat),
             "parabolic" => Ok(Shape::Power(2.0)),
@@ -74,10 +77,16 @@ pub fn evaluate_with(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<Eva
     check_nonneg("amp", amp)?;
     check_tol(tol)?;
     match shape {
-        Shape::Flat => Ok(Evaluation { ratio: flat::ratio(vbar, amp)?, error_estimate: FLAT_ERROR_BOUND }),
+        Shape::Flat => Ok(Evaluation {
+            ratio: flat::ratio(vbar, amp)?,
+            error_estimate: FLAT_ERROR_BOUND,
+        }),
         Shape::Power(n) => {
             let r = mdr::power_law(*n, vbar, amp, tol, false);
-            Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate })
+            Ok(Evaluation {
+                ratio: r.ratio,
+                error_estimate: r.error_estimate,
+            })
         }
     }
 }

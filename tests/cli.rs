@@ -68,7 +68,10 @@ fn table_json_and_csv_agree() {
 
 #[test]
 fn mdr_point_reports_bands_and_table_accepts_tol() {
-    let v = json(&fricosc(&["point", "--shape", "parabolic", "--vbar", "0.6", "--amp", "1"], None));
+    let v = json(&fricosc(
+        &["point", "--shape", "parabolic", "--vbar", "0.6", "--amp", "1"],
+        None,
+    ));
     assert!((v["mu_ratio"].as_f64().unwrap() - 0.859054694109526657223).abs() < 1e-13);
     let bands = v["bands"].as_array().unwrap();
     let kinds: Vec<&str> = bands.iter().map(|b| b["kind"].as_str().unwrap()).collect();
@@ -76,7 +79,12 @@ fn mdr_point_reports_bands_and_table_accepts_tol() {
     let share: f64 = bands.iter().map(|b| b["normal_share"].as_f64().unwrap()).sum();
     assert!((share - 1.0).abs() < 1e-14);
     assert_eq!(v["mu_static_ratio"], 0.0);
-    let t = json(&fricosc(&["table", "--shape", "cone", "--amp", "0.5", "--vbar", "0.3", "--tol", "1e-6"], None));
+    let t = json(&fricosc(
+        &[
+            "table", "--shape", "cone", "--amp", "0.5", "--vbar", "0.3", "--tol", "1e-6",
+        ],
+        None,
+    ));
     assert!((t["rows"][0]["mu_ratio"].as_f64().unwrap() - 0.6635626779221783060765).abs() < 1e-6);
 }
 
@@ -133,10 +141,36 @@ fn bad_input_is_one_line_exit_2_and_no_stdout() {
             None,
             "unknown shape",
         ),
-        (&["point", "--shape", "power:0", "--vbar", "0.1", "--amp", "1"], None, "must be finite and > 0"),
-        (&["point", "--shape", "power:-1", "--vbar", "0.1", "--amp", "1"], None, "must be finite and > 0"),
-        (&["point", "--shape", "power:abc", "--vbar", "0.1", "--amp", "1"], None, "not a number"),
-        (&["point", "--shape", "parabolic", "--vbar", "0.1", "--amp", "1", "--tol", "0"], None, "tol"),
+        (
+            &["point", "--shape", "power:0", "--vbar", "0.1", "--amp", "1"],
+            None,
+            "must be finite and > 0",
+        ),
+        (
+            &["point", "--shape", "power:-1", "--vbar", "0.1", "--amp", "1"],
+            None,
+            "must be finite and > 0",
+        ),
+        (
+            &["point", "--shape", "power:abc", "--vbar", "0.1", "--amp", "1"],
+            None,
+            "not a number",
+        ),
+        (
+            &[
+                "point",
+                "--shape",
+                "parabolic",
+                "--vbar",
+                "0.1",
+                "--amp",
+                "1",
+                "--tol",
+                "0",
+            ],
+            None,
+            "tol",
+        ),
         (&["table", "--amp", "1", "--vbar", "1:0:3"], None, "below start"),
         (&["table", "--amp", "1", "--vbar", "0:1:0"], None, "count must be >= 1"),
         (

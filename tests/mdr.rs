@@ -11,8 +11,21 @@ fn parabolic_and_cone_references_to_1e_13_within_the_error_estimate() {
         let shape = Shape::parse(&c.shape).unwrap();
         let e = evaluate(&shape, c.vbar, c.amp).unwrap();
         let err = (e.ratio.mu_ratio - c.mu_ratio).abs();
-        assert!(err <= tol::MDR_ABS, "{} vbar={} amp={}: err {err:e}", c.shape, c.vbar, c.amp);
-        assert!(err <= e.error_estimate, "{} vbar={} amp={}: err {err:e} > estimate {:e}", c.shape, c.vbar, c.amp, e.error_estimate);
+        assert!(
+            err <= tol::MDR_ABS,
+            "{} vbar={} amp={}: err {err:e}",
+            c.shape,
+            c.vbar,
+            c.amp
+        );
+        assert!(
+            err <= e.error_estimate,
+            "{} vbar={} amp={}: err {err:e} > estimate {:e}",
+            c.shape,
+            c.vbar,
+            c.amp,
+            e.error_estimate
+        );
         let rel = (e.ratio.reduction - c.reduction).abs() / c.reduction;
         assert!(rel <= 1e-12, "reduction rel err {rel:e}");
         n += 1;
@@ -47,7 +60,13 @@ fn steep_power_laws_approach_the_flat_punch_like_1_over_n() {
 /// the spring spacing and the time step once springs lose contact.
 #[test]
 fn time_stepping_agrees_in_every_regime() {
-    for (n, v, a) in [(2.0, 0.3, 0.4), (2.0, 0.6, 1.0), (2.0, 0.3, 1.6), (1.0, 0.5, 2.0), (2.0, 1.1, 1.5)] {
+    for (n, v, a) in [
+        (2.0, 0.3, 0.4),
+        (2.0, 0.6, 1.0),
+        (2.0, 0.3, 1.6),
+        (1.0, 0.5, 2.0),
+        (2.0, 1.1, 1.5),
+    ] {
         let exact = power_law(n, v, a, DEFAULT_TOL, false).ratio.mu_ratio;
         let mut errs = vec![];
         for k in [1000usize, 4000] {
@@ -58,7 +77,10 @@ fn time_stepping_agrees_in_every_regime() {
             errs.push((run.mu_ratio() - exact).abs());
         }
         assert!(errs[1] <= 1.0 / 4000.0, "n={n} v={v} a={a}: {errs:?}");
-        assert!(errs[1] <= 0.5 * errs[0] || errs[1] < 1e-12, "n={n} v={v} a={a}: not converging {errs:?}");
+        assert!(
+            errs[1] <= 0.5 * errs[0] || errs[1] < 1e-12,
+            "n={n} v={v} a={a}: not converging {errs:?}"
+        );
     }
 }
 
@@ -67,9 +89,18 @@ fn looser_tolerance_does_less_work_within_its_estimate() {
     for (n, v, a) in [(2.0, 0.3, 0.4), (2.0, 0.6, 1.0), (1.0, 0.5, 2.0), (2.5, 0.2, 1.5)] {
         let fine = power_law(n, v, a, DEFAULT_TOL, false);
         let loose = power_law(n, v, a, 1e-6, false);
-        assert!(loose.nodes < fine.nodes, "n={n} v={v} a={a}: {} vs {}", loose.nodes, fine.nodes);
+        assert!(
+            loose.nodes < fine.nodes,
+            "n={n} v={v} a={a}: {} vs {}",
+            loose.nodes,
+            fine.nodes
+        );
         let err = (loose.ratio.mu_ratio - fine.ratio.mu_ratio).abs();
-        assert!(err <= loose.error_estimate, "n={n} v={v} a={a}: err {err:e} > estimate {:e}", loose.error_estimate);
+        assert!(
+            err <= loose.error_estimate,
+            "n={n} v={v} a={a}: err {err:e} > estimate {:e}",
+            loose.error_estimate
+        );
     }
 }
 
@@ -80,7 +111,11 @@ fn limits_of_amplitude_and_velocity() {
         assert_eq!(power_law(n, 0.4, 0.0, DEFAULT_TOL, false).ratio.mu_ratio, 1.0);
         for v in [1.0, 1.5] {
             let r = power_law(n, v, 0.7, DEFAULT_TOL, false);
-            assert_eq!((r.ratio.mu_ratio, r.nodes), (1.0, 0), "vbar >= 1 needs no spring computation");
+            assert_eq!(
+                (r.ratio.mu_ratio, r.nodes),
+                (1.0, 0),
+                "vbar >= 1 needs no spring computation"
+            );
         }
         // Static limit: minimum over mean normal force; 0 once the centre loses contact.
         assert_eq!(power_law(n, 0.0, 1.5, DEFAULT_TOL, false).ratio.mu_ratio, 0.0);
