@@ -47,37 +47,38 @@ struct Velocity {
     vhat: Option<String>,
 }
 
+/// Options shared by `point` and `table`.
 #[derive(Args)]
-struct PointArgs {
+struct Common {
     /// Indenter shape: flat, parabolic, cone, power:N.
     #[arg(long, default_value = "flat")]
     shape: String,
     #[command(flatten)]
     velocity: Velocity,
-    /// Amplitude du/u0 (>= 0).
-    #[arg(long, allow_hyphen_values = true)]
-    amp: String,
     /// Relative quadrature tolerance for MDR shapes (default: as accurate as f64 allows).
     #[arg(long, allow_hyphen_values = true)]
     tol: Option<String>,
 }
 
 #[derive(Args)]
-struct TableArgs {
-    /// Indenter shape: flat, parabolic, cone, power:N.
-    #[arg(long, default_value = "flat")]
-    shape: String,
+struct PointArgs {
     #[command(flatten)]
-    velocity: Velocity,
+    common: Common,
+    /// Amplitude du/u0 (>= 0).
+    #[arg(long, allow_hyphen_values = true)]
+    amp: String,
+}
+
+#[derive(Args)]
+struct TableArgs {
+    #[command(flatten)]
+    common: Common,
     /// Amplitudes du/u0: a comma list or start:stop:count.
     #[arg(long, allow_hyphen_values = true)]
     amp: String,
     /// Output format.
     #[arg(long, value_enum, default_value = "json")]
     format: Format,
-    /// Relative quadrature tolerance for MDR shapes (default: as accurate as f64 allows).
-    #[arg(long, allow_hyphen_values = true)]
-    tol: Option<String>,
 }
 
 fn tol_of(t: &Option<String>) -> Result<f64> {
@@ -103,14 +104,14 @@ fn io_err(e: io::Error) -> Error {
 }
 
 fn point(a: PointArgs) -> Result<()> {
-    let shape = Shape::parse(&a.shape)?;
+    let shape = Shape::parse(&a.common.shape)?;
     let amp = parse_number("--amp", &a.amp)?;
-    let vbar = match (&a.velocity.vbar, &a.velocity.vhat) {
+    let vbar = match (&a.common.velocity.vbar, &a.common.velocity.vhat) {
         (Some(v), _) => parse_number("--vbar", v)?,
         (None, Some(h)) => vbar_of(parse_number("--vhat", h)?, amp)?,
         (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
     };
-    let tol = tol_of(&a.tol)?;
+    let tol = tol_of(&a.common.tol)?;
     let body = match shape {
         Shape::Flat => serde_json::to_value(fricosc::flat::point(vbar, amp)?),
         Shape::Power(n) => serde_json::to_value(fricosc::mdr::point(n, vbar, amp, tol)?),
@@ -131,10 +132,10 @@ fn point(a: PointArgs) -> Result<()> {
 }
 
 fn table(a: TableArgs) -> Result<()> {
-    let shape = Shape::parse(&a.shape)?;
-    let tol = tol_of(&a.tol)?;
+    let shape = Shape::parse(&a.common.shape)?;
+    let tol = tol_of(&a.common.tol)?;
     let amps = parse_values("--amp", &a.amp)?;
-    let (vels, is_vhat) = match (&a.velocity.vbar, &a.velocity.vhat) {
+    let (vels, is_vhat) = match (&a.common.velocity.vbar, &a.common.velocity.vhat) {
         (Some(v), _) => (parse_values("--vbar", v)?, false),
         (None, Some(h)) => (parse_values("--vhat", h)?, true),
         (None, None) => unreachable!("clap requires one of --vbar, --vhat"),

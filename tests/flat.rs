@@ -171,20 +171,23 @@ fn events_are_on_the_bound_and_in_order() {
         }
     }
     // Stick from contact: contact, stick at the same phase, slip, loss.
-    let kinds: Vec<_> = fricosc::flat::point(0.3, 1.5)
-        .unwrap()
-        .events
-        .iter()
-        .map(|e| format!("{:?}", e.kind))
-        .collect();
-    assert_eq!(kinds, ["Contact", "Stick", "Slip", "LossOfContact"]);
-    let kinds: Vec<_> = fricosc::flat::point(0.95, 4.0)
-        .unwrap()
-        .events
-        .iter()
-        .map(|e| format!("{:?}", e.kind))
-        .collect();
-    assert_eq!(kinds, ["Contact", "Stick", "Slip", "LossOfContact"]);
+    let kinds = |v: f64, a: f64| -> Vec<String> {
+        fricosc::flat::point(v, a)
+            .unwrap()
+            .events
+            .iter()
+            .map(|e| format!("{:?}", e.kind))
+            .collect()
+    };
+    assert_eq!(kinds(0.3, 1.5), ["Contact", "Stick", "Slip", "LossOfContact"]);
+    // Slip first (s = 0.5 >= sqrt(1 - 0.95^2) = 0.31): contact, (slip), stick, slip, loss.
+    assert_eq!(kinds(0.95, 2.0), ["Contact", "Stick", "Slip", "LossOfContact"]);
+    let p = fricosc::flat::point(0.95, 2.0).unwrap();
+    assert_eq!(format!("{:?}", p.regime), "JumpingSlipFirst");
+    assert!(
+        p.events[1].tau > p.events[0].tau + 0.1,
+        "the stick starts after a slip phase"
+    );
 }
 
 #[test]
