@@ -18,22 +18,33 @@
 //! - slip only `-1 < s <= -c`: no deficit, normal force by quadrature.
 //!
 //! # Quadrature
-//! In the variable `y = z^n = 1 - amp s` the integrands are analytic functions
-//! of `y` inside each band times `dz = y^(1/n - 1) dy / n`. At `s = +-1` they
-//! behave like `(distance)^(3/2)` (contact-loss thresholds); the substitution
-//! `y = p + (q - p)(1 - cos t)/2` makes them analytic in `t`, and Gauss-Legendre
-//! in `t` converges geometrically. A band starting at the centre `y = 0` carries
-//! the weight `y^(1/n - 1)`, which becomes `t^(2/n - 1)` after the substitution:
-//! Gauss-Jacobi. A band starting at a small `p > 0` (the branch point `y = 0` close
-//! by, e.g. `amp -> 1`) is split geometrically at `p, 2p, 4p, ...`. Each piece is
-//! integrated at orders `m, 2m, 4m, ...` from `m = 4` until the error predicted
-//! from the last two differences is within the relative tolerance (see `piece`).
+//! The jumping springs are integrated in the angle `beta = arcsin s` in
+//! `(-pi/2, pi/2)`: the per-spring means are analytic in `beta` (the square-root
+//! behaviour of `<B>` at the contact-loss thresholds `s = +-1` disappears, and the
+//! band edges `s = +-c` are `beta = +-arccos vbar`). The Jacobian is
+//! `dz = (amp/n) y^(1/n - 1) cos(beta) dbeta` with `y = z^n = 1 - amp sin(beta)`,
+//! singular only where `y = 0`, the centre of the contact:
+//! - `amp > 1`: at `beta* = arcsin(1/amp)`, the top of the innermost band, like
+//!   `(beta* - beta)^(1/n - 1)`: Gauss-Jacobi with that weight;
+//! - `amp = 1`: at `pi/2`, like `(pi/2 - beta)^(2/n - 1)`: Gauss-Jacobi;
+//! - `amp < 1`: off the real axis at `pi/2 +- i arccosh(1/amp)`.
+//!
+//! A band whose top is closer to that singularity than half its width (`amp`
+//! near 1, or `amp c` near 1) is split geometrically towards its top, so that
+//! every piece is at least its own width away from it (Gauss converges
+//! geometrically on each). `y` is always evaluated in a cancellation-free form.
+//! Each piece is integrated at orders 4, 8, 16, ...: it is accepted when the
+//! difference of the first two orders is within the relative tolerance (that
+//! difference is then the error estimate), or later when the error of the last
+//! order predicted by geometric convergence from the last three, `100 d^3/d'^2`
+//! (`d`, `d'` the last two differences, capped at `d`), is; the estimates of the
+//! pieces add up to the reported one.
 
 use crate::flat::Ratio;
 use crate::quad;
-use crate::spring::{mean_normal, Spring};
+use crate::spring::{mean_normal_at_angle, Spring, Velocity};
 use serde::Serialize;
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Highest Gauss order tried per piece.
 pub const MAX_ORDER: usize = 256;
@@ -43,6 +54,8 @@ pub const MIN_ORDER: usize = 4;
 pub const DEFAULT_TOL: f64 = 4e-15;
 /// Rounding floor added to every error estimate.
 const ROUNDING_FLOOR: f64 = 8.0 * f64::EPSILON;
+/// Most pieces one band is split into.
+const MAX_PIECES: usize = 64;
 
 /// The regime of a band of springs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -87,7 +100,7 @@ pub struct MdrResult {
     pub nodes: usize,
 }
 
-/// Integrals over one piece: `(int amp <B> dz, int amp D dz)`, error estimates, nodes.
+/// Integrals `(int amp <B> dz, int amp D dz)` with error estimates and node count.
 #[derive(Debug, Clone, Copy, Default)]
 struct Sums {
     normal: f64,
@@ -107,120 +120,181 @@ impl std::ops::AddAssign for Sums {
     }
 }
 
-struct Problem {
-    n: f64,
-    amp: f64,
-    vbar: f64,
-    tol: f64,
-    /// Whether the band has a deficit to integrate.
-    stick: bool,
+/// How the Jacobian behaves at the top of a piece.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Top {
+    /// Analytic at the top.
+    Regular,
+    /// `amp > 1`, top at `beta*`: weight `(beta* - beta)^(1/n - 1)`.
+    Centre,
+    /// `amp = 1`, top at `pi/2`: weight `(pi/2 - beta)^(2/n - 1)`.
+    CentreCritical,
 }
 
-impl Problem {
-    /// `amp <B>(s)` and `amp D(s)` at `y`, times `dz/dy = y^(1/n-1)/n` unless `weighted`.
-    fn integrand(&self, y: f64) -> (f64, f64) {
-        let s = (1.0 - y) / self.amp;
-        if self.stick {
-            let sp = Spring::new(s, self.vbar);
-            (self.amp * sp.mean_normal, self.amp * sp.deficit)
+struct Contact {
+    n: f64,
+    amp: f64,
+    /// `1/n - 1`, the exponent of `y` in the Jacobian.
+    gamma: f64,
+    /// `arcsin(1/amp)` for `amp > 1`.
+    beta_star: f64,
+    /// Velocity constants when `vbar < 1`.
+    vel: Option<Velocity>,
+    tol: f64,
+}
+
+impl Contact {
+    /// `y = 1 - amp sin(beta)` without cancellation near its zero.
+    fn y(&self, beta: f64) -> f64 {
+        if self.amp > 1.0 {
+            2.0 * self.amp * (0.5 * (self.beta_star + beta)).cos() * (0.5 * (self.beta_star - beta)).sin()
         } else {
-            (self.amp * mean_normal(s), 0.0)
+            let h = (0.5 * (FRAC_PI_2 - beta)).sin();
+            (1.0 - self.amp) + 2.0 * self.amp * h * h
         }
     }
 
-    /// One Gauss pass of order `m` over `[p, q]` in `t` (see module docs).
-    fn pass(&self, p: f64, q: f64, m: usize) -> (f64, f64) {
-        let inv_n = 1.0 / self.n;
+    /// `y^gamma`, with the common exponents without `powf`.
+    fn y_pow(&self, y: f64) -> f64 {
+        if self.gamma == 0.0 {
+            1.0
+        } else if self.gamma == -0.5 {
+            1.0 / y.sqrt()
+        } else {
+            y.powf(self.gamma)
+        }
+    }
+
+    /// The Jacobian `dz/dbeta = (amp/n) y^gamma cos(beta)`, divided by the weight
+    /// of `top`; `d` is the distance of `beta` from the top.
+    fn jacobian(&self, beta: f64, d: f64, top: Top) -> f64 {
+        let k = self.amp / self.n;
+        match top {
+            Top::Regular => k * self.y_pow(self.y(beta)) * beta.cos(),
+            Top::Centre => {
+                // y / d = 2 amp cos((beta* + beta)/2) sin(d/2)/d.
+                let ratio = 2.0 * self.amp * (0.5 * (self.beta_star + beta)).cos() * (0.5 * d).sin() / d;
+                k * ratio.powf(self.gamma) * beta.cos()
+            }
+            Top::CentreCritical => {
+                // amp = 1, u = pi/2 - beta = d: y/u^2 = 2 (sin(u/2)/u)^2, cos(beta)/u = sin(u)/u.
+                let q = (0.5 * d).sin() / d;
+                k * (2.0 * q * q).powf(self.gamma) * (d.sin() / d)
+            }
+        }
+    }
+
+    /// Exponent of the weight `(top - beta)^e` of `top`.
+    fn weight_exponent(&self, top: Top) -> f64 {
+        match top {
+            Top::Regular => 0.0,
+            Top::Centre => self.gamma,
+            Top::CentreCritical => 2.0 * self.gamma + 1.0,
+        }
+    }
+
+    /// `(amp <B>, amp D)` of the spring at `beta`.
+    fn means(&self, beta: f64, stick: bool) -> (f64, f64) {
+        match (stick, &self.vel) {
+            (true, Some(vel)) => {
+                let (b, d) = vel.stick_first_at(beta);
+                (self.amp * b, self.amp * d)
+            }
+            _ => (self.amp * mean_normal_at_angle(FRAC_PI_2 + beta), 0.0),
+        }
+    }
+
+    /// Order-`m` Gauss(-Jacobi) sums over `[lo, hi]` with the weight of `top` at `hi`.
+    fn pass(&self, lo: f64, hi: f64, top: Top, stick: bool, m: usize) -> (f64, f64) {
+        let e = self.weight_exponent(top);
+        let r = quad::rule(m, e);
+        let h = 0.5 * (hi - lo);
         let (mut sn, mut sd) = (0.0, 0.0);
-        if p == 0.0 {
-            // y = q sin^2(t/2); y^(1/n-1) dy = q^(1/n) sin(t/2)^(2/n-1) cos(t/2) dt; weight t^(2/n-1).
-            let beta = 2.0 * inv_n - 1.0;
-            let r = quad::rule(m, beta);
-            let scale = (0.5 * PI).powf(beta + 1.0) * q.powf(inv_n) * inv_n;
-            for (&x, &w) in r.nodes.iter().zip(&r.weights) {
-                let t = 0.5 * PI * (1.0 + x);
-                let h = (0.5 * t).sin();
-                let y = q * h * h;
-                let jac = if beta == 0.0 { 1.0 } else { (h / t).powf(beta) } * (0.5 * t).cos();
-                let (fb, fd) = self.integrand(y);
-                sn += w * jac * fb;
-                sd += w * jac * fd;
-            }
-            (scale * sn, scale * sd)
-        } else {
-            let r = quad::rule(m, 0.0);
-            let half = 0.5 * (q - p);
-            for (&x, &w) in r.nodes.iter().zip(&r.weights) {
-                let t = 0.5 * PI * (1.0 + x);
-                let (st, ct) = t.sin_cos();
-                let y = p + half * (1.0 - ct);
-                let jac = half * st * y.powf(inv_n - 1.0) * inv_n;
-                let (fb, fd) = self.integrand(y);
-                sn += w * jac * fb;
-                sd += w * jac * fd;
-            }
-            (0.5 * PI * sn, 0.5 * PI * sd)
+        for (&x, &w) in r.nodes.iter().zip(&r.weights) {
+            // x = -1 at the top: beta = hi - h (1 + x).
+            let d = h * (1.0 + x);
+            let beta = hi - d;
+            let jac = w * self.jacobian(beta, d, top);
+            let (b, dd) = self.means(beta, stick);
+            sn += jac * b;
+            sd += jac * dd;
         }
+        let scale = h.powf(e + 1.0);
+        (scale * sn, scale * sd)
     }
 
-    /// Integrate one piece, doubling the order from [`MIN_ORDER`].
-    ///
-    /// With `d_m = |Q_2m - Q_m|` (about the error of `Q_m`), geometric
-    /// convergence predicts the error of `Q_4m` as `d_2m^2 / d_m`. `Q_4m` is
-    /// accepted when that prediction, times a safety factor of 10, is within the
-    /// relative tolerance and the differences are decreasing; the reported
-    /// error is that product (never below the rounding floor of the caller).
-    fn piece(&self, p: f64, q: f64) -> Sums {
+    /// One piece at increasing orders, until the predicted error is within tolerance.
+    fn piece(&self, lo: f64, hi: f64, top: Top, stick: bool) -> Sums {
         let mut m = MIN_ORDER;
-        let q1 = self.pass(p, q, m);
-        let q2 = self.pass(p, q, 2 * m);
-        let mut cur = q2;
-        let mut d_prev = ((q2.0 - q1.0).abs(), (q2.1 - q1.1).abs());
+        let q0 = self.pass(lo, hi, top, stick, m);
+        let q1 = self.pass(lo, hi, top, stick, 2 * m);
         let mut nodes = 3 * m;
+        let (mut prev_d, mut cur) = (((q1.0 - q0.0).abs(), (q1.1 - q0.1).abs()), q1);
+        // A loose tolerance may already be met by the plain difference of the first two orders.
+        if prev_d.0 <= self.tol * q1.0.abs() && prev_d.1 <= self.tol * q1.1.abs() {
+            return Sums { normal: q1.0, deficit: q1.1, err_normal: prev_d.0, err_deficit: prev_d.1, nodes };
+        }
         loop {
             m *= 2;
-            let next = self.pass(p, q, 2 * m);
+            let next = self.pass(lo, hi, top, stick, 2 * m);
             nodes += 2 * m;
             let d = ((next.0 - cur.0).abs(), (next.1 - cur.1).abs());
+            // Geometric convergence e_k = C r^k: the error of `next` is d^3 / d_prev^2.
             let predict = |dc: f64, dp: f64| {
                 if dc == 0.0 {
                     0.0
                 } else if dc < dp {
-                    10.0 * dc * dc / dp
+                    (100.0 * dc * dc * dc / (dp * dp)).min(dc)
                 } else {
                     dc
                 }
             };
-            let (en, ed) = (predict(d.0, d_prev.0), predict(d.1, d_prev.1));
+            let (en, ed) = (predict(d.0, prev_d.0), predict(d.1, prev_d.1));
             cur = next;
-            if (en <= self.tol * cur.0.abs() && ed <= self.tol * cur.1.abs()) || 2 * m >= MAX_ORDER {
-                return Sums {
-                    normal: cur.0,
-                    deficit: cur.1,
-                    err_normal: en,
-                    err_deficit: ed,
-                    nodes,
-                };
+            let ok = en <= self.tol * cur.0.abs() && ed <= self.tol * cur.1.abs();
+            if ok || 2 * m >= MAX_ORDER {
+                return Sums { normal: cur.0, deficit: cur.1, err_normal: en, err_deficit: ed, nodes };
             }
-            d_prev = d;
+            prev_d = d;
         }
     }
 
-    /// Integrate the band `[p, q]` in `y`, split geometrically near the branch point 0.
-    fn band(&self, p: f64, q: f64) -> Sums {
+    /// Distance from `hi` to the nearest singularity of the Jacobian (`inf` if none).
+    fn singular_distance(&self, hi: f64, top: Top) -> f64 {
+        if self.gamma == 0.0 {
+            return f64::INFINITY;
+        }
+        match top {
+            Top::Centre => PI - 2.0 * self.beta_star,
+            Top::CentreCritical => f64::INFINITY,
+            Top::Regular if self.amp > 1.0 => self.beta_star - hi,
+            Top::Regular if self.amp == 1.0 => FRAC_PI_2 - hi,
+            Top::Regular => (FRAC_PI_2 - hi).hypot((1.0 / self.amp).acosh()),
+        }
+    }
+
+    /// Integrate the band `[lo, hi]`, split geometrically towards a close singularity.
+    fn band(&self, lo: f64, hi: f64, top: Top, stick: bool) -> Sums {
         let mut total = Sums::default();
-        if q <= p {
+        if hi <= lo {
             return total;
         }
-        let singular = self.n != 1.0;
-        let mut lo = p;
-        if singular && p > 0.0 {
-            while 4.0 * lo < q - lo {
-                total += self.piece(lo, 2.0 * lo);
-                lo *= 2.0;
-            }
+        let dist = self.singular_distance(hi, top);
+        if !(dist < 0.5 * (hi - lo)) {
+            total += self.piece(lo, hi, top, stick);
+            return total;
         }
-        total += self.piece(lo, q);
+        // Pieces [hi - dist 2^(k+1), hi - dist 2^k] below a top piece [hi - dist, hi].
+        let dist = dist.max((hi - lo) * 2f64.powi(-(MAX_PIECES as i32 - 2)));
+        let mut upper = hi - dist;
+        total += self.piece(upper, hi, top, stick);
+        let mut width = dist;
+        while upper > lo {
+            let lower = if upper - 2.0 * width <= lo + width { lo } else { upper - width };
+            total += self.piece(lower, upper, Top::Regular, stick);
+            upper = lower;
+            width *= 2.0;
+        }
         total
     }
 }
@@ -229,62 +303,56 @@ impl Problem {
 ///
 /// `n > 0`, `vbar, amp` finite and `>= 0` (checked by [`crate::shape`]); `tol`
 /// is the relative quadrature tolerance; `bands` asks for the per-band report.
+/// All integrals are scaled by `amp` (units `kz u0` rather than `kz du`), so
+/// that `amp -> 0` stays finite.
 pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResult {
     let tol = tol.max(DEFAULT_TOL);
-    let unit = MdrResult {
-        ratio: Ratio {
-            mu_ratio: 1.0,
-            reduction: 0.0,
-        },
-        error_estimate: 0.0,
-        bands: vec![],
-        nodes: 0,
-    };
+    let unit = MdrResult { ratio: Ratio { mu_ratio: 1.0, reduction: 0.0 }, error_estimate: 0.0, bands: vec![], nodes: 0 };
     if amp == 0.0 || (vbar >= 1.0 && !bands) {
         return unit;
     }
-    let c = if vbar < 1.0 { (1.0 - vbar * vbar).sqrt() } else { 0.0 };
-    let d_perm = if vbar < 1.0 {
-        Spring::new(f64::MAX, vbar).deficit
+    let vel = (vbar < 1.0).then(|| Velocity::new(vbar));
+    let alpha = vel.map_or(0.0, |v| v.alpha);
+    let beta_star = if amp > 1.0 { (1.0 / amp).asin() } else { FRAC_PI_2 };
+    let contact = Contact { n, amp, gamma: 1.0 / n - 1.0, beta_star, vel, tol };
+    let top_kind = if amp > 1.0 {
+        Top::Centre
+    } else if amp == 1.0 {
+        Top::CentreCritical
     } else {
-        0.0
+        Top::Regular
     };
-    // Band limits in y = 1 - amp s, clipped to [0, 1 + amp].
-    let y_of = |s: f64| (1.0 - amp * s).clamp(0.0, 1.0 + amp);
-    let (y1, yc, ymc, yend) = (y_of(1.0), y_of(c), y_of(-c), 1.0 + amp);
-    let z_of = |y: f64| y.powf(1.0 / n);
-    let mk = |stick: bool| Problem {
-        n,
-        amp,
-        vbar,
-        tol,
-        stick,
-    };
+    let top_of = |hi: f64| if hi == beta_star { top_kind } else { Top::Regular };
+    let d_perm = vel.map_or(0.0, |_| Spring::new(f64::MAX, vbar).deficit);
+    let c = alpha.sin();
+    let z_of_s = |s: f64| (1.0 - amp * s).clamp(0.0, 1.0 + amp).powf(1.0 / n);
+    let z_of_beta = |b: f64| contact.y(b).max(0.0).powf(1.0 / n);
 
-    // Permanent contact: int_0^{z1} (1 - z^n) dz, deficit D(vbar) z1 (scaled by amp).
-    let z1 = z_of(y1);
-    let perm = Sums {
-        normal: z1 - z1 * y1 / (n + 1.0),
-        deficit: amp * d_perm * z1,
-        ..Default::default()
-    };
-    let mut slip_first = mk(false).band(y1, yc);
-    slip_first.deficit = amp * d_perm * (z_of(yc) - z1);
-    let stick_first = mk(vbar < 1.0).band(yc, ymc);
-    let slip_only = mk(false).band(ymc, yend);
+    // Permanent contact (amp < 1): int_0^{z1} amp s dz = z1 - z1^(n+1)/(n+1).
+    let z1 = z_of_s(1.0);
+    let perm = Sums { normal: z1 - z1 * z1.powf(n) / (n + 1.0), deficit: amp * d_perm * z1, ..Default::default() };
+    // Slip first: beta in [alpha, beta_star]; the deficit is D(vbar) per spring.
+    let sf_lo = alpha.min(beta_star);
+    let mut slip_first = contact.band(sf_lo, beta_star, top_of(beta_star), false);
+    slip_first.deficit = amp * d_perm * (z_of_s(c) - z1);
+    // Stick first: beta in [-alpha, min(alpha, beta_star)].
+    let stick_first = contact.band(-alpha, sf_lo, top_of(sf_lo), vel.is_some());
+    // Slip only: beta in [-pi/2, -alpha].
+    let slip_only = contact.band(-FRAC_PI_2, -alpha, Top::Regular, false);
 
+    let first_kind = if vel.is_some() { BandKind::SlipFirst } else { BandKind::SlipOnly };
     let parts = [
-        (BandKind::PermanentContact, 0.0, y1, perm),
-        (BandKind::SlipFirst, y1, yc, slip_first),
-        (BandKind::StickFirst, yc, ymc, stick_first),
-        (BandKind::SlipOnly, ymc, yend, slip_only),
+        (BandKind::PermanentContact, [0.0, z1], perm),
+        (first_kind, [z1, z_of_beta(sf_lo)], slip_first),
+        (BandKind::StickFirst, [z_of_beta(sf_lo), z_of_beta(-alpha)], stick_first),
+        (BandKind::SlipOnly, [z_of_beta(-alpha), (1.0 + amp).powf(1.0 / n)], slip_only),
     ];
     let mut total = Sums::default();
     for p in &parts {
-        total += p.3;
+        total += p.2;
     }
-    let ratio = Ratio::from_deficit(total.deficit, total.normal);
     let (nn, dd) = (total.normal, total.deficit);
+    let ratio = Ratio::from_deficit(dd, nn);
     let error_estimate = if nn > 0.0 {
         total.err_deficit / nn + dd * total.err_normal / (nn * nn) + ROUNDING_FLOOR
     } else {
@@ -294,28 +362,19 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     let band_list = if bands {
         parts
             .iter()
-            .filter(|p| p.2 > p.1)
-            .map(|&(kind, ya, yb, s)| Band {
+            .filter(|p| p.1[1] > p.1[0])
+            .map(|&(kind, x_range, s)| Band {
                 kind,
-                x_range: [z_of(ya), z_of(yb)],
+                x_range,
                 normal_share: if nn > 0.0 { s.normal / nn } else { 0.0 },
-                tangential_share: if tangential > 0.0 {
-                    (s.normal - s.deficit) / tangential
-                } else {
-                    0.0
-                },
+                tangential_share: if tangential > 0.0 { (s.normal - s.deficit) / tangential } else { 0.0 },
                 nodes: s.nodes,
             })
             .collect()
     } else {
         vec![]
     };
-    MdrResult {
-        ratio,
-        error_estimate,
-        bands: band_list,
-        nodes: total.nodes,
-    }
+    MdrResult { ratio, error_estimate, bands: band_list, nodes: total.nodes }
 }
 
 /// A full MDR point: the result plus the static limit, for `fricosc point`.
@@ -339,10 +398,6 @@ pub fn point(n: f64, vbar: f64, amp: f64, tol: f64) -> crate::Result<MdrPoint> {
     crate::shape::check_tol(tol)?;
     let result = power_law(n, vbar, amp, tol, true);
     let mu_static_ratio = power_law(n, 0.0, amp, tol, false).ratio.mu_ratio;
-    Ok(MdrPoint {
-        vbar,
-        amp,
-        result,
-        mu_static_ratio,
-    })
+    Ok(MdrPoint { vbar, amp, result, mu_static_ratio })
 }
+

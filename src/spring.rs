@@ -145,15 +145,43 @@ pub fn mean_normal(s: f64) -> f64 {
     } else if s <= -1.0 {
         0.0
     } else {
-        let phi = (-s).acos();
-        let h = (0.5 * phi).sin();
-        (2.0 * phi * h * h - s_fn(phi)) / PI
+        mean_normal_at_angle((-s).acos())
     }
 }
 
-/// Gap between the bound and the stick line, `H(x) = S(beta - x) - S(beta) + w x`.
-fn gap(beta: f64, w: f64, x: f64) -> f64 {
-    s_fn(beta - x) - s_fn(beta) + w * x
+/// `<B>` of a jumping spring from its contact half-angle `phi = arccos(-s)` in
+/// `[0, pi]` (the contact lasts `2 phi` per period): `(2 phi sin^2(phi/2) - S(phi))/pi`.
+pub fn mean_normal_at_angle(phi: f64) -> f64 {
+    let h = (0.5 * phi).sin();
+    (2.0 * phi * h * h - s_fn(phi)) / PI
+}
+
+/// Velocity-dependent constants shared by all springs of a contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Velocity {
+    /// `vbar` (eq. 3), `< 1`.
+    pub vbar: f64,
+    /// `w = 1 - vbar`.
+    pub w: f64,
+    /// `alpha = arccos vbar`; springs with `|arcsin s| < alpha` stick from contact.
+    pub alpha: f64,
+    /// Newton start for the stick length of a tangent start.
+    tangent_guess: f64,
+}
+
+impl Velocity {
+    /// Constants for `0 <= vbar < 1`.
+    pub fn new(vbar: f64) -> Self {
+        let (w, alpha) = velocity_angles(vbar);
+        Velocity { vbar, w, alpha, tangent_guess: tangent_length_guess(alpha, vbar) }
+    }
+
+    /// Mean normal force and deficit of the stick-first spring with
+    /// `s = sin beta`, `|beta| < alpha` (means only, no events).
+    pub fn stick_first_at(&self, beta: f64) -> (f64, f64) {
+        let (_, d, _) = stick_phase(beta, self, PI + 2.0 * beta, ROOT_RTOL_MEANS);
+        (mean_normal_at_angle(FRAC_PI_2 + beta), d)
+    }
 }
 
 /// `2 pi` times the deficit of a stick of length `len` starting at `beta`.
@@ -180,22 +208,25 @@ fn tangent_length_guess(alpha: f64, vbar: f64) -> f64 {
     }
 }
 
-/// Solve the stick phase starting at `beta` (root of `H` and the deficit).
+/// Solve the stick phase starting at `beta`: the root of the gap
+/// `H(x) = S(beta - x) - S(beta) + w x`, and the deficit.
 ///
 /// The root lies in `[alpha + beta, x_max]`, where `H` falls from its maximum.
 /// Newton starts from [`tangent_length_guess`], scaled for a start at contact
 /// by the ratio `L / (alpha + beta)`, which runs from 2 (`beta -> -alpha`, where
 /// `H ~ eps x - |s| x^2/2`) to the tangent value.
-fn stick_phase(beta: f64, vbar: f64, w: f64, alpha: f64, x_max: f64, rtol: f64) -> (f64, f64, u32) {
+fn stick_phase(beta: f64, vel: &Velocity, x_max: f64, rtol: f64) -> (f64, f64, u32) {
+    let (alpha, w, vbar) = (vel.alpha, vel.w, vel.vbar);
     let lo = alpha + beta;
-    let lt = tangent_length_guess(alpha, vbar);
+    let lt = vel.tangent_guess;
     let guess = if beta == alpha {
         lt
     } else {
         let ratio_t = lt / (2.0 * alpha);
         lo * (2.0 + (ratio_t - 2.0) * lo / (2.0 * alpha))
     };
-    let r = root::newton(|x| gap(beta, w, x), |x| (beta - x).cos() - vbar, lo, x_max, guess, rtol);
+    let s_beta = s_fn(beta);
+    let r = root::newton(|x| s_fn(beta - x) - s_beta + w * x, |x| (beta - x).cos() - vbar, lo, x_max, guess, rtol);
     // The deficit is a mean of a non-negative gap; rounding must not flip it.
     let d = (deficit_2pi(beta, w, r.x) / TAU).max(0.0);
     (r.x, d, r.evaluations)
@@ -240,7 +271,8 @@ impl Spring {
             };
             return out;
         }
-        let (w, alpha) = velocity_angles(vbar);
+        let vel = Velocity::new(vbar);
+        let alpha = vel.alpha;
         let c = alpha.sin();
         let (beta, x_max, regime) = if s >= 1.0 {
             (alpha, TAU, Regime::PermanentStickSlip)
@@ -253,7 +285,7 @@ impl Spring {
             out.regime = Regime::JumpingSlip;
             return out;
         };
-        let (length, deficit, evals) = stick_phase(beta, vbar, w, alpha, x_max, rtol);
+        let (length, deficit, evals) = stick_phase(beta, &vel, x_max, rtol);
         let start_force = if regime == Regime::JumpingStickFirst {
             0.0
         } else {
