@@ -6,8 +6,10 @@
 //! `amp` are kept as given and in order; `mu_ratio` and `reduction` present in
 //! the input are replaced.
 
+use crate::error::check_nonneg;
 use crate::error::{Error, Result};
-use crate::shape::{evaluate, Shape};
+use crate::shape::{evaluate, Evaluation, Shape};
+use rayon::prelude::*;
 use serde_json::{Map, Value};
 use std::collections::HashMap;
 
@@ -34,11 +36,12 @@ pub fn run(text: &str, source: &str) -> Result<Vec<Map<String, Value>>> {
             limit: MAX_ROWS as u128,
         });
     }
+    // Validate every row first, then evaluate in parallel (rayon), in order.
     let mut shapes: HashMap<String, Shape> = HashMap::new();
-    let mut out = Vec::with_capacity(rows.len());
+    let mut jobs = Vec::with_capacity(rows.len());
     for (i, row) in rows.into_iter().enumerate() {
         let row_err = |reason: String| parse_err(format!("row {i}: {reason}"));
-        let Value::Object(mut obj) = row else {
+        let Value::Object(obj) = row else {
             return Err(row_err("expected an object".into()));
         };
         let spec = match obj.get("shape") {
@@ -54,11 +57,21 @@ pub fn run(text: &str, source: &str) -> Result<Vec<Map<String, Value>>> {
             None => Err(row_err(format!("missing field '{name}'"))),
         };
         let (vbar, amp) = (number("vbar")?, number("amp")?);
+        check_nonneg("vbar", vbar).map_err(|e| row_err(e.to_string()))?;
+        check_nonneg("amp", amp).map_err(|e| row_err(e.to_string()))?;
         if !shapes.contains_key(&spec) {
             let shape = Shape::parse(&spec).map_err(|e| row_err(e.to_string()))?;
             shapes.insert(spec.clone(), shape);
         }
-        let eval = evaluate(&shapes[&spec], vbar, amp).map_err(|e| row_err(e.to_string()))?;
+        jobs.push((obj, spec, vbar, amp));
+    }
+    let results: Vec<Result<Evaluation>> = jobs
+        .par_iter()
+        .map(|(_, spec, vbar, amp)| evaluate(&shapes[spec], *vbar, *amp))
+        .collect();
+    let mut out = Vec::with_capacity(jobs.len());
+    for (i, ((mut obj, ..), eval)) in jobs.into_iter().zip(results).enumerate() {
+        let eval = eval.map_err(|e| parse_err(format!("row {i}: {e}")))?;
         obj.insert("mu_ratio".into(), Value::from(eval.ratio.mu_ratio));
         obj.insert("reduction".into(), Value::from(eval.ratio.reduction));
         out.push(obj);

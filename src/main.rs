@@ -8,6 +8,7 @@ use fricosc::error::{Error, Result};
 use fricosc::grid::{parse_number, parse_values};
 use fricosc::output::{Format, TableWriter};
 use fricosc::shape::{check_tol, evaluate_with, Shape};
+use rayon::prelude::*;
 use std::io::{self, Read, Write};
 use std::process::ExitCode;
 
@@ -162,15 +163,26 @@ fn table(a: TableArgs) -> Result<()> {
     }
     let name = shape.name();
     let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, &name, cols).map_err(io_err)?;
-    for &amp in &amps {
-        for &v in &vels {
-            let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
-            let e = evaluate_with(&shape, vbar, amp, tol)?;
-            let (m, r) = (e.ratio.mu_ratio, e.ratio.reduction);
+    // Rows in parallel (rayon), written in order, a bounded chunk at a time.
+    let pairs: Vec<(f64, f64)> = amps
+        .iter()
+        .flat_map(|&amp| vels.iter().map(move |&v| (amp, v)))
+        .collect();
+    for chunk in pairs.chunks(1 << 15) {
+        let rows: Vec<Result<[f64; 5]>> = chunk
+            .par_iter()
+            .map(|&(amp, v)| {
+                let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
+                let e = evaluate_with(&shape, vbar, amp, tol)?;
+                Ok([v, vbar, amp, e.ratio.mu_ratio, e.ratio.reduction])
+            })
+            .collect();
+        for row in rows {
+            let r = row?;
             if is_vhat {
-                w.row(&name, &[v, vbar, amp, m, r])
+                w.row(&name, &r)
             } else {
-                w.row(&name, &[vbar, amp, m, r])
+                w.row(&name, &r[1..])
             }
             .map_err(io_err)?;
         }

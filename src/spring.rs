@@ -173,14 +173,20 @@ impl Velocity {
     /// Constants for `0 <= vbar < 1`.
     pub fn new(vbar: f64) -> Self {
         let (w, alpha) = velocity_angles(vbar);
-        Velocity { vbar, w, alpha, tangent_guess: tangent_length_guess(alpha, vbar) }
+        Velocity {
+            vbar,
+            w,
+            alpha,
+            tangent_guess: tangent_length_guess(alpha, vbar),
+        }
     }
 
-    /// Mean normal force and deficit of the stick-first spring with
-    /// `s = sin beta`, `|beta| < alpha` (means only, no events).
-    pub fn stick_first_at(&self, beta: f64) -> (f64, f64) {
-        let (_, d, _) = stick_phase(beta, self, PI + 2.0 * beta, ROOT_RTOL_MEANS);
-        (mean_normal_at_angle(FRAC_PI_2 + beta), d)
+    /// Mean normal force, deficit and stick length of the stick-first spring
+    /// with `s = sin beta`, `|beta| < alpha` (means only, no events). `guess`, if
+    /// given, starts Newton (a neighbouring spring's stick length).
+    pub fn stick_first_at(&self, beta: f64, guess: Option<f64>) -> (f64, f64, f64) {
+        let (len, d, _) = stick_phase_from(beta, self, PI + 2.0 * beta, ROOT_RTOL_MEANS, guess);
+        (mean_normal_at_angle(FRAC_PI_2 + beta), d, len)
     }
 }
 
@@ -216,17 +222,41 @@ fn tangent_length_guess(alpha: f64, vbar: f64) -> f64 {
 /// by the ratio `L / (alpha + beta)`, which runs from 2 (`beta -> -alpha`, where
 /// `H ~ eps x - |s| x^2/2`) to the tangent value.
 fn stick_phase(beta: f64, vel: &Velocity, x_max: f64, rtol: f64) -> (f64, f64, u32) {
+    stick_phase_from(beta, vel, x_max, rtol, None)
+}
+
+/// [`stick_phase`] with an optional Newton start.
+fn stick_phase_from(beta: f64, vel: &Velocity, x_max: f64, rtol: f64, start: Option<f64>) -> (f64, f64, u32) {
     let (alpha, w, vbar) = (vel.alpha, vel.w, vel.vbar);
     let lo = alpha + beta;
     let lt = vel.tangent_guess;
-    let guess = if beta == alpha {
-        lt
-    } else {
-        let ratio_t = lt / (2.0 * alpha);
-        lo * (2.0 + (ratio_t - 2.0) * lo / (2.0 * alpha))
+    let guess = match start {
+        Some(g) => g,
+        None if beta == alpha => lt,
+        None => {
+            let ratio_t = lt / (2.0 * alpha);
+            lo * (2.0 + (ratio_t - 2.0) * lo / (2.0 * alpha))
+        }
     };
     let s_beta = s_fn(beta);
-    let r = root::newton(|x| s_fn(beta - x) - s_beta + w * x, |x| (beta - x).cos() - vbar, lo, x_max, guess, rtol);
+    // f and f' at the same x share one sin_cos (the derivative is asked right after f).
+    let cached_cos = std::cell::Cell::new((f64::NAN, 0.0));
+    let f = |x: f64| {
+        let y = beta - x;
+        if y.abs() < 2.0 {
+            cached_cos.set((x, y.cos()));
+            s_fn(y) - s_beta + w * x
+        } else {
+            let (sn, cs) = y.sin_cos();
+            cached_cos.set((x, cs));
+            (y - sn) - s_beta + w * x
+        }
+    };
+    let df = |x: f64| {
+        let (cx, cs) = cached_cos.get();
+        (if cx == x { cs } else { (beta - x).cos() }) - vbar
+    };
+    let r = root::newton(f, df, lo, x_max, guess, rtol);
     // The deficit is a mean of a non-negative gap; rounding must not flip it.
     let d = (deficit_2pi(beta, w, r.x) / TAU).max(0.0);
     (r.x, d, r.evaluations)
