@@ -290,7 +290,7 @@ impl Contact {
             return total;
         }
         let dist = self.singular_distance(hi, top);
-        if !(dist < 0.5 * (hi - lo)) {
+        if dist >= 0.5 * (hi - lo) {
             total += self.piece(lo, hi, top, stick);
             return total;
         }
