@@ -52,10 +52,13 @@ pub const MAX_ORDER: usize = 256;
 pub const MIN_ORDER: usize = 4;
 /// Default relative tolerance: about what f64 allows.
 pub const DEFAULT_TOL: f64 = 4e-15;
-/// Rounding floor added to every error estimate.
-const ROUNDING_FLOOR: f64 = 8.0 * f64::EPSILON;
-/// Most pieces one band is split into.
-const MAX_PIECES: usize = 64;
+/// Rounding floor added to every error estimate: sums of a few hundred terms and
+/// the Golub-Welsch weights (relative accuracy ~1e-15) keep about 1e-14 absolute.
+const ROUNDING_FLOOR: f64 = 1e-14;
+/// A singularity closer to a band end than this fraction of the band's width is graded.
+const GRADE_RATIO: f64 = 0.125;
+/// Most pieces one band is split into (half from each end).
+const MAX_PIECES: usize = 100;
 
 /// The regime of a band of springs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -221,15 +224,19 @@ impl Contact {
         (scale * sn, scale * sd)
     }
 
-    /// One piece at increasing orders, until the predicted error is within tolerance.
-    fn piece(&self, lo: f64, hi: f64, top: Top, stick: bool) -> Sums {
+    /// One piece at increasing orders, until the predicted error is within the
+    /// tolerance relative to the piece plus `scale` (the band's sums so far).
+    fn piece(&self, lo: f64, hi: f64, top: Top, stick: bool, scale: (f64, f64)) -> Sums {
         let mut m = MIN_ORDER;
         let q0 = self.pass(lo, hi, top, stick, m);
         let q1 = self.pass(lo, hi, top, stick, 2 * m);
         let mut nodes = 3 * m;
         let (mut prev_d, mut cur) = (((q1.0 - q0.0).abs(), (q1.1 - q0.1).abs()), q1);
         // A loose tolerance may already be met by the plain difference of the first two orders.
-        if prev_d.0 <= self.tol * q1.0.abs() && prev_d.1 <= self.tol * q1.1.abs() {
+        let within = |en: f64, ed: f64, q: (f64, f64)| {
+            en <= self.tol * (q.0.abs() + scale.0) && ed <= self.tol * (q.1.abs() + scale.1)
+        };
+        if within(prev_d.0, prev_d.1, q1) {
             return Sums {
                 normal: q1.0,
                 deficit: q1.1,
@@ -255,7 +262,7 @@ impl Contact {
             };
             let (en, ed) = (predict(d.0, prev_d.0), predict(d.1, prev_d.1));
             cur = next;
-            let ok = en <= self.tol * cur.0.abs() && ed <= self.tol * cur.1.abs();
+            let ok = within(en, ed, cur);
             if ok || 2 * m >= MAX_ORDER {
                 return Sums {
                     normal: cur.0,
@@ -271,7 +278,9 @@ impl Contact {
 
     /// Distance from `hi` to the nearest singularity of the Jacobian (`inf` if none).
     fn singular_distance(&self, hi: f64, top: Top) -> f64 {
-        if self.gamma == 0.0 {
+        // gamma = 0 (cone): no singularity; amp = 1 with gamma = -1/2 (paraboloid):
+        // y^(-1/2) cos(beta) = sqrt(2) cos(u/2) is analytic at u = pi/2 - beta = 0.
+        if self.gamma == 0.0 || (self.amp == 1.0 && self.gamma == -0.5) {
             return f64::INFINITY;
         }
         match top {
@@ -283,31 +292,57 @@ impl Contact {
         }
     }
 
-    /// Integrate the band `[lo, hi]`, split geometrically towards a close singularity.
-    fn band(&self, lo: f64, hi: f64, top: Top, stick: bool) -> Sums {
+    /// Integrate the band `[lo, hi]`, split geometrically towards close
+    /// singularities: one `dist_top` beyond `hi` (the Jacobian's, see
+    /// [`Contact::singular_distance`], or the spring means' at `s = 1`) and one
+    /// `dist_bottom` below `lo`. Cuts at `hi - d 2^k` and `lo + d 2^k` keep every
+    /// piece at least its own width away from both.
+    fn band(
+        &self,
+        lo: f64,
+        hi: f64,
+        top: Top,
+        stick: bool,
+        extra_top: f64,
+        dist_bottom: f64,
+        scale: (f64, f64),
+    ) -> Sums {
         let mut total = Sums::default();
         if hi <= lo {
             return total;
         }
-        let dist = self.singular_distance(hi, top);
-        if dist >= 0.5 * (hi - lo) {
-            total += self.piece(lo, hi, top, stick);
-            return total;
+        let width = hi - lo;
+        let floor = width * 2f64.powi(-(MAX_PIECES as i32 / 2 - 2));
+        let dist_top = self.singular_distance(hi, top).min(extra_top).max(floor);
+        let dist_bottom = dist_bottom.max(floor);
+        let mid = lo + width * dist_bottom / (dist_top + dist_bottom);
+        let mut cuts = vec![lo, hi];
+        // Gauss copes with a singularity an eighth of the width away; closer ones are graded.
+        let mut d = dist_top;
+        while hi - d > mid && d < GRADE_RATIO * width {
+            cuts.push(hi - d);
+            d *= 2.0;
         }
-        // Pieces [hi - dist 2^(k+1), hi - dist 2^k] below a top piece [hi - dist, hi].
-        let dist = dist.max((hi - lo) * 2f64.powi(-(MAX_PIECES as i32 - 2)));
-        let mut upper = hi - dist;
-        total += self.piece(upper, hi, top, stick);
-        let mut width = dist;
-        while upper > lo {
-            let lower = if upper - 2.0 * width <= lo + width {
-                lo
-            } else {
-                upper - width
-            };
-            total += self.piece(lower, upper, Top::Regular, stick);
-            upper = lower;
-            width *= 2.0;
+        let mut d = dist_bottom;
+        while lo + d < mid && d < GRADE_RATIO * width {
+            cuts.push(lo + d);
+            d *= 2.0;
+        }
+        cuts.sort_by(f64::total_cmp);
+        // Widest pieces first: their sum sets the absolute scale that the tiny
+        // pieces near a singularity need only match (a relative tolerance on a
+        // piece worth 1e-17 of the band would chase rounding noise).
+        let mut pieces: Vec<(f64, f64)> = cuts.windows(2).map(|w| (w[0], w[1])).collect();
+        pieces.sort_by(|a, b| (b.1 - b.0).total_cmp(&(a.1 - a.0)));
+        for (a, b) in pieces {
+            let kind = if b == hi { top } else { Top::Regular };
+            total += self.piece(
+                a,
+                b,
+                kind,
+                stick,
+                (scale.0 + total.normal.abs(), scale.1 + total.deficit.abs()),
+            );
         }
         total
     }
@@ -353,8 +388,8 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     };
     let top_of = |hi: f64| if hi == beta_star { top_kind } else { Top::Regular };
     let d_perm = vel.map_or(0.0, |_| Spring::new(f64::MAX, vbar).deficit);
-    let c = alpha.sin();
     let z_of_s = |s: f64| (1.0 - amp * s).clamp(0.0, 1.0 + amp).powf(1.0 / n);
+    // Band edges from beta: y(beta) is cancellation-free where 1 - amp sqrt(1 - vbar^2) is not.
     let z_of_beta = |b: f64| contact.y(b).max(0.0).powf(1.0 / n);
 
     // Permanent contact (amp < 1): int_0^{z1} amp s dz = z1 - z1^(n+1)/(n+1).
@@ -366,12 +401,21 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     };
     // Slip first: beta in [alpha, beta_star]; the deficit is D(vbar) per spring.
     let sf_lo = alpha.min(beta_star);
-    let mut slip_first = contact.band(sf_lo, beta_star, top_of(beta_star), false);
-    slip_first.deficit = amp * d_perm * (z_of_s(c) - z1);
-    // Stick first: beta in [-alpha, min(alpha, beta_star)].
-    let stick_first = contact.band(-alpha, sf_lo, top_of(sf_lo), vel.is_some());
+    let inf = f64::INFINITY;
+    // The largest parts first: their sums are the absolute scale for the thin bands.
+    // Stick first: beta in [-alpha, min(alpha, beta_star)]. Its means, continued
+    // beyond the band, are singular at s = +-1 (beta = +-pi/2), a distance
+    // arcsin(vbar) from the band's ends.
+    let near = vbar.min(1.0).asin();
+    let scale0 = (perm.normal, perm.deficit);
+    let stick_first = contact.band(-alpha, sf_lo, top_of(sf_lo), vel.is_some(), near, near, scale0);
+    let scale1 = (scale0.0 + stick_first.normal, scale0.1 + stick_first.deficit);
+    // Slip first: beta in [alpha, beta_star]; the deficit is D(vbar) per spring.
+    let mut slip_first = contact.band(sf_lo, beta_star, top_of(beta_star), false, inf, inf, scale1);
+    slip_first.deficit = amp * d_perm * (z_of_beta(sf_lo) - z1);
+    let scale2 = (scale1.0 + slip_first.normal, scale1.1 + slip_first.deficit);
     // Slip only: beta in [-pi/2, -alpha].
-    let slip_only = contact.band(-FRAC_PI_2, -alpha, Top::Regular, false);
+    let slip_only = contact.band(-FRAC_PI_2, -alpha, Top::Regular, false, inf, inf, scale2);
 
     let first_kind = if vel.is_some() {
         BandKind::SlipFirst

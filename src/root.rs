@@ -48,6 +48,12 @@ pub fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, rtol: f64) -> Root {
         count.set(count.get() + 1);
         f(x)
     };
+    if !(lo < hi) {
+        return Root {
+            x: lo.min(hi),
+            evaluations: 0,
+        };
+    }
     let (flo, fhi) = (g(lo), g(hi));
     if let Some(x) = collapsed(lo, flo, hi, fhi) {
         return Root {
@@ -80,6 +86,13 @@ fn collapsed(lo: f64, flo: f64, hi: f64, fhi: f64) -> Option<f64> {
 /// `rtol * |x|` (the last step then squares the error). If Newton fails or leaves
 /// the bracket, [`bracketed`] takes over on `[lo, hi]`.
 pub fn newton(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, hi: f64, guess: f64, rtol: f64) -> Root {
+    if !(lo < hi) {
+        // An empty bracket (both ends the same point to rounding): that point is the root.
+        return Root {
+            x: lo.min(hi),
+            evaluations: 0,
+        };
+    }
     let count = Cell::new(0u32);
     let g = |x: f64| {
         count.set(count.get() + 1);
@@ -135,5 +148,17 @@ mod newton_tests {
         // From 0.1 the first Newton step of x^2 - 2 jumps to 10.05, outside [0, 2].
         let r = newton(|x| x * x - 2.0, |x| 2.0 * x, 0.0, 2.0, 0.1, 1e-14);
         assert!((r.x - std::f64::consts::SQRT_2).abs() < 1e-14);
+    }
+}
+
+#[cfg(test)]
+mod empty_bracket_tests {
+    use super::*;
+
+    #[test]
+    fn an_inverted_or_empty_bracket_returns_without_panicking() {
+        let r = newton(|x| x, |_| 1.0, 2.2e-16, 0.0, 1.0, 1e-10);
+        assert_eq!((r.x, r.evaluations), (0.0, 0));
+        assert_eq!(bracketed(|x| x, 1.0, 1.0, 1e-10).x, 1.0);
     }
 }

@@ -148,3 +148,49 @@ fn near_critical_reduction_keeps_relative_accuracy() {
         }
     }
 }
+
+#[path = "common/mdr_ref.rs"]
+mod mdr_ref;
+
+/// Over vbar in [0, 1.2] and amp in [0, 10], including 1 - vbar down to 1e-12:
+/// the solver agrees with the independent reference to 1e-13, and its error
+/// estimate bounds the difference (up to the reference's own accuracy).
+#[test]
+fn agrees_with_an_independent_quadrature_on_a_grid_and_the_estimate_bounds_the_error() {
+    let vbars = [
+        0.0,
+        1e-6,
+        0.05,
+        0.2,
+        0.45,
+        0.7,
+        0.9,
+        0.99,
+        1.0 - 1e-6,
+        1.0 - 1e-12,
+        1.0,
+        1.2,
+    ];
+    let amps = [0.0, 0.1, 0.5, 0.9, 0.999, 1.0, 1.001, 1.3, 2.0, 4.0, 10.0];
+    let mut worst: f64 = 0.0;
+    for n in [1.0, 2.0, 1.5, 3.0] {
+        for &v in &vbars {
+            for &a in &amps {
+                let r = power_law(n, v, a, DEFAULT_TOL, false);
+                let (reference, ref_acc) = mdr_ref::mu_ratio(n, v, a);
+                let err = (r.ratio.mu_ratio - reference).abs();
+                worst = worst.max(err);
+                assert!(
+                    err <= tol::MDR_ABS,
+                    "n={n} v={v} a={a}: err {err:e} (reference accuracy {ref_acc:e})"
+                );
+                assert!(
+                    err <= r.error_estimate + ref_acc,
+                    "n={n} v={v} a={a}: err {err:e} > estimate {:e}",
+                    r.error_estimate
+                );
+            }
+        }
+    }
+    assert!(worst < tol::MDR_ABS);
+}
