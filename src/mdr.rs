@@ -293,20 +293,12 @@ impl Contact {
     }
 
     /// Integrate the band `[lo, hi]`, split geometrically towards close
-    /// singularities: one `dist_top` beyond `hi` (the Jacobian's, see
+    /// singularities: one `near.0` (or the Jacobian's) beyond `hi` (the Jacobian's, see
     /// [`Contact::singular_distance`], or the spring means' at `s = 1`) and one
     /// `dist_bottom` below `lo`. Cuts at `hi - d 2^k` and `lo + d 2^k` keep every
     /// piece at least its own width away from both.
-    fn band(
-        &self,
-        lo: f64,
-        hi: f64,
-        top: Top,
-        stick: bool,
-        extra_top: f64,
-        dist_bottom: f64,
-        scale: (f64, f64),
-    ) -> Sums {
+    fn band(&self, lo: f64, hi: f64, top: Top, stick: bool, near: (f64, f64), scale: (f64, f64)) -> Sums {
+        let (extra_top, dist_bottom) = near;
         let mut total = Sums::default();
         if hi <= lo {
             return total;
@@ -408,14 +400,14 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     // arcsin(vbar) from the band's ends.
     let near = vbar.min(1.0).asin();
     let scale0 = (perm.normal, perm.deficit);
-    let stick_first = contact.band(-alpha, sf_lo, top_of(sf_lo), vel.is_some(), near, near, scale0);
+    let stick_first = contact.band(-alpha, sf_lo, top_of(sf_lo), vel.is_some(), (near, near), scale0);
     let scale1 = (scale0.0 + stick_first.normal, scale0.1 + stick_first.deficit);
     // Slip first: beta in [alpha, beta_star]; the deficit is D(vbar) per spring.
-    let mut slip_first = contact.band(sf_lo, beta_star, top_of(beta_star), false, inf, inf, scale1);
+    let mut slip_first = contact.band(sf_lo, beta_star, top_of(beta_star), false, (inf, inf), scale1);
     slip_first.deficit = amp * d_perm * (z_of_beta(sf_lo) - z1);
     let scale2 = (scale1.0 + slip_first.normal, scale1.1 + slip_first.deficit);
     // Slip only: beta in [-pi/2, -alpha].
-    let slip_only = contact.band(-FRAC_PI_2, -alpha, Top::Regular, false, inf, inf, scale2);
+    let slip_only = contact.band(-FRAC_PI_2, -alpha, Top::Regular, false, (inf, inf), scale2);
 
     let first_kind = if vel.is_some() {
         BandKind::SlipFirst

@@ -48,7 +48,7 @@ pub fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, rtol: f64) -> Root {
         count.set(count.get() + 1);
         f(x)
     };
-    if !(lo < hi) {
+    if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
         return Root {
             x: lo.min(hi),
             evaluations: 0,
@@ -86,7 +86,7 @@ fn collapsed(lo: f64, flo: f64, hi: f64, fhi: f64) -> Option<f64> {
 /// `rtol * |x|` (the last step then squares the error). If Newton fails or leaves
 /// the bracket, [`bracketed`] takes over on `[lo, hi]`.
 pub fn newton(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, hi: f64, guess: f64, rtol: f64) -> Root {
-    if !(lo < hi) {
+    if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
         // An empty bracket (both ends the same point to rounding): that point is the root.
         return Root {
             x: lo.min(hi),
