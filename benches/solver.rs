@@ -23,9 +23,30 @@ fn parabolic(c: &mut Criterion) {
     });
 }
 
+fn parabolic_table(c: &mut Criterion) {
+    // The seed's Fig. 7 grid, refined: 11 amplitudes x 1001 velocities, one thread.
+    let mut g = c.benchmark_group("table");
+    g.sample_size(10);
+    g.bench_function("parabolic 11 x 1001 (one thread)", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for i in 0..11 {
+                for j in 0..1001 {
+                    let (a, v) = (i as f64 / 10.0, j as f64 / 1000.0);
+                    acc += fricosc::mdr::power_law(2.0, v, a, fricosc::mdr::DEFAULT_TOL, false)
+                        .ratio
+                        .mu_ratio;
+                }
+            }
+            acc
+        })
+    });
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().measurement_time(std::time::Duration::from_secs(3));
-    targets = flat, parabolic
+    targets = flat, parabolic, parabolic_table
 }
 criterion_main!(benches);

@@ -8,7 +8,8 @@
 
 use crate::error::check_nonneg;
 use crate::error::{Error, Result};
-use crate::shape::{evaluate, Evaluation, Shape};
+use crate::flat::Ratio;
+use crate::shape::{evaluate, evaluate_stepping, Shape, Stepping};
 use rayon::prelude::*;
 use serde_json::{Map, Value};
 use std::collections::HashMap;
@@ -17,7 +18,7 @@ use std::collections::HashMap;
 pub const MAX_ROWS: usize = 10_000_000;
 
 /// Evaluate every row of `text` (a JSON array); `source` names the input in errors.
-pub fn run(text: &str, source: &str) -> Result<Vec<Map<String, Value>>> {
+pub fn run(text: &str, source: &str, stepping: Option<Stepping>) -> Result<Vec<Map<String, Value>>> {
     let parse_err = |reason: String| Error::Parse {
         context: source.into(),
         reason,
@@ -65,15 +66,18 @@ pub fn run(text: &str, source: &str) -> Result<Vec<Map<String, Value>>> {
         }
         jobs.push((obj, spec, vbar, amp));
     }
-    let results: Vec<Result<Evaluation>> = jobs
+    let results: Vec<Result<Ratio>> = jobs
         .par_iter()
-        .map(|(_, spec, vbar, amp)| evaluate(&shapes[spec], *vbar, *amp))
+        .map(|(_, spec, vbar, amp)| match stepping {
+            Some(st) => evaluate_stepping(&shapes[spec], *vbar, *amp, st).map(|e| e.ratio),
+            None => evaluate(&shapes[spec], *vbar, *amp).map(|e| e.ratio),
+        })
         .collect();
     let mut out = Vec::with_capacity(jobs.len());
     for (i, ((mut obj, ..), eval)) in jobs.into_iter().zip(results).enumerate() {
-        let eval = eval.map_err(|e| parse_err(format!("row {i}: {e}")))?;
-        obj.insert("mu_ratio".into(), Value::from(eval.ratio.mu_ratio));
-        obj.insert("reduction".into(), Value::from(eval.ratio.reduction));
+        let r = eval.map_err(|e| parse_err(format!("row {i}: {e}")))?;
+        obj.insert("mu_ratio".into(), Value::from(r.mu_ratio));
+        obj.insert("reduction".into(), Value::from(r.reduction));
         out.push(obj);
     }
     Ok(out)

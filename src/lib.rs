@@ -31,8 +31,10 @@ pub mod stepper;
 
 pub use error::{Error, Result};
 pub mod batch;
+pub mod bench;
 pub mod grid;
 pub mod mdr;
 pub mod output;
 pub mod quad;
 pub mod shape;
+pub mod validate;

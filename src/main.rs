@@ -7,7 +7,7 @@ use fricosc::batch;
 use fricosc::error::{Error, Result};
 use fricosc::grid::{parse_number, parse_values};
 use fricosc::output::{Format, TableWriter};
-use fricosc::shape::{check_tol, evaluate_with, Shape};
+use fricosc::shape::{check_tol, evaluate_stepping, evaluate_with, Method, Shape, Stepping};
 use rayon::prelude::*;
 use std::io::{self, Read, Write};
 use std::process::ExitCode;
@@ -30,9 +30,32 @@ enum Command {
     /// A grid of amplitudes x velocities: JSON or CSV.
     Table(TableArgs),
     /// A JSON array of {shape, vbar, amp, ...} from FILE or stdin; the same array with mu_ratio and reduction added.
+    /// Compare a table of (vbar, amp, mu_ratio) from another code (CSV or JSON) with the exact values.
+    /// Exit 1 when the largest error exceeds --max-error.
+    Validate {
+        /// Shape of the table's contact.
+        #[arg(long, default_value = "flat")]
+        shape: String,
+        /// Table file; stdin when '-'.
+        file: String,
+        /// Largest acceptable |mu_ratio - exact|.
+        #[arg(long, allow_hyphen_values = true)]
+        max_error: Option<String>,
+    },
+    /// Work-precision benchmark: exact solver vs time stepping; writes JSON, CSV and SVG to DIR.
+    Bench {
+        /// Output directory (created if missing).
+        #[arg(long)]
+        out: String,
+        /// A few seconds, for CI.
+        #[arg(long)]
+        quick: bool,
+    },
     Batch {
         /// Input file; stdin when absent or '-'.
         file: Option<String>,
+        #[command(flatten)]
+        method: MethodArgs,
     },
 }
 
@@ -48,6 +71,29 @@ struct Velocity {
     vhat: Option<String>,
 }
 
+/// The solver: exact, or the seed's time stepping (for comparison and validation).
+#[derive(Args)]
+struct MethodArgs {
+    /// exact (event-driven, default) or stepping (the seed's time-stepping scheme).
+    #[arg(long, value_enum, default_value = "exact")]
+    method: Method,
+    /// Time steps per period for --method stepping.
+    #[arg(long, default_value_t = 1000)]
+    steps_per_period: usize,
+    /// Springs of an MDR foundation for --method stepping.
+    #[arg(long, default_value_t = 1000)]
+    springs: usize,
+}
+
+impl MethodArgs {
+    fn stepping(&self) -> Option<Stepping> {
+        (self.method == Method::Stepping).then_some(Stepping {
+            steps_per_period: self.steps_per_period,
+            springs: self.springs,
+        })
+    }
+}
+
 /// Options shared by `point` and `table`.
 #[derive(Args)]
 struct Common {
@@ -56,6 +102,8 @@ struct Common {
     shape: String,
     #[command(flatten)]
     velocity: Velocity,
+    #[command(flatten)]
+    method: MethodArgs,
     /// Relative quadrature tolerance for MDR shapes (default: as accurate as f64 allows).
     #[arg(long, allow_hyphen_values = true)]
     tol: Option<String>,
@@ -104,6 +152,17 @@ fn io_err(e: io::Error) -> Error {
     }
 }
 
+fn exact_point(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<serde_json::Value> {
+    match shape {
+        Shape::Flat => serde_json::to_value(fricosc::flat::point(vbar, amp)?),
+        Shape::Power(n) => serde_json::to_value(fricosc::mdr::point(*n, vbar, amp, tol)?),
+    }
+    .map_err(|e| Error::Parse {
+        context: "output".into(),
+        reason: e.to_string(),
+    })
+}
+
 fn point(a: PointArgs) -> Result<()> {
     let shape = Shape::parse(&a.common.shape)?;
     let amp = parse_number("--amp", &a.amp)?;
@@ -113,14 +172,14 @@ fn point(a: PointArgs) -> Result<()> {
         (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
     };
     let tol = tol_of(&a.common.tol)?;
-    let body = match shape {
-        Shape::Flat => serde_json::to_value(fricosc::flat::point(vbar, amp)?),
-        Shape::Power(n) => serde_json::to_value(fricosc::mdr::point(n, vbar, amp, tol)?),
-    }
-    .map_err(|e| Error::Parse {
-        context: "output".into(),
-        reason: e.to_string(),
-    })?;
+    let body = match a.common.method.stepping() {
+        Some(st) => {
+            let e = evaluate_stepping(&shape, vbar, amp, st)?;
+            serde_json::json!({"vbar": vbar, "amp": amp, "mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction,
+                "method": "stepping", "steps": e.steps, "springs": e.springs, "period_change": e.period_change})
+        }
+        None => exact_point(&shape, vbar, amp, tol)?,
+    };
     let mut obj = serde_json::Map::new();
     obj.insert("shape".into(), shape.name().into());
     if let serde_json::Value::Object(m) = body {
@@ -162,6 +221,7 @@ fn table(a: TableArgs) -> Result<()> {
         cols.insert(0, "vhat");
     }
     let name = shape.name();
+    let stepping = a.common.method.stepping();
     let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, &name, cols).map_err(io_err)?;
     // Rows in parallel (rayon), written in order, a bounded chunk at a time.
     let pairs: Vec<(f64, f64)> = amps
@@ -173,8 +233,11 @@ fn table(a: TableArgs) -> Result<()> {
             .par_iter()
             .map(|&(amp, v)| {
                 let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
-                let e = evaluate_with(&shape, vbar, amp, tol)?;
-                Ok([v, vbar, amp, e.ratio.mu_ratio, e.ratio.reduction])
+                let r = match stepping {
+                    Some(st) => evaluate_stepping(&shape, vbar, amp, st)?.ratio,
+                    None => evaluate_with(&shape, vbar, amp, tol)?.ratio,
+                };
+                Ok([v, vbar, amp, r.mu_ratio, r.reduction])
             })
             .collect();
         for row in rows {
@@ -210,9 +273,9 @@ fn read_input(file: Option<String>) -> Result<(String, String)> {
     }
 }
 
-fn run_batch(file: Option<String>) -> Result<()> {
+fn run_batch(file: Option<String>, stepping: Option<Stepping>) -> Result<()> {
     let (text, source) = read_input(file)?;
-    let rows = batch::run(&text, &source)?;
+    let rows = batch::run(&text, &source, stepping)?;
     let mut out = io::BufWriter::new(io::stdout().lock());
     out.write_all(b"[").map_err(io_err)?;
     for (i, r) in rows.iter().enumerate() {
@@ -221,6 +284,58 @@ fn run_batch(file: Option<String>) -> Result<()> {
     }
     out.write_all(b"\n]\n").map_err(io_err)?;
     out.flush().map_err(io_err)
+}
+
+fn run_bench(out: &str, quick: bool) -> Result<()> {
+    let dir = std::path::Path::new(out);
+    let werr = |e: String| Error::Io {
+        path: out.into(),
+        reason: e,
+    };
+    std::fs::create_dir_all(dir).map_err(|e| werr(e.to_string()))?;
+    let report = fricosc::bench::run(quick);
+    let json = serde_json::to_string_pretty(&report).map_err(|e| werr(e.to_string()))?;
+    let svg = fricosc::bench::to_svg(&report).map_err(werr)?;
+    for (name, text) in [
+        ("work-precision.json", json),
+        ("work-precision.csv", fricosc::bench::to_csv(&report)),
+        ("work-precision.svg", svg),
+    ] {
+        std::fs::write(dir.join(name), text).map_err(|e| werr(e.to_string()))?;
+    }
+    let mut o = io::stdout().lock();
+    for r in &report.ratios {
+        writeln!(
+            o,
+            "{}: exact {:.1e} s at error {:.1e}; stepping {:.1e} s at error {:.1e}; time ratio {:.2e}",
+            r.case, r.exact_time_s, r.exact_error, r.stepping_time_s, r.stepping_error, r.time_ratio
+        )
+        .map_err(io_err)?;
+    }
+    for f in &report.failures {
+        writeln!(o, "failure: {f}").map_err(io_err)?;
+    }
+    writeln!(o, "wrote {}/work-precision.{{json,csv,svg}}", out).map_err(io_err)
+}
+
+/// Prints the comparison; `Ok(false)` when `--max-error` is exceeded.
+fn run_validate(shape: &str, file: String, max_error: Option<String>) -> Result<bool> {
+    let shape = Shape::parse(shape)?;
+    let max_error = match max_error {
+        Some(t) => Some(fricosc::error::check_nonneg(
+            "max-error",
+            parse_number("--max-error", &t)?,
+        )?),
+        None => None,
+    };
+    let (text, source) = read_input(Some(file))?;
+    let rows = fricosc::validate::read_rows(&text, &source)?;
+    let v = fricosc::validate::validate(&shape, &rows)?;
+    let mut out = io::BufWriter::new(io::stdout().lock());
+    serde_json::to_writer_pretty(&mut out, &v).map_err(|e| io_err(e.into()))?;
+    writeln!(out).map_err(io_err)?;
+    out.flush().map_err(io_err)?;
+    Ok(max_error.is_none_or(|e| v.max_abs_error <= e))
 }
 
 fn main() -> ExitCode {
@@ -247,7 +362,13 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Point(a) => point(a),
         Command::Table(a) => table(a),
-        Command::Batch { file } => run_batch(file),
+        Command::Bench { out, quick } => run_bench(&out, quick),
+        Command::Batch { file, method } => run_batch(file, method.stepping()),
+        Command::Validate { shape, file, max_error } => match run_validate(&shape, file, max_error) {
+            Ok(true) => Ok(()),
+            Ok(false) => return ExitCode::from(1),
+            Err(e) => Err(e),
+        },
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -56,7 +56,7 @@ pub const DEFAULT_TOL: f64 = 4e-15;
 /// the Golub-Welsch weights (relative accuracy ~1e-15) keep about 1e-14 absolute.
 const ROUNDING_FLOOR: f64 = 1e-14;
 /// A singularity closer to a band end than this fraction of the band's width is graded.
-const GRADE_RATIO: f64 = 0.125;
+const GRADE_RATIO: f64 = 0.0625;
 /// Most pieces one band is split into (half from each end).
 const MAX_PIECES: usize = 100;
 
@@ -309,7 +309,7 @@ impl Contact {
         let dist_bottom = dist_bottom.max(floor);
         let mid = lo + width * dist_bottom / (dist_top + dist_bottom);
         let mut cuts = vec![lo, hi];
-        // Gauss copes with a singularity an eighth of the width away; closer ones are graded.
+        // Gauss copes with a singularity a sixteenth of the width away; closer ones are graded.
         let mut d = dist_top;
         while hi - d > mid && d < GRADE_RATIO * width {
             cuts.push(hi - d);

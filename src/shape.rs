@@ -99,3 +99,78 @@ pub fn check_tol(tol: f64) -> Result<f64> {
         Err(Error::param("tol", tol, "must be finite, > 0 and < 1"))
     }
 }
+
+/// How `mu_macro/mu0` is computed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "snake_case")]
+pub enum Method {
+    /// The event-driven exact solver.
+    Exact,
+    /// The seed's time-stepping scheme ([`crate::stepper`]).
+    Stepping,
+}
+
+/// Resolution of the time-stepping peer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Stepping {
+    /// Time steps per oscillation period (`M`).
+    pub steps_per_period: usize,
+    /// Springs of an MDR foundation (`N`; the flat punch has one).
+    pub springs: usize,
+}
+
+/// Largest `M` and `N` accepted (each); their product is bounded by [`MAX_STEPPING_WORK`].
+pub const MAX_STEPPING: usize = 100_000_000;
+/// Largest `M * N` (spring updates per period) accepted.
+pub const MAX_STEPPING_WORK: u128 = 1_000_000_000_000;
+
+/// Result of the time-stepping peer.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SteppingEvaluation {
+    /// Ratio and reduction (`1 - mu_ratio`, no special care: this is the peer).
+    #[serde(flatten)]
+    pub ratio: Ratio,
+    /// Time steps taken (two periods).
+    pub steps: u64,
+    /// Springs stepped.
+    pub springs: usize,
+    /// `|mu(last period) - mu(previous period)|`.
+    pub period_change: f64,
+}
+
+/// `mu_macro/mu0` by the seed's time-stepping scheme.
+pub fn evaluate_stepping(shape: &Shape, vbar: f64, amp: f64, st: Stepping) -> Result<SteppingEvaluation> {
+    check_nonneg("vbar", vbar)?;
+    check_nonneg("amp", amp)?;
+    for (name, v) in [("steps-per-period", st.steps_per_period), ("springs", st.springs)] {
+        if v == 0 || v > MAX_STEPPING {
+            return Err(Error::param(name, v as f64, "must be between 1 and 1e8"));
+        }
+    }
+    let (run, springs) = match shape {
+        Shape::Flat => (crate::stepper::flat_mu_ratio(vbar, amp, st.steps_per_period), 1),
+        Shape::Power(n) => {
+            if st.steps_per_period as u128 * st.springs as u128 > MAX_STEPPING_WORK {
+                return Err(Error::param(
+                    "springs",
+                    st.springs as f64,
+                    "steps-per-period x springs must be <= 1e12",
+                ));
+            }
+            (
+                crate::stepper::power_law_mu_ratio(*n, vbar, amp, st.steps_per_period, st.springs),
+                st.springs,
+            )
+        }
+    };
+    let mu = run.mu_ratio().clamp(0.0, 1.0);
+    Ok(SteppingEvaluation {
+        ratio: Ratio {
+            mu_ratio: mu,
+            reduction: 1.0 - mu,
+        },
+        steps: run.steps,
+        springs,
+        period_change: run.period_change,
+    })
+}

@@ -40,41 +40,55 @@ impl SteppedMeans {
     }
 }
 
+/// Springs per parallel chunk: each chunk runs the whole time loop on its own
+/// (the springs are independent), so the only synchronisation is the final sum.
+const CHUNK: usize = 1024;
+
 /// Run the scheme for springs with positions `s[i]` and weights `weight[i]`.
 ///
 /// `steps_per_period >= 1`, `periods >= 2`. Cost: `periods * steps_per_period * s.len()`
-/// updates, one `cos` per step.
+/// updates; `cos` is tabulated once per step; chunks of springs run in parallel (rayon).
 pub fn run(s: &[f64], weight: &[f64], vbar: f64, steps_per_period: usize, periods: usize) -> SteppedMeans {
+    use rayon::prelude::*;
     assert_eq!(s.len(), weight.len());
     let m = steps_per_period.max(1);
     let periods = periods.max(2);
     let h = TAU / m as f64;
     let dv = vbar * h;
-    // Sliding initial state at tau = 0.
-    let mut f: Vec<f64> = s.iter().map(|&si| (si - 1.0).max(0.0)).collect();
-    let (mut prev_mu, mut mu, mut t_sum, mut n_sum) = (f64::NAN, f64::NAN, 0.0, 0.0);
-    for p in 0..periods {
-        let (mut ft, mut fn_) = (0.0, 0.0);
-        for k in 1..=m {
-            let c = (h * k as f64).cos();
-            for ((fi, &si), &wi) in f.iter_mut().zip(s).zip(weight) {
-                let b = si - c;
-                *fi = if b > 0.0 { (*fi + dv).min(b) } else { 0.0 };
-                ft += wi * *fi;
-                fn_ += wi * b.max(0.0);
+    let cos: Vec<f64> = (1..=m).map(|k| (h * k as f64).cos()).collect();
+    // Per chunk: (tangential, normal) sums of the last two periods.
+    let chunk_sums = |(sc, wc): (&[f64], &[f64])| -> [f64; 4] {
+        // Sliding initial state at tau = 0.
+        let mut f: Vec<f64> = sc.iter().map(|&si| (si - 1.0).max(0.0)).collect();
+        let mut out = [0.0; 4];
+        for p in 0..periods {
+            let (mut ft, mut fnn) = (0.0, 0.0);
+            for &c in &cos {
+                for ((fi, &si), &wi) in f.iter_mut().zip(sc).zip(wc) {
+                    let b = si - c;
+                    *fi = if b > 0.0 { (*fi + dv).min(b) } else { 0.0 };
+                    ft += wi * *fi;
+                    fnn += wi * b.max(0.0);
+                }
+            }
+            if p + 2 >= periods {
+                let k = 2 * (p + 2 - periods);
+                out[k] = ft;
+                out[k + 1] = fnn;
             }
         }
-        prev_mu = mu;
-        mu = if fn_ > 0.0 { ft / fn_ } else { 1.0 };
-        if p + 1 == periods {
-            t_sum = ft / m as f64;
-            n_sum = fn_ / m as f64;
-        }
-    }
+        out
+    };
+    let sums = s
+        .par_chunks(CHUNK)
+        .zip(weight.par_chunks(CHUNK))
+        .map(chunk_sums)
+        .reduce(|| [0.0; 4], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]]);
+    let mu = |t: f64, n: f64| if n > 0.0 { t / n } else { 1.0 };
     SteppedMeans {
-        tangential: t_sum,
-        normal: n_sum,
-        period_change: (mu - prev_mu).abs(),
+        tangential: sums[2] / m as f64,
+        normal: sums[3] / m as f64,
+        period_change: (mu(sums[2], sums[3]) - mu(sums[0], sums[1])).abs(),
         steps: (periods * m) as u64,
     }
 }
@@ -84,4 +98,22 @@ pub fn flat_mu_ratio(vbar: f64, amp: f64, steps_per_period: usize) -> SteppedMea
     // In units of kz u0 the bound is (1 - amp cos tau)_+ = amp (s - cos tau)_+.
     let s = if amp > 0.0 { 1.0 / amp } else { f64::MAX };
     run(&[s], &[1.0], vbar, steps_per_period, 2)
+}
+
+/// `mu_macro/mu0` of the power-law profile `g = z^n` by time stepping with
+/// `springs` springs at the midpoints of a uniform grid on the part of the
+/// foundation that ever touches, `0 <= z < (1 + amp)^(1/n)`.
+pub fn power_law_mu_ratio(n: f64, vbar: f64, amp: f64, steps_per_period: usize, springs: usize) -> SteppedMeans {
+    if amp == 0.0 {
+        return SteppedMeans {
+            tangential: 1.0,
+            normal: 1.0,
+            period_change: 0.0,
+            steps: 0,
+        };
+    }
+    let k = springs.max(1);
+    let dz = (1.0 + amp).powf(1.0 / n) / k as f64;
+    let s: Vec<f64> = (0..k).map(|i| (1.0 - ((i as f64 + 0.5) * dz).powf(n)) / amp).collect();
+    run(&s, &vec![dz; k], vbar, steps_per_period, 2)
 }

@@ -225,3 +225,133 @@ fn bad_input_is_one_line_exit_2_and_no_stdout() {
         assert!(!err.contains("panicked"));
     }
 }
+
+#[test]
+fn stepping_method_for_point_table_and_batch() {
+    let v = json(&fricosc(
+        &[
+            "point",
+            "--shape",
+            "parabolic",
+            "--vbar",
+            "0.3",
+            "--amp",
+            "0.4",
+            "--method",
+            "stepping",
+            "--steps-per-period",
+            "400",
+            "--springs",
+            "400",
+        ],
+        None,
+    ));
+    assert_eq!(v["method"], "stepping");
+    assert_eq!(v["steps"], 800);
+    assert_eq!(v["springs"], 400);
+    // First order in 1/M and 1/N: within 1e-2 of the reference at 400 x 400.
+    assert!((v["mu_ratio"].as_f64().unwrap() - 0.7661542311590507962135).abs() < 1e-2);
+    let t = json(&fricosc(
+        &[
+            "table",
+            "--amp",
+            "0.5",
+            "--vbar",
+            "0.5",
+            "--method",
+            "stepping",
+            "--steps-per-period",
+            "20000",
+        ],
+        None,
+    ));
+    assert!((t["rows"][0]["mu_ratio"].as_f64().unwrap() - 0.8992738983331656556021).abs() < 1e-7);
+    let b = json(&fricosc(
+        &["batch", "--method", "stepping", "--steps-per-period", "20000"],
+        Some(r#"[{"shape":"flat","vbar":0.5,"amp":0.5}]"#),
+    ));
+    assert_eq!(b[0]["mu_ratio"], t["rows"][0]["mu_ratio"]);
+}
+
+#[test]
+fn validate_exit_codes_0_within_1_exceeded_2_bad_input() {
+    let dir = std::env::temp_dir().join(format!("fricosc-validate-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let table = fricosc(
+        &[
+            "table",
+            "--amp",
+            "0.5,1.5",
+            "--vbar",
+            "0.1:0.9:5",
+            "--method",
+            "stepping",
+            "--steps-per-period",
+            "1000",
+            "--format",
+            "csv",
+        ],
+        None,
+    );
+    let csv = dir.join("stepped.csv");
+    std::fs::write(&csv, &table.stdout).unwrap();
+    let f = csv.to_str().unwrap();
+    let within = fricosc(&["validate", "--shape", "flat", f, "--max-error", "1e-3"], None);
+    assert_eq!(within.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&within.stdout).unwrap();
+    assert_eq!(v["n"], 10);
+    let max = v["max_abs_error"].as_f64().unwrap();
+    assert!(max > 1e-6 && max < 1e-3, "{max}");
+    assert_eq!(v["worst"]["error"].as_f64().unwrap().abs(), max);
+    let exceeded = fricosc(&["validate", "--shape", "flat", f, "--max-error", "1e-9"], None);
+    assert_eq!(exceeded.status.code(), Some(1));
+    assert!(
+        !exceeded.stdout.is_empty(),
+        "the comparison is printed also when it fails"
+    );
+    // The exact table validates to rounding; JSON input from stdin.
+    let exact = fricosc(&["table", "--amp", "0.5,1.5", "--vbar", "0.1:0.9:5"], None);
+    let ok = fricosc(
+        &["validate", "-", "--max-error", "0"],
+        Some(std::str::from_utf8(&exact.stdout).unwrap()),
+    );
+    assert_eq!(ok.status.code(), Some(0), "{}", String::from_utf8_lossy(&ok.stderr));
+    for (stdin, frag) in [
+        ("vbar,amp\n0.1,0.5\n", "lacks column 'mu_ratio'"),
+        ("[{\"vbar\":0.1}]", "missing field 'amp'"),
+        ("", "empty input"),
+    ] {
+        let bad = fricosc(&["validate", "-"], Some(stdin));
+        assert_eq!(bad.status.code(), Some(2));
+        assert!(bad.stdout.is_empty());
+        assert!(
+            String::from_utf8_lossy(&bad.stderr).contains(frag),
+            "{}",
+            String::from_utf8_lossy(&bad.stderr)
+        );
+    }
+}
+
+#[test]
+fn quick_bench_writes_json_csv_and_svg_without_failures() {
+    let dir = std::env::temp_dir().join(format!("fricosc-bench-{}", std::process::id()));
+    let out = fricosc(&["bench", "--quick", "--out", dir.to_str().unwrap()], None);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("work-precision.json")).unwrap()).unwrap();
+    assert_eq!(report["failures"].as_array().unwrap().len(), 0);
+    assert_eq!(report["ratios"].as_array().unwrap().len(), 3);
+    for r in report["ratios"].as_array().unwrap() {
+        assert!(r["exact_error"].as_f64().unwrap() <= 1e-13);
+        assert!(
+            r["time_ratio"].as_f64().unwrap() > 1.0,
+            "stepping beat the exact solver: {r}"
+        );
+    }
+    assert!(std::fs::read_to_string(dir.join("work-precision.svg"))
+        .unwrap()
+        .starts_with("<svg"));
+    assert!(std::fs::read_to_string(dir.join("work-precision.csv"))
+        .unwrap()
+        .starts_with("case,method,setting,error,time_s"));
+}

@@ -1,0 +1,336 @@
+//! `fricosc bench`: the work-precision comparison of the exact solver with the
+//! seed's time-stepping scheme.
+//!
+//! Each point is (absolute error of `mu_ratio` against a 40-digit reference,
+//! minimum over `k` samples of the wall time per evaluation after a warm-up);
+//! a sample repeats the evaluation until it lasts a few milliseconds. Failures
+//! (an error or a non-finite value) are kept and listed, never dropped.
+
+use crate::shape::{evaluate_stepping, evaluate_with, Shape, Stepping};
+use serde::Serialize;
+use std::time::Instant;
+
+/// The reference values this benchmark uses: `data/reference-values.json`, a
+/// copy of `shared/reference-values.json` (40 digits, independent evaluation,
+/// cross-checked by a converged time stepper; `tests/reference.rs` checks the copy).
+const REFERENCES: &str = include_str!("../data/reference-values.json");
+
+/// One benchmarked case.
+#[derive(Debug, Clone, Serialize)]
+pub struct Case {
+    /// Label.
+    pub name: String,
+    /// Shape name.
+    pub shape: String,
+    /// Dimensionless velocity.
+    pub vbar: f64,
+    /// Amplitude.
+    pub amp: f64,
+    /// The 40-digit reference, as text.
+    pub reference: String,
+}
+
+/// One (error, time) measurement.
+#[derive(Debug, Clone, Serialize)]
+pub struct Point {
+    /// Case label.
+    pub case: String,
+    /// `exact` or `stepping`.
+    pub method: String,
+    /// The setting: `tol=...` or `M=...,N=...`.
+    pub setting: String,
+    /// `|mu_ratio - reference|` (0 means below f64 resolution of the reference).
+    pub error: f64,
+    /// Minimum wall time per evaluation, seconds.
+    pub time_s: f64,
+}
+
+/// The ratio of stepping to exact time for one case.
+#[derive(Debug, Clone, Serialize)]
+pub struct Ratio {
+    /// Case label.
+    pub case: String,
+    /// Exact solver at its default tolerance: error and time.
+    pub exact_error: f64,
+    /// Seconds per evaluation.
+    pub exact_time_s: f64,
+    /// The most accurate stepping run: error and time.
+    pub stepping_error: f64,
+    /// Seconds per evaluation.
+    pub stepping_time_s: f64,
+    /// `stepping_time_s / exact_time_s`, the exact solver being at least as accurate.
+    pub time_ratio: f64,
+}
+
+/// Everything `bench` measured.
+#[derive(Debug, Clone, Serialize)]
+pub struct Report {
+    /// fricosc version.
+    pub version: String,
+    /// Logical cores and CPU model.
+    pub machine: Machine,
+    /// How the reference values were obtained and verified.
+    pub reference: String,
+    /// The cases.
+    pub cases: Vec<Case>,
+    /// The measurements.
+    pub points: Vec<Point>,
+    /// Time ratios at matched (or better) error.
+    pub ratios: Vec<Ratio>,
+    /// Settings that failed, with the reason.
+    pub failures: Vec<String>,
+    /// `quick` or `full`.
+    pub mode: String,
+}
+
+/// The machine the numbers come from.
+#[derive(Debug, Clone, Serialize)]
+pub struct Machine {
+    /// Logical cores.
+    pub cores: usize,
+    /// CPU model (from /proc/cpuinfo where available).
+    pub cpu: String,
+}
+
+fn machine() -> Machine {
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|t| {
+            t.lines()
+                .find(|l| l.starts_with("model name"))
+                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown".into());
+    Machine {
+        cores: std::thread::available_parallelism().map_or(1, |n| n.get()),
+        cpu,
+    }
+}
+
+fn reference(shape: &str, vbar: f64, amp: f64) -> Option<String> {
+    let v: serde_json::Value = serde_json::from_str(REFERENCES).ok()?;
+    v["cases"].as_array()?.iter().find_map(|c| {
+        (c["shape"] == shape && c["vbar"].as_f64() == Some(vbar) && c["amp"].as_f64() == Some(amp))
+            .then(|| c["mu_ratio"].as_str().map(String::from))
+            .flatten()
+    })
+}
+
+/// Minimum over `k` samples of the time per call of `f` (after one warm-up sample).
+fn time_per_call(k: usize, sample_s: f64, mut f: impl FnMut() -> f64) -> f64 {
+    let mut reps = 1usize;
+    let t0 = Instant::now();
+    std::hint::black_box(f());
+    let once = t0.elapsed().as_secs_f64().max(1e-9);
+    if once < sample_s {
+        reps = ((sample_s / once) as usize).clamp(1, 10_000_000);
+    }
+    let mut best = f64::INFINITY;
+    for _ in 0..k {
+        let t = Instant::now();
+        for _ in 0..reps {
+            std::hint::black_box(f());
+        }
+        best = best.min(t.elapsed().as_secs_f64() / reps as f64);
+    }
+    best
+}
+
+/// Run the benchmark; `quick` finishes in seconds (for CI).
+pub fn run(quick: bool) -> Report {
+    let (k, sample) = if quick { (3, 2e-4) } else { (7, 5e-3) };
+    let specs = [
+        ("flat amp<=1", "flat", 0.5, 0.5),
+        ("flat amp>1", "flat", 0.5, 1.5),
+        ("parabolic", "parabolic", 0.3, 0.4),
+    ];
+    let mut cases = vec![];
+    let mut points = vec![];
+    let mut failures = vec![];
+    let mut ratios = vec![];
+    for (name, shape_name, vbar, amp) in specs {
+        let Some(reference) = reference(shape_name, vbar, amp) else {
+            failures.push(format!("{name}: no reference value"));
+            continue;
+        };
+        let refv: f64 = reference.parse().unwrap_or(f64::NAN);
+        cases.push(Case {
+            name: name.into(),
+            shape: shape_name.into(),
+            vbar,
+            amp,
+            reference: reference.clone(),
+        });
+        let shape = match Shape::parse(shape_name) {
+            Ok(s) => s,
+            Err(e) => {
+                failures.push(format!("{name}: {e}"));
+                continue;
+            }
+        };
+        let mut record = |method: &str, setting: String, value: crate::Result<f64>, time_s: f64| match value {
+            Ok(m) if m.is_finite() => {
+                points.push(Point {
+                    case: name.into(),
+                    method: method.into(),
+                    setting,
+                    error: (m - refv).abs(),
+                    time_s,
+                });
+                Some((m - refv).abs())
+            }
+            Ok(m) => {
+                failures.push(format!("{name} {method} {setting}: non-finite result {m}"));
+                None
+            }
+            Err(e) => {
+                failures.push(format!("{name} {method} {setting}: {e}"));
+                None
+            }
+        };
+        // Exact solver at several tolerances (the flat punch has no tolerance to set).
+        let tols: &[f64] = if shape == Shape::Flat {
+            &[crate::mdr::DEFAULT_TOL]
+        } else {
+            &[1e-4, 1e-6, 1e-8, 1e-11, crate::mdr::DEFAULT_TOL]
+        };
+        let mut exact_best = None;
+        for &tol in tols {
+            let value = evaluate_with(&shape, vbar, amp, tol).map(|e| e.ratio.mu_ratio);
+            let t = time_per_call(k, sample, || {
+                evaluate_with(&shape, vbar, amp, tol).map_or(f64::NAN, |e| e.ratio.mu_ratio)
+            });
+            if let Some(err) = record("exact", format!("tol={tol:e}"), value, t) {
+                exact_best = Some((err, t));
+            }
+        }
+        // Time stepping at several resolutions.
+        let steps: Vec<(usize, usize)> = match (shape == Shape::Flat, quick) {
+            (true, true) => vec![(100, 1), (1000, 1), (10_000, 1)],
+            (true, false) => vec![(100, 1), (1000, 1), (10_000, 1), (100_000, 1), (1_000_000, 1)],
+            (false, true) => vec![(50, 50), (100, 100), (200, 200)],
+            (false, false) => vec![(100, 100), (300, 300), (1000, 1000), (3000, 3000)],
+        };
+        let mut stepping_best: Option<(f64, f64)> = None;
+        for (m, n) in steps {
+            let st = Stepping {
+                steps_per_period: m,
+                springs: n,
+            };
+            let value = evaluate_stepping(&shape, vbar, amp, st).map(|e| e.ratio.mu_ratio);
+            let t = time_per_call(k.min(3), sample, || {
+                evaluate_stepping(&shape, vbar, amp, st).map_or(f64::NAN, |e| e.ratio.mu_ratio)
+            });
+            if let Some(err) = record("stepping", format!("M={m},N={n}"), value, t) {
+                if stepping_best.is_none_or(|(e, _)| err < e) {
+                    stepping_best = Some((err, t));
+                }
+            }
+        }
+        if let (Some((ee, et)), Some((se, st))) = (exact_best, stepping_best) {
+            if ee <= se {
+                ratios.push(Ratio {
+                    case: name.into(),
+                    exact_error: ee,
+                    exact_time_s: et,
+                    stepping_error: se,
+                    stepping_time_s: st,
+                    time_ratio: st / et,
+                });
+            }
+        }
+    }
+    Report {
+        version: env!("CARGO_PKG_VERSION").into(),
+        machine: machine(),
+        reference: "40-digit values of shared/reference-values.json (independent high-precision evaluation of the \
+                    exact periodic state, cross-checked by a converged time stepper), copied to data/ and checked \
+                    against shared/ by tests/reference.rs"
+            .into(),
+        cases,
+        points,
+        ratios,
+        failures,
+        mode: if quick { "quick" } else { "full" }.into(),
+    }
+}
+
+/// CSV of the points: `case,method,setting,error,time_s`.
+pub fn to_csv(r: &Report) -> String {
+    let mut s = String::from("case,method,setting,error,time_s\n");
+    for p in &r.points {
+        s += &format!(
+            "{},{},\"{}\",{:?},{:?}\n",
+            p.case, p.method, p.setting, p.error, p.time_s
+        );
+    }
+    s
+}
+
+/// Log-log SVG of error against time per evaluation, one series per case and method.
+pub fn to_svg(r: &Report) -> Result<String, String> {
+    use plotters::prelude::*;
+    let floor = 1e-17;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let (tmin, tmax) = r
+            .points
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.time_s), b.max(p.time_s)));
+        let (tmin, tmax) = if tmax > 0.0 {
+            (tmin / 3.0, tmax * 3.0)
+        } else {
+            (1e-9, 1.0)
+        };
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                "fricosc work-precision: exact solver vs time stepping",
+                ("sans-serif", 20),
+            )
+            .margin(15)
+            .x_label_area_size(45)
+            .y_label_area_size(70)
+            .build_cartesian_2d((tmin..tmax).log_scale(), (floor..1.0).log_scale())
+            .map_err(|e| e.to_string())?;
+        chart
+            .configure_mesh()
+            .x_desc("wall time per evaluation [s] (min of k)")
+            .y_desc("|mu_ratio - reference| (floored at 1e-17)")
+            .x_label_formatter(&|x| format!("{x:.0e}"))
+            .y_label_formatter(&|y| format!("{y:.0e}"))
+            .draw()
+            .map_err(|e| e.to_string())?;
+        let mut series: Vec<(String, Vec<(f64, f64)>)> = vec![];
+        for p in &r.points {
+            let key = format!("{} / {}", p.case, p.method);
+            let xy = (p.time_s, p.error.max(floor));
+            match series.iter_mut().find(|s| s.0 == key) {
+                Some(s) => s.1.push(xy),
+                None => series.push((key, vec![xy])),
+            }
+        }
+        for (i, (key, mut xy)) in series.into_iter().enumerate() {
+            xy.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let color = Palette99::pick(i).to_rgba();
+            chart
+                .draw_series(LineSeries::new(xy.clone(), color.stroke_width(2)))
+                .map_err(|e| e.to_string())?
+                .label(key)
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
+            chart
+                .draw_series(xy.into_iter().map(|p| Circle::new(p, 4, color.filled())))
+                .map_err(|e| e.to_string())?;
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerRight)
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .draw()
+            .map_err(|e| e.to_string())?;
+        root.present().map_err(|e| e.to_string())?;
+    }
+    Ok(svg)
+}
