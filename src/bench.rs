@@ -207,7 +207,14 @@ pub fn run(quick: bool) -> Report {
         // Time stepping at several resolutions.
         let steps: Vec<(usize, usize)> = match (shape == Shape::Flat, quick) {
             (true, true) => vec![(100, 1), (1000, 1), (10_000, 1)],
-            (true, false) => vec![(100, 1), (1000, 1), (10_000, 1), (100_000, 1), (1_000_000, 1), (10_000_000, 1)],
+            (true, false) => vec![
+                (100, 1),
+                (1000, 1),
+                (10_000, 1),
+                (100_000, 1),
+                (1_000_000, 1),
+                (10_000_000, 1),
+            ],
             (false, true) => vec![(50, 50), (100, 100), (200, 200)],
             (false, false) => vec![(100, 100), (300, 300), (1000, 1000), (3000, 3000), (10_000, 10_000)],
         };
