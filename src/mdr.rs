@@ -42,7 +42,7 @@
 
 use crate::flat::Ratio;
 use crate::quad;
-use crate::spring::{mean_normal_at_angle, Spring, Velocity};
+use crate::spring::{mean_normal_sin_cos, Spring, Velocity};
 use serde::Serialize;
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -157,6 +157,24 @@ impl Contact {
         }
     }
 
+    /// [`Contact::y`] from `sin(beta)`, `cos(beta)`: `1 - amp sin(beta)`, rewritten
+    /// where it would cancel (`amp <= 1`: `1 - sin = cos^2/(1 + sin)`; `amp > 1`
+    /// near the centre: the product form of [`Contact::y`]).
+    fn y_sin_cos(&self, beta: f64, sin_beta: f64, cos_beta: f64) -> f64 {
+        if self.amp <= 1.0 {
+            let one_minus_s = if sin_beta > 0.0 {
+                cos_beta * cos_beta / (1.0 + sin_beta)
+            } else {
+                1.0 - sin_beta
+            };
+            (1.0 - self.amp) + self.amp * one_minus_s
+        } else if self.amp * sin_beta > 0.5 {
+            self.y(beta)
+        } else {
+            1.0 - self.amp * sin_beta
+        }
+    }
+
     /// `y^gamma`, with the common exponents without `powf`.
     fn y_pow(&self, y: f64) -> f64 {
         if self.gamma == 0.0 {
@@ -170,14 +188,14 @@ impl Contact {
 
     /// The Jacobian `dz/dbeta = (amp/n) y^gamma cos(beta)`, divided by the weight
     /// of `top`; `d` is the distance of `beta` from the top.
-    fn jacobian(&self, beta: f64, d: f64, top: Top) -> f64 {
+    fn jacobian(&self, beta: f64, sin_beta: f64, cos_beta: f64, d: f64, top: Top) -> f64 {
         let k = self.amp / self.n;
         match top {
-            Top::Regular => k * self.y_pow(self.y(beta)) * beta.cos(),
+            Top::Regular => k * self.y_pow(self.y_sin_cos(beta, sin_beta, cos_beta)) * cos_beta,
             Top::Centre => {
                 // y / d = 2 amp cos((beta* + beta)/2) sin(d/2)/d.
                 let ratio = 2.0 * self.amp * (0.5 * (self.beta_star + beta)).cos() * (0.5 * d).sin() / d;
-                k * ratio.powf(self.gamma) * beta.cos()
+                k * ratio.powf(self.gamma) * cos_beta
             }
             Top::CentreCritical => {
                 // amp = 1, u = pi/2 - beta = d: y/u^2 = 2 (sin(u/2)/u)^2, cos(beta)/u = sin(u)/u.
@@ -209,13 +227,12 @@ impl Contact {
             // x = -1 at the top: beta = hi - h (1 + x).
             let d = h * (1.0 + x);
             let beta = hi - d;
-            let jac = w * self.jacobian(beta, d, top);
-            let (b, dd) = match (stick, &self.vel) {
-                (true, Some(vel)) => {
-                    let (b, dd, _) = vel.stick_first_at(beta, None);
-                    (b, dd)
-                }
-                _ => (mean_normal_at_angle(FRAC_PI_2 + beta), 0.0),
+            let (sb, cb) = beta.sin_cos();
+            let jac = w * self.jacobian(beta, sb, cb, d, top);
+            let b = mean_normal_sin_cos(beta, sb, cb);
+            let dd = match (stick, &self.vel) {
+                (true, Some(vel)) => vel.stick_first_deficit(beta),
+                _ => 0.0,
             };
             sn += jac * b;
             sd += jac * dd;
