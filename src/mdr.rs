@@ -48,8 +48,11 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Highest Gauss order tried per piece.
 pub const MAX_ORDER: usize = 256;
-/// First order tried per piece.
+/// First order tried per piece at the default tolerance; a tolerance of
+/// `LOOSE_TOL` or looser starts at 2.
 pub const MIN_ORDER: usize = 4;
+/// Tolerances at or above this start the order ladder at 2.
+pub const LOOSE_TOL: f64 = 1e-9;
 /// Default relative tolerance: about what f64 allows.
 pub const DEFAULT_TOL: f64 = 4e-15;
 /// Rounding floor added to every error estimate: sums of a few hundred terms and
@@ -97,6 +100,11 @@ pub struct MdrResult {
     pub ratio: Ratio,
     /// Estimated absolute error of `mu_ratio` (an upper bound in all tests).
     pub error_estimate: f64,
+    /// Mean normal force over a period, units `E* x_c u0` (`x_c` the contact
+    /// radius at the mean indentation `u0`; MDR forces equal the 3D ones).
+    /// Absent when nothing needed it (`vbar >= 1` without bands, no closed form).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mean_normal: Option<f64>,
     /// The bands, from the centre outwards (empty ones left out).
     pub bands: Vec<Band>,
     /// Springs (quadrature nodes) evaluated in all.
@@ -244,7 +252,7 @@ impl Contact {
     /// One piece at increasing orders, until the predicted error is within the
     /// tolerance relative to the piece plus `scale` (the band's sums so far).
     fn piece(&self, lo: f64, hi: f64, top: Top, stick: bool, scale: (f64, f64)) -> Sums {
-        let mut m = MIN_ORDER;
+        let mut m = if self.tol >= LOOSE_TOL { 2 } else { MIN_ORDER };
         let q0 = self.pass(lo, hi, top, stick, m);
         let q1 = self.pass(lo, hi, top, stick, 2 * m);
         let mut nodes = 3 * m;
@@ -324,7 +332,12 @@ impl Contact {
         let floor = width * 2f64.powi(-(MAX_PIECES as i32 / 2 - 2));
         let dist_top = self.singular_distance(hi, top).min(extra_top).max(floor);
         let dist_bottom = dist_bottom.max(floor);
-        let mid = lo + width * dist_bottom / (dist_top + dist_bottom);
+        // Where the grading from the top meets the grading from the bottom.
+        let mid = match (dist_top.is_finite(), dist_bottom.is_finite()) {
+            (_, false) => lo,
+            (false, true) => hi,
+            (true, true) => lo + width * dist_bottom / (dist_top + dist_bottom),
+        };
         let mut cuts = vec![lo, hi];
         // Gauss copes with a singularity a sixteenth of the width away; closer ones are graded.
         let mut d = dist_top;
@@ -345,15 +358,76 @@ impl Contact {
         pieces.sort_by(|a, b| (b.1 - b.0).total_cmp(&(a.1 - a.0)));
         for (a, b) in pieces {
             let kind = if b == hi { top } else { Top::Regular };
-            total += self.piece(
+            let pc = self.piece(
                 a,
                 b,
                 kind,
                 stick,
                 (scale.0 + total.normal.abs(), scale.1 + total.deficit.abs()),
             );
+            total += pc;
         }
         total
+    }
+}
+
+/// Complete elliptic integrals `(K(m), E(m))` by the arithmetic-geometric mean,
+/// given the parameter `m` in `[0, 1)` and its complement `m1 = 1 - m` (passed
+/// separately so that `m -> 1` keeps its accuracy).
+fn elliptic_ke(m: f64, m1: f64) -> (f64, f64) {
+    let (mut a, mut b) = (1.0f64, m1.sqrt());
+    let mut sum = 0.5 * m; // 2^(n-1) c_n^2 at n = 0, c_0^2 = m
+    let mut pow = 0.5;
+    for _ in 0..40 {
+        let c = 0.5 * (a - b);
+        if c.abs() <= f64::EPSILON * a {
+            break;
+        }
+        let (an, bn) = (0.5 * (a + b), (a * b).sqrt());
+        pow *= 2.0;
+        sum += pow * c * c;
+        a = an;
+        b = bn;
+    }
+    let k = std::f64::consts::FRAC_PI_2 / a;
+    (k, k * (1.0 - sum))
+}
+
+/// Total mean normal force `int amp <B> dz` in closed form where one exists:
+/// `(n/(n+1)) (1/pi) int_0^pi (1 - amp cos t)_+^(1 + 1/n) dt` (the foundation's
+/// force at indentation `c` is `c^(1+1/n) n/(n+1)`), elementary for the cone and
+/// complete elliptic integrals for the paraboloid (with `m = 2 amp/(1 + amp)`:
+/// `int_0^(pi/2) (1 - m sin^2)^(3/2) = (2(2 - m)E - (1 - m)K)/3`, and for `m > 1`
+/// the reciprocal-modulus form `int cos^4 / sqrt(1 - sin^2/m)`).
+fn total_normal(n: f64, amp: f64) -> Option<f64> {
+    let a = amp;
+    if n == 1.0 {
+        let i = if a <= 1.0 {
+            PI * (1.0 + 0.5 * a * a)
+        } else {
+            let t0 = (1.0 / a).acos();
+            let r = PI - t0;
+            r + 2.0 * a * t0.sin() + a * a * (0.5 * r - 0.25 * (2.0 * t0).sin())
+        };
+        Some(0.5 * i / PI)
+    } else if n == 2.0 {
+        let i = if a < 1.0 {
+            let (m, m1) = (2.0 * a / (1.0 + a), (1.0 - a) / (1.0 + a));
+            let (k, e) = elliptic_ke(m, m1);
+            2.0 * (1.0 + a).powf(1.5) * (2.0 * (2.0 - m) * e - m1 * k) / 3.0
+        } else if a == 1.0 {
+            // (1 + a)^(3/2) = 2^(3/2), and the bracket is 2 E(1) = 2.
+            2.0 * 2f64.powf(1.5) * 2.0 / 3.0
+        } else {
+            let (mp, mp1) = ((1.0 + a) / (2.0 * a), (a - 1.0) / (2.0 * a));
+            let (k, e) = elliptic_ke(mp, mp1);
+            // int_0^(pi/2) cos^4/sqrt(1 - mp sin^2) = ((3mp - 2)(mp - 1) K + (4mp - 2) E)/(3 mp^2).
+            let j = ((3.0 * mp - 2.0) * (-mp1) * k + (4.0 * mp - 2.0) * e) / (3.0 * mp * mp);
+            2.0 * (1.0 + a).powf(1.5) * j * mp.sqrt()
+        };
+        Some(2.0 / 3.0 * i / PI)
+    } else {
+        None
     }
 }
 
@@ -365,17 +439,21 @@ impl Contact {
 /// that `amp -> 0` stays finite.
 pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResult {
     let tol = tol.max(DEFAULT_TOL);
-    let unit = MdrResult {
+    let unit = |mean_normal: Option<f64>| MdrResult {
         ratio: Ratio {
             mu_ratio: 1.0,
             reduction: 0.0,
         },
         error_estimate: 0.0,
+        mean_normal,
         bands: vec![],
         nodes: 0,
     };
-    if amp == 0.0 || (vbar >= 1.0 && !bands) {
-        return unit;
+    if amp == 0.0 {
+        return unit(Some(n / (n + 1.0)));
+    }
+    if vbar >= 1.0 && !bands {
+        return unit(total_normal(n, amp));
     }
     let vel = (vbar < 1.0).then(|| Velocity::new(vbar));
     let alpha = vel.map_or(0.0, |v| v.alpha);
@@ -415,16 +493,32 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     // Stick first: beta in [-alpha, min(alpha, beta_star)]. Its means, continued
     // beyond the band, are singular at s = +-1 (beta = +-pi/2), a distance
     // arcsin(vbar) from the band's ends.
-    let near = vbar.min(1.0).asin();
+    // At vbar = 0 the stick-first means are the mean normal force itself
+    // (everything sticks): analytic, nothing to grade for.
+    let near = if vbar == 0.0 {
+        f64::INFINITY
+    } else {
+        vbar.min(1.0).asin()
+    };
     let scale0 = (perm.normal, perm.deficit);
     let stick_first = contact.band(-alpha, sf_lo, top_of(sf_lo), vel.is_some(), (near, near), scale0);
     let scale1 = (scale0.0 + stick_first.normal, scale0.1 + stick_first.deficit);
+    // Without the band report, a closed-form total normal force (cone, paraboloid)
+    // makes the normal force of the two slip bands unnecessary: only the stick
+    // band needs springs solved.
+    let closed = if bands { None } else { total_normal(n, amp) };
     // Slip first: beta in [alpha, beta_star]; the deficit is D(vbar) per spring.
-    let mut slip_first = contact.band(sf_lo, beta_star, top_of(beta_star), false, (inf, inf), scale1);
+    let mut slip_first = match closed {
+        Some(_) => Sums::default(),
+        None => contact.band(sf_lo, beta_star, top_of(beta_star), false, (inf, inf), scale1),
+    };
     slip_first.deficit = amp * d_perm * (z_of_beta(sf_lo) - z1);
     let scale2 = (scale1.0 + slip_first.normal, scale1.1 + slip_first.deficit);
     // Slip only: beta in [-pi/2, -alpha].
-    let slip_only = contact.band(-FRAC_PI_2, -alpha, Top::Regular, false, (inf, inf), scale2);
+    let slip_only = match closed {
+        Some(_) => Sums::default(),
+        None => contact.band(-FRAC_PI_2, -alpha, Top::Regular, false, (inf, inf), scale2),
+    };
 
     let first_kind = if vel.is_some() {
         BandKind::SlipFirst
@@ -444,6 +538,11 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     let mut total = Sums::default();
     for p in &parts {
         total += p.2;
+    }
+    if let Some(nc) = closed {
+        // The closed form replaces the quadrature of the normal force (and its error).
+        total.normal = nc;
+        total.err_normal = 0.0;
     }
     let (nn, dd) = (total.normal, total.deficit);
     let ratio = Ratio::from_deficit(dd, nn);
@@ -475,6 +574,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     MdrResult {
         ratio,
         error_estimate,
+        mean_normal: Some(nn),
         bands: band_list,
         nodes: total.nodes,
     }
@@ -494,17 +594,96 @@ pub struct MdrPoint {
     pub mu_static_ratio: f64,
 }
 
+/// `mu_static/mu0`, the limit `vbar -> 0+`: every jumping spring sticks from
+/// contact to loss of contact (losing all its friction) and every permanent one
+/// loses `D(0) = 1`, so what remains is the minimum normal force over its mean,
+/// `int_0^{z1} (1 - amp - z^n) dz / N = (n/(n+1)) (1 - amp)_+^(1 + 1/n) / N`
+/// (the seed's section 4). `tests/mdr.rs` checks it against `power_law` at `vbar = 0`.
+pub fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> f64 {
+    if amp == 0.0 {
+        return 1.0;
+    }
+    if amp >= 1.0 {
+        return 0.0;
+    }
+    let nn = total_normal(n, amp)
+        .or_else(|| power_law(n, 1.0, amp, tol, true).mean_normal)
+        .unwrap_or(f64::NAN);
+    (n / (n + 1.0) * (1.0 - amp).powf(1.0 + 1.0 / n) / nn).min(1.0)
+}
+
 /// [`power_law`] with the bands and the static limit; inputs are checked.
 pub fn point(n: f64, vbar: f64, amp: f64, tol: f64) -> crate::Result<MdrPoint> {
     crate::error::check_nonneg("vbar", vbar)?;
     crate::error::check_nonneg("amp", amp)?;
     crate::shape::check_tol(tol)?;
     let result = power_law(n, vbar, amp, tol, true);
-    let mu_static_ratio = power_law(n, 0.0, amp, tol, false).ratio.mu_ratio;
+    let mu_static_ratio = mu_static_ratio(n, amp, tol);
     Ok(MdrPoint {
         vbar,
         amp,
         result,
         mu_static_ratio,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn closed_form_normal_force_equals_the_band_quadrature() {
+        for n in [1.0, 2.0] {
+            for a in [1e-6, 0.1, 0.5, 0.9, 0.999999, 1.0, 1.000001, 1.5, 3.0, 10.0, 1e4] {
+                let closed = total_normal(n, a).unwrap();
+                let r = power_law(n, 0.3, a, DEFAULT_TOL, true);
+                let shares: f64 = r.bands.iter().map(|b| b.normal_share).sum();
+                assert!((shares - 1.0).abs() < 1e-14);
+                // The quadrature's total, rebuilt from the bands of the report.
+                let quad_total = {
+                    let c = Contact {
+                        n,
+                        amp: a,
+                        gamma: 1.0 / n - 1.0,
+                        beta_star: if a > 1.0 { (1.0 / a).asin() } else { FRAC_PI_2 },
+                        vel: None,
+                        tol: DEFAULT_TOL,
+                    };
+                    let top = if a > 1.0 {
+                        Top::Centre
+                    } else if a == 1.0 {
+                        Top::CentreCritical
+                    } else {
+                        Top::Regular
+                    };
+                    let z1 = (1.0 - a).max(0.0).powf(1.0 / n);
+                    let perm = z1 - z1 * z1.powf(n) / (n + 1.0);
+                    perm + c
+                        .band(
+                            -FRAC_PI_2,
+                            c.beta_star,
+                            top,
+                            false,
+                            (f64::INFINITY, f64::INFINITY),
+                            (perm, 0.0),
+                        )
+                        .normal
+                };
+                assert!(
+                    (closed / quad_total - 1.0).abs() < 1e-14,
+                    "n={n} a={a}: {closed} vs {quad_total}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn elliptic_integrals_match_known_values() {
+        // K(1/2) and E(1/2) (parameter m = k^2), 20 digits from the literature (mpmath).
+        let (k, e) = elliptic_ke(0.5, 0.5);
+        assert!((k - 1.854_074_677_301_371_9).abs() < 4e-16, "{k}");
+        assert!((e - 1.350_643_881_047_675_5).abs() < 4e-16, "{e}");
+        let (k0, e0) = elliptic_ke(0.0, 1.0);
+        assert_eq!((k0, e0), (FRAC_PI_2, FRAC_PI_2));
+    }
 }

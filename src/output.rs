@@ -2,9 +2,21 @@
 
 use std::io::{self, Write};
 
-/// Shortest text that reads back to the same `f64` (`1e-300`, `0.1`, `1.0`).
+/// Shortest text that reads back to the same `f64` (`1e-300`, `0.1`, `1.0`),
+/// by `ryu` (the formatter `serde_json` uses too, so JSON and CSV agree).
+/// Non-finite values (never produced by the solvers) print as `null`.
 pub fn num(x: f64) -> String {
-    format!("{x:?}")
+    let mut b = ryu::Buffer::new();
+    if x.is_finite() {
+        b.format_finite(x).to_string()
+    } else {
+        "null".into()
+    }
+}
+
+fn write_num(out: &mut impl Write, x: f64) -> io::Result<()> {
+    let mut b = ryu::Buffer::new();
+    out.write_all(if x.is_finite() { b.format_finite(x) } else { "null" }.as_bytes())
 }
 
 /// Output format of tabular commands.
@@ -51,14 +63,16 @@ impl<W: Write> TableWriter<W> {
                     if i > 0 {
                         self.out.write_all(b",")?;
                     }
-                    write!(self.out, "\"{c}\":{}", num(*v))?;
+                    write!(self.out, "\"{c}\":")?;
+                    write_num(&mut self.out, *v)?;
                 }
                 self.out.write_all(b"}")?;
             }
             Format::Csv => {
                 write!(self.out, "{shape}")?;
                 for v in values {
-                    write!(self.out, ",{}", num(*v))?;
+                    self.out.write_all(b",")?;
+                    write_num(&mut self.out, *v)?;
                 }
                 self.out.write_all(b"\n")?;
             }
