@@ -3,9 +3,8 @@ use criterion::{black_box, criterion_group, criterion_main, Criterion};
 
 fn flat(c: &mut Criterion) {
     // A sweep over regimes: permanent contact, jumping stick-first and slip-first.
-    let points: Vec<(f64, f64)> = (0..100)
-        .map(|i| ((i % 10) as f64 / 10.0 + 0.05, [0.5, 1.5, 3.0, 0.9][i % 4]))
-        .collect();
+    let points: Vec<(f64, f64)> =
+        (0..100).map(|i| ((i % 10) as f64 / 10.0 + 0.05, [0.5, 1.5, 3.0, 0.9][i % 4])).collect();
     c.bench_function("flat point (mean over 100 regimes mix)", |b| {
         b.iter(|| {
             let mut acc = 0.0;
@@ -33,9 +32,7 @@ fn parabolic_table(c: &mut Criterion) {
             for i in 0..11 {
                 for j in 0..1001 {
                     let (a, v) = (i as f64 / 10.0, j as f64 / 1000.0);
-                    acc += fricosc::mdr::power_law(2.0, v, a, fricosc::mdr::DEFAULT_TOL, false)
-                        .ratio
-                        .mu_ratio;
+                    acc += fricosc::mdr::power_law(2.0, v, a, fricosc::mdr::DEFAULT_TOL, false).ratio.mu_ratio;
                 }
             }
             acc

@@ -19,10 +19,7 @@ pub const MAX_ROWS: usize = 10_000_000;
 
 /// Evaluate every row of `text` (a JSON array); `source` names the input in errors.
 pub fn run(text: &str, source: &str, stepping: Option<Stepping>) -> Result<Vec<Map<String, Value>>> {
-    let parse_err = |reason: String| Error::Parse {
-        context: source.into(),
-        reason,
-    };
+    let parse_err = |reason: String| Error::Parse { context: source.into(), reason };
     if text.trim().is_empty() {
         return Err(parse_err("empty input (expected a JSON array)".into()));
     }
@@ -51,9 +48,7 @@ pub fn run(text: &str, source: &str, stepping: Option<Stepping>) -> Result<Vec<M
             None => return Err(row_err("missing field 'shape'".into())),
         };
         let number = |name: &str| match obj.get(name) {
-            Some(Value::Number(n)) => n
-                .as_f64()
-                .ok_or_else(|| row_err(format!("'{name}' is not a finite number"))),
+            Some(Value::Number(n)) => n.as_f64().ok_or_else(|| row_err(format!("'{name}' is not a finite number"))),
             Some(_) => Err(row_err(format!("'{name}' must be a number"))),
             None => Err(row_err(format!("missing field '{name}'"))),
         };

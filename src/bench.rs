@@ -101,10 +101,7 @@ fn machine() -> Machine {
                 .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
         })
         .unwrap_or_else(|| "unknown".into());
-    Machine {
-        cores: std::thread::available_parallelism().map_or(1, |n| n.get()),
-        cpu,
-    }
+    Machine { cores: std::thread::available_parallelism().map_or(1, |n| n.get()), cpu }
 }
 
 fn reference(shape: &str, vbar: f64, amp: f64) -> Option<String> {
@@ -139,11 +136,8 @@ fn time_per_call(k: usize, sample_s: f64, mut f: impl FnMut() -> f64) -> f64 {
 /// Run the benchmark; `quick` finishes in seconds (for CI).
 pub fn run(quick: bool) -> Report {
     let (k, sample) = if quick { (3, 2e-4) } else { (7, 5e-3) };
-    let specs = [
-        ("flat amp<=1", "flat", 0.5, 0.5),
-        ("flat amp>1", "flat", 0.5, 1.5),
-        ("parabolic", "parabolic", 0.3, 0.4),
-    ];
+    let specs =
+        [("flat amp<=1", "flat", 0.5, 0.5), ("flat amp>1", "flat", 0.5, 1.5), ("parabolic", "parabolic", 0.3, 0.4)];
     let mut cases = vec![];
     let mut points = vec![];
     let mut failures = vec![];
@@ -154,13 +148,7 @@ pub fn run(quick: bool) -> Report {
             continue;
         };
         let refv: f64 = reference.parse().unwrap_or(f64::NAN);
-        cases.push(Case {
-            name: name.into(),
-            shape: shape_name.into(),
-            vbar,
-            amp,
-            reference: reference.clone(),
-        });
+        cases.push(Case { name: name.into(), shape: shape_name.into(), vbar, amp, reference: reference.clone() });
         let shape = match Shape::parse(shape_name) {
             Ok(s) => s,
             Err(e) => {
@@ -207,23 +195,13 @@ pub fn run(quick: bool) -> Report {
         // Time stepping at several resolutions.
         let steps: Vec<(usize, usize)> = match (shape == Shape::Flat, quick) {
             (true, true) => vec![(100, 1), (1000, 1), (10_000, 1)],
-            (true, false) => vec![
-                (100, 1),
-                (1000, 1),
-                (10_000, 1),
-                (100_000, 1),
-                (1_000_000, 1),
-                (10_000_000, 1),
-            ],
+            (true, false) => vec![(100, 1), (1000, 1), (10_000, 1), (100_000, 1), (1_000_000, 1), (10_000_000, 1)],
             (false, true) => vec![(50, 50), (100, 100), (200, 200)],
             (false, false) => vec![(100, 100), (300, 300), (1000, 1000), (3000, 3000), (10_000, 10_000)],
         };
         let mut stepping_best: Option<(f64, f64)> = None;
         for (m, n) in steps {
-            let st = Stepping {
-                steps_per_period: m,
-                springs: n,
-            };
+            let st = Stepping { steps_per_period: m, springs: n };
             let value = evaluate_stepping(&shape, vbar, amp, st).map(|e| e.ratio.mu_ratio);
             let t = time_per_call(k.min(3), sample, || {
                 evaluate_stepping(&shape, vbar, amp, st).map_or(f64::NAN, |e| e.ratio.mu_ratio)
@@ -266,10 +244,7 @@ pub fn run(quick: bool) -> Report {
 pub fn to_csv(r: &Report) -> String {
     let mut s = String::from("case,method,setting,error,time_s\n");
     for p in &r.points {
-        s += &format!(
-            "{},{},\"{}\",{:?},{:?}\n",
-            p.case, p.method, p.setting, p.error, p.time_s
-        );
+        s += &format!("{},{},\"{}\",{:?},{:?}\n", p.case, p.method, p.setting, p.error, p.time_s);
     }
     s
 }
@@ -282,20 +257,11 @@ pub fn to_svg(r: &Report) -> Result<String, String> {
     {
         let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let (tmin, tmax) = r
-            .points
-            .iter()
-            .fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.time_s), b.max(p.time_s)));
-        let (tmin, tmax) = if tmax > 0.0 {
-            (tmin / 3.0, tmax * 3.0)
-        } else {
-            (1e-9, 1.0)
-        };
+        let (tmin, tmax) =
+            r.points.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.time_s), b.max(p.time_s)));
+        let (tmin, tmax) = if tmax > 0.0 { (tmin / 3.0, tmax * 3.0) } else { (1e-9, 1.0) };
         let mut chart = ChartBuilder::on(&root)
-            .caption(
-                "fricosc work-precision: exact solver vs time stepping",
-                ("sans-serif", 20),
-            )
+            .caption("fricosc work-precision: exact solver vs time stepping", ("sans-serif", 20))
             .margin(15)
             .x_label_area_size(45)
             .y_label_area_size(70)
@@ -326,9 +292,7 @@ pub fn to_svg(r: &Report) -> Result<String, String> {
                 .map_err(|e| e.to_string())?
                 .label(key)
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
-            chart
-                .draw_series(xy.into_iter().map(|p| Circle::new(p, 4, color.filled())))
-                .map_err(|e| e.to_string())?;
+            chart.draw_series(xy.into_iter().map(|p| Circle::new(p, 4, color.filled()))).map_err(|e| e.to_string())?;
         }
         chart
             .configure_series_labels()

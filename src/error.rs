@@ -58,11 +58,7 @@ pub type Result<T> = std::result::Result<T, Error>;
 impl Error {
     /// Shorthand for [`Error::InvalidParameter`].
     pub fn param(name: &str, value: f64, reason: &str) -> Self {
-        Error::InvalidParameter {
-            name: name.into(),
-            value: format!("{value:?}"),
-            reason: reason.into(),
-        }
+        Error::InvalidParameter { name: name.into(), value: format!("{value:?}"), reason: reason.into() }
     }
 }
 

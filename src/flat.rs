@@ -20,16 +20,10 @@ impl Ratio {
     /// From the mean stick deficit and the mean normal force of the same contact.
     pub fn from_deficit(deficit: f64, mean_normal: f64) -> Self {
         if deficit <= 0.0 || mean_normal <= 0.0 {
-            return Ratio {
-                mu_ratio: 1.0,
-                reduction: 0.0,
-            };
+            return Ratio { mu_ratio: 1.0, reduction: 0.0 };
         }
         let reduction = (deficit / mean_normal).min(1.0);
-        Ratio {
-            mu_ratio: 1.0 - reduction,
-            reduction,
-        }
+        Ratio { mu_ratio: 1.0 - reduction, reduction }
     }
 }
 
@@ -75,10 +69,7 @@ fn spring(vbar: f64, amp: f64, events: bool) -> Spring {
 fn ratio_of(sp: &Spring, amp: f64) -> Ratio {
     if amp <= 1.0 {
         let reduction = (amp * sp.deficit).min(1.0);
-        Ratio {
-            mu_ratio: 1.0 - reduction,
-            reduction,
-        }
+        Ratio { mu_ratio: 1.0 - reduction, reduction }
     } else {
         Ratio::from_deficit(sp.deficit, sp.mean_normal)
     }
@@ -117,11 +108,7 @@ pub fn point(vbar: f64, amp: f64) -> Result<FlatPoint> {
                 _ if sp.regime == Regime::JumpingStickFirst && e.kind == EventKind::Stick => 0.0,
                 _ => (1.0 - amp * e.tau.cos()).max(0.0),
             };
-            Event {
-                normal: f,
-                tangential: f,
-                ..e
-            }
+            Event { normal: f, tangential: f, ..e }
         })
         .collect();
     let mean_normal = if amp <= 1.0 { 1.0 } else { amp * sp.mean_normal };

@@ -8,15 +8,10 @@ pub const MAX_LIST: u128 = 10_000_000;
 /// Parse one finite number; `what` names it in the error.
 pub fn parse_number(what: &str, text: &str) -> Result<f64> {
     let t = text.trim();
-    let x: f64 = t.parse().map_err(|_| Error::Parse {
-        context: what.into(),
-        reason: format!("'{t}' is not a number"),
-    })?;
+    let x: f64 =
+        t.parse().map_err(|_| Error::Parse { context: what.into(), reason: format!("'{t}' is not a number") })?;
     if !x.is_finite() {
-        return Err(Error::Parse {
-            context: what.into(),
-            reason: format!("'{t}' is not finite"),
-        });
+        return Err(Error::Parse { context: what.into(), reason: format!("'{t}' is not finite") });
     }
     Ok(x)
 }
@@ -29,10 +24,7 @@ pub fn parse_number(what: &str, text: &str) -> Result<f64> {
 pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
     let t = text.trim();
     if t.is_empty() {
-        return Err(Error::Parse {
-            context: what.into(),
-            reason: "empty value list".into(),
-        });
+        return Err(Error::Parse { context: what.into(), reason: "empty value list".into() });
     }
     let parts: Vec<&str> = t.split(':').collect();
     match parts.len() {
@@ -46,17 +38,10 @@ pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
                 reason: format!("range count '{c}' is not a whole number"),
             })?;
             if count == 0 {
-                return Err(Error::Parse {
-                    context: what.into(),
-                    reason: "range count must be >= 1".into(),
-                });
+                return Err(Error::Parse { context: what.into(), reason: "range count must be >= 1".into() });
             }
             if count > MAX_LIST {
-                return Err(Error::TooLarge {
-                    what: what.into(),
-                    count,
-                    limit: MAX_LIST,
-                });
+                return Err(Error::TooLarge { what: what.into(), count, limit: MAX_LIST });
             }
             if stop < start {
                 return Err(Error::Parse {
@@ -70,15 +55,7 @@ pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
             }
             let span = stop - start;
             let last = (n - 1) as f64;
-            Ok((0..n)
-                .map(|k| {
-                    if k + 1 == n {
-                        stop
-                    } else {
-                        decimal(start + span * k as f64 / last)
-                    }
-                })
-                .collect())
+            Ok((0..n).map(|k| if k + 1 == n { stop } else { decimal(start + span * k as f64 / last) }).collect())
         }
         _ => Err(Error::Parse {
             context: what.into(),
@@ -105,18 +82,7 @@ mod tests {
         assert_eq!(r[60], 0.6);
         assert_eq!(parse_values("v", "0:1.2:13").unwrap()[1], 0.1);
         assert_eq!(parse_values("v", "0.5:0.5:1").unwrap(), vec![0.5]);
-        for bad in [
-            "",
-            "a",
-            "nan",
-            "inf",
-            "1e999",
-            "1:0:3",
-            "0:1:0",
-            "0:1:x",
-            "0:1",
-            "0:1:1000000000000",
-        ] {
+        for bad in ["", "a", "nan", "inf", "1e999", "1:0:3", "0:1:0", "0:1:x", "0:1", "0:1:1000000000000"] {
             assert!(parse_values("v", bad).is_err(), "{bad}");
         }
     }

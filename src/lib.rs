@@ -35,6 +35,7 @@ pub mod bench;
 pub mod grid;
 pub mod mdr;
 pub mod output;
+pub mod profile;
 pub mod quad;
 pub mod shape;
 pub mod validate;

@@ -13,11 +13,7 @@ use std::io::{self, Read, Write};
 use std::process::ExitCode;
 
 #[derive(Parser)]
-#[command(
-    name = "fricosc",
-    version,
-    about = "Exact friction under normal oscillation (Popov, Popov, Popov 2017)"
-)]
+#[command(name = "fricosc", version, about = "Exact friction under normal oscillation (Popov, Popov, Popov 2017)")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -87,17 +83,15 @@ struct MethodArgs {
 
 impl MethodArgs {
     fn stepping(&self) -> Option<Stepping> {
-        (self.method == Method::Stepping).then_some(Stepping {
-            steps_per_period: self.steps_per_period,
-            springs: self.springs,
-        })
+        (self.method == Method::Stepping)
+            .then_some(Stepping { steps_per_period: self.steps_per_period, springs: self.springs })
     }
 }
 
 /// Options shared by `point` and `table`.
 #[derive(Args)]
 struct Common {
-    /// Indenter shape: flat, parabolic, cone, power:N.
+    /// Indenter shape: flat, parabolic, cone, power:N, profile:FILE@U0, gx:FILE@U0.
     #[arg(long, default_value = "flat")]
     shape: String,
     #[command(flatten)]
@@ -146,21 +140,21 @@ fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
 }
 
 fn io_err(e: io::Error) -> Error {
-    Error::Io {
-        path: "stdout".into(),
-        reason: e.to_string(),
-    }
+    Error::Io { path: "stdout".into(), reason: e.to_string() }
 }
 
 fn exact_point(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<serde_json::Value> {
     match shape {
         Shape::Flat => serde_json::to_value(fricosc::flat::point(vbar, amp)?),
         Shape::Power(n) => serde_json::to_value(fricosc::mdr::point(*n, vbar, amp, tol)?),
+        Shape::Tabulated(..) => {
+            let e = evaluate_with(shape, vbar, amp, tol)?;
+            serde_json::to_value(serde_json::json!({"vbar": vbar, "amp": amp, "mu_ratio": e.ratio.mu_ratio,
+                "reduction": e.ratio.reduction, "error_estimate": e.error_estimate,
+                "interpolation_error": e.interpolation_error}))
+        }
     }
-    .map_err(|e| Error::Parse {
-        context: "output".into(),
-        reason: e.to_string(),
-    })
+    .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })
 }
 
 fn point(a: PointArgs) -> Result<()> {
@@ -202,11 +196,7 @@ fn table(a: TableArgs) -> Result<()> {
     };
     let total = amps.len() as u128 * vels.len() as u128;
     if total > fricosc::grid::MAX_LIST {
-        return Err(Error::TooLarge {
-            what: "table".into(),
-            count: total,
-            limit: fricosc::grid::MAX_LIST,
-        });
+        return Err(Error::TooLarge { what: "table".into(), count: total, limit: fricosc::grid::MAX_LIST });
     }
     // Validate every input before the first byte is written.
     for &amp in &amps {
@@ -224,10 +214,7 @@ fn table(a: TableArgs) -> Result<()> {
     let stepping = a.common.method.stepping();
     let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, &name, cols).map_err(io_err)?;
     // Rows in parallel (rayon), written in order, a bounded chunk at a time.
-    let pairs: Vec<(f64, f64)> = amps
-        .iter()
-        .flat_map(|&amp| vels.iter().map(move |&v| (amp, v)))
-        .collect();
+    let pairs: Vec<(f64, f64)> = amps.iter().flat_map(|&amp| vels.iter().map(move |&v| (amp, v))).collect();
     for chunk in pairs.chunks(1 << 15) {
         let rows: Vec<Result<[f64; 5]>> = chunk
             .par_iter()
@@ -242,12 +229,7 @@ fn table(a: TableArgs) -> Result<()> {
             .collect();
         for row in rows {
             let r = row?;
-            if is_vhat {
-                w.row(&name, &r)
-            } else {
-                w.row(&name, &r[1..])
-            }
-            .map_err(io_err)?;
+            if is_vhat { w.row(&name, &r) } else { w.row(&name, &r[1..]) }.map_err(io_err)?;
         }
     }
     w.finish().map_err(io_err)
@@ -257,17 +239,13 @@ fn read_input(file: Option<String>) -> Result<(String, String)> {
     match file.as_deref() {
         None | Some("-") => {
             let mut s = String::new();
-            io::stdin().read_to_string(&mut s).map_err(|e| Error::Io {
-                path: "stdin".into(),
-                reason: e.to_string(),
-            })?;
+            io::stdin()
+                .read_to_string(&mut s)
+                .map_err(|e| Error::Io { path: "stdin".into(), reason: e.to_string() })?;
             Ok((s, "stdin".into()))
         }
         Some(p) => {
-            let s = std::fs::read_to_string(p).map_err(|e| Error::Io {
-                path: p.into(),
-                reason: e.to_string(),
-            })?;
+            let s = std::fs::read_to_string(p).map_err(|e| Error::Io { path: p.into(), reason: e.to_string() })?;
             Ok((s, p.into()))
         }
     }
@@ -288,10 +266,7 @@ fn run_batch(file: Option<String>, stepping: Option<Stepping>) -> Result<()> {
 
 fn run_bench(out: &str, quick: bool) -> Result<()> {
     let dir = std::path::Path::new(out);
-    let werr = |e: String| Error::Io {
-        path: out.into(),
-        reason: e,
-    };
+    let werr = |e: String| Error::Io { path: out.into(), reason: e };
     std::fs::create_dir_all(dir).map_err(|e| werr(e.to_string()))?;
     let report = fricosc::bench::run(quick);
     let json = serde_json::to_string_pretty(&report).map_err(|e| werr(e.to_string()))?;
@@ -322,10 +297,7 @@ fn run_bench(out: &str, quick: bool) -> Result<()> {
 fn run_validate(shape: &str, file: String, max_error: Option<String>) -> Result<bool> {
     let shape = Shape::parse(shape)?;
     let max_error = match max_error {
-        Some(t) => Some(fricosc::error::check_nonneg(
-            "max-error",
-            parse_number("--max-error", &t)?,
-        )?),
+        Some(t) => Some(fricosc::error::check_nonneg("max-error", parse_number("--max-error", &t)?)?),
         None => None,
     };
     let (text, source) = read_input(Some(file))?;

@@ -170,11 +170,7 @@ impl Contact {
     /// near the centre: the product form of [`Contact::y`]).
     fn y_sin_cos(&self, beta: f64, sin_beta: f64, cos_beta: f64) -> f64 {
         if self.amp <= 1.0 {
-            let one_minus_s = if sin_beta > 0.0 {
-                cos_beta * cos_beta / (1.0 + sin_beta)
-            } else {
-                1.0 - sin_beta
-            };
+            let one_minus_s = if sin_beta > 0.0 { cos_beta * cos_beta / (1.0 + sin_beta) } else { 1.0 - sin_beta };
             (1.0 - self.amp) + self.amp * one_minus_s
         } else if self.amp * sin_beta > 0.5 {
             self.y(beta)
@@ -262,13 +258,7 @@ impl Contact {
             en <= self.tol * (q.0.abs() + scale.0) && ed <= self.tol * (q.1.abs() + scale.1)
         };
         if within(prev_d.0, prev_d.1, q1) {
-            return Sums {
-                normal: q1.0,
-                deficit: q1.1,
-                err_normal: prev_d.0,
-                err_deficit: prev_d.1,
-                nodes,
-            };
+            return Sums { normal: q1.0, deficit: q1.1, err_normal: prev_d.0, err_deficit: prev_d.1, nodes };
         }
         loop {
             m *= 2;
@@ -289,13 +279,7 @@ impl Contact {
             cur = next;
             let ok = within(en, ed, cur);
             if ok || 2 * m >= MAX_ORDER {
-                return Sums {
-                    normal: cur.0,
-                    deficit: cur.1,
-                    err_normal: en,
-                    err_deficit: ed,
-                    nodes,
-                };
+                return Sums { normal: cur.0, deficit: cur.1, err_normal: en, err_deficit: ed, nodes };
             }
             prev_d = d;
         }
@@ -358,13 +342,7 @@ impl Contact {
         pieces.sort_by(|a, b| (b.1 - b.0).total_cmp(&(a.1 - a.0)));
         for (a, b) in pieces {
             let kind = if b == hi { top } else { Top::Regular };
-            let pc = self.piece(
-                a,
-                b,
-                kind,
-                stick,
-                (scale.0 + total.normal.abs(), scale.1 + total.deficit.abs()),
-            );
+            let pc = self.piece(a, b, kind, stick, (scale.0 + total.normal.abs(), scale.1 + total.deficit.abs()));
             total += pc;
         }
         total
@@ -440,10 +418,7 @@ fn total_normal(n: f64, amp: f64) -> Option<f64> {
 pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResult {
     let tol = tol.max(DEFAULT_TOL);
     let unit = |mean_normal: Option<f64>| MdrResult {
-        ratio: Ratio {
-            mu_ratio: 1.0,
-            reduction: 0.0,
-        },
+        ratio: Ratio { mu_ratio: 1.0, reduction: 0.0 },
         error_estimate: 0.0,
         mean_normal,
         bands: vec![],
@@ -458,14 +433,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     let vel = (vbar < 1.0).then(|| Velocity::new(vbar));
     let alpha = vel.map_or(0.0, |v| v.alpha);
     let beta_star = if amp > 1.0 { (1.0 / amp).asin() } else { FRAC_PI_2 };
-    let contact = Contact {
-        n,
-        amp,
-        gamma: 1.0 / n - 1.0,
-        beta_star,
-        vel,
-        tol,
-    };
+    let contact = Contact { n, amp, gamma: 1.0 / n - 1.0, beta_star, vel, tol };
     let top_kind = if amp > 1.0 {
         Top::Centre
     } else if amp == 1.0 {
@@ -481,11 +449,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
 
     // Permanent contact (amp < 1): int_0^{z1} amp s dz = z1 - z1^(n+1)/(n+1).
     let z1 = z_of_s(1.0);
-    let perm = Sums {
-        normal: z1 - z1 * z1.powf(n) / (n + 1.0),
-        deficit: amp * d_perm * z1,
-        ..Default::default()
-    };
+    let perm = Sums { normal: z1 - z1 * z1.powf(n) / (n + 1.0), deficit: amp * d_perm * z1, ..Default::default() };
     // Slip first: beta in [alpha, beta_star]; the deficit is D(vbar) per spring.
     let sf_lo = alpha.min(beta_star);
     let inf = f64::INFINITY;
@@ -495,11 +459,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     // arcsin(vbar) from the band's ends.
     // At vbar = 0 the stick-first means are the mean normal force itself
     // (everything sticks): analytic, nothing to grade for.
-    let near = if vbar == 0.0 {
-        f64::INFINITY
-    } else {
-        vbar.min(1.0).asin()
-    };
+    let near = if vbar == 0.0 { f64::INFINITY } else { vbar.min(1.0).asin() };
     let scale0 = (perm.normal, perm.deficit);
     let stick_first = contact.band(-alpha, sf_lo, top_of(sf_lo), vel.is_some(), (near, near), scale0);
     let scale1 = (scale0.0 + stick_first.normal, scale0.1 + stick_first.deficit);
@@ -520,20 +480,12 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
         None => contact.band(-FRAC_PI_2, -alpha, Top::Regular, false, (inf, inf), scale2),
     };
 
-    let first_kind = if vel.is_some() {
-        BandKind::SlipFirst
-    } else {
-        BandKind::SlipOnly
-    };
+    let first_kind = if vel.is_some() { BandKind::SlipFirst } else { BandKind::SlipOnly };
     let parts = [
         (BandKind::PermanentContact, [0.0, z1], perm),
         (first_kind, [z1, z_of_beta(sf_lo)], slip_first),
         (BandKind::StickFirst, [z_of_beta(sf_lo), z_of_beta(-alpha)], stick_first),
-        (
-            BandKind::SlipOnly,
-            [z_of_beta(-alpha), (1.0 + amp).powf(1.0 / n)],
-            slip_only,
-        ),
+        (BandKind::SlipOnly, [z_of_beta(-alpha), (1.0 + amp).powf(1.0 / n)], slip_only),
     ];
     let mut total = Sums::default();
     for p in &parts {
@@ -560,24 +512,14 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
                 kind,
                 x_range,
                 normal_share: if nn > 0.0 { s.normal / nn } else { 0.0 },
-                tangential_share: if tangential > 0.0 {
-                    (s.normal - s.deficit) / tangential
-                } else {
-                    0.0
-                },
+                tangential_share: if tangential > 0.0 { (s.normal - s.deficit) / tangential } else { 0.0 },
                 nodes: s.nodes,
             })
             .collect()
     } else {
         vec![]
     };
-    MdrResult {
-        ratio,
-        error_estimate,
-        mean_normal: Some(nn),
-        bands: band_list,
-        nodes: total.nodes,
-    }
+    MdrResult { ratio, error_estimate, mean_normal: Some(nn), bands: band_list, nodes: total.nodes }
 }
 
 /// A full MDR point: the result plus the static limit, for `fricosc point`.
@@ -606,9 +548,7 @@ pub fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> f64 {
     if amp >= 1.0 {
         return 0.0;
     }
-    let nn = total_normal(n, amp)
-        .or_else(|| power_law(n, 1.0, amp, tol, true).mean_normal)
-        .unwrap_or(f64::NAN);
+    let nn = total_normal(n, amp).or_else(|| power_law(n, 1.0, amp, tol, true).mean_normal).unwrap_or(f64::NAN);
     (n / (n + 1.0) * (1.0 - amp).powf(1.0 + 1.0 / n) / nn).min(1.0)
 }
 
@@ -619,12 +559,7 @@ pub fn point(n: f64, vbar: f64, amp: f64, tol: f64) -> crate::Result<MdrPoint> {
     crate::shape::check_tol(tol)?;
     let result = power_law(n, vbar, amp, tol, true);
     let mu_static_ratio = mu_static_ratio(n, amp, tol);
-    Ok(MdrPoint {
-        vbar,
-        amp,
-        result,
-        mu_static_ratio,
-    })
+    Ok(MdrPoint { vbar, amp, result, mu_static_ratio })
 }
 
 #[cfg(test)]
@@ -659,20 +594,10 @@ mod tests {
                     let z1 = (1.0 - a).max(0.0).powf(1.0 / n);
                     let perm = z1 - z1 * z1.powf(n) / (n + 1.0);
                     perm + c
-                        .band(
-                            -FRAC_PI_2,
-                            c.beta_star,
-                            top,
-                            false,
-                            (f64::INFINITY, f64::INFINITY),
-                            (perm, 0.0),
-                        )
+                        .band(-FRAC_PI_2, c.beta_star, top, false, (f64::INFINITY, f64::INFINITY), (perm, 0.0))
                         .normal
                 };
-                assert!(
-                    (closed / quad_total - 1.0).abs() < 1e-14,
-                    "n={n} a={a}: {closed} vs {quad_total}"
-                );
+                assert!((closed / quad_total - 1.0).abs() < 1e-14, "n={n} a={a}: {closed} vs {quad_total}");
             }
         }
     }

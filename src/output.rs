@@ -43,12 +43,7 @@ impl<W: Write> TableWriter<W> {
             Format::Json => write!(out, "{{\"shape\":{},\"rows\":[", serde_json::to_string(shape)?)?,
             Format::Csv => writeln!(out, "shape,{}", columns.join(","))?,
         }
-        Ok(TableWriter {
-            out,
-            format,
-            columns,
-            rows: 0,
-        })
+        Ok(TableWriter { out, format, columns, rows: 0 })
     }
 
     /// One row (values in column order).

@@ -29,11 +29,7 @@ pub fn gauss_jacobi(m: usize, beta: f64) -> Rule {
     for k in 0..m {
         let kf = k as f64;
         let d = 2.0 * kf + beta;
-        j[(k, k)] = if k == 0 {
-            beta / (beta + 2.0)
-        } else {
-            beta * beta / (d * (d + 2.0))
-        };
+        j[(k, k)] = if k == 0 { beta / (beta + 2.0) } else { beta * beta / (d * (d + 2.0)) };
         if k + 1 < m {
             let k1 = kf + 1.0;
             let d1 = 2.0 * k1 + beta;
@@ -44,14 +40,10 @@ pub fn gauss_jacobi(m: usize, beta: f64) -> Rule {
     }
     let mu0 = 2f64.powf(beta + 1.0) / (beta + 1.0);
     let eig = j.symmetric_eigen();
-    let mut pairs: Vec<(f64, f64)> = (0..m)
-        .map(|i| (eig.eigenvalues[i], mu0 * eig.eigenvectors[(0, i)].powi(2)))
-        .collect();
+    let mut pairs: Vec<(f64, f64)> =
+        (0..m).map(|i| (eig.eigenvalues[i], mu0 * eig.eigenvectors[(0, i)].powi(2))).collect();
     pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
-    Rule {
-        nodes: pairs.iter().map(|p| p.0).collect(),
-        weights: pairs.iter().map(|p| p.1).collect(),
-    }
+    Rule { nodes: pairs.iter().map(|p| p.0).collect(), weights: pairs.iter().map(|p| p.1).collect() }
 }
 
 thread_local! {
@@ -60,12 +52,7 @@ thread_local! {
 
 /// The cached rule of order `m` for weight `(1 + x)^beta`.
 pub fn rule(m: usize, beta: f64) -> Rc<Rule> {
-    CACHE.with(|c| {
-        c.borrow_mut()
-            .entry((m, beta.to_bits()))
-            .or_insert_with(|| Rc::new(gauss_jacobi(m, beta)))
-            .clone()
-    })
+    CACHE.with(|c| c.borrow_mut().entry((m, beta.to_bits())).or_insert_with(|| Rc::new(gauss_jacobi(m, beta))).clone())
 }
 
 #[cfg(test)]

@@ -49,25 +49,16 @@ pub fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, rtol: f64) -> Root {
         f(x)
     };
     if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
-        return Root {
-            x: lo.min(hi),
-            evaluations: 0,
-        };
+        return Root { x: lo.min(hi), evaluations: 0 };
     }
     let (flo, fhi) = (g(lo), g(hi));
     if let Some(x) = collapsed(lo, flo, hi, fhi) {
-        return Root {
-            x,
-            evaluations: count.get(),
-        };
+        return Root { x, evaluations: count.get() };
     }
     // The crate evaluates the ends again; the two extra calls are counted too.
     let mut tol = Tolerance { rtol, max_iter: 200 };
     let x = roots::find_root_regula_falsi(lo, hi, &g, &mut tol).unwrap_or(0.5 * (lo + hi));
-    Root {
-        x,
-        evaluations: count.get(),
-    }
+    Root { x, evaluations: count.get() }
 }
 
 /// The root when the bracket has no sign change left (or an end is a root).
@@ -88,10 +79,7 @@ fn collapsed(lo: f64, flo: f64, hi: f64, fhi: f64) -> Option<f64> {
 pub fn newton(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, hi: f64, guess: f64, rtol: f64) -> Root {
     if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
         // An empty bracket (both ends the same point to rounding): that point is the root.
-        return Root {
-            x: lo.min(hi),
-            evaluations: 0,
-        };
+        return Root { x: lo.min(hi), evaluations: 0 };
     }
     let count = Cell::new(0u32);
     let g = |x: f64| {
@@ -101,10 +89,7 @@ pub fn newton(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, hi: f64,
     let mut tol = Tolerance { rtol, max_iter: 12 };
     let start = guess.clamp(lo, hi);
     match roots::find_root_newton_raphson(start, &g, &df, &mut tol) {
-        Ok(x) if x >= lo && x <= hi => Root {
-            x,
-            evaluations: count.get(),
-        },
+        Ok(x) if x >= lo && x <= hi => Root { x, evaluations: count.get() },
         _ => {
             let mut r = bracketed(f, lo, hi, rtol);
             r.evaluations += count.get();

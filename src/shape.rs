@@ -13,19 +13,29 @@ pub enum Shape {
     Flat,
     /// MDR equivalent profile `g ~ |x|^n`, `n > 0` (`cone`: 1, `parabolic`: 2).
     Power(f64),
+    /// A tabulated profile (`profile:FILE@U0`) or equivalent profile (`gx:FILE@U0`).
+    Tabulated(std::sync::Arc<crate::profile::Tabulated>, String),
 }
 
 impl Shape {
-    /// Parse `flat`, `parabolic`, `cone` or `power:N` (`N` finite, `> 0`).
+    /// Parse `flat`, `parabolic`, `cone`, `power:N` (`N` finite, `> 0`), or a
+    /// tabulated `profile:FILE@U0` / `gx:FILE@U0` (see [`crate::profile`]).
     pub fn parse(spec: &str) -> Result<Shape> {
-        let bad = |reason: &str| Error::InvalidShape {
-            spec: spec.trim().into(),
-            reason: reason.into(),
-        };
+        let bad = |reason: &str| Error::InvalidShape { spec: spec.trim().into(), reason: reason.into() };
         match spec.trim() {
             "flat" => Ok(Shape::Flat),
             "parabolic" => Ok(Shape::Power(2.0)),
             "cone" => Ok(Shape::Power(1.0)),
+            other if other.starts_with("profile:") || other.starts_with("gx:") => {
+                let profile = other.starts_with("profile:");
+                let rest = other.split_once(':').map_or("", |p| p.1);
+                let (path, u0) = rest
+                    .rsplit_once('@')
+                    .ok_or_else(|| bad("needs the mean indentation: profile:FILE@U0 or gx:FILE@U0"))?;
+                let u0: f64 = u0.trim().parse().map_err(|_| bad("the mean indentation after '@' is not a number"))?;
+                let t = crate::profile::Tabulated::load(path, u0, profile)?;
+                Ok(Shape::Tabulated(std::sync::Arc::new(t), other.to_string()))
+            }
             other => match other.strip_prefix("power:") {
                 Some(n) => {
                     let n: f64 = n.trim().parse().map_err(|_| bad("the exponent is not a number"))?;
@@ -35,7 +45,7 @@ impl Shape {
                         Ok(Shape::Power(n))
                     }
                 }
-                None => Err(bad("unknown shape (known: flat, parabolic, cone, power:N)")),
+                None => Err(bad("unknown shape (known: flat, parabolic, cone, power:N, profile:FILE@U0, gx:FILE@U0)")),
             },
         }
     }
@@ -47,6 +57,7 @@ impl Shape {
             Shape::Power(n) if *n == 2.0 => "parabolic".into(),
             Shape::Power(n) if *n == 1.0 => "cone".into(),
             Shape::Power(n) => format!("power:{n:?}"),
+            Shape::Tabulated(_, spec) => spec.clone(),
         }
     }
 }
@@ -59,6 +70,9 @@ pub struct Evaluation {
     pub ratio: Ratio,
     /// Estimated absolute error of `mu_ratio`.
     pub error_estimate: f64,
+    /// For tabulated shapes: the estimated error that interpolating the table adds.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub interpolation_error: Option<f64>,
 }
 
 /// Accuracy bound of the single-spring solver, from the tests against the
@@ -80,12 +94,18 @@ pub fn evaluate_with(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<Eva
         Shape::Flat => Ok(Evaluation {
             ratio: flat::ratio(vbar, amp)?,
             error_estimate: FLAT_ERROR_BOUND,
+            interpolation_error: None,
         }),
         Shape::Power(n) => {
             let r = mdr::power_law(*n, vbar, amp, tol, false);
+            Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate, interpolation_error: None })
+        }
+        Shape::Tabulated(t, _) => {
+            let r = crate::profile::evaluate(t, vbar, amp)?;
             Ok(Evaluation {
                 ratio: r.ratio,
                 error_estimate: r.error_estimate,
+                interpolation_error: Some(r.interpolation_error),
             })
         }
     }
@@ -151,24 +171,20 @@ pub fn evaluate_stepping(shape: &Shape, vbar: f64, amp: f64, st: Stepping) -> Re
         Shape::Flat => (crate::stepper::flat_mu_ratio(vbar, amp, st.steps_per_period), 1),
         Shape::Power(n) => {
             if st.steps_per_period as u128 * st.springs as u128 > MAX_STEPPING_WORK {
-                return Err(Error::param(
-                    "springs",
-                    st.springs as f64,
-                    "steps-per-period x springs must be <= 1e12",
-                ));
+                return Err(Error::param("springs", st.springs as f64, "steps-per-period x springs must be <= 1e12"));
             }
-            (
-                crate::stepper::power_law_mu_ratio(*n, vbar, amp, st.steps_per_period, st.springs),
-                st.springs,
-            )
+            (crate::stepper::power_law_mu_ratio(*n, vbar, amp, st.steps_per_period, st.springs), st.springs)
+        }
+        Shape::Tabulated(..) => {
+            return Err(Error::InvalidShape {
+                spec: shape.name(),
+                reason: "--method stepping supports flat and power-law shapes".into(),
+            })
         }
     };
     let mu = run.mu_ratio().clamp(0.0, 1.0);
     Ok(SteppingEvaluation {
-        ratio: Ratio {
-            mu_ratio: mu,
-            reduction: 1.0 - mu,
-        },
+        ratio: Ratio { mu_ratio: mu, reduction: 1.0 - mu },
         steps: run.steps,
         springs,
         period_change: run.period_change,

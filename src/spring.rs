@@ -166,11 +166,7 @@ pub fn mean_normal_at_angle(phi: f64) -> f64 {
 pub fn mean_normal_sin_cos(beta: f64, sin_beta: f64, cos_beta: f64) -> f64 {
     let phi = FRAC_PI_2 + beta;
     if phi < 2.0 {
-        let one_plus_s = if sin_beta < 0.0 {
-            cos_beta * cos_beta / (1.0 - sin_beta)
-        } else {
-            1.0 + sin_beta
-        };
+        let one_plus_s = if sin_beta < 0.0 { cos_beta * cos_beta / (1.0 - sin_beta) } else { 1.0 + sin_beta };
         (phi * one_plus_s - s_fn(phi)) / PI
     } else {
         (sin_beta * phi + cos_beta) / PI
@@ -194,12 +190,7 @@ impl Velocity {
     /// Constants for `0 <= vbar < 1`.
     pub fn new(vbar: f64) -> Self {
         let (w, alpha) = velocity_angles(vbar);
-        Velocity {
-            vbar,
-            w,
-            alpha,
-            tangent_guess: tangent_length_guess(alpha, vbar),
-        }
+        Velocity { vbar, w, alpha, tangent_guess: tangent_length_guess(alpha, vbar) }
     }
 
     /// Deficit of the stick-first spring with `s = sin beta`, `|beta| < alpha`
@@ -306,11 +297,7 @@ impl Spring {
             return out;
         }
         if vbar >= 1.0 {
-            out.regime = if s >= 1.0 {
-                Regime::PermanentSlip
-            } else {
-                Regime::JumpingSlip
-            };
+            out.regime = if s >= 1.0 { Regime::PermanentSlip } else { Regime::JumpingSlip };
             return out;
         }
         let vel = Velocity::new(vbar);
@@ -328,18 +315,10 @@ impl Spring {
             return out;
         };
         let (length, deficit, evals) = stick_phase(beta, &vel, x_max, rtol);
-        let start_force = if regime == Regime::JumpingStickFirst {
-            0.0
-        } else {
-            s - c
-        };
+        let start_force = if regime == Regime::JumpingStickFirst { 0.0 } else { s - c };
         out.regime = regime;
         out.deficit = deficit;
-        out.stick = Some(Stick {
-            beta,
-            length,
-            start_force,
-        });
+        out.stick = Some(Stick { beta, length, start_force });
         out.root_evaluations = evals;
         out
     }
@@ -369,45 +348,17 @@ impl Spring {
         if self.s < 1.0 {
             // Contact from theta = arccos s to 2 pi - theta (eq. 18).
             let theta = self.s.acos();
-            ev.push(Event {
-                kind: EventKind::Contact,
-                tau: theta,
-                normal: 0.0,
-                tangential: 0.0,
-            });
-            ev.push(Event {
-                kind: EventKind::LossOfContact,
-                tau: wrap(TAU - theta),
-                normal: 0.0,
-                tangential: 0.0,
-            });
+            ev.push(Event { kind: EventKind::Contact, tau: theta, normal: 0.0, tangential: 0.0 });
+            ev.push(Event { kind: EventKind::LossOfContact, tau: wrap(TAU - theta), normal: 0.0, tangential: 0.0 });
         }
         if let Some(st) = self.stick {
             // A stick from contact starts exactly at the contact phase theta.
-            let t0 = if self.regime == Regime::JumpingStickFirst {
-                self.s.acos()
-            } else {
-                st.start()
-            };
+            let t0 = if self.regime == Regime::JumpingStickFirst { self.s.acos() } else { st.start() };
             let t1 = t0 + st.length;
             let f1 = st.start_force + self.vbar * st.length;
-            let n0 = if self.regime == Regime::JumpingStickFirst {
-                0.0
-            } else {
-                bound(t0)
-            };
-            ev.push(Event {
-                kind: EventKind::Stick,
-                tau: wrap(t0),
-                normal: n0,
-                tangential: st.start_force,
-            });
-            ev.push(Event {
-                kind: EventKind::Slip,
-                tau: wrap(t1),
-                normal: bound(t1),
-                tangential: f1,
-            });
+            let n0 = if self.regime == Regime::JumpingStickFirst { 0.0 } else { bound(t0) };
+            ev.push(Event { kind: EventKind::Stick, tau: wrap(t0), normal: n0, tangential: st.start_force });
+            ev.push(Event { kind: EventKind::Slip, tau: wrap(t1), normal: bound(t1), tangential: f1 });
         }
         // Stable sort: at equal phases the contact precedes the stick it starts.
         ev.sort_by(|a, b| a.tau.total_cmp(&b.tau));
@@ -436,10 +387,7 @@ mod tests {
         for k in 0..=1000 {
             let beta = -FRAC_PI_2 + PI * k as f64 / 1000.0;
             let (sb, cb) = beta.sin_cos();
-            let (a, b) = (
-                mean_normal_sin_cos(beta, sb, cb),
-                mean_normal_at_angle(FRAC_PI_2 + beta),
-            );
+            let (a, b) = (mean_normal_sin_cos(beta, sb, cb), mean_normal_at_angle(FRAC_PI_2 + beta));
             // Near the edge of contact phi = pi/2 + beta carries a rounding of
             // 1e-16/phi relative, and <B> ~ phi^3: the two forms agree to that.
             let phi = FRAC_PI_2 + beta;

@@ -105,12 +105,7 @@ pub fn flat_mu_ratio(vbar: f64, amp: f64, steps_per_period: usize) -> SteppedMea
 /// foundation that ever touches, `0 <= z < (1 + amp)^(1/n)`.
 pub fn power_law_mu_ratio(n: f64, vbar: f64, amp: f64, steps_per_period: usize, springs: usize) -> SteppedMeans {
     if amp == 0.0 {
-        return SteppedMeans {
-            tangential: 1.0,
-            normal: 1.0,
-            period_change: 0.0,
-            steps: 0,
-        };
+        return SteppedMeans { tangential: 1.0, normal: 1.0, period_change: 0.0, steps: 0 };
     }
     let k = springs.max(1);
     let dz = (1.0 + amp).powf(1.0 / n) / k as f64;

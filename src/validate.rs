@@ -52,10 +52,7 @@ pub struct Validation {
 
 /// Read `(vbar, amp, mu_ratio)` rows from JSON or CSV text; `source` names it in errors.
 pub fn read_rows(text: &str, source: &str) -> Result<Vec<(f64, f64, f64)>> {
-    let err = |reason: String| Error::Parse {
-        context: source.into(),
-        reason,
-    };
+    let err = |reason: String| Error::Parse { context: source.into(), reason };
     let rows = match text.trim_start().chars().next() {
         None => return Err(err("empty input".into())),
         Some('[') | Some('{') => {
@@ -86,10 +83,7 @@ pub fn read_rows(text: &str, source: &str) -> Result<Vec<(f64, f64, f64)>> {
             let mut lines = text.lines().filter(|l| !l.trim().is_empty());
             let header: Vec<&str> = lines.next().unwrap_or("").split(',').map(str::trim).collect();
             let col = |name: &str| {
-                header
-                    .iter()
-                    .position(|h| *h == name)
-                    .ok_or_else(|| err(format!("CSV header lacks column '{name}'")))
+                header.iter().position(|h| *h == name).ok_or_else(|| err(format!("CSV header lacks column '{name}'")))
             };
             let (cv, ca, cm) = (col("vbar")?, col("amp")?, col("mu_ratio")?);
             lines
@@ -97,9 +91,7 @@ pub fn read_rows(text: &str, source: &str) -> Result<Vec<(f64, f64, f64)>> {
                 .map(|(i, l)| {
                     let f: Vec<&str> = l.split(',').collect();
                     let get = |c: usize, name: &str| {
-                        let t = f
-                            .get(c)
-                            .ok_or_else(|| err(format!("row {i}: missing column '{name}'")))?;
+                        let t = f.get(c).ok_or_else(|| err(format!("row {i}: missing column '{name}'")))?;
                         parse_number(&format!("{source}: row {i}: {name}"), t)
                     };
                     Ok((get(cv, "vbar")?, get(ca, "amp")?, get(cm, "mu_ratio")?))
@@ -127,39 +119,16 @@ pub fn read_rows(text: &str, source: &str) -> Result<Vec<(f64, f64, f64)>> {
 
 /// Compare `rows` with the exact solver for `shape`.
 pub fn validate(shape: &Shape, rows: &[(f64, f64, f64)]) -> Result<Validation> {
-    let exact: Vec<Result<f64>> = rows
-        .par_iter()
-        .map(|&(v, a, _)| evaluate(shape, v, a).map(|e| e.ratio.mu_ratio))
-        .collect();
+    let exact: Vec<Result<f64>> =
+        rows.par_iter().map(|&(v, a, _)| evaluate(shape, v, a).map(|e| e.ratio.mu_ratio)).collect();
     let mut out = Vec::with_capacity(rows.len());
     for (i, (&(vbar, amp, mu_ratio), e)) in rows.iter().zip(exact).enumerate() {
         let exact = e?;
-        out.push(Row {
-            row: i,
-            vbar,
-            amp,
-            mu_ratio,
-            exact,
-            error: mu_ratio - exact,
-        });
+        out.push(Row { row: i, vbar, amp, mu_ratio, exact, error: mu_ratio - exact });
     }
     let n = out.len();
-    let worst = out
-        .iter()
-        .copied()
-        .max_by(|a, b| a.error.abs().total_cmp(&b.error.abs()));
+    let worst = out.iter().copied().max_by(|a, b| a.error.abs().total_cmp(&b.error.abs()));
     let max_abs_error = worst.map_or(0.0, |w| w.error.abs());
-    let rms_error = if n > 0 {
-        (out.iter().map(|r| r.error * r.error).sum::<f64>() / n as f64).sqrt()
-    } else {
-        0.0
-    };
-    Ok(Validation {
-        shape: shape.name(),
-        n,
-        max_abs_error,
-        rms_error,
-        worst,
-        rows: out,
-    })
+    let rms_error = if n > 0 { (out.iter().map(|r| r.error * r.error).sum::<f64>() / n as f64).sqrt() } else { 0.0 };
+    Ok(Validation { shape: shape.name(), n, max_abs_error, rms_error, worst, rows: out })
 }

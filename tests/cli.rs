@@ -27,10 +27,7 @@ fn json(out: &Output) -> serde_json::Value {
 
 #[test]
 fn point_prints_one_json_object() {
-    let v = json(&fricosc(
-        &["point", "--shape", "flat", "--vbar", "0.2", "--amp", "0.5"],
-        None,
-    ));
+    let v = json(&fricosc(&["point", "--shape", "flat", "--vbar", "0.2", "--amp", "0.5"], None));
     assert_eq!(v["shape"], "flat");
     assert_eq!(v["regime"], "permanent_stick_slip");
     assert!((v["mu_ratio"].as_f64().unwrap() - 0.7145191049466343399125).abs() < 1e-15);
@@ -43,18 +40,12 @@ fn point_prints_one_json_object() {
 
 #[test]
 fn table_json_and_csv_agree() {
-    let v = json(&fricosc(
-        &["table", "--shape", "flat", "--amp", "0,0.2,0.4", "--vbar", "0:1.2:121"],
-        None,
-    ));
+    let v = json(&fricosc(&["table", "--shape", "flat", "--amp", "0,0.2,0.4", "--vbar", "0:1.2:121"], None));
     let rows = v["rows"].as_array().unwrap();
     assert_eq!(rows.len(), 363);
     assert_eq!(rows[0]["vbar"], 0.0);
     assert_eq!(rows[362]["vbar"], 1.2);
-    let csv = fricosc(
-        &["table", "--amp", "0,0.2,0.4", "--vbar", "0:1.2:121", "--format", "csv"],
-        None,
-    );
+    let csv = fricosc(&["table", "--amp", "0,0.2,0.4", "--vbar", "0:1.2:121", "--format", "csv"], None);
     let text = String::from_utf8(csv.stdout).unwrap();
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines[0], "shape,vbar,amp,mu_ratio,reduction");
@@ -68,10 +59,7 @@ fn table_json_and_csv_agree() {
 
 #[test]
 fn mdr_point_reports_bands_and_table_accepts_tol() {
-    let v = json(&fricosc(
-        &["point", "--shape", "parabolic", "--vbar", "0.6", "--amp", "1"],
-        None,
-    ));
+    let v = json(&fricosc(&["point", "--shape", "parabolic", "--vbar", "0.6", "--amp", "1"], None));
     assert!((v["mu_ratio"].as_f64().unwrap() - 0.859054694109526657223).abs() < 1e-13);
     let bands = v["bands"].as_array().unwrap();
     let kinds: Vec<&str> = bands.iter().map(|b| b["kind"].as_str().unwrap()).collect();
@@ -79,12 +67,7 @@ fn mdr_point_reports_bands_and_table_accepts_tol() {
     let share: f64 = bands.iter().map(|b| b["normal_share"].as_f64().unwrap()).sum();
     assert!((share - 1.0).abs() < 1e-14);
     assert_eq!(v["mu_static_ratio"], 0.0);
-    let t = json(&fricosc(
-        &[
-            "table", "--shape", "cone", "--amp", "0.5", "--vbar", "0.3", "--tol", "1e-6",
-        ],
-        None,
-    ));
+    let t = json(&fricosc(&["table", "--shape", "cone", "--amp", "0.5", "--vbar", "0.3", "--tol", "1e-6"], None));
     assert!((t["rows"][0]["mu_ratio"].as_f64().unwrap() - 0.6635626779221783060765).abs() < 1e-6);
 }
 
@@ -111,13 +94,7 @@ fn batch_keeps_other_fields_and_order() {
 #[test]
 fn batch_of_a_hundred_thousand_rows() {
     let rows: Vec<String> = (0..100_000)
-        .map(|i| {
-            format!(
-                r#"{{"shape":"flat","vbar":{},"amp":{}}}"#,
-                (i % 120) as f64 / 100.0,
-                (i % 30) as f64 / 10.0
-            )
-        })
+        .map(|i| format!(r#"{{"shape":"flat","vbar":{},"amp":{}}}"#, (i % 120) as f64 / 100.0, (i % 30) as f64 / 10.0))
         .collect();
     let out = fricosc(&["batch"], Some(&format!("[{}]", rows.join(","))));
     assert_eq!(json(&out).as_array().unwrap().len(), 100_000);
@@ -136,76 +113,22 @@ fn bad_input_is_one_line_exit_2_and_no_stdout() {
         (&["point", "--vbar", "abc", "--amp", "1"], None, "not a number"),
         (&["point", "--vhat", "0.1", "--amp", "0"], None, "amp > 0"),
         (&["point", "--vbar", "0.1"], None, "--amp"),
-        (
-            &["point", "--shape", "sphere", "--vbar", "0.1", "--amp", "1"],
-            None,
-            "unknown shape",
-        ),
-        (
-            &["point", "--shape", "power:0", "--vbar", "0.1", "--amp", "1"],
-            None,
-            "must be finite and > 0",
-        ),
-        (
-            &["point", "--shape", "power:-1", "--vbar", "0.1", "--amp", "1"],
-            None,
-            "must be finite and > 0",
-        ),
-        (
-            &["point", "--shape", "power:abc", "--vbar", "0.1", "--amp", "1"],
-            None,
-            "not a number",
-        ),
-        (
-            &[
-                "point",
-                "--shape",
-                "parabolic",
-                "--vbar",
-                "0.1",
-                "--amp",
-                "1",
-                "--tol",
-                "0",
-            ],
-            None,
-            "tol",
-        ),
+        (&["point", "--shape", "sphere", "--vbar", "0.1", "--amp", "1"], None, "unknown shape"),
+        (&["point", "--shape", "power:0", "--vbar", "0.1", "--amp", "1"], None, "must be finite and > 0"),
+        (&["point", "--shape", "power:-1", "--vbar", "0.1", "--amp", "1"], None, "must be finite and > 0"),
+        (&["point", "--shape", "power:abc", "--vbar", "0.1", "--amp", "1"], None, "not a number"),
+        (&["point", "--shape", "parabolic", "--vbar", "0.1", "--amp", "1", "--tol", "0"], None, "tol"),
         (&["table", "--amp", "1", "--vbar", "1:0:3"], None, "below start"),
         (&["table", "--amp", "1", "--vbar", "0:1:0"], None, "count must be >= 1"),
-        (
-            &["table", "--amp", "1", "--vbar", "0:1:1000000000000"],
-            None,
-            "more than the limit",
-        ),
-        (
-            &["table", "--amp", "0:1:100000", "--vbar", "0:1:100000"],
-            None,
-            "more than the limit",
-        ),
+        (&["table", "--amp", "1", "--vbar", "0:1:1000000000000"], None, "more than the limit"),
+        (&["table", "--amp", "0:1:100000", "--vbar", "0:1:100000"], None, "more than the limit"),
         (&["table", "--amp", "1,x", "--vbar", "0"], None, "not a number"),
-        (
-            &["batch"],
-            Some("[{\"shape\":\"flat\",\"vbar\":0.1,\"amp\":1}"),
-            "malformed JSON",
-        ),
+        (&["batch"], Some("[{\"shape\":\"flat\",\"vbar\":0.1,\"amp\":1}"), "malformed JSON"),
         (&["batch"], Some(""), "empty input"),
         (&["batch"], Some("{}"), "JSON array"),
-        (
-            &["batch"],
-            Some("[{\"shape\":\"flat\",\"amp\":1}]"),
-            "missing field 'vbar'",
-        ),
-        (
-            &["batch"],
-            Some("[{\"shape\":\"flat\",\"vbar\":\"0.1\",\"amp\":1}]"),
-            "must be a number",
-        ),
-        (
-            &["batch"],
-            Some("[{\"shape\":1,\"vbar\":0.1,\"amp\":1}]"),
-            "'shape' must be a string",
-        ),
+        (&["batch"], Some("[{\"shape\":\"flat\",\"amp\":1}]"), "missing field 'vbar'"),
+        (&["batch"], Some("[{\"shape\":\"flat\",\"vbar\":\"0.1\",\"amp\":1}]"), "must be a number"),
+        (&["batch"], Some("[{\"shape\":1,\"vbar\":0.1,\"amp\":1}]"), "'shape' must be a string"),
         (
             &["batch"],
             Some("[{\"shape\":\"flat\",\"vbar\":0.1,\"amp\":1},{\"shape\":\"flat\",\"vbar\":-1,\"amp\":1}]"),
@@ -252,17 +175,7 @@ fn stepping_method_for_point_table_and_batch() {
     // First order in 1/M and 1/N: within 1e-2 of the reference at 400 x 400.
     assert!((v["mu_ratio"].as_f64().unwrap() - 0.7661542311590507962135).abs() < 1e-2);
     let t = json(&fricosc(
-        &[
-            "table",
-            "--amp",
-            "0.5",
-            "--vbar",
-            "0.5",
-            "--method",
-            "stepping",
-            "--steps-per-period",
-            "20000",
-        ],
+        &["table", "--amp", "0.5", "--vbar", "0.5", "--method", "stepping", "--steps-per-period", "20000"],
         None,
     ));
     assert!((t["rows"][0]["mu_ratio"].as_f64().unwrap() - 0.8992738983331656556021).abs() < 1e-7);
@@ -305,16 +218,10 @@ fn validate_exit_codes_0_within_1_exceeded_2_bad_input() {
     assert_eq!(v["worst"]["error"].as_f64().unwrap().abs(), max);
     let exceeded = fricosc(&["validate", "--shape", "flat", f, "--max-error", "1e-9"], None);
     assert_eq!(exceeded.status.code(), Some(1));
-    assert!(
-        !exceeded.stdout.is_empty(),
-        "the comparison is printed also when it fails"
-    );
+    assert!(!exceeded.stdout.is_empty(), "the comparison is printed also when it fails");
     // The exact table validates to rounding; JSON input from stdin.
     let exact = fricosc(&["table", "--amp", "0.5,1.5", "--vbar", "0.1:0.9:5"], None);
-    let ok = fricosc(
-        &["validate", "-", "--max-error", "0"],
-        Some(std::str::from_utf8(&exact.stdout).unwrap()),
-    );
+    let ok = fricosc(&["validate", "-", "--max-error", "0"], Some(std::str::from_utf8(&exact.stdout).unwrap()));
     assert_eq!(ok.status.code(), Some(0), "{}", String::from_utf8_lossy(&ok.stderr));
     for (stdin, frag) in [
         ("vbar,amp\n0.1,0.5\n", "lacks column 'mu_ratio'"),
@@ -324,11 +231,7 @@ fn validate_exit_codes_0_within_1_exceeded_2_bad_input() {
         let bad = fricosc(&["validate", "-"], Some(stdin));
         assert_eq!(bad.status.code(), Some(2));
         assert!(bad.stdout.is_empty());
-        assert!(
-            String::from_utf8_lossy(&bad.stderr).contains(frag),
-            "{}",
-            String::from_utf8_lossy(&bad.stderr)
-        );
+        assert!(String::from_utf8_lossy(&bad.stderr).contains(frag), "{}", String::from_utf8_lossy(&bad.stderr));
     }
 }
 
@@ -343,15 +246,56 @@ fn quick_bench_writes_json_csv_and_svg_without_failures() {
     assert_eq!(report["ratios"].as_array().unwrap().len(), 3);
     for r in report["ratios"].as_array().unwrap() {
         assert!(r["exact_error"].as_f64().unwrap() <= 1e-13);
-        assert!(
-            r["time_ratio"].as_f64().unwrap() > 1.0,
-            "stepping beat the exact solver: {r}"
-        );
+        assert!(r["time_ratio"].as_f64().unwrap() > 1.0, "stepping beat the exact solver: {r}");
     }
-    assert!(std::fs::read_to_string(dir.join("work-precision.svg"))
-        .unwrap()
-        .starts_with("<svg"));
+    assert!(std::fs::read_to_string(dir.join("work-precision.svg")).unwrap().starts_with("<svg"));
     assert!(std::fs::read_to_string(dir.join("work-precision.csv"))
         .unwrap()
         .starts_with("case,method,setting,error,time_s"));
+}
+
+#[test]
+fn tabulated_shapes_from_the_command_line_and_their_bad_inputs() {
+    let dir = std::env::temp_dir().join(format!("fricosc-cli-tab-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = dir.join("paraboloid.csv");
+    let rows: String = (0..101)
+        .map(|i| {
+            let r = i as f64 * 0.04;
+            format!("{r},{}\n", r * r / 2.0)
+        })
+        .collect();
+    std::fs::write(&good, format!("r,f\n{rows}")).unwrap();
+    let spec = format!("profile:{}@1", good.display());
+    let v = json(&fricosc(&["point", "--shape", &spec, "--vbar", "0.3", "--amp", "0.4"], None));
+    assert!((v["mu_ratio"].as_f64().unwrap() - 0.7661542311590507962135).abs() < 1e-12, "{v}");
+    assert!(v["interpolation_error"].as_f64().unwrap() < 1e-12);
+    let bad = |name: &str, text: Option<&str>| {
+        let p = dir.join(name);
+        if let Some(t) = text {
+            std::fs::write(&p, t).unwrap();
+        }
+        format!("profile:{}@1", p.display())
+    };
+    let cases = [
+        (bad("nonmono.csv", Some("0,0\n1,2\n2,1\n")), "must not decrease"),
+        (bad("inf.csv", Some("0,0\n1,inf\n2,3\n")), "finite"),
+        (bad("empty.csv", Some("")), "at least 3 rows"),
+        (bad("missing.csv", None), "cannot read"),
+        (format!("profile:{}@1", dir.display()), "cannot read"),
+        (format!("profile:{}", good.display()), "mean indentation"),
+        (format!("profile:{}@20", good.display()), "wider than the table"),
+    ];
+    for (spec, frag) in cases {
+        let out = fricosc(&["point", "--shape", &spec, "--vbar", "0.3", "--amp", "0.4"], None);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{spec}: {err}");
+        assert!(out.stdout.is_empty());
+        assert_eq!(err.trim_end().lines().count(), 1);
+        assert!(err.contains(frag), "{spec}: '{err}' lacks '{frag}'");
+    }
+    // The table must reach the contact edge at the requested amplitude.
+    let out = fricosc(&["point", "--shape", &spec, "--vbar", "0.3", "--amp", "20"], None);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("before the contact edge"));
 }

@@ -28,11 +28,7 @@ fn reduction_keeps_full_relative_accuracy_down_to_1_minus_vbar_1e_12() {
     for (amp, v, red) in NEAR_CRITICAL {
         let r = ratio(v, amp).unwrap();
         let rel = (r.reduction - red).abs() / red;
-        assert!(
-            rel <= tol::REDUCTION_REL,
-            "amp={amp} vbar={v}: {} vs {red} (rel {rel:e})",
-            r.reduction
-        );
+        assert!(rel <= tol::REDUCTION_REL, "amp={amp} vbar={v}: {} vs {red} (rel {rel:e})", r.reduction);
         // mu_ratio itself is 1 - reduction to rounding.
         assert!((r.mu_ratio - (1.0 - red)).abs() <= f64::EPSILON);
     }
@@ -60,10 +56,7 @@ fn zero_velocity_limit_is_1_minus_amp_without_contact_loss_and_0_with_it() {
         assert!((mu(0.0, a) - (1.0 - a)).abs() <= tol::FLAT_ABS, "a = {a}");
         // Approach: mu = 1 - a + a pi vbar + O(vbar^{3/2}) (eq. 12's first terms).
         let v = 1e-10;
-        assert!(
-            (mu(v, a) - (1.0 - a + a * PI * v)).abs() < 10.0 * v.powf(1.5) + 1e-15,
-            "a = {a}"
-        );
+        assert!((mu(v, a) - (1.0 - a + a * PI * v)).abs() < 10.0 * v.powf(1.5) + 1e-15, "a = {a}");
     }
     for a in [1.0 + 1e-12, 1.5, 2.0, 10.0, 1e300] {
         assert!(mu(0.0, a).abs() <= tol::FLAT_ABS, "a = {a}: {}", mu(0.0, a));
@@ -144,14 +137,9 @@ fn continuous_at_the_critical_velocity() {
 
 #[test]
 fn bad_parameters_are_errors_not_panics() {
-    for (v, a) in [
-        (f64::NAN, 0.5),
-        (0.5, f64::NAN),
-        (f64::INFINITY, 0.5),
-        (0.5, f64::INFINITY),
-        (-0.1, 0.5),
-        (0.5, -1e-300),
-    ] {
+    for (v, a) in
+        [(f64::NAN, 0.5), (0.5, f64::NAN), (f64::INFINITY, 0.5), (0.5, f64::INFINITY), (-0.1, 0.5), (0.5, -1e-300)]
+    {
         assert!(ratio(v, a).is_err(), "v={v} a={a}");
         assert!(fricosc::flat::point(v, a).is_err());
     }
@@ -172,22 +160,14 @@ fn events_are_on_the_bound_and_in_order() {
     }
     // Stick from contact: contact, stick at the same phase, slip, loss.
     let kinds = |v: f64, a: f64| -> Vec<String> {
-        fricosc::flat::point(v, a)
-            .unwrap()
-            .events
-            .iter()
-            .map(|e| format!("{:?}", e.kind))
-            .collect()
+        fricosc::flat::point(v, a).unwrap().events.iter().map(|e| format!("{:?}", e.kind)).collect()
     };
     assert_eq!(kinds(0.3, 1.5), ["Contact", "Stick", "Slip", "LossOfContact"]);
     // Slip first (s = 0.5 >= sqrt(1 - 0.95^2) = 0.31): contact, (slip), stick, slip, loss.
     assert_eq!(kinds(0.95, 2.0), ["Contact", "Stick", "Slip", "LossOfContact"]);
     let p = fricosc::flat::point(0.95, 2.0).unwrap();
     assert_eq!(format!("{:?}", p.regime), "JumpingSlipFirst");
-    assert!(
-        p.events[1].tau > p.events[0].tau + 0.1,
-        "the stick starts after a slip phase"
-    );
+    assert!(p.events[1].tau > p.events[0].tau + 0.1, "the stick starts after a slip phase");
 }
 
 #[test]

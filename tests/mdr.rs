@@ -11,13 +11,7 @@ fn parabolic_and_cone_references_to_1e_13_within_the_error_estimate() {
         let shape = Shape::parse(&c.shape).unwrap();
         let e = evaluate(&shape, c.vbar, c.amp).unwrap();
         let err = (e.ratio.mu_ratio - c.mu_ratio).abs();
-        assert!(
-            err <= tol::MDR_ABS,
-            "{} vbar={} amp={}: err {err:e}",
-            c.shape,
-            c.vbar,
-            c.amp
-        );
+        assert!(err <= tol::MDR_ABS, "{} vbar={} amp={}: err {err:e}", c.shape, c.vbar, c.amp);
         assert!(
             err <= e.error_estimate,
             "{} vbar={} amp={}: err {err:e} > estimate {:e}",
@@ -60,13 +54,7 @@ fn steep_power_laws_approach_the_flat_punch_like_1_over_n() {
 /// the spring spacing and the time step once springs lose contact.
 #[test]
 fn time_stepping_agrees_in_every_regime() {
-    for (n, v, a) in [
-        (2.0, 0.3, 0.4),
-        (2.0, 0.6, 1.0),
-        (2.0, 0.3, 1.6),
-        (1.0, 0.5, 2.0),
-        (2.0, 1.1, 1.5),
-    ] {
+    for (n, v, a) in [(2.0, 0.3, 0.4), (2.0, 0.6, 1.0), (2.0, 0.3, 1.6), (1.0, 0.5, 2.0), (2.0, 1.1, 1.5)] {
         let exact = power_law(n, v, a, DEFAULT_TOL, false).ratio.mu_ratio;
         let mut errs = vec![];
         for k in [1000usize, 4000] {
@@ -77,10 +65,7 @@ fn time_stepping_agrees_in_every_regime() {
             errs.push((run.mu_ratio() - exact).abs());
         }
         assert!(errs[1] <= 1.0 / 4000.0, "n={n} v={v} a={a}: {errs:?}");
-        assert!(
-            errs[1] <= 0.5 * errs[0] || errs[1] < 1e-12,
-            "n={n} v={v} a={a}: not converging {errs:?}"
-        );
+        assert!(errs[1] <= 0.5 * errs[0] || errs[1] < 1e-12, "n={n} v={v} a={a}: not converging {errs:?}");
     }
 }
 
@@ -89,18 +74,9 @@ fn looser_tolerance_does_less_work_within_its_estimate() {
     for (n, v, a) in [(2.0, 0.05, 0.5), (1.5, 0.3, 0.4), (2.5, 0.2, 1.5), (1.0, 0.01, 2.0)] {
         let fine = power_law(n, v, a, DEFAULT_TOL, false);
         let loose = power_law(n, v, a, 1e-6, false);
-        assert!(
-            loose.nodes < fine.nodes,
-            "n={n} v={v} a={a}: {} vs {}",
-            loose.nodes,
-            fine.nodes
-        );
+        assert!(loose.nodes < fine.nodes, "n={n} v={v} a={a}: {} vs {}", loose.nodes, fine.nodes);
         let err = (loose.ratio.mu_ratio - fine.ratio.mu_ratio).abs();
-        assert!(
-            err <= loose.error_estimate,
-            "n={n} v={v} a={a}: err {err:e} > estimate {:e}",
-            loose.error_estimate
-        );
+        assert!(err <= loose.error_estimate, "n={n} v={v} a={a}: err {err:e} > estimate {:e}", loose.error_estimate);
     }
 }
 
@@ -111,11 +87,7 @@ fn limits_of_amplitude_and_velocity() {
         assert_eq!(power_law(n, 0.4, 0.0, DEFAULT_TOL, false).ratio.mu_ratio, 1.0);
         for v in [1.0, 1.5] {
             let r = power_law(n, v, 0.7, DEFAULT_TOL, false);
-            assert_eq!(
-                (r.ratio.mu_ratio, r.nodes),
-                (1.0, 0),
-                "vbar >= 1 needs no spring computation"
-            );
+            assert_eq!((r.ratio.mu_ratio, r.nodes), (1.0, 0), "vbar >= 1 needs no spring computation");
         }
         // Static limit: minimum over mean normal force; 0 once the centre loses contact.
         assert!(power_law(n, 0.0, 1.5, DEFAULT_TOL, false).ratio.mu_ratio.abs() < 1e-15);
@@ -157,20 +129,7 @@ mod mdr_ref;
 /// estimate bounds the difference (up to the reference's own accuracy).
 #[test]
 fn agrees_with_an_independent_quadrature_on_a_grid_and_the_estimate_bounds_the_error() {
-    let vbars = [
-        0.0,
-        1e-6,
-        0.05,
-        0.2,
-        0.45,
-        0.7,
-        0.9,
-        0.99,
-        1.0 - 1e-6,
-        1.0 - 1e-12,
-        1.0,
-        1.2,
-    ];
+    let vbars = [0.0, 1e-6, 0.05, 0.2, 0.45, 0.7, 0.9, 0.99, 1.0 - 1e-6, 1.0 - 1e-12, 1.0, 1.2];
     let amps = [0.0, 0.1, 0.5, 0.9, 0.999, 1.0, 1.001, 1.3, 2.0, 4.0, 10.0];
     let mut worst: f64 = 0.0;
     for n in [1.0, 2.0, 1.5, 3.0] {
@@ -180,10 +139,7 @@ fn agrees_with_an_independent_quadrature_on_a_grid_and_the_estimate_bounds_the_e
                 let (reference, ref_acc) = mdr_ref::mu_ratio(n, v, a);
                 let err = (r.ratio.mu_ratio - reference).abs();
                 worst = worst.max(err);
-                assert!(
-                    err <= tol::MDR_ABS,
-                    "n={n} v={v} a={a}: err {err:e} (reference accuracy {ref_acc:e})"
-                );
+                assert!(err <= tol::MDR_ABS, "n={n} v={v} a={a}: err {err:e} (reference accuracy {ref_acc:e})");
                 assert!(
                     err <= r.error_estimate + ref_acc,
                     "n={n} v={v} a={a}: err {err:e} > estimate {:e}",

@@ -7,10 +7,7 @@ fn the_copy_in_data_equals_shared_when_present() {
     let shared = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/reference-values.json");
     if let Ok(text) = std::fs::read_to_string(shared) {
         let ours = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/reference-values.json")).unwrap();
-        assert_eq!(
-            text, ours,
-            "data/reference-values.json is stale: copy shared/reference-values.json"
-        );
+        assert_eq!(text, ours, "data/reference-values.json is stale: copy shared/reference-values.json");
     }
 }
 
@@ -30,12 +27,7 @@ fn flat_cases_match_to_1e_14() {
         );
         if c.reduction > 0.0 {
             let rel = (r.reduction - c.reduction).abs() / c.reduction;
-            assert!(
-                rel <= 1e-13,
-                "reduction rel err {rel:e} at vbar={} amp={}",
-                c.vbar,
-                c.amp
-            );
+            assert!(rel <= 1e-13, "reduction rel err {rel:e} at vbar={} amp={}", c.vbar, c.amp);
         } else {
             assert_eq!(r.reduction, 0.0);
         }
