@@ -18,4 +18,7 @@ emit data/flat-fig5.csv $B table --shape flat --amp 1:2:11 --vbar 0:1.2:13 --for
 emit data/parabolic-fig7.csv $B table --shape parabolic --amp 0,0.2,0.4,0.6,0.8,1.0 --vbar 0:1.2:13 --format csv
 emit data/point-flat.json $B point --shape flat --vbar 0.3 --amp 1.5
 emit data/point-parabolic.json $B point --shape parabolic --vbar 0.6 --amp 1
+emit data/stepped-flat.csv $B table --shape flat --amp 0.5,1.5 --vbar 0.1:0.9:3 --method stepping --steps-per-period 1000 --format csv
+emit data/stepped-flat-validation.json $B validate --shape flat data/stepped-flat.csv --max-error 1e-3
+emit data/point-sphere.json $B point --shape profile:data/profiles/sphere.csv@1e-6 --vbar 0.3 --amp 0.4
 echo "data/ is up to date"

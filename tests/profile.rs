@@ -111,3 +111,16 @@ fn bad_tables_are_errors() {
     assert!(Shape::parse("profile:/@1").unwrap_err().to_string().contains("cannot read"));
     assert!(Shape::parse("gx:x.csv@-1").is_err());
 }
+
+#[test]
+fn transform_of_a_sphere_tends_to_hertz_at_small_depth() {
+    // f = R - sqrt(R^2 - r^2); Hertz holds as d/R -> 0, the deviation is O(d/R).
+    let radius = 1.0f64;
+    let r: Vec<f64> = grid(600, 0.1).collect();
+    let f = Pchip::new(r.clone(), r.iter().map(|x| radius - (radius * radius - x * x).sqrt()).collect());
+    let g = Pchip::new(r.clone(), r.iter().map(|&x| mdr_transform(&f, x)).collect());
+    let dev = |d: f64| normal_force(&g, d) / (4.0 / 3.0 * radius.sqrt() * d * d.sqrt()) - 1.0;
+    let (d1, d2) = (dev(1e-3), dev(1e-4));
+    assert!(d1.abs() < 2e-3 && d2.abs() < 2e-4, "{d1:e} {d2:e}");
+    assert!((d1 / d2 - 10.0).abs() < 0.5, "not O(d/R): {d1:e} {d2:e}");
+}
