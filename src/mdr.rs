@@ -158,7 +158,8 @@ impl Contact {
     /// `y = 1 - amp sin(beta)` without cancellation near its zero.
     fn y(&self, beta: f64) -> f64 {
         if self.amp > 1.0 {
-            2.0 * self.amp * (0.5 * (self.beta_star + beta)).cos() * (0.5 * (self.beta_star - beta)).sin()
+            // Scaled: y / amp = sin(beta*) - sin(beta).
+            2.0 * (0.5 * (self.beta_star + beta)).cos() * (0.5 * (self.beta_star - beta)).sin()
         } else {
             let h = (0.5 * (FRAC_PI_2 - beta)).sin();
             (1.0 - self.amp) + 2.0 * self.amp * h * h
@@ -175,7 +176,7 @@ impl Contact {
         } else if self.amp * sin_beta > 0.5 {
             self.y(beta)
         } else {
-            1.0 - self.amp * sin_beta
+            1.0 / self.amp - sin_beta
         }
     }
 
@@ -193,12 +194,13 @@ impl Contact {
     /// The Jacobian `dz/dbeta = (amp/n) y^gamma cos(beta)`, divided by the weight
     /// of `top`; `d` is the distance of `beta` from the top.
     fn jacobian(&self, beta: f64, sin_beta: f64, cos_beta: f64, d: f64, top: Top) -> f64 {
-        let k = self.amp / self.n;
+        // amp > 1 works in scaled units (see `power_law`): the factor amp^(1/n) is dropped.
+        let k = if self.amp > 1.0 { 1.0 / self.n } else { self.amp / self.n };
         match top {
             Top::Regular => k * self.y_pow(self.y_sin_cos(beta, sin_beta, cos_beta)) * cos_beta,
             Top::Centre => {
                 // y / d = 2 amp cos((beta* + beta)/2) sin(d/2)/d.
-                let ratio = 2.0 * self.amp * (0.5 * (self.beta_star + beta)).cos() * (0.5 * d).sin() / d;
+                let ratio = 2.0 * (0.5 * (self.beta_star + beta)).cos() * (0.5 * d).sin() / d;
                 k * ratio.powf(self.gamma) * cos_beta
             }
             Top::CentreCritical => {
@@ -241,7 +243,8 @@ impl Contact {
             sn += jac * b;
             sd += jac * dd;
         }
-        let scale = self.amp * h.powf(e + 1.0);
+        let width = if e == 0.0 { h } else { h.powf(e + 1.0) };
+        let scale = if self.amp > 1.0 { width } else { self.amp * width };
         (scale * sn, scale * sd)
     }
 
@@ -376,16 +379,18 @@ fn elliptic_ke(m: f64, m1: f64) -> (f64, f64) {
 /// force at indentation `c` is `c^(1+1/n) n/(n+1)`), elementary for the cone and
 /// complete elliptic integrals for the paraboloid (with `m = 2 amp/(1 + amp)`:
 /// `int_0^(pi/2) (1 - m sin^2)^(3/2) = (2(2 - m)E - (1 - m)K)/3`, and for `m > 1`
-/// the reciprocal-modulus form `int cos^4 / sqrt(1 - sin^2/m)`).
+/// the reciprocal-modulus form `int cos^4 / sqrt(1 - sin^2/m)`). For `amp > 1`
+/// the value is divided by `amp^(1 + 1/n)`, as everything in `power_law`.
 fn total_normal(n: f64, amp: f64) -> Option<f64> {
     let a = amp;
     if n == 1.0 {
         let i = if a <= 1.0 {
             PI * (1.0 + 0.5 * a * a)
         } else {
+            // Scaled by 1/amp^2 (see `power_law`).
             let t0 = (1.0 / a).acos();
             let r = PI - t0;
-            r + 2.0 * a * t0.sin() + a * a * (0.5 * r - 0.25 * (2.0 * t0).sin())
+            r / (a * a) + 2.0 * t0.sin() / a + (0.5 * r - 0.25 * (2.0 * t0).sin())
         };
         Some(0.5 * i / PI)
     } else if n == 2.0 {
@@ -401,7 +406,8 @@ fn total_normal(n: f64, amp: f64) -> Option<f64> {
             let (k, e) = elliptic_ke(mp, mp1);
             // int_0^(pi/2) cos^4/sqrt(1 - mp sin^2) = ((3mp - 2)(mp - 1) K + (4mp - 2) E)/(3 mp^2).
             let j = ((3.0 * mp - 2.0) * (-mp1) * k + (4.0 * mp - 2.0) * e) / (3.0 * mp * mp);
-            2.0 * (1.0 + a).powf(1.5) * j * mp.sqrt()
+            // Scaled by 1/amp^(3/2) (see `power_law`).
+            2.0 * (1.0 + 1.0 / a).powf(1.5) * j * mp.sqrt()
         };
         Some(2.0 / 3.0 * i / PI)
     } else {
@@ -417,6 +423,11 @@ fn total_normal(n: f64, amp: f64) -> Option<f64> {
 /// that `amp -> 0` stays finite.
 pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResult {
     let tol = tol.max(DEFAULT_TOL);
+    // For amp > 1 every integral is computed divided by amp^(1 + 1/n) (in
+    // `y/amp`), so that huge amplitudes and small exponents cannot overflow; the
+    // ratio is unaffected, and the reported normal force is scaled back.
+    let big = amp > 1.0;
+    let unscale = |x: f64| if big { x * amp.powf(1.0 + 1.0 / n) } else { x };
     let unit = |mean_normal: Option<f64>| MdrResult {
         ratio: Ratio { mu_ratio: 1.0, reduction: 0.0 },
         error_estimate: 0.0,
@@ -428,7 +439,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
         return unit(Some(n / (n + 1.0)));
     }
     if vbar >= 1.0 && !bands {
-        return unit(total_normal(n, amp));
+        return unit(total_normal(n, amp).map(|x| unscale(x)).filter(|x| x.is_finite()));
     }
     let vel = (vbar < 1.0).then(|| Velocity::new(vbar));
     let alpha = vel.map_or(0.0, |v| v.alpha);
@@ -445,7 +456,8 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     let d_perm = vel.map_or(0.0, |_| Spring::new(f64::MAX, vbar).deficit);
     let z_of_s = |s: f64| (1.0 - amp * s).clamp(0.0, 1.0 + amp).powf(1.0 / n);
     // Band edges from beta: y(beta) is cancellation-free where 1 - amp sqrt(1 - vbar^2) is not.
-    let z_of_beta = |b: f64| contact.y(b).max(0.0).powf(1.0 / n);
+    let z_scale = if big { amp.powf(1.0 / n) } else { 1.0 };
+    let z_of_beta = |b: f64| z_scale * contact.y(b).max(0.0).powf(1.0 / n);
 
     // Permanent contact (amp < 1): int_0^{z1} amp s dz = z1 - z1^(n+1)/(n+1).
     let z1 = z_of_s(1.0);
@@ -472,7 +484,8 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
         Some(_) => Sums::default(),
         None => contact.band(sf_lo, beta_star, top_of(beta_star), false, (inf, inf), scale1),
     };
-    slip_first.deficit = amp * d_perm * (z_of_beta(sf_lo) - z1);
+    slip_first.deficit =
+        if big { d_perm * contact.y(sf_lo).max(0.0).powf(1.0 / n) } else { amp * d_perm * (z_of_beta(sf_lo) - z1) };
     let scale2 = (scale1.0 + slip_first.normal, scale1.1 + slip_first.deficit);
     // Slip only: beta in [-pi/2, -alpha].
     let slip_only = match closed {
@@ -519,7 +532,8 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     } else {
         vec![]
     };
-    MdrResult { ratio, error_estimate, mean_normal: Some(nn), bands: band_list, nodes: total.nodes }
+    let mean_normal = Some(unscale(nn)).filter(|x| x.is_finite());
+    MdrResult { ratio, error_estimate, mean_normal, bands: band_list, nodes: total.nodes }
 }
 
 /// A full MDR point: the result plus the static limit, for `fricosc point`.
