@@ -38,4 +38,5 @@ pub mod output;
 pub mod profile;
 pub mod quad;
 pub mod shape;
+pub mod stress;
 pub mod validate;

@@ -47,6 +47,15 @@ enum Command {
         #[arg(long)]
         quick: bool,
     },
+    /// Stress test: many random and edge points; exit 1 if any check fails.
+    Stress {
+        /// Points (rounded up to whole lines of 16).
+        #[arg(long, default_value_t = 1_000_000)]
+        points: usize,
+        /// Seed of the point generator.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+    },
     Batch {
         /// Input file; stdin when absent or '-'.
         file: Option<String>,
@@ -335,6 +344,22 @@ fn main() -> ExitCode {
         Command::Point(a) => point(a),
         Command::Table(a) => table(a),
         Command::Bench { out, quick } => run_bench(&out, quick),
+        Command::Stress { points, seed } => {
+            if points > 100_000_000 {
+                Err(Error::TooLarge { what: "stress run".into(), count: points as u128, limit: 100_000_000 })
+            } else {
+                let r = fricosc::stress::run(points, seed, &fricosc::stress::default_shapes());
+                let ok = r.failure_count == 0;
+                match serde_json::to_string_pretty(&r) {
+                    Ok(t) => println!("{t}"),
+                    Err(e) => eprintln!("error: {e}"),
+                }
+                if !ok {
+                    return ExitCode::from(1);
+                }
+                Ok(())
+            }
+        }
         Command::Batch { file, method } => run_batch(file, method.stepping()),
         Command::Validate { shape, file, max_error } => match run_validate(&shape, file, max_error) {
             Ok(true) => Ok(()),

@@ -58,8 +58,11 @@ pub const DEFAULT_TOL: f64 = 4e-15;
 /// Rounding floor added to every error estimate: sums of a few hundred terms and
 /// the Golub-Welsch weights (relative accuracy ~1e-15) keep about 1e-14 absolute.
 const ROUNDING_FLOOR: f64 = 1e-14;
-/// A singularity closer to a band end than this fraction of the band's width is graded.
+/// A singularity of the stick-first means closer to a band end than this
+/// fraction of the band's width is graded.
 const GRADE_RATIO: f64 = 0.0625;
+/// The Jacobian's branch point is graded until this fraction of the width.
+const JACOBIAN_GRADE_RATIO: f64 = 0.25;
 /// Most pieces one band is split into (half from each end).
 const MAX_PIECES: usize = 100;
 
@@ -147,36 +150,41 @@ struct Contact {
     amp: f64,
     /// `1/n - 1`, the exponent of `y` in the Jacobian.
     gamma: f64,
-    /// `arcsin(1/amp)` for `amp > 1`.
-    beta_star: f64,
+    /// `u* = pi/2 - arcsin(1/amp)` for `amp > 1` (where `y = 0`), else 0.
+    u_star: f64,
     /// Velocity constants when `vbar < 1`.
     vel: Option<Velocity>,
     tol: f64,
 }
 
+/// Nodes are placed in `u = pi/2 - beta`, the angular distance from the
+/// contact centre's threshold `s = 1`: near the centre (`amp` near 1, or
+/// `vbar` near 0) the distances that matter are tiny, and `u` resolves them
+/// where `beta` near `pi/2` would round them away (`cos` of an angle near
+/// `pi/2` keeps only the absolute accuracy of the angle).
 impl Contact {
-    /// `y = 1 - amp sin(beta)` without cancellation near its zero.
-    fn y(&self, beta: f64) -> f64 {
+    /// `y = 1 - amp sin(beta) = 1 - amp cos(u)` without cancellation; for
+    /// `amp > 1` scaled by `1/amp`: `cos(u*) - cos(u) = 2 sin((u + u*)/2) sin((u - u*)/2)`.
+    fn y(&self, u: f64) -> f64 {
         if self.amp > 1.0 {
-            // Scaled: y / amp = sin(beta*) - sin(beta).
-            2.0 * (0.5 * (self.beta_star + beta)).cos() * (0.5 * (self.beta_star - beta)).sin()
+            2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * (u - self.u_star)).sin()
         } else {
-            let h = (0.5 * (FRAC_PI_2 - beta)).sin();
+            let h = (0.5 * u).sin();
             (1.0 - self.amp) + 2.0 * self.amp * h * h
         }
     }
 
-    /// [`Contact::y`] from `sin(beta)`, `cos(beta)`: `1 - amp sin(beta)`, rewritten
-    /// where it would cancel (`amp <= 1`: `1 - sin = cos^2/(1 + sin)`; `amp > 1`
-    /// near the centre: the product form of [`Contact::y`]).
-    fn y_sin_cos(&self, beta: f64, sin_beta: f64, cos_beta: f64) -> f64 {
+    /// [`Contact::y`] given `sin(u)`, `cos(u)` (no further trigonometry where it
+    /// does not cancel): `amp <= 1`: `1 - cos u = sin^2 u / (1 + cos u)`;
+    /// `amp > 1` away from `u*`: `1/amp - cos u`.
+    fn y_sc(&self, u: f64, sin_u: f64, cos_u: f64) -> f64 {
         if self.amp <= 1.0 {
-            let one_minus_s = if sin_beta > 0.0 { cos_beta * cos_beta / (1.0 + sin_beta) } else { 1.0 - sin_beta };
-            (1.0 - self.amp) + self.amp * one_minus_s
-        } else if self.amp * sin_beta > 0.5 {
-            self.y(beta)
+            let one_minus_c = if cos_u > 0.0 { sin_u * sin_u / (1.0 + cos_u) } else { 1.0 - cos_u };
+            (1.0 - self.amp) + self.amp * one_minus_c
+        } else if self.amp * cos_u > 0.5 {
+            self.y(u)
         } else {
-            1.0 / self.amp - sin_beta
+            1.0 / self.amp - cos_u
         }
     }
 
@@ -191,27 +199,27 @@ impl Contact {
         }
     }
 
-    /// The Jacobian `dz/dbeta = (amp/n) y^gamma cos(beta)`, divided by the weight
-    /// of `top`; `d` is the distance of `beta` from the top.
-    fn jacobian(&self, beta: f64, sin_beta: f64, cos_beta: f64, d: f64, top: Top) -> f64 {
-        // amp > 1 works in scaled units (see `power_law`): the factor amp^(1/n) is dropped.
+    /// The Jacobian `|dz/du| = (amp/n) y^gamma sin(u)` (for `amp > 1` in scaled
+    /// units, see `power_law`), divided by the weight of `top`; `d` is the
+    /// distance of `u` from the top of the piece.
+    fn jacobian(&self, u: f64, sin_u: f64, cos_u: f64, d: f64, top: Top) -> f64 {
         let k = if self.amp > 1.0 { 1.0 / self.n } else { self.amp / self.n };
         match top {
-            Top::Regular => k * self.y_pow(self.y_sin_cos(beta, sin_beta, cos_beta)) * cos_beta,
+            Top::Regular => k * self.y_pow(self.y_sc(u, sin_u, cos_u)) * sin_u,
             Top::Centre => {
-                // y / d = 2 amp cos((beta* + beta)/2) sin(d/2)/d.
-                let ratio = 2.0 * (0.5 * (self.beta_star + beta)).cos() * (0.5 * d).sin() / d;
-                k * ratio.powf(self.gamma) * cos_beta
+                // Top at u*: y / d = 2 sin((u + u*)/2) sin(d/2)/d.
+                let ratio = 2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * d).sin() / d;
+                k * ratio.powf(self.gamma) * sin_u
             }
             Top::CentreCritical => {
-                // amp = 1, u = pi/2 - beta = d: y/u^2 = 2 (sin(u/2)/u)^2, cos(beta)/u = sin(u)/u.
+                // amp = 1, top at u = 0 (u = d): y/u^2 = 2 (sin(u/2)/u)^2, sin(u)/u.
                 let q = (0.5 * d).sin() / d;
                 k * (2.0 * q * q).powf(self.gamma) * (d.sin() / d)
             }
         }
     }
 
-    /// Exponent of the weight `(top - beta)^e` of `top`.
+    /// Exponent of the weight `(u - top)^e` of `top`.
     fn weight_exponent(&self, top: Top) -> f64 {
         match top {
             Top::Regular => 0.0,
@@ -221,21 +229,24 @@ impl Contact {
     }
 
     /// Order-`m` Gauss(-Jacobi) sums `(int amp <B> dz, int amp D dz)` over
-    /// `[lo, hi]` with the weight of `top` at `hi`. (Starting Newton from the
-    /// neighbouring node's stick length was tried: it costs 10 % more instructions
-    /// than the fitted guess, the nodes of a low order being far apart.)
-    fn pass(&self, lo: f64, hi: f64, top: Top, stick: bool, m: usize) -> (f64, f64) {
-        let e = self.weight_exponent(top);
+    /// `u` in `[top, bottom]` with the weight of `kind` at the top. (Starting
+    /// Newton from the neighbouring node's stick length was tried: it costs 10 %
+    /// more instructions than the fitted guess, the nodes of a low order being
+    /// far apart.)
+    fn pass(&self, top: f64, bottom: f64, kind: Top, stick: bool, m: usize) -> (f64, f64) {
+        let e = self.weight_exponent(kind);
         let r = quad::rule(m, e);
-        let h = 0.5 * (hi - lo);
+        let h = 0.5 * (bottom - top);
         let (mut sn, mut sd) = (0.0, 0.0);
         for (&x, &w) in r.nodes.iter().zip(&r.weights) {
-            // x = -1 at the top: beta = hi - h (1 + x).
+            // x = -1 at the top.
             let d = h * (1.0 + x);
-            let beta = hi - d;
-            let (sb, cb) = beta.sin_cos();
-            let jac = w * self.jacobian(beta, sb, cb, d, top);
-            let b = mean_normal_sin_cos(beta, sb, cb);
+            let u = top + d;
+            let beta = FRAC_PI_2 - u;
+            let (su, cu) = u.sin_cos();
+            let jac = w * self.jacobian(u, su, cu, d, kind);
+            // sin(beta) = cos(u), cos(beta) = sin(u).
+            let b = mean_normal_sin_cos(beta, cu, su);
             let dd = match (stick, &self.vel) {
                 (true, Some(vel)) => vel.stick_first_deficit(beta),
                 _ => 0.0,
@@ -250,22 +261,22 @@ impl Contact {
 
     /// One piece at increasing orders, until the predicted error is within the
     /// tolerance relative to the piece plus `scale` (the band's sums so far).
-    fn piece(&self, lo: f64, hi: f64, top: Top, stick: bool, scale: (f64, f64)) -> Sums {
+    fn piece(&self, top: f64, bottom: f64, kind: Top, stick: bool, scale: (f64, f64)) -> Sums {
         let mut m = if self.tol >= LOOSE_TOL { 2 } else { MIN_ORDER };
-        let q0 = self.pass(lo, hi, top, stick, m);
-        let q1 = self.pass(lo, hi, top, stick, 2 * m);
+        let q0 = self.pass(top, bottom, kind, stick, m);
+        let q1 = self.pass(top, bottom, kind, stick, 2 * m);
         let mut nodes = 3 * m;
         let (mut prev_d, mut cur) = (((q1.0 - q0.0).abs(), (q1.1 - q0.1).abs()), q1);
-        // A loose tolerance may already be met by the plain difference of the first two orders.
         let within = |en: f64, ed: f64, q: (f64, f64)| {
             en <= self.tol * (q.0.abs() + scale.0) && ed <= self.tol * (q.1.abs() + scale.1)
         };
+        // A loose tolerance may already be met by the plain difference of the first two orders.
         if within(prev_d.0, prev_d.1, q1) {
             return Sums { normal: q1.0, deficit: q1.1, err_normal: prev_d.0, err_deficit: prev_d.1, nodes };
         }
         loop {
             m *= 2;
-            let next = self.pass(lo, hi, top, stick, 2 * m);
+            let next = self.pass(top, bottom, kind, stick, 2 * m);
             nodes += 2 * m;
             let d = ((next.0 - cur.0).abs(), (next.1 - cur.1).abs());
             // Geometric convergence e_k = C r^k: the error of `next` is d^3 / d_prev^2.
@@ -280,72 +291,80 @@ impl Contact {
             };
             let (en, ed) = (predict(d.0, prev_d.0), predict(d.1, prev_d.1));
             cur = next;
-            let ok = within(en, ed, cur);
-            if ok || 2 * m >= MAX_ORDER {
+            if within(en, ed, cur) {
                 return Sums { normal: cur.0, deficit: cur.1, err_normal: en, err_deficit: ed, nodes };
+            }
+            if 2 * m >= MAX_ORDER {
+                // Not converged: report the plain last difference, not a prediction.
+                return Sums {
+                    normal: cur.0,
+                    deficit: cur.1,
+                    err_normal: d.0.max(en),
+                    err_deficit: d.1.max(ed),
+                    nodes,
+                };
             }
             prev_d = d;
         }
     }
 
-    /// Distance from `hi` to the nearest singularity of the Jacobian (`inf` if none).
-    fn singular_distance(&self, hi: f64, top: Top) -> f64 {
+    /// Distance from a band's top `top` (in `u`) to the nearest singularity of
+    /// the Jacobian above it (`inf` if none).
+    fn singular_distance(&self, top: f64, kind: Top) -> f64 {
         // gamma = 0 (cone): no singularity; amp = 1 with gamma = -1/2 (paraboloid):
-        // y^(-1/2) cos(beta) = sqrt(2) cos(u/2) is analytic at u = pi/2 - beta = 0.
+        // y^(-1/2) sin(u) = sqrt(2) cos(u/2) is analytic at u = 0.
         if self.gamma == 0.0 || (self.amp == 1.0 && self.gamma == -0.5) {
             return f64::INFINITY;
         }
-        match top {
-            Top::Centre => PI - 2.0 * self.beta_star,
+        match kind {
+            // The other zero of y, at u = -u*.
+            Top::Centre => 2.0 * self.u_star,
             Top::CentreCritical => f64::INFINITY,
-            Top::Regular if self.amp > 1.0 => self.beta_star - hi,
-            Top::Regular if self.amp == 1.0 => FRAC_PI_2 - hi,
-            Top::Regular => (FRAC_PI_2 - hi).hypot((1.0 / self.amp).acosh()),
+            Top::Regular if self.amp >= 1.0 => top - self.u_star,
+            Top::Regular => top.hypot((1.0 / self.amp).acosh()),
         }
     }
 
-    /// Integrate the band `[lo, hi]`, split geometrically towards close
-    /// singularities: one `near.0` (or the Jacobian's) beyond `hi` (the Jacobian's, see
-    /// [`Contact::singular_distance`], or the spring means' at `s = 1`) and one
-    /// `dist_bottom` below `lo`. Cuts at `hi - d 2^k` and `lo + d 2^k` keep every
-    /// piece at least its own width away from both.
-    fn band(&self, lo: f64, hi: f64, top: Top, stick: bool, near: (f64, f64), scale: (f64, f64)) -> Sums {
-        let (extra_top, dist_bottom) = near;
+    /// Integrate the band `u` in `[top, bottom]`, split geometrically towards
+    /// close singularities: one `near.0` (or the Jacobian's) above the top and
+    /// one `near.1` below the bottom. Cuts at `top + d 2^k` and `bottom - d 2^k`
+    /// keep every piece at least its own width away from both.
+    fn band(&self, top: f64, bottom: f64, kind: Top, stick: bool, near: (f64, f64), scale: (f64, f64)) -> Sums {
         let mut total = Sums::default();
-        if hi <= lo {
+        if bottom <= top {
             return total;
         }
-        let width = hi - lo;
+        let width = bottom - top;
         let floor = width * 2f64.powi(-(MAX_PIECES as i32 / 2 - 2));
-        let dist_top = self.singular_distance(hi, top).min(extra_top).max(floor);
-        let dist_bottom = dist_bottom.max(floor);
-        // Where the grading from the top meets the grading from the bottom.
-        let mid = match (dist_top.is_finite(), dist_bottom.is_finite()) {
-            (_, false) => lo,
-            (false, true) => hi,
-            (true, true) => lo + width * dist_bottom / (dist_top + dist_bottom),
-        };
-        let mut cuts = vec![lo, hi];
-        // Gauss copes with a singularity a sixteenth of the width away; closer ones are graded.
-        let mut d = dist_top;
-        while hi - d > mid && d < GRADE_RATIO * width {
-            cuts.push(hi - d);
-            d *= 2.0;
-        }
-        let mut d = dist_bottom;
-        while lo + d < mid && d < GRADE_RATIO * width {
-            cuts.push(lo + d);
-            d *= 2.0;
+        let mut cuts = vec![top, bottom];
+        // The Jacobian's branch point (y = 0, a power singularity) is graded
+        // until every piece is at least half its width away from it; the milder
+        // singularities of the stick-first means' continuation only until a
+        // sixteenth of the width (Gauss copes beyond). Gradings stay within a
+        // half resp. a sixteenth of the width from their end, so they never cross
+        // from opposite ends.
+        let jac = self.singular_distance(top, kind).max(floor);
+        for (start, ratio, sign, from) in [
+            (jac, JACOBIAN_GRADE_RATIO, 1.0, top),
+            (near.0.max(floor), GRADE_RATIO, 1.0, top),
+            (near.1.max(floor), GRADE_RATIO, -1.0, bottom),
+        ] {
+            let mut d = start;
+            while d < ratio * width {
+                cuts.push(from + sign * d);
+                d *= 2.0;
+            }
         }
         cuts.sort_by(f64::total_cmp);
+        cuts.dedup();
         // Widest pieces first: their sum sets the absolute scale that the tiny
         // pieces near a singularity need only match (a relative tolerance on a
         // piece worth 1e-17 of the band would chase rounding noise).
         let mut pieces: Vec<(f64, f64)> = cuts.windows(2).map(|w| (w[0], w[1])).collect();
         pieces.sort_by(|a, b| (b.1 - b.0).total_cmp(&(a.1 - a.0)));
         for (a, b) in pieces {
-            let kind = if b == hi { top } else { Top::Regular };
-            let pc = self.piece(a, b, kind, stick, (scale.0 + total.normal.abs(), scale.1 + total.deficit.abs()));
+            let k = if a == top { kind } else { Top::Regular };
+            let pc = self.piece(a, b, k, stick, (scale.0 + total.normal.abs(), scale.1 + total.deficit.abs()));
             total += pc;
         }
         total
@@ -443,8 +462,11 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     }
     let vel = (vbar < 1.0).then(|| Velocity::new(vbar));
     let alpha = vel.map_or(0.0, |v| v.alpha);
-    let beta_star = if amp > 1.0 { (1.0 / amp).asin() } else { FRAC_PI_2 };
-    let contact = Contact { n, amp, gamma: 1.0 / n - 1.0, beta_star, vel, tol };
+    // In u = pi/2 - beta: the centre threshold y = 0 at u* (amp > 1), the
+    // stick-first band's upper edge beta = alpha at u_alpha = arcsin(vbar).
+    let u_star = if big { 2.0 * (0.5 * (amp - 1.0) / amp).sqrt().asin() } else { 0.0 };
+    let u_alpha = if vel.is_some() { vbar.asin() } else { FRAC_PI_2 };
+    let contact = Contact { n, amp, gamma: 1.0 / n - 1.0, u_star, vel, tol };
     let top_kind = if amp > 1.0 {
         Top::Centre
     } else if amp == 1.0 {
@@ -452,53 +474,53 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     } else {
         Top::Regular
     };
-    let top_of = |hi: f64| if hi == beta_star { top_kind } else { Top::Regular };
+    let top_of = |u: f64| if u == u_star { top_kind } else { Top::Regular };
     let d_perm = vel.map_or(0.0, |_| Spring::new(f64::MAX, vbar).deficit);
     let z_of_s = |s: f64| (1.0 - amp * s).clamp(0.0, 1.0 + amp).powf(1.0 / n);
-    // Band edges from beta: y(beta) is cancellation-free where 1 - amp sqrt(1 - vbar^2) is not.
+    // Band edges from u: y(u) is cancellation-free where 1 - amp sqrt(1 - vbar^2) is not.
     let z_scale = if big { amp.powf(1.0 / n) } else { 1.0 };
-    let z_of_beta = |b: f64| z_scale * contact.y(b).max(0.0).powf(1.0 / n);
+    let z_of_u = |u: f64| z_scale * contact.y(u).max(0.0).powf(1.0 / n);
 
     // Permanent contact (amp < 1): int_0^{z1} amp s dz = z1 - z1^(n+1)/(n+1).
     let z1 = z_of_s(1.0);
     let perm = Sums { normal: z1 - z1 * z1.powf(n) / (n + 1.0), deficit: amp * d_perm * z1, ..Default::default() };
-    // Slip first: beta in [alpha, beta_star]; the deficit is D(vbar) per spring.
-    let sf_lo = alpha.min(beta_star);
+    // The stick-first band is u in [u_sf, pi/2 + alpha], u_sf = max(u_alpha, u*);
+    // slip first is [u*, u_sf]; slip only [pi/2 + alpha, pi].
+    let u_sf = u_alpha.max(u_star);
+    let u_low = FRAC_PI_2 + alpha;
     let inf = f64::INFINITY;
     // The largest parts first: their sums are the absolute scale for the thin bands.
-    // Stick first: beta in [-alpha, min(alpha, beta_star)]. Its means, continued
-    // beyond the band, are singular at s = +-1 (beta = +-pi/2), a distance
-    // arcsin(vbar) from the band's ends.
-    // At vbar = 0 the stick-first means are the mean normal force itself
-    // (everything sticks): analytic, nothing to grade for.
-    let near = if vbar == 0.0 { f64::INFINITY } else { vbar.min(1.0).asin() };
+    // The stick-first means, continued beyond the band, are singular at s = +-1
+    // (u = 0 and u = pi): u_sf above the band, arcsin(vbar) below it. At
+    // vbar = 0 they are the mean normal force itself (everything sticks):
+    // analytic, nothing to grade for.
+    let near = if vbar == 0.0 { (inf, inf) } else { (u_sf, u_alpha) };
     let scale0 = (perm.normal, perm.deficit);
-    let stick_first = contact.band(-alpha, sf_lo, top_of(sf_lo), vel.is_some(), (near, near), scale0);
+    let stick_first = contact.band(u_sf, u_low, top_of(u_sf), vel.is_some(), near, scale0);
     let scale1 = (scale0.0 + stick_first.normal, scale0.1 + stick_first.deficit);
     // Without the band report, a closed-form total normal force (cone, paraboloid)
     // makes the normal force of the two slip bands unnecessary: only the stick
     // band needs springs solved.
     let closed = if bands { None } else { total_normal(n, amp) };
-    // Slip first: beta in [alpha, beta_star]; the deficit is D(vbar) per spring.
+    // Slip first: its deficit is D(vbar) per spring.
     let mut slip_first = match closed {
         Some(_) => Sums::default(),
-        None => contact.band(sf_lo, beta_star, top_of(beta_star), false, (inf, inf), scale1),
+        None => contact.band(u_star, u_sf, top_of(u_star), false, (inf, inf), scale1),
     };
     slip_first.deficit =
-        if big { d_perm * contact.y(sf_lo).max(0.0).powf(1.0 / n) } else { amp * d_perm * (z_of_beta(sf_lo) - z1) };
+        if big { d_perm * contact.y(u_sf).max(0.0).powf(1.0 / n) } else { amp * d_perm * (z_of_u(u_sf) - z1) };
     let scale2 = (scale1.0 + slip_first.normal, scale1.1 + slip_first.deficit);
-    // Slip only: beta in [-pi/2, -alpha].
     let slip_only = match closed {
         Some(_) => Sums::default(),
-        None => contact.band(-FRAC_PI_2, -alpha, Top::Regular, false, (inf, inf), scale2),
+        None => contact.band(u_low, PI, Top::Regular, false, (inf, inf), scale2),
     };
 
     let first_kind = if vel.is_some() { BandKind::SlipFirst } else { BandKind::SlipOnly };
     let parts = [
         (BandKind::PermanentContact, [0.0, z1], perm),
-        (first_kind, [z1, z_of_beta(sf_lo)], slip_first),
-        (BandKind::StickFirst, [z_of_beta(sf_lo), z_of_beta(-alpha)], stick_first),
-        (BandKind::SlipOnly, [z_of_beta(-alpha), (1.0 + amp).powf(1.0 / n)], slip_only),
+        (first_kind, [z1, z_of_u(u_sf)], slip_first),
+        (BandKind::StickFirst, [z_of_u(u_sf), z_of_u(u_low)], stick_first),
+        (BandKind::SlipOnly, [z_of_u(u_low), (1.0 + amp).powf(1.0 / n)], slip_only),
     ];
     let mut total = Sums::default();
     for p in &parts {
@@ -590,14 +612,8 @@ mod tests {
                 assert!((shares - 1.0).abs() < 1e-14);
                 // The quadrature's total, rebuilt from the bands of the report.
                 let quad_total = {
-                    let c = Contact {
-                        n,
-                        amp: a,
-                        gamma: 1.0 / n - 1.0,
-                        beta_star: if a > 1.0 { (1.0 / a).asin() } else { FRAC_PI_2 },
-                        vel: None,
-                        tol: DEFAULT_TOL,
-                    };
+                    let u_star = if a > 1.0 { 2.0 * (0.5 * (a - 1.0) / a).sqrt().asin() } else { 0.0 };
+                    let c = Contact { n, amp: a, gamma: 1.0 / n - 1.0, u_star, vel: None, tol: DEFAULT_TOL };
                     let top = if a > 1.0 {
                         Top::Centre
                     } else if a == 1.0 {
@@ -607,9 +623,10 @@ mod tests {
                     };
                     let z1 = (1.0 - a).max(0.0).powf(1.0 / n);
                     let perm = z1 - z1 * z1.powf(n) / (n + 1.0);
-                    perm + c
-                        .band(-FRAC_PI_2, c.beta_star, top, false, (f64::INFINITY, f64::INFINITY), (perm, 0.0))
-                        .normal
+                    let inf = f64::INFINITY;
+                    let jumping = c.band(u_star, PI, top, false, (inf, inf), (perm, 0.0)).normal;
+                    // amp > 1: scaled by amp^(1 + 1/n), as total_normal.
+                    perm + jumping
                 };
                 assert!((closed / quad_total - 1.0).abs() < 1e-14, "n={n} a={a}: {closed} vs {quad_total}");
             }
