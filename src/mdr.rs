@@ -458,7 +458,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
         return unit(Some(n / (n + 1.0)));
     }
     if vbar >= 1.0 && !bands {
-        return unit(total_normal(n, amp).map(|x| unscale(x)).filter(|x| x.is_finite()));
+        return unit(total_normal(n, amp).map(unscale).filter(|x| x.is_finite()));
     }
     let vel = (vbar < 1.0).then(|| Velocity::new(vbar));
     let alpha = vel.map_or(0.0, |v| v.alpha);
