@@ -117,6 +117,7 @@ fn bad_input_is_one_line_exit_2_and_no_stdout() {
         (&["point", "--shape", "power:0", "--vbar", "0.1", "--amp", "1"], None, "must be finite and > 0"),
         (&["point", "--shape", "power:-1", "--vbar", "0.1", "--amp", "1"], None, "must be finite and > 0"),
         (&["point", "--shape", "power:abc", "--vbar", "0.1", "--amp", "1"], None, "not a number"),
+        (&["point", "--shape", "power:6.5e91", "--vbar", "0.1", "--amp", "1"], None, "within [0.05, 1e6]"),
         (&["point", "--shape", "parabolic", "--vbar", "0.1", "--amp", "1", "--tol", "0"], None, "tol"),
         (&["table", "--amp", "1", "--vbar", "1:0:3"], None, "below start"),
         (&["table", "--amp", "1", "--vbar", "0:1:0"], None, "count must be >= 1"),

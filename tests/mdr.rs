@@ -162,3 +162,13 @@ fn static_friction_is_the_minimum_over_the_mean_normal_force() {
         }
     }
 }
+
+#[test]
+fn the_accepted_exponent_range_agrees_with_the_reference_at_its_ends() {
+    for (n, v, a) in [(0.05, 0.3, 0.5), (0.05, 0.3, 2.0), (0.05, 0.05, 1.3), (1e6, 0.3, 0.5), (1e6, 0.5, 2.0)] {
+        let r = power_law(n, v, a, DEFAULT_TOL, false);
+        let (reference, acc) = mdr_ref::mu_ratio(n, v, a);
+        let err = (r.ratio.mu_ratio - reference).abs();
+        assert!(err <= tol::MDR_ABS.max(acc), "n={n} v={v} a={a}: err {err:e} (reference accuracy {acc:e})");
+    }
+}

@@ -1,0 +1,21 @@
+#![no_main]
+//! The solver entry points on arbitrary (vbar, amp, shape) triples: no panic,
+//! results in [0, 1] whenever the inputs are accepted.
+use fricosc::shape::{evaluate, Shape};
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: (f64, f64, u8, f64)| {
+    let (v, a, k, n) = data;
+    let shape = match k % 4 {
+        0 => Shape::Flat,
+        1 => Shape::Power(2.0),
+        2 => Shape::Power(1.0),
+        _ => match Shape::parse(&format!("power:{n:?}")) {
+            Ok(s) => s,
+            Err(_) => return,
+        },
+    };
+    if let Ok(e) = evaluate(&shape, v, a) {
+        assert!((0.0..=1.0).contains(&e.ratio.mu_ratio), "{v} {a} {k}: {}", e.ratio.mu_ratio);
+    }
+});
