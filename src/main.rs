@@ -56,6 +56,12 @@ enum Command {
         #[arg(long, default_value_t = 1)]
         seed: u64,
     },
+    /// Every quantitative claim of the seed, checked against the exact solver.
+    Claims {
+        /// markdown (default) or json.
+        #[arg(long, default_value = "markdown")]
+        format: String,
+    },
     Batch {
         /// Input file; stdin when absent or '-'.
         file: Option<String>,
@@ -344,6 +350,22 @@ fn main() -> ExitCode {
         Command::Point(a) => point(a),
         Command::Table(a) => table(a),
         Command::Bench { out, quick } => run_bench(&out, quick),
+        Command::Claims { format } => {
+            let claims = fricosc::claims::check();
+            match format.as_str() {
+                "markdown" => {
+                    print!("{}", fricosc::claims::to_markdown(&claims));
+                    Ok(())
+                }
+                "json" => serde_json::to_string_pretty(&claims)
+                    .map(|t| println!("{t}"))
+                    .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() }),
+                other => Err(Error::Parse {
+                    context: "--format".into(),
+                    reason: format!("'{other}' is neither markdown nor json"),
+                }),
+            }
+        }
         Command::Stress { points, seed } => {
             if points > 100_000_000 {
                 Err(Error::TooLarge { what: "stress run".into(), count: points as u128, limit: 100_000_000 })

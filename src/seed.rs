@@ -1,0 +1,75 @@
+//! The seed's approximations, as printed and (where misprinted) corrected, for
+//! comparison with the exact solver (`fricosc claims`, `fricosc figures`).
+//! Each takes `vbar` (eq. 3) and `amp = du/u0`.
+
+use std::f64::consts::PI;
+
+/// `3/4 (v - 1)^2 + 1/4 (v - 1)^4`, the bracket of eqs. 11, 13-17, 25, 27.
+fn bracket(vbar: f64) -> f64 {
+    let w = (vbar - 1.0) * (vbar - 1.0);
+    0.75 * w + 0.25 * w * w
+}
+
+/// Eq. 11 (empirical fit, no contact loss): `1 - amp [3/4 (v-1)^2 + 1/4 (v-1)^4]`;
+/// 1 for `vbar >= 1` (the seed: no reduction beyond the critical velocity).
+pub fn eq11(vbar: f64, amp: f64) -> f64 {
+    if vbar >= 1.0 {
+        1.0
+    } else {
+        1.0 - amp * bracket(vbar)
+    }
+}
+
+/// Eq. 12 (low-velocity asymptote): `1 + amp (-1 + pi v - 4/3 sqrt(pi) v^(3/2) + v^2/2)`.
+pub fn eq12(vbar: f64, amp: f64) -> f64 {
+    1.0 + amp * (-1.0 + PI * vbar - 4.0 / 3.0 * PI.sqrt() * vbar.powf(1.5) + 0.5 * vbar * vbar)
+}
+
+/// Eq. 16: eq. 11 in `vhat = vbar amp` (eq. 15).
+pub fn eq16(vhat: f64, amp: f64) -> f64 {
+    eq11(vhat / amp, amp)
+}
+
+/// Eq. 17 (rough approximation for jumping): eq. 11 at `amp = 1`.
+pub fn eq17(vbar: f64) -> f64 {
+    eq11(vbar, 1.0)
+}
+
+/// Small-velocity slope `mu/(mu0 vbar)` for `amp > 1`, eq. 21 corrected:
+/// `(pi - th)^2 / (s (pi - th) + sin th)`, `s = 1/amp`, `th = arccos s`.
+pub fn eq21_slope(amp: f64) -> f64 {
+    let s = 1.0 / amp;
+    let th = s.acos();
+    (PI - th).powi(2) / (s * (PI - th) + th.sin())
+}
+
+/// Eq. 21 as printed: `(1 - th/pi)^2 / (s (1 - th/pi + (1/pi)(amp) sqrt(1 - s^2)))`
+/// -- smaller than the exact slope by exactly `pi`.
+pub fn eq21_slope_printed(amp: f64) -> f64 {
+    let s = 1.0 / amp;
+    let th = s.acos();
+    (1.0 - th / PI).powi(2) / (s * (1.0 - th / PI + amp * (1.0 - s * s).sqrt() / PI))
+}
+
+/// Eq. 22 / Fig. 5 caption, the large-amplitude limit of the slope: printed `pi/4`.
+pub const EQ22_PRINTED: f64 = PI / 4.0;
+/// The same limit, corrected: `pi^2/4` (eq. 21 corrected as `amp -> infinity`).
+pub const EQ22_CORRECTED: f64 = PI * PI / 4.0;
+
+/// Eq. 27 (universal form): `1 - (1 - mu_static)[3/4 (v-1)^2 + 1/4 (v-1)^4]`.
+pub fn eq27(vbar: f64, mu_static: f64) -> f64 {
+    if vbar >= 1.0 {
+        1.0
+    } else {
+        1.0 - (1.0 - mu_static) * bracket(vbar)
+    }
+}
+
+/// Eq. 28 (simpler form): `1 - (1 - mu_static)(1 - v)^2.4`.
+pub fn eq28(vbar: f64, mu_static: f64) -> f64 {
+    if vbar >= 1.0 {
+        1.0
+    } else {
+        1.0 - (1.0 - mu_static) * (1.0 - vbar).powf(2.4)
+    }
+}
