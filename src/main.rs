@@ -62,6 +62,29 @@ enum Command {
         #[arg(long, default_value = "markdown")]
         format: String,
     },
+    /// Normal and tangential force over time (the seed's Fig. 2), exact: JSON, CSV or SVG.
+    History {
+        /// Shape: flat or a power law.
+        #[arg(long, default_value = "flat")]
+        shape: String,
+        #[command(flatten)]
+        velocity: Velocity,
+        /// Amplitude du/u0.
+        #[arg(long, allow_hyphen_values = true)]
+        amp: String,
+        /// Periods to sample.
+        #[arg(long, default_value_t = 1)]
+        periods: usize,
+        /// Uniform samples over all periods (event times are added).
+        #[arg(long, default_value_t = 400)]
+        samples: usize,
+        /// Springs summed for MDR shapes.
+        #[arg(long, default_value_t = 4000)]
+        springs: usize,
+        /// json, csv or svg.
+        #[arg(long, default_value = "json")]
+        format: String,
+    },
     Batch {
         /// Input file; stdin when absent or '-'.
         file: Option<String>,
@@ -279,6 +302,52 @@ fn run_batch(file: Option<String>, stepping: Option<Stepping>) -> Result<()> {
     out.flush().map_err(io_err)
 }
 
+fn run_history(
+    shape: &str,
+    velocity: &Velocity,
+    amp: &str,
+    periods: usize,
+    samples: usize,
+    springs: usize,
+    format: &str,
+) -> Result<()> {
+    let shape = Shape::parse(shape)?;
+    let amp = parse_number("--amp", amp)?;
+    let vbar = match (&velocity.vbar, &velocity.vhat) {
+        (Some(v), _) => parse_number("--vbar", v)?,
+        (None, Some(h)) => vbar_of(parse_number("--vhat", h)?, amp)?,
+        (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
+    };
+    if !matches!(format, "json" | "csv" | "svg") {
+        return Err(Error::Parse { context: "--format".into(), reason: format!("'{format}' is not json, csv or svg") });
+    }
+    let h = fricosc::history::history(&shape, vbar, amp, periods, samples, springs)?;
+    let text = match format {
+        "json" => serde_json::to_string_pretty(&h)
+            .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })?,
+        "csv" => fricosc::history::to_csv(&h),
+        _ => {
+            let pts =
+                |f: fn(&fricosc::history::Sample) -> f64| h.samples.iter().map(|x| (x.tau, f(x))).collect::<Vec<_>>();
+            let ymax = h.samples.iter().map(|x| x.normal).fold(0.0, f64::max) * 1.05 + 1e-12;
+            let series = [
+                fricosc::plot::Series { label: "mu0 x normal force".into(), points: pts(|x| x.normal), dashed: false },
+                fricosc::plot::Series {
+                    label: "tangential force".into(),
+                    points: pts(|x| x.tangential),
+                    dashed: false,
+                },
+            ];
+            let title = format!("{} vbar = {vbar}, du/u0 = {amp} ({})", h.shape, h.units);
+            let tmax = h.samples.last().map_or(1.0, |x| x.tau);
+            fricosc::plot::lines(&title, "omega t", "force", (0.0, tmax), (0.0, ymax), &series)
+                .map_err(|e| Error::Parse { context: "plot".into(), reason: e })?
+        }
+    };
+    let mut o = io::stdout().lock();
+    writeln!(o, "{text}").map_err(io_err)
+}
+
 fn run_bench(out: &str, quick: bool) -> Result<()> {
     let dir = std::path::Path::new(out);
     let werr = |e: String| Error::Io { path: out.into(), reason: e };
@@ -350,6 +419,9 @@ fn main() -> ExitCode {
         Command::Point(a) => point(a),
         Command::Table(a) => table(a),
         Command::Bench { out, quick } => run_bench(&out, quick),
+        Command::History { shape, velocity, amp, periods, samples, springs, format } => {
+            run_history(&shape, &velocity, &amp, periods, samples, springs, &format)
+        }
         Command::Claims { format } => {
             let claims = fricosc::claims::check();
             match format.as_str() {

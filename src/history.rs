@@ -1,0 +1,157 @@
+//! `fricosc history`: the normal and tangential force over time (the seed's
+//! Fig. 2), exact, sampled from the closed-form phases with every event time
+//! included as a sample.
+//!
+//! Flat punch: forces in units of `kz u0` (normal) and `mu0 kz u0` (tangential).
+//! MDR power laws: totals in units of `E* x_c u0` (and `mu0 E* x_c u0`); the
+//! normal total is exact (`(n/(n+1)) (1 - amp cos tau)_+^(1 + 1/n)`), the
+//! tangential total sums the exact forces of `springs` springs at the midpoints
+//! of a uniform grid (second order in the spacing away from the phase switches).
+
+use crate::error::{check_nonneg, Error, Result};
+use crate::shape::Shape;
+use crate::spring::{EventKind, Regime, Spring};
+use serde::Serialize;
+use std::f64::consts::TAU;
+
+/// One sample of the forces.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Sample {
+    /// Phase `omega t` (from 0 to `2 pi periods`).
+    pub tau: f64,
+    /// Normal force.
+    pub normal: f64,
+    /// Tangential force.
+    pub tangential: f64,
+    /// The event at this phase, if it is one (flat punch only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub event: Option<EventKind>,
+}
+
+/// A force history.
+#[derive(Debug, Clone, Serialize)]
+pub struct History {
+    /// Shape name.
+    pub shape: String,
+    /// Dimensionless velocity.
+    pub vbar: f64,
+    /// Amplitude.
+    pub amp: f64,
+    /// Units of the forces.
+    pub units: String,
+    /// The samples, in phase order.
+    pub samples: Vec<Sample>,
+}
+
+/// Tangential force of one spring at phase `tau`, units `mu0 kz du`, from its phases.
+pub fn spring_force(sp: &Spring, tau: f64) -> f64 {
+    let b = (sp.s - tau.cos()).max(0.0);
+    if b == 0.0 {
+        return 0.0;
+    }
+    if let Some(st) = sp.stick {
+        let t0 = if sp.regime == Regime::JumpingStickFirst { sp.s.acos() } else { st.start() };
+        let x = (tau - t0).rem_euclid(TAU);
+        if x < st.length {
+            return (st.start_force + sp.vbar * x).min(b);
+        }
+    }
+    b
+}
+
+/// Most samples one history may hold.
+pub const MAX_SAMPLES: usize = 10_000_000;
+
+/// The history of `periods` periods with `samples` uniform samples (plus events).
+pub fn history(shape: &Shape, vbar: f64, amp: f64, periods: usize, samples: usize, springs: usize) -> Result<History> {
+    check_nonneg("vbar", vbar)?;
+    check_nonneg("amp", amp)?;
+    if periods == 0 || samples == 0 || springs == 0 {
+        return Err(Error::param("periods/samples/springs", 0.0, "must be >= 1"));
+    }
+    if periods.saturating_mul(samples) > MAX_SAMPLES || springs > 1_000_000 {
+        return Err(Error::TooLarge {
+            what: "history".into(),
+            count: (periods as u128) * (samples as u128),
+            limit: MAX_SAMPLES as u128,
+        });
+    }
+    let total = TAU * periods as f64;
+    let mut taus: Vec<(f64, Option<EventKind>)> =
+        (0..=samples).map(|j| (total * j as f64 / samples as f64, None)).collect();
+    let (units, out) = match shape {
+        Shape::Flat => {
+            let s = if amp > 0.0 { 1.0 / amp } else { f64::MAX };
+            let sp = Spring::with_events(s, vbar);
+            for p in 0..periods {
+                for e in sp.events() {
+                    taus.push((e.tau + TAU * p as f64, Some(e.kind)));
+                }
+            }
+            taus.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let scale = if amp > 0.0 { amp } else { 1.0 };
+            let samples = taus
+                .iter()
+                .map(|&(tau, event)| {
+                    let (normal, tangential) = if amp > 0.0 {
+                        ((sp.s - tau.cos()).max(0.0) * scale, spring_force(&sp, tau) * scale)
+                    } else {
+                        (1.0, 1.0)
+                    };
+                    Sample { tau, normal, tangential, event }
+                })
+                .collect();
+            ("normal: kz u0; tangential: mu0 kz u0".to_string(), samples)
+        }
+        Shape::Power(n) => {
+            let n = *n;
+            let zmax = (1.0 + amp).powf(1.0 / n);
+            let dz = zmax / springs as f64;
+            let sp: Vec<Spring> = if amp > 0.0 {
+                (0..springs).map(|i| Spring::with_events((1.0 - ((i as f64 + 0.5) * dz).powf(n)) / amp, vbar)).collect()
+            } else {
+                vec![]
+            };
+            taus.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let samples = taus
+                .iter()
+                .map(|&(tau, _)| {
+                    let c = (1.0 - amp * tau.cos()).max(0.0);
+                    let normal = n / (n + 1.0) * c.powf(1.0 + 1.0 / n);
+                    let tangential = if amp > 0.0 {
+                        amp * dz * sp.iter().map(|s| spring_force(s, tau)).sum::<f64>()
+                    } else {
+                        normal
+                    };
+                    Sample { tau, normal, tangential, event: None }
+                })
+                .collect();
+            ("normal: E* x_c u0; tangential: mu0 E* x_c u0 (x_c: contact radius at u0)".to_string(), samples)
+        }
+        Shape::Tabulated(..) => {
+            return Err(Error::InvalidShape {
+                spec: shape.name(),
+                reason: "history supports flat and power-law shapes".into(),
+            })
+        }
+    };
+    Ok(History { shape: shape.name(), vbar, amp, units, samples: out })
+}
+
+/// CSV: `tau,normal,tangential,event`.
+pub fn to_csv(h: &History) -> String {
+    let mut s = String::from("tau,normal,tangential,event\n");
+    for x in &h.samples {
+        let ev = x
+            .event
+            .map(|e| serde_json::to_value(e).ok().and_then(|v| v.as_str().map(String::from)).unwrap_or_default());
+        s += &format!(
+            "{},{},{},{}\n",
+            crate::output::num(x.tau),
+            crate::output::num(x.normal),
+            crate::output::num(x.tangential),
+            ev.unwrap_or_default()
+        );
+    }
+    s
+}
