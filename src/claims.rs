@@ -50,10 +50,22 @@ pub fn exact_slope(amp: f64) -> f64 {
     mu_flat(1e-9, amp) / 1e-9
 }
 
-/// The dimensional single-spring scheme of the seed (eq. 1 and its return map),
-/// in SI-like units: stiffnesses `kx, kz`, friction `mu0`, sliding velocity
-/// `v0`, angular frequency `omega`, mean indentation `u0`, amplitude `du`.
-fn dimensional_stepper(kx: f64, kz: f64, mu0: f64, v0: f64, omega: f64, u0: f64, du: f64, m: usize) -> f64 {
+/// A single spring in physical units (seed eq. 1): stiffnesses, friction,
+/// sliding velocity, angular frequency, mean indentation and amplitude.
+#[derive(Clone, Copy)]
+struct Physical {
+    kx: f64,
+    kz: f64,
+    mu0: f64,
+    v0: f64,
+    omega: f64,
+    u0: f64,
+    du: f64,
+}
+
+/// The seed's scheme in physical units, `m` steps per period; returns `mu/mu0`.
+fn dimensional_stepper(p: &Physical, m: usize) -> f64 {
+    let Physical { kx, kz, mu0, v0, omega, u0, du } = *p;
     let dt = TAU / omega / m as f64;
     let bound = |t: f64| (mu0 * kz * (u0 - du * (omega * t).cos())).max(0.0);
     let mut f = bound(0.0);
@@ -194,7 +206,8 @@ pub fn check() -> Vec<Claim> {
     });
 
     // The critical velocity vbar = 1 for every shape (eq. 26).
-    let shapes: [(&str, Box<dyn Fn(f64, f64) -> f64>); 3] = [
+    type Mu = Box<dyn Fn(f64, f64) -> f64>;
+    let shapes: [(&str, Mu); 3] = [
         ("flat", Box::new(mu_flat)),
         ("parabolic", Box::new(|v, a| mu_mdr(2.0, v, a))),
         ("cone", Box::new(|v, a| mu_mdr(1.0, v, a))),
@@ -254,11 +267,12 @@ pub fn check() -> Vec<Claim> {
     let (kx, kz, mu0, omega, u0, du) = (3.0e7, 4.0e7, 0.3, 2.0 * PI * 100.0, 2e-6, 1e-6);
     let v0 = 0.4 * kz * mu0 * omega * du / kx;
     let vbar = kx * v0 / (kz * mu0 * omega * du);
-    let a_ = dimensional_stepper(kx, kz, mu0, v0, omega, u0, du, 20000);
+    let a_ = dimensional_stepper(&Physical { kx, kz, mu0, v0, omega, u0, du }, 20000);
     // A second system: stiffnesses x 1e3, kz/kx changed, frequency x 7, lengths x 1e-3, same (vbar, amp).
     let (kx2, kz2, mu02, omega2, u02, du2) = (5.0e10, 2.0e10, 0.6, omega * 7.0, u0 * 1e-3, du * 1e-3);
     let v02 = vbar * kz2 * mu02 * omega2 * du2 / kx2;
-    let b_ = dimensional_stepper(kx2, kz2, mu02, v02, omega2, u02, du2, 20000);
+    let b_ =
+        dimensional_stepper(&Physical { kx: kx2, kz: kz2, mu0: mu02, v0: v02, omega: omega2, u0: u02, du: du2 }, 20000);
     let exact = mu_flat(vbar, du / u0);
     out.push(Claim {
         claim: "section 2 ('a function of only two dimensionless parameters')".into(),
