@@ -21,4 +21,15 @@ emit data/point-parabolic.json $B point --shape parabolic --vbar 0.6 --amp 1
 emit data/stepped-flat.csv $B table --shape flat --amp 0.5,1.5 --vbar 0.1:0.9:3 --method stepping --steps-per-period 1000 --format csv
 emit data/stepped-flat-validation.json $B validate --shape flat data/stepped-flat.csv --max-error 1e-3
 emit data/point-sphere.json $B point --shape profile:data/profiles/sphere.csv@1e-6 --vbar 0.3 --amp 0.4
+emit data/claims.md $B claims
+emit data/history-flat.csv $B history --shape flat --vbar 0.3 --amp 0.5 --samples 200 --format csv
+emit data/history-flat.svg $B history --shape flat --vbar 0.3 --amp 0.5 --samples 400 --format svg
+if [ "$check" = "--check" ]; then
+  tmp=$(mktemp -d)
+  $B figures --out "$tmp" > /dev/null
+  if ! diff -rq "$tmp" data/figures > /dev/null; then echo "stale: data/figures (run bash data/regenerate.sh)" >&2; exit 1; fi
+  rm -rf "$tmp"
+else
+  $B figures --out data/figures > /dev/null
+fi
 echo "data/ is up to date"

@@ -33,6 +33,7 @@ pub use error::{Error, Result};
 pub mod batch;
 pub mod bench;
 pub mod claims;
+pub mod figures;
 pub mod grid;
 pub mod history;
 pub mod mdr;

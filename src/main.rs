@@ -85,6 +85,12 @@ enum Command {
         #[arg(long, default_value = "json")]
         format: String,
     },
+    /// The seed's Figs. 3, 4, 5 (+ inset), 7, 8: exact curves and the seed's approximations, as JSON, CSV, SVG.
+    Figures {
+        /// Output directory (created if missing).
+        #[arg(long)]
+        out: String,
+    },
     Batch {
         /// Input file; stdin when absent or '-'.
         file: Option<String>,
@@ -419,6 +425,10 @@ fn main() -> ExitCode {
         Command::Point(a) => point(a),
         Command::Table(a) => table(a),
         Command::Bench { out, quick } => run_bench(&out, quick),
+        Command::Figures { out } => fricosc::figures::write_all(std::path::Path::new(&out)).and_then(|names| {
+            let mut o = io::stdout().lock();
+            writeln!(o, "wrote {} figures to {out}: {}", names.len(), names.join(", ")).map_err(io_err)
+        }),
         Command::History { shape, velocity, amp, periods, samples, springs, format } => {
             run_history(&shape, &velocity, &amp, periods, samples, springs, &format)
         }
