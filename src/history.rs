@@ -4,7 +4,8 @@
 //!
 //! Flat punch: forces in units of `kz u0` (normal) and `mu0 kz u0` (tangential).
 //! MDR power laws: totals in units of `E* x_c u0` (and `mu0 E* x_c u0`); the
-//! normal total is exact (`(n/(n+1)) (1 - amp cos tau)_+^(1 + 1/n)`), the
+//! normal total is exact (`(2n/(n+1)) (1 - amp cos tau)_+^(1 + 1/n)`, both sides of
+//! the foundation), the
 //! tangential total sums the exact forces of `springs` springs at the midpoints
 //! of a uniform grid (second order in the spacing away from the phase switches).
 
@@ -117,9 +118,10 @@ pub fn history(shape: &Shape, vbar: f64, amp: f64, periods: usize, samples: usiz
                 .iter()
                 .map(|&(tau, _)| {
                     let c = (1.0 - amp * tau.cos()).max(0.0);
-                    let normal = n / (n + 1.0) * c.powf(1.0 + 1.0 / n);
+                    // Both sides of the foundation.
+                    let normal = 2.0 * n / (n + 1.0) * c.powf(1.0 + 1.0 / n);
                     let tangential = if amp > 0.0 {
-                        amp * dz * sp.iter().map(|s| spring_force(s, tau)).sum::<f64>()
+                        2.0 * amp * dz * sp.iter().map(|s| spring_force(s, tau)).sum::<f64>()
                     } else {
                         normal
                     };

@@ -103,8 +103,9 @@ pub struct MdrResult {
     pub ratio: Ratio,
     /// Estimated absolute error of `mu_ratio` (an upper bound in all tests).
     pub error_estimate: f64,
-    /// Mean normal force over a period, units `E* x_c u0` (`x_c` the contact
-    /// radius at the mean indentation `u0`; MDR forces equal the 3D ones).
+    /// Mean normal force of the whole contact over a period, units `E* x_c u0`
+    /// (`x_c` the contact radius at the mean indentation `u0`; both sides of the
+    /// MDR foundation, whose forces equal the 3D ones: Hertz is `4/3` at `amp = 0`).
     /// Absent when nothing needed it (`vbar >= 1` without bands, no closed form).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mean_normal: Option<f64>,
@@ -447,10 +448,11 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     // ratio is unaffected, and the reported normal force is scaled back.
     let big = amp > 1.0;
     let unscale = |x: f64| if big { x * amp.powf(1.0 + 1.0 / n) } else { x };
-    let unit = |mean_normal: Option<f64>| MdrResult {
+    // Both sides of the foundation (z < 0 mirrors z > 0): twice the half-line integral.
+    let unit = |half: Option<f64>| MdrResult {
         ratio: Ratio { mu_ratio: 1.0, reduction: 0.0 },
         error_estimate: 0.0,
-        mean_normal,
+        mean_normal: half.map(|x| 2.0 * x),
         bands: vec![],
         nodes: 0,
     };
@@ -554,7 +556,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
     } else {
         vec![]
     };
-    let mean_normal = Some(unscale(nn)).filter(|x| x.is_finite());
+    let mean_normal = Some(2.0 * unscale(nn)).filter(|x| x.is_finite());
     MdrResult { ratio, error_estimate, mean_normal, bands: band_list, nodes: total.nodes }
 }
 
@@ -584,7 +586,9 @@ pub fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> f64 {
     if amp >= 1.0 {
         return 0.0;
     }
-    let nn = total_normal(n, amp).or_else(|| power_law(n, 1.0, amp, tol, true).mean_normal).unwrap_or(f64::NAN);
+    let nn = total_normal(n, amp)
+        .or_else(|| power_law(n, 1.0, amp, tol, true).mean_normal.map(|x| 0.5 * x))
+        .unwrap_or(f64::NAN);
     (n / (n + 1.0) * (1.0 - amp).powf(1.0 + 1.0 / n) / nn).min(1.0)
 }
 
