@@ -22,6 +22,8 @@ emit data/stepped-flat.csv $B table --shape flat --amp 0.5,1.5 --vbar 0.1:0.9:3 
 emit data/stepped-flat-validation.json $B validate --shape flat data/stepped-flat.csv --max-error 1e-3
 emit data/point-sphere.json $B point --shape profile:data/profiles/sphere.csv@1e-6 --vbar 0.3 --amp 0.4
 emit data/claims.md $B claims
+emit data/scene-steel-sphere-fig9.out.json $B scene data/scenes/steel-sphere-fig9.json
+emit data/scene.schema.json $B scene --schema
 emit data/history-flat.csv $B history --shape flat --vbar 0.3 --amp 0.5 --samples 200 --format csv
 emit data/history-flat.svg $B history --shape flat --vbar 0.3 --amp 0.5 --samples 400 --format svg
 if [ "$check" = "--check" ]; then

@@ -41,6 +41,7 @@ pub mod output;
 pub mod plot;
 pub mod profile;
 pub mod quad;
+pub mod scene;
 pub mod seed;
 pub mod shape;
 pub mod stress;

@@ -91,6 +91,17 @@ enum Command {
         #[arg(long)]
         out: String,
     },
+    /// Physical scenes (JSON, SI units): mu, forces and velocities in physical units.
+    Scene {
+        /// Scene files (run in parallel).
+        files: Vec<String>,
+        /// Print the JSON Schema of the scene file instead.
+        #[arg(long)]
+        schema: bool,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "json")]
+        format: Format,
+    },
     Batch {
         /// Input file; stdin when absent or '-'.
         file: Option<String>,
@@ -354,6 +365,35 @@ fn run_history(
     writeln!(o, "{text}").map_err(io_err)
 }
 
+fn run_scene(files: Vec<String>, schema: bool, format: Format) -> Result<()> {
+    if schema {
+        println!("{}", fricosc::scene::schema());
+        return Ok(());
+    }
+    if files.is_empty() {
+        return Err(Error::Parse { context: "scene".into(), reason: "give a scene file (or --schema)".into() });
+    }
+    // Read and solve everything before the first byte is written.
+    let results: Vec<Result<fricosc::scene::SceneResult>> = files
+        .par_iter()
+        .map(|f| {
+            let text = std::fs::read_to_string(f).map_err(|e| Error::Io { path: f.clone(), reason: e.to_string() })?;
+            fricosc::scene::solve(&fricosc::scene::parse(&text, f)?, f)
+        })
+        .collect();
+    let results = results.into_iter().collect::<Result<Vec<_>>>()?;
+    let text = match format {
+        Format::Csv => results.iter().map(fricosc::scene::to_csv).collect::<Vec<_>>().join("\n"),
+        Format::Json => {
+            let v = if results.len() == 1 { serde_json::to_value(&results[0]) } else { serde_json::to_value(&results) };
+            v.and_then(|v| serde_json::to_string_pretty(&v))
+                .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })?
+        }
+    };
+    let mut o = io::stdout().lock();
+    writeln!(o, "{}", text.trim_end()).map_err(io_err)
+}
+
 fn run_bench(out: &str, quick: bool) -> Result<()> {
     let dir = std::path::Path::new(out);
     let werr = |e: String| Error::Io { path: out.into(), reason: e };
@@ -425,6 +465,7 @@ fn main() -> ExitCode {
         Command::Point(a) => point(a),
         Command::Table(a) => table(a),
         Command::Bench { out, quick } => run_bench(&out, quick),
+        Command::Scene { files, schema, format } => run_scene(files, schema, format),
         Command::Figures { out } => fricosc::figures::write_all(std::path::Path::new(&out)).and_then(|names| {
             let mut o = io::stdout().lock();
             writeln!(o, "wrote {} figures to {out}: {}", names.len(), names.join(", ")).map_err(io_err)

@@ -1,0 +1,538 @@
+//! Physical scenes: one experiment in SI units (a JSON file), answered in SI units.
+//!
+//! Materials give `E*` and `G*` by the seed's eqs. 23-24; the indenter gives the
+//! contact stiffness and the dimensionless shape; `vbar = (G*/E*) v0 / (mu0 omega du)`
+//! (eq. 3 with `kx/kz = G*/E*` for every shape) and `amp = du/u0`.
+//!
+//! - Flat punch of radius `a`: `kz = 2 E* a`, `kx = 2 G* a`, one spring.
+//! - Axisymmetric `f(r) = c r^n` (sphere: `n = 2, c = 1/(2R)`, the Hertz
+//!   approximation; cone: `n = 1, c = ` the surface slope `cot(half angle)`): MDR
+//!   equivalent profile `g = kappa(n) c |x|^n`, `kappa(n) = sqrt(pi) Gamma(n/2 + 1) /
+//!   Gamma(n/2 + 1/2)`; contact radius at the mean indentation `x_c = (u0/(kappa c))^(1/n)`;
+//!   `kz = 2 E* x_c`, `kx = 2 G* x_c`; mean normal force `E* x_c u0` times
+//!   [`crate::mdr::MdrResult::mean_normal`].
+//! - Load control: `u0` is solved so that the *period-averaged* normal force
+//!   equals the given force. With contact loss (jumping) that differs from the
+//!   static force-indentation relation; the output says so.
+
+use crate::error::{Error, Result};
+use crate::flat;
+use crate::mdr;
+use crate::root;
+use crate::shape::{evaluate, Shape, MAX_EXPONENT, MIN_EXPONENT};
+use rayon::prelude::*;
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// One experiment.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Scene {
+    /// Optional label, copied to the output.
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Elastic constants of the two bodies.
+    pub materials: Materials,
+    /// Local (Coulomb) coefficient of friction `mu0`.
+    pub mu0: f64,
+    /// The indenter's shape (exactly one variant).
+    pub indenter: Indenter,
+    /// Mean indentation or mean normal force (exactly one).
+    pub loading: Loading,
+    /// Normal oscillation.
+    pub oscillation: Oscillation,
+    /// Sliding velocities (exactly one of `values_m_per_s`, `sweep`).
+    pub velocity: VelocitySpec,
+}
+
+/// Young's moduli, Poisson ratios and optional shear moduli (else `E/(2(1 + nu))`).
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Materials {
+    /// Young's modulus of body 1 [Pa].
+    pub e1_pa: f64,
+    /// Poisson ratio of body 1, in (-1, 0.5].
+    pub nu1: f64,
+    /// Young's modulus of body 2 [Pa].
+    pub e2_pa: f64,
+    /// Poisson ratio of body 2, in (-1, 0.5].
+    pub nu2: f64,
+    /// Shear modulus of body 1 [Pa] (default `E1/(2(1 + nu1))`).
+    #[serde(default)]
+    pub g1_pa: Option<f64>,
+    /// Shear modulus of body 2 [Pa] (default `E2/(2(1 + nu2))`).
+    #[serde(default)]
+    pub g2_pa: Option<f64>,
+}
+
+/// The indenter.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum Indenter {
+    /// Flat cylindrical punch.
+    FlatPunch {
+        /// Punch radius [m].
+        radius_m: f64,
+    },
+    /// Sphere (paraboloid `r^2/(2R)`, Hertz).
+    Sphere {
+        /// Sphere radius [m].
+        radius_m: f64,
+    },
+    /// Cone: give the half-angle (axis to surface) or the surface slope.
+    Cone {
+        /// Half-angle between the axis and the surface, degrees, in (0, 90).
+        #[serde(default)]
+        half_angle_deg: Option<f64>,
+        /// Surface slope `tan(90 deg - half angle)` (dimensionless).
+        #[serde(default)]
+        slope: Option<f64>,
+    },
+    /// Power law `f(r) = c r^n`.
+    PowerLaw {
+        /// Coefficient `c` [m^(1 - n)].
+        c: f64,
+        /// Exponent `n`, within [0.05, 1e6].
+        n: f64,
+    },
+}
+
+/// Displacement or load control (exactly one field).
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Loading {
+    /// Mean indentation `u_z0` [m].
+    #[serde(default)]
+    pub mean_indentation_m: Option<f64>,
+    /// Period-averaged normal force [N] (load control).
+    #[serde(default)]
+    pub mean_normal_force_n: Option<f64>,
+}
+
+/// The imposed normal oscillation `u_z0 - du cos(2 pi f t)`.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Oscillation {
+    /// Amplitude `du` [m] (or give `amplitude_fraction`).
+    #[serde(default)]
+    pub amplitude_m: Option<f64>,
+    /// Amplitude as a fraction of the mean indentation, `du/u_z0`.
+    #[serde(default)]
+    pub amplitude_fraction: Option<f64>,
+    /// Frequency `f` [Hz] (`omega = 2 pi f`).
+    pub frequency_hz: f64,
+}
+
+/// Sliding velocities.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct VelocitySpec {
+    /// Explicit velocities [m/s].
+    #[serde(default)]
+    pub values_m_per_s: Option<Vec<f64>>,
+    /// A sweep.
+    #[serde(default)]
+    pub sweep: Option<Sweep>,
+}
+
+/// `count` velocities from `start` to `stop` (inclusive), linear or logarithmic.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Sweep {
+    /// First velocity [m/s].
+    pub start_m_per_s: f64,
+    /// Last velocity [m/s].
+    pub stop_m_per_s: f64,
+    /// Number of velocities, 1 to 10^6.
+    pub count: usize,
+    /// Logarithmic spacing (needs `start > 0`).
+    #[serde(default)]
+    pub log: bool,
+}
+
+/// One velocity's answer.
+#[derive(Debug, Clone, Serialize)]
+pub struct Row {
+    /// Sliding velocity [m/s].
+    pub velocity_m_per_s: f64,
+    /// `vbar` (eq. 3).
+    pub vbar: f64,
+    /// `vhat` (eq. 15).
+    pub vhat: f64,
+    /// Macroscopic coefficient of friction.
+    pub mu_macro: f64,
+    /// `mu_macro / mu0`.
+    pub mu_ratio: f64,
+    /// Mean friction force [N].
+    pub mean_friction_force_n: f64,
+    /// Mean normal force [N].
+    pub mean_normal_force_n: f64,
+    /// `sliding` at or above the critical velocity, else `stick_slip`.
+    pub regime: String,
+}
+
+/// A scene's answer.
+#[derive(Debug, Clone, Serialize)]
+pub struct SceneResult {
+    /// The scene's name, if any.
+    pub name: Option<String>,
+    /// Effective modulus `E*` [Pa] (eq. 23).
+    pub e_star_pa: f64,
+    /// Effective shear modulus `G*` [Pa] (eq. 24).
+    pub g_star_pa: f64,
+    /// Mean indentation [m] (given, or solved under load control).
+    pub mean_indentation_m: f64,
+    /// Oscillation amplitude [m].
+    pub amplitude_m: f64,
+    /// `du/u0`.
+    pub amplitude_ratio: f64,
+    /// Contact radius at the mean indentation [m].
+    pub contact_radius_m: f64,
+    /// Normal contact stiffness at the mean indentation [N/m].
+    pub kz_n_per_m: f64,
+    /// Tangential contact stiffness [N/m].
+    pub kx_n_per_m: f64,
+    /// Critical velocity (eq. 26) [m/s]: no reduction at or above it.
+    pub critical_velocity_m_per_s: f64,
+    /// Static coefficient of friction (the limit `v -> 0+`).
+    pub mu_static: f64,
+    /// Period-averaged normal force [N].
+    pub mean_normal_force_n: f64,
+    /// Whether the contact centre loses contact during each period.
+    pub jumping: bool,
+    /// Notes on the loading.
+    pub note: String,
+    /// One row per velocity.
+    pub rows: Vec<Row>,
+}
+
+/// Parse a scene from JSON text; `source` names the file in errors.
+pub fn parse(text: &str, source: &str) -> Result<Scene> {
+    serde_json::from_str(text).map_err(|e| Error::Parse { context: source.into(), reason: e.to_string() })
+}
+
+/// `Gamma(x)` for `x > 0` (Lanczos, g = 7, 9 terms; relative error ~1e-15).
+pub fn gamma(x: f64) -> f64 {
+    const G: [f64; 9] = [
+        0.999_999_999_999_809_9,
+        676.520_368_121_885_1,
+        -1_259.139_216_722_402_8,
+        771.323_428_777_653_1,
+        -176.615_029_162_140_6,
+        12.507_343_278_686_905,
+        -0.138_571_095_265_720_12,
+        9.984_369_578_019_572e-6,
+        1.505_632_735_149_311_6e-7,
+    ];
+    if x < 0.5 {
+        PI / ((PI * x).sin() * gamma(1.0 - x))
+    } else {
+        let x = x - 1.0;
+        let t = x + 7.5;
+        let a = G.iter().enumerate().skip(1).fold(G[0], |acc, (i, g)| acc + g / (x + i as f64));
+        (2.0 * PI).sqrt() * t.powf(x + 0.5) * (-t).exp() * a
+    }
+}
+
+/// `kappa(n) = sqrt(pi) Gamma(n/2 + 1) / Gamma(n/2 + 1/2)`: the MDR factor of `r^n`.
+pub fn kappa(n: f64) -> f64 {
+    PI.sqrt() * gamma(0.5 * n + 1.0) / gamma(0.5 * n + 0.5)
+}
+
+struct Checked {
+    e_star: f64,
+    g_star: f64,
+    mu0: f64,
+    omega: f64,
+    shape: Shape,
+    /// Flat: punch radius; MDR: `kappa c` of `g = kappa c x^n`.
+    geometry: f64,
+    velocities: Vec<f64>,
+}
+
+fn field(source: &str, path: &str, value: f64, ok: bool, what: &str) -> Result<f64> {
+    if value.is_finite() && ok {
+        Ok(value)
+    } else {
+        Err(Error::Parse { context: format!("{source}: {path}"), reason: format!("{value:?} {what}") })
+    }
+}
+
+fn check(s: &Scene, source: &str) -> Result<Checked> {
+    let m = &s.materials;
+    let pos = |p: &str, v: f64| field(source, p, v, v > 0.0, "must be finite and > 0");
+    let nu = |p: &str, v: f64| field(source, p, v, v > -1.0 && v <= 0.5, "must be in (-1, 0.5]");
+    let (e1, e2) = (pos("materials.e1_pa", m.e1_pa)?, pos("materials.e2_pa", m.e2_pa)?);
+    let (n1, n2) = (nu("materials.nu1", m.nu1)?, nu("materials.nu2", m.nu2)?);
+    let g1 = match m.g1_pa {
+        Some(g) => pos("materials.g1_pa", g)?,
+        None => e1 / (2.0 * (1.0 + n1)),
+    };
+    let g2 = match m.g2_pa {
+        Some(g) => pos("materials.g2_pa", g)?,
+        None => e2 / (2.0 * (1.0 + n2)),
+    };
+    let e_star = 1.0 / ((1.0 - n1 * n1) / e1 + (1.0 - n2 * n2) / e2);
+    let g_star = 1.0 / ((2.0 - n1) / (4.0 * g1) + (2.0 - n2) / (4.0 * g2));
+    let mu0 = pos("mu0", s.mu0)?;
+    let omega = 2.0 * PI * pos("oscillation.frequency_hz", s.oscillation.frequency_hz)?;
+    let (shape, geometry) = match &s.indenter {
+        Indenter::FlatPunch { radius_m } => (Shape::Flat, pos("indenter.flat_punch.radius_m", *radius_m)?),
+        Indenter::Sphere { radius_m } => (Shape::Power(2.0), 1.0 / pos("indenter.sphere.radius_m", *radius_m)?),
+        Indenter::Cone { half_angle_deg, slope } => {
+            let slope = match (half_angle_deg, slope) {
+                (Some(h), None) => {
+                    let h =
+                        field(source, "indenter.cone.half_angle_deg", *h, *h > 0.0 && *h < 90.0, "must be in (0, 90)")?;
+                    1.0 / h.to_radians().tan()
+                }
+                (None, Some(sl)) => pos("indenter.cone.slope", *sl)?,
+                _ => {
+                    return Err(Error::Parse {
+                        context: format!("{source}: indenter.cone"),
+                        reason: "give exactly one of half_angle_deg, slope".into(),
+                    })
+                }
+            };
+            (Shape::Power(1.0), PI / 2.0 * slope)
+        }
+        Indenter::PowerLaw { c, n } => {
+            let n = field(
+                source,
+                "indenter.power_law.n",
+                *n,
+                (MIN_EXPONENT..=MAX_EXPONENT).contains(n),
+                "must be in [0.05, 1e6]",
+            )?;
+            (Shape::Power(n), kappa(n) * pos("indenter.power_law.c", *c)?)
+        }
+    };
+    let velocities = match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
+        (Some(v), None) => {
+            if v.is_empty() || v.len() > 1_000_000 {
+                return Err(Error::Parse {
+                    context: format!("{source}: velocity.values_m_per_s"),
+                    reason: "needs 1 to 10^6 values".into(),
+                });
+            }
+            v.iter()
+                .enumerate()
+                .map(|(i, &x)| {
+                    field(source, &format!("velocity.values_m_per_s[{i}]"), x, x >= 0.0, "must be finite and >= 0")
+                })
+                .collect::<Result<Vec<_>>>()?
+        }
+        (None, Some(sw)) => {
+            let a = field(
+                source,
+                "velocity.sweep.start_m_per_s",
+                sw.start_m_per_s,
+                sw.start_m_per_s >= 0.0,
+                "must be >= 0",
+            )?;
+            let b = field(
+                source,
+                "velocity.sweep.stop_m_per_s",
+                sw.stop_m_per_s,
+                sw.stop_m_per_s >= a,
+                "must be >= start",
+            )?;
+            if sw.count == 0 || sw.count > 1_000_000 {
+                return Err(Error::Parse {
+                    context: format!("{source}: velocity.sweep.count"),
+                    reason: "must be 1 to 10^6".into(),
+                });
+            }
+            if sw.log && a <= 0.0 {
+                return Err(Error::Parse {
+                    context: format!("{source}: velocity.sweep.start_m_per_s"),
+                    reason: "a log sweep needs start > 0".into(),
+                });
+            }
+            let k = sw.count;
+            (0..k)
+                .map(|i| {
+                    let t = if k == 1 { 0.0 } else { i as f64 / (k - 1) as f64 };
+                    if i + 1 == k {
+                        b
+                    } else if sw.log {
+                        a * (b / a).powf(t)
+                    } else {
+                        a + (b - a) * t
+                    }
+                })
+                .collect()
+        }
+        _ => {
+            return Err(Error::Parse {
+                context: format!("{source}: velocity"),
+                reason: "give exactly one of values_m_per_s, sweep".into(),
+            })
+        }
+    };
+    Ok(Checked { e_star, g_star, mu0, omega, shape, geometry, velocities })
+}
+
+/// Contact radius, `kz`, and the mean normal force [N] at mean indentation `u0`, amplitude `du`.
+fn contact(c: &Checked, u0: f64, du: f64) -> (f64, f64, f64) {
+    let amp = du / u0;
+    match c.shape {
+        Shape::Flat => {
+            let kz = 2.0 * c.e_star * c.geometry;
+            let m = if amp <= 1.0 { 1.0 } else { amp * crate::spring::mean_normal(1.0 / amp) };
+            (c.geometry, kz, kz * u0 * m)
+        }
+        Shape::Power(n) => {
+            let xc = (u0 / c.geometry).powf(1.0 / n);
+            let m = mdr::power_law(n, 1.5, amp, mdr::DEFAULT_TOL, true).mean_normal.unwrap_or(f64::NAN);
+            (xc, 2.0 * c.e_star * xc, c.e_star * xc * u0 * m)
+        }
+        Shape::Tabulated(..) => (f64::NAN, f64::NAN, f64::NAN),
+    }
+}
+
+/// Solve a scene.
+pub fn solve(s: &Scene, source: &str) -> Result<SceneResult> {
+    let c = check(s, source)?;
+    let o = &s.oscillation;
+    let amp_of = |u0: f64| -> Result<f64> {
+        match (o.amplitude_m, o.amplitude_fraction) {
+            (Some(d), None) => field(source, "oscillation.amplitude_m", d, d >= 0.0, "must be finite and >= 0"),
+            (None, Some(f)) => {
+                Ok(u0 * field(source, "oscillation.amplitude_fraction", f, f >= 0.0, "must be finite and >= 0")?)
+            }
+            _ => Err(Error::Parse {
+                context: format!("{source}: oscillation"),
+                reason: "give exactly one of amplitude_m, amplitude_fraction".into(),
+            }),
+        }
+    };
+    let l = &s.loading;
+    let (u0, note) = match (l.mean_indentation_m, l.mean_normal_force_n) {
+        (Some(u), None) => {
+            (field(source, "loading.mean_indentation_m", u, u > 0.0, "must be finite and > 0")?, String::new())
+        }
+        (None, Some(f)) => {
+            let f = field(source, "loading.mean_normal_force_n", f, f > 0.0, "must be finite and > 0")?;
+            (
+                solve_load(&c, f, &amp_of, source)?,
+                "load control: u_z0 solved so that the period-averaged normal force equals \
+              mean_normal_force_n; with contact loss this differs from the static force-indentation relation"
+                    .into(),
+            )
+        }
+        _ => {
+            return Err(Error::Parse {
+                context: format!("{source}: loading"),
+                reason: "give exactly one of mean_indentation_m, mean_normal_force_n".into(),
+            })
+        }
+    };
+    let du = amp_of(u0)?;
+    let amp = du / u0;
+    let (xc, kz, fbar) = contact(&c, u0, du);
+    let ratio = c.g_star / c.e_star;
+    let v_crit = c.mu0 * c.omega * du / ratio;
+    let mu_static = match c.shape {
+        Shape::Flat => flat::mu_static_ratio(amp),
+        Shape::Power(n) => mdr::mu_static_ratio(n, amp, mdr::DEFAULT_TOL),
+        Shape::Tabulated(..) => f64::NAN,
+    } * c.mu0;
+    let rows = c
+        .velocities
+        .par_iter()
+        .map(|&v0| {
+            // eq. 3 with kx/kz = G*/E*; du = 0 means no oscillation (vbar infinite: mu0).
+            let vbar = if du > 0.0 { ratio * v0 / (c.mu0 * c.omega * du) } else { f64::MAX };
+            let mu = if vbar >= 1.0 { 1.0 } else { evaluate(&c.shape, vbar, amp)?.ratio.mu_ratio };
+            Ok(Row {
+                velocity_m_per_s: v0,
+                vbar,
+                vhat: vbar * amp,
+                mu_macro: mu * c.mu0,
+                mu_ratio: mu,
+                mean_friction_force_n: mu * c.mu0 * fbar,
+                mean_normal_force_n: fbar,
+                regime: if vbar >= 1.0 { "sliding" } else { "stick_slip" }.into(),
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(SceneResult {
+        name: s.name.clone(),
+        e_star_pa: c.e_star,
+        g_star_pa: c.g_star,
+        mean_indentation_m: u0,
+        amplitude_m: du,
+        amplitude_ratio: amp,
+        contact_radius_m: xc,
+        kz_n_per_m: kz,
+        kx_n_per_m: kz * ratio,
+        critical_velocity_m_per_s: v_crit,
+        mu_static,
+        mean_normal_force_n: fbar,
+        jumping: amp > 1.0,
+        note,
+        rows,
+    })
+}
+
+/// `u0` with period-averaged normal force `f` (the force grows with `u0`).
+fn solve_load(c: &Checked, f: f64, amp_of: &dyn Fn(f64) -> Result<f64>, source: &str) -> Result<f64> {
+    let force = |u0: f64| -> f64 {
+        let du = amp_of(u0).unwrap_or(f64::NAN);
+        contact(c, u0, du).2
+    };
+    // Static guess (no oscillation), then bracket by factors of 2 in u0.
+    let guess = match c.shape {
+        Shape::Flat => f / (2.0 * c.e_star * c.geometry),
+        Shape::Power(n) => (f * c.geometry.powf(1.0 / n) * (n + 1.0) / (2.0 * n * c.e_star)).powf(n / (n + 1.0)),
+        Shape::Tabulated(..) => f64::NAN,
+    };
+    let (mut lo, mut hi) = (guess, guess);
+    for _ in 0..200 {
+        if force(lo) <= f {
+            break;
+        }
+        lo *= 0.5;
+    }
+    for _ in 0..200 {
+        if force(hi) >= f {
+            break;
+        }
+        hi *= 2.0;
+    }
+    if !(force(lo) <= f && force(hi) >= f) {
+        return Err(Error::Parse {
+            context: format!("{source}: loading.mean_normal_force_n"),
+            reason: format!("{f:?} N cannot be reached with a positive mean indentation at this amplitude"),
+        });
+    }
+    Ok(root::bracketed(|u| force(u) - f, lo, hi, 1e-15).x)
+}
+
+/// The JSON Schema of the scene file (schemars).
+pub fn schema() -> String {
+    serde_json::to_string_pretty(&schemars::schema_for!(Scene)).unwrap_or_default()
+}
+
+/// CSV of a scene's rows.
+pub fn to_csv(r: &SceneResult) -> String {
+    let mut s =
+        String::from("velocity_m_per_s,vbar,vhat,mu_macro,mu_ratio,mean_friction_force_n,mean_normal_force_n,regime\n");
+    for x in &r.rows {
+        let n = crate::output::num;
+        s += &format!(
+            "{},{},{},{},{},{},{},{}\n",
+            n(x.velocity_m_per_s),
+            n(x.vbar),
+            n(x.vhat),
+            n(x.mu_macro),
+            n(x.mu_ratio),
+            n(x.mean_friction_force_n),
+            n(x.mean_normal_force_n),
+            x.regime
+        );
+    }
+    s
+}

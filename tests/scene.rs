@@ -1,0 +1,124 @@
+//! Physical scenes: unit invariance, load control, stiffness checks, the schema, the examples.
+use fricosc::scene::{parse, solve, SceneResult};
+use std::f64::consts::PI;
+
+fn run(json: &str) -> SceneResult {
+    solve(&parse(json, "test.json").unwrap(), "test.json").unwrap()
+}
+
+fn sphere(e: f64, r: f64, u0: f64, du: f64, f: f64, v: &[f64]) -> String {
+    format!(
+        r#"{{"materials": {{"e1_pa": {e:?}, "nu1": 0.3, "e2_pa": {e:?}, "nu2": 0.3}}, "mu0": 0.4,
+            "indenter": {{"sphere": {{"radius_m": {r:?}}}}}, "loading": {{"mean_indentation_m": {u0:?}}},
+            "oscillation": {{"amplitude_m": {du:?}, "frequency_hz": {f:?}}}, "velocity": {{"values_m_per_s": {v:?}}}}}"#
+    )
+}
+
+#[test]
+fn scenes_in_different_units_with_the_same_vbar_and_amp_agree_to_1e_14() {
+    let a = run(&sphere(2e11, 5e-3, 1e-6, 1.3e-6, 1e3, &[1e-5, 3e-4, 1e-3]));
+    // Every dimension rescaled: moduli x 1e-4, lengths x 1e3, frequency x 1e-2;
+    // vbar ~ v/(omega du): velocities scale with omega du (x 10).
+    let b = run(&sphere(2e7, 5.0, 1e-3, 1.3e-3, 10.0, &[1e-4, 3e-3, 1e-2]));
+    assert!((a.amplitude_ratio / b.amplitude_ratio - 1.0).abs() < 1e-15);
+    for (x, y) in a.rows.iter().zip(&b.rows) {
+        assert!((x.vbar / y.vbar - 1.0).abs() < 1e-14);
+        assert!((x.mu_ratio - y.mu_ratio).abs() < 1e-14, "{} vs {}", x.mu_ratio, y.mu_ratio);
+    }
+}
+
+#[test]
+fn load_control_round_trips_to_1e_12() {
+    // Forces above each contact's floor (the mean force at zero mean indentation,
+    // which the oscillation alone produces): jumping and non-jumping solutions.
+    let cases = [
+        (0.5e-6, r#"{"sphere": {"radius_m": 0.01}}"#, [5.0, 50.0, 500.0]),
+        (3e-6, r#"{"cone": {"slope": 0.2}}"#, [10.0, 100.0, 1000.0]),
+        (2e-6, r#"{"flat_punch": {"radius_m": 0.002}}"#, [500.0, 5000.0, 50000.0]),
+    ];
+    for (du, shape, forces) in cases {
+        let load = |loading: &str| {
+            format!(
+                r#"{{"materials": {{"e1_pa": 1e11, "nu1": 0.25, "e2_pa": 2e11, "nu2": 0.3}}, "mu0": 0.3, "indenter": {shape},
+                    "loading": {loading}, "oscillation": {{"amplitude_m": {du:?}, "frequency_hz": 50}},
+                    "velocity": {{"values_m_per_s": [0.001]}}}}"#
+            )
+        };
+        for f in forces {
+            let solved = run(&load(&format!(r#"{{"mean_normal_force_n": {f:?}}}"#)));
+            let back = run(&load(&format!(r#"{{"mean_indentation_m": {:?}}}"#, solved.mean_indentation_m)));
+            assert!((back.mean_normal_force_n / f - 1.0).abs() < 1e-12, "{shape} F={f}: {}", back.mean_normal_force_n);
+            assert!(solved.note.contains("load control"));
+        }
+    }
+}
+
+#[test]
+fn hertz_and_flat_punch_stiffness() {
+    // No oscillation: Hertz's F = (4/3) E* R^(1/2) u0^(3/2), kz = 2 E* sqrt(R u0).
+    let (e, r, u0) = (2.1e11f64, 0.01f64, 2e-6f64);
+    let s = run(&sphere(e, r, u0, 0.0, 100.0, &[0.01]));
+    let e_star = e / (2.0 * (1.0 - 0.09));
+    assert!((s.e_star_pa / e_star - 1.0).abs() < 1e-15);
+    let hertz = 4.0 / 3.0 * e_star * r.sqrt() * u0.powf(1.5);
+    assert!((s.mean_normal_force_n / hertz - 1.0).abs() < 1e-14, "{} vs {hertz}", s.mean_normal_force_n);
+    assert!((s.kz_n_per_m / (2.0 * e_star * (r * u0).sqrt()) - 1.0).abs() < 1e-14);
+    assert_eq!(s.rows[0].mu_ratio, 1.0);
+    // G* by eq. 24 with G = E/(2(1 + nu)); critical velocity eq. 26.
+    let g = e / 2.6;
+    let g_star = 1.0 / (2.0 * (2.0 - 0.3) / (4.0 * g));
+    assert!((s.g_star_pa / g_star - 1.0).abs() < 1e-15);
+    // Flat punch: kz = 2 E* a, F = kz u0 without contact loss; eq. 26: v* = (E*/G*) mu0 omega du.
+    let flat = run(r#"{"materials": {"e1_pa": 1e11, "nu1": 0.5, "e2_pa": 1e11, "nu2": 0.5}, "mu0": 0.2,
+        "indenter": {"flat_punch": {"radius_m": 0.003}}, "loading": {"mean_indentation_m": 1e-6},
+        "oscillation": {"amplitude_fraction": 0.4, "frequency_hz": 10}, "velocity": {"values_m_per_s": [0.0]}}"#);
+    let es = 1.0 / (2.0 * 0.75 / 1e11);
+    assert!((flat.kz_n_per_m / (2.0 * es * 0.003) - 1.0).abs() < 1e-15);
+    assert!((flat.mean_normal_force_n / (flat.kz_n_per_m * 1e-6) - 1.0).abs() < 1e-15);
+    let v_star = flat.e_star_pa / flat.g_star_pa * 0.2 * 2.0 * PI * 10.0 * 0.4e-6;
+    assert!((flat.critical_velocity_m_per_s / v_star - 1.0).abs() < 1e-15);
+    assert!((flat.mu_static - 0.2 * 0.6).abs() < 1e-16);
+}
+
+#[test]
+fn the_schema_file_is_in_sync() {
+    let committed = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/scene.schema.json")).unwrap();
+    assert_eq!(
+        committed.trim_end(),
+        fricosc::scene::schema().trim_end(),
+        "run: fricosc scene --schema > data/scene.schema.json"
+    );
+}
+
+#[test]
+fn every_example_scene_runs() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/data/scenes");
+    let mut n = 0;
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        let r = solve(&parse(&std::fs::read_to_string(&p).unwrap(), "x").unwrap(), "x").unwrap();
+        assert!(!r.rows.is_empty() && r.rows.iter().all(|x| (0.0..=1.0).contains(&x.mu_ratio)), "{}", p.display());
+        n += 1;
+    }
+    assert!(n >= 3);
+}
+
+#[test]
+fn bad_scenes_name_the_file_field_and_problem() {
+    let base = sphere(2e11, 5e-3, 1e-6, 1e-7, 1e3, &[1e-3]);
+    let cases = [
+        (base.replace("\"nu1\": 0.3", "\"nu1\": 0.7"), "materials.nu1"),
+        (base.replace("\"radius_m\": 0.005", "\"radius_m\": -1.0"), "indenter.sphere.radius_m"),
+        (base.replace("\"mu0\": 0.4", "\"mu0\": 0.4, \"colour\": 1"), "unknown field"),
+        (base.replace("\"frequency_hz\": 1000.0", "\"frequency_hz\": 0.0"), "oscillation.frequency_hz"),
+        (base.replace("[0.001]", "[-0.001]"), "velocity.values_m_per_s[0]"),
+        (
+            base.replace("\"mean_indentation_m\": 1e-6", "\"mean_indentation_m\": 1e-6, \"mean_normal_force_n\": 1"),
+            "exactly one",
+        ),
+    ];
+    for (json, frag) in cases {
+        let e = parse(&json, "s.json").and_then(|s| solve(&s, "s.json")).unwrap_err().to_string();
+        assert!(e.contains("s.json") && e.contains(frag), "{frag}: {e}");
+    }
+}
