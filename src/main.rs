@@ -9,7 +9,7 @@ use fricosc::grid::{parse_number, parse_values};
 use fricosc::output::{Format, TableWriter};
 use fricosc::shape::{check_tol, evaluate_stepping, evaluate_with, Method, Shape, Stepping};
 use rayon::prelude::*;
-use std::io::{self, Read, Write};
+use std::io::{self, IsTerminal, Read, Write};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -374,13 +374,27 @@ fn run_scene(files: Vec<String>, schema: bool, format: Format) -> Result<()> {
         return Err(Error::Parse { context: "scene".into(), reason: "give a scene file (or --schema)".into() });
     }
     // Read and solve everything before the first byte is written.
-    let results: Vec<Result<fricosc::scene::SceneResult>> = files
-        .par_iter()
+    let scenes: Vec<Result<fricosc::scene::Scene>> = files
+        .iter()
         .map(|f| {
             let text = std::fs::read_to_string(f).map_err(|e| Error::Io { path: f.clone(), reason: e.to_string() })?;
-            fricosc::scene::solve(&fricosc::scene::parse(&text, f)?, f)
+            fricosc::scene::parse(&text, f)
         })
         .collect();
+    let scenes = scenes.into_iter().collect::<Result<Vec<_>>>()?;
+    // A progress bar on stderr only when it is a terminal and the work is long.
+    let total: usize = scenes.iter().map(fricosc::scene::velocity_count).sum();
+    let bar = (std::io::stderr().is_terminal() && total >= 2000).then(|| indicatif::ProgressBar::new(total as u64));
+    let tick = |k: u64| {
+        if let Some(b) = &bar {
+            b.inc(k);
+        }
+    };
+    let results: Vec<Result<fricosc::scene::SceneResult>> =
+        scenes.par_iter().zip(&files).map(|(s, f)| fricosc::scene::solve_with_progress(s, f, &tick)).collect();
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
     let results = results.into_iter().collect::<Result<Vec<_>>>()?;
     let text = match format {
         Format::Csv => results.iter().map(fricosc::scene::to_csv).collect::<Vec<_>>().join("\n"),

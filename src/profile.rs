@@ -215,6 +215,8 @@ pub struct Tabulated {
     g: Pchip,
     /// The same from every other knot (for the interpolation error).
     coarse: Option<Pchip>,
+    /// Contact radius at the mean indentation, in the table's length unit.
+    pub contact_radius: f64,
 }
 
 impl Tabulated {
@@ -224,7 +226,7 @@ impl Tabulated {
             return Err(Error::param("U0", u0, "the mean indentation must be finite and > 0"));
         }
         let (x, v) = read_table(path)?;
-        let build = |x: Vec<f64>, v: Vec<f64>| -> Result<Pchip> {
+        let build = |x: Vec<f64>, v: Vec<f64>| -> Result<(Pchip, f64)> {
             let g = if profile {
                 let f = Pchip::new(x.clone(), v);
                 let gv: Vec<f64> = x.iter().map(|&xi| mdr_transform(&f, xi)).collect();
@@ -244,16 +246,17 @@ impl Tabulated {
             let xc = g.inverse(u0);
             let z: Vec<f64> = g.knots().iter().map(|&xi| xi / xc).collect();
             let gz: Vec<f64> = g.values().iter().map(|&gi| gi / u0).collect();
-            Ok(Pchip::new(z, gz))
+            Ok((Pchip::new(z, gz), xc))
         };
         let coarse = if x.len() >= 5 {
             let xs: Vec<f64> = x.iter().step_by(2).copied().collect();
             let vs: Vec<f64> = v.iter().step_by(2).copied().collect();
-            build(xs, vs).ok()
+            build(xs, vs).ok().map(|b| b.0)
         } else {
             None
         };
-        Ok(Tabulated { g: build(x, v)?, coarse })
+        let (g, contact_radius) = build(x, v)?;
+        Ok(Tabulated { g, coarse, contact_radius })
     }
 }
 
@@ -278,9 +281,34 @@ pub fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedResult> {
     Ok(TabulatedResult { ratio, error_estimate: err, interpolation_error })
 }
 
+/// Mean normal force of the whole contact at amplitude `amp`, units
+/// `E* x_c U0` (both sides of the MDR foundation), by the same quadrature.
+pub fn mean_normal(t: &Tabulated, amp: f64) -> Result<f64> {
+    Ok(2.0 * integrate_full(&t.g, 0.5, amp)?.2)
+}
+
 fn integrate(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64)> {
     if amp == 0.0 || vbar >= 1.0 {
         return Ok((Ratio { mu_ratio: 1.0, reduction: 0.0 }, 0.0));
+    }
+    integrate_full(g, vbar, amp).map(|(r, e, _)| (r, e))
+}
+
+/// Ratio, error estimate, and the one-sided mean normal `int amp <B> dz`.
+fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
+    if amp == 0.0 {
+        // No oscillation: int (1 - G(z))_+ dz, exactly the same quadrature at amp -> 0 is singular.
+        let rule = quad::rule(32, 0.0);
+        let mut cuts: Vec<f64> = g.knots().iter().copied().filter(|&z| z < 1.0).collect();
+        cuts.push(1.0);
+        let mut nn = 0.0;
+        for w in cuts.windows(2) {
+            let h = 0.5 * (w[1] - w[0]);
+            for (&x, &wt) in rule.nodes.iter().zip(&rule.weights) {
+                nn += wt * h * (1.0 - g.eval(w[0] + h * (1.0 + x)).0);
+            }
+        }
+        return Ok((Ratio { mu_ratio: 1.0, reduction: 0.0 }, 0.0, nn));
     }
     let gmax = *g.values().last().unwrap_or(&0.0);
     if gmax < 1.0 + amp {
@@ -330,5 +358,5 @@ fn integrate(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64)> {
         ed += (b.1 - a.1).abs();
     }
     let ratio = Ratio::from_deficit(dd, nn);
-    Ok((ratio, if nn > 0.0 { ed / nn + dd * en / (nn * nn) + 1e-14 } else { 1e-14 }))
+    Ok((ratio, if nn > 0.0 { ed / nn + dd * en / (nn * nn) + 1e-14 } else { 1e-14 }, nn))
 }

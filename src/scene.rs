@@ -11,6 +11,8 @@
 //!   Gamma(n/2 + 1/2)`; contact radius at the mean indentation `x_c = (u0/(kappa c))^(1/n)`;
 //!   `kz = 2 E* x_c`, `kx = 2 G* x_c`; mean normal force `E* x_c u0` times
 //!   [`crate::mdr::MdrResult::mean_normal`].
+//! - A tabulated profile (`profile`): the table's MDR transform ([`crate::profile`]),
+//!   displacement control only.
 //! - Load control: `u0` is solved so that the *period-averaged* normal force
 //!   equals the given force. With contact loss (jumping) that differs from the
 //!   static force-indentation relation; the output says so.
@@ -95,6 +97,12 @@ pub enum Indenter {
         c: f64,
         /// Exponent `n`, within [0.05, 1e6].
         n: f64,
+    },
+    /// A tabulated axisymmetric profile `f(r)` (CSV `r,f` in metres), path
+    /// relative to the scene file (see `fricosc::profile`); displacement control only.
+    Profile {
+        /// The table.
+        file: String,
     },
 }
 
@@ -307,6 +315,8 @@ fn check(s: &Scene, source: &str) -> Result<Checked> {
             )?;
             (Shape::Power(n), kappa(n) * pos("indenter.power_law.c", *c)?)
         }
+        // Loaded in `solve`, once the mean indentation is known.
+        Indenter::Profile { .. } => (Shape::Flat, f64::NAN),
     };
     let velocities = match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
         (Some(v), None) => {
@@ -388,13 +398,31 @@ fn contact(c: &Checked, u0: f64, du: f64) -> (f64, f64, f64) {
             let m = mdr::power_law(n, 1.5, amp, mdr::DEFAULT_TOL, true).mean_normal.unwrap_or(f64::NAN);
             (xc, 2.0 * c.e_star * xc, c.e_star * xc * u0 * m)
         }
-        Shape::Tabulated(..) => (f64::NAN, f64::NAN, f64::NAN),
+        Shape::Tabulated(ref t, _) => {
+            let xc = t.contact_radius;
+            let m = crate::profile::mean_normal(t, amp).unwrap_or(f64::NAN);
+            (xc, 2.0 * c.e_star * xc, c.e_star * xc * u0 * m)
+        }
     }
 }
 
-/// Solve a scene.
+/// Solve a scene; `source` is its path (tables are found relative to it).
 pub fn solve(s: &Scene, source: &str) -> Result<SceneResult> {
-    let c = check(s, source)?;
+    solve_with_progress(s, source, &|_| {})
+}
+
+/// Number of velocities of a scene (for progress reporting), if it parses.
+pub fn velocity_count(s: &Scene) -> usize {
+    match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
+        (Some(v), _) => v.len(),
+        (None, Some(sw)) => sw.count,
+        _ => 0,
+    }
+}
+
+/// [`solve`], calling `progress(k)` after each chunk of `k` velocities.
+pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sync)) -> Result<SceneResult> {
+    let mut c = check(s, source)?;
     let o = &s.oscillation;
     let amp_of = |u0: f64| -> Result<f64> {
         match (o.amplitude_m, o.amplitude_fraction) {
@@ -409,6 +437,12 @@ pub fn solve(s: &Scene, source: &str) -> Result<SceneResult> {
         }
     };
     let l = &s.loading;
+    if matches!(s.indenter, Indenter::Profile { .. }) && l.mean_normal_force_n.is_some() {
+        return Err(Error::Parse {
+            context: format!("{source}: loading.mean_normal_force_n"),
+            reason: "load control is not available for a tabulated profile; give mean_indentation_m".into(),
+        });
+    }
     let (u0, note) = match (l.mean_indentation_m, l.mean_normal_force_n) {
         (Some(u), None) => {
             (field(source, "loading.mean_indentation_m", u, u > 0.0, "must be finite and > 0")?, String::new())
@@ -429,6 +463,13 @@ pub fn solve(s: &Scene, source: &str) -> Result<SceneResult> {
             })
         }
     };
+    if let Indenter::Profile { file } = &s.indenter {
+        let dir = std::path::Path::new(source).parent().unwrap_or(std::path::Path::new(""));
+        let path = dir.join(file);
+        let path = path.to_string_lossy();
+        let t = crate::profile::Tabulated::load(&path, u0, true)?;
+        c.shape = Shape::Tabulated(std::sync::Arc::new(t), format!("profile:{path}@{u0:?}"));
+    }
     let du = amp_of(u0)?;
     let amp = du / u0;
     let (xc, kz, fbar) = contact(&c, u0, du);
@@ -437,27 +478,29 @@ pub fn solve(s: &Scene, source: &str) -> Result<SceneResult> {
     let mu_static = match c.shape {
         Shape::Flat => flat::mu_static_ratio(amp),
         Shape::Power(n) => mdr::mu_static_ratio(n, amp, mdr::DEFAULT_TOL),
-        Shape::Tabulated(..) => f64::NAN,
+        Shape::Tabulated(..) => evaluate(&c.shape, 0.0, amp)?.ratio.mu_ratio,
     } * c.mu0;
-    let rows = c
-        .velocities
-        .par_iter()
-        .map(|&v0| {
-            // eq. 3 with kx/kz = G*/E*; du = 0 means no oscillation (vbar infinite: mu0).
-            let vbar = if du > 0.0 { ratio * v0 / (c.mu0 * c.omega * du) } else { f64::MAX };
-            let mu = if vbar >= 1.0 { 1.0 } else { evaluate(&c.shape, vbar, amp)?.ratio.mu_ratio };
-            Ok(Row {
-                velocity_m_per_s: v0,
-                vbar,
-                vhat: vbar * amp,
-                mu_macro: mu * c.mu0,
-                mu_ratio: mu,
-                mean_friction_force_n: mu * c.mu0 * fbar,
-                mean_normal_force_n: fbar,
-                regime: if vbar >= 1.0 { "sliding" } else { "stick_slip" }.into(),
-            })
+    let row = |v0: f64| -> Result<Row> {
+        // eq. 3 with kx/kz = G*/E*; du = 0 means no oscillation (vbar infinite: mu0).
+        let vbar = if du > 0.0 { ratio * v0 / (c.mu0 * c.omega * du) } else { f64::MAX };
+        // At or above the critical velocity no spring is computed.
+        let mu = if vbar >= 1.0 { 1.0 } else { evaluate(&c.shape, vbar, amp)?.ratio.mu_ratio };
+        Ok(Row {
+            velocity_m_per_s: v0,
+            vbar,
+            vhat: vbar * amp,
+            mu_macro: mu * c.mu0,
+            mu_ratio: mu,
+            mean_friction_force_n: mu * c.mu0 * fbar,
+            mean_normal_force_n: fbar,
+            regime: if vbar >= 1.0 { "sliding" } else { "stick_slip" }.into(),
         })
-        .collect::<Result<Vec<_>>>()?;
+    };
+    let mut rows = Vec::with_capacity(c.velocities.len());
+    for chunk in c.velocities.chunks(1024) {
+        rows.extend(chunk.par_iter().map(|&v| row(v)).collect::<Result<Vec<_>>>()?);
+        progress(chunk.len() as u64);
+    }
     Ok(SceneResult {
         name: s.name.clone(),
         e_star_pa: c.e_star,
