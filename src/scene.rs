@@ -12,7 +12,7 @@
 //!   `kz = 2 E* x_c`, `kx = 2 G* x_c`; mean normal force `E* x_c u0` times
 //!   [`crate::mdr::MdrResult::mean_normal`].
 //! - A tabulated profile (`profile`): the table's MDR transform ([`crate::profile`]),
-//!   displacement control only.
+//!   redone for every mean indentation the load control tries.
 //! - Load control: `u0` is solved so that the *period-averaged* normal force
 //!   equals the given force. With contact loss (jumping) that differs from the
 //!   static force-indentation relation; the output says so.
@@ -99,7 +99,7 @@ pub enum Indenter {
         n: f64,
     },
     /// A tabulated axisymmetric profile `f(r)` (CSV `r,f` in metres), path
-    /// relative to the scene file (see `fricosc::profile`); displacement control only.
+    /// relative to the scene file (see `fricosc::profile`).
     Profile {
         /// The table.
         file: String,
@@ -256,7 +256,15 @@ struct Checked {
     shape: Shape,
     /// Flat: punch radius; MDR: `kappa c` of `g = kappa c x^n`.
     geometry: f64,
+    /// A tabulated profile's path (its shape depends on the mean indentation).
+    profile: Option<String>,
     velocities: Vec<f64>,
+}
+
+/// The tabulated shape at mean indentation `u0`.
+fn tabulated(path: &str, u0: f64) -> Result<Shape> {
+    let t = crate::profile::Tabulated::load(path, u0, true)?;
+    Ok(Shape::Tabulated(std::sync::Arc::new(t), format!("profile:{path}@{u0:?}")))
 }
 
 fn field(source: &str, path: &str, value: f64, ok: bool, what: &str) -> Result<f64> {
@@ -315,8 +323,15 @@ fn check(s: &Scene, source: &str) -> Result<Checked> {
             )?;
             (Shape::Power(n), kappa(n) * pos("indenter.power_law.c", *c)?)
         }
-        // Loaded in `solve`, once the mean indentation is known.
+        // Loaded once the mean indentation is known.
         Indenter::Profile { .. } => (Shape::Flat, f64::NAN),
+    };
+    let profile = match &s.indenter {
+        Indenter::Profile { file } => {
+            let dir = std::path::Path::new(source).parent().unwrap_or(std::path::Path::new(""));
+            Some(dir.join(file).to_string_lossy().into_owned())
+        }
+        _ => None,
     };
     let velocities = match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
         (Some(v), None) => {
@@ -381,13 +396,21 @@ fn check(s: &Scene, source: &str) -> Result<Checked> {
             })
         }
     };
-    Ok(Checked { e_star, g_star, mu0, omega, shape, geometry, velocities })
+    Ok(Checked { e_star, g_star, mu0, omega, shape, geometry, profile, velocities })
 }
 
 /// Contact radius, `kz`, and the mean normal force [N] at mean indentation `u0`, amplitude `du`.
-fn contact(c: &Checked, u0: f64, du: f64) -> (f64, f64, f64) {
+fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
     let amp = du / u0;
-    match c.shape {
+    let loaded;
+    let shape = match &c.profile {
+        Some(path) => {
+            loaded = tabulated(path, u0)?;
+            &loaded
+        }
+        None => &c.shape,
+    };
+    Ok(match shape {
         Shape::Flat => {
             let kz = 2.0 * c.e_star * c.geometry;
             let m = if amp <= 1.0 { 1.0 } else { amp * crate::spring::mean_normal(1.0 / amp) };
@@ -395,15 +418,15 @@ fn contact(c: &Checked, u0: f64, du: f64) -> (f64, f64, f64) {
         }
         Shape::Power(n) => {
             let xc = (u0 / c.geometry).powf(1.0 / n);
-            let m = mdr::power_law(n, 1.5, amp, mdr::DEFAULT_TOL, true).mean_normal.unwrap_or(f64::NAN);
+            let m = mdr::power_law(*n, 1.5, amp, mdr::DEFAULT_TOL, true).mean_normal.unwrap_or(f64::NAN);
             (xc, 2.0 * c.e_star * xc, c.e_star * xc * u0 * m)
         }
-        Shape::Tabulated(ref t, _) => {
+        Shape::Tabulated(t, _) => {
             let xc = t.contact_radius;
-            let m = crate::profile::mean_normal(t, amp).unwrap_or(f64::NAN);
+            let m = crate::profile::mean_normal(t, amp)?;
             (xc, 2.0 * c.e_star * xc, c.e_star * xc * u0 * m)
         }
-    }
+    })
 }
 
 /// Solve a scene; `source` is its path (tables are found relative to it).
@@ -437,12 +460,6 @@ pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sy
         }
     };
     let l = &s.loading;
-    if matches!(s.indenter, Indenter::Profile { .. }) && l.mean_normal_force_n.is_some() {
-        return Err(Error::Parse {
-            context: format!("{source}: loading.mean_normal_force_n"),
-            reason: "load control is not available for a tabulated profile; give mean_indentation_m".into(),
-        });
-    }
     let (u0, note) = match (l.mean_indentation_m, l.mean_normal_force_n) {
         (Some(u), None) => {
             (field(source, "loading.mean_indentation_m", u, u > 0.0, "must be finite and > 0")?, String::new())
@@ -463,16 +480,12 @@ pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sy
             })
         }
     };
-    if let Indenter::Profile { file } = &s.indenter {
-        let dir = std::path::Path::new(source).parent().unwrap_or(std::path::Path::new(""));
-        let path = dir.join(file);
-        let path = path.to_string_lossy();
-        let t = crate::profile::Tabulated::load(&path, u0, true)?;
-        c.shape = Shape::Tabulated(std::sync::Arc::new(t), format!("profile:{path}@{u0:?}"));
+    if let Some(path) = &c.profile {
+        c.shape = tabulated(path, u0)?;
     }
     let du = amp_of(u0)?;
     let amp = du / u0;
-    let (xc, kz, fbar) = contact(&c, u0, du);
+    let (xc, kz, fbar) = contact(&c, u0, du)?;
     let ratio = c.g_star / c.e_star;
     let v_crit = c.mu0 * c.omega * du / ratio;
     let mu_static = match c.shape {
@@ -522,15 +535,20 @@ pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sy
 
 /// `u0` with period-averaged normal force `f` (the force grows with `u0`).
 fn solve_load(c: &Checked, f: f64, amp_of: &dyn Fn(f64) -> Result<f64>, source: &str) -> Result<f64> {
+    // NaN where the table cannot carry the contact (it then ends the bracketing).
     let force = |u0: f64| -> f64 {
         let du = amp_of(u0).unwrap_or(f64::NAN);
-        contact(c, u0, du).2
+        contact(c, u0, du).map_or(f64::NAN, |x| x.2)
     };
     // Static guess (no oscillation), then bracket by factors of 2 in u0.
-    let guess = match c.shape {
-        Shape::Flat => f / (2.0 * c.e_star * c.geometry),
-        Shape::Power(n) => (f * c.geometry.powf(1.0 / n) * (n + 1.0) / (2.0 * n * c.e_star)).powf(n / (n + 1.0)),
-        Shape::Tabulated(..) => f64::NAN,
+    let guess = match (&c.profile, &c.shape) {
+        // A tabulated profile: start from a thousandth of the table's depth.
+        (Some(path), _) => crate::profile::read_table(path)?.1.last().copied().unwrap_or(1.0) * 1e-3,
+        (None, Shape::Flat) => f / (2.0 * c.e_star * c.geometry),
+        (None, Shape::Power(n)) => {
+            (f * c.geometry.powf(1.0 / n) * (n + 1.0) / (2.0 * n * c.e_star)).powf(n / (n + 1.0))
+        }
+        (None, Shape::Tabulated(..)) => f64::NAN,
     };
     let (mut lo, mut hi) = (guess, guess);
     for _ in 0..200 {
