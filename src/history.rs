@@ -16,7 +16,7 @@ use serde::Serialize;
 use std::f64::consts::TAU;
 
 /// One sample of the forces.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Sample {
     /// Phase `omega t` (from 0 to `2 pi periods`).
     pub tau: f64,
@@ -27,6 +27,11 @@ pub struct Sample {
     /// The event at this phase, if it is one (flat punch only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub event: Option<EventKind>,
+    /// For MDR shapes, the chosen springs' `[normal, tangential]` forces per unit
+    /// length of the foundation, units `E* u0` (and `mu0 E* u0`), in the order of
+    /// [`History::spring_positions`].
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub springs: Vec<[f64; 2]>,
 }
 
 /// A force history.
@@ -40,6 +45,9 @@ pub struct History {
     pub amp: f64,
     /// Units of the forces.
     pub units: String,
+    /// Positions `x/x_c` of the chosen springs (MDR shapes).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub spring_positions: Vec<f64>,
     /// The samples, in phase order.
     pub samples: Vec<Sample>,
 }
@@ -64,9 +72,24 @@ pub fn spring_force(sp: &Spring, tau: f64) -> f64 {
 pub const MAX_SAMPLES: usize = 10_000_000;
 
 /// The history of `periods` periods with `samples` uniform samples (plus events).
-pub fn history(shape: &Shape, vbar: f64, amp: f64, periods: usize, samples: usize, springs: usize) -> Result<History> {
+/// `chosen`: positions `x/x_c >= 0` of springs of an MDR shape to report one by one.
+pub fn history(
+    shape: &Shape,
+    vbar: f64,
+    amp: f64,
+    periods: usize,
+    samples: usize,
+    springs: usize,
+    chosen: &[f64],
+) -> Result<History> {
     check_nonneg("vbar", vbar)?;
     check_nonneg("amp", amp)?;
+    for &x in chosen {
+        check_nonneg("spring position", x)?;
+    }
+    if !chosen.is_empty() && *shape == Shape::Flat {
+        return Err(Error::InvalidShape { spec: shape.name(), reason: "chosen springs need an MDR shape".into() });
+    }
     if periods == 0 || samples == 0 || springs == 0 {
         return Err(Error::param("periods/samples/springs", 0.0, "must be >= 1"));
     }
@@ -99,7 +122,7 @@ pub fn history(shape: &Shape, vbar: f64, amp: f64, periods: usize, samples: usiz
                     } else {
                         (1.0, 1.0)
                     };
-                    Sample { tau, normal, tangential, event }
+                    Sample { tau, normal, tangential, event, springs: vec![] }
                 })
                 .collect();
             ("normal: kz u0; tangential: mu0 kz u0".to_string(), samples)
@@ -114,6 +137,13 @@ pub fn history(shape: &Shape, vbar: f64, amp: f64, periods: usize, samples: usiz
                 vec![]
             };
             taus.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let picked: Vec<(f64, Option<Spring>)> = chosen
+                .iter()
+                .map(|&x| {
+                    let g = x.powf(n);
+                    (g, (amp > 0.0).then(|| Spring::with_events((1.0 - g) / amp, vbar)))
+                })
+                .collect();
             let samples = taus
                 .iter()
                 .map(|&(tau, _)| {
@@ -125,7 +155,14 @@ pub fn history(shape: &Shape, vbar: f64, amp: f64, periods: usize, samples: usiz
                     } else {
                         normal
                     };
-                    Sample { tau, normal, tangential, event: None }
+                    let springs = picked
+                        .iter()
+                        .map(|(g, sp)| {
+                            let nrm = (1.0 - g - amp * tau.cos()).max(0.0);
+                            [nrm, sp.as_ref().map_or(nrm, |s| amp * spring_force(s, tau))]
+                        })
+                        .collect();
+                    Sample { tau, normal, tangential, event: None, springs }
                 })
                 .collect();
             ("normal: E* x_c u0; tangential: mu0 E* x_c u0 (x_c: contact radius at u0)".to_string(), samples)
@@ -137,7 +174,7 @@ pub fn history(shape: &Shape, vbar: f64, amp: f64, periods: usize, samples: usiz
             })
         }
     };
-    Ok(History { shape: shape.name(), vbar, amp, units, samples: out })
+    Ok(History { shape: shape.name(), vbar, amp, units, spring_positions: chosen.to_vec(), samples: out })
 }
 
 /// CSV: `tau,normal,tangential,event`.

@@ -81,6 +81,9 @@ enum Command {
         /// Springs summed for MDR shapes.
         #[arg(long, default_value_t = 4000)]
         springs: usize,
+        /// MDR shapes: report these springs too (positions x/x_c, comma list; JSON only).
+        #[arg(long)]
+        spring_at: Option<String>,
         /// json, csv or svg.
         #[arg(long, default_value = "json")]
         format: String,
@@ -323,11 +326,14 @@ fn run_history(
     shape: &str,
     velocity: &Velocity,
     amp: &str,
-    periods: usize,
-    samples: usize,
-    springs: usize,
+    (periods, samples, springs): (usize, usize, usize),
+    spring_at: Option<&str>,
     format: &str,
 ) -> Result<()> {
+    let chosen = match spring_at {
+        Some(t) => parse_values("--spring-at", t)?,
+        None => vec![],
+    };
     let shape = Shape::parse(shape)?;
     let amp = parse_number("--amp", amp)?;
     let vbar = match (&velocity.vbar, &velocity.vhat) {
@@ -338,7 +344,7 @@ fn run_history(
     if !matches!(format, "json" | "csv" | "svg") {
         return Err(Error::Parse { context: "--format".into(), reason: format!("'{format}' is not json, csv or svg") });
     }
-    let h = fricosc::history::history(&shape, vbar, amp, periods, samples, springs)?;
+    let h = fricosc::history::history(&shape, vbar, amp, periods, samples, springs, &chosen)?;
     let text = match format {
         "json" => serde_json::to_string_pretty(&h)
             .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })?,
@@ -484,8 +490,8 @@ fn main() -> ExitCode {
             let mut o = io::stdout().lock();
             writeln!(o, "wrote {} figures to {out}: {}", names.len(), names.join(", ")).map_err(io_err)
         }),
-        Command::History { shape, velocity, amp, periods, samples, springs, format } => {
-            run_history(&shape, &velocity, &amp, periods, samples, springs, &format)
+        Command::History { shape, velocity, amp, periods, samples, springs, spring_at, format } => {
+            run_history(&shape, &velocity, &amp, (periods, samples, springs), spring_at.as_deref(), &format)
         }
         Command::Claims { format } => {
             let claims = fricosc::claims::check();

@@ -11,7 +11,7 @@ fn mean(samples: &[(f64, f64)]) -> f64 {
 #[test]
 fn flat_history_is_bounded_by_the_normal_force_and_averages_to_mu() {
     for (v, a) in [(0.3, 0.5), (0.3, 1.5), (0.95, 2.0), (1.2, 0.7)] {
-        let h = history(&Shape::Flat, v, a, 1, 20000, 1).unwrap();
+        let h = history(&Shape::Flat, v, a, 1, 20000, 1, &[]).unwrap();
         for s in &h.samples {
             assert!(s.tangential <= s.normal + 1e-15 && s.tangential >= 0.0);
         }
@@ -26,9 +26,15 @@ fn flat_history_is_bounded_by_the_normal_force_and_averages_to_mu() {
 #[test]
 fn mdr_history_averages_to_the_exact_mu() {
     let (v, a) = (0.3, 0.4);
-    let h = history(&Shape::Power(2.0), v, a, 1, 2000, 4000).unwrap();
+    let h = history(&Shape::Power(2.0), v, a, 1, 2000, 4000, &[0.0, 1.1]).unwrap();
     let t: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.tangential)).collect();
     let n: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.normal)).collect();
     let mu = evaluate(&Shape::Power(2.0), v, a).unwrap().ratio.mu_ratio;
     assert!((mean(&t) / mean(&n) - mu).abs() < 1e-5, "{} vs {mu}", mean(&t) / mean(&n));
+    // Chosen springs: the centre one is a flat punch with s = 1/amp; the outer one jumps.
+    let c: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.springs[0][1])).collect();
+    let cn: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.springs[0][0])).collect();
+    let flat = evaluate(&Shape::Flat, v, a).unwrap().ratio.mu_ratio;
+    assert!((mean(&c) / mean(&cn) - flat).abs() < 1e-6);
+    assert!(h.samples.iter().any(|s| s.springs[1][0] == 0.0), "the spring at 1.1 x_c loses contact");
 }
