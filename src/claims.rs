@@ -82,6 +82,21 @@ fn dimensional_stepper(p: &Physical, m: usize) -> f64 {
     sf / (mu0 * sn)
 }
 
+/// Largest `f(v, p)` over `v` in `{0, 1/k, ..., 1}` and `p` in `ps`, and where.
+fn worst_over(ps: &[f64], k: usize, f: impl Fn(f64, f64) -> f64) -> (f64, (f64, f64)) {
+    let mut best = (0.0f64, (0.0, 0.0));
+    for &p in ps {
+        for j in 0..=k {
+            let v = j as f64 / k as f64;
+            let d = f(v, p);
+            if d > best.0 {
+                best = (d, (v, p));
+            }
+        }
+    }
+    best
+}
+
 /// Check every claim.
 pub fn check() -> Vec<Claim> {
     let mut out = vec![];
@@ -106,18 +121,8 @@ pub fn check() -> Vec<Claim> {
     });
 
     // Eq. 11's error, relative to amp.
-    let (mut worst, mut at) = (0.0f64, (0.0, 0.0));
-    for i in 1..=10 {
-        let a = i as f64 / 10.0;
-        for j in 0..=1000 {
-            let v = j as f64 / 1000.0;
-            let e = (seed::eq11(v, a) - mu_flat(v, a)).abs() / a;
-            if e > worst {
-                worst = e;
-                at = (v, a);
-            }
-        }
-    }
+    let amps: Vec<f64> = (1..=10).map(|i| i as f64 / 10.0).collect();
+    let (worst, at) = worst_over(&amps, 1000, |v, a| (seed::eq11(v, a) - mu_flat(v, a)).abs() / a);
     out.push(Claim {
         claim: "eq. 11 (empirical fit, amp <= 1)".into(),
         seed_says: "approximates the numerical results 'very accurately'".into(),
@@ -199,18 +204,8 @@ pub fn check() -> Vec<Claim> {
     });
 
     // Eq. 28 against eq. 27.
-    let (mut w28, mut at28) = (0.0f64, (0.0, 0.0));
-    for i in 0..=100 {
-        let ms = i as f64 / 100.0;
-        for j in 0..=1000 {
-            let v = j as f64 / 1000.0;
-            let d = (seed::eq28(v, ms) - seed::eq27(v, ms)).abs();
-            if d > w28 {
-                w28 = d;
-                at28 = (v, ms);
-            }
-        }
-    }
+    let statics: Vec<f64> = (0..=100).map(|i| i as f64 / 100.0).collect();
+    let (w28, at28) = worst_over(&statics, 1000, |v, ms| (seed::eq28(v, ms) - seed::eq27(v, ms)).abs());
     out.push(Claim {
         claim: "eq. 28 vs eq. 27".into(),
         seed_says: "differs from (27) by 1 % or less".into(),
@@ -250,22 +245,13 @@ pub fn check() -> Vec<Claim> {
     let mut parts = vec![];
     let mut w27 = 0.0f64;
     for (name, f) in &shapes {
-        let (mut w, mut at) = (0.0f64, (0.0, 0.0));
-        for a in [0.2, 0.4, 0.6, 0.8, 1.0, 1.5, 2.0] {
-            let ms = match *name {
-                "flat" => flat::mu_static_ratio(a),
-                "parabolic" => mu_static_ratio(2.0, a, DEFAULT_TOL),
-                _ => mu_static_ratio(1.0, a, DEFAULT_TOL),
-            };
-            for j in 0..=200 {
-                let v = j as f64 / 200.0;
-                let d = (seed::eq27(v, ms) - f(v, a)).abs();
-                if d > w {
-                    w = d;
-                    at = (v, a);
-                }
-            }
-        }
+        let mu_static = |a: f64| match *name {
+            "flat" => flat::mu_static_ratio(a),
+            "parabolic" => mu_static_ratio(2.0, a, DEFAULT_TOL),
+            _ => mu_static_ratio(1.0, a, DEFAULT_TOL),
+        };
+        let (w, at) =
+            worst_over(&[0.2, 0.4, 0.6, 0.8, 1.0, 1.5, 2.0], 200, |v, a| (seed::eq27(v, mu_static(a)) - f(v, a)).abs());
         w27 = w27.max(w);
         parts.push(format!("{name} {w:.3} (vbar {}, amp {})", at.0, at.1));
     }

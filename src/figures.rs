@@ -38,6 +38,18 @@ pub struct Figure {
     pub curves: Vec<Curve>,
 }
 
+/// A figure of `mu/mu0` against `vbar` on the seed's axes.
+fn against_vbar(name: &str, title: &str, curves: Vec<Curve>) -> Figure {
+    Figure {
+        name: name.into(),
+        title: title.into(),
+        x_label: "vbar (eq. 3)".into(),
+        y_label: "mu_macro / mu0".into(),
+        range: [0.0, 1.2, 0.0, 1.05],
+        curves,
+    }
+}
+
 fn grid(x0: f64, x1: f64, n: usize) -> Vec<f64> {
     (0..n).map(|k| x0 + (x1 - x0) * k as f64 / (n - 1) as f64).collect()
 }
@@ -69,14 +81,7 @@ pub fn build() -> Result<Vec<Figure>> {
         c.push(exact(&flat, format!("du/u0 = {a}"), a, &vb, |v| v)?);
         c.push(approx(format!("eq. 11, du/u0 = {a}"), Some(a), &vb, |v| seed::eq11(v, a)));
     }
-    figs.push(Figure {
-        name: "fig3".into(),
-        title: "Fig. 3: flat punch, mu/mu0 vs vbar (solid exact, dashed eq. 11)".into(),
-        x_label: "vbar (eq. 3)".into(),
-        y_label: "mu_macro / mu0".into(),
-        range: [0.0, 1.2, 0.0, 1.05],
-        curves: c,
-    });
+    figs.push(against_vbar("fig3", "Fig. 3: flat punch, mu/mu0 vs vbar (solid exact, dashed eq. 11)", c));
 
     // Fig. 3 inset: amp = 1 at low velocity, eq. 12.
     let vs = grid(0.0, 0.1, 201);
@@ -115,14 +120,7 @@ pub fn build() -> Result<Vec<Figure>> {
         c.push(exact(&flat, format!("du/u0 = {a:.1}"), a, &vb, |v| v)?);
     }
     c.push(approx("eq. 17".into(), None, &vb, seed::eq17));
-    figs.push(Figure {
-        name: "fig5".into(),
-        title: "Fig. 5: flat punch, jumping, du/u0 = 1 ... 2 (solid exact, dashed eq. 17)".into(),
-        x_label: "vbar (eq. 3)".into(),
-        y_label: "mu_macro / mu0".into(),
-        range: [0.0, 1.2, 0.0, 1.05],
-        curves: c,
-    });
+    figs.push(against_vbar("fig5", "Fig. 5: flat punch, jumping, du/u0 = 1 ... 2 (solid exact, dashed eq. 17)", c));
 
     // Fig. 5 inset: the low-velocity slope against the amplitude.
     let aa = grid(1.0, 5.0, 161);
@@ -155,14 +153,7 @@ pub fn build() -> Result<Vec<Figure>> {
         c.push(approx(format!("eq. 27, du/u0 = {a}"), Some(a), &vb, |v| seed::eq27(v, ms)));
         c.push(approx(format!("eq. 28, du/u0 = {a}"), Some(a), &vb, |v| seed::eq28(v, ms)));
     }
-    figs.push(Figure {
-        name: "fig7".into(),
-        title: "Fig. 7: parabolic, mu/mu0 vs vbar (solid exact, dashed eqs. 27, 28)".into(),
-        x_label: "vbar (eq. 3)".into(),
-        y_label: "mu_macro / mu0".into(),
-        range: [0.0, 1.2, 0.0, 1.05],
-        curves: c,
-    });
+    figs.push(against_vbar("fig7", "Fig. 7: parabolic, mu/mu0 vs vbar (solid exact, dashed eqs. 27, 28)", c));
     let mut c = vec![];
     for &a in small.iter().skip(1).chain(&jumping) {
         let ms = crate::mdr::mu_static_ratio(2.0, a, crate::mdr::DEFAULT_TOL);
