@@ -70,6 +70,15 @@ fn ratio_of(sp: &Spring, amp: f64) -> Ratio {
     if amp <= 1.0 {
         let reduction = (amp * sp.deficit).min(1.0);
         Ratio { mu_ratio: 1.0 - reduction, reduction }
+    } else if sp.regime == Regime::JumpingStickFirst && sp.mean_normal > 0.0 {
+        // The smaller of the two from its own integral (full relative accuracy:
+        // mu -> 0 as vbar -> 0, the reduction as vbar -> 1), the other its complement.
+        let mu_ratio = (sp.mean_tangential() / sp.mean_normal).clamp(0.0, 1.0);
+        if mu_ratio < 0.5 {
+            Ratio { mu_ratio, reduction: 1.0 - mu_ratio }
+        } else {
+            Ratio::from_deficit(sp.deficit, sp.mean_normal)
+        }
     } else {
         Ratio::from_deficit(sp.deficit, sp.mean_normal)
     }

@@ -324,8 +324,22 @@ impl Spring {
     }
 
     /// Period mean of the tangential force, units `mu0 kz du`.
+    ///
+    /// For a stick from contact it is integrated directly, with full relative
+    /// accuracy where it is small (`vbar -> 0`, where `<B> - D` would cancel):
+    /// the stick contributes `vbar L^2/2`, the slip from `theta + L` to the loss of
+    /// contact, with `e = pi + 2 beta - L` and `B = y - S(beta) + S(beta - y)` at
+    /// `y` before the loss, `e^2/2 - S(beta) e + C(beta) - C(beta - e)`.
     pub fn mean_tangential(&self) -> f64 {
-        self.mean_normal - self.deficit
+        match (self.regime, self.stick) {
+            (Regime::JumpingStickFirst, Some(st)) => {
+                let b = st.beta;
+                let e = (PI + 2.0 * b - st.length).max(0.0);
+                let slip = 0.5 * e * e - s_fn(b) * e + (c_fn(b) - c_fn(b - e));
+                ((0.5 * self.vbar * st.length * st.length + slip.max(0.0)) / TAU).min(self.mean_normal)
+            }
+            _ => self.mean_normal - self.deficit,
+        }
     }
 
     /// The events of one period, sorted by phase in `[0, 2 pi)`.

@@ -184,3 +184,14 @@ fn root_evaluation_counts_are_those_of_newton_from_the_fitted_guess() {
     }
     assert!(total <= 4 * 99 * 3, "{total}");
 }
+
+#[test]
+fn small_mu_keeps_relative_accuracy_when_jumping() {
+    // mu_ratio -> 0 like slope * vbar (corrected eq. 21); integrated directly, it keeps
+    // its relative accuracy where 1 - reduction would leave only an absolute 1e-16.
+    for a in [1.2, 2.0, 10.0] {
+        let v = 1e-12;
+        let rel = (mu(v, a) / v / slope_eq21(a) - 1.0).abs();
+        assert!(rel < 1e-8, "a={a}: rel {rel:e}");
+    }
+}
