@@ -40,6 +40,14 @@ pub enum Error {
         /// The operating system's reason.
         reason: String,
     },
+    /// A file or stream could not be written.
+    #[error("cannot write {path}: {reason}")]
+    Write {
+        /// The path (or `stdout`).
+        path: String,
+        /// The operating system's reason.
+        reason: String,
+    },
     /// A request beyond the documented size limits.
     #[error("{what} has {count} entries, more than the limit of {limit}")]
     TooLarge {

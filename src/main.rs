@@ -82,7 +82,7 @@ enum Command {
         #[arg(long, default_value_t = 4000)]
         springs: usize,
         /// MDR shapes: report these springs too (positions x/x_c, comma list; JSON only).
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         spring_at: Option<String>,
         /// json, csv or svg.
         #[arg(long, default_value = "json")]
@@ -198,7 +198,7 @@ fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
 }
 
 fn io_err(e: io::Error) -> Error {
-    Error::Io { path: "stdout".into(), reason: e.to_string() }
+    Error::Write { path: "stdout".into(), reason: e.to_string() }
 }
 
 fn exact_point(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<serde_json::Value> {
@@ -416,7 +416,7 @@ fn run_scene(files: Vec<String>, schema: bool, format: Format) -> Result<()> {
 
 fn run_bench(out: &str, quick: bool) -> Result<()> {
     let dir = std::path::Path::new(out);
-    let werr = |e: String| Error::Io { path: out.into(), reason: e };
+    let werr = |e: String| Error::Write { path: out.into(), reason: e };
     std::fs::create_dir_all(dir).map_err(|e| werr(e.to_string()))?;
     let report = fricosc::bench::run(quick);
     let json = serde_json::to_string_pretty(&report).map_err(|e| werr(e.to_string()))?;
