@@ -29,7 +29,7 @@ pub fn run(text: &str, source: &str, stepping: Option<Stepping>) -> Result<Vec<M
     };
     if rows.len() > MAX_ROWS {
         return Err(Error::TooLarge {
-            what: format!("batch {source}"),
+            what: format!("rows of batch {source}"),
             count: rows.len() as u128,
             limit: MAX_ROWS as u128,
         });

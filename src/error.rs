@@ -33,25 +33,35 @@ pub enum Error {
         reason: String,
     },
     /// A file could not be read.
-    #[error("cannot read {path}: {reason}")]
+    #[error("cannot read {path}: {source}")]
     Io {
-        /// The path.
+        /// The path (or `stdin`).
         path: String,
         /// The operating system's reason.
-        reason: String,
+        #[source]
+        source: std::io::Error,
     },
     /// A file or stream could not be written.
-    #[error("cannot write {path}: {reason}")]
+    #[error("cannot write {path}: {source}")]
     Write {
         /// The path (or `stdout`).
         path: String,
         /// The operating system's reason.
-        reason: String,
+        #[source]
+        source: std::io::Error,
+    },
+    /// An internal result is not finite or outside its mathematical range: a bug
+    /// of fricosc (or an input at the edge of what f64 can represent), never
+    /// reported as a number. The CLI exits with code 3.
+    #[error("internal error: {what} (please report this with the command that caused it)")]
+    Internal {
+        /// What was computed and the value it had.
+        what: String,
     },
     /// A request beyond the documented size limits.
-    #[error("{what} has {count} entries, more than the limit of {limit}")]
+    #[error("{what}: {count} is more than the limit of {limit}")]
     TooLarge {
-        /// What is too large.
+        /// What is counted, and in what (`bytes of stdin`, `table rows`).
         what: String,
         /// Its size.
         count: u128,
@@ -64,6 +74,21 @@ pub enum Error {
 pub type Result<T> = std::result::Result<T, Error>;
 
 impl Error {
+    /// An [`Error::Write`] for `path` from an I/O error.
+    pub fn write(path: &str, source: std::io::Error) -> Self {
+        Error::Write { path: path.into(), source }
+    }
+
+    /// An [`Error::Io`] (a failed read) for `path`.
+    pub fn read(path: &str, source: std::io::Error) -> Self {
+        Error::Io { path: path.into(), source }
+    }
+
+    /// True for a write to a closed pipe (the reader went away: not an error).
+    pub fn is_broken_pipe(&self) -> bool {
+        matches!(self, Error::Write { source, .. } if source.kind() == std::io::ErrorKind::BrokenPipe)
+    }
+
     /// Shorthand for [`Error::InvalidParameter`].
     pub fn param(name: &str, value: f64, reason: &str) -> Self {
         Error::InvalidParameter { name: name.into(), value: format!("{value:?}"), reason: reason.into() }

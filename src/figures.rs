@@ -206,7 +206,7 @@ pub fn to_svg(f: &Figure) -> Result<String> {
 
 /// Write every figure as `name.json`, `name.csv`, `name.svg` into `dir`.
 pub fn write_all(dir: &std::path::Path) -> Result<Vec<String>> {
-    let werr = |e: std::io::Error| Error::Write { path: dir.display().to_string(), reason: e.to_string() };
+    let werr = |e: std::io::Error| Error::write(&dir.display().to_string(), e);
     std::fs::create_dir_all(dir).map_err(werr)?;
     let mut names = vec![];
     for f in build()? {

@@ -41,7 +41,7 @@ pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
                 return Err(Error::Parse { context: what.into(), reason: "range count must be >= 1".into() });
             }
             if count > MAX_LIST {
-                return Err(Error::TooLarge { what: what.into(), count, limit: MAX_LIST });
+                return Err(Error::TooLarge { what: format!("{what} range count"), count, limit: MAX_LIST });
             }
             if stop < start {
                 return Err(Error::Parse {

@@ -36,6 +36,7 @@ pub mod claims;
 pub mod figures;
 pub mod grid;
 pub mod history;
+pub mod input;
 pub mod mdr;
 pub mod output;
 pub mod plot;

@@ -9,7 +9,7 @@ use fricosc::grid::{parse_number, parse_values};
 use fricosc::output::{Format, TableWriter};
 use fricosc::shape::{check_tol, evaluate_stepping, evaluate_with, Method, Shape, Stepping};
 use rayon::prelude::*;
-use std::io::{self, IsTerminal, Read, Write};
+use std::io::{self, IsTerminal, Write};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -198,7 +198,14 @@ fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
 }
 
 fn io_err(e: io::Error) -> Error {
-    Error::Write { path: "stdout".into(), reason: e.to_string() }
+    Error::write("stdout", e)
+}
+
+/// The one path to stdout: the whole text at once, errors checked (a closed
+/// pipe or a full disk is an `Error::Write`, never a panic).
+fn emit(text: &str) -> Result<()> {
+    let mut o = io::stdout().lock();
+    o.write_all(text.as_bytes()).and_then(|()| o.flush()).map_err(io_err)
 }
 
 fn exact_point(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<serde_json::Value> {
@@ -254,7 +261,11 @@ fn table(a: TableArgs) -> Result<()> {
     };
     let total = amps.len() as u128 * vels.len() as u128;
     if total > fricosc::grid::MAX_LIST {
-        return Err(Error::TooLarge { what: "table".into(), count: total, limit: fricosc::grid::MAX_LIST });
+        return Err(Error::TooLarge {
+            what: "table rows (amplitudes x velocities)".into(),
+            count: total,
+            limit: fricosc::grid::MAX_LIST,
+        });
     }
     // Validate every input before the first byte is written.
     for &amp in &amps {
@@ -294,19 +305,9 @@ fn table(a: TableArgs) -> Result<()> {
 }
 
 fn read_input(file: Option<String>) -> Result<(String, String)> {
-    match file.as_deref() {
-        None | Some("-") => {
-            let mut s = String::new();
-            io::stdin()
-                .read_to_string(&mut s)
-                .map_err(|e| Error::Io { path: "stdin".into(), reason: e.to_string() })?;
-            Ok((s, "stdin".into()))
-        }
-        Some(p) => {
-            let s = std::fs::read_to_string(p).map_err(|e| Error::Io { path: p.into(), reason: e.to_string() })?;
-            Ok((s, p.into()))
-        }
-    }
+    let path = file.unwrap_or_else(|| "-".into());
+    let text = fricosc::input::read_capped(&path, fricosc::input::MAX_TABLE_BYTES)?;
+    Ok((text, if path == "-" { "stdin".into() } else { path }))
 }
 
 fn run_batch(file: Option<String>, stepping: Option<Stepping>) -> Result<()> {
@@ -367,14 +368,12 @@ fn run_history(
                 .map_err(|e| Error::Parse { context: "plot".into(), reason: e })?
         }
     };
-    let mut o = io::stdout().lock();
-    writeln!(o, "{text}").map_err(io_err)
+    emit(&format!("{text}\n"))
 }
 
 fn run_scene(files: Vec<String>, schema: bool, format: Format) -> Result<()> {
     if schema {
-        println!("{}", fricosc::scene::schema());
-        return Ok(());
+        return emit(&format!("{}\n", fricosc::scene::schema()));
     }
     if files.is_empty() {
         return Err(Error::Parse { context: "scene".into(), reason: "give a scene file (or --schema)".into() });
@@ -383,7 +382,7 @@ fn run_scene(files: Vec<String>, schema: bool, format: Format) -> Result<()> {
     let scenes: Vec<Result<fricosc::scene::Scene>> = files
         .iter()
         .map(|f| {
-            let text = std::fs::read_to_string(f).map_err(|e| Error::Io { path: f.clone(), reason: e.to_string() })?;
+            let text = fricosc::input::read_capped(f, fricosc::input::MAX_SMALL_BYTES)?;
             fricosc::scene::parse(&text, f)
         })
         .collect();
@@ -410,14 +409,13 @@ fn run_scene(files: Vec<String>, schema: bool, format: Format) -> Result<()> {
                 .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })?
         }
     };
-    let mut o = io::stdout().lock();
-    writeln!(o, "{}", text.trim_end()).map_err(io_err)
+    emit(&format!("{}\n", text.trim_end()))
 }
 
 fn run_bench(out: &str, quick: bool) -> Result<()> {
     let dir = std::path::Path::new(out);
-    let werr = |e: String| Error::Write { path: out.into(), reason: e };
-    std::fs::create_dir_all(dir).map_err(|e| werr(e.to_string()))?;
+    let werr = |e: String| Error::write(out, io::Error::other(e));
+    std::fs::create_dir_all(dir).map_err(|e| Error::write(out, e))?;
     let report = fricosc::bench::run(quick);
     let json = serde_json::to_string_pretty(&report).map_err(|e| werr(e.to_string()))?;
     let svg = fricosc::bench::to_svg(&report).map_err(werr)?;
@@ -426,21 +424,19 @@ fn run_bench(out: &str, quick: bool) -> Result<()> {
         ("work-precision.csv", fricosc::bench::to_csv(&report)),
         ("work-precision.svg", svg),
     ] {
-        std::fs::write(dir.join(name), text).map_err(|e| werr(e.to_string()))?;
+        std::fs::write(dir.join(name), text).map_err(|e| Error::write(out, e))?;
     }
-    let mut o = io::stdout().lock();
+    let mut o = String::new();
     for r in &report.ratios {
-        writeln!(
-            o,
-            "{}: exact {:.1e} s at error {:.1e}; stepping {:.1e} s at error {:.1e}; time ratio {:.2e}",
+        o += &format!(
+            "{}: exact {:.1e} s at error {:.1e}; stepping {:.1e} s at error {:.1e}; time ratio {:.2e}\n",
             r.case, r.exact_time_s, r.exact_error, r.stepping_time_s, r.stepping_error, r.time_ratio
-        )
-        .map_err(io_err)?;
+        );
     }
     for f in &report.failures {
-        writeln!(o, "failure: {f}").map_err(io_err)?;
+        o += &format!("failure: {f}\n");
     }
-    writeln!(o, "wrote {}/work-precision.{{json,csv,svg}}", out).map_err(io_err)
+    emit(&format!("{o}wrote {out}/work-precision.{{json,csv,svg}}\n"))
 }
 
 /// Prints the comparison; `Ok(false)` when `--max-error` is exceeded.
@@ -466,7 +462,15 @@ fn main() -> ExitCode {
         Err(e) => {
             let code = if e.use_stderr() { 2 } else { 0 };
             if code == 0 {
-                let _ = e.print();
+                // --help and --version: printed through the checked path too.
+                return match emit(&e.render().to_string()) {
+                    Ok(()) => ExitCode::SUCCESS,
+                    Err(err) if err.is_broken_pipe() => ExitCode::SUCCESS,
+                    Err(err) => {
+                        eprintln!("error: {err}");
+                        ExitCode::from(2)
+                    }
+                };
             } else {
                 // One line: clap's message up to its usage block, joined.
                 let msg = e.to_string();
@@ -486,23 +490,18 @@ fn main() -> ExitCode {
         Command::Table(a) => table(a),
         Command::Bench { out, quick } => run_bench(&out, quick),
         Command::Scene { files, schema, format } => run_scene(files, schema, format),
-        Command::Figures { out } => fricosc::figures::write_all(std::path::Path::new(&out)).and_then(|names| {
-            let mut o = io::stdout().lock();
-            writeln!(o, "wrote {} figures to {out}: {}", names.len(), names.join(", ")).map_err(io_err)
-        }),
+        Command::Figures { out } => fricosc::figures::write_all(std::path::Path::new(&out))
+            .and_then(|names| emit(&format!("wrote {} figures to {out}: {}\n", names.len(), names.join(", ")))),
         Command::History { shape, velocity, amp, periods, samples, springs, spring_at, format } => {
             run_history(&shape, &velocity, &amp, (periods, samples, springs), spring_at.as_deref(), &format)
         }
         Command::Claims { format } => {
             let claims = fricosc::claims::check();
             match format.as_str() {
-                "markdown" => {
-                    print!("{}", fricosc::claims::to_markdown(&claims));
-                    Ok(())
-                }
+                "markdown" => emit(&fricosc::claims::to_markdown(&claims)),
                 "json" => serde_json::to_string_pretty(&claims)
-                    .map(|t| println!("{t}"))
-                    .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() }),
+                    .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })
+                    .and_then(|t| emit(&format!("{t}\n"))),
                 other => Err(Error::Parse {
                     context: "--format".into(),
                     reason: format!("'{other}' is neither markdown nor json"),
@@ -511,18 +510,17 @@ fn main() -> ExitCode {
         }
         Command::Stress { points, seed } => {
             if points > 100_000_000 {
-                Err(Error::TooLarge { what: "stress run".into(), count: points as u128, limit: 100_000_000 })
+                Err(Error::TooLarge { what: "stress points".into(), count: points as u128, limit: 100_000_000 })
             } else {
                 let r = fricosc::stress::run(points, seed, &fricosc::stress::default_shapes());
                 let ok = r.failure_count == 0;
-                match serde_json::to_string_pretty(&r) {
-                    Ok(t) => println!("{t}"),
-                    Err(e) => eprintln!("error: {e}"),
+                let printed = serde_json::to_string_pretty(&r)
+                    .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })
+                    .and_then(|t| emit(&format!("{t}\n")));
+                match printed {
+                    Ok(()) if !ok => return ExitCode::from(1),
+                    other => other,
                 }
-                if !ok {
-                    return ExitCode::from(1);
-                }
-                Ok(())
             }
         }
         Command::Batch { file, method } => run_batch(file, method.stepping()),
@@ -534,6 +532,12 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        // The reader went away (`| head`): end quietly, as ripgrep does.
+        Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
+        Err(e @ Error::Internal { .. }) => {
+            eprintln!("error: {e}");
+            ExitCode::from(3)
+        }
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(2)

@@ -101,7 +101,7 @@ pub fn read_rows(text: &str, source: &str) -> Result<Vec<(f64, f64, f64)>> {
     };
     if rows.len() > MAX_ROWS {
         return Err(Error::TooLarge {
-            what: format!("table {source}"),
+            what: format!("rows of table {source}"),
             count: rows.len() as u128,
             limit: MAX_ROWS as u128,
         });
