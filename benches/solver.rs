@@ -32,7 +32,7 @@ fn parabolic_table(c: &mut Criterion) {
             for i in 0..11 {
                 for j in 0..1001 {
                     let (a, v) = (i as f64 / 10.0, j as f64 / 1000.0);
-                    acc += fricosc::mdr::power_law(2.0, v, a, fricosc::mdr::DEFAULT_TOL, false).ratio.mu_ratio;
+                    acc += fricosc::mdr::power_law(2.0, v, a, fricosc::mdr::DEFAULT_TOL, false).unwrap().ratio.mu_ratio;
                 }
             }
             acc

@@ -42,7 +42,7 @@ fn mu_flat(v: f64, a: f64) -> f64 {
 }
 
 fn mu_mdr(n: f64, v: f64, a: f64) -> f64 {
-    power_law(n, v, a, DEFAULT_TOL, false).ratio.mu_ratio
+    power_law(n, v, a, DEFAULT_TOL, false).map_or(f64::NAN, |r| r.ratio.mu_ratio)
 }
 
 /// Small-velocity slope `mu/vbar` of the flat punch at `vbar = 1e-9`.

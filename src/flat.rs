@@ -4,28 +4,10 @@
 //! `mu0 kz u0` (tangential), so that `amp = 0` (no oscillation) stays finite.
 
 use crate::error::{check_nonneg, Result};
+pub use crate::ratio::Ratio;
+use crate::special::one_minus_a_cos_asin;
 use crate::spring::{Event, EventKind, Regime, Spring};
 use serde::Serialize;
-
-/// `mu_macro/mu0` and `1 - mu_macro/mu0`, the latter with full relative accuracy.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Ratio {
-    /// `mu_macro / mu0`.
-    pub mu_ratio: f64,
-    /// `1 - mu_macro/mu0`, computed directly (not as a difference).
-    pub reduction: f64,
-}
-
-impl Ratio {
-    /// From the mean stick deficit and the mean normal force of the same contact.
-    pub fn from_deficit(deficit: f64, mean_normal: f64) -> Self {
-        if deficit <= 0.0 || mean_normal <= 0.0 {
-            return Ratio { mu_ratio: 1.0, reduction: 0.0 };
-        }
-        let reduction = (deficit / mean_normal).min(1.0);
-        Ratio { mu_ratio: 1.0 - reduction, reduction }
-    }
-}
 
 /// The exact steady state of a flat punch.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -51,36 +33,37 @@ pub struct FlatPoint {
     pub root_evaluations: u32,
 }
 
-/// The spring of a flat punch of amplitude `amp` (`s = 1/amp`). For `amp = 0`
-/// the permanent-contact spring with `s = 1` stands in: its stick phases and
-/// deficit do not depend on `s`.
+/// The spring of a flat punch of amplitude `amp`: `s = 1/amp`, with
+/// `1 - s = (amp - 1)/amp` passed unrounded (the contact phase near `amp = 1`).
+/// For `amp = 0` the permanent-contact spring with `s = 1` stands in: its stick
+/// phases and deficit do not depend on `s`. The one place `s` of the flat punch
+/// is formed.
 fn spring(vbar: f64, amp: f64, events: bool) -> Spring {
-    let s = if amp > 0.0 { 1.0 / amp } else { 1.0 };
-    let s = if s.is_finite() { s } else { f64::MAX };
-    if events {
-        Spring::with_events(s, vbar)
-    } else {
-        Spring::new(s, vbar)
+    if amp == 0.0 {
+        return Spring::with_complement(1.0, 0.0, vbar, events);
     }
+    let s = 1.0 / amp;
+    let s = if s.is_finite() { s } else { f64::MAX };
+    Spring::with_complement(s, (amp - 1.0) / amp, vbar, events)
 }
 
 /// Reduction from the spring: for `amp <= 1`, `<B> = s = 1/amp` and the
 /// reduction is `amp * D` (no division by a large `s`).
-fn ratio_of(sp: &Spring, amp: f64) -> Ratio {
+fn ratio_of(sp: &Spring, amp: f64) -> Result<Ratio> {
+    let context = "flat punch";
     if amp <= 1.0 {
-        let reduction = (amp * sp.deficit).min(1.0);
-        Ratio { mu_ratio: 1.0 - reduction, reduction }
-    } else if sp.regime == Regime::JumpingStickFirst && sp.mean_normal > 0.0 {
+        Ratio::from_reduction(amp * sp.deficit, context)
+    } else if matches!(sp.regime, Regime::JumpingStickFirst | Regime::JumpingSlipFirst) {
         // The smaller of the two from its own integral (full relative accuracy:
         // mu -> 0 as vbar -> 0, the reduction as vbar -> 1), the other its complement.
-        let mu_ratio = (sp.mean_tangential() / sp.mean_normal).clamp(0.0, 1.0);
+        let mu_ratio = sp.mean_tangential() / sp.mean_normal;
         if mu_ratio < 0.5 {
-            Ratio { mu_ratio, reduction: 1.0 - mu_ratio }
+            Ratio::from_mu(mu_ratio, context)
         } else {
-            Ratio::from_deficit(sp.deficit, sp.mean_normal)
+            Ratio::from_deficit(sp.deficit, sp.mean_normal, context)
         }
     } else {
-        Ratio::from_deficit(sp.deficit, sp.mean_normal)
+        Ratio::from_deficit(sp.deficit, sp.mean_normal, context)
     }
 }
 
@@ -93,7 +76,7 @@ fn ratio_of(sp: &Spring, amp: f64) -> Ratio {
 pub fn ratio(vbar: f64, amp: f64) -> Result<Ratio> {
     check_nonneg("vbar", vbar)?;
     check_nonneg("amp", amp)?;
-    Ok(ratio_of(&spring(vbar, amp, false), amp))
+    ratio_of(&spring(vbar, amp, false), amp)
 }
 
 /// `mu_static/mu0` of a flat punch: the minimum normal force over the mean, `(1 - amp)_+`.
@@ -102,20 +85,26 @@ pub fn mu_static_ratio(amp: f64) -> f64 {
 }
 
 /// The full steady state of a flat punch, with events to full precision.
+///
+/// `mu_ratio` is the value of [`ratio`] (one value per input, whatever the
+/// command); the events come from a second solve at the event tolerance.
 pub fn point(vbar: f64, amp: f64) -> Result<FlatPoint> {
-    check_nonneg("vbar", vbar)?;
-    check_nonneg("amp", amp)?;
+    let ratio = ratio(vbar, amp)?;
     let sp = spring(vbar, amp, true);
-    let ratio = ratio_of(&sp, amp);
-    // In units of kz u0 the bound is (1 - amp cos tau)_+; every event lies on it.
+    // In units of kz u0 every event force lies on the bound (1 - amp cos tau)_+
+    // and on the stick line: amp F(tau_s) = 1 - amp sqrt(1 - vbar^2) after a
+    // tangent start (cancellation-free), 0 after a start at contact, plus
+    // amp vbar L at the stick's end.
+    let start = if sp.regime == Regime::JumpingStickFirst { 0.0 } else { one_minus_a_cos_asin(amp, vbar) };
+    let length = sp.stick.map_or(0.0, |st| st.length);
     let events = sp
         .events()
         .into_iter()
         .map(|e| {
             let f = match e.kind {
                 EventKind::Contact | EventKind::LossOfContact => 0.0,
-                _ if sp.regime == Regime::JumpingStickFirst && e.kind == EventKind::Stick => 0.0,
-                _ => (1.0 - amp * e.tau.cos()).max(0.0),
+                EventKind::Stick => start,
+                EventKind::Slip => start + amp * vbar * length,
             };
             Event { normal: f, tangential: f, ..e }
         })

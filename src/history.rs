@@ -11,7 +11,7 @@
 
 use crate::error::{check_nonneg, Error, Result};
 use crate::shape::Shape;
-use crate::spring::{EventKind, Regime, Spring};
+use crate::spring::{EventKind, Spring};
 use serde::Serialize;
 use std::f64::consts::TAU;
 
@@ -59,7 +59,7 @@ pub fn spring_force(sp: &Spring, tau: f64) -> f64 {
         return 0.0;
     }
     if let Some(st) = sp.stick {
-        let t0 = if sp.regime == Regime::JumpingStickFirst { sp.s.acos() } else { st.start() };
+        let t0 = st.start;
         let x = (tau - t0).rem_euclid(TAU);
         if x < st.length {
             return (st.start_force + sp.vbar * x).min(b);

@@ -42,6 +42,7 @@ pub mod output;
 pub mod plot;
 pub mod profile;
 pub mod quad;
+pub mod ratio;
 pub mod scene;
 pub mod seed;
 pub mod shape;

@@ -249,7 +249,7 @@ impl Contact {
             // sin(beta) = cos(u), cos(beta) = sin(u).
             let b = mean_normal_sin_cos(beta, cu, su);
             let dd = match (stick, &self.vel) {
-                (true, Some(vel)) => vel.stick_first_deficit(beta),
+                (true, Some(vel)) => vel.stick_first_deficit(u),
                 _ => 0.0,
             };
             sn += jac * b;
@@ -441,7 +441,7 @@ fn total_normal(n: f64, amp: f64) -> Option<f64> {
 /// is the relative quadrature tolerance; `bands` asks for the per-band report.
 /// All integrals are scaled by `amp` (units `kz u0` rather than `kz du`), so
 /// that `amp -> 0` stays finite.
-pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResult {
+pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::Result<MdrResult> {
     let tol = tol.max(DEFAULT_TOL);
     // For amp > 1 every integral is computed divided by amp^(1 + 1/n) (in
     // `y/amp`), so that huge amplitudes and small exponents cannot overflow; the
@@ -457,10 +457,10 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
         nodes: 0,
     };
     if amp == 0.0 {
-        return unit(Some(n / (n + 1.0)));
+        return Ok(unit(Some(n / (n + 1.0))));
     }
     if vbar >= 1.0 && !bands {
-        return unit(total_normal(n, amp).map(unscale).filter(|x| x.is_finite()));
+        return Ok(unit(total_normal(n, amp).map(unscale).filter(|x| x.is_finite())));
     }
     let vel = (vbar < 1.0).then(|| Velocity::new(vbar));
     let alpha = vel.map_or(0.0, |v| v.alpha);
@@ -534,12 +534,12 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
         total.err_normal = 0.0;
     }
     let (nn, dd) = (total.normal, total.deficit);
-    let ratio = Ratio::from_deficit(dd, nn);
     let error_estimate = if nn > 0.0 {
         total.err_deficit / nn + dd * total.err_normal / (nn * nn) + ROUNDING_FLOOR
     } else {
         ROUNDING_FLOOR
     };
+    let ratio = Ratio::from_deficit_within(dd, nn, error_estimate, "power-law contact")?;
     let tangential = nn - dd;
     let band_list = if bands {
         parts
@@ -557,7 +557,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> MdrResul
         vec![]
     };
     let mean_normal = Some(2.0 * unscale(nn)).filter(|x| x.is_finite());
-    MdrResult { ratio, error_estimate, mean_normal, bands: band_list, nodes: total.nodes }
+    Ok(MdrResult { ratio, error_estimate, mean_normal, bands: band_list, nodes: total.nodes })
 }
 
 /// A full MDR point: the result plus the static limit, for `fricosc point`.
@@ -587,7 +587,7 @@ pub fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> f64 {
         return 0.0;
     }
     let nn = total_normal(n, amp)
-        .or_else(|| power_law(n, 1.0, amp, tol, true).mean_normal.map(|x| 0.5 * x))
+        .or_else(|| power_law(n, 1.0, amp, tol, true).ok().and_then(|r| r.mean_normal).map(|x| 0.5 * x))
         .unwrap_or(f64::NAN);
     (n / (n + 1.0) * (1.0 - amp).powf(1.0 + 1.0 / n) / nn).min(1.0)
 }
@@ -597,7 +597,12 @@ pub fn point(n: f64, vbar: f64, amp: f64, tol: f64) -> crate::Result<MdrPoint> {
     crate::error::check_nonneg("vbar", vbar)?;
     crate::error::check_nonneg("amp", amp)?;
     crate::shape::check_tol(tol)?;
-    let result = power_law(n, vbar, amp, tol, true);
+    // mu_ratio and its estimate from the same call as every other command (one
+    // value per input); the bands, normal force and node count from the banded run.
+    let plain = power_law(n, vbar, amp, tol, false)?;
+    let mut result = power_law(n, vbar, amp, tol, true)?;
+    result.ratio = plain.ratio;
+    result.error_estimate = plain.error_estimate;
     let mu_static_ratio = mu_static_ratio(n, amp, tol);
     Ok(MdrPoint { vbar, amp, result, mu_static_ratio })
 }
@@ -611,7 +616,7 @@ mod tests {
         for n in [1.0, 2.0] {
             for a in [1e-6, 0.1, 0.5, 0.9, 0.999999, 1.0, 1.000001, 1.5, 3.0, 10.0, 1e4] {
                 let closed = total_normal(n, a).unwrap();
-                let r = power_law(n, 0.3, a, DEFAULT_TOL, true);
+                let r = power_law(n, 0.3, a, DEFAULT_TOL, true).unwrap();
                 let shares: f64 = r.bands.iter().map(|b| b.normal_share).sum();
                 assert!((shares - 1.0).abs() < 1e-14);
                 // The quadrature's total, rebuilt from the bands of the report.

@@ -357,6 +357,7 @@ fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
         en += (b.0 - a.0).abs();
         ed += (b.1 - a.1).abs();
     }
-    let ratio = Ratio::from_deficit(dd, nn);
-    Ok((ratio, if nn > 0.0 { ed / nn + dd * en / (nn * nn) + 1e-14 } else { 1e-14 }, nn))
+    let estimate = if nn > 0.0 { ed / nn + dd * en / (nn * nn) + 1e-14 } else { 1e-14 };
+    let ratio = Ratio::from_deficit_within(dd, nn, estimate, "tabulated contact")?;
+    Ok((ratio, estimate, nn))
 }

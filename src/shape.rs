@@ -108,7 +108,7 @@ pub fn evaluate_with(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<Eva
             interpolation_error: None,
         }),
         Shape::Power(n) => {
-            let r = mdr::power_law(*n, vbar, amp, tol, false);
+            let r = mdr::power_law(*n, vbar, amp, tol, false)?;
             Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate, interpolation_error: None })
         }
         Shape::Tabulated(t, _) => {
@@ -193,7 +193,11 @@ pub fn evaluate_stepping(shape: &Shape, vbar: f64, amp: f64, st: Stepping) -> Re
             })
         }
     };
-    let mu = run.mu_ratio().clamp(0.0, 1.0);
+    // The peer's raw value: outside [0, 1] it says something about the peer.
+    let mu = run.mu_ratio();
+    if !mu.is_finite() {
+        return Err(Error::Internal { what: format!("time stepping gave mu_ratio = {mu:?}") });
+    }
     Ok(SteppingEvaluation {
         ratio: Ratio { mu_ratio: mu, reduction: 1.0 - mu },
         steps: run.steps,

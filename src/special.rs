@@ -62,6 +62,39 @@ pub fn half_sq_minus_versin(x: f64) -> f64 {
     }
 }
 
+/// `x y` as an unevaluated sum `hi + lo` (exact, by one fused multiply-add).
+fn two_prod(x: f64, y: f64) -> (f64, f64) {
+    let hi = x * y;
+    (hi, x.mul_add(y, -hi))
+}
+
+/// `x + y` as an unevaluated sum `hi + lo` (exact; Knuth's two-sum).
+fn two_sum(x: f64, y: f64) -> (f64, f64) {
+    let hi = x + y;
+    let z = hi - x;
+    (hi, (x - (hi - z)) + (y - z))
+}
+
+/// `1 - a sqrt(1 - v^2)` for `a, v >= 0` with full relative accuracy wherever
+/// the result is at least about `1e-30 a^2` (it is the normal force, over the
+/// mean, where a stick starts on the bound; it vanishes where the spring's
+/// regime changes from slip-first to stick-first, and at `a = 1, v -> 0`).
+///
+/// Written as `d / (1 + a c)` with `c = sqrt(1 - v^2)` and
+/// `d = 1 - a^2 (1 - v^2) = 1 - a^2 + (a v)^2`, whose three terms are summed
+/// exactly in double-double arithmetic: the cancellation is then harmless.
+pub fn one_minus_a_cos_asin(a: f64, v: f64) -> f64 {
+    let c = ((1.0 - v) * (1.0 + v)).sqrt();
+    let (r, re) = two_prod(a, a);
+    let (p, pe) = two_prod(a, v);
+    let (q, qe) = two_prod(p, p);
+    // d = 1 - r - re + q + qe + 2 p pe, summed with the large parts first.
+    let (h1, l1) = two_sum(1.0, -r);
+    let (h2, l2) = two_sum(h1, q);
+    let d = h2 + (l1 + l2 + (qe - re) + 2.0 * p * pe);
+    d / (1.0 + a * c)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -83,6 +116,24 @@ mod tests {
             let ec = (half_sq_minus_versin(x) - c).abs() / c.abs();
             assert!(es < 4e-15, "S({x}) rel err {es}");
             assert!(ec < 4e-15, "C({x}) rel err {ec}");
+        }
+    }
+
+    /// `1 - a sqrt(1 - v^2)` against 40-digit values (mpmath), where it cancels.
+    #[allow(clippy::excessive_precision)]
+    #[test]
+    fn one_minus_a_cos_asin_keeps_relative_accuracy_where_it_cancels() {
+        let cases = [
+            // a, v, 1 - a sqrt(1 - v^2)
+            (1.0, 1e-8, 5.0000000000000003e-17),
+            (0.5, 0.3, 0.52303039929152717),
+            (1e3, 0.9999995, 1.2504114111604998e-7),
+            (1.1547005383792517, 0.5, -1.3435868287034858e-16),
+            (2.0, 0.8660254037844386, -1.7381275730402342e-16),
+        ];
+        for (a, v, exact) in cases {
+            let got = one_minus_a_cos_asin(a, v);
+            assert!(((got - exact) / exact).abs() < 1e-14, "a={a} v={v}: {got:e} vs {exact:e}");
         }
     }
 

@@ -103,17 +103,16 @@ pub struct Event {
 pub struct Stick {
     /// `beta` of the module docs: the stick starts at `tau_s = pi/2 - beta`.
     pub beta: f64,
+    /// The phase `tau_s` at which the stick starts, in `[0, pi)`, to full
+    /// relative accuracy: `arcsin vbar` (eq. 4) or the contact phase `arccos s`.
+    pub start: f64,
     /// Duration `L` of the stick phase (in phase units).
     pub length: f64,
-    /// Tangential (= normal) force at the start of the stick.
+    /// `e = x_max - L` with full relative accuracy: the time from the stick's
+    /// end to `2 pi` after its start (tangent start) or to the loss of contact.
+    pub tail: f64,
+    /// Tangential (= normal) force at the start of the stick, units `mu0 kz du`.
     pub start_force: f64,
-}
-
-impl Stick {
-    /// Phase at which the stick starts (not wrapped).
-    pub fn start(&self) -> f64 {
-        FRAC_PI_2 - self.beta
-    }
 }
 
 /// The exact periodic steady state of one spring, as means and phases.
@@ -129,6 +128,9 @@ pub struct Spring {
     pub mean_normal: f64,
     /// Period mean of the friction lost to sticking, `<B> - <F>`, units `mu0 kz du`.
     pub deficit: f64,
+    /// Contact phase `theta = arccos s` of a jumping spring (`|s| < 1`; 0 otherwise):
+    /// contact lasts from `theta` to `2 pi - theta` (eq. 18).
+    pub theta: f64,
     /// The stick phase, if the spring sticks.
     pub stick: Option<Stick>,
     /// Function evaluations spent by the root finder.
@@ -182,6 +184,8 @@ pub struct Velocity {
     pub w: f64,
     /// `alpha = arccos vbar`; springs with `|arcsin s| < alpha` stick from contact.
     pub alpha: f64,
+    /// `delta = arcsin vbar = pi/2 - alpha`, the phase of a tangent start (eq. 4).
+    pub delta: f64,
     /// Newton start for the stick length of a tangent start.
     tangent_guess: f64,
 }
@@ -190,19 +194,56 @@ impl Velocity {
     /// Constants for `0 <= vbar < 1`.
     pub fn new(vbar: f64) -> Self {
         let (w, alpha) = velocity_angles(vbar);
-        Velocity { vbar, w, alpha, tangent_guess: tangent_length_guess(alpha, vbar) }
+        Velocity { vbar, w, alpha, delta: vbar.asin(), tangent_guess: tangent_length_guess(alpha, vbar) }
     }
 
-    /// Deficit of the stick-first spring with `s = sin beta`, `|beta| < alpha`
-    /// (means only, no events).
-    pub fn stick_first_deficit(&self, beta: f64) -> f64 {
-        stick_phase(beta, self, PI + 2.0 * beta, ROOT_RTOL_MEANS).1
+    /// Deficit of the stick-first spring whose contact starts at phase
+    /// `theta = arccos s` (`beta = pi/2 - theta`, `|beta| < alpha`; means only).
+    pub fn stick_first_deficit(&self, theta: f64) -> f64 {
+        stick_phase(Start::Contact { theta }, self, ROOT_RTOL_MEANS).deficit
     }
 }
+
+/// Where a stick starts (module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Start {
+    /// On the bound where its slope falls to `vbar`: `tau_s = delta = arcsin vbar`.
+    Tangent,
+    /// At the contact phase `theta = arccos s`, with zero force.
+    Contact {
+        /// The contact phase, in `(delta, pi)`.
+        theta: f64,
+    },
+}
+
+/// The solved stick phase.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct StickSolution {
+    length: f64,
+    tail: f64,
+    deficit: f64,
+    evaluations: u32,
+}
+
+/// Below this `vbar` the stick end is solved in the tail `e = x_max - L`
+/// ([`stick_phase`]); above it in `L`, whose gap function is cancellation-free
+/// as `vbar -> 1` but whose root loses `1e-16 / sqrt(vbar)` to rounding.
+const TAIL_FORM_VBAR: f64 = 0.5;
 
 /// `2 pi` times the deficit of a stick of length `len` starting at `beta`.
 fn deficit_2pi(beta: f64, w: f64, len: f64) -> f64 {
     c_fn(beta) - c_fn(beta - len) - s_fn(beta) * len + 0.5 * w * len * len
+}
+
+/// The contact phase `theta = arccos s` of a jumping spring, `|s| < 1`, from
+/// `s` and `1 - s`: `2 arcsin(sqrt((1 - s)/2))` for `s > 1/2` (no rounding of
+/// `s` near 1 enters), `arccos s` elsewhere (well conditioned there).
+pub fn contact_phase(s: f64, one_minus_s: f64) -> f64 {
+    if s > 0.5 {
+        2.0 * (0.5 * one_minus_s).sqrt().asin()
+    } else {
+        s.acos()
+    }
 }
 
 /// Critical velocity parameters: `(w, alpha) = (1 - vbar, arccos vbar)`, with
@@ -224,23 +265,47 @@ fn tangent_length_guess(alpha: f64, vbar: f64) -> f64 {
     }
 }
 
-/// Solve the stick phase starting at `beta`: the root of the gap
+/// Solve the stick phase from `start`: the root of the gap
 /// `H(x) = S(beta - x) - S(beta) + w x`, and the deficit.
 ///
 /// The root lies in `[alpha + beta, x_max]`, where `H` falls from its maximum.
 /// Newton starts from [`tangent_length_guess`], scaled for a start at contact
 /// by the ratio `L / (alpha + beta)`, which runs from 2 (`beta -> -alpha`, where
 /// `H ~ eps x - |s| x^2/2`) to the tangent value.
-fn stick_phase(beta: f64, vel: &Velocity, x_max: f64, rtol: f64) -> (f64, f64, u32) {
+///
+/// # The tail form (`vbar <` [`TAIL_FORM_VBAR`])
+/// As `vbar -> 0` the root approaches `x_max` and the slope of `H` there falls
+/// like `2 sqrt(pi vbar)`, while `H` is a sum of order-one terms: the rounding of
+/// those terms moves the root by `1e-16 / sqrt(vbar)`. In the tail
+/// `e = x_max - x` the gap is a product of small factors. With the stick end at
+/// phase `T - e` (`T = 2 pi + delta` after a tangent start, `T = 2 pi - theta`,
+/// the loss of contact, after a start at contact) and `q = -delta` resp.
+/// `q = theta`, `B(T - e) - B(tau_s) = cos q - cos(q + e)`, so
+/// `H(e) = 2 sin(e/2) sin(q + e/2) - vbar (x_max - e)`, `H'(e) = sin(q + e) + vbar`,
+/// and `e` is found with full relative accuracy.
+fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
     let (alpha, w, vbar) = (vel.alpha, vel.w, vel.vbar);
+    let (beta, x_max, q) = match start {
+        Start::Tangent => (alpha, TAU, -vel.delta),
+        Start::Contact { theta } => (FRAC_PI_2 - theta, TAU - 2.0 * theta, theta),
+    };
     let lo = alpha + beta;
     let lt = vel.tangent_guess;
-    let guess = if beta == alpha {
+    let guess = if start == Start::Tangent {
         lt
     } else {
         let ratio_t = lt / (2.0 * alpha);
         lo * (2.0 + (ratio_t - 2.0) * lo / (2.0 * alpha))
     };
+    if vbar < TAIL_FORM_VBAR {
+        let f = |e: f64| 2.0 * (0.5 * e).sin() * (q + 0.5 * e).sin() - vbar * (x_max - e);
+        let df = |e: f64| (q + e).sin() + vbar;
+        let e_hi = (x_max - lo).max(0.0);
+        let r = root::newton(f, df, 0.0, e_hi, (x_max - guess).clamp(0.0, e_hi), rtol);
+        let length = x_max - r.x;
+        let deficit = (deficit_2pi(beta, w, length) / TAU).max(0.0);
+        return StickSolution { length, tail: r.x, deficit, evaluations: r.evaluations };
+    }
     let s_beta = s_fn(beta);
     // f and f' at the same x share one sin_cos (the derivative is asked right after f).
     let cached_cos = std::cell::Cell::new((f64::NAN, 0.0));
@@ -261,8 +326,8 @@ fn stick_phase(beta: f64, vel: &Velocity, x_max: f64, rtol: f64) -> (f64, f64, u
     };
     let r = root::newton(f, df, lo, x_max, guess, rtol);
     // The deficit is a mean of a non-negative gap; rounding must not flip it.
-    let d = (deficit_2pi(beta, w, r.x) / TAU).max(0.0);
-    (r.x, d, r.evaluations)
+    let deficit = (deficit_2pi(beta, w, r.x) / TAU).max(0.0);
+    StickSolution { length: r.x, tail: x_max - r.x, deficit, evaluations: r.evaluations }
 }
 
 impl Spring {
@@ -274,22 +339,32 @@ impl Spring {
     /// initial state), and the limit is the value every time stepper converges to.
     /// Inputs must be finite with `vbar >= 0` (checked by the public APIs above this).
     pub fn new(s: f64, vbar: f64) -> Self {
-        Self::solve(s, vbar, ROOT_RTOL_MEANS)
+        Self::solve(s, 1.0 - s, vbar, ROOT_RTOL_MEANS)
     }
 
     /// As [`Spring::new`], with event times to full double precision.
     pub fn with_events(s: f64, vbar: f64) -> Self {
-        Self::solve(s, vbar, ROOT_RTOL_EVENTS)
+        Self::solve(s, 1.0 - s, vbar, ROOT_RTOL_EVENTS)
     }
 
-    fn solve(s: f64, vbar: f64, rtol: f64) -> Self {
+    /// As [`Spring::new`] (or, with `events`, [`Spring::with_events`]) for a
+    /// spring given by `s` and `one_minus_s = 1 - s` computed without
+    /// cancellation by the caller (the flat punch: `(amp - 1)/amp`), so that the
+    /// contact phase `arccos s` keeps its relative accuracy as `s -> 1-`.
+    pub fn with_complement(s: f64, one_minus_s: f64, vbar: f64, events: bool) -> Self {
+        Self::solve(s, one_minus_s, vbar, if events { ROOT_RTOL_EVENTS } else { ROOT_RTOL_MEANS })
+    }
+
+    fn solve(s: f64, one_minus_s: f64, vbar: f64, rtol: f64) -> Self {
         let mean_normal = mean_normal(s);
+        let theta = if s < 1.0 && s > -1.0 { contact_phase(s, one_minus_s) } else { 0.0 };
         let mut out = Spring {
             s,
             vbar,
             regime: Regime::NeverInContact,
             mean_normal,
             deficit: 0.0,
+            theta,
             stick: None,
             root_evaluations: 0,
         };
@@ -301,25 +376,30 @@ impl Spring {
             return out;
         }
         let vel = Velocity::new(vbar);
-        let alpha = vel.alpha;
-        let c = alpha.sin();
-        let (beta, x_max, regime) = if s >= 1.0 {
-            (alpha, TAU, Regime::PermanentStickSlip)
+        let c = vel.alpha.sin();
+        let (start, regime) = if s >= 1.0 {
+            (Start::Tangent, Regime::PermanentStickSlip)
         } else if s >= c {
-            (alpha, TAU, Regime::JumpingSlipFirst)
+            (Start::Tangent, Regime::JumpingSlipFirst)
         } else if s > -c {
-            let beta = s.asin();
-            (beta, PI + 2.0 * beta, Regime::JumpingStickFirst)
+            (Start::Contact { theta }, Regime::JumpingStickFirst)
         } else {
             out.regime = Regime::JumpingSlip;
             return out;
         };
-        let (length, deficit, evals) = stick_phase(beta, &vel, x_max, rtol);
-        let start_force = if regime == Regime::JumpingStickFirst { 0.0 } else { s - c };
+        let sol = stick_phase(start, &vel, rtol);
+        let (beta, tau_s, start_force) = match start {
+            // A jumping spring: s - c = cos theta - cos delta without cancellation.
+            Start::Tangent if s < 1.0 => {
+                (vel.alpha, vel.delta, 2.0 * (0.5 * (theta + vel.delta)).sin() * (0.5 * (vel.delta - theta)).sin())
+            }
+            Start::Tangent => (vel.alpha, vel.delta, s - c),
+            Start::Contact { theta } => (FRAC_PI_2 - theta, theta, 0.0),
+        };
         out.regime = regime;
-        out.deficit = deficit;
-        out.stick = Some(Stick { beta, length, start_force });
-        out.root_evaluations = evals;
+        out.deficit = sol.deficit;
+        out.stick = Some(Stick { beta, start: tau_s, length: sol.length, tail: sol.tail, start_force });
+        out.root_evaluations = sol.evaluations;
         out
     }
 
@@ -327,52 +407,68 @@ impl Spring {
     ///
     /// For a stick from contact it is integrated directly, with full relative
     /// accuracy where it is small (`vbar -> 0`, where `<B> - D` would cancel):
-    /// the stick contributes `vbar L^2/2`, the slip from `theta + L` to the loss of
-    /// contact, with `e = pi + 2 beta - L` and `B = y - S(beta) + S(beta - y)` at
-    /// `y` before the loss, `e^2/2 - S(beta) e + C(beta) - C(beta - e)`.
+    /// the stick contributes `vbar L^2/2`; the slip lasts the tail `e` before the
+    /// loss of contact at `2 pi - theta`, where `B(2 pi - theta - y) =
+    /// s (1 - cos y) + sin(theta) sin y`, so it contributes
+    /// `s S(e) + 2 sin(theta) sin^2(e/2)`: for `s >= 0` (every flat punch) a sum
+    /// of non-negative terms. A jumping spring that slips first adds the slip
+    /// from contact to the stick, `d = delta - theta` long (the same form), and
+    /// the stick's own `F(tau_s) L`; its final slip lasts `e - delta - theta`.
     pub fn mean_tangential(&self) -> f64 {
+        // Integral of B over the `y` before the loss of contact (or after the contact).
+        let edge = |y: f64| {
+            let h = (0.5 * y).sin();
+            self.s * s_fn(y) + 2.0 * self.theta.sin() * h * h
+        };
         match (self.regime, self.stick) {
-            (Regime::JumpingStickFirst, Some(st)) => {
-                let b = st.beta;
-                let e = (PI + 2.0 * b - st.length).max(0.0);
-                let slip = 0.5 * e * e - s_fn(b) * e + (c_fn(b) - c_fn(b - e));
-                ((0.5 * self.vbar * st.length * st.length + slip.max(0.0)) / TAU).min(self.mean_normal)
+            (Regime::JumpingStickFirst, Some(st)) => (0.5 * self.vbar * st.length * st.length + edge(st.tail)) / TAU,
+            (Regime::JumpingSlipFirst, Some(st)) => {
+                let before = edge((st.start - self.theta).max(0.0));
+                let after = edge((st.tail - st.start - self.theta).max(0.0));
+                let stick = st.length * (st.start_force + 0.5 * self.vbar * st.length);
+                (before + stick + after) / TAU
             }
             _ => self.mean_normal - self.deficit,
         }
     }
 
+    /// Phase at which the stick ends, wrapped to `[0, 2 pi)`, from the tail
+    /// (full relative accuracy near 0, absolute `ulp(2 pi)` near `2 pi`).
+    pub fn slip_phase(&self) -> Option<f64> {
+        let st = self.stick?;
+        let t = if self.regime == Regime::JumpingStickFirst {
+            TAU - self.theta - st.tail
+        } else if st.tail > st.start {
+            // 2 pi + tau_s - e.
+            TAU - (st.tail - st.start)
+        } else {
+            // Wrapped past 2 pi (at vbar = 0 the stick lasts the whole period).
+            st.start - st.tail
+        };
+        Some(t)
+    }
+
     /// The events of one period, sorted by phase in `[0, 2 pi)`.
     ///
     /// Solve with [`Spring::with_events`] for event times to full precision.
+    /// Forces are those of the stick line (equal to the bound at both ends):
+    /// `F(tau_s)` and `F(tau_s) + vbar L`, sums of non-negative terms.
     pub fn events(&self) -> Vec<Event> {
-        let bound = |tau: f64| (self.s - tau.cos()).max(0.0);
-        let wrap = |tau: f64| {
-            let t = tau.rem_euclid(TAU);
-            if t >= TAU {
-                0.0
-            } else {
-                t
-            }
-        };
         let mut ev = Vec::with_capacity(4);
         if matches!(self.regime, Regime::NeverInContact) {
             return ev;
         }
         if self.s < 1.0 {
             // Contact from theta = arccos s to 2 pi - theta (eq. 18).
-            let theta = self.s.acos();
+            let theta = self.theta;
             ev.push(Event { kind: EventKind::Contact, tau: theta, normal: 0.0, tangential: 0.0 });
-            ev.push(Event { kind: EventKind::LossOfContact, tau: wrap(TAU - theta), normal: 0.0, tangential: 0.0 });
+            ev.push(Event { kind: EventKind::LossOfContact, tau: TAU - theta, normal: 0.0, tangential: 0.0 });
         }
-        if let Some(st) = self.stick {
-            // A stick from contact starts exactly at the contact phase theta.
-            let t0 = if self.regime == Regime::JumpingStickFirst { self.s.acos() } else { st.start() };
-            let t1 = t0 + st.length;
-            let f1 = st.start_force + self.vbar * st.length;
-            let n0 = if self.regime == Regime::JumpingStickFirst { 0.0 } else { bound(t0) };
-            ev.push(Event { kind: EventKind::Stick, tau: wrap(t0), normal: n0, tangential: st.start_force });
-            ev.push(Event { kind: EventKind::Slip, tau: wrap(t1), normal: bound(t1), tangential: f1 });
+        if let (Some(st), Some(t1)) = (self.stick, self.slip_phase()) {
+            let f0 = st.start_force;
+            let f1 = f0 + self.vbar * st.length;
+            ev.push(Event { kind: EventKind::Stick, tau: st.start, normal: f0, tangential: f0 });
+            ev.push(Event { kind: EventKind::Slip, tau: t1, normal: f1, tangential: f1 });
         }
         // Stable sort: at equal phases the contact precedes the stick it starts.
         ev.sort_by(|a, b| a.tau.total_cmp(&b.tau));

@@ -43,7 +43,7 @@ fn named_shapes_are_power_laws() {
 fn steep_power_laws_approach_the_flat_punch_like_1_over_n() {
     for (v, a) in [(0.3, 0.5), (0.5, 2.0)] {
         let flat = fricosc::flat::ratio(v, a).unwrap().mu_ratio;
-        let d = |n: f64| (power_law(n, v, a, DEFAULT_TOL, false).ratio.mu_ratio - flat).abs();
+        let d = |n: f64| (power_law(n, v, a, DEFAULT_TOL, false).unwrap().ratio.mu_ratio - flat).abs();
         let (d100, d1000) = (d(100.0), d(1000.0));
         assert!(d1000 < 2.0 / 1000.0, "v={v} a={a}: {d1000:e}");
         assert!(d1000 < 0.2 * d100, "not O(1/N): {d100:e} -> {d1000:e}");
@@ -55,7 +55,7 @@ fn steep_power_laws_approach_the_flat_punch_like_1_over_n() {
 #[test]
 fn time_stepping_agrees_in_every_regime() {
     for (n, v, a) in [(2.0, 0.3, 0.4), (2.0, 0.6, 1.0), (2.0, 0.3, 1.6), (1.0, 0.5, 2.0), (2.0, 1.1, 1.5)] {
-        let exact = power_law(n, v, a, DEFAULT_TOL, false).ratio.mu_ratio;
+        let exact = power_law(n, v, a, DEFAULT_TOL, false).unwrap().ratio.mu_ratio;
         let mut errs = vec![];
         for k in [1000usize, 4000] {
             let zmax = (1.0f64 + a).powf(1.0 / n);
@@ -72,8 +72,8 @@ fn time_stepping_agrees_in_every_regime() {
 #[test]
 fn looser_tolerance_does_less_work_within_its_estimate() {
     for (n, v, a) in [(2.0, 0.05, 0.5), (1.5, 0.3, 0.4), (2.5, 0.2, 1.5), (1.0, 0.01, 2.0)] {
-        let fine = power_law(n, v, a, DEFAULT_TOL, false);
-        let loose = power_law(n, v, a, 1e-6, false);
+        let fine = power_law(n, v, a, DEFAULT_TOL, false).unwrap();
+        let loose = power_law(n, v, a, 1e-6, false).unwrap();
         assert!(loose.nodes < fine.nodes, "n={n} v={v} a={a}: {} vs {}", loose.nodes, fine.nodes);
         let err = (loose.ratio.mu_ratio - fine.ratio.mu_ratio).abs();
         assert!(err <= loose.error_estimate, "n={n} v={v} a={a}: err {err:e} > estimate {:e}", loose.error_estimate);
@@ -84,19 +84,19 @@ fn looser_tolerance_does_less_work_within_its_estimate() {
 fn limits_of_amplitude_and_velocity() {
     for n in [1.0, 2.0, 3.7] {
         // No oscillation, or at/above the critical velocity: mu = mu0 exactly.
-        assert_eq!(power_law(n, 0.4, 0.0, DEFAULT_TOL, false).ratio.mu_ratio, 1.0);
+        assert_eq!(power_law(n, 0.4, 0.0, DEFAULT_TOL, false).unwrap().ratio.mu_ratio, 1.0);
         for v in [1.0, 1.5] {
-            let r = power_law(n, v, 0.7, DEFAULT_TOL, false);
+            let r = power_law(n, v, 0.7, DEFAULT_TOL, false).unwrap();
             assert_eq!((r.ratio.mu_ratio, r.nodes), (1.0, 0), "vbar >= 1 needs no spring computation");
         }
         // Static limit: minimum over mean normal force; 0 once the centre loses contact.
-        assert!(power_law(n, 0.0, 1.5, DEFAULT_TOL, false).ratio.mu_ratio.abs() < 1e-15);
+        assert!(power_law(n, 0.0, 1.5, DEFAULT_TOL, false).unwrap().ratio.mu_ratio.abs() < 1e-15);
         // Small amplitude: 1 - amp * 9 (1-vbar)^2/(4 pi) ... the seed's eq. 14 regime:
         // the reduction per normal force is amp * D(vbar) * (kz du)/(F_N) -> amp D (n+1)/n.
         let v = 0.5;
         let d = fricosc::spring::Spring::new(10.0, v).deficit;
         let amp = 1e-6;
-        let red = power_law(n, v, amp, DEFAULT_TOL, false).ratio.reduction;
+        let red = power_law(n, v, amp, DEFAULT_TOL, false).unwrap().ratio.reduction;
         let lead = amp * d * (n + 1.0) / n;
         assert!((red / lead - 1.0).abs() < 1e-4, "n={n}: {red:e} vs {lead:e}");
     }
@@ -110,7 +110,7 @@ fn near_critical_reduction_keeps_relative_accuracy() {
     // difference 1 - mu (all digits lost there) cannot pass.
     for n in [1.0, 2.0] {
         for amp in [0.5, 2.0] {
-            let f = |w: f64| power_law(n, 1.0 - w, amp, DEFAULT_TOL, false).ratio.reduction / (w * w);
+            let f = |w: f64| power_law(n, 1.0 - w, amp, DEFAULT_TOL, false).unwrap().ratio.reduction / (w * w);
             // The f64 nearest to 1 - w: use w that are exact in binary near 1.
             let (w1, w2, w3) = (2f64.powi(-30), 2f64.powi(-34), 2f64.powi(-40));
             let b = (f(w2) - f(w1)) / (w2.sqrt() - w1.sqrt());
@@ -135,7 +135,7 @@ fn agrees_with_an_independent_quadrature_on_a_grid_and_the_estimate_bounds_the_e
     for n in [1.0, 2.0, 1.5, 3.0] {
         for &v in &vbars {
             for &a in &amps {
-                let r = power_law(n, v, a, DEFAULT_TOL, false);
+                let r = power_law(n, v, a, DEFAULT_TOL, false).unwrap();
                 let (reference, ref_acc) = mdr_ref::mu_ratio(n, v, a);
                 let err = (r.ratio.mu_ratio - reference).abs();
                 worst = worst.max(err);
@@ -156,7 +156,7 @@ fn static_friction_is_the_minimum_over_the_mean_normal_force() {
     // The solver at vbar = 0 against the closed form used for mu_static_ratio.
     for n in [1.0, 2.0, 1.5, 3.0] {
         for a in [0.0, 0.05, 0.3, 0.7, 0.99, 1.0, 1.5, 4.0] {
-            let solver = power_law(n, 0.0, a, DEFAULT_TOL, false).ratio.mu_ratio;
+            let solver = power_law(n, 0.0, a, DEFAULT_TOL, false).unwrap().ratio.mu_ratio;
             let formula = fricosc::mdr::mu_static_ratio(n, a, DEFAULT_TOL);
             assert!((solver - formula).abs() < 1e-14, "n={n} a={a}: {solver} vs {formula}");
         }
@@ -166,7 +166,7 @@ fn static_friction_is_the_minimum_over_the_mean_normal_force() {
 #[test]
 fn the_accepted_exponent_range_agrees_with_the_reference_at_its_ends() {
     for (n, v, a) in [(0.05, 0.3, 0.5), (0.05, 0.3, 2.0), (0.05, 0.05, 1.3), (1e6, 0.3, 0.5), (1e6, 0.5, 2.0)] {
-        let r = power_law(n, v, a, DEFAULT_TOL, false);
+        let r = power_law(n, v, a, DEFAULT_TOL, false).unwrap();
         let (reference, acc) = mdr_ref::mu_ratio(n, v, a);
         let err = (r.ratio.mu_ratio - reference).abs();
         assert!(err <= tol::MDR_ABS.max(acc), "n={n} v={v} a={a}: err {err:e} (reference accuracy {acc:e})");

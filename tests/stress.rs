@@ -11,7 +11,7 @@ fn a_hundred_thousand_random_and_edge_points_pass_every_check() {
 }
 
 fn mu(n: f64, v: f64, a: f64) -> f64 {
-    power_law(n, v, a, DEFAULT_TOL, false).ratio.mu_ratio
+    power_law(n, v, a, DEFAULT_TOL, false).unwrap().ratio.mu_ratio
 }
 
 /// Jumps of mu across a boundary at distance d on both sides: Lipschitz part

@@ -1,0 +1,92 @@
+//! `mu_macro/mu0` and its complement, the reduction, checked before they leave
+//! the solver: a non-finite or out-of-range intermediate is an
+//! [`Error::Internal`], never a valid-looking number.
+
+use crate::error::{Error, Result};
+use serde::Serialize;
+
+/// How far outside `[0, 1]` rounding may put a ratio or a reduction that is
+/// mathematically inside: a few ulps of 1. Such values are rounded onto the
+/// interval; anything further out is a bug and an error.
+pub const ROUNDING_SLACK: f64 = 8.0 * f64::EPSILON;
+
+/// `mu_macro/mu0` and `1 - mu_macro/mu0`, the latter with full relative accuracy.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Ratio {
+    /// `mu_macro / mu0`.
+    pub mu_ratio: f64,
+    /// `1 - mu_macro/mu0`, computed directly (not as a difference).
+    pub reduction: f64,
+}
+
+/// `x` in `[0, 1]` up to `slack` (at least [`ROUNDING_SLACK`]: a quadrature
+/// passes its own error estimate), rounded onto it; else an internal error.
+fn unit_interval(name: &str, x: f64, slack: f64, context: &str) -> Result<f64> {
+    let slack = slack.max(ROUNDING_SLACK);
+    if x.is_finite() && (-slack..=1.0 + slack).contains(&x) {
+        Ok(x.clamp(0.0, 1.0))
+    } else {
+        Err(Error::Internal { what: format!("{name} = {x:?} is not in [0, 1] ({context})") })
+    }
+}
+
+impl Ratio {
+    /// From the reduction (the friction lost, over the friction without oscillation).
+    pub fn from_reduction(reduction: f64, context: &str) -> Result<Self> {
+        Self::from_reduction_within(reduction, ROUNDING_SLACK, context)
+    }
+
+    /// As [`Ratio::from_reduction`] for a value with an error estimate `slack`
+    /// that may put it outside `[0, 1]` (a finite non-negative number).
+    pub fn from_reduction_within(reduction: f64, slack: f64, context: &str) -> Result<Self> {
+        let reduction = unit_interval("reduction", reduction, slack, context)?;
+        Ok(Ratio { mu_ratio: 1.0 - reduction, reduction })
+    }
+
+    /// From `mu_macro/mu0` itself (where it is the small one of the two).
+    pub fn from_mu(mu_ratio: f64, context: &str) -> Result<Self> {
+        let mu_ratio = unit_interval("mu_ratio", mu_ratio, ROUNDING_SLACK, context)?;
+        Ok(Ratio { mu_ratio, reduction: 1.0 - mu_ratio })
+    }
+
+    /// From the mean stick deficit and the mean normal force of the same contact:
+    /// the reduction is their quotient. Both must be finite and `>= 0`; a contact
+    /// without normal force (never touching) has no reduction.
+    pub fn from_deficit(deficit: f64, mean_normal: f64, context: &str) -> Result<Self> {
+        Self::from_deficit_within(deficit, mean_normal, ROUNDING_SLACK, context)
+    }
+
+    /// As [`Ratio::from_deficit`] with an error estimate `slack` of the quotient.
+    pub fn from_deficit_within(deficit: f64, mean_normal: f64, slack: f64, context: &str) -> Result<Self> {
+        if !(deficit.is_finite() && mean_normal.is_finite() && deficit >= 0.0 && mean_normal >= 0.0) {
+            return Err(Error::Internal {
+                what: format!("deficit {deficit:?} and mean normal force {mean_normal:?} ({context})"),
+            });
+        }
+        if deficit == 0.0 {
+            return Ok(Ratio { mu_ratio: 1.0, reduction: 0.0 });
+        }
+        Self::from_reduction_within(deficit / mean_normal, slack, context)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nan_and_out_of_range_values_are_errors_not_answers() {
+        assert!(Ratio::from_reduction(f64::NAN, "t").is_err());
+        assert!(Ratio::from_mu(f64::INFINITY, "t").is_err());
+        assert!(Ratio::from_reduction(1.0 + 1e-12, "t").is_err());
+        assert!(Ratio::from_mu(-1e-12, "t").is_err());
+        assert!(Ratio::from_deficit(f64::NAN, 1.0, "t").is_err());
+        assert!(Ratio::from_deficit(1.0, 0.0, "t").is_err(), "a deficit without normal force");
+        // Rounding just outside is rounding, and lands on the interval; a quadrature's
+        // own estimate widens that, a NaN estimate does not.
+        assert!(Ratio::from_reduction_within(1.0 + 1e-12, 2e-12, "t").is_ok());
+        assert!(Ratio::from_reduction_within(1.0 + 1e-12, f64::NAN, "t").is_err());
+        assert_eq!(Ratio::from_reduction(1.0 + f64::EPSILON, "t").unwrap().mu_ratio, 0.0);
+        assert_eq!(Ratio::from_deficit(0.0, 0.0, "t").unwrap().mu_ratio, 1.0);
+    }
+}
