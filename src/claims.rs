@@ -4,20 +4,24 @@
 use crate::flat;
 use crate::mdr::{mu_static_ratio, power_law, DEFAULT_TOL};
 use crate::seed;
-use crate::spring::Spring;
+use crate::spring::EventKind;
 use serde::Serialize;
 use std::f64::consts::{PI, TAU};
 
-/// The verdict on one claim.
+/// The verdict on one claim, computed from its criterion ([`Claim::criterion`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Verdict {
-    /// The statement is right.
+    /// The statement is right (to the accuracy it states, or exactly).
     Holds,
-    /// A printed formula or number is wrong; the correction is given.
+    /// Right within the tolerance the statement itself gives or implies.
+    HoldsApproximately,
+    /// The statement's accuracy is better than measured.
+    Overstated,
+    /// A printed formula or number is off by a recognisable slip (sign, factor).
     Misprint,
-    /// An approximation, with the measured error.
-    Approximation,
+    /// Neither: the statement does not hold.
+    Wrong,
 }
 
 /// One checked statement.
@@ -29,12 +33,27 @@ pub struct Claim {
     pub seed_says: String,
     /// What the exact solver gives.
     pub exact_gives: String,
+    /// The rule that turns the measured quantities into the verdict.
+    pub criterion: String,
+    /// The measured quantities the verdict is computed from, by name.
+    pub measured: Vec<(String, f64)>,
     /// Largest deviation found (absolute, in the claim's own quantity), if any.
     pub deviation: Option<f64>,
     /// Where the largest deviation is.
     pub location: String,
     /// The verdict.
     pub verdict: Verdict,
+}
+
+impl Claim {
+    /// A measured quantity by name.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        self.measured.iter().find(|m| m.0 == name).map(|m| m.1)
+    }
+}
+
+fn named(pairs: &[(&str, f64)]) -> Vec<(String, f64)> {
+    pairs.iter().map(|&(n, v)| (n.to_string(), v)).collect()
 }
 
 fn mu_flat(v: f64, a: f64) -> f64 {
@@ -45,9 +64,12 @@ fn mu_mdr(n: f64, v: f64, a: f64) -> f64 {
     power_law(n, v, a, DEFAULT_TOL, false).map_or(f64::NAN, |r| r.ratio.mu_ratio)
 }
 
-/// Small-velocity slope `mu/vbar` of the flat punch at `vbar = 1e-9`.
+/// The velocity at which small-velocity slopes are measured.
+pub const SLOPE_VBAR: f64 = 1e-10;
+
+/// Small-velocity slope `mu/vbar` of the flat punch at `vbar =` [`SLOPE_VBAR`].
 pub fn exact_slope(amp: f64) -> f64 {
-    mu_flat(1e-9, amp) / 1e-9
+    mu_flat(SLOPE_VBAR, amp) / SLOPE_VBAR
 }
 
 /// A single spring in physical units (seed eq. 1): stiffnesses, friction,
@@ -97,27 +119,64 @@ fn worst_over(ps: &[f64], k: usize, f: impl Fn(f64, f64) -> f64) -> (f64, (f64, 
     best
 }
 
+/// Eq. 11's bar: "very accurately" read as 1 % of the amplitude (the reduction at `vbar = 0`).
+pub const EQ11_TOL: f64 = 0.01;
+/// "About 20 %": within 5 percentage points.
+pub const DROP_TOL: f64 = 0.05;
+/// Eq. 27's bar: "approximately valid" read as within 0.05 of `mu0`.
+pub const EQ27_TOL: f64 = 0.05;
+
+/// Verdict of an approximation with error `err` against its bar `tol`.
+fn graded(err: f64, tol: f64) -> Verdict {
+    if err <= tol {
+        Verdict::HoldsApproximately
+    } else if err <= 3.0 * tol {
+        Verdict::Overstated
+    } else {
+        Verdict::Wrong
+    }
+}
+
 /// Check every claim.
 pub fn check() -> Vec<Claim> {
     let mut out = vec![];
 
-    // Eq. 8's sign.
-    let v = 0.3f64;
-    let sp = Spring::with_events(2.0, v);
+    // Eq. 8's sign, at vbar = 0.5, amp = 0.5: tau2 from the solver's events.
+    let v = 0.5f64;
     let t1 = v.asin();
-    let t2 = t1 + sp.stick.map_or(f64::NAN, |s| s.length);
+    let t2 = flat::point(v, 0.5)
+        .ok()
+        .and_then(|p| p.events.iter().find(|e| e.kind == EventKind::Slip).map(|e| e.tau))
+        .unwrap_or(f64::NAN);
     let printed = |t: f64| t.cos() - ((1.0 - v * v).sqrt() + v * (t - t1));
+    let corrected = |t: f64| t.cos() - ((1.0 - v * v).sqrt() - v * (t - t1));
     let worst_printed = (1..=1000).map(|k| printed(t1 + k as f64 * TAU / 1000.0)).fold(f64::NEG_INFINITY, f64::max);
+    let (r_printed, r_corrected) = (printed(t2).abs(), corrected(t2).abs());
     out.push(Claim {
         claim: "eq. 8 (stick -> slip)".into(),
         seed_says: "cos tau2 = vbar (tau2 - arcsin vbar) + sqrt(1 - vbar^2)".into(),
         exact_gives: format!(
-            "cos tau2 = sqrt(1 - vbar^2) - vbar (tau2 - arcsin vbar); at vbar = 0.3, tau2 = {t2:.12}; the printed \
+            "cos tau2 = sqrt(1 - vbar^2) - vbar (tau2 - arcsin vbar); at vbar = 0.5, tau2 = {t2:.12}; the printed \
              form has no root after tau1 (its residual stays <= {worst_printed:.3e})"
         ),
-        deviation: Some(printed(t2).abs()),
-        location: "vbar = 0.3, amp = 0.5 (residual of the printed form at the true tau2)".into(),
-        verdict: Verdict::Misprint,
+        criterion: "holds if the printed form vanishes at the slip phase (residual < 1e-12); misprint if it has no \
+                    root after tau1 (residual < 0 on a 1000-point grid) while the sign-corrected form vanishes"
+            .into(),
+        measured: named(&[
+            ("tau2", t2),
+            ("printed_residual", r_printed),
+            ("corrected_residual", r_corrected),
+            ("printed_max_residual", worst_printed),
+        ]),
+        deviation: Some(r_printed),
+        location: "vbar = 0.5, amp = 0.5 (residual of the printed form at the true tau2)".into(),
+        verdict: if r_printed < 1e-12 {
+            Verdict::Holds
+        } else if worst_printed < 0.0 && r_corrected < 1e-12 {
+            Verdict::Misprint
+        } else {
+            Verdict::Wrong
+        },
     });
 
     // Eq. 11's error, relative to amp.
@@ -127,9 +186,14 @@ pub fn check() -> Vec<Claim> {
         claim: "eq. 11 (empirical fit, amp <= 1)".into(),
         seed_says: "approximates the numerical results 'very accurately'".into(),
         exact_gives: format!("largest error {worst:.4} amp, exact at vbar = 0 and 1"),
+        criterion: format!(
+            "'very accurately' read as within {EQ11_TOL} amp (1 % of the reduction at vbar = 0): holds approximately \
+             within it, overstated within 3x it, wrong beyond"
+        ),
+        measured: named(&[("max_error_over_amp", worst), ("at_vbar", at.0), ("at_amp", at.1)]),
         deviation: Some(worst),
         location: format!("vbar = {}, amp = {} (error / amp; the same at every amp to 1e-3)", at.0, at.1),
-        verdict: Verdict::Approximation,
+        verdict: graded(worst, EQ11_TOL),
     });
 
     // Eq. 12's asymptotic exactness at amp = 1 (Fig. 3 inset).
@@ -143,16 +207,21 @@ pub fn check() -> Vec<Claim> {
             "error {e3:.2e}, {e4:.2e}, {e5:.2e} at vbar = 1e-3, 1e-4, 1e-5 (amp = 1): O(vbar^{order:.2}), \
              vanishing faster than every term of eq. 12"
         ),
+        criterion: "asymptotically exact: the error must vanish faster than eq. 12's last term vbar^2, i.e. its \
+                    observed order between vbar = 1e-4 and 1e-5 exceeds 2"
+            .into(),
+        measured: named(&[("error_1e-3", e3), ("error_1e-4", e4), ("error_1e-5", e5), ("order", order)]),
         deviation: Some(e3),
         location: "amp = 1, vbar = 1e-3".into(),
-        verdict: if order > 2.0 { Verdict::Holds } else { Verdict::Approximation },
+        verdict: if order > 2.0 { Verdict::Holds } else { Verdict::Wrong },
     });
 
     // Eq. 21's factor pi.
-    let ratio: f64 =
-        [1.2, 1.5, 2.0, 5.0].iter().map(|&a| exact_slope(a) / seed::eq21_slope_printed(a)).sum::<f64>() / 4.0;
-    let dev21 =
-        [1.2, 1.5, 2.0, 5.0].iter().map(|&a| (exact_slope(a) / seed::eq21_slope(a) - 1.0).abs()).fold(0.0, f64::max);
+    let amps21 = [1.5, 2.0, 10.0];
+    let ratios: Vec<f64> = amps21.iter().map(|&a| exact_slope(a) / seed::eq21_slope_printed(a)).collect();
+    let ratio = ratios.iter().sum::<f64>() / ratios.len() as f64;
+    let spread = ratios.iter().map(|r| (r / ratio - 1.0).abs()).fold(0.0, f64::max);
+    let dev21 = amps21.iter().map(|&a| (exact_slope(a) / seed::eq21_slope(a) - 1.0).abs()).fold(0.0, f64::max);
     out.push(Claim {
         claim: "eq. 21 (low-velocity slope, amp > 1)".into(),
         seed_says: "mu/mu0 = vbar (1 - th/pi)^2 / (s (1 - th/pi + (1/pi)(du/u0) sqrt(1 - s^2)))".into(),
@@ -160,9 +229,25 @@ pub fn check() -> Vec<Claim> {
             "the exact slope is {ratio:.9} = pi times the printed one; corrected: (pi - th)^2 / (s (pi - th) + sin th), \
              matching the solver to {dev21:.1e}"
         ),
+        criterion: "holds if exact / printed slope is 1 within 1e-6; misprint if it is one constant factor at every \
+                    amplitude (spread < 1e-6) equal to pi within 1e-6; wrong otherwise"
+            .into(),
+        measured: named(&[
+            ("slope_amp_1.5", exact_slope(1.5)),
+            ("slope_amp_2", exact_slope(2.0)),
+            ("slope_amp_10", exact_slope(10.0)),
+            ("ratio_to_printed", ratio),
+            ("ratio_spread", spread),
+        ]),
         deviation: Some((ratio - 1.0).abs()),
-        location: "amp = 1.2, 1.5, 2, 5 (vbar = 1e-9)".into(),
-        verdict: Verdict::Misprint,
+        location: "amp = 1.5, 2, 10 (vbar = 1e-10)".into(),
+        verdict: if (ratio - 1.0).abs() < 1e-6 {
+            Verdict::Holds
+        } else if spread < 1e-6 && (ratio / PI - 1.0).abs() < 1e-6 {
+            Verdict::Misprint
+        } else {
+            Verdict::Wrong
+        },
     });
 
     // Eq. 22 and the Fig. 5 caption.
@@ -171,9 +256,19 @@ pub fn check() -> Vec<Claim> {
         claim: "eq. 22 and Fig. 5 caption (large-amplitude slope)".into(),
         seed_says: format!("limit pi/4 = {:.4}", seed::EQ22_PRINTED),
         exact_gives: format!("slope {big:.6} at amp = 1e8; the limit is pi^2/4 = {:.6}", seed::EQ22_CORRECTED),
+        criterion: "holds if the slope at amp = 1e8 is pi/4 within 1e-6; misprint if it is pi^2/4 (the printed value \
+                    times the factor pi of eq. 21) within 1e-6; wrong otherwise"
+            .into(),
+        measured: named(&[("slope_amp_1e8", big)]),
         deviation: Some((big - seed::EQ22_PRINTED).abs()),
         location: "amp = 1e8".into(),
-        verdict: Verdict::Misprint,
+        verdict: if (big / seed::EQ22_PRINTED - 1.0).abs() < 1e-6 {
+            Verdict::Holds
+        } else if (big / seed::EQ22_CORRECTED - 1.0).abs() < 1e-6 {
+            Verdict::Misprint
+        } else {
+            Verdict::Wrong
+        },
     });
 
     // "The slope drops by about 20 %".
@@ -198,9 +293,21 @@ pub fn check() -> Vec<Claim> {
             100.0 * drop_max,
             100.0 * drop_limit
         ),
+        criterion: format!(
+            "'about 20 %' read as 20 +- {:.0} %: holds approximately if the drop to the limiting slope is within it, \
+             overstated if only the deepest drop misses it, wrong if the limiting drop does",
+            100.0 * DROP_TOL
+        ),
+        measured: named(&[("slope_amp_1", s1), ("min_slope", smin), ("drop_max", drop_max), ("drop_limit", drop_limit)]),
         deviation: Some(drop_max - 0.2),
         location: format!("amp = {amin:.2} (largest drop minus 20 %)"),
-        verdict: Verdict::Approximation,
+        verdict: if (drop_limit - 0.2).abs() > DROP_TOL {
+            Verdict::Wrong
+        } else if (drop_max - 0.2).abs() > DROP_TOL {
+            Verdict::Overstated
+        } else {
+            Verdict::HoldsApproximately
+        },
     });
 
     // Eq. 28 against eq. 27.
@@ -210,9 +317,14 @@ pub fn check() -> Vec<Claim> {
         claim: "eq. 28 vs eq. 27".into(),
         seed_says: "differs from (27) by 1 % or less".into(),
         exact_gives: format!("largest difference {w28:.5} (of mu0)"),
+        criterion: "the seed's own bar, 1 % of mu0: holds within it, overstated within 3x it, wrong beyond".into(),
+        measured: named(&[("max_difference", w28), ("at_vbar", at28.0), ("at_mu_static", at28.1)]),
         deviation: Some(w28),
         location: format!("vbar = {}, mu_static/mu0 = {}", at28.0, at28.1),
-        verdict: if w28 <= 0.01 { Verdict::Holds } else { Verdict::Approximation },
+        verdict: match graded(w28, 0.01) {
+            Verdict::HoldsApproximately => Verdict::Holds,
+            other => other,
+        },
     });
 
     // The critical velocity vbar = 1 for every shape (eq. 26).
@@ -236,9 +348,13 @@ pub fn check() -> Vec<Claim> {
         exact_gives: format!(
             "mu = mu0 exactly for vbar >= 1 and mu < mu0 just below (reduction >= {worst_below:.1e} at 1 - vbar = 1e-3) for flat, parabolic, cone at amp 0.3, 1, 2"
         ),
+        criterion: "holds if mu = mu0 exactly at vbar = 1 and 1.1 and mu < mu0 at 1 - vbar = 1e-6, for every shape \
+                    and amplitude checked; wrong otherwise"
+            .into(),
+        measured: named(&[("all_checks_pass", if critical_ok { 1.0 } else { 0.0 }), ("min_reduction_1e-3", worst_below)]),
         deviation: None,
         location: "flat, parabolic, cone".into(),
-        verdict: if critical_ok { Verdict::Holds } else { Verdict::Approximation },
+        verdict: if critical_ok { Verdict::Holds } else { Verdict::Wrong },
     });
 
     // Eq. 27's shape independence.
@@ -259,9 +375,14 @@ pub fn check() -> Vec<Claim> {
         claim: "eq. 27 (shape independence)".into(),
         seed_says: "approximately valid for all shapes, jumping or not; shape enters only through mu_static".into(),
         exact_gives: format!("largest error: {}", parts.join("; ")),
+        criterion: format!(
+            "'approximately valid' read as within {EQ27_TOL} of mu0 at every shape, amplitude and velocity: holds \
+             approximately within it, overstated within 3x it, wrong beyond"
+        ),
+        measured: named(&[("max_error", w27)]),
         deviation: Some(w27),
         location: "amp in 0.2..2, vbar in [0, 1]".into(),
-        verdict: Verdict::Approximation,
+        verdict: graded(w27, EQ27_TOL),
     });
 
     // mu depends only on (vbar, amp): two dimensional systems with the same pair.
@@ -296,12 +417,16 @@ pub fn check() -> Vec<Claim> {
              amp = 0.5 give {a_:.12} and {b_:.12} by the seed's scheme (M = 20000); exact {exact:.12}. Two \
              sphere scenes (lengths x 1e3, moduli x 1e-4, frequency x 1e-2) give {sa:.15} and {sb:.15}"
         ),
+        criterion: "holds if the two stepped systems agree to 1e-10 and with the exact value to 1e-6 (M = 20000), and \
+                    the two scenes to 1e-14; wrong otherwise"
+            .into(),
+        measured: named(&[("stepped_a", a_), ("stepped_b", b_), ("exact", exact), ("scene_a", sa), ("scene_b", sb)]),
         deviation: Some((a_ - b_).abs().max((sa - sb).abs())),
         location: "flat punch (time stepping in physical units) and sphere scenes".into(),
         verdict: if (a_ - b_).abs() < 1e-10 && (a_ - exact).abs() < 1e-6 && (sa - sb).abs() < 1e-14 {
             Verdict::Holds
         } else {
-            Verdict::Approximation
+            Verdict::Wrong
         },
     });
     out
@@ -322,8 +447,10 @@ pub fn to_markdown(claims: &[Claim]) -> String {
             dev.replace('|', "/"),
             match c.verdict {
                 Verdict::Holds => "holds",
+                Verdict::HoldsApproximately => "holds approximately",
+                Verdict::Overstated => "overstated",
                 Verdict::Misprint => "misprint",
-                Verdict::Approximation => "approximation",
+                Verdict::Wrong => "wrong",
             }
         );
     }
