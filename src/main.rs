@@ -1,6 +1,8 @@
 //! `fricosc`: command-line interface, a thin layer over the library.
 //!
-//! Exit codes: 0 success, 2 error (one line on stderr, nothing on stdout).
+//! Exit codes: 0 success (also when the reader closes the pipe), 1 a negative
+//! answer (`validate`, `stress`), 2 bad input or a failed read/write (one line
+//! on stderr, nothing on stdout), 3 an internal error (`Error::Internal`).
 
 use clap::{Args, Parser, Subcommand};
 use fricosc::batch;

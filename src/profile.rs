@@ -357,7 +357,11 @@ fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
         en += (b.0 - a.0).abs();
         ed += (b.1 - a.1).abs();
     }
-    let estimate = if nn > 0.0 { ed / nn + dd * en / (nn * nn) + 1e-14 } else { 1e-14 };
+    // Truncation (the 16/32-point difference per interval) plus rounding.
+    let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
+    let terms = 48 * (cuts.len() - 1);
+    let truncation = if nn > 0.0 { ed / nn + dd * en / (nn * nn) } else { 0.0 };
+    let estimate = truncation + crate::ratio::rounding_estimate(reduction, terms);
     let ratio = Ratio::from_deficit_within(dd, nn, estimate, "tabulated contact")?;
     Ok((ratio, estimate, nn))
 }

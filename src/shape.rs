@@ -86,9 +86,15 @@ pub struct Evaluation {
     pub interpolation_error: Option<f64>,
 }
 
-/// Accuracy bound of the single-spring solver, from the tests against the
-/// 40-digit references and the derived limits (`tests/flat.rs`).
-pub const FLAT_ERROR_BOUND: f64 = 1e-15;
+/// Absolute error estimate of the flat punch's `mu_ratio`: one of `mu_ratio`
+/// and the reduction is computed directly with relative error at most
+/// [`crate::ratio::ROUNDING_PER_TERM`] eps (measured: 3.3 eps,
+/// `tests/flat_events.rs`), the other as its complement, which adds half an ulp
+/// of 1; so `eps (16 max(mu, reduction) + 1/2)` bounds either. (Where `mu_ratio`
+/// is the small one of a jumping punch its relative error is 16 eps itself.)
+pub fn flat_error_estimate(r: &Ratio) -> f64 {
+    f64::EPSILON * (crate::ratio::ROUNDING_PER_TERM * r.mu_ratio.max(r.reduction) + 0.5)
+}
 
 /// Evaluate `mu_macro/mu0` at the default tolerance.
 pub fn evaluate(shape: &Shape, vbar: f64, amp: f64) -> Result<Evaluation> {
@@ -102,11 +108,10 @@ pub fn evaluate_with(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<Eva
     check_nonneg("amp", amp)?;
     check_tol(tol)?;
     match shape {
-        Shape::Flat => Ok(Evaluation {
-            ratio: flat::ratio(vbar, amp)?,
-            error_estimate: FLAT_ERROR_BOUND,
-            interpolation_error: None,
-        }),
+        Shape::Flat => {
+            let ratio = flat::ratio(vbar, amp)?;
+            Ok(Evaluation { ratio, error_estimate: flat_error_estimate(&ratio), interpolation_error: None })
+        }
         Shape::Power(n) => {
             let r = mdr::power_law(*n, vbar, amp, tol, false)?;
             Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate, interpolation_error: None })

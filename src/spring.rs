@@ -1,6 +1,6 @@
 //! One spring: regimes, event times and closed-form phase integrals.
 //!
-//! # Model (MODEL.md, seed section 2)
+//! # Model (seed section 2)
 //! Time is the phase `tau = omega t`. The spring's normal force, in units of
 //! `kz du`, is the Coulomb bound `B(tau) = (s - cos tau)_+` with `s = u0/du`.
 //! The tangential force `F`, in units of `mu0 kz du`, grows at rate `vbar`

@@ -300,3 +300,27 @@ fn tabulated_shapes_from_the_command_line_and_their_bad_inputs() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("before the contact edge"));
 }
+
+/// The same shape, vbar, amp and tolerance give bit-identical values in every command.
+#[test]
+fn one_value_per_input() {
+    let cases = [("flat", "0.3", "1.5"), ("flat", "1e-12", "2"), ("parabolic", "0", "1"), ("cone", "0.45", "0.999")];
+    for (shape, vbar, amp) in cases {
+        let p = json(&fricosc(&["point", "--shape", shape, "--vbar", vbar, "--amp", amp], None));
+        let t = json(&fricosc(&["table", "--shape", shape, "--vbar", vbar, "--amp", amp], None));
+        let batch = format!(r#"[{{"shape":"{shape}","vbar":{vbar},"amp":{amp}}}]"#);
+        let b = json(&fricosc(&["batch", "-"], Some(&batch)));
+        let lib = fricosc::shape::evaluate(
+            &fricosc::shape::Shape::parse(shape).unwrap(),
+            vbar.parse().unwrap(),
+            amp.parse().unwrap(),
+        )
+        .unwrap()
+        .ratio
+        .mu_ratio;
+        let bits = |v: &serde_json::Value| v.as_f64().unwrap().to_bits();
+        assert_eq!(bits(&p["mu_ratio"]), lib.to_bits(), "{shape} {vbar} {amp}: point");
+        assert_eq!(bits(&t["rows"][0]["mu_ratio"]), lib.to_bits(), "{shape} {vbar} {amp}: table");
+        assert_eq!(bits(&b[0]["mu_ratio"]), lib.to_bits(), "{shape} {vbar} {amp}: batch");
+    }
+}

@@ -44,6 +44,9 @@ fn event_phases_forces_and_small_mu_match_independent_40_digit_values() {
             }
             worst_mu = worst_mu.max(rel_mu);
         }
+        // The reported estimate bounds the error (a derived rounding bound, no floor).
+        let est = fricosc::shape::flat_error_estimate(&p.ratio);
+        assert!((p.ratio.mu_ratio - mu).abs() <= est, "vbar {vbar} amp {amp}: estimate {est:e}");
         let red = num(&c["reduction"]);
         assert!((p.ratio.reduction - red).abs() <= 1e-15, "reduction at vbar {vbar} amp {amp}");
         let exact = c["events"].as_array().unwrap();

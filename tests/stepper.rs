@@ -1,5 +1,5 @@
 //! The seed's time-stepping scheme converges to the exact solver, at the order
-//! MODEL.md states: second for amp <= 1, first (erratic in M) once contact is lost.
+//! Expected: second order for amp <= 1, first (erratic in M) once contact is lost.
 use fricosc::flat::ratio;
 use fricosc::stepper::flat_mu_ratio;
 use std::f64::consts::TAU;

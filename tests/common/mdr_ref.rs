@@ -1,4 +1,6 @@
-//! An independent reference for MDR power laws: the integral over `z` is done in
+//! A second quadrature for MDR power laws (not independent: it shares
+//! `Spring::new` and `quad::rule` with the solver; the independent check is
+//! `tests/mdr_independent.rs`): the integral over `z` is done in
 //! the variable `y = z^n` (not the solver's `beta = arcsin s`), with a
 //! `y = p + (q-p)(1 - cos t)/2` substitution for the square-root thresholds,
 //! Gauss-Jacobi at the centre, geometric splitting near it, and fixed high orders

@@ -1,0 +1,144 @@
+//! The MDR solver and its error estimate against a reference that shares no
+//! code with it: its own single-spring solution (bisection on the plain gap
+//! `B(t0 + x) - F0 - vbar x`, the seed's eq. 9 integral, eq. 20 for the mean
+//! normal force) and its own quadrature (tanh-sinh in `z = x/x_c`, split at the
+//! regime thresholds, two step sizes whose difference is its accuracy).
+//!
+//! At every tolerance from 1e-3 to the default, on the 528-point grid of
+//! `tests/mdr.rs` (which includes amp 0.999 and 1.001, vbar 1e-6 and 1 - 1e-6),
+//! the solver's `error_estimate` must bound its distance to this reference
+//! (up to the reference's own accuracy).
+use fricosc::mdr::{power_law, DEFAULT_TOL};
+use std::f64::consts::{PI, TAU};
+
+/// Mean normal force of a spring, eq. 20 form: `(s (pi - th) + sin th)/pi`.
+fn mean_b(s: f64) -> f64 {
+    if s >= 1.0 {
+        s
+    } else if s <= -1.0 {
+        0.0
+    } else {
+        let th = s.acos();
+        (s * (PI - th) + th.sin()) / PI
+    }
+}
+
+/// Period-mean stick deficit of a spring, from the seed's construction.
+fn deficit(s: f64, v: f64) -> f64 {
+    if v >= 1.0 || s <= -1.0 {
+        return 0.0;
+    }
+    let delta = v.asin();
+    let c = (1.0 - v * v).sqrt();
+    let (t0, f0, x_max) = if s >= c {
+        let x_max = if s >= 1.0 { TAU } else { TAU - s.acos() - delta };
+        (delta, s - c, x_max)
+    } else if s > -c {
+        let th = s.acos();
+        (th, 0.0, TAU - 2.0 * th)
+    } else {
+        return 0.0;
+    };
+    let gap = |x: f64| (s - (t0 + x).cos()) - f0 - v * x;
+    // The gap peaks where the bound's slope is vbar again (t0 + x = pi - delta).
+    let (mut lo, mut hi) = ((PI - delta - t0).max(0.0), x_max);
+    if gap(lo) <= 0.0 {
+        return 0.0;
+    }
+    for _ in 0..64 {
+        let mid = 0.5 * (lo + hi);
+        if gap(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let l = 0.5 * (lo + hi);
+    ((s - f0) * l - ((t0 + l).sin() - t0.sin()) - 0.5 * v * l * l) / TAU
+}
+
+/// Tanh-sinh over [a, b] at step h: `(int f, int g)` for a pair of integrands.
+fn tanh_sinh(a: f64, b: f64, h: f64, f: &dyn Fn(f64) -> (f64, f64)) -> (f64, f64) {
+    let half = 0.5 * (b - a);
+    let (mut sf, mut sg) = (0.0, 0.0);
+    let kmax = (3.5 / h) as i64;
+    for k in -kmax..=kmax {
+        let t = k as f64 * h;
+        let u = 0.5 * PI * t.sinh();
+        let cu = u.cosh();
+        let w = half * 0.5 * PI * t.cosh() / (cu * cu);
+        // Distance to the nearer end without rounding: (b - a) / (1 + e^{2|u|}).
+        let d = (b - a) / (1.0 + (2.0 * u.abs()).exp());
+        let x = if t < 0.0 { a + d } else { b - d };
+        if d <= 0.0 || w == 0.0 {
+            continue;
+        }
+        let (p, q) = f(x);
+        sf += w * p;
+        sg += w * q;
+    }
+    (h * sf, h * sg)
+}
+
+/// `(mu_ratio, accuracy)` of the power law `g = z^n` by the reference.
+fn reference(n: f64, v: f64, amp: f64) -> (f64, f64) {
+    if amp == 0.0 || v >= 1.0 {
+        return (1.0, 0.0);
+    }
+    let c = (1.0 - v * v).sqrt();
+    let z_of = |s: f64| (1.0 - amp * s).clamp(0.0, 1.0 + amp).powf(1.0 / n);
+    let mut cuts = vec![0.0, z_of(1.0), z_of(c), z_of(-c), z_of(-1.0)];
+    cuts.dedup();
+    let f = |z: f64| {
+        let s = (1.0 - z.powf(n)) / amp;
+        (mean_b(s), deficit(s, v))
+    };
+    let integrate = |h: f64| {
+        let (mut nn, mut dd) = (0.0, 0.0);
+        for w in cuts.windows(2) {
+            if w[1] > w[0] {
+                let (p, q) = tanh_sinh(w[0], w[1], h, &f);
+                nn += p;
+                dd += q;
+            }
+        }
+        (nn, dd)
+    };
+    let (n1, d1) = integrate(1.0 / 32.0);
+    let (n2, d2) = integrate(1.0 / 64.0);
+    let (m1, m2) = (1.0 - d1 / n1, 1.0 - d2 / n2);
+    (m2, (m2 - m1).abs() + 1e-15)
+}
+
+#[test]
+fn the_error_estimate_bounds_the_error_at_every_tolerance_against_an_independent_reference() {
+    let vbars = [0.0, 1e-6, 0.05, 0.2, 0.45, 0.7, 0.9, 0.99, 1.0 - 1e-6, 1.0 - 1e-12, 1.0, 1.2];
+    let amps = [0.0, 0.1, 0.5, 0.9, 0.999, 1.0, 1.001, 1.3, 2.0, 4.0, 10.0];
+    let mut refs = vec![];
+    for n in [1.0, 2.0, 1.5, 3.0] {
+        for &v in &vbars {
+            for &a in &amps {
+                refs.push((n, v, a, reference(n, v, a)));
+            }
+        }
+    }
+    assert_eq!(refs.len(), 528);
+    let worst_ref = refs.iter().map(|r| r.3 .1).fold(0.0, f64::max);
+    assert!(worst_ref < 1e-11, "the reference itself is accurate to {worst_ref:e}");
+    for tol in [1e-3, 1e-6, 1e-9, 1e-12, DEFAULT_TOL] {
+        let mut misses = vec![];
+        let mut worst = 0.0f64;
+        for &(n, v, a, (mu, acc)) in &refs {
+            let r = power_law(n, v, a, tol, false).unwrap();
+            let err = (r.ratio.mu_ratio - mu).abs();
+            worst = worst.max(err);
+            if err > r.error_estimate + acc {
+                misses.push(format!("n={n} v={v} a={a}: err {err:e} > estimate {:e} + {acc:e}", r.error_estimate));
+            }
+            // A requested tolerance is met (relative to mu, with the reference's slack).
+            assert!(err <= 10.0 * tol.max(1e-14) + acc, "tol {tol:e}, n={n} v={v} a={a}: err {err:e}");
+        }
+        assert!(misses.is_empty(), "tol {tol:e}: {} misses, e.g. {}", misses.len(), misses[0]);
+        eprintln!("tol {tol:e}: worst error {worst:e}, every estimate a bound");
+    }
+}
