@@ -11,7 +11,13 @@ fn parabolic_and_cone_references_to_1e_13_within_the_error_estimate() {
         let shape = Shape::parse(&c.shape).unwrap();
         let e = evaluate(&shape, c.vbar, c.amp).unwrap();
         let err = (e.ratio.mu_ratio - c.mu_ratio).abs();
-        assert!(err <= tol::MDR_ABS, "{} vbar={} amp={}: err {err:e}", c.shape, c.vbar, c.amp);
+        assert!(
+            err <= tol::MDR_ABS.min(tol::MDR_ABS_REGRESSION),
+            "{} vbar={} amp={}: err {err:e}",
+            c.shape,
+            c.vbar,
+            c.amp
+        );
         assert!(
             err <= e.error_estimate,
             "{} vbar={} amp={}: err {err:e} > estimate {:e}",
