@@ -13,7 +13,8 @@ pub fn parse_number(what: &str, text: &str) -> Result<f64> {
     if !x.is_finite() {
         return Err(Error::Parse { context: what.into(), reason: format!("'{t}' is not finite") });
     }
-    Ok(x)
+    // -0.0 is 0 (it would print back as -0.0 in vbar and reduction).
+    Ok(x + 0.0)
 }
 
 /// A comma list `a,b,c` or an inclusive range `start:stop:count` (`count >= 1`,

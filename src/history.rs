@@ -68,6 +68,9 @@ pub fn spring_force(sp: &Spring, tau: f64) -> f64 {
     b
 }
 
+/// Most springs summed for an MDR history.
+pub const MAX_SPRINGS: usize = 1_000_000;
+
 /// Most samples one history may hold.
 pub const MAX_SAMPLES: usize = 10_000_000;
 
@@ -93,7 +96,14 @@ pub fn history(
     if periods == 0 || samples == 0 || springs == 0 {
         return Err(Error::param("periods/samples/springs", 0.0, "must be >= 1"));
     }
-    if periods.saturating_mul(samples) > MAX_SAMPLES || springs > 1_000_000 {
+    if springs > MAX_SPRINGS {
+        return Err(Error::TooLarge {
+            what: "history springs".into(),
+            count: springs as u128,
+            limit: MAX_SPRINGS as u128,
+        });
+    }
+    if periods.saturating_mul(samples) > MAX_SAMPLES {
         return Err(Error::TooLarge {
             what: "history".into(),
             count: (periods as u128) * (samples as u128),

@@ -414,7 +414,16 @@ fn run_scene(files: Vec<String>, schema: bool, format: Format) -> Result<()> {
     emit(&format!("{}\n", text.trim_end()))
 }
 
+/// An output directory must be named: `--out ""` would write into the current one.
+fn check_out_dir(out: &str) -> Result<()> {
+    if out.trim().is_empty() {
+        return Err(Error::Parse { context: "--out".into(), reason: "the output directory is empty".into() });
+    }
+    Ok(())
+}
+
 fn run_bench(out: &str, quick: bool) -> Result<()> {
+    check_out_dir(out)?;
     let dir = std::path::Path::new(out);
     let werr = |e: String| Error::write(out, io::Error::other(e));
     std::fs::create_dir_all(dir).map_err(|e| Error::write(out, e))?;
@@ -492,7 +501,8 @@ fn main() -> ExitCode {
         Command::Table(a) => table(a),
         Command::Bench { out, quick } => run_bench(&out, quick),
         Command::Scene { files, schema, format } => run_scene(files, schema, format),
-        Command::Figures { out } => fricosc::figures::write_all(std::path::Path::new(&out))
+        Command::Figures { out } => check_out_dir(&out)
+            .and_then(|()| fricosc::figures::write_all(std::path::Path::new(&out)))
             .and_then(|names| emit(&format!("wrote {} figures to {out}: {}\n", names.len(), names.join(", ")))),
         Command::History { shape, velocity, amp, periods, samples, springs, spring_at, format } => {
             run_history(&shape, &velocity, &amp, (periods, samples, springs), spring_at.as_deref(), &format)

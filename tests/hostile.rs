@@ -75,3 +75,23 @@ fn a_byte_order_mark_is_tolerated() {
     let out = bin().args(["validate", path.to_str().unwrap()]).output().unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
 }
+
+/// Misleading or silent cases of the hostile-input issue: each is now a clear error or normalised.
+#[test]
+fn negative_zero_empty_out_and_history_springs() {
+    let out = bin().args(["table", "--vbar", "-0.0", "--amp", "0.5", "--format", "csv"]).output().unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(!text.contains("-0.0"), "{text}");
+    for args in [["bench", "--out", ""], ["figures", "--out", ""]] {
+        let out = bin().args(args).output().unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&out.stderr).contains("output directory is empty"));
+    }
+    let out = bin()
+        .args(["history", "--shape", "parabolic", "--vbar", "0.3", "--amp", "0.5", "--springs", "2000000"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("history springs: 2000000 is more than the limit of 1000000"), "{err}");
+    assert!(out.stdout.is_empty());
+}
