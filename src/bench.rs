@@ -10,9 +10,9 @@ use crate::shape::{evaluate_stepping, evaluate_with, Shape, Stepping};
 use serde::Serialize;
 use std::time::Instant;
 
-/// The reference values this benchmark uses: `data/reference-values.json`, a
-/// copy of `shared/reference-values.json` (40 digits, independent evaluation,
-/// cross-checked by a converged time stepper; `tests/reference.rs` checks the copy).
+/// The reference values this benchmark uses: `data/reference-values.json`, the
+/// project's public 40-digit values (independent evaluation, cross-checked by a
+/// converged time stepper; `tests/reference.rs` reads and checks them).
 const REFERENCES: &str = include_str!("../data/reference-values.json");
 
 /// One benchmarked case.
@@ -228,9 +228,8 @@ pub fn run(quick: bool) -> Report {
     Report {
         version: env!("CARGO_PKG_VERSION").into(),
         machine: machine(),
-        reference: "40-digit values of shared/reference-values.json (independent high-precision evaluation of the \
-                    exact periodic state, cross-checked by a converged time stepper), copied to data/ and checked \
-                    against shared/ by tests/reference.rs"
+        reference: "40-digit values of data/reference-values.json (independent high-precision evaluation of the \
+                    exact periodic state, cross-checked by a converged time stepper), checked by tests/reference.rs"
             .into(),
         cases,
         points,
