@@ -31,10 +31,9 @@ def state(vbar, amp):
         t0, f0 = theta, mpf(0)
         xmax = 2 * pi - 2 * theta
     gap = lambda x: B(t0 + x) - f0 - v * x
-    # The gap is positive just after its maximum at x = pi - 2 t0 + 2 delta... bracket from
-    # the top: it is negative at xmax and positive where the bound's slope equals vbar again.
-    lo = pi - t0 - delta + (0 if s >= c else 0)  # sin(t0 + lo) = sin(pi - delta) = vbar: the gap's maximum
-    lo = max(lo, mpf(0))
+    # Bracket: the gap peaks where the bound's slope is vbar again (t0 + x = pi - delta)
+    # and is negative at xmax.
+    lo = max(pi - t0 - delta, mpf(0))
     hi = xmax
     assert gap(lo) > 0 > gap(hi), (vbar, amp)
     for _ in range(200):
