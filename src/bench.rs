@@ -241,11 +241,18 @@ pub fn run(quick: bool) -> Report {
 
 /// CSV of the points: `case,method,setting,error,time_s`.
 pub fn to_csv(r: &Report) -> String {
-    let mut s = String::from("case,method,setting,error,time_s\n");
-    for p in &r.points {
-        s += &format!("{},{},\"{}\",{:?},{:?}\n", p.case, p.method, p.setting, p.error, p.time_s);
-    }
-    s
+    crate::output::csv_table(
+        &["case", "method", "setting", "error", "time_s"],
+        r.points.iter().map(|p| {
+            [
+                p.case.to_string(),
+                p.method.to_string(),
+                p.setting.clone(),
+                format!("{:?}", p.error),
+                format!("{:?}", p.time_s),
+            ]
+        }),
+    )
 }
 
 /// Log-log SVG of error against time per evaluation, one series per case and method.

@@ -173,20 +173,15 @@ pub fn build() -> Result<Vec<Figure>> {
 
 /// CSV (long format): `curve,kind,amp,x,y`.
 pub fn to_csv(f: &Figure) -> String {
-    let mut s = String::from("curve,kind,amp,x,y\n");
-    for c in &f.curves {
-        for p in &c.points {
-            s += &format!(
-                "\"{}\",{},{},{},{}\n",
-                c.label,
-                c.kind,
-                c.amp.map_or(String::new(), crate::output::num),
-                crate::output::num(p[0]),
-                crate::output::num(p[1])
-            );
-        }
-    }
-    s
+    let n = crate::output::num;
+    crate::output::csv_table(
+        &["curve", "kind", "amp", "x", "y"],
+        f.curves.iter().flat_map(|c| {
+            c.points
+                .iter()
+                .map(move |p| [c.label.clone(), c.kind.to_string(), c.amp.map_or(String::new(), n), n(p[0]), n(p[1])])
+        }),
+    )
 }
 
 /// The SVG plot of a figure.

@@ -189,18 +189,14 @@ pub fn history(
 
 /// CSV: `tau,normal,tangential,event`.
 pub fn to_csv(h: &History) -> String {
-    let mut s = String::from("tau,normal,tangential,event\n");
-    for x in &h.samples {
-        let ev = x
-            .event
-            .map(|e| serde_json::to_value(e).ok().and_then(|v| v.as_str().map(String::from)).unwrap_or_default());
-        s += &format!(
-            "{},{},{},{}\n",
-            crate::output::num(x.tau),
-            crate::output::num(x.normal),
-            crate::output::num(x.tangential),
-            ev.unwrap_or_default()
-        );
-    }
-    s
+    let n = crate::output::num;
+    crate::output::csv_table(
+        &["tau", "normal", "tangential", "event"],
+        h.samples.iter().map(|x| {
+            let ev = x
+                .event
+                .map(|e| serde_json::to_value(e).ok().and_then(|v| v.as_str().map(String::from)).unwrap_or_default());
+            [n(x.tau), n(x.normal), n(x.tangential), ev.unwrap_or_default()]
+        }),
+    )
 }

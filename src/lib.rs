@@ -43,6 +43,7 @@ pub mod plot;
 pub mod profile;
 pub mod quad;
 pub mod ratio;
+pub mod rows;
 pub mod scene;
 pub mod seed;
 pub mod shape;

@@ -300,7 +300,7 @@ fn table(a: TableArgs) -> Result<()> {
             .collect();
         for row in rows {
             let r = row?;
-            if is_vhat { w.row(&name, &r) } else { w.row(&name, &r[1..]) }.map_err(io_err)?;
+            if is_vhat { w.row(&r) } else { w.row(&r[1..]) }.map_err(io_err)?;
         }
     }
     w.finish().map_err(io_err)
@@ -315,14 +315,8 @@ fn read_input(file: Option<String>) -> Result<(String, String)> {
 fn run_batch(file: Option<String>, stepping: Option<Stepping>) -> Result<()> {
     let (text, source) = read_input(file)?;
     let rows = batch::run(&text, &source, stepping)?;
-    let mut out = io::BufWriter::new(io::stdout().lock());
-    out.write_all(b"[").map_err(io_err)?;
-    for (i, r) in rows.iter().enumerate() {
-        out.write_all(if i == 0 { b"\n" } else { b",\n" }).map_err(io_err)?;
-        serde_json::to_writer(&mut out, r).map_err(|e| io_err(e.into()))?;
-    }
-    out.write_all(b"\n]\n").map_err(io_err)?;
-    out.flush().map_err(io_err)
+    let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
+    rows.write(&mut out).and_then(|()| out.flush()).map_err(io_err)
 }
 
 fn run_history(
@@ -458,8 +452,10 @@ fn run_validate(shape: &str, file: String, max_error: Option<String>) -> Result<
         None => None,
     };
     let (text, source) = read_input(Some(file))?;
-    let rows = fricosc::validate::read_rows(&text, &source)?;
-    let v = fricosc::validate::validate(&shape, &rows)?;
+    let table = fricosc::validate::read_table(&text, &source)?;
+    drop(text);
+    let mut v = fricosc::validate::validate(&shape, &table.rows)?;
+    v.ignored_columns = table.ignored_columns;
     let mut out = io::BufWriter::new(io::stdout().lock());
     serde_json::to_writer_pretty(&mut out, &v).map_err(|e| io_err(e.into()))?;
     writeln!(out).map_err(io_err)?;

@@ -14,6 +14,30 @@ pub fn num(x: f64) -> String {
     }
 }
 
+/// One CSV field as the `csv` crate writes it (quoted only when needed), so that
+/// a shape like `gx:a,b.csv@1` reads back as one field.
+pub fn csv_field(s: &str) -> String {
+    let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(vec![]);
+    // Writing to a Vec cannot fail; an empty field is written as `""`.
+    let _ = w.write_record([s]);
+    let bytes = w.into_inner().unwrap_or_default();
+    String::from_utf8_lossy(&bytes).trim_end_matches('\n').to_string()
+}
+
+/// A whole CSV document (header and rows) by the `csv` crate.
+pub fn csv_table<I, R>(header: &[&str], rows: I) -> String
+where
+    I: IntoIterator<Item = R>,
+    R: IntoIterator<Item = String>,
+{
+    let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(vec![]);
+    let _ = w.write_record(header);
+    for r in rows {
+        let _ = w.write_record(r.into_iter().collect::<Vec<String>>());
+    }
+    String::from_utf8_lossy(&w.into_inner().unwrap_or_default()).into_owned()
+}
+
 fn write_num(out: &mut impl Write, x: f64) -> io::Result<()> {
     let mut b = ryu::Buffer::new();
     out.write_all(if x.is_finite() { b.format_finite(x) } else { "null" }.as_bytes())
@@ -34,6 +58,8 @@ pub struct TableWriter<W: Write> {
     format: Format,
     columns: Vec<&'static str>,
     rows: usize,
+    /// The shape as a CSV field (quoted when it holds a comma or a quote).
+    csv_shape: String,
 }
 
 impl<W: Write> TableWriter<W> {
@@ -43,11 +69,11 @@ impl<W: Write> TableWriter<W> {
             Format::Json => write!(out, "{{\"shape\":{},\"rows\":[", serde_json::to_string(shape)?)?,
             Format::Csv => writeln!(out, "shape,{}", columns.join(","))?,
         }
-        Ok(TableWriter { out, format, columns, rows: 0 })
+        Ok(TableWriter { out, format, columns, rows: 0, csv_shape: csv_field(shape) })
     }
 
-    /// One row (values in column order).
-    pub fn row(&mut self, shape: &str, values: &[f64]) -> io::Result<()> {
+    /// One row (values in column order); the shape is the one given to [`TableWriter::new`].
+    pub fn row(&mut self, values: &[f64]) -> io::Result<()> {
         match self.format {
             Format::Json => {
                 if self.rows > 0 {
@@ -64,7 +90,7 @@ impl<W: Write> TableWriter<W> {
                 self.out.write_all(b"}")?;
             }
             Format::Csv => {
-                write!(self.out, "{shape}")?;
+                self.out.write_all(self.csv_shape.as_bytes())?;
                 for v in values {
                     self.out.write_all(b",")?;
                     write_num(&mut self.out, *v)?;

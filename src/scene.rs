@@ -579,21 +579,29 @@ pub fn schema() -> String {
 
 /// CSV of a scene's rows.
 pub fn to_csv(r: &SceneResult) -> String {
-    let mut s =
-        String::from("velocity_m_per_s,vbar,vhat,mu_macro,mu_ratio,mean_friction_force_n,mean_normal_force_n,regime\n");
-    for x in &r.rows {
-        let n = crate::output::num;
-        s += &format!(
-            "{},{},{},{},{},{},{},{}\n",
-            n(x.velocity_m_per_s),
-            n(x.vbar),
-            n(x.vhat),
-            n(x.mu_macro),
-            n(x.mu_ratio),
-            n(x.mean_friction_force_n),
-            n(x.mean_normal_force_n),
-            x.regime
-        );
-    }
-    s
+    let n = crate::output::num;
+    crate::output::csv_table(
+        &[
+            "velocity_m_per_s",
+            "vbar",
+            "vhat",
+            "mu_macro",
+            "mu_ratio",
+            "mean_friction_force_n",
+            "mean_normal_force_n",
+            "regime",
+        ],
+        r.rows.iter().map(|x| {
+            [
+                n(x.velocity_m_per_s),
+                n(x.vbar),
+                n(x.vhat),
+                n(x.mu_macro),
+                n(x.mu_ratio),
+                n(x.mean_friction_force_n),
+                n(x.mean_normal_force_n),
+                x.regime.to_string(),
+            ]
+        }),
+    )
 }

@@ -3,15 +3,16 @@
 //!
 //! Input is JSON (an array of row objects, or an object with a `rows` array, as
 //! `fricosc table` prints) or CSV with a header row naming at least `vbar`,
-//! `amp` and `mu_ratio` (other columns are ignored; `--shape` decides the
-//! geometry). The format is recognised by the first non-blank character.
+//! `amp` and `mu_ratio` (other columns are listed as `ignored_columns` in the
+//! report; `--shape` decides the geometry). The format is recognised by the first non-blank character.
 
 use crate::error::{check_nonneg, Error, Result};
 use crate::grid::parse_number;
+use crate::rows::{number, pick, raw_array};
 use crate::shape::{evaluate, Shape};
 use rayon::prelude::*;
 use serde::Serialize;
-use serde_json::Value;
+use serde_json::value::RawValue;
 
 /// Most rows one file may hold.
 pub const MAX_ROWS: usize = 10_000_000;
@@ -46,52 +47,81 @@ pub struct Validation {
     pub rms_error: f64,
     /// The row with the largest `|error|` (absent for an empty table).
     pub worst: Option<Row>,
+    /// CSV columns that were read but not compared (absent when none).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub ignored_columns: Vec<String>,
     /// Every row.
     pub rows: Vec<Row>,
 }
 
 /// Read `(vbar, amp, mu_ratio)` rows from JSON or CSV text; `source` names it in errors.
+///
+/// JSON rows are read from their raw text (no value trees; duplicate keys are
+/// refused). CSV is read with a real CSV reader (quoted fields, a byte-order
+/// mark tolerated by [`crate::input`]); a duplicated column is refused, and a
+/// table without data rows is an error, never a pass.
 pub fn read_rows(text: &str, source: &str) -> Result<Vec<(f64, f64, f64)>> {
+    Ok(read_table(text, source)?.rows)
+}
+
+/// The rows of a table and the CSV columns that were not used.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// `(vbar, amp, mu_ratio)` per row.
+    pub rows: Vec<(f64, f64, f64)>,
+    /// CSV header columns other than `vbar`, `amp`, `mu_ratio` (not compared).
+    pub ignored_columns: Vec<String>,
+}
+
+/// As [`read_rows`], with the ignored CSV columns.
+pub fn read_table(text: &str, source: &str) -> Result<Table> {
     let err = |reason: String| Error::Parse { context: source.into(), reason };
+    let mut ignored_columns = vec![];
     let rows = match text.trim_start().chars().next() {
         None => return Err(err("empty input".into())),
         Some('[') | Some('{') => {
-            let v: Value = serde_json::from_str(text).map_err(|e| err(format!("malformed JSON: {e}")))?;
-            let arr = match v {
-                Value::Array(a) => a,
-                Value::Object(mut o) => match o.remove("rows") {
-                    Some(Value::Array(a)) => a,
-                    _ => return Err(err("a JSON object needs a 'rows' array".into())),
-                },
-                _ => return Err(err("expected a JSON array or an object with 'rows'".into())),
+            let whole: &RawValue = serde_json::from_str(text).map_err(|e| err(format!("malformed JSON: {e}")))?;
+            let array = if whole.get().starts_with('{') {
+                let p = pick(whole, &["rows"]).map_err(err)?;
+                p.0[0].ok_or_else(|| err("a JSON object needs a 'rows' array".into()))?
+            } else {
+                whole
             };
-            arr.iter()
+            let rows = raw_array(array.get()).map_err(|_| err("'rows' must be a JSON array".into()))?;
+            rows.iter()
                 .enumerate()
                 .map(|(i, r)| {
-                    let num = |k: &str| match r.get(k) {
-                        Some(Value::Number(n)) => {
-                            n.as_f64().ok_or_else(|| err(format!("row {i}: '{k}' is not finite")))
-                        }
-                        Some(_) => Err(err(format!("row {i}: '{k}' must be a number"))),
-                        None => Err(err(format!("row {i}: missing field '{k}'"))),
+                    let row_err = |reason: String| err(format!("row {i}: {reason}"));
+                    let p = pick(r, &["vbar", "amp", "mu_ratio"]).map_err(row_err)?;
+                    let get = |k: usize, name: &str| {
+                        let raw = p.0[k].ok_or_else(|| row_err(format!("missing field '{name}'")))?;
+                        number(raw, name).map_err(row_err)
                     };
-                    Ok((num("vbar")?, num("amp")?, num("mu_ratio")?))
+                    Ok((get(0, "vbar")?, get(1, "amp")?, get(2, "mu_ratio")?))
                 })
                 .collect::<Result<Vec<_>>>()?
         }
         Some(_) => {
-            let mut lines = text.lines().filter(|l| !l.trim().is_empty());
-            let header: Vec<&str> = lines.next().unwrap_or("").split(',').map(str::trim).collect();
+            let mut rd = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
+            let header: Vec<String> =
+                rd.headers().map_err(|e| err(format!("CSV header: {e}")))?.iter().map(str::to_string).collect();
+            for (k, h) in header.iter().enumerate() {
+                if header[..k].contains(h) {
+                    return Err(err(format!("CSV header has column '{h}' twice")));
+                }
+            }
             let col = |name: &str| {
-                header.iter().position(|h| *h == name).ok_or_else(|| err(format!("CSV header lacks column '{name}'")))
+                header.iter().position(|h| h == name).ok_or_else(|| err(format!("CSV header lacks column '{name}'")))
             };
             let (cv, ca, cm) = (col("vbar")?, col("amp")?, col("mu_ratio")?);
-            lines
+            ignored_columns =
+                header.iter().filter(|h| !["vbar", "amp", "mu_ratio"].contains(&h.as_str())).cloned().collect();
+            rd.records()
                 .enumerate()
-                .map(|(i, l)| {
-                    let f: Vec<&str> = l.split(',').collect();
+                .map(|(i, rec)| {
+                    let rec = rec.map_err(|e| err(format!("row {i}: {e}")))?;
                     let get = |c: usize, name: &str| {
-                        let t = f.get(c).ok_or_else(|| err(format!("row {i}: missing column '{name}'")))?;
+                        let t = rec.get(c).ok_or_else(|| err(format!("row {i}: missing column '{name}'")))?;
                         parse_number(&format!("{source}: row {i}: {name}"), t)
                     };
                     Ok((get(cv, "vbar")?, get(ca, "amp")?, get(cm, "mu_ratio")?))
@@ -99,6 +129,9 @@ pub fn read_rows(text: &str, source: &str) -> Result<Vec<(f64, f64, f64)>> {
                 .collect::<Result<Vec<_>>>()?
         }
     };
+    if rows.is_empty() {
+        return Err(err("the table has no rows (nothing to validate)".into()));
+    }
     if rows.len() > MAX_ROWS {
         return Err(Error::TooLarge {
             what: format!("rows of table {source}"),
@@ -114,7 +147,7 @@ pub fn read_rows(text: &str, source: &str) -> Result<Vec<(f64, f64, f64)>> {
             return Err(err(format!("row {i}: mu_ratio is not finite")));
         }
     }
-    Ok(rows)
+    Ok(Table { rows, ignored_columns })
 }
 
 /// Compare `rows` with the exact solver for `shape`.
@@ -130,5 +163,5 @@ pub fn validate(shape: &Shape, rows: &[(f64, f64, f64)]) -> Result<Validation> {
     let worst = out.iter().copied().max_by(|a, b| a.error.abs().total_cmp(&b.error.abs()));
     let max_abs_error = worst.map_or(0.0, |w| w.error.abs());
     let rms_error = if n > 0 { (out.iter().map(|r| r.error * r.error).sum::<f64>() / n as f64).sqrt() } else { 0.0 };
-    Ok(Validation { shape: shape.name(), n, max_abs_error, rms_error, worst, rows: out })
+    Ok(Validation { shape: shape.name(), n, max_abs_error, rms_error, worst, ignored_columns: vec![], rows: out })
 }

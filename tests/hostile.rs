@@ -95,3 +95,69 @@ fn negative_zero_empty_out_and_history_springs() {
     assert!(err.contains("history springs: 2000000 is more than the limit of 1000000"), "{err}");
     assert!(out.stdout.is_empty());
 }
+
+fn run_stdin(args: &[&str], input: &str) -> std::process::Output {
+    use std::io::Write;
+    let mut child =
+        bin().args(args).stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
+    child.stdin.take().unwrap().write_all(input.as_bytes()).unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn refused(out: &std::process::Output, needle: &str) {
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains(needle), "{err}");
+    assert_eq!(err.lines().count(), 1);
+    assert!(out.stdout.is_empty());
+}
+
+/// Ambiguous or empty tables are refused, not read in some arbitrary way.
+#[test]
+fn duplicate_keys_duplicate_columns_and_empty_tables_are_refused() {
+    refused(
+        &run_stdin(&["batch"], r#"[{"shape":"flat","vbar":0.1,"vbar":0.9,"amp":1}]"#),
+        "row 0: duplicate key 'vbar'",
+    );
+    refused(&run_stdin(&["validate", "-"], r#"[{"vbar":0.1,"amp":1,"amp":2,"mu_ratio":0.5}]"#), "duplicate key 'amp'");
+    refused(&run_stdin(&["validate", "-"], "vbar,amp,vbar,mu_ratio\n0.5,0.5,0.5,0.9\n"), "column 'vbar' twice");
+    refused(&run_stdin(&["validate", "-", "--max-error", "0"], "vbar,amp,mu_ratio\n"), "has no rows");
+    refused(&run_stdin(&["validate", "-"], r#"{"rows": []}"#), "has no rows");
+    // Extra columns are named in the report.
+    let out = run_stdin(&["validate", "-"], "vbar,amp,mu_ratio,note\n0.5,0.5,0.8992738983331657,x\n");
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["ignored_columns"], serde_json::json!(["note"]));
+}
+
+/// A shape with a comma is quoted in CSV output and reads back as one field.
+#[test]
+fn csv_output_is_real_csv() {
+    let dir = std::env::temp_dir().join(format!("fricosc-csv-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("a,b.csv");
+    std::fs::write(&file, "r,f\n0,0\n1,0.5\n2,2\n3,4.5\n").unwrap();
+    let shape = format!("profile:{}@0.5", file.display());
+    let out =
+        bin().args(["table", "--shape", &shape, "--vbar", "0.3", "--amp", "0.5", "--format", "csv"]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let mut rd = csv::Reader::from_reader(&out.stdout[..]);
+    let rec = rd.records().next().unwrap().unwrap();
+    assert_eq!(&rec[0], shape.as_str());
+    assert_eq!(rec.len(), 5);
+}
+
+/// Batch rows keep their own bytes; results are spliced in before the closing brace.
+#[test]
+fn batch_keeps_row_bytes_and_replaces_given_results() {
+    let out = run_stdin(&["batch"], "[{\"shape\": \"flat\",  \"vbar\": 1.5, \"amp\": 0.5, \"x\": [1,  2]},\n{\"shape\":\"flat\",\"vbar\":2,\"amp\":1,\"mu_ratio\":7}]");
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains(
+            "{\"shape\": \"flat\",  \"vbar\": 1.5, \"amp\": 0.5, \"x\": [1,  2],\"mu_ratio\":1.0,\"reduction\":0.0}"
+        ),
+        "{text}"
+    );
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(v[1]["mu_ratio"], 1.0);
+    assert_eq!(v[1].as_object().unwrap().len(), 5);
+}
