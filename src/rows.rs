@@ -74,7 +74,7 @@ impl<'de> Visitor<'de> for Pick<'_> {
         let mut out = vec![None; self.0.len()];
         let mut seen: Vec<Cow<'de, str>> = Vec::with_capacity(8);
         while let Some(Key(key)) = map.next_key::<Key<'de>>()? {
-            if seen.iter().any(|k| *k == key) {
+            if seen.contains(&key) {
                 return Err(de::Error::custom(format!("duplicate key '{key}'")));
             }
             let v: &'de RawValue = map.next_value()?;
