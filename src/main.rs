@@ -397,6 +397,11 @@ fn run_scene(files: Vec<String>, schema: bool, format: Format) -> Result<()> {
         b.finish_and_clear();
     }
     let results = results.into_iter().collect::<Result<Vec<_>>>()?;
+    for (r, f) in results.iter().zip(&files) {
+        for w in &r.warnings {
+            eprintln!("warning: {f}: {w}");
+        }
+    }
     let text = match format {
         Format::Csv => results.iter().map(fricosc::scene::to_csv).collect::<Vec<_>>().join("\n"),
         Format::Json => {

@@ -111,7 +111,8 @@ pub struct MdrResult {
     /// Absent when nothing needed it (`vbar >= 1` without bands, no closed form).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mean_normal: Option<f64>,
-    /// The bands, from the centre outwards (empty ones left out).
+    /// The bands, from the centre outwards (empty ones left out; none when the
+    /// contact's extent `amp^(1/n)` in `x/x_c` overflows double precision).
     pub bands: Vec<Band>,
     /// Springs (quadrature nodes) evaluated in all.
     pub nodes: usize,
@@ -444,6 +445,8 @@ fn total_normal(n: f64, amp: f64) -> Option<f64> {
 /// All integrals are scaled by `amp` (units `kz u0` rather than `kz du`), so
 /// that `amp -> 0` stays finite.
 pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::Result<MdrResult> {
+    crate::error::check_nonneg("vbar", vbar)?;
+    crate::error::check_nonneg("amp", amp)?;
     let tol = tol.max(DEFAULT_TOL);
     // For amp > 1 every integral is computed divided by amp^(1 + 1/n) (in
     // `y/amp`), so that huge amplitudes and small exponents cannot overflow; the
@@ -491,7 +494,9 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::R
     // The stick-first band is u in [u_sf, pi/2 + alpha], u_sf = max(u_alpha, u*);
     // slip first is [u*, u_sf]; slip only [pi/2 + alpha, pi].
     let u_sf = u_alpha.max(u_star);
-    let u_low = FRAC_PI_2 + alpha;
+    // Clipped to the springs present: at vbar >= 1 (alpha = 0) and a huge amp,
+    // u* rounds to just above pi/2, and no band may start before the centre.
+    let u_low = (FRAC_PI_2 + alpha).max(u_star);
     let inf = f64::INFINITY;
     // The largest parts first: their sums are the absolute scale for the thin bands.
     // The stick-first means, continued beyond the band, are singular at s = +-1
@@ -516,7 +521,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::R
     let scale2 = (scale1.0 + slip_first.normal, scale1.1 + slip_first.deficit);
     let slip_only = match closed {
         Some(_) => Sums::default(),
-        None => contact.band(u_low, PI, Top::Regular, false, (inf, inf), scale2),
+        None => contact.band(u_low, PI, top_of(u_low), false, (inf, inf), scale2),
     };
 
     let first_kind = if vel.is_some() { BandKind::SlipFirst } else { BandKind::SlipOnly };

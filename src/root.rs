@@ -57,8 +57,37 @@ pub fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, rtol: f64) -> Root {
     }
     // The crate evaluates the ends again; the two extra calls are counted too.
     let mut tol = Tolerance { rtol, max_iter: 200 };
-    let x = roots::find_root_regula_falsi(lo, hi, &g, &mut tol).unwrap_or(0.5 * (lo + hi));
-    Root { x, evaluations: count.get() }
+    match roots::find_root_regula_falsi(lo, hi, &g, &mut tol) {
+        Ok(x) if x >= lo && x <= hi => Root { x, evaluations: count.get() },
+        // The secant step overflows for huge |x f| (it returns NaN), or the
+        // iteration limit was hit: bisection needs only the signs.
+        _ => {
+            let x = bisect(&g, lo, flo, hi, rtol);
+            Root { x, evaluations: count.get() }
+        }
+    }
+}
+
+/// Plain bisection on a sign-changing bracket, to `rtol` relative width (or
+/// until the midpoint no longer moves).
+fn bisect(f: &impl Fn(f64) -> f64, mut lo: f64, flo: f64, mut hi: f64, rtol: f64) -> f64 {
+    let positive_at_lo = flo > 0.0;
+    for _ in 0..2100 {
+        let mid = 0.5 * lo + 0.5 * hi;
+        if mid <= lo || mid >= hi || (hi - lo) <= rtol * lo.abs().max(hi.abs()) {
+            break;
+        }
+        let fm = f(mid);
+        if fm == 0.0 {
+            return mid;
+        }
+        if (fm > 0.0) == positive_at_lo {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * lo + 0.5 * hi
 }
 
 /// The root when the bracket has no sign change left (or an end is a root).
@@ -107,6 +136,13 @@ mod tests {
         let r = bracketed(|x| x * x - 2.0, 0.0, 2.0, 1e-15);
         assert!((r.x - std::f64::consts::SQRT_2).abs() < 4e-15);
         assert!(r.evaluations > 2 && r.evaluations < 20, "{}", r.evaluations);
+    }
+
+    /// Regula falsi's secant step overflows for huge `x f(x)`; bisection takes over.
+    #[test]
+    fn huge_values_fall_back_to_bisection_not_nan() {
+        let r = bracketed(|x| x * 1e100 - 3e293, 1e192, 1e194, 1e-15);
+        assert!((r.x / 3e193 - 1.0).abs() < 1e-14, "{}", r.x);
     }
 
     #[test]

@@ -211,41 +211,45 @@ pub struct SceneResult {
     pub jumping: bool,
     /// Notes on the loading.
     pub note: String,
+    /// Where the scene leaves the model's range of validity (also printed on stderr).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
     /// One row per velocity.
     pub rows: Vec<Row>,
 }
 
-/// Parse a scene from JSON text; `source` names the file in errors.
+/// Largest accepted local coefficient of friction.
+pub const MAX_MU0: f64 = 10.0;
+
+/// Parse a scene from JSON text; `source` names the file in errors. A scene is a
+/// JSON object: serde would also accept its fields as a positional array.
 pub fn parse(text: &str, source: &str) -> Result<Scene> {
+    if !text.trim_start().starts_with('{') {
+        return Err(Error::Parse { context: source.into(), reason: "a scene is a JSON object ({...})".into() });
+    }
     serde_json::from_str(text).map_err(|e| Error::Parse { context: source.into(), reason: e.to_string() })
 }
 
-/// `Gamma(x)` for `x > 0` (Lanczos, g = 7, 9 terms; relative error ~1e-15).
-pub fn gamma(x: f64) -> f64 {
-    const G: [f64; 9] = [
-        0.999_999_999_999_809_9,
-        676.520_368_121_885_1,
-        -1_259.139_216_722_402_8,
-        771.323_428_777_653_1,
-        -176.615_029_162_140_6,
-        12.507_343_278_686_905,
-        -0.138_571_095_265_720_12,
-        9.984_369_578_019_572e-6,
-        1.505_632_735_149_311_6e-7,
-    ];
-    if x < 0.5 {
-        PI / ((PI * x).sin() * gamma(1.0 - x))
-    } else {
-        let x = x - 1.0;
-        let t = x + 7.5;
-        let a = G.iter().enumerate().skip(1).fold(G[0], |acc, (i, g)| acc + g / (x + i as f64));
-        (2.0 * PI).sqrt() * t.powf(x + 0.5) * (-t).exp() * a
-    }
-}
-
 /// `kappa(n) = sqrt(pi) Gamma(n/2 + 1) / Gamma(n/2 + 1/2)`: the MDR factor of `r^n`.
+///
+/// With `x = n/2`: for `x < 85` the two Gamma functions of `libm` (no overflow:
+/// `Gamma(86) ~ 1e128`); beyond, the asymptotic series
+/// `Gamma(x + 1)/Gamma(x + 1/2) = sqrt(x) (1 + 1/(8x) + 1/(128x^2) - 5/(1024x^3)`
+/// `- 21/(32768x^4) + 399/(262144x^5) + 869/(4194304x^6) + ...)`, whose
+/// truncation is below 4e-17 relative from `x = 85` on (checked with mpmath),
+/// so that exponents up to 1e6 stay finite and exact.
 pub fn kappa(n: f64) -> f64 {
-    PI.sqrt() * gamma(0.5 * n + 1.0) / gamma(0.5 * n + 0.5)
+    let x = 0.5 * n;
+    if x < 85.0 {
+        PI.sqrt() * libm::tgamma(x + 1.0) / libm::tgamma(x + 0.5)
+    } else {
+        let y = 1.0 / x;
+        let series = 1.0
+            + y * (1.0 / 8.0
+                + y * (1.0 / 128.0
+                    + y * (-5.0 / 1024.0 + y * (-21.0 / 32768.0 + y * (399.0 / 262144.0 + y * 869.0 / 4194304.0)))));
+        (PI * x).sqrt() * series
+    }
 }
 
 struct Checked {
@@ -291,8 +295,23 @@ fn check(s: &Scene, source: &str) -> Result<Checked> {
     };
     let e_star = 1.0 / ((1.0 - n1 * n1) / e1 + (1.0 - n2 * n2) / e2);
     let g_star = 1.0 / ((2.0 - n1) / (4.0 * g1) + (2.0 - n2) / (4.0 * g2));
-    let mu0 = pos("mu0", s.mu0)?;
-    let omega = 2.0 * PI * pos("oscillation.frequency_hz", s.oscillation.frequency_hz)?;
+    // The effective moduli (eqs. 23-24) must be ordinary positive numbers: a
+    // subnormal or huge modulus overflows them to 0 or infinity.
+    for (name, v) in
+        [("E* (eq. 23, from materials.e1_pa, e2_pa, nu1, nu2)", e_star), ("G* (eq. 24, from materials)", g_star)]
+    {
+        if !(v.is_normal() && v > 0.0 && (1.0 / v).is_normal()) {
+            return Err(Error::Parse {
+                context: format!("{source}: materials"),
+                reason: format!("{name} = {v:?} is outside double precision's normal range"),
+            });
+        }
+    }
+    let mu0 =
+        field(source, "mu0", s.mu0, s.mu0 > 0.0 && s.mu0 <= MAX_MU0, "must be in (0, 10] (a Coulomb coefficient)")?;
+    let f_hz = pos("oscillation.frequency_hz", s.oscillation.frequency_hz)?;
+    let omega = field(source, "oscillation.frequency_hz", f_hz, (2.0 * PI * f_hz).is_finite(), "overflows 2 pi f")?
+        * (2.0 * PI);
     let (shape, geometry) = match &s.indenter {
         Indenter::FlatPunch { radius_m } => (Shape::Flat, pos("indenter.flat_punch.radius_m", *radius_m)?),
         Indenter::Sphere { radius_m } => (Shape::Power(2.0), 1.0 / pos("indenter.sphere.radius_m", *radius_m)?),
@@ -449,9 +468,10 @@ pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sy
     let o = &s.oscillation;
     let amp_of = |u0: f64| -> Result<f64> {
         match (o.amplitude_m, o.amplitude_fraction) {
-            (Some(d), None) => field(source, "oscillation.amplitude_m", d, d >= 0.0, "must be finite and >= 0"),
+            // Without oscillation vbar is infinite and mu = mu0 at every velocity: nothing to compute.
+            (Some(d), None) => field(source, "oscillation.amplitude_m", d, d > 0.0, "must be finite and > 0"),
             (None, Some(f)) => {
-                Ok(u0 * field(source, "oscillation.amplitude_fraction", f, f >= 0.0, "must be finite and >= 0")?)
+                Ok(u0 * field(source, "oscillation.amplitude_fraction", f, f > 0.0, "must be finite and > 0")?)
             }
             _ => Err(Error::Parse {
                 context: format!("{source}: oscillation"),
@@ -488,14 +508,43 @@ pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sy
     let (xc, kz, fbar) = contact(&c, u0, du)?;
     let ratio = c.g_star / c.e_star;
     let v_crit = c.mu0 * c.omega * du / ratio;
+    let mut warnings = vec![];
+    if let Indenter::Sphere { radius_m } = s.indenter {
+        // Hertz (a paraboloid) needs a contact radius small against the sphere's.
+        if xc > radius_m {
+            return Err(Error::Parse {
+                context: format!("{source}: loading"),
+                reason: format!(
+                    "contact radius {xc:?} m exceeds the sphere radius {radius_m:?} m (mean indentation {u0:?} m): \
+                     impossible for a sphere"
+                ),
+            });
+        }
+        if xc > 0.1 * radius_m {
+            warnings.push(format!(
+                "contact radius {xc:.3e} m is more than 0.1 of the sphere radius {radius_m:.3e} m: Hertz (the \
+                 paraboloid used here) no longer applies; use a tabulated 'profile' of the sphere"
+            ));
+        }
+    }
     let mu_static = match c.shape {
         Shape::Flat => flat::mu_static_ratio(amp),
         Shape::Power(n) => mdr::mu_static_ratio(n, amp, mdr::DEFAULT_TOL),
         Shape::Tabulated(..) => evaluate(&c.shape, 0.0, amp)?.ratio.mu_ratio,
     } * c.mu0;
+    // eq. 3 with kx/kz = G*/E*: vbar = v0 / v_crit. The velocity scale must be an
+    // ordinary number, else every vbar is 0, infinite or NaN.
+    if !(v_crit.is_normal() && v_crit > 0.0) {
+        return Err(Error::Parse {
+            context: source.into(),
+            reason: format!(
+                "the critical velocity mu0 omega du E*/G* = {v_crit:?} m/s is outside double precision \
+                 (check mu0, oscillation.frequency_hz, the amplitude and the materials)"
+            ),
+        });
+    }
     let row = |v0: f64| -> Result<Row> {
-        // eq. 3 with kx/kz = G*/E*; du = 0 means no oscillation (vbar infinite: mu0).
-        let vbar = if du > 0.0 { ratio * v0 / (c.mu0 * c.omega * du) } else { f64::MAX };
+        let vbar = v0 / v_crit;
         // At or above the critical velocity no spring is computed.
         let mu = if vbar >= 1.0 { 1.0 } else { evaluate(&c.shape, vbar, amp)?.ratio.mu_ratio };
         Ok(Row {
@@ -514,6 +563,39 @@ pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sy
         rows.extend(chunk.par_iter().map(|&v| row(v)).collect::<Result<Vec<_>>>()?);
         progress(chunk.len() as u64);
     }
+    // Every number of the answer must be finite: an overflow names its field.
+    let scalars = [
+        ("e_star_pa", c.e_star),
+        ("g_star_pa", c.g_star),
+        ("mean_indentation_m", u0),
+        ("amplitude_m", du),
+        ("amplitude_ratio", amp),
+        ("contact_radius_m", xc),
+        ("kz_n_per_m", kz),
+        ("kx_n_per_m", kz * ratio),
+        ("critical_velocity_m_per_s", v_crit),
+        ("mu_static", mu_static),
+        ("mean_normal_force_n", fbar),
+    ];
+    let overflow = |name: &str, v: f64| Error::Parse {
+        context: source.into(),
+        reason: format!("{name} = {v:?}: the scene's values overflow double precision"),
+    };
+    if let Some((name, v)) = scalars.iter().find(|(_, v)| !v.is_finite()) {
+        return Err(overflow(name, *v));
+    }
+    for (i, r) in rows.iter().enumerate() {
+        for (name, v) in [
+            ("vbar", r.vbar),
+            ("vhat", r.vhat),
+            ("mu_macro", r.mu_macro),
+            ("mean_friction_force_n", r.mean_friction_force_n),
+        ] {
+            if !v.is_finite() {
+                return Err(overflow(&format!("rows[{i}].{name} (velocity {:?} m/s)", r.velocity_m_per_s), v));
+            }
+        }
+    }
     Ok(SceneResult {
         name: s.name.clone(),
         e_star_pa: c.e_star,
@@ -529,6 +611,7 @@ pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sy
         mean_normal_force_n: fbar,
         jumping: amp > 1.0,
         note,
+        warnings,
         rows,
     })
 }
@@ -550,24 +633,33 @@ fn solve_load(c: &Checked, f: f64, amp_of: &dyn Fn(f64) -> Result<f64>, source: 
         }
         (None, Shape::Tabulated(..)) => f64::NAN,
     };
+    let bad = |reason: String| Error::Parse { context: format!("{source}: loading.mean_normal_force_n"), reason };
+    if !(guess.is_finite() && guess > 0.0) {
+        return Err(bad(format!("{f:?} N: the static indentation estimate {guess:?} m overflows double precision")));
+    }
     let (mut lo, mut hi) = (guess, guess);
     for _ in 0..200 {
-        if force(lo) <= f {
+        if force(lo) <= f || !(0.5 * lo).is_normal() {
             break;
         }
         lo *= 0.5;
     }
     for _ in 0..200 {
-        if force(hi) >= f {
+        if force(hi) >= f || !(2.0 * hi).is_finite() {
             break;
         }
         hi *= 2.0;
     }
-    if !(force(lo) <= f && force(hi) >= f) {
-        return Err(Error::Parse {
-            context: format!("{source}: loading.mean_normal_force_n"),
-            reason: format!("{f:?} N cannot be reached with a positive mean indentation at this amplitude"),
-        });
+    let (flo, fhi) = (force(lo), force(hi));
+
+    if flo.is_nan() || flo > f {
+        return Err(bad(format!(
+            "{f:?} N cannot be reached at this amplitude: the smallest reachable mean normal force is about \
+             {flo:.6e} N (mean indentation -> 0, the indenter jumping)"
+        )));
+    }
+    if !(fhi >= f && fhi.is_finite()) {
+        return Err(bad(format!("{f:?} N is beyond what double precision can represent for this indenter")));
     }
     Ok(root::bracketed(|u| force(u) - f, lo, hi, 1e-15).x)
 }
@@ -604,4 +696,32 @@ pub fn to_csv(r: &SceneResult) -> String {
             ]
         }),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[allow(clippy::excessive_precision)]
+    /// `kappa(n)` against 20-digit mpmath values, across the switch to the series
+    /// and up to the largest exponent (the hand-written Gamma overflowed from n = 283).
+    #[test]
+    fn kappa_matches_high_precision_values_for_every_accepted_exponent() {
+        for (n, exact) in [
+            (1.0, std::f64::consts::FRAC_PI_2),
+            (2.0, 2.0),
+            (2.5, 2.1850479619100998421),
+            (3.7, 2.577353439754582866),
+            (100.0, 12.564512901854901007),
+            (283.0, 21.102640859202411868),
+            (1000.0, 39.643182531295326472),
+            (1e6, 1253.3144506440737461),
+        ] {
+            let rel = (kappa(n) / exact - 1.0).abs();
+            assert!(rel < 4e-15, "n = {n}: {} vs {exact} ({rel:e})", kappa(n));
+        }
+        // Continuous across the switch at n = 170.
+        let (a, b) = (kappa(169.99999999999997), kappa(170.0));
+        assert!((a / b - 1.0).abs() < 1e-15);
+    }
 }

@@ -161,3 +161,82 @@ fn batch_keeps_row_bytes_and_replaces_given_results() {
     assert_eq!(v[1]["mu_ratio"], 1.0);
     assert_eq!(v[1].as_object().unwrap().len(), 5);
 }
+
+/// Scene edge values: each was a panic, a `null` with exit 0, or a misleading message.
+#[test]
+fn scene_edge_values_are_errors_naming_the_cause() {
+    let base = serde_json::json!({
+        "materials": {"e1_pa": 2.1e11, "nu1": 0.3, "e2_pa": 2.1e11, "nu2": 0.3},
+        "mu0": 0.5,
+        "indenter": {"sphere": {"radius_m": 0.005}},
+        "loading": {"mean_indentation_m": 1e-6},
+        "oscillation": {"amplitude_m": 0.5e-6, "frequency_hz": 100.0},
+        "velocity": {"values_m_per_s": [0.0, 1e-4]}
+    });
+    let dir = std::env::temp_dir().join(format!("fricosc-scene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let run = |patch: &[(&str, serde_json::Value)]| {
+        let mut s = base.clone();
+        for (path, v) in patch {
+            let mut node = &mut s;
+            let keys: Vec<&str> = path.split('.').collect();
+            for k in &keys[..keys.len() - 1] {
+                node = &mut node[*k];
+            }
+            node[keys[keys.len() - 1]] = v.clone();
+        }
+        let f = dir.join("s.json");
+        std::fs::write(&f, s.to_string()).unwrap();
+        bin().args(["scene", f.to_str().unwrap()]).output().unwrap()
+    };
+    use serde_json::json;
+    let cases: Vec<(Vec<(&str, serde_json::Value)>, &str)> = vec![
+        (vec![("loading", json!({"mean_normal_force_n": 1e300}))], "exceeds the sphere radius"),
+        (vec![("oscillation.frequency_hz", json!(1e308))], "frequency_hz"),
+        (vec![("materials.g1_pa", json!(5e-324))], "G*"),
+        (vec![("materials.e1_pa", json!(5e-324))], "E*"),
+        (vec![("mu0", json!(5e-324))], "critical velocity"),
+        (vec![("mu0", json!(1e300))], "mu0"),
+        (
+            vec![(
+                "velocity",
+                json!({"sweep": {"start_m_per_s": 5e-324, "stop_m_per_s": 1.0, "count": 5, "log": true}}),
+            )],
+            "overflow",
+        ),
+        (vec![("velocity.values_m_per_s", json!([1.7e308]))], "rows[0].vbar"),
+        (vec![("loading.mean_indentation_m", json!(1e300))], "exceeds the sphere radius"),
+        (vec![("loading.mean_indentation_m", json!(0.01))], "exceeds the sphere radius"),
+        (vec![("oscillation.amplitude_m", json!(0.0))], "amplitude_m"),
+    ];
+    for (patch, needle) in cases {
+        let out = run(&patch);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{patch:?}: {err} {}", String::from_utf8_lossy(&out.stdout));
+        assert!(err.contains(needle), "{patch:?}: {err}");
+        assert!(out.stdout.is_empty(), "{patch:?}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+    // A cone under 1e300 N panicked; the model is scale-free, so it is answered.
+    let out = run(&[
+        ("indenter", json!({"cone": {"half_angle_deg": 60.0}})),
+        ("loading", json!({"mean_normal_force_n": 1e300})),
+    ]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!((v["mean_normal_force_n"].as_f64().unwrap() / 1e300 - 1.0).abs() < 1e-12);
+    // An unreachable load names the smallest reachable force.
+    let out = run(&[("loading", json!({"mean_normal_force_n": 1e-12})), ("oscillation.amplitude_m", json!(1e-5))]);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("smallest reachable mean normal force is about"));
+    // A power law of exponent 300 works (the hand-written Gamma overflowed from 283).
+    let out = run(&[("indenter", json!({"power_law": {"c": 1.0, "n": 300.0}}))]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    // A contact radius beyond 0.1 R warns on stderr, still answers.
+    let out = run(&[("loading.mean_indentation_m", json!(1e-4))]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).starts_with("warning:"));
+    // A positional array is not a scene.
+    let f = dir.join("arr.json");
+    std::fs::write(&f, "[]").unwrap();
+    let out = bin().args(["scene", f.to_str().unwrap()]).output().unwrap();
+    assert!(String::from_utf8_lossy(&out.stderr).contains("a scene is a JSON object"));
+}

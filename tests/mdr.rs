@@ -180,3 +180,23 @@ fn the_accepted_exponent_range_agrees_with_the_reference_at_its_ends() {
         assert!(err <= tol::MDR_ABS.max(acc), "n={n} v={v} a={a}: err {err:e} (reference accuracy {acc:e})");
     }
 }
+
+/// The banded report at vbar >= 1 and a huge amplitude: u* rounded above pi/2
+/// made the slip band start before the contact centre (NaN, hidden by a clamp
+/// until non-finite ratios became errors).
+#[test]
+fn bands_at_and_above_the_critical_velocity_for_huge_amplitudes() {
+    for n in [0.5, 1.0, 2.0, 3.0, 300.0] {
+        for amp in [2.0, 1e10, 5e293] {
+            let r = power_law(n, 1.5, amp, DEFAULT_TOL, true).unwrap();
+            assert_eq!(r.ratio.mu_ratio, 1.0);
+            if amp.powf(1.0 / n).is_finite() {
+                let shares: f64 = r.bands.iter().map(|b| b.normal_share).sum();
+                assert!((shares - 1.0).abs() < 1e-13, "n={n} amp={amp}: {shares}");
+            } else {
+                // The contact's extent in x/x_c, amp^(1/n), overflows: no band can be reported.
+                assert!(r.bands.is_empty());
+            }
+        }
+    }
+}
