@@ -68,7 +68,11 @@ pub fn run<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Resul
         let shape = match index.get(spec.as_ref()) {
             Some(&k) => k,
             None => {
-                shapes.push(Shape::parse(&spec).map_err(|e| row_err(e.to_string()))?);
+                let parsed = Shape::parse(&spec).map_err(|e| row_err(e.to_string()))?;
+                if let Some(st) = stepping {
+                    st.check(&parsed).map_err(|e| row_err(e.to_string()))?;
+                }
+                shapes.push(parsed);
                 let k = (shapes.len() - 1) as u32;
                 index.insert(spec.into_owned(), k);
                 k

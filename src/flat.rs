@@ -38,7 +38,7 @@ pub struct FlatPoint {
 /// For `amp = 0` the permanent-contact spring with `s = 1` stands in: its stick
 /// phases and deficit do not depend on `s`. The one place `s` of the flat punch
 /// is formed.
-fn spring(vbar: f64, amp: f64, events: bool) -> Spring {
+pub(crate) fn spring(vbar: f64, amp: f64, events: bool) -> Spring {
     if amp == 0.0 {
         return Spring::with_complement(1.0, 0.0, vbar, events);
     }

@@ -56,7 +56,36 @@ pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
             }
             let span = stop - start;
             let last = (n - 1) as f64;
-            Ok((0..n).map(|k| if k + 1 == n { stop } else { decimal(start + span * k as f64 / last) }).collect())
+            let at = |k: usize| {
+                let t = k as f64 / last;
+                // stop - start overflows for ranges across most of f64 (-1e308:1e308).
+                if span.is_finite() {
+                    start + span * t
+                } else {
+                    start * (1.0 - t) + stop * t
+                }
+            };
+            let mut out: Vec<f64> = (0..n).map(|k| if k + 1 == n { stop } else { at(k) }).collect();
+            // Remove the binary noise of k * step (0.30000000000000004 -> 0.3), but only
+            // where the decimal value is within two ulps of the computed one and keeps
+            // the list inside [start, stop] and strictly increasing.
+            for k in 1..n - 1 {
+                let (x, r) = (out[k], decimal(out[k]));
+                let ulp = f64::from_bits(x.abs().to_bits() + 1) - x.abs();
+                if (r - x).abs() <= 2.0 * ulp && r > out[k - 1] && r < stop && r >= start {
+                    out[k] = r;
+                }
+            }
+            if let Some(w) = out.windows(2).find(|w| w[1] <= w[0]) {
+                return Err(Error::Parse {
+                    context: what.into(),
+                    reason: format!(
+                        "the range {start:?}:{stop:?} holds fewer than {n} distinct double values ({:?} repeats)",
+                        w[1]
+                    ),
+                });
+            }
+            Ok(out)
         }
         _ => Err(Error::Parse {
             context: what.into(),
@@ -83,6 +112,17 @@ mod tests {
         assert_eq!(r[60], 0.6);
         assert_eq!(parse_values("v", "0:1.2:13").unwrap()[1], 0.1);
         assert_eq!(parse_values("v", "0.5:0.5:1").unwrap(), vec![0.5]);
+        // Rounding never leaves [start, stop] nor repeats a value; a range too
+        // narrow for its count is an error, a range across f64 is not NaN.
+        assert_eq!(
+            parse_values("v", "0.9999999999999998:0.9999999999999999:2").unwrap(),
+            vec![0.9999999999999998, 0.9999999999999999]
+        );
+        assert!(parse_values("v", "0.9999999999999998:0.9999999999999999:3").is_err());
+        assert!(parse_values("v", "0.999999999999999:1:11").is_err());
+        assert_eq!(parse_values("v", "-1e308:1e308:3").unwrap(), vec![-1e308, 0.0, 1e308]);
+        let r = parse_values("v", "0.1:0.7:7").unwrap();
+        assert_eq!(r, vec![0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7]);
         for bad in ["", "a", "nan", "inf", "1e999", "1:0:3", "0:1:0", "0:1:x", "0:1", "0:1:1000000000000"] {
             assert!(parse_values("v", bad).is_err(), "{bad}");
         }

@@ -71,7 +71,11 @@ pub fn spring_force(sp: &Spring, tau: f64) -> f64 {
 /// Most springs summed for an MDR history.
 pub const MAX_SPRINGS: usize = 1_000_000;
 
-/// Most samples one history may hold.
+/// Most spring-force evaluations one history may take (rows x springs: about a
+/// minute on two cores).
+pub const MAX_SPRING_WORK: u128 = 4_000_000_000;
+
+/// Most rows one history may hold (and most chosen-spring values).
 pub const MAX_SAMPLES: usize = 10_000_000;
 
 /// The history of `periods` periods with `samples` uniform samples (plus events).
@@ -103,11 +107,31 @@ pub fn history(
             limit: MAX_SPRINGS as u128,
         });
     }
-    if periods.saturating_mul(samples) > MAX_SAMPLES {
+    // Rows: the uniform samples, their end point, and up to 4 events a period
+    // (flat punch); every limit is checked before anything is allocated.
+    let events = if *shape == Shape::Flat { 4 * periods as u128 } else { 0 };
+    let rows = samples as u128 + 1 + events;
+    if rows > MAX_SAMPLES as u128 {
         return Err(Error::TooLarge {
-            what: "history".into(),
-            count: (periods as u128) * (samples as u128),
+            what: "history rows (samples + 1 + events)".into(),
+            count: rows,
             limit: MAX_SAMPLES as u128,
+        });
+    }
+    let values = rows * chosen.len() as u128;
+    if values > MAX_SAMPLES as u128 {
+        return Err(Error::TooLarge {
+            what: "history chosen-spring values (rows x --spring-at positions)".into(),
+            count: values,
+            limit: MAX_SAMPLES as u128,
+        });
+    }
+    let work = rows * if *shape == Shape::Flat { 1 } else { springs as u128 };
+    if work > MAX_SPRING_WORK {
+        return Err(Error::TooLarge {
+            what: "history spring evaluations (rows x springs)".into(),
+            count: work,
+            limit: MAX_SPRING_WORK,
         });
     }
     let total = TAU * periods as f64;
@@ -115,8 +139,7 @@ pub fn history(
         (0..=samples).map(|j| (total * j as f64 / samples as f64, None)).collect();
     let (units, out) = match shape {
         Shape::Flat => {
-            let s = if amp > 0.0 { 1.0 / amp } else { f64::MAX };
-            let sp = Spring::with_events(s, vbar);
+            let sp = crate::flat::spring(vbar, amp, true);
             for p in 0..periods {
                 for e in sp.events() {
                     taus.push((e.tau + TAU * p as f64, Some(e.kind)));

@@ -133,11 +133,11 @@ struct MethodArgs {
     /// exact (event-driven, default) or stepping (the seed's time-stepping scheme).
     #[arg(long, value_enum, default_value = "exact")]
     method: Method,
-    /// Time steps per period for --method stepping.
-    #[arg(long, default_value_t = 1000)]
+    /// Time steps per period for --method stepping (1 to 1e8).
+    #[arg(long, default_value_t = 1000, allow_hyphen_values = true)]
     steps_per_period: usize,
-    /// Springs of an MDR foundation for --method stepping.
-    #[arg(long, default_value_t = 1000)]
+    /// Springs of an MDR foundation for --method stepping (1 to 1e8).
+    #[arg(long, default_value_t = 1000, allow_hyphen_values = true)]
     springs: usize,
 }
 
@@ -193,7 +193,12 @@ fn tol_of(t: &Option<String>) -> Result<f64> {
 
 fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
     if amp > 0.0 {
-        Ok(vhat / amp)
+        let vbar = vhat / amp;
+        if vbar.is_finite() {
+            Ok(vbar)
+        } else {
+            Err(Error::param("vbar", vbar, &format!("vhat / amp = {vhat:?} / {amp:?} overflows double precision")))
+        }
     } else {
         Err(Error::param("amp", amp, "--vhat needs amp > 0 (vbar = vhat / amp)"))
     }
@@ -283,25 +288,28 @@ fn table(a: TableArgs) -> Result<()> {
     }
     let name = shape.name();
     let stepping = a.common.method.stepping();
-    let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, &name, cols).map_err(io_err)?;
-    // Rows in parallel (rayon), written in order, a bounded chunk at a time.
+    if let Some(st) = stepping {
+        st.check(&shape)?;
+    }
+    // Every row is computed (in parallel, rayon) before the first byte is
+    // written: an error in any row (a tabulated shape's range, an internal
+    // error) leaves stdout empty. 40 bytes per row: 400 MB at the 10^7 limit.
     let pairs: Vec<(f64, f64)> = amps.iter().flat_map(|&amp| vels.iter().map(move |&v| (amp, v))).collect();
-    for chunk in pairs.chunks(1 << 15) {
-        let rows: Vec<Result<[f64; 5]>> = chunk
-            .par_iter()
-            .map(|&(amp, v)| {
-                let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
-                let r = match stepping {
-                    Some(st) => evaluate_stepping(&shape, vbar, amp, st)?.ratio,
-                    None => evaluate_with(&shape, vbar, amp, tol)?.ratio,
-                };
-                Ok([v, vbar, amp, r.mu_ratio, r.reduction])
-            })
-            .collect();
-        for row in rows {
-            let r = row?;
-            if is_vhat { w.row(&r) } else { w.row(&r[1..]) }.map_err(io_err)?;
-        }
+    let rows: Vec<[f64; 5]> = pairs
+        .par_iter()
+        .map(|&(amp, v)| {
+            let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
+            let r = match stepping {
+                Some(st) => evaluate_stepping(&shape, vbar, amp, st)?.ratio,
+                None => evaluate_with(&shape, vbar, amp, tol)?.ratio,
+            };
+            Ok([v, vbar, amp, r.mu_ratio, r.reduction])
+        })
+        .collect::<Result<Vec<_>>>()?;
+    drop(pairs);
+    let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, &name, cols).map_err(io_err)?;
+    for r in &rows {
+        if is_vhat { w.row(r) } else { w.row(&r[1..]) }.map_err(io_err)?;
     }
     w.finish().map_err(io_err)
 }
@@ -417,6 +425,9 @@ fn run_scene(files: Vec<String>, schema: bool, format: Format) -> Result<()> {
 fn check_out_dir(out: &str) -> Result<()> {
     if out.trim().is_empty() {
         return Err(Error::Parse { context: "--out".into(), reason: "the output directory is empty".into() });
+    }
+    if std::path::Path::new(out).exists() && !std::path::Path::new(out).is_dir() {
+        return Err(Error::Parse { context: "--out".into(), reason: format!("'{out}' exists and is not a directory") });
     }
     Ok(())
 }

@@ -260,14 +260,16 @@ struct Checked {
     shape: Shape,
     /// Flat: punch radius; MDR: `kappa c` of `g = kappa c x^n`.
     geometry: f64,
-    /// A tabulated profile's path (its shape depends on the mean indentation).
-    profile: Option<String>,
+    /// A tabulated profile's path and its table, read and transformed once
+    /// (its normalised shape depends on the mean indentation).
+    profile: Option<(String, crate::profile::Table)>,
     velocities: Vec<f64>,
 }
 
-/// The tabulated shape at mean indentation `u0`.
-fn tabulated(path: &str, u0: f64) -> Result<Shape> {
-    let t = crate::profile::Tabulated::load(path, u0, true)?;
+/// The tabulated shape at mean indentation `u0`, from the table read (and
+/// MDR-transformed) once per scene.
+fn tabulated(table: &crate::profile::Table, path: &str, u0: f64) -> Result<Shape> {
+    let t = table.at(u0)?;
     Ok(Shape::Tabulated(std::sync::Arc::new(t), format!("profile:{path}@{u0:?}")))
 }
 
@@ -348,7 +350,9 @@ fn check(s: &Scene, source: &str) -> Result<Checked> {
     let profile = match &s.indenter {
         Indenter::Profile { file } => {
             let dir = std::path::Path::new(source).parent().unwrap_or(std::path::Path::new(""));
-            Some(dir.join(file).to_string_lossy().into_owned())
+            let path = dir.join(file).to_string_lossy().into_owned();
+            let table = crate::profile::Table::load(&path, true)?;
+            Some((path, table))
         }
         _ => None,
     };
@@ -423,8 +427,8 @@ fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
     let amp = du / u0;
     let loaded;
     let shape = match &c.profile {
-        Some(path) => {
-            loaded = tabulated(path, u0)?;
+        Some((path, table)) => {
+            loaded = tabulated(table, path, u0)?;
             &loaded
         }
         None => &c.shape,
@@ -500,8 +504,8 @@ pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sy
             })
         }
     };
-    if let Some(path) = &c.profile {
-        c.shape = tabulated(path, u0)?;
+    if let Some((path, table)) = &c.profile {
+        c.shape = tabulated(table, path, u0)?;
     }
     let du = amp_of(u0)?;
     let amp = du / u0;
@@ -626,7 +630,7 @@ fn solve_load(c: &Checked, f: f64, amp_of: &dyn Fn(f64) -> Result<f64>, source: 
     // Static guess (no oscillation), then bracket by factors of 2 in u0.
     let guess = match (&c.profile, &c.shape) {
         // A tabulated profile: start from a thousandth of the table's depth.
-        (Some(path), _) => crate::profile::read_table(path)?.1.last().copied().unwrap_or(1.0) * 1e-3,
+        (Some((_, table)), _) => table.max_g() * 1e-3,
         (None, Shape::Flat) => f / (2.0 * c.e_star * c.geometry),
         (None, Shape::Power(n)) => {
             (f * c.geometry.powf(1.0 / n) * (n + 1.0) / (2.0 * n * c.e_star)).powf(n / (n + 1.0))
@@ -639,7 +643,8 @@ fn solve_load(c: &Checked, f: f64, amp_of: &dyn Fn(f64) -> Result<f64>, source: 
     }
     let (mut lo, mut hi) = (guess, guess);
     for _ in 0..200 {
-        if force(lo) <= f || !(0.5 * lo).is_normal() {
+        let fl = force(lo);
+        if fl <= f || fl.is_nan() || !(0.5 * lo).is_normal() {
             break;
         }
         lo *= 0.5;
@@ -651,8 +656,14 @@ fn solve_load(c: &Checked, f: f64, amp_of: &dyn Fn(f64) -> Result<f64>, source: 
         hi *= 2.0;
     }
     let (flo, fhi) = (force(lo), force(hi));
-
-    if flo.is_nan() || flo > f {
+    if flo.is_nan() {
+        // The contact itself failed there (a tabulated profile that does not
+        // resolve it): say why.
+        let why =
+            amp_of(lo).and_then(|du| contact(c, lo, du)).err().map_or("no finite force".to_string(), |e| e.to_string());
+        return Err(bad(format!("{f:?} N: searching down to a mean indentation of {lo:?} m failed: {why}")));
+    }
+    if flo > f {
         return Err(bad(format!(
             "{f:?} N cannot be reached at this amplitude: the smallest reachable mean normal force is about \
              {flo:.6e} N (mean indentation -> 0, the indenter jumping)"

@@ -65,32 +65,55 @@ const CHUNK: usize = 1024;
 /// `steps_per_period >= 1`, `periods >= 2`. Cost: `periods * steps_per_period * s.len()`
 /// updates; `cos` is tabulated once per step; chunks of springs run in parallel (rayon).
 pub fn run(s: &[f64], weight: &[f64], vbar: f64, steps_per_period: usize, periods: usize) -> SteppedMeans {
-    use rayon::prelude::*;
     assert_eq!(s.len(), weight.len());
+    run_with(s.len(), &|i| (s[i], weight[i]), vbar, steps_per_period, periods)
+}
+
+/// Steps computed per block of the cosine table: memory stays at this many
+/// values whatever the steps per period (a whole table of 10^8 steps took 800 MB).
+const COS_BLOCK: usize = 4096;
+
+/// [`run`] for `count` springs given by `spring(i) = (s_i, weight_i)`, generated
+/// a chunk at a time: memory is bounded by a few chunks per thread, whatever
+/// `count` and `steps_per_period` are.
+pub fn run_with(
+    count: usize,
+    spring: &(dyn Fn(usize) -> (f64, f64) + Sync),
+    vbar: f64,
+    steps_per_period: usize,
+    periods: usize,
+) -> SteppedMeans {
+    use rayon::prelude::*;
     let m = steps_per_period.max(1);
     let periods = periods.max(2);
     let h = TAU / m as f64;
     let dv = vbar * h;
-    let cos: Vec<f64> = (1..=m).map(|k| (h * k as f64).cos()).collect();
     // Per chunk: (tangential, normal) sums of the last two periods.
-    let chunk_sums = |(sc, wc): (&[f64], &[f64])| -> [f64; 4] {
+    let chunk_sums = |start: usize| -> [f64; 4] {
+        let end = (start + CHUNK).min(count);
+        let (sc, wc): (Vec<f64>, Vec<f64>) = (start..end).map(spring).unzip();
         // Sliding initial state at tau = 0.
         let mut f: Vec<f64> = sc.iter().map(|&si| (si - 1.0).max(0.0)).collect();
         let mut out = [0.0; 4];
+        let mut cos = Vec::with_capacity(COS_BLOCK.min(m));
         for p in 0..periods {
             // Per-step partial sums, added into the period totals with Kahan
             // compensation: with 10^7 steps a plain sum loses ~1e-10 to rounding.
             let (mut ft, mut fnn) = (Kahan::default(), Kahan::default());
-            for &c in &cos {
-                let (mut st, mut sn) = (0.0, 0.0);
-                for ((fi, &si), &wi) in f.iter_mut().zip(sc).zip(wc) {
-                    let b = si - c;
-                    *fi = if b > 0.0 { (*fi + dv).min(b) } else { 0.0 };
-                    st += wi * *fi;
-                    sn += wi * b.max(0.0);
+            for block in (1..=m).step_by(COS_BLOCK) {
+                cos.clear();
+                cos.extend((block..(block + COS_BLOCK).min(m + 1)).map(|k| (h * k as f64).cos()));
+                for &c in &cos {
+                    let (mut st, mut sn) = (0.0, 0.0);
+                    for ((fi, &si), &wi) in f.iter_mut().zip(&sc).zip(&wc) {
+                        let b = si - c;
+                        *fi = if b > 0.0 { (*fi + dv).min(b) } else { 0.0 };
+                        st += wi * *fi;
+                        sn += wi * b.max(0.0);
+                    }
+                    ft.add(st);
+                    fnn.add(sn);
                 }
-                ft.add(st);
-                fnn.add(sn);
             }
             let (ft, fnn) = (ft.sum, fnn.sum);
             if p + 2 >= periods {
@@ -101,10 +124,10 @@ pub fn run(s: &[f64], weight: &[f64], vbar: f64, steps_per_period: usize, period
         }
         out
     };
-    let sums = s
-        .par_chunks(CHUNK)
-        .zip(weight.par_chunks(CHUNK))
-        .map(chunk_sums)
+    let starts: Vec<usize> = (0..count).step_by(CHUNK).collect();
+    let sums = starts
+        .par_iter()
+        .map(|&start| chunk_sums(start))
         .reduce(|| [0.0; 4], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]]);
     let mu = |t: f64, n: f64| if n > 0.0 { t / n } else { 1.0 };
     SteppedMeans {
@@ -131,6 +154,5 @@ pub fn power_law_mu_ratio(n: f64, vbar: f64, amp: f64, steps_per_period: usize, 
     }
     let k = springs.max(1);
     let dz = (1.0 + amp).powf(1.0 / n) / k as f64;
-    let s: Vec<f64> = (0..k).map(|i| (1.0 - ((i as f64 + 0.5) * dz).powf(n)) / amp).collect();
-    run(&s, &vec![dz; k], vbar, steps_per_period, 2)
+    run_with(k, &|i| ((1.0 - ((i as f64 + 0.5) * dz).powf(n)) / amp, dz), vbar, steps_per_period, 2)
 }

@@ -136,7 +136,7 @@ fn csv_output_is_real_csv() {
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("a,b.csv");
     std::fs::write(&file, "r,f\n0,0\n1,0.5\n2,2\n3,4.5\n").unwrap();
-    let shape = format!("profile:{}@0.5", file.display());
+    let shape = format!("profile:{}@2", file.display());
     let out =
         bin().args(["table", "--shape", &shape, "--vbar", "0.3", "--amp", "0.5", "--format", "csv"]).output().unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));

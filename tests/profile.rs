@@ -124,3 +124,64 @@ fn transform_of_a_sphere_tends_to_hertz_at_small_depth() {
     assert!(d1.abs() < 2e-3 && d2.abs() < 2e-4, "{d1:e} {d2:e}");
     assert!((d1 / d2 - 10.0).abs() < 0.5, "not O(d/R): {d1:e} {d2:e}");
 }
+
+/// Tables at the edges of f64: scaled before interpolation they give the same
+/// answer at any scale, and a contact the table cannot resolve is refused, never
+/// answered with a confident wrong value.
+#[test]
+fn tabulated_shapes_at_extreme_scales_are_right_or_refused() {
+    let dir = std::env::temp_dir().join(format!("fricosc-scale-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let write = |name: &str, rows: &[(f64, f64)]| {
+        let p = dir.join(name);
+        let text: String = rows.iter().map(|(x, g)| format!("{x:e},{g:e}\n")).collect();
+        std::fs::write(&p, format!("x,g\n{text}")).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let eval = |spec: &str, v: f64, a: f64| fricosc::shape::evaluate(&fricosc::shape::Shape::parse(spec)?, v, a);
+    let parabolic = fricosc::mdr::power_law(2.0, 0.3, 0.4, fricosc::mdr::DEFAULT_TOL, false).unwrap().ratio.mu_ratio;
+    // g = x^2 on 0..2 (41 rows) at several scales of x and g.
+    for (sx, sg) in [(1.0, 1.0), (1e-150, 1e-300), (1e150, 1e300), (1e-300, 1e-300)] {
+        let rows: Vec<(f64, f64)> = (0..=40).map(|i| 0.05 * i as f64).map(|x| (x * sx, x * x * sg)).collect();
+        let path = write(&format!("sq{sx:e}.csv"), &rows);
+        let e = eval(&format!("gx:{path}@{:e}", 1.0 * sg), 0.3, 0.4).unwrap();
+        let err = (e.ratio.mu_ratio - parabolic).abs();
+        assert!(
+            err <= e.interpolation_error.unwrap() + 1e-12,
+            "scale {sx:e}/{sg:e}: {} vs {parabolic}",
+            e.ratio.mu_ratio
+        );
+    }
+    // The contact far inside the first interval (the issue's @1e-40: the cone's value with a tiny estimate).
+    let rows: Vec<(f64, f64)> = (0..=40).map(|i| 0.05 * i as f64).map(|x| (x, x * x)).collect();
+    let path = write("sq.csv", &rows);
+    for u0 in ["1e-40", "1e-150", "1e-300"] {
+        let e = eval(&format!("gx:{path}@{u0}"), 0.3, 0.4).unwrap_err().to_string();
+        assert!(e.contains("does not resolve the contact"), "{u0}: {e}");
+    }
+    // A near-vertical first step.
+    let path = write("step.csv", &[(0.0, 0.0), (1e-300, 1.0), (1.0, 2.0), (2.0, 3.0)]);
+    assert!(eval(&format!("gx:{path}@1"), 0.3, 0.4).unwrap_err().to_string().contains("too close"));
+}
+
+/// A profile whose MDR transform falls (a step) is refused with the largest g.
+#[test]
+fn a_non_monotone_transform_is_refused() {
+    let dir = std::env::temp_dir().join(format!("fricosc-step-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join("step.csv");
+    std::fs::write(&p, "r,f\n0,0\n0.5,0\n0.9,0\n0.95,0.5\n1,1\n2,1\n").unwrap();
+    let e = fricosc::shape::Shape::parse(&format!("profile:{}@0.9", p.display())).unwrap_err().to_string();
+    assert!(e.contains("decreases after x") && e.contains("largest g"), "{e}");
+}
+
+/// Exactly one header line is allowed (`/etc/passwd` used to give "found 0 rows").
+#[test]
+fn only_one_header_line() {
+    let dir = std::env::temp_dir().join(format!("fricosc-hdr-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join("two.csv");
+    std::fs::write(&p, "r,f\nradius,height\n0,0\n1,1\n2,4\n").unwrap();
+    let e = fricosc::profile::read_table(p.to_str().unwrap()).unwrap_err().to_string();
+    assert!(e.contains("line 2: expected two numbers"), "{e}");
+}
