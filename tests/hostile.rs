@@ -240,3 +240,83 @@ fn scene_edge_values_are_errors_naming_the_cause() {
     let out = bin().args(["scene", f.to_str().unwrap()]).output().unwrap();
     assert!(String::from_utf8_lossy(&out.stderr).contains("a scene is a JSON object"));
 }
+
+/// Errors found after some rows were computed used to leave those rows on stdout.
+#[test]
+fn nothing_on_stdout_when_the_exit_code_is_2() {
+    let dir = std::env::temp_dir().join(format!("fricosc-late-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let gx = dir.join("sq.csv");
+    let rows: String = (0..=40).map(|i| 0.05 * i as f64).map(|x| format!("{x},{}\n", x * x)).collect();
+    std::fs::write(&gx, format!("x,g\n{rows}")).unwrap();
+    let gx_shape = format!("gx:{}@1", gx.display());
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        // amp 5 needs g up to 6 U0; the table ends at 4: the amp 0.5 rows came out first.
+        (vec!["table", "--shape", &gx_shape, "--vbar", "0:1:100", "--amp", "0.5,5"], "before the contact edge"),
+        (
+            vec!["table", "--vbar", "0:1:5", "--amp", "0.5", "--method", "stepping", "--steps-per-period", "0"],
+            "steps-per-period",
+        ),
+        (
+            vec!["table", "--shape", &gx_shape, "--vbar", "0.5", "--amp", "0.5", "--method", "stepping"],
+            "supports flat and power-law",
+        ),
+        (vec!["table", "--vbar", "0.9999999999999998:0.9999999999999999:3", "--amp", "0.5"], "distinct double values"),
+        (vec!["point", "--vhat", "1e308", "--amp", "1e-10"], "vhat / amp = 1e308 / 1e-10 overflows"),
+        (
+            vec!["table", "--vbar", "0.5", "--amp", "0.5", "--method", "stepping", "--steps-per-period", "-1"],
+            "invalid value '-1'",
+        ),
+        (
+            vec![
+                "history",
+                "--shape",
+                "flat",
+                "--vbar",
+                "0.3",
+                "--amp",
+                "0.5",
+                "--periods",
+                "10000000",
+                "--samples",
+                "1",
+            ],
+            "history rows (samples + 1 + events)",
+        ),
+        (
+            vec!["history", "--shape", "parabolic", "--vbar", "0.3", "--amp", "0.5", "--spring-at", "0:1:10000000"],
+            "chosen-spring values",
+        ),
+        (
+            vec![
+                "history",
+                "--shape",
+                "parabolic",
+                "--vbar",
+                "0.3",
+                "--amp",
+                "0.5",
+                "--spring-at",
+                "0:1:100000",
+                "--samples",
+                "1000",
+            ],
+            "chosen-spring values",
+        ),
+        (
+            vec!["history", "--shape", "parabolic", "--vbar", "0.3", "--amp", "0.5", "--spring-at", "-1e308:1e308:3"],
+            "spring position = -1e308",
+        ),
+    ];
+    for (args, needle) in cases {
+        let out = bin().args(&args).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+        assert!(out.stdout.is_empty(), "{args:?}: {} bytes on stdout", out.stdout.len());
+    }
+    let file = dir.join("afile");
+    std::fs::write(&file, "x").unwrap();
+    let out = bin().args(["figures", "--out", file.to_str().unwrap()]).output().unwrap();
+    assert!(String::from_utf8_lossy(&out.stderr).contains("exists and is not a directory"));
+}
