@@ -335,7 +335,9 @@ impl Contact {
     /// keep every piece at least its own width away from both.
     fn band(&self, top: f64, bottom: f64, kind: Top, stick: bool, near: (f64, f64), scale: (f64, f64)) -> Sums {
         let mut total = Sums::default();
-        if bottom <= top {
+        // An empty band, or one whose half-width underflows to 0 (vbar = 5e-324
+        // makes a band [0, 5e-324]): its share is below anything representable.
+        if bottom <= top || 0.5 * (bottom - top) == 0.0 {
             return total;
         }
         let width = bottom - top;
@@ -425,7 +427,8 @@ fn total_normal(n: f64, amp: f64) -> Option<f64> {
             // (1 + a)^(3/2) = 2^(3/2), and the bracket is 2 E(1) = 2.
             2.0 * 2f64.powf(1.5) * 2.0 / 3.0
         } else {
-            let (mp, mp1) = ((1.0 + a) / (2.0 * a), (a - 1.0) / (2.0 * a));
+            // Written without 2a, which overflows for amp above 9e307.
+            let (mp, mp1) = (0.5 + 0.5 / a, 0.5 * ((a - 1.0) / a));
             let (k, e) = elliptic_ke(mp, mp1);
             // int_0^(pi/2) cos^4/sqrt(1 - mp sin^2) = ((3mp - 2)(mp - 1) K + (4mp - 2) E)/(3 mp^2).
             let j = ((3.0 * mp - 2.0) * (-mp1) * k + (4.0 * mp - 2.0) * e) / (3.0 * mp * mp);
@@ -490,7 +493,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::R
 
     // Permanent contact (amp < 1): int_0^{z1} amp s dz = z1 - z1^(n+1)/(n+1).
     let z1 = z_of_s(1.0);
-    let perm = Sums { normal: z1 - z1 * z1.powf(n) / (n + 1.0), deficit: amp * d_perm * z1, ..Default::default() };
+    let perm = Sums { normal: z1 - z1 * z1.powf(n) / (n + 1.0), deficit: d_perm * (amp * z1), ..Default::default() };
     // The stick-first band is u in [u_sf, pi/2 + alpha], u_sf = max(u_alpha, u*);
     // slip first is [u*, u_sf]; slip only [pi/2 + alpha, pi].
     let u_sf = u_alpha.max(u_star);

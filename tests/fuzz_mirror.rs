@@ -54,8 +54,10 @@ proptest! {
         let path = dir.join("t.csv");
         std::fs::write(&path, &text).unwrap();
         if let Ok(shape) = Shape::parse(&format!("profile:{}@1", path.display())) {
-            if let Ok(e) = evaluate(&shape, v, a) {
-                prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio));
+            match evaluate(&shape, v, a) {
+                Ok(e) => prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio)),
+                // Bad input or a table that cannot carry the contact, never an internal failure.
+                Err(e) => prop_assert!(!matches!(e, fricosc::Error::Internal { .. }), "{e}"),
             }
         }
     }

@@ -15,7 +15,9 @@ fuzz_target!(|data: (f64, f64, u8, f64)| {
             Err(_) => return,
         },
     };
-    if let Ok(e) = evaluate(&shape, v, a) {
-        assert!((0.0..=1.0).contains(&e.ratio.mu_ratio), "{v} {a} {k}: {}", e.ratio.mu_ratio);
+    match evaluate(&shape, v, a) {
+        Ok(e) => assert!((0.0..=1.0).contains(&e.ratio.mu_ratio), "{v} {a} {k}: {}", e.ratio.mu_ratio),
+        // Valid inputs must give a value: an error there (an internal one) is a finding.
+        Err(e) => assert!(!(v.is_finite() && a.is_finite() && v >= 0.0 && a >= 0.0), "{v} {a} {k}: {e}"),
     }
 });
