@@ -1,19 +1,9 @@
 //! # fricosc
 //!
-//! Exact steady-state friction under normal (out-of-plane) oscillation, after
-//! M. Popov, V. L. Popov, N. V. Popov, *Reduction of friction by normal
-//! oscillations. I. Influence of contact stiffness*, Friction (2017).
-//!
-//! A contact is a set of independent springs. Each spring's normal force
-//! follows the imposed oscillation `u0 - du cos(omega t)`; its tangential force
-//! sticks or slips under Coulomb's law. The product is `mu_macro/mu0` as a
-//! function of the dimensionless velocity `vbar` (eq. 3) and the amplitude
-//! `amp = du/u0`.
-//!
-//! The solver is event-driven and exact: the transition times are roots of
-//! closed-form functions on analytic brackets, and each phase is integrated in
-//! closed form ([`spring`]). No time stepping is involved; the seed's
-//! time-stepping scheme lives in [`stepper`] as an independent check.
+//! The command-line tool and its reports over [`fricosc_core`], the physics and
+//! numerics of friction under normal oscillation (Popov, Popov, Popov 2017).
+//! The core's modules are re-exported here under their old paths, so that
+//! `fricosc::flat::ratio` and `fricosc_core::flat::ratio` are the same function.
 //!
 //! ```
 //! // Flat punch, vbar = 0.2, du/u0 = 0.5 (reference value to 22 digits).
@@ -22,30 +12,20 @@
 //! ```
 #![warn(missing_docs)]
 
-pub mod error;
-pub mod flat;
-pub mod root;
-pub mod special;
-pub mod spring;
-pub mod stepper;
+pub use fricosc_core::{
+    contact, error, flat, input, mdr, model, numerics, peers, profile, quad, ratio, root, seed, shape, special, spring,
+    stepper, Error, Result,
+};
 
-pub use error::{Error, Result};
 pub mod batch;
 pub mod bench;
 pub mod claims;
 pub mod figures;
 pub mod grid;
 pub mod history;
-pub mod input;
-pub mod mdr;
 pub mod output;
 pub mod plot;
-pub mod profile;
-pub mod quad;
-pub mod ratio;
 pub mod rows;
 pub mod scene;
-pub mod seed;
-pub mod shape;
 pub mod stress;
 pub mod validate;

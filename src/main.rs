@@ -9,7 +9,7 @@ use fricosc::batch;
 use fricosc::error::{Error, Result};
 use fricosc::grid::{parse_number, parse_values};
 use fricosc::output::{Format, TableWriter};
-use fricosc::shape::{check_tol, evaluate_stepping, evaluate_with, Method, Shape, Stepping};
+use fricosc::shape::{check_tol, evaluate_stepping, evaluate_with, Shape, Stepping};
 use rayon::prelude::*;
 use std::io::{self, IsTerminal, Write};
 use std::process::ExitCode;
@@ -127,12 +127,21 @@ struct Velocity {
     vhat: Option<String>,
 }
 
+/// `--method`: the command-line face of [`fricosc::shape::Method`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum MethodArg {
+    /// The event-driven exact solver.
+    Exact,
+    /// The seed's time-stepping scheme.
+    Stepping,
+}
+
 /// The solver: exact, or the seed's time stepping (for comparison and validation).
 #[derive(Args)]
 struct MethodArgs {
     /// exact (event-driven, default) or stepping (the seed's time-stepping scheme).
     #[arg(long, value_enum, default_value = "exact")]
-    method: Method,
+    method: MethodArg,
     /// Time steps per period for --method stepping (1 to 1e8).
     #[arg(long, default_value_t = 1000, allow_hyphen_values = true)]
     steps_per_period: usize,
@@ -143,7 +152,7 @@ struct MethodArgs {
 
 impl MethodArgs {
     fn stepping(&self) -> Option<Stepping> {
-        (self.method == Method::Stepping)
+        (self.method == MethodArg::Stepping)
             .then_some(Stepping { steps_per_period: self.steps_per_period, springs: self.springs })
     }
 }

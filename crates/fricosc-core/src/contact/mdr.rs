@@ -43,7 +43,6 @@
 use crate::flat::Ratio;
 use crate::quad;
 use crate::spring::{mean_normal_sin_cos, Spring, Velocity};
-use serde::Serialize;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Highest Gauss order tried per piece.
@@ -69,8 +68,9 @@ const JACOBIAN_GRADE_RATIO: f64 = 0.25;
 const MAX_PIECES: usize = 100;
 
 /// The regime of a band of springs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum BandKind {
     /// `s >= 1`: springs never lose contact.
     PermanentContact,
@@ -83,7 +83,8 @@ pub enum BandKind {
 }
 
 /// One band: its extent and its share of the mean forces.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Band {
     /// Regime of the springs in the band.
     pub kind: BandKind,
@@ -98,10 +99,11 @@ pub struct Band {
 }
 
 /// Result of an MDR evaluation.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct MdrResult {
     /// Ratio and reduction.
-    #[serde(flatten)]
+    #[cfg_attr(feature = "serde", serde(flatten))]
     pub ratio: Ratio,
     /// Estimated absolute error of `mu_ratio` (an upper bound in all tests).
     pub error_estimate: f64,
@@ -109,7 +111,7 @@ pub struct MdrResult {
     /// (`x_c` the contact radius at the mean indentation `u0`; both sides of the
     /// MDR foundation, whose forces equal the 3D ones: Hertz is `4/3` at `amp = 0`).
     /// Absent when nothing needed it (`vbar >= 1` without bands, no closed form).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub mean_normal: Option<f64>,
     /// The bands, from the centre outwards (empty ones left out; none when the
     /// contact's extent `amp^(1/n)` in `x/x_c` overflows double precision).
@@ -571,14 +573,15 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::R
 }
 
 /// A full MDR point: the result plus the static limit, for `fricosc point`.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct MdrPoint {
     /// Dimensionless velocity (eq. 3).
     pub vbar: f64,
     /// Amplitude `du/u0`.
     pub amp: f64,
     /// Result at `(vbar, amp)` with bands.
-    #[serde(flatten)]
+    #[cfg_attr(feature = "serde", serde(flatten))]
     pub result: MdrResult,
     /// `mu_static/mu0`, the limit `vbar -> 0+`: minimum over mean normal force.
     pub mu_static_ratio: f64,

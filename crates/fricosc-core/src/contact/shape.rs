@@ -4,7 +4,6 @@ use crate::error::{check_nonneg, Error, Result};
 use crate::flat;
 use crate::flat::Ratio;
 use crate::mdr;
-use serde::Serialize;
 
 /// Smallest accepted power-law exponent: below it the weights `y^(1/n - 1)` are so
 /// concentrated at the contact edge that neither this solver nor the independent
@@ -74,15 +73,16 @@ impl Shape {
 }
 
 /// `mu_macro/mu0` of a shape with an error estimate.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Evaluation {
     /// Ratio and reduction.
-    #[serde(flatten)]
+    #[cfg_attr(feature = "serde", serde(flatten))]
     pub ratio: Ratio,
     /// Estimated absolute error of `mu_ratio`.
     pub error_estimate: f64,
     /// For tabulated shapes: the estimated error that interpolating the table adds.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub interpolation_error: Option<f64>,
 }
 
@@ -137,8 +137,9 @@ pub fn check_tol(tol: f64) -> Result<f64> {
 }
 
 /// How `mu_macro/mu0` is computed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, clap::ValueEnum)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Method {
     /// The event-driven exact solver.
     Exact,
@@ -185,10 +186,11 @@ impl Stepping {
 }
 
 /// Result of the time-stepping peer.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SteppingEvaluation {
     /// Ratio and reduction (`1 - mu_ratio`, no special care: this is the peer).
-    #[serde(flatten)]
+    #[cfg_attr(feature = "serde", serde(flatten))]
     pub ratio: Ratio,
     /// Time steps taken (two periods).
     pub steps: u64,

@@ -7,17 +7,17 @@ use crate::error::{check_nonneg, Result};
 pub use crate::ratio::Ratio;
 use crate::special::one_minus_a_cos_asin;
 use crate::spring::{Event, EventKind, Regime, Spring};
-use serde::Serialize;
 
 /// The exact steady state of a flat punch.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FlatPoint {
     /// Dimensionless velocity (eq. 3).
     pub vbar: f64,
     /// Amplitude `du/u0`.
     pub amp: f64,
     /// `mu_macro/mu0` and the reduction.
-    #[serde(flatten)]
+    #[cfg_attr(feature = "serde", serde(flatten))]
     pub ratio: Ratio,
     /// `mu_static/mu0`, the limit `vbar -> 0+`: `1 - amp` for `amp <= 1`, else 0.
     pub mu_static_ratio: f64,
@@ -38,7 +38,7 @@ pub struct FlatPoint {
 /// For `amp = 0` the permanent-contact spring with `s = 1` stands in: its stick
 /// phases and deficit do not depend on `s`. The one place `s` of the flat punch
 /// is formed.
-pub(crate) fn spring(vbar: f64, amp: f64, events: bool) -> Spring {
+pub fn spring(vbar: f64, amp: f64, events: bool) -> Spring {
     if amp == 0.0 {
         return Spring::with_complement(1.0, 0.0, vbar, events);
     }
@@ -70,7 +70,7 @@ fn ratio_of(sp: &Spring, amp: f64) -> Result<Ratio> {
 /// `mu_macro/mu0` of a flat punch; `vbar, amp` finite and `>= 0`.
 ///
 /// ```
-/// let r = fricosc::flat::ratio(0.5, 0.5).unwrap();
+/// let r = fricosc_core::flat::ratio(0.5, 0.5).unwrap();
 /// assert!((r.mu_ratio - 0.8992738983331656556).abs() < 1e-15);
 /// ```
 pub fn ratio(vbar: f64, amp: f64) -> Result<Ratio> {

@@ -3,7 +3,6 @@
 //! [`Error::Internal`], never a valid-looking number.
 
 use crate::error::{Error, Result};
-use serde::Serialize;
 
 /// How far outside `[0, 1]` rounding may put a ratio or a reduction that is
 /// mathematically inside: a few ulps of 1. Such values are rounded onto the
@@ -25,7 +24,8 @@ pub fn rounding_estimate(reduction: f64, terms: usize) -> f64 {
 }
 
 /// `mu_macro/mu0` and `1 - mu_macro/mu0`, the latter with full relative accuracy.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Ratio {
     /// `mu_macro / mu0`.
     pub mu_ratio: f64,

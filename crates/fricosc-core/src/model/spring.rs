@@ -38,7 +38,6 @@
 
 use crate::root;
 use crate::special::{half_sq_minus_versin as c_fn, x_minus_sin as s_fn};
-use serde::Serialize;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// Relative root tolerance when only mean forces are wanted. Newton stops once
@@ -50,8 +49,9 @@ pub const ROOT_RTOL_MEANS: f64 = 1e-6;
 pub const ROOT_RTOL_EVENTS: f64 = 4.0 * f64::EPSILON;
 
 /// What one spring does during a period.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Regime {
     /// `s <= -1`: the spring never touches.
     NeverInContact,
@@ -72,8 +72,9 @@ pub enum Regime {
 }
 
 /// The kind of a transition within the period.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum EventKind {
     /// Contact is (re)gained, with zero force.
     Contact,
@@ -86,7 +87,8 @@ pub enum EventKind {
 }
 
 /// A transition at phase `tau` in `[0, 2 pi)`, with the forces there.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Event {
     /// What happens.
     pub kind: EventKind,

@@ -1,0 +1,5 @@
+//! Numerics: bracketed root finding, Gauss-Jacobi rules, cancellation-free
+//! elementary functions.
+pub mod quad;
+pub mod root;
+pub mod special;
