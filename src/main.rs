@@ -15,7 +15,12 @@ use std::io::{self, IsTerminal, Write};
 use std::process::ExitCode;
 
 #[derive(Parser)]
-#[command(name = "fricosc", version, about = "Exact friction under normal oscillation (Popov, Popov, Popov 2017)")]
+#[command(
+    name = "fricosc",
+    version,
+    about = "Exact friction under normal oscillation (Popov, Popov, Popov 2017)",
+    arg_required_else_help = true
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -27,7 +32,6 @@ enum Command {
     Point(PointArgs),
     /// A grid of amplitudes x velocities: JSON or CSV.
     Table(TableArgs),
-    /// A JSON array of {shape, vbar, amp, ...} from FILE or stdin; the same array with mu_ratio and reduction added.
     /// Compare a table of (vbar, amp, mu_ratio) from another code (CSV or JSON) with the exact values.
     /// Exit 1 when the largest error exceeds --max-error.
     Validate {
@@ -107,6 +111,7 @@ enum Command {
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
     },
+    /// A JSON array of {shape, vbar, amp, ...} from FILE or stdin; the same array with mu_ratio and reduction added.
     Batch {
         /// Input file; stdin when absent or '-'.
         file: Option<String>,
@@ -119,15 +124,17 @@ enum Command {
 #[derive(Args)]
 #[group(required = true, multiple = false)]
 struct Velocity {
-    /// Dimensionless velocity vbar = (kx/kz) v0 / (mu0 omega du) (eq. 3).
+    /// Dimensionless velocity vbar = (kx/kz) v0 / (mu0 omega du) (eq. 3); for table a comma list
+    /// or start:stop:count.
     #[arg(long, allow_hyphen_values = true)]
     vbar: Option<String>,
-    /// Velocity vhat = (kx/kz) v0 / (mu0 omega u0) (eq. 15); vbar = vhat / amp.
+    /// Velocity vhat = (kx/kz) v0 / (mu0 omega u0) (eq. 15), vbar = vhat / amp; for table a comma
+    /// list or start:stop:count.
     #[arg(long, allow_hyphen_values = true)]
     vhat: Option<String>,
 }
 
-/// `--method`: the command-line face of [`fricosc::shape::Method`].
+// `--method`: the command-line face of `fricosc::shape::Method`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 enum MethodArg {
     /// The event-driven exact solver.
@@ -142,18 +149,37 @@ struct MethodArgs {
     /// exact (event-driven, default) or stepping (the seed's time-stepping scheme).
     #[arg(long, value_enum, default_value = "exact")]
     method: MethodArg,
-    /// Time steps per period for --method stepping (1 to 1e8).
-    #[arg(long, default_value_t = 1000, allow_hyphen_values = true)]
-    steps_per_period: usize,
-    /// Springs of an MDR foundation for --method stepping (1 to 1e8).
-    #[arg(long, default_value_t = 1000, allow_hyphen_values = true)]
-    springs: usize,
+    /// Time steps per period, 1 to 1e8 (only with --method stepping; default 1000).
+    #[arg(long, allow_hyphen_values = true)]
+    steps_per_period: Option<usize>,
+    /// Springs of an MDR foundation, 1 to 1e8 (only with --method stepping; default 1000).
+    #[arg(long, allow_hyphen_values = true)]
+    springs: Option<usize>,
 }
 
+/// Default resolution of the stepping peer.
+const DEFAULT_STEPPING: usize = 1000;
+
 impl MethodArgs {
-    fn stepping(&self) -> Option<Stepping> {
-        (self.method == MethodArg::Stepping)
-            .then_some(Stepping { steps_per_period: self.steps_per_period, springs: self.springs })
+    /// The stepping resolution, or an error for stepping options without `--method stepping`.
+    fn stepping(&self) -> Result<Option<Stepping>> {
+        if self.method != MethodArg::Stepping {
+            if let Some(name) = [("--steps-per-period", self.steps_per_period), ("--springs", self.springs)]
+                .iter()
+                .find(|(_, v)| v.is_some())
+                .map(|(n, _)| *n)
+            {
+                return Err(Error::Parse {
+                    context: name.into(),
+                    reason: "applies only with --method stepping".into(),
+                });
+            }
+            return Ok(None);
+        }
+        Ok(Some(Stepping {
+            steps_per_period: self.steps_per_period.unwrap_or(DEFAULT_STEPPING),
+            springs: self.springs.unwrap_or(DEFAULT_STEPPING),
+        }))
     }
 }
 
@@ -247,7 +273,7 @@ fn point(a: PointArgs) -> Result<()> {
         (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
     };
     let tol = tol_of(&a.common.tol)?;
-    let body = match a.common.method.stepping() {
+    let body = match a.common.method.stepping()? {
         Some(st) => {
             let e = evaluate_stepping(&shape, vbar, amp, st)?;
             serde_json::json!({"vbar": vbar, "amp": amp, "mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction,
@@ -296,7 +322,7 @@ fn table(a: TableArgs) -> Result<()> {
         cols.insert(0, "vhat");
     }
     let name = shape.name();
-    let stepping = a.common.method.stepping();
+    let stepping = a.common.method.stepping()?;
     if let Some(st) = stepping {
         st.check(&shape)?;
     }
@@ -492,6 +518,11 @@ fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) => {
+            // No command at all: the full help, on stderr (it is a usage error, exit 2).
+            if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                eprint!("{}", e.render());
+                return ExitCode::from(2);
+            }
             let code = if e.use_stderr() { 2 } else { 0 };
             if code == 0 {
                 // --help and --version: printed through the checked path too.
@@ -556,7 +587,7 @@ fn main() -> ExitCode {
                 }
             }
         }
-        Command::Batch { file, method } => run_batch(file, method.stepping()),
+        Command::Batch { file, method } => method.stepping().and_then(|st| run_batch(file, st)),
         Command::Validate { shape, file, max_error } => match run_validate(&shape, file, max_error) {
             Ok(true) => Ok(()),
             Ok(false) => return ExitCode::from(1),

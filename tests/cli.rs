@@ -324,3 +324,23 @@ fn one_value_per_input() {
         assert_eq!(bits(&b[0]["mu_ratio"]), lib.to_bits(), "{shape} {vbar} {amp}: batch");
     }
 }
+
+/// The help texts belong to their commands; no arguments prints the help; options of the
+/// stepping peer are refused without `--method stepping`.
+#[test]
+fn help_texts_and_stepping_only_options() {
+    let help = String::from_utf8(fricosc(&["--help"], None).stdout).unwrap();
+    let line = |cmd: &str| help.lines().find(|l| l.trim_start().starts_with(cmd)).unwrap_or("").to_string();
+    assert!(line("batch").contains("JSON array"), "{help}");
+    assert!(line("validate").contains("Compare a table") && !line("validate").contains("JSON array of"), "{help}");
+    let table = String::from_utf8(fricosc(&["table", "--help"], None).stdout).unwrap();
+    assert!(table.contains("start:stop:count"));
+    assert!(!table.contains("fricosc::"), "no code links in help");
+    let none = fricosc(&[], None);
+    assert_eq!(none.status.code(), Some(2));
+    assert!(none.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&none.stderr).contains("Usage: fricosc <COMMAND>"));
+    let out = fricosc(&["point", "--vbar", "0.3", "--amp", "0.5", "--steps-per-period", "10"], None);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("applies only with --method stepping"));
+}

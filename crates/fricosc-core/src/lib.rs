@@ -30,7 +30,7 @@
 //! let r = fricosc_core::flat::ratio(0.2, 0.5).unwrap();
 //! assert!((r.mu_ratio - 0.7145191049466343399125).abs() < 1e-15);
 //! ```
-#![warn(missing_docs)]
+#![deny(missing_docs)]
 
 pub mod contact;
 pub mod error;
