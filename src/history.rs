@@ -200,7 +200,7 @@ pub fn history(
                 .collect();
             ("normal: E* x_c u0; tangential: mu0 E* x_c u0 (x_c: contact radius at u0)".to_string(), samples)
         }
-        Shape::Tabulated(..) => {
+        Shape::Tabulated(..) | Shape::Registered(..) => {
             return Err(Error::InvalidShape {
                 spec: shape.name(),
                 reason: "history supports flat and power-law shapes".into(),

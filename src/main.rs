@@ -254,11 +254,18 @@ fn exact_point(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<serde_jso
     match shape {
         Shape::Flat => serde_json::to_value(fricosc::flat::point(vbar, amp)?),
         Shape::Power(n) => serde_json::to_value(fricosc::mdr::point(*n, vbar, amp, tol)?),
-        Shape::Tabulated(..) => {
+        Shape::Tabulated(..) | Shape::Registered(..) => {
             let e = evaluate_with(shape, vbar, amp, tol)?;
-            serde_json::to_value(serde_json::json!({"vbar": vbar, "amp": amp, "mu_ratio": e.ratio.mu_ratio,
-                "reduction": e.ratio.reduction, "error_estimate": e.error_estimate,
-                "interpolation_error": e.interpolation_error}))
+            // vbar and amp first, then the evaluation (interpolation_error only for tables).
+            serde_json::to_value(e).map(|v| {
+                let mut m = serde_json::Map::new();
+                m.insert("vbar".into(), vbar.into());
+                m.insert("amp".into(), amp.into());
+                if let serde_json::Value::Object(o) = v {
+                    m.extend(o);
+                }
+                serde_json::Value::Object(m)
+            })
         }
     }
     .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })

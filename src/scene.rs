@@ -444,6 +444,10 @@ fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
             let m = mdr::power_law(*n, 1.5, amp, mdr::DEFAULT_TOL, true)?.mean_normal.unwrap_or(f64::NAN);
             (xc, 2.0 * c.e_star * xc, c.e_star * xc * u0 * m)
         }
+        // Scenes build their shapes from `indenter`: no registered shape reaches here.
+        Shape::Registered(r) => {
+            return Err(Error::InvalidShape { spec: r.0.name(), reason: "not available in scenes".into() })
+        }
         Shape::Tabulated(t, _) => {
             let xc = t.contact_radius;
             let m = crate::profile::mean_normal(t, amp)?;
@@ -535,6 +539,7 @@ pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sy
         Shape::Flat => flat::mu_static_ratio(amp),
         Shape::Power(n) => mdr::mu_static_ratio(n, amp, mdr::DEFAULT_TOL),
         Shape::Tabulated(..) => evaluate(&c.shape, 0.0, amp)?.ratio.mu_ratio,
+        Shape::Registered(ref r) => r.0.mu_static(amp, mdr::DEFAULT_TOL)?,
     } * c.mu0;
     // eq. 3 with kx/kz = G*/E*: vbar = v0 / v_crit. The velocity scale must be an
     // ordinary number, else every vbar is 0, infinite or NaN.
@@ -635,7 +640,7 @@ fn solve_load(c: &Checked, f: f64, amp_of: &dyn Fn(f64) -> Result<f64>, source: 
         (None, Shape::Power(n)) => {
             (f * c.geometry.powf(1.0 / n) * (n + 1.0) / (2.0 * n * c.e_star)).powf(n / (n + 1.0))
         }
-        (None, Shape::Tabulated(..)) => f64::NAN,
+        (None, Shape::Tabulated(..) | Shape::Registered(..)) => f64::NAN,
     };
     let bad = |reason: String| Error::Parse { context: format!("{source}: loading.mean_normal_force_n"), reason };
     if !(guess.is_finite() && guess > 0.0) {

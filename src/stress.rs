@@ -134,5 +134,8 @@ pub fn run(points: usize, seed: u64, shapes: &[Shape]) -> StressReport {
 
 /// The shapes of the stress run: flat, parabolic, cone and two other power laws.
 pub fn default_shapes() -> Vec<Shape> {
-    vec![Shape::Flat, Shape::Power(2.0), Shape::Power(1.0), Shape::Power(0.5), Shape::Power(3.7)]
+    let mut shapes = vec![Shape::Flat, Shape::Power(2.0), Shape::Power(1.0), Shape::Power(0.5), Shape::Power(3.7)];
+    // The worn sphere (a registered contact); its spec is a constant that parses.
+    shapes.extend(Shape::parse("flat-tip:0.5"));
+    shapes
 }

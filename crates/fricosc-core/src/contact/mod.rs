@@ -1,6 +1,40 @@
 //! Contacts: the flat punch (one spring), power-law profiles and tabulated
 //! profiles by the method of dimensionality reduction, and [`shape::Shape`].
+//!
+//! # Adding an indenter
+//! A new analytic indenter is one file implementing [`Contact`] and one line in
+//! [`REGISTRY`] (its name prefix and its parser); [`shape::Shape::parse`] then
+//! accepts it everywhere a shape is named (`point`, `table`, `batch`,
+//! `validate`). [`flat_tip`] is the example: a sphere worn flat at its tip.
+use crate::error::Result;
+use crate::shape::Evaluation;
+use std::sync::Arc;
+
 pub mod flat;
+pub mod flat_tip;
 pub mod mdr;
 pub mod profile;
 pub mod shape;
+
+/// A contact geometry: `mu_macro/mu0` as a function of `vbar` (eq. 3) and
+/// `amp = du/u0`.
+pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
+    /// The canonical name, as it parses back (`flat-tip:0.5`).
+    fn name(&self) -> String;
+
+    /// `mu_macro/mu0` with its error estimate; `vbar`, `amp` finite and `>= 0`,
+    /// `tol` the relative quadrature tolerance.
+    fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation>;
+
+    /// `mu_static/mu0`, the limit `vbar -> 0+` (the minimum normal force over
+    /// its mean, seed section 4). By default the solver at `vbar = 0`.
+    fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
+        Ok(self.evaluate(0.0, amp, tol)?.ratio.mu_ratio)
+    }
+}
+
+/// A parser of the part of a shape specification after its prefix.
+pub type Parser = fn(&str) -> Result<Arc<dyn Contact>>;
+
+/// Shapes implemented through [`Contact`]: name prefix and parser.
+pub const REGISTRY: &[(&str, Parser)] = &[("flat-tip:", flat_tip::parse)];

@@ -23,6 +23,18 @@ pub enum Shape {
     Power(f64),
     /// A tabulated profile (`profile:FILE@U0`) or equivalent profile (`gx:FILE@U0`).
     Tabulated(std::sync::Arc<crate::profile::Tabulated>, String),
+    /// A shape implemented through [`crate::contact::Contact`] (see [`crate::contact::REGISTRY`]).
+    Registered(Registered),
+}
+
+/// A [`crate::contact::Contact`] held by a [`Shape`]; two are equal when their names are.
+#[derive(Debug, Clone)]
+pub struct Registered(pub std::sync::Arc<dyn crate::contact::Contact>);
+
+impl PartialEq for Registered {
+    fn eq(&self, other: &Self) -> bool {
+        self.0.name() == other.0.name()
+    }
 }
 
 impl Shape {
@@ -44,6 +56,13 @@ impl Shape {
                 let t = crate::profile::Tabulated::load(path, u0, profile)?;
                 Ok(Shape::Tabulated(std::sync::Arc::new(t), other.to_string()))
             }
+            other if crate::contact::REGISTRY.iter().any(|(p, _)| other.starts_with(p)) => {
+                let (prefix, parse) = crate::contact::REGISTRY
+                    .iter()
+                    .find(|(p, _)| other.starts_with(p))
+                    .ok_or_else(|| bad("unknown shape"))?;
+                Ok(Shape::Registered(Registered(parse(&other[prefix.len()..])?)))
+            }
             other => match other.strip_prefix("power:") {
                 Some(n) => {
                     let n: f64 = n.trim().parse().map_err(|_| bad("the exponent is not a number"))?;
@@ -55,7 +74,9 @@ impl Shape {
                         Ok(Shape::Power(n))
                     }
                 }
-                None => Err(bad("unknown shape (known: flat, parabolic, cone, power:N, profile:FILE@U0, gx:FILE@U0)")),
+                None => Err(bad(
+                    "unknown shape (known: flat, parabolic, cone, power:N, flat-tip:E, profile:FILE@U0, gx:FILE@U0)",
+                )),
             },
         }
     }
@@ -68,6 +89,7 @@ impl Shape {
             Shape::Power(n) if *n == 1.0 => "cone".into(),
             Shape::Power(n) => format!("power:{n:?}"),
             Shape::Tabulated(_, spec) => spec.clone(),
+            Shape::Registered(c) => c.0.name(),
         }
     }
 }
@@ -124,6 +146,7 @@ pub fn evaluate_with(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<Eva
                 interpolation_error: Some(r.interpolation_error),
             })
         }
+        Shape::Registered(c) => c.0.evaluate(vbar, amp, tol),
     }
 }
 
@@ -177,7 +200,7 @@ impl Stepping {
                 Err(Error::param("springs", self.springs as f64, "steps-per-period x springs must be <= 1e11"))
             }
             Shape::Power(_) => Ok(()),
-            Shape::Tabulated(..) => Err(Error::InvalidShape {
+            Shape::Tabulated(..) | Shape::Registered(..) => Err(Error::InvalidShape {
                 spec: shape.name(),
                 reason: "--method stepping supports flat and power-law shapes".into(),
             }),
@@ -210,7 +233,7 @@ pub fn evaluate_stepping(shape: &Shape, vbar: f64, amp: f64, st: Stepping) -> Re
         Shape::Power(n) => {
             (crate::stepper::power_law_mu_ratio(*n, vbar, amp, st.steps_per_period, st.springs), st.springs)
         }
-        Shape::Tabulated(..) => unreachable!("refused by Stepping::check"),
+        Shape::Tabulated(..) | Shape::Registered(..) => unreachable!("refused by Stepping::check"),
     };
     // The peer's raw value: outside [0, 1] it says something about the peer.
     let mu = run.mu_ratio();

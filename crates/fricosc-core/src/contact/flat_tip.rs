@@ -1,0 +1,170 @@
+//! A sphere worn flat at its tip ("a curved body with a flat end (e.g. due to
+//! wear)", seed section 3): `flat-tip:E`.
+//!
+//! # MDR profile
+//! The body is a paraboloid of radius `R` cut flat at radius `a`:
+//! `f(r) = 0` for `r <= a`, `(r^2 - a^2)/(2R)` beyond. Its MDR equivalent
+//! profile is `g(x) = |x| int_0^|x| f'(r)/sqrt(x^2 - r^2) dr =
+//! (|x|/R) int_a^|x| r/sqrt(x^2 - r^2) dr = |x| sqrt(x^2 - a^2)/R` for `|x| > a`,
+//! and 0 inside the flat. With the contact radius `x_c` at the mean indentation
+//! (`g(x_c) = u0`), `z = x/x_c` and `E = a/x_c` in `[0, 1)`:
+//! `G(z) = g/u0 = z sqrt(z^2 - E^2)/sqrt(1 - E^2)` for `z >= E`, 0 below.
+//! `E = 0` is the paraboloid (`G = z^2`, Hertz), `E -> 1` the flat punch.
+//!
+//! # Integration
+//! The flat part `z < E` is `E` springs of the flat punch (`s = 1/amp`). The
+//! curved part is integrated in `t = sqrt(G)`, in which
+//! `z^2 = (E^2 + sqrt(E^4 + 4 t^4 (1 - E^2)))/2` and
+//! `dz/dt = 2 t^3 (1 - E^2) / (z sqrt(E^4 + 4 t^4 (1 - E^2)))` is smooth for
+//! every `E` (it is 1 at `E = 0`) and turns from `z ~ E` to `z ~ t` around
+//! `t ~ E` (cuts at `E 2^k`, `|k| <= 4`, keep each piece smooth on its scale).
+//! For `amp > 1`, lengths are divided by `sqrt(amp)` (`t`, `z` and `E` alike,
+//! which leaves the form of `z(t)` unchanged and `s = 1/amp - t^2`), so that
+//! huge amplitudes cannot overflow; the ratio is unaffected. It is split at the regime thresholds
+//! `s = (1 - t^2)/amp = 1, +-sqrt(1 - vbar^2), -1`, and each band is integrated
+//! with `t = p + (q - p)(1 - cos theta)/2` (which absorbs the square-root
+//! behaviour of the means at `s = +-1`) by Gauss-Legendre at orders 8, 16, 32,
+//! ... until two successive orders agree to the tolerance; their difference is
+//! the band's error estimate.
+
+use super::Contact;
+use crate::error::{Error, Result};
+use crate::ratio::{rounding_estimate, Ratio};
+use crate::shape::Evaluation;
+use crate::spring::Spring;
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+/// Highest Gauss order tried per band.
+const MAX_ORDER: usize = 512;
+
+/// A sphere worn flat at its tip; `flat_ratio = a/x_c`, the flat's radius over
+/// the contact radius at the mean indentation, in `[0, 1)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FlatTip {
+    /// `E = a/x_c`.
+    pub flat_ratio: f64,
+}
+
+/// The curved part in (possibly scaled) lengths: `e` the flat's radius, `k = 1 - E^2`.
+#[derive(Debug, Clone, Copy)]
+struct Curved {
+    e: f64,
+    k: f64,
+}
+
+/// Parse the `E` of `flat-tip:E`.
+pub fn parse(rest: &str) -> Result<Arc<dyn Contact>> {
+    let bad = |reason: &str| Error::InvalidShape { spec: format!("flat-tip:{rest}"), reason: reason.into() };
+    let e: f64 = rest.trim().parse().map_err(|_| bad("E (flat radius / contact radius) is not a number"))?;
+    if !(0.0..1.0).contains(&e) {
+        return Err(bad("E = a/x_c must be in [0, 1): the flat inside the contact"));
+    }
+    Ok(Arc::new(FlatTip { flat_ratio: e + 0.0 }))
+}
+
+impl Curved {
+    /// `(z, dz/dt)` at `t = sqrt(G)` on the curved part.
+    fn z_of_t(&self, t: f64) -> (f64, f64) {
+        let (e2, k) = (self.e * self.e, self.k);
+        if t == 0.0 {
+            return (self.e, if self.e > 0.0 { 0.0 } else { 1.0 });
+        }
+        // sqrt(E^4 + 4 t^4 k) = 2 t^2 root, root = sqrt(k + (E^2/(2 t^2))^2): no t^4
+        // (overflow) and no product of two tiny factors (underflow) below.
+        let t2 = t * t;
+        let q = 0.5 * e2 / t2;
+        let root = (k + q * q).sqrt();
+        let z = (0.5 * e2 + t2 * root).sqrt();
+        // dz/dt = 2 t^3 k / (z 2 t^2 root) = k (t/z) / root.
+        (z, k * (t / z) / root)
+    }
+
+    /// `(int B dz, int D dz)` over the band `t` in `[p, q]` at Gauss order `m`,
+    /// in units of `kz du` times `unit` (`amp` for `amp <= 1`, else 1); `s(t)`
+    /// is the springs' `s`.
+    fn band(&self, p: f64, q: f64, vbar: f64, s_of: &dyn Fn(f64) -> f64, unit: f64, m: usize) -> (f64, f64) {
+        let rule = crate::quad::rule(m, 0.0);
+        let half = 0.5 * (q - p);
+        let (mut sn, mut sd) = (0.0, 0.0);
+        for (&x, &w) in rule.nodes.iter().zip(&rule.weights) {
+            let th = 0.5 * PI * (1.0 + x);
+            let (st, ct) = th.sin_cos();
+            let t = p + half * (1.0 - ct);
+            let (_, dz) = self.z_of_t(t);
+            let sp = Spring::new(s_of(t), vbar);
+            let jac = w * half * st * dz;
+            sn += jac * unit * sp.mean_normal;
+            sd += jac * unit * sp.deficit;
+        }
+        (0.5 * PI * sn, 0.5 * PI * sd)
+    }
+}
+
+impl Contact for FlatTip {
+    fn name(&self) -> String {
+        format!("flat-tip:{:?}", self.flat_ratio)
+    }
+
+    fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
+        crate::error::check_nonneg("vbar", vbar)?;
+        crate::error::check_nonneg("amp", amp)?;
+        if amp == 0.0 || vbar >= 1.0 {
+            let ratio = Ratio { mu_ratio: 1.0, reduction: 0.0 };
+            return Ok(Evaluation { ratio, error_estimate: 0.0, interpolation_error: None });
+        }
+        let tol = tol.max(crate::mdr::DEFAULT_TOL);
+        // Forces in units of kz u0 (amp <= 1) or kz du (amp > 1): both finite.
+        let unit = if amp <= 1.0 { amp } else { 1.0 };
+        let flat = crate::flat::spring(vbar, amp, false);
+        // Lengths scaled by sqrt(amp) for amp > 1 (module docs).
+        let big = amp > 1.0;
+        let scale = if big { amp.sqrt() } else { 1.0 };
+        // A scaled flat below 1e-154 (amp above 1e307) weighs less than 1e-154 of
+        // the contact, and its square would be subnormal: it is dropped.
+        let e = Some(self.flat_ratio / scale).filter(|e| (e * e).is_normal()).unwrap_or(0.0);
+        let curved = Curved { e, k: (1.0 - self.flat_ratio) * (1.0 + self.flat_ratio) };
+        let (mut nn, mut dd) = (e * unit * flat.mean_normal, e * unit * flat.deficit);
+        let c = ((1.0 - vbar) * (1.0 + vbar)).sqrt();
+        // s(t) = (1 - t^2)/amp, or 1/amp - t^2 in scaled lengths; 1 - t^2 = (1 - t)(1 + t).
+        let s_of = move |t: f64| if big { 1.0 / amp - t * t } else { (1.0 - t) * (1.0 + t) / amp };
+        let t_of = |s: f64| if big { (1.0 / amp - s).max(0.0).sqrt() } else { (1.0 - amp * s).max(0.0).sqrt() };
+        let t_max = t_of(-1.0);
+        let mut cuts = vec![0.0, t_of(1.0), t_of(c), t_of(-c), t_max];
+        if e > 0.0 {
+            cuts.extend((-4..=4).map(|k| e * 2f64.powi(k)).filter(|&g| g < t_max));
+        }
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup();
+        let (mut en, mut ed, mut nodes) = (0.0, 0.0, 0usize);
+        for w in cuts.windows(2) {
+            let (p, q) = (w[0], w[1]);
+            if q <= p {
+                continue;
+            }
+            let mut m = 8;
+            let mut prev = curved.band(p, q, vbar, &s_of, unit, m);
+            nodes += m;
+            loop {
+                m *= 2;
+                let cur = curved.band(p, q, vbar, &s_of, unit, m);
+                nodes += m;
+                let d = ((cur.0 - prev.0).abs(), (cur.1 - prev.1).abs());
+                let done = d.0 <= tol * (nn.abs() + cur.0.abs()) && d.1 <= tol * (dd.abs() + cur.1.abs());
+                if done || m >= MAX_ORDER {
+                    nn += cur.0;
+                    dd += cur.1;
+                    en += d.0;
+                    ed += d.1;
+                    break;
+                }
+                prev = cur;
+            }
+        }
+        let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
+        let truncation = if nn > 0.0 { ed / nn + dd * en / (nn * nn) } else { 0.0 };
+        let estimate = truncation + rounding_estimate(reduction, nodes);
+        let ratio = Ratio::from_deficit_within(dd, nn, estimate, "flat-tip contact")?;
+        Ok(Evaluation { ratio, error_estimate: estimate, interpolation_error: None })
+    }
+}

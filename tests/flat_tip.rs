@@ -1,0 +1,95 @@
+//! The sphere worn flat at its tip (`flat-tip:E`), added through the `Contact`
+//! trait: its MDR profile against the transform of a tabulated profile of the
+//! same body, and its limits (the paraboloid at E = 0, the flat punch as E -> 1).
+use fricosc::shape::{evaluate, evaluate_with, Shape};
+
+fn mu(spec: &str, v: f64, a: f64) -> (f64, f64) {
+    let e = evaluate(&Shape::parse(spec).unwrap(), v, a).unwrap();
+    (e.ratio.mu_ratio, e.error_estimate)
+}
+
+/// E = 0 is the paraboloid, computed by an unrelated quadrature (in t = sqrt(G)
+/// against the power-law bands in the angle u).
+#[test]
+fn zero_flat_is_the_paraboloid() {
+    let mut worst = 0.0f64;
+    for v in [0.0, 1e-6, 0.1, 0.3, 0.7, 0.99, 1.0 - 1e-6] {
+        for a in [0.1, 0.5, 0.9, 0.999, 1.0, 1.3, 2.0, 10.0] {
+            let (m, est) = mu("flat-tip:0", v, a);
+            let (p, pest) = mu("parabolic", v, a);
+            let err = (m - p).abs();
+            worst = worst.max(err);
+            assert!(err <= est + pest + 1e-15, "v={v} a={a}: {m} vs {p} (estimates {est:e}, {pest:e})");
+        }
+    }
+    assert!(worst < 1e-13, "{worst:e}");
+}
+
+/// As E -> 1 the flat takes the whole contact: the flat punch, at rate O(1 - E).
+#[test]
+fn a_flat_covering_the_contact_is_the_flat_punch() {
+    for (v, a) in [(0.3, 0.4), (0.5, 0.9), (0.2, 1.5)] {
+        let f = mu("flat", v, a).0;
+        let d1 = (mu("flat-tip:0.999", v, a).0 - f).abs();
+        let d2 = (mu("flat-tip:0.999999", v, a).0 - f).abs();
+        assert!(d2 < 1e-4 && d2 < d1 / 100.0, "v={v} a={a}: {d1:e} {d2:e}");
+    }
+}
+
+/// The same body as a tabulated axisymmetric profile, f = 0 for r <= a and
+/// (r^2 - a^2)/(2R) beyond, goes through the numerical MDR transform and the
+/// tabulated quadrature: it agrees within its own interpolation error.
+#[test]
+fn agrees_with_the_tabulated_profile_of_the_same_body() {
+    let dir = std::env::temp_dir().join(format!("fricosc-flattip-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // R = 1, contact radius x_c = 0.1 at the mean indentation, E = a/x_c = 0.5:
+    // g(x_c) = x_c sqrt(x_c^2 - a^2)/R = u0.
+    let (r_sphere, xc, e) = (1.0f64, 0.1f64, 0.5f64);
+    let a = e * xc;
+    let u0 = xc * (xc * xc - a * a).sqrt() / r_sphere;
+    let rows: String = (0..=2000)
+        .map(|i| 0.4 * i as f64 / 2000.0)
+        .map(|r: f64| format!("{r:?},{:?}\n", if r <= a { 0.0 } else { (r * r - a * a) / (2.0 * r_sphere) }))
+        .collect();
+    let file = dir.join("worn.csv");
+    std::fs::write(&file, format!("r,f\n{rows}")).unwrap();
+    let table = Shape::parse(&format!("profile:{}@{u0:?}", file.display())).unwrap();
+    for (v, amp) in [(0.3, 0.4), (0.1, 0.8), (0.5, 1.5)] {
+        let t = evaluate(&table, v, amp).unwrap();
+        let (m, est) = mu("flat-tip:0.5", v, amp);
+        let err = (t.ratio.mu_ratio - m).abs();
+        let interp = t.interpolation_error.unwrap();
+        assert!(
+            err <= interp + t.error_estimate + est,
+            "v={v} amp={amp}: {} vs {m} (interp {interp:e})",
+            t.ratio.mu_ratio
+        );
+        // Regression bar, about 10x the observed 1.5e-6 (the table smooths the kink at r = a).
+        assert!(err < 2e-5, "v={v} amp={amp}: {err:e}");
+    }
+    // The transform itself: g(x) = x sqrt(x^2 - a^2)/R at points of the table.
+    let (x, f) = fricosc::profile::read_table(file.to_str().unwrap()).unwrap();
+    let pchip = fricosc::profile::Pchip::new(x, f);
+    for x in [0.08, 0.1, 0.2, 0.3] {
+        let g = fricosc::profile::mdr_transform(&pchip, x);
+        let exact = x * (x * x - a * a).sqrt() / r_sphere;
+        assert!((g / exact - 1.0).abs() < 1e-4, "x={x}: {g} vs {exact}");
+    }
+}
+
+/// A looser tolerance does less work and stays within its error estimate.
+#[test]
+fn the_error_estimate_bounds_the_error_at_every_tolerance() {
+    let shape = Shape::parse("flat-tip:0.3").unwrap();
+    for (v, a) in [(0.3, 0.4), (0.05, 0.95), (0.6, 3.0), (1e-4, 1.2)] {
+        let best = evaluate(&shape, v, a).unwrap().ratio.mu_ratio;
+        for tol in [1e-3, 1e-6, 1e-9, 1e-12] {
+            let e = evaluate_with(&shape, v, a, tol).unwrap();
+            let err = (e.ratio.mu_ratio - best).abs();
+            assert!(err <= e.error_estimate + 1e-15, "v={v} a={a} tol={tol:e}: {err:e} > {:e}", e.error_estimate);
+        }
+    }
+    assert!(Shape::parse("flat-tip:1").is_err() && Shape::parse("flat-tip:-0.1").is_err());
+    assert_eq!(Shape::parse("flat-tip:0.25").unwrap().name(), "flat-tip:0.25");
+}
