@@ -196,7 +196,7 @@ pub fn to_svg(f: &Figure) -> Result<String> {
         })
         .collect();
     lines(&f.title, &f.x_label, &f.y_label, (f.range[0], f.range[1]), (f.range[2], f.range[3]), &series)
-        .map_err(|e| Error::Parse { context: "plot".into(), reason: e })
+        .map_err(|e| Error::Internal { what: format!("drawing the plot: {e}") })
 }
 
 /// Write every figure as `name.json`, `name.csv`, `name.svg` into `dir`.
@@ -206,7 +206,7 @@ pub fn write_all(dir: &std::path::Path) -> Result<Vec<String>> {
     let mut names = vec![];
     for f in build()? {
         let json = serde_json::to_string_pretty(&f)
-            .map_err(|e| Error::Parse { context: "output".into(), reason: e.to_string() })?;
+            .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?;
         std::fs::write(dir.join(format!("{}.json", f.name)), json).map_err(werr)?;
         std::fs::write(dir.join(format!("{}.csv", f.name)), to_csv(&f)).map_err(werr)?;
         std::fs::write(dir.join(format!("{}.svg", f.name)), to_svg(&f)?).map_err(werr)?;

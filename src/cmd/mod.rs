@@ -1,0 +1,160 @@
+//! The subcommands, one file each, and what they share: the common options,
+//! the one checked path to stdout, bounded input, and the outcome that `main`
+//! turns into an exit code.
+
+use clap::Args;
+use fricosc::error::{Error, Result};
+use fricosc::grid::parse_number;
+use fricosc::shape::{check_tol, Stepping};
+use std::io::{self, Write};
+
+pub(crate) mod batch;
+pub(crate) mod bench;
+pub(crate) mod claims;
+pub(crate) mod figures;
+pub(crate) mod history;
+pub(crate) mod point;
+pub(crate) mod scene;
+pub(crate) mod stress;
+pub(crate) mod table;
+pub(crate) mod validate;
+
+/// What a command found: `main` maps `Negative` to exit code 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Outcome {
+    /// Success (exit 0).
+    Done,
+    /// A negative answer: `validate` beyond `--max-error`, a failed `stress` check (exit 1).
+    Negative,
+}
+
+/// The velocity, as vbar (eq. 3) or vhat (eq. 15, vbar = vhat / amp).
+#[derive(Args)]
+#[group(required = true, multiple = false)]
+pub(crate) struct Velocity {
+    /// Dimensionless velocity vbar = (kx/kz) v0 / (mu0 omega du) (eq. 3); for table a comma list
+    /// or start:stop:count.
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) vbar: Option<String>,
+    /// Velocity vhat = (kx/kz) v0 / (mu0 omega u0) (eq. 15), vbar = vhat / amp; for table a comma
+    /// list or start:stop:count.
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) vhat: Option<String>,
+}
+
+// `--method`: the command-line face of `fricosc::shape::Method`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub(crate) enum MethodArg {
+    /// The event-driven exact solver.
+    Exact,
+    /// The seed's time-stepping scheme.
+    Stepping,
+}
+
+/// The solver: exact, or the seed's time stepping (for comparison and validation).
+#[derive(Args)]
+pub(crate) struct MethodArgs {
+    /// exact (event-driven, default) or stepping (the seed's time-stepping scheme).
+    #[arg(long, value_enum, default_value = "exact")]
+    pub(crate) method: MethodArg,
+    /// Time steps per period, 1 to 1e8 (only with --method stepping; default 1000).
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) steps_per_period: Option<usize>,
+    /// Springs of an MDR foundation, 1 to 1e8 (only with --method stepping; default 1000).
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) springs: Option<usize>,
+}
+
+/// Default resolution of the stepping peer.
+pub(crate) const DEFAULT_STEPPING: usize = 1000;
+
+impl MethodArgs {
+    /// The stepping resolution, or an error for stepping options without `--method stepping`.
+    pub(crate) fn stepping(&self) -> Result<Option<Stepping>> {
+        if self.method != MethodArg::Stepping {
+            if let Some(name) = [("--steps-per-period", self.steps_per_period), ("--springs", self.springs)]
+                .iter()
+                .find(|(_, v)| v.is_some())
+                .map(|(n, _)| *n)
+            {
+                return Err(Error::Parse {
+                    context: name.into(),
+                    reason: "applies only with --method stepping".into(),
+                });
+            }
+            return Ok(None);
+        }
+        Ok(Some(Stepping {
+            steps_per_period: self.steps_per_period.unwrap_or(DEFAULT_STEPPING),
+            springs: self.springs.unwrap_or(DEFAULT_STEPPING),
+        }))
+    }
+}
+
+/// Options shared by `point` and `table`.
+#[derive(Args)]
+pub(crate) struct Common {
+    /// Indenter shape: flat, parabolic, cone, power:N, profile:FILE@U0, gx:FILE@U0.
+    #[arg(long, default_value = "flat")]
+    pub(crate) shape: String,
+    #[command(flatten)]
+    pub(crate) velocity: Velocity,
+    #[command(flatten)]
+    pub(crate) method: MethodArgs,
+    /// Relative quadrature tolerance for MDR shapes (default: as accurate as f64 allows).
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) tol: Option<String>,
+}
+
+pub(crate) fn tol_of(t: &Option<String>) -> Result<f64> {
+    match t {
+        Some(t) => check_tol(parse_number("--tol", t)?),
+        None => Ok(fricosc::mdr::DEFAULT_TOL),
+    }
+}
+
+pub(crate) fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
+    if amp > 0.0 {
+        let vbar = vhat / amp;
+        if vbar.is_finite() {
+            Ok(vbar)
+        } else {
+            Err(Error::param("vbar", vbar, &format!("vhat / amp = {vhat:?} / {amp:?} overflows double precision")))
+        }
+    } else {
+        Err(Error::param("amp", amp, "--vhat needs amp > 0 (vbar = vhat / amp)"))
+    }
+}
+
+pub(crate) fn io_err(e: io::Error) -> Error {
+    Error::write("stdout", e)
+}
+
+/// The one path to stdout: the whole text at once, errors checked (a closed
+/// pipe or a full disk is an `Error::Write`, never a panic).
+pub(crate) fn emit(text: &str) -> Result<()> {
+    let mut o = io::stdout().lock();
+    o.write_all(text.as_bytes()).and_then(|()| o.flush()).map_err(io_err)
+}
+
+pub(crate) fn read_input(file: Option<String>) -> Result<(String, String)> {
+    let path = file.unwrap_or_else(|| "-".into());
+    let text = fricosc::input::read_capped(&path, fricosc::input::MAX_TABLE_BYTES)?;
+    Ok((text, if path == "-" { "stdin".into() } else { path }))
+}
+
+/// An output directory must be named: `--out ""` would write into the current one.
+pub(crate) fn check_out_dir(out: &str) -> Result<()> {
+    if out.trim().is_empty() {
+        return Err(Error::Parse { context: "--out".into(), reason: "the output directory is empty".into() });
+    }
+    if std::path::Path::new(out).exists() && !std::path::Path::new(out).is_dir() {
+        return Err(Error::Parse { context: "--out".into(), reason: format!("'{out}' exists and is not a directory") });
+    }
+    Ok(())
+}
+
+/// JSON text of a result; our own types always serialise, so a failure is internal.
+pub(crate) fn to_json<T: serde::Serialize>(value: &T) -> Result<String> {
+    serde_json::to_string_pretty(value).map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
+}
