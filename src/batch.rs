@@ -24,7 +24,7 @@ use std::collections::HashMap;
 use std::io::{self, Write};
 
 /// Most rows one batch may hold.
-pub const MAX_ROWS: usize = 10_000_000;
+pub const MAX_ROWS: usize = crate::grid::MAX_ROWS;
 
 /// One checked row: its shape (an index into [`Batch::shapes`]), inputs, and
 /// whether it already carried results to replace.

@@ -148,8 +148,8 @@ pub fn check() -> Vec<Claim> {
         .ok()
         .and_then(|p| p.events.iter().find(|e| e.kind == EventKind::Slip).map(|e| e.tau))
         .unwrap_or(f64::NAN);
-    let printed = |t: f64| t.cos() - ((1.0 - v * v).sqrt() + v * (t - t1));
-    let corrected = |t: f64| t.cos() - ((1.0 - v * v).sqrt() - v * (t - t1));
+    let printed = |t: f64| seed::eq8_printed_residual(v, t);
+    let corrected = |t: f64| seed::eq8_corrected_residual(v, t);
     let worst_printed = (1..=1000).map(|k| printed(t1 + k as f64 * TAU / 1000.0)).fold(f64::NEG_INFINITY, f64::max);
     let (r_printed, r_corrected) = (printed(t2).abs(), corrected(t2).abs());
     out.push(Claim {

@@ -2,8 +2,11 @@
 
 use crate::error::{Error, Result};
 
-/// Most values one list or range may produce.
-pub const MAX_LIST: u128 = 10_000_000;
+/// Most rows any command reads or writes (tables, batches, validated tables,
+/// histories), and most values one list or range may produce: the one limit.
+pub const MAX_ROWS: usize = 10_000_000;
+/// [`MAX_ROWS`] for counts computed in `u128` (before they can overflow).
+pub const MAX_LIST: u128 = MAX_ROWS as u128;
 
 /// Parse one finite number; `what` names it in the error.
 pub fn parse_number(what: &str, text: &str) -> Result<f64> {

@@ -76,7 +76,7 @@ pub const MAX_SPRINGS: usize = 1_000_000;
 pub const MAX_SPRING_WORK: u128 = 4_000_000_000;
 
 /// Most rows one history may hold (and most chosen-spring values).
-pub const MAX_SAMPLES: usize = 10_000_000;
+pub const MAX_SAMPLES: usize = crate::grid::MAX_ROWS;
 
 /// The history of `periods` periods with `samples` uniform samples (plus events).
 /// `chosen`: positions `x/x_c >= 0` of springs of an MDR shape to report one by one.
@@ -165,7 +165,8 @@ pub fn history(
             let zmax = (1.0 + amp).powf(1.0 / n);
             let dz = zmax / springs as f64;
             let sp: Vec<Spring> = if amp > 0.0 {
-                (0..springs).map(|i| Spring::with_events((1.0 - ((i as f64 + 0.5) * dz).powf(n)) / amp, vbar)).collect()
+                let (_, s_of) = fricosc_core::stepper::power_law_grid(n, amp, springs);
+                (0..springs).map(|i| Spring::with_events(s_of(i), vbar)).collect()
             } else {
                 vec![]
             };
@@ -182,7 +183,7 @@ pub fn history(
                 .map(|&(tau, _)| {
                     let c = (1.0 - amp * tau.cos()).max(0.0);
                     // Both sides of the foundation.
-                    let normal = 2.0 * n / (n + 1.0) * c.powf(1.0 + 1.0 / n);
+                    let normal = 2.0 * fricosc_core::mdr::foundation_force(n, c);
                     let tangential = if amp > 0.0 {
                         2.0 * amp * dz * sp.iter().map(|s| spring_force(s, tau)).sum::<f64>()
                     } else {

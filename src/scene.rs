@@ -436,7 +436,7 @@ fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
     Ok(match shape {
         Shape::Flat => {
             let kz = 2.0 * c.e_star * c.geometry;
-            let m = if amp <= 1.0 { 1.0 } else { amp * crate::spring::mean_normal(1.0 / amp) };
+            let m = crate::flat::mean_normal(amp);
             (c.geometry, kz, kz * u0 * m)
         }
         Shape::Power(n) => {

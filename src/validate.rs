@@ -15,7 +15,7 @@ use serde::Serialize;
 use serde_json::value::RawValue;
 
 /// Most rows one file may hold.
-pub const MAX_ROWS: usize = 10_000_000;
+pub const MAX_ROWS: usize = crate::grid::MAX_ROWS;
 
 /// One compared row.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

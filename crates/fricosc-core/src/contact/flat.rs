@@ -35,16 +35,35 @@ pub struct FlatPoint {
 
 /// The spring of a flat punch of amplitude `amp`: `s = 1/amp`, with
 /// `1 - s = (amp - 1)/amp` passed unrounded (the contact phase near `amp = 1`).
-/// For `amp = 0` the permanent-contact spring with `s = 1` stands in: its stick
-/// phases and deficit do not depend on `s`. The one place `s` of the flat punch
-/// is formed.
+/// `s` comes from [`spring_s`], the one place it is formed (with its stand-in
+/// for `amp = 0`).
 pub fn spring(vbar: f64, amp: f64, events: bool) -> Spring {
-    if amp == 0.0 {
-        return Spring::with_complement(1.0, 0.0, vbar, events);
-    }
+    let s = spring_s(amp);
+    // 1 - s = (amp - 1)/amp without cancellation (only used where |s| < 1).
+    let one_minus_s = if amp > 0.0 { (amp - 1.0) / amp } else { -s };
+    Spring::with_complement(s, one_minus_s, vbar, events)
+}
+
+/// `s = u0/du = 1/amp` of the flat punch's spring; `f64::MAX` where `1/amp`
+/// overflows (`amp = 0` or subnormal): a spring always in contact, whose stick
+/// phases and deficit do not depend on `s`.
+pub fn spring_s(amp: f64) -> f64 {
     let s = 1.0 / amp;
-    let s = if s.is_finite() { s } else { f64::MAX };
-    Spring::with_complement(s, (amp - 1.0) / amp, vbar, events)
+    if s.is_finite() {
+        s
+    } else {
+        f64::MAX
+    }
+}
+
+/// Mean normal force of the flat punch over a period, units `kz u0`: 1 without
+/// contact loss, `amp <B>(1/amp)` (eq. 20) with it.
+pub fn mean_normal(amp: f64) -> f64 {
+    if amp <= 1.0 {
+        1.0
+    } else {
+        amp * crate::spring::mean_normal(spring_s(amp))
+    }
 }
 
 /// Reduction from the spring: for `amp <= 1`, `<B> = s = 1/amp` and the
@@ -109,7 +128,7 @@ pub fn point(vbar: f64, amp: f64) -> Result<FlatPoint> {
             Event { normal: f, tangential: f, ..e }
         })
         .collect();
-    let mean_normal = if amp <= 1.0 { 1.0 } else { amp * sp.mean_normal };
+    let mean_normal = mean_normal(amp);
     Ok(FlatPoint {
         vbar,
         amp,

@@ -162,7 +162,7 @@ impl Contact for FlatTip {
             }
         }
         let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
-        let truncation = if nn > 0.0 { ed / nn + dd * en / (nn * nn) } else { 0.0 };
+        let truncation = crate::ratio::quotient_error(nn, dd, en, ed);
         let estimate = truncation + rounding_estimate(reduction, nodes);
         let ratio = Ratio::from_deficit_within(dd, nn, estimate, "flat-tip contact")?;
         Ok(Evaluation { ratio, error_estimate: estimate, interpolation_error: None })

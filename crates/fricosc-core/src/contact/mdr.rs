@@ -401,6 +401,17 @@ fn elliptic_ke(m: f64, m1: f64) -> (f64, f64) {
     (k, k * (1.0 - sum))
 }
 
+/// Force of one side of the elastic foundation of `g = z^n` pressed to depth
+/// `c` (units `E* x_c u0`): `int_0^(c^(1/n)) (c - z^n) dz = (n/(n+1)) c^(1 + 1/n)`;
+/// 0 for `c <= 0`. The one place this formula lives.
+pub fn foundation_force(n: f64, c: f64) -> f64 {
+    if c <= 0.0 {
+        0.0
+    } else {
+        n / (n + 1.0) * c.powf(1.0 + 1.0 / n)
+    }
+}
+
 /// Total mean normal force `int amp <B> dz` in closed form where one exists:
 /// `(n/(n+1)) (1/pi) int_0^pi (1 - amp cos t)_+^(1 + 1/n) dt` (the foundation's
 /// force at indentation `c` is `c^(1+1/n) n/(n+1)`), elementary for the cone and
@@ -467,7 +478,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::R
         nodes: 0,
     };
     if amp == 0.0 {
-        return Ok(unit(Some(n / (n + 1.0))));
+        return Ok(unit(Some(foundation_force(n, 1.0))));
     }
     if vbar >= 1.0 && !bands {
         return Ok(unit(total_normal(n, amp).map(unscale).filter(|x| x.is_finite())));
@@ -549,7 +560,7 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::R
     // Truncation (the pieces' estimates, propagated through dd/nn) plus rounding.
     let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
     let rounding = crate::ratio::rounding_estimate(reduction, total.nodes);
-    let truncation = if nn > 0.0 { total.err_deficit / nn + dd * total.err_normal / (nn * nn) } else { 0.0 };
+    let truncation = crate::ratio::quotient_error(nn, dd, total.err_normal, total.err_deficit);
     let error_estimate = truncation + rounding;
     let ratio = Ratio::from_deficit_within(dd, nn, error_estimate, "power-law contact")?;
     let tangential = nn - dd;
@@ -602,7 +613,7 @@ pub fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> f64 {
     let nn = total_normal(n, amp)
         .or_else(|| power_law(n, 1.0, amp, tol, true).ok().and_then(|r| r.mean_normal).map(|x| 0.5 * x))
         .unwrap_or(f64::NAN);
-    (n / (n + 1.0) * (1.0 - amp).powf(1.0 + 1.0 / n) / nn).min(1.0)
+    (foundation_force(n, 1.0 - amp) / nn).min(1.0)
 }
 
 /// [`power_law`] with the bands and the static limit; inputs are checked.

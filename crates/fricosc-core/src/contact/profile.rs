@@ -486,7 +486,7 @@ fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
     // Truncation (the 16/32-point difference per interval) plus rounding.
     let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
     let terms = 48 * (cuts.len() - 1);
-    let truncation = if nn > 0.0 { ed / nn + dd * en / (nn * nn) } else { 0.0 };
+    let truncation = crate::ratio::quotient_error(nn, dd, en, ed);
     let estimate = truncation + crate::ratio::rounding_estimate(reduction, terms);
     let ratio = Ratio::from_deficit_within(dd, nn, estimate, "tabulated contact")?;
     Ok((ratio, estimate, nn))

@@ -23,6 +23,17 @@ pub fn rounding_estimate(reduction: f64, terms: usize) -> f64 {
     f64::EPSILON * (2.0 * (ROUNDING_PER_TERM + (terms as f64).sqrt()) * reduction.abs() + 0.5)
 }
 
+/// Truncation part of the error estimate of the reduction `dd/nn`, from the
+/// estimated errors `en` of `nn` and `ed` of `dd` (first-order propagation
+/// through the quotient: `ed/nn + dd en/nn^2`); 0 without normal force.
+pub fn quotient_error(nn: f64, dd: f64, en: f64, ed: f64) -> f64 {
+    if nn > 0.0 {
+        ed / nn + dd * en / (nn * nn)
+    } else {
+        0.0
+    }
+}
+
 /// `mu_macro/mu0` and `1 - mu_macro/mu0`, the latter with full relative accuracy.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]

@@ -515,10 +515,8 @@ mod tests {
         let st = sp.stick.unwrap();
         let t1 = v.asin();
         let t2 = t1 + st.length;
-        let corrected = (1.0 - v * v).sqrt() - v * (t2 - t1);
-        assert!((t2.cos() - corrected).abs() < 1e-14);
+        assert!(crate::seed::eq8_corrected_residual(v, t2).abs() < 1e-14);
         // The printed '+' form has no root after tau1: its residual stays away from zero.
-        let printed = |t: f64| t.cos() - ((1.0 - v * v).sqrt() + v * (t - t1));
-        assert!((1..1000).all(|k| printed(t1 + k as f64 * TAU / 1000.0) < -1e-6));
+        assert!((1..1000).all(|k| crate::seed::eq8_printed_residual(v, t1 + k as f64 * TAU / 1000.0) < -1e-6));
     }
 }

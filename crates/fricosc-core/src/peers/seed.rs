@@ -10,6 +10,18 @@ fn bracket(vbar: f64) -> f64 {
     0.75 * w + 0.25 * w * w
 }
 
+/// Residual `cos tau2 - (sqrt(1 - v^2) + v (tau2 - arcsin v))` of eq. 8 as printed
+/// (its '+' sign has no root after `tau1 = arcsin v`).
+pub fn eq8_printed_residual(vbar: f64, tau2: f64) -> f64 {
+    tau2.cos() - ((1.0 - vbar * vbar).sqrt() + vbar * (tau2 - vbar.asin()))
+}
+
+/// Residual `cos tau2 - (sqrt(1 - v^2) - v (tau2 - arcsin v))` of eq. 8 with the
+/// sign corrected: zero at the stick's end.
+pub fn eq8_corrected_residual(vbar: f64, tau2: f64) -> f64 {
+    tau2.cos() - ((1.0 - vbar * vbar).sqrt() - vbar * (tau2 - vbar.asin()))
+}
+
 /// Eq. 11 (empirical fit, no contact loss): `1 - amp [3/4 (v-1)^2 + 1/4 (v-1)^4]`;
 /// 1 for `vbar >= 1` (the seed: no reduction beyond the critical velocity).
 pub fn eq11(vbar: f64, amp: f64) -> f64 {

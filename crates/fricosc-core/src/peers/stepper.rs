@@ -141,8 +141,15 @@ pub fn run_with(
 /// `mu_macro/mu0` of a flat punch by time stepping.
 pub fn flat_mu_ratio(vbar: f64, amp: f64, steps_per_period: usize) -> SteppedMeans {
     // In units of kz u0 the bound is (1 - amp cos tau)_+ = amp (s - cos tau)_+.
-    let s = if amp > 0.0 { 1.0 / amp } else { f64::MAX };
-    run(&[s], &[1.0], vbar, steps_per_period, 2)
+    run(&[crate::flat::spring_s(amp)], &[1.0], vbar, steps_per_period, 2)
+}
+
+/// The midpoint grid of `springs` springs on the part of the foundation of
+/// `g = z^n` that ever touches, `0 <= z < (1 + amp)^(1/n)`: the spacing `dz`
+/// and `s` of spring `i`, `(1 - ((i + 1/2) dz)^n)/amp` (`amp > 0`).
+pub fn power_law_grid(n: f64, amp: f64, springs: usize) -> (f64, impl Fn(usize) -> f64) {
+    let dz = (1.0 + amp).powf(1.0 / n) / springs.max(1) as f64;
+    (dz, move |i: usize| (1.0 - ((i as f64 + 0.5) * dz).powf(n)) / amp)
 }
 
 /// `mu_macro/mu0` of the power-law profile `g = z^n` by time stepping with
@@ -153,6 +160,6 @@ pub fn power_law_mu_ratio(n: f64, vbar: f64, amp: f64, steps_per_period: usize, 
         return SteppedMeans { tangential: 1.0, normal: 1.0, period_change: 0.0, steps: 0 };
     }
     let k = springs.max(1);
-    let dz = (1.0 + amp).powf(1.0 / n) / k as f64;
-    run_with(k, &|i| ((1.0 - ((i as f64 + 0.5) * dz).powf(n)) / amp, dz), vbar, steps_per_period, 2)
+    let (dz, s_of) = power_law_grid(n, amp, k);
+    run_with(k, &|i| (s_of(i), dz), vbar, steps_per_period, 2)
 }
