@@ -35,6 +35,8 @@ use crate::spring::Spring;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
+/// First Gauss order per band (then doubled).
+const FIRST_ORDER: usize = 8;
 /// Highest Gauss order tried per band.
 const MAX_ORDER: usize = 512;
 
@@ -142,7 +144,7 @@ impl Contact for FlatTip {
             if q <= p {
                 continue;
             }
-            let mut m = 8;
+            let mut m = FIRST_ORDER;
             let mut prev = curved.band(p, q, vbar, &s_of, unit, m);
             nodes += m;
             loop {

@@ -59,6 +59,13 @@ pub const DEFAULT_TOL: f64 = 4e-15;
 /// error of 1e-7), so the plain difference of the last two orders is both the
 /// criterion and the estimate.
 const PREDICT_MIN_ORDER: usize = 16;
+/// Safety factor on the error predicted from geometric convergence
+/// (`d^3/d'^2`, `d` and `d'` the last two differences): two decimal digits
+/// for a convergence rate that is not yet constant.
+const PREDICT_SAFETY: f64 = 100.0;
+/// Above this `amp cos u`, `1/amp - cos u` (scaled `y`) loses more than one bit
+/// to cancellation, and the product form `2 sin((u + u*)/2) sin((u - u*)/2)` is used.
+const Y_PRODUCT_FORM: f64 = 0.5;
 /// A singularity of the stick-first means closer to a band end than this
 /// fraction of the band's width is graded.
 const GRADE_RATIO: f64 = 0.0625;
@@ -187,7 +194,7 @@ impl Contact {
         if self.amp <= 1.0 {
             let one_minus_c = if cos_u > 0.0 { sin_u * sin_u / (1.0 + cos_u) } else { 1.0 - cos_u };
             (1.0 - self.amp) + self.amp * one_minus_c
-        } else if self.amp * cos_u > 0.5 {
+        } else if self.amp * cos_u > Y_PRODUCT_FORM {
             self.y(u)
         } else {
             1.0 / self.amp - cos_u
@@ -290,7 +297,7 @@ impl Contact {
                 } else if dc == 0.0 {
                     0.0
                 } else if dc < dp {
-                    (100.0 * dc * dc * dc / (dp * dp)).min(dc)
+                    (PREDICT_SAFETY * dc * dc * dc / (dp * dp)).min(dc)
                 } else {
                     dc
                 }

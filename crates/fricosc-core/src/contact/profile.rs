@@ -132,6 +132,16 @@ impl Pchip {
     }
 }
 
+/// Gauss-Legendre order per knot interval of the normal force `normal_force`:
+/// the integrand is the cubic interpolant itself, integrated exactly from 2 points
+/// on; 12 leaves margin for the inverse at the edge.
+const NORMAL_FORCE_ORDER: usize = 12;
+/// Gauss-Legendre order per interval of the static force (`amp = 0`).
+const STATIC_ORDER: usize = 32;
+/// The two orders of the tabulated quadrature per interval: the higher gives the
+/// value, their difference the error estimate.
+const PASS_ORDERS: (usize, usize) = (16, 32);
+
 /// Most rows of a tabulated profile: the MDR transform costs about 40 ns per
 /// pair of rows, on both cores (quadratic: 16,000 rows take 3 s), so 20,000 rows
 /// take about 5 s.
@@ -237,7 +247,7 @@ pub fn normal_force(g: &Pchip, d: f64) -> f64 {
     let a = g.inverse(d);
     let mut cuts: Vec<f64> = g.knots().iter().copied().filter(|&x| x < a).collect();
     cuts.push(a);
-    let rule = quad::rule(12, 0.0);
+    let rule = quad::rule(NORMAL_FORCE_ORDER, 0.0);
     let mut sum = 0.0;
     for w in cuts.windows(2) {
         let h = 0.5 * (w[1] - w[0]);
@@ -424,7 +434,7 @@ fn integrate(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64)> {
 fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
     if amp == 0.0 {
         // No oscillation: int (1 - G(z))_+ dz, exactly the same quadrature at amp -> 0 is singular.
-        let rule = quad::rule(32, 0.0);
+        let rule = quad::rule(STATIC_ORDER, 0.0);
         let mut cuts: Vec<f64> = g.knots().iter().copied().filter(|&z| z < 1.0).collect();
         cuts.push(1.0);
         let mut nn = 0.0;
@@ -477,7 +487,7 @@ fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
     };
     let (mut nn, mut dd, mut en, mut ed) = (0.0, 0.0, 0.0, 0.0);
     for w in cuts.windows(2) {
-        let (a, b) = (pass(w[0], w[1], 16), pass(w[0], w[1], 32));
+        let (a, b) = (pass(w[0], w[1], PASS_ORDERS.0), pass(w[0], w[1], PASS_ORDERS.1));
         nn += b.0;
         dd += b.1;
         en += (b.0 - a.0).abs();
@@ -485,7 +495,7 @@ fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
     }
     // Truncation (the 16/32-point difference per interval) plus rounding.
     let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
-    let terms = 48 * (cuts.len() - 1);
+    let terms = (PASS_ORDERS.0 + PASS_ORDERS.1) * (cuts.len() - 1);
     let truncation = crate::ratio::quotient_error(nn, dd, en, ed);
     let estimate = truncation + crate::ratio::rounding_estimate(reduction, terms);
     let ratio = Ratio::from_deficit_within(dd, nn, estimate, "tabulated contact")?;
