@@ -31,8 +31,6 @@ use super::Contact;
 use crate::error::{Error, Result};
 use crate::ratio::{rounding_estimate, Ratio};
 use crate::shape::Evaluation;
-use crate::spring::Spring;
-use std::f64::consts::PI;
 use std::sync::Arc;
 
 /// First Gauss order per band (then doubled).
@@ -86,20 +84,7 @@ impl Curved {
     /// in units of `kz du` times `unit` (`amp` for `amp <= 1`, else 1); `s(t)`
     /// is the springs' `s`.
     fn band(&self, p: f64, q: f64, vbar: f64, s_of: &dyn Fn(f64) -> f64, unit: f64, m: usize) -> (f64, f64) {
-        let rule = crate::quad::rule(m, 0.0);
-        let half = 0.5 * (q - p);
-        let (mut sn, mut sd) = (0.0, 0.0);
-        for (&x, &w) in rule.nodes.iter().zip(&rule.weights) {
-            let th = 0.5 * PI * (1.0 + x);
-            let (st, ct) = th.sin_cos();
-            let t = p + half * (1.0 - ct);
-            let (_, dz) = self.z_of_t(t);
-            let sp = Spring::new(s_of(t), vbar);
-            let jac = w * half * st * dz;
-            sn += jac * unit * sp.mean_normal;
-            sd += jac * unit * sp.deficit;
-        }
-        (0.5 * PI * sn, 0.5 * PI * sd)
+        super::cosine_band(p, q, m, vbar, unit, &|t| (s_of(t), self.z_of_t(t).1))
     }
 }
 

@@ -158,7 +158,7 @@ enum Top {
     CentreCritical,
 }
 
-struct Contact {
+struct Foundation {
     n: f64,
     amp: f64,
     /// `1/n - 1`, the exponent of `y` in the Jacobian.
@@ -175,7 +175,25 @@ struct Contact {
 /// `vbar` near 0) the distances that matter are tiny, and `u` resolves them
 /// where `beta` near `pi/2` would round them away (`cos` of an angle near
 /// `pi/2` keeps only the absolute accuracy of the angle).
-impl Contact {
+impl Foundation {
+    /// The foundation of `g = z^n` at amplitude `amp`: `u* = pi/2 - arcsin(1/amp)`
+    /// for `amp > 1` (where `y = 0`), else 0.
+    fn new(n: f64, amp: f64, vel: Option<Velocity>, tol: f64) -> Self {
+        let u_star = if amp > 1.0 { 2.0 * (0.5 * (amp - 1.0) / amp).sqrt().asin() } else { 0.0 };
+        Foundation { n, amp, gamma: 1.0 / n - 1.0, u_star, vel, tol }
+    }
+
+    /// How the Jacobian behaves at `u*`, the top of the innermost band.
+    fn top_kind(&self) -> Top {
+        if self.amp > 1.0 {
+            Top::Centre
+        } else if self.amp == 1.0 {
+            Top::CentreCritical
+        } else {
+            Top::Regular
+        }
+    }
+
     /// `y = 1 - amp sin(beta) = 1 - amp cos(u)` without cancellation; for
     /// `amp > 1` scaled by `1/amp`: `cos(u*) - cos(u) = 2 sin((u + u*)/2) sin((u - u*)/2)`.
     fn y(&self, u: f64) -> f64 {
@@ -494,16 +512,9 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::R
     let alpha = vel.map_or(0.0, |v| v.alpha);
     // In u = pi/2 - beta: the centre threshold y = 0 at u* (amp > 1), the
     // stick-first band's upper edge beta = alpha at u_alpha = arcsin(vbar).
-    let u_star = if big { 2.0 * (0.5 * (amp - 1.0) / amp).sqrt().asin() } else { 0.0 };
     let u_alpha = if vel.is_some() { vbar.asin() } else { FRAC_PI_2 };
-    let contact = Contact { n, amp, gamma: 1.0 / n - 1.0, u_star, vel, tol };
-    let top_kind = if amp > 1.0 {
-        Top::Centre
-    } else if amp == 1.0 {
-        Top::CentreCritical
-    } else {
-        Top::Regular
-    };
+    let contact = Foundation::new(n, amp, vel, tol);
+    let (u_star, top_kind) = (contact.u_star, contact.top_kind());
     let top_of = |u: f64| if u == u_star { top_kind } else { Top::Regular };
     let d_perm = vel.map_or(0.0, |_| Spring::new(f64::MAX, vbar).deficit);
     let z_of_s = |s: f64| (1.0 - amp * s).clamp(0.0, 1.0 + amp).powf(1.0 / n);
@@ -652,15 +663,8 @@ mod tests {
                 assert!((shares - 1.0).abs() < 1e-14);
                 // The quadrature's total, rebuilt from the bands of the report.
                 let quad_total = {
-                    let u_star = if a > 1.0 { 2.0 * (0.5 * (a - 1.0) / a).sqrt().asin() } else { 0.0 };
-                    let c = Contact { n, amp: a, gamma: 1.0 / n - 1.0, u_star, vel: None, tol: DEFAULT_TOL };
-                    let top = if a > 1.0 {
-                        Top::Centre
-                    } else if a == 1.0 {
-                        Top::CentreCritical
-                    } else {
-                        Top::Regular
-                    };
+                    let c = Foundation::new(n, a, None, DEFAULT_TOL);
+                    let (u_star, top) = (c.u_star, c.top_kind());
                     let z1 = (1.0 - a).max(0.0).powf(1.0 / n);
                     let perm = z1 - z1 * z1.powf(n) / (n + 1.0);
                     let inf = f64::INFINITY;

@@ -33,6 +33,33 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     }
 }
 
+/// `(int <B> w dx, int D w dx)` over `x` in `[p, q]` of the springs `s(x)`
+/// (`spring(x) = (s, w)`, `w` a Jacobian), times `unit`, by Gauss-Legendre of
+/// order `m` in `theta` with `x = p + (q - p)(1 - cos theta)/2`: the substitution
+/// absorbs the square-root behaviour of the means where a band ends at a
+/// contact-loss threshold (`s = +-1`). Shared by the tabulated and flat-tip contacts.
+pub(crate) fn cosine_band(
+    p: f64,
+    q: f64,
+    m: usize,
+    vbar: f64,
+    unit: f64,
+    spring: &dyn Fn(f64) -> (f64, f64),
+) -> (f64, f64) {
+    let rule = crate::quad::rule(m, 0.0);
+    let half = 0.5 * (q - p);
+    let (mut sn, mut sd) = (0.0, 0.0);
+    for (&x, &w) in rule.nodes.iter().zip(&rule.weights) {
+        let (st, ct) = (0.5 * std::f64::consts::PI * (1.0 + x)).sin_cos();
+        let (s, jac) = spring(p + half * (1.0 - ct));
+        let sp = crate::spring::Spring::new(s, vbar);
+        let weight = w * half * st * jac;
+        sn += weight * unit * sp.mean_normal;
+        sd += weight * unit * sp.deficit;
+    }
+    (0.5 * std::f64::consts::PI * sn, 0.5 * std::f64::consts::PI * sd)
+}
+
 /// A parser of the part of a shape specification after its prefix.
 pub type Parser = fn(&str) -> Result<Arc<dyn Contact>>;
 

@@ -25,7 +25,6 @@ use crate::error::{Error, Result};
 use crate::flat::Ratio;
 use crate::quad;
 use crate::root;
-use crate::spring::Spring;
 use rayon::prelude::*;
 use std::f64::consts::PI;
 
@@ -470,20 +469,7 @@ fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
     cuts.sort_by(f64::total_cmp);
     cuts.dedup();
     let pass = |p: f64, q: f64, m: usize| {
-        let rule = quad::rule(m, 0.0);
-        let half = 0.5 * (q - p);
-        let (mut sn, mut sd) = (0.0, 0.0);
-        for (&x, &w) in rule.nodes.iter().zip(&rule.weights) {
-            let t = 0.5 * PI * (1.0 + x);
-            let (st, ct) = t.sin_cos();
-            let z = p + half * (1.0 - ct);
-            let s = (1.0 - g.eval(z).0) / amp;
-            let sp = Spring::new(s, vbar);
-            let jac = w * half * st;
-            sn += jac * amp * sp.mean_normal;
-            sd += jac * amp * sp.deficit;
-        }
-        (0.5 * PI * sn, 0.5 * PI * sd)
+        crate::contact::cosine_band(p, q, m, vbar, amp, &|z| ((1.0 - g.eval(z).0) / amp, 1.0))
     };
     let (mut nn, mut dd, mut en, mut ed) = (0.0, 0.0, 0.0, 0.0);
     for w in cuts.windows(2) {
