@@ -7,33 +7,31 @@
 //! full relative accuracy (Taylor series for `|x| < 2`, direct formula beyond, where no
 //! cancellation is left).
 
-/// Taylor coefficients of `(x - sin x) / x^3` in powers of `x^2`: `(-1)^k / (2k+3)!`.
-const S_COEF: [f64; 13] = {
-    let mut c = [0.0; 13];
+/// `c[k] = (-1)^k / (2k + m)!` for `k < N`: the Taylor coefficients, in powers
+/// of `x^2`, of the sine (`m = 3`) and cosine (`m = 4`) remainders below.
+const fn alternating_inverse_factorials<const N: usize>(m: usize) -> [f64; N] {
+    let mut c = [0.0; N];
+    let mut fact = 1.0;
+    let mut i = 2;
+    while i <= m {
+        fact *= i as f64;
+        i += 1;
+    }
     let mut k = 0;
-    let mut fact = 6.0; // 3!
-    while k < 13 {
+    while k < N {
         c[k] = if k % 2 == 0 { 1.0 / fact } else { -1.0 / fact };
-        let n = (2 * k + 3) as f64;
+        let n = (2 * k + m) as f64;
         fact *= (n + 1.0) * (n + 2.0);
         k += 1;
     }
     c
-};
+}
+
+/// Taylor coefficients of `(x - sin x) / x^3` in powers of `x^2`: `(-1)^k / (2k+3)!`.
+const S_COEF: [f64; 13] = alternating_inverse_factorials::<13>(3);
 
 /// Taylor coefficients of `(x^2/2 - 1 + cos x) / x^4` in powers of `x^2`: `(-1)^k / (2k+4)!`.
-const C_COEF: [f64; 14] = {
-    let mut c = [0.0; 14];
-    let mut k = 0;
-    let mut fact = 24.0; // 4!
-    while k < 14 {
-        c[k] = if k % 2 == 0 { 1.0 / fact } else { -1.0 / fact };
-        let n = (2 * k + 4) as f64;
-        fact *= (n + 1.0) * (n + 2.0);
-        k += 1;
-    }
-    c
-};
+const C_COEF: [f64; 14] = alternating_inverse_factorials::<14>(4);
 
 /// Below this `|x|` the Taylor series is used (its terms are all below `2^(2k)/(2k)!`).
 const SERIES_LIMIT: f64 = 2.0;
