@@ -441,7 +441,7 @@ fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
         }
         Shape::Power(n) => {
             let xc = (u0 / c.geometry).powf(1.0 / n);
-            let m = mdr::power_law(*n, 1.5, amp, mdr::DEFAULT_TOL, true)?.mean_normal.unwrap_or(f64::NAN);
+            let m = mdr::mean_normal_force(*n, amp, mdr::DEFAULT_TOL)?.unwrap_or(f64::NAN);
             (xc, 2.0 * c.e_star * xc, c.e_star * xc * u0 * m)
         }
         // Scenes build their shapes from `indenter`: no registered shape reaches here.

@@ -481,6 +481,15 @@ fn total_normal(n: f64, amp: f64) -> Option<f64> {
 
 /// `mu_macro/mu0` of the power-law profile `g = z^n` at `(vbar, amp)`.
 ///
+/// ```
+/// // The cone (n = 1) at vbar = 0.3, du/u0 = 0.5, with the band report.
+/// let r = fricosc_core::mdr::power_law(1.0, 0.3, 0.5, fricosc_core::mdr::DEFAULT_TOL, true).unwrap();
+/// assert!((r.ratio.mu_ratio - 0.6635626779221783).abs() < 1e-14);
+/// assert!(r.error_estimate < 1e-14);
+/// let shares: f64 = r.bands.iter().map(|b| b.normal_share).sum();
+/// assert!((shares - 1.0).abs() < 1e-14);
+/// ```
+///
 /// `n > 0`, `vbar, amp` finite and `>= 0` (checked by [`crate::shape`]); `tol`
 /// is the relative quadrature tolerance; `bands` asks for the per-band report.
 /// All integrals are scaled by `amp` (units `kz u0` rather than `kz du`), so
@@ -616,6 +625,34 @@ pub struct MdrPoint {
     pub mu_static_ratio: f64,
 }
 
+/// Mean normal force of the whole contact over a period (both sides of the
+/// foundation), units `E* x_c u0`; `None` where it overflows f64.
+///
+/// It does not depend on `vbar`: the closed form for the cone and the
+/// paraboloid, otherwise the band quadrature of the normal force alone (the
+/// solver asked at `vbar = 1`, where no spring sticks and no deficit is computed).
+/// The one place the contact's mean normal force is obtained.
+///
+/// ```
+/// // Hertz at amp = 0: F = (4/3) E* x_c u0.
+/// let f = fricosc_core::mdr::mean_normal_force(2.0, 0.0, fricosc_core::mdr::DEFAULT_TOL).unwrap().unwrap();
+/// assert!((f - 4.0 / 3.0).abs() < 1e-15);
+/// ```
+pub fn mean_normal_force(n: f64, amp: f64, tol: f64) -> crate::Result<Option<f64>> {
+    crate::error::check_nonneg("amp", amp)?;
+    if amp == 0.0 {
+        return Ok(Some(2.0 * foundation_force(n, 1.0)));
+    }
+    match total_normal(n, amp) {
+        // total_normal is scaled by amp^(1 + 1/n) for amp > 1 (see power_law).
+        Some(half) => {
+            let scale = if amp > 1.0 { amp.powf(1.0 + 1.0 / n) } else { 1.0 };
+            Ok(Some(2.0 * half * scale).filter(|x| x.is_finite()))
+        }
+        None => Ok(power_law(n, 1.0, amp, tol, true)?.mean_normal),
+    }
+}
+
 /// `mu_static/mu0`, the limit `vbar -> 0+`: every jumping spring sticks from
 /// contact to loss of contact (losing all its friction) and every permanent one
 /// loses `D(0) = 1`, so what remains is the minimum normal force over its mean,
@@ -628,10 +665,9 @@ pub fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> f64 {
     if amp >= 1.0 {
         return 0.0;
     }
-    let nn = total_normal(n, amp)
-        .or_else(|| power_law(n, 1.0, amp, tol, true).ok().and_then(|r| r.mean_normal).map(|x| 0.5 * x))
-        .unwrap_or(f64::NAN);
-    (foundation_force(n, 1.0 - amp) / nn).min(1.0)
+    // Both sides of the foundation: the minimum force is twice one side's.
+    let nn = mean_normal_force(n, amp, tol).ok().flatten().unwrap_or(f64::NAN);
+    (2.0 * foundation_force(n, 1.0 - amp) / nn).min(1.0)
 }
 
 /// [`power_law`] with the bands and the static limit; inputs are checked.

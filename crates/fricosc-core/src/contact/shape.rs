@@ -119,6 +119,16 @@ pub fn flat_error_estimate(r: &Ratio) -> f64 {
 }
 
 /// Evaluate `mu_macro/mu0` at the default tolerance.
+///
+/// ```
+/// use fricosc_core::shape::{evaluate, Shape};
+/// // The parabolic (Hertz) contact at vbar = 0.3, du/u0 = 0.4, and a worn sphere.
+/// let e = evaluate(&Shape::parse("parabolic").unwrap(), 0.3, 0.4).unwrap();
+/// assert!((e.ratio.mu_ratio - 0.7661542311590507).abs() < 1e-15);
+/// assert!(e.error_estimate < 1e-14);
+/// let worn = evaluate(&Shape::parse("flat-tip:0.5").unwrap(), 0.3, 0.4).unwrap();
+/// assert!(worn.ratio.mu_ratio > e.ratio.mu_ratio); // closer to the flat punch
+/// ```
 pub fn evaluate(shape: &Shape, vbar: f64, amp: f64) -> Result<Evaluation> {
     evaluate_with(shape, vbar, amp, mdr::DEFAULT_TOL)
 }
