@@ -18,7 +18,6 @@
 //!   static force-indentation relation; the output says so.
 
 use crate::error::{Error, Result};
-use crate::flat;
 use crate::mdr;
 use crate::root;
 use crate::shape::{evaluate, Shape, MAX_EXPONENT, MIN_EXPONENT};
@@ -535,12 +534,7 @@ pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sy
             ));
         }
     }
-    let mu_static = match c.shape {
-        Shape::Flat => flat::mu_static_ratio(amp),
-        Shape::Power(n) => mdr::mu_static_ratio(n, amp, mdr::DEFAULT_TOL),
-        Shape::Tabulated(..) => evaluate(&c.shape, 0.0, amp)?.ratio.mu_ratio,
-        Shape::Registered(ref r) => r.0.mu_static(amp, mdr::DEFAULT_TOL)?,
-    } * c.mu0;
+    let mu_static = c.shape.mu_static(amp, mdr::DEFAULT_TOL)? * c.mu0;
     // eq. 3 with kx/kz = G*/E*: vbar = v0 / v_crit. The velocity scale must be an
     // ordinary number, else every vbar is 0, infinite or NaN.
     if !(v_crit.is_normal() && v_crit > 0.0) {

@@ -63,5 +63,56 @@ pub(crate) fn cosine_band(
 /// A parser of the part of a shape specification after its prefix.
 pub type Parser = fn(&str) -> Result<Arc<dyn Contact>>;
 
+/// The flat cylindrical punch: one spring (seed section 2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FlatPunch;
+
+impl Contact for FlatPunch {
+    fn name(&self) -> String {
+        "flat".into()
+    }
+    fn evaluate(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Evaluation> {
+        let ratio = flat::ratio(vbar, amp)?;
+        Ok(Evaluation { ratio, error_estimate: shape::flat_error_estimate(&ratio), interpolation_error: None })
+    }
+    fn mu_static(&self, amp: f64, _tol: f64) -> Result<f64> {
+        Ok(flat::mu_static_ratio(amp))
+    }
+}
+
+/// The MDR power-law profile `g ~ |x|^n` ([`mdr`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PowerLaw {
+    /// The exponent `n` (1: cone, 2: paraboloid).
+    pub n: f64,
+}
+
+impl Contact for PowerLaw {
+    fn name(&self) -> String {
+        shape::Shape::Power(self.n).name()
+    }
+    fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
+        let r = mdr::power_law(self.n, vbar, amp, tol, false)?;
+        Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate, interpolation_error: None })
+    }
+    fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
+        Ok(mdr::mu_static_ratio(self.n, amp, tol))
+    }
+}
+
+impl Contact for profile::Tabulated {
+    fn name(&self) -> String {
+        "tabulated".into()
+    }
+    fn evaluate(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Evaluation> {
+        let r = profile::evaluate(self, vbar, amp)?;
+        Ok(Evaluation {
+            ratio: r.ratio,
+            error_estimate: r.error_estimate,
+            interpolation_error: Some(r.interpolation_error),
+        })
+    }
+}
+
 /// Shapes implemented through [`Contact`]: name prefix and parser.
 pub const REGISTRY: &[(&str, Parser)] = &[("flat-tip:", flat_tip::parse)];

@@ -1,7 +1,6 @@
 //! Indenter shapes, as named on the command line and in batch files.
 
 use crate::error::{check_nonneg, Error, Result};
-use crate::flat;
 use crate::flat::Ratio;
 use crate::mdr;
 
@@ -81,6 +80,23 @@ impl Shape {
         }
     }
 
+    /// Run `f` on the shape's [`Contact`](crate::contact::Contact): every
+    /// evaluation goes through the trait (the enum only adds what the trait does
+    /// not cover: the stepping peer, histories and scenes of the built-in shapes).
+    pub fn with_contact<T>(&self, f: impl FnOnce(&dyn crate::contact::Contact) -> T) -> T {
+        match self {
+            Shape::Flat => f(&crate::contact::FlatPunch),
+            Shape::Power(n) => f(&crate::contact::PowerLaw { n: *n }),
+            Shape::Tabulated(t, _) => f(t.as_ref()),
+            Shape::Registered(c) => f(c.0.as_ref()),
+        }
+    }
+
+    /// `mu_static/mu0` of the shape (the limit `vbar -> 0+`).
+    pub fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
+        self.with_contact(|c| c.mu_static(amp, tol))
+    }
+
     /// The canonical name as printed in outputs.
     pub fn name(&self) -> String {
         match self {
@@ -139,25 +155,7 @@ pub fn evaluate_with(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<Eva
     check_nonneg("vbar", vbar)?;
     check_nonneg("amp", amp)?;
     check_tol(tol)?;
-    match shape {
-        Shape::Flat => {
-            let ratio = flat::ratio(vbar, amp)?;
-            Ok(Evaluation { ratio, error_estimate: flat_error_estimate(&ratio), interpolation_error: None })
-        }
-        Shape::Power(n) => {
-            let r = mdr::power_law(*n, vbar, amp, tol, false)?;
-            Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate, interpolation_error: None })
-        }
-        Shape::Tabulated(t, _) => {
-            let r = crate::profile::evaluate(t, vbar, amp)?;
-            Ok(Evaluation {
-                ratio: r.ratio,
-                error_estimate: r.error_estimate,
-                interpolation_error: Some(r.interpolation_error),
-            })
-        }
-        Shape::Registered(c) => c.0.evaluate(vbar, amp, tol),
-    }
+    shape.with_contact(|c| c.evaluate(vbar, amp, tol))
 }
 
 /// Check a tolerance: finite, `> 0` and `< 1`.
