@@ -239,24 +239,34 @@ pub fn run(quick: bool) -> Report {
     }
 }
 
-/// CSV of the points: `case,method,setting,error,time_s`.
-pub fn to_csv(r: &Report) -> String {
-    crate::output::csv_table(
-        &["case", "method", "setting", "error", "time_s"],
-        r.points.iter().map(|p| {
-            [
-                p.case.to_string(),
-                p.method.to_string(),
-                p.setting.clone(),
-                format!("{:?}", p.error),
-                format!("{:?}", p.time_s),
-            ]
-        }),
-    )
+impl crate::export::Report for Report {
+    /// The points: `case,method,setting,error,time_s`.
+    fn columns(&self) -> Vec<String> {
+        ["case", "method", "setting", "error", "time_s"].map(String::from).to_vec()
+    }
+
+    fn rows(&self) -> Vec<Vec<String>> {
+        self.points
+            .iter()
+            .map(|p| {
+                vec![
+                    p.case.to_string(),
+                    p.method.to_string(),
+                    p.setting.clone(),
+                    format!("{:?}", p.error),
+                    format!("{:?}", p.time_s),
+                ]
+            })
+            .collect()
+    }
+
+    fn svg(&self) -> Option<crate::error::Result<String>> {
+        Some(to_svg(self).map_err(|e| crate::error::Error::Internal { what: format!("drawing the plot: {e}") }))
+    }
 }
 
 /// Log-log SVG of error against time per evaluation, one series per case and method.
-pub fn to_svg(r: &Report) -> Result<String, String> {
+fn to_svg(r: &Report) -> Result<String, String> {
     use plotters::prelude::*;
     let floor = 1e-17;
     let mut svg = String::new();

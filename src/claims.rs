@@ -432,27 +432,24 @@ pub fn check() -> Vec<Claim> {
     out
 }
 
-/// The claims as a Markdown table.
-pub fn to_markdown(claims: &[Claim]) -> String {
-    let mut s = String::from(
-        "| claim | the seed says | the exact solver gives | deviation | verdict |\n|---|---|---|---|---|\n",
-    );
-    for c in claims {
-        let dev = c.deviation.map_or("-".to_string(), |d| format!("{d:.3e} ({})", c.location));
-        s += &format!(
-            "| {} | {} | {} | {} | {} |\n",
-            c.claim,
-            c.seed_says.replace('|', "/"),
-            c.exact_gives.replace('|', "/"),
-            dev.replace('|', "/"),
-            match c.verdict {
-                Verdict::Holds => "holds",
-                Verdict::HoldsApproximately => "holds approximately",
-                Verdict::Overstated => "overstated",
-                Verdict::Misprint => "misprint",
-                Verdict::Wrong => "wrong",
-            }
-        );
+impl crate::export::Report for Vec<Claim> {
+    fn columns(&self) -> Vec<String> {
+        ["claim", "the seed says", "the exact solver gives", "deviation", "verdict"].map(String::from).to_vec()
     }
-    s
+
+    fn rows(&self) -> Vec<Vec<String>> {
+        self.iter()
+            .map(|c| {
+                let dev = c.deviation.map_or("-".to_string(), |d| format!("{d:.3e} ({})", c.location));
+                let verdict = match c.verdict {
+                    Verdict::Holds => "holds",
+                    Verdict::HoldsApproximately => "holds approximately",
+                    Verdict::Overstated => "overstated",
+                    Verdict::Misprint => "misprint",
+                    Verdict::Wrong => "wrong",
+                };
+                vec![c.claim.clone(), c.seed_says.clone(), c.exact_gives.clone(), dev, verdict.to_string()]
+            })
+            .collect()
+    }
 }

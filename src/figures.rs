@@ -171,32 +171,40 @@ pub fn build() -> Result<Vec<Figure>> {
     Ok(figs)
 }
 
-/// CSV (long format): `curve,kind,amp,x,y`.
-pub fn to_csv(f: &Figure) -> String {
-    let n = crate::output::num;
-    crate::output::csv_table(
-        &["curve", "kind", "amp", "x", "y"],
-        f.curves.iter().flat_map(|c| {
-            c.points
-                .iter()
-                .map(move |p| [c.label.clone(), c.kind.to_string(), c.amp.map_or(String::new(), n), n(p[0]), n(p[1])])
-        }),
-    )
-}
+impl crate::export::Report for Figure {
+    /// Long format: `curve,kind,amp,x,y`.
+    fn columns(&self) -> Vec<String> {
+        ["curve", "kind", "amp", "x", "y"].map(String::from).to_vec()
+    }
 
-/// The SVG plot of a figure.
-pub fn to_svg(f: &Figure) -> Result<String> {
-    let series: Vec<Series> = f
-        .curves
-        .iter()
-        .map(|c| Series {
-            label: c.label.clone(),
-            points: c.points.iter().map(|p| (p[0], p[1])).collect(),
-            dashed: c.kind == "approximation",
-        })
-        .collect();
-    lines(&f.title, &f.x_label, &f.y_label, (f.range[0], f.range[1]), (f.range[2], f.range[3]), &series)
-        .map_err(|e| Error::Internal { what: format!("drawing the plot: {e}") })
+    fn rows(&self) -> Vec<Vec<String>> {
+        let n = crate::output::num;
+        self.curves
+            .iter()
+            .flat_map(|c| {
+                c.points.iter().map(move |p| {
+                    vec![c.label.clone(), c.kind.to_string(), c.amp.map_or(String::new(), n), n(p[0]), n(p[1])]
+                })
+            })
+            .collect()
+    }
+
+    fn svg(&self) -> Option<Result<String>> {
+        let series: Vec<Series> = self
+            .curves
+            .iter()
+            .map(|c| Series {
+                label: c.label.clone(),
+                points: c.points.iter().map(|p| (p[0], p[1])).collect(),
+                dashed: c.kind == "approximation",
+            })
+            .collect();
+        let (x, y) = ((self.range[0], self.range[1]), (self.range[2], self.range[3]));
+        Some(
+            lines(&self.title, &self.x_label, &self.y_label, x, y, &series)
+                .map_err(|e| Error::Internal { what: format!("drawing the plot: {e}") }),
+        )
+    }
 }
 
 /// Write every figure as `name.json`, `name.csv`, `name.svg` into `dir`.
@@ -205,11 +213,10 @@ pub fn write_all(dir: &std::path::Path) -> Result<Vec<String>> {
     std::fs::create_dir_all(dir).map_err(werr)?;
     let mut names = vec![];
     for f in build()? {
-        let json = serde_json::to_string_pretty(&f)
-            .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?;
-        std::fs::write(dir.join(format!("{}.json", f.name)), json).map_err(werr)?;
-        std::fs::write(dir.join(format!("{}.csv", f.name)), to_csv(&f)).map_err(werr)?;
-        std::fs::write(dir.join(format!("{}.svg", f.name)), to_svg(&f)?).map_err(werr)?;
+        use crate::export::{export, Format};
+        for (ext, format) in [("json", Format::Json), ("csv", Format::Csv), ("svg", Format::Svg)] {
+            std::fs::write(dir.join(format!("{}.{ext}", f.name)), export(&f, format)?).map_err(werr)?;
+        }
         names.push(f.name);
     }
     Ok(names)

@@ -20,6 +20,7 @@ pub use fricosc_core::{
 pub mod batch;
 pub mod bench;
 pub mod claims;
+pub mod export;
 pub mod figures;
 pub mod grid;
 pub mod history;

@@ -63,7 +63,7 @@ enum Command {
     },
     /// Every quantitative claim of the seed, checked against the exact solver.
     Claims {
-        /// markdown (default) or json.
+        /// markdown (default), json or csv.
         #[arg(long, default_value = "markdown")]
         format: String,
     },

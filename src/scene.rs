@@ -679,11 +679,10 @@ pub fn schema() -> String {
     serde_json::to_string_pretty(&schemars::schema_for!(Scene)).unwrap_or_default()
 }
 
-/// CSV of a scene's rows.
-pub fn to_csv(r: &SceneResult) -> String {
-    let n = crate::output::num;
-    crate::output::csv_table(
-        &[
+impl crate::export::Report for SceneResult {
+    /// One row per velocity.
+    fn columns(&self) -> Vec<String> {
+        [
             "velocity_m_per_s",
             "vbar",
             "vhat",
@@ -692,20 +691,29 @@ pub fn to_csv(r: &SceneResult) -> String {
             "mean_friction_force_n",
             "mean_normal_force_n",
             "regime",
-        ],
-        r.rows.iter().map(|x| {
-            [
-                n(x.velocity_m_per_s),
-                n(x.vbar),
-                n(x.vhat),
-                n(x.mu_macro),
-                n(x.mu_ratio),
-                n(x.mean_friction_force_n),
-                n(x.mean_normal_force_n),
-                x.regime.to_string(),
-            ]
-        }),
-    )
+        ]
+        .map(String::from)
+        .to_vec()
+    }
+
+    fn rows(&self) -> Vec<Vec<String>> {
+        let n = crate::output::num;
+        self.rows
+            .iter()
+            .map(|x| {
+                vec![
+                    n(x.velocity_m_per_s),
+                    n(x.vbar),
+                    n(x.vhat),
+                    n(x.mu_macro),
+                    n(x.mu_ratio),
+                    n(x.mean_friction_force_n),
+                    n(x.mean_normal_force_n),
+                    x.regime.to_string(),
+                ]
+            })
+            .collect()
+    }
 }
 
 #[cfg(test)]

@@ -139,6 +139,16 @@ fn every_claim_states_its_criterion_and_markdown_has_a_row_per_claim() {
     let cs = claims();
     assert_eq!(cs.len(), 10);
     assert!(cs.iter().all(|c| c.criterion.len() > 20 && !c.measured.is_empty()));
-    let md = fricosc::claims::to_markdown(&cs);
+    use fricosc::export::{export, Format};
+    let md = export(&cs, Format::Markdown).unwrap();
     assert_eq!(md.lines().count(), 2 + cs.len());
+    // The CSV form reads back, one record per claim, with every cell intact.
+    let csv = export(&cs, Format::Csv).unwrap();
+    let mut rd = csv::Reader::from_reader(csv.as_bytes());
+    let records: Vec<csv::StringRecord> = rd.records().map(|r| r.unwrap()).collect();
+    assert_eq!(records.len(), cs.len());
+    for (r, c) in records.iter().zip(&cs) {
+        assert_eq!(&r[0], c.claim.as_str());
+        assert_eq!(&r[2], c.exact_gives.as_str());
+    }
 }

@@ -18,7 +18,8 @@ fn exact_curves_equal_the_solver_and_every_figure_is_there() {
                 assert_eq!(p[1], evaluate(&shape, vbar, amp).unwrap().ratio.mu_ratio, "{} {}", f.name, c.label);
             }
         }
-        assert!(fricosc::figures::to_svg(f).unwrap().starts_with("<svg"));
+        let svg = fricosc::export::export(f, fricosc::export::Format::Svg).unwrap();
+        assert!(svg.starts_with("<svg"));
     }
     // The inset's exact slope is the claims' one, and the corrected eq. 21 follows it.
     let inset = figs.iter().find(|f| f.name == "fig5-inset").unwrap();

@@ -2,22 +2,17 @@
 
 use super::{check_out_dir, emit};
 use fricosc::error::{Error, Result};
-use std::io;
+use fricosc::export::{export, Format};
 
+/// Run the benchmark and write its JSON, CSV and SVG into `out`.
 pub(crate) fn run(out: &str, quick: bool) -> Result<()> {
     check_out_dir(out)?;
     let dir = std::path::Path::new(out);
-    let werr = |e: String| Error::write(out, io::Error::other(e));
     std::fs::create_dir_all(dir).map_err(|e| Error::write(out, e))?;
     let report = fricosc::bench::run(quick);
-    let json = serde_json::to_string_pretty(&report).map_err(|e| werr(e.to_string()))?;
-    let svg = fricosc::bench::to_svg(&report).map_err(werr)?;
-    for (name, text) in [
-        ("work-precision.json", json),
-        ("work-precision.csv", fricosc::bench::to_csv(&report)),
-        ("work-precision.svg", svg),
-    ] {
-        std::fs::write(dir.join(name), text).map_err(|e| Error::write(out, e))?;
+    for (ext, format) in [("json", Format::Json), ("csv", Format::Csv), ("svg", Format::Svg)] {
+        std::fs::write(dir.join(format!("work-precision.{ext}")), export(&report, format)?)
+            .map_err(|e| Error::write(out, e))?;
     }
     let mut o = String::new();
     for r in &report.ratios {

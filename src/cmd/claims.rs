@@ -1,16 +1,12 @@
 //! `fricosc claims`: every quantitative statement of the seed, checked.
 
-use super::{emit, to_json};
-use fricosc::error::{Error, Result};
+use super::emit;
+use fricosc::error::Result;
+use fricosc::export::{export, Format};
 
-/// Print the claims as Markdown or JSON.
+/// Print the claims as Markdown, JSON or CSV.
 pub(crate) fn run(format: &str) -> Result<()> {
-    let claims = fricosc::claims::check();
-    match format {
-        "markdown" => emit(&fricosc::claims::to_markdown(&claims)),
-        "json" => emit(&format!("{}\n", to_json(&claims)?)),
-        other => {
-            Err(Error::Parse { context: "--format".into(), reason: format!("'{other}' is neither markdown nor json") })
-        }
-    }
+    let format = Format::parse(format, &[Format::Markdown, Format::Json, Format::Csv])?;
+    let text = export(&fricosc::claims::check(), format)?;
+    emit(if text.ends_with('\n') { text } else { text + "\n" }.as_str())
 }

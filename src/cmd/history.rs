@@ -1,7 +1,8 @@
 //! `fricosc history`: exact force histories (the seed's Fig. 2).
 
 use super::{emit, vbar_of, Velocity};
-use fricosc::error::{Error, Result};
+use fricosc::error::Result;
+use fricosc::export::{export, Format};
 use fricosc::grid::{parse_number, parse_values};
 use fricosc::shape::Shape;
 
@@ -24,31 +25,8 @@ pub(crate) fn run(
         (None, Some(h)) => vbar_of(parse_number("--vhat", h)?, amp)?,
         (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
     };
-    if !matches!(format, "json" | "csv" | "svg") {
-        return Err(Error::Parse { context: "--format".into(), reason: format!("'{format}' is not json, csv or svg") });
-    }
+    let format = Format::parse(format, &[Format::Json, Format::Csv, Format::Svg])?;
     let h = fricosc::history::history(&shape, vbar, amp, periods, samples, springs, &chosen)?;
-    let text = match format {
-        "json" => serde_json::to_string_pretty(&h)
-            .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?,
-        "csv" => fricosc::history::to_csv(&h),
-        _ => {
-            let pts =
-                |f: fn(&fricosc::history::Sample) -> f64| h.samples.iter().map(|x| (x.tau, f(x))).collect::<Vec<_>>();
-            let ymax = h.samples.iter().map(|x| x.normal).fold(0.0, f64::max) * 1.05 + 1e-12;
-            let series = [
-                fricosc::plot::Series { label: "mu0 x normal force".into(), points: pts(|x| x.normal), dashed: false },
-                fricosc::plot::Series {
-                    label: "tangential force".into(),
-                    points: pts(|x| x.tangential),
-                    dashed: false,
-                },
-            ];
-            let title = format!("{} vbar = {vbar}, du/u0 = {amp} ({})", h.shape, h.units);
-            let tmax = h.samples.last().map_or(1.0, |x| x.tau);
-            fricosc::plot::lines(&title, "omega t", "force", (0.0, tmax), (0.0, ymax), &series)
-                .map_err(|e| Error::Internal { what: format!("drawing the plot: {e}") })?
-        }
-    };
-    emit(&format!("{text}\n"))
+    let text = export(&h, format)?;
+    emit(if text.ends_with('\n') { text } else { text + "\n" }.as_str())
 }

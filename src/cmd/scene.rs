@@ -42,7 +42,11 @@ pub(crate) fn run(files: Vec<String>, schema: bool, format: Format) -> Result<()
         }
     }
     let text = match format {
-        Format::Csv => results.iter().map(fricosc::scene::to_csv).collect::<Vec<_>>().join("\n"),
+        Format::Csv => results
+            .iter()
+            .map(|r| fricosc::export::export(r, fricosc::export::Format::Csv))
+            .collect::<Result<Vec<_>>>()?
+            .join("\n"),
         Format::Json => {
             let v = if results.len() == 1 { serde_json::to_value(&results[0]) } else { serde_json::to_value(&results) };
             v.and_then(|v| serde_json::to_string_pretty(&v))
