@@ -153,7 +153,7 @@ pub const MAX_TABLE_ROWS: usize = 20_000;
 pub fn read_table(path: &str) -> Result<(Vec<f64>, Vec<f64>)> {
     let text = crate::input::read_capped(path, crate::input::MAX_SMALL_BYTES)?;
     let bad = |reason: String| Error::Parse { context: path.into(), reason };
-    let (mut xs, mut ys) = (vec![], vec![]);
+    let (mut xs, mut ys, mut lines) = (vec![], vec![], vec![]);
     let mut header_seen = false;
     for (ln, line) in text.lines().enumerate() {
         let line = line.split('#').next().unwrap_or("").trim();
@@ -170,26 +170,46 @@ pub fn read_table(path: &str) -> Result<(Vec<f64>, Vec<f64>)> {
         if f.len() != 2 || nums.iter().any(|v| v.is_none()) {
             return Err(bad(format!("line {}: expected two numbers", ln + 1)));
         }
-        let (x, y) = (nums[0].unwrap_or(f64::NAN), nums[1].unwrap_or(f64::NAN));
-        if !x.is_finite() || !y.is_finite() {
-            return Err(bad(format!("line {}: values must be finite", ln + 1)));
-        }
-        if let (Some(&px), Some(&py)) = (xs.last(), ys.last()) {
-            if x <= px {
-                return Err(bad(format!("line {}: the first column must increase strictly", ln + 1)));
-            }
-            if y < py {
-                return Err(bad(format!("line {}: the profile must not decrease (monotone profiles only)", ln + 1)));
-            }
-        }
-        xs.push(x);
-        ys.push(y);
+        xs.push(nums[0].unwrap_or(f64::NAN));
+        ys.push(nums[1].unwrap_or(f64::NAN));
+        lines.push(ln + 1);
         if xs.len() > MAX_TABLE_ROWS {
-            return Err(Error::TooLarge {
-                what: format!("rows of {path}"),
-                count: xs.len() as u128,
-                limit: MAX_TABLE_ROWS as u128,
-            });
+            break; // check_columns names the limit
+        }
+    }
+    check_columns(xs, ys, path, &|i| format!("line {}", lines[i]))
+}
+
+/// The checks every table passes, from a file or from arrays: at most
+/// [`MAX_TABLE_ROWS`] and at least 3 rows, finite values, the first column
+/// strictly increasing from 0, the second nondecreasing (returned shifted so that
+/// it starts at 0); `label(i)` names row `i` in messages.
+pub fn check_columns(
+    xs: Vec<f64>,
+    ys: Vec<f64>,
+    source: &str,
+    label: &dyn Fn(usize) -> String,
+) -> Result<(Vec<f64>, Vec<f64>)> {
+    let bad = |reason: String| Error::Parse { context: source.into(), reason };
+    if xs.len() != ys.len() {
+        return Err(bad(format!("the columns differ in length ({} and {})", xs.len(), ys.len())));
+    }
+    if xs.len() > MAX_TABLE_ROWS {
+        return Err(Error::TooLarge {
+            what: format!("rows of {source}"),
+            count: xs.len() as u128,
+            limit: MAX_TABLE_ROWS as u128,
+        });
+    }
+    for i in 0..xs.len() {
+        if !xs[i].is_finite() || !ys[i].is_finite() {
+            return Err(bad(format!("{}: values must be finite", label(i))));
+        }
+        if i > 0 && xs[i] <= xs[i - 1] {
+            return Err(bad(format!("{}: the first column must increase strictly", label(i))));
+        }
+        if i > 0 && ys[i] < ys[i - 1] {
+            return Err(bad(format!("{}: the profile must not decrease (monotone profiles only)", label(i))));
         }
     }
     if xs.len() < 3 {
@@ -276,6 +296,27 @@ impl Table {
     /// Read and transform a file: `profile` (true: `f(r)`, MDR-transformed) or `g(x)`.
     pub fn load(path: &str, profile: bool) -> Result<Table> {
         let (x, v) = read_table(path)?;
+        Self::from_checked(x, v, profile, path)
+    }
+
+    /// From arrays (no file): `r, f` of an axisymmetric profile (`profile`) or
+    /// `x, g` of an equivalent profile, checked as a file's columns are; `name`
+    /// appears in messages.
+    ///
+    /// ```
+    /// use fricosc_core::profile::Table;
+    /// // A paraboloid f = r^2/2 (R = 1) at mean indentation 1e-4: Hertz.
+    /// let r: Vec<f64> = (0..=200).map(|i| i as f64 * 0.005).collect();
+    /// let f: Vec<f64> = r.iter().map(|r| r * r / 2.0).collect();
+    /// let t = Table::from_columns(r, f, true, "paraboloid").unwrap().at(1e-4).unwrap();
+    /// assert!((t.contact_radius - 1e-2).abs() < 1e-12); // g = x^2/R: x_c = sqrt(R u0)
+    /// ```
+    pub fn from_columns(x: Vec<f64>, v: Vec<f64>, profile: bool, name: &str) -> Result<Table> {
+        let (x, v) = check_columns(x, v, name, &|i| format!("row {i}"))?;
+        Self::from_checked(x, v, profile, name)
+    }
+
+    fn from_checked(x: Vec<f64>, v: Vec<f64>, profile: bool, path: &str) -> Result<Table> {
         let bad = |reason: String| Error::Parse { context: path.into(), reason };
         let (xmax, vmax) = (x[x.len() - 1], v[v.len() - 1]);
         if vmax <= 0.0 {
