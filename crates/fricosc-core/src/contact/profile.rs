@@ -7,8 +7,9 @@
 //! (three-point slopes with Hyman's limiter): `C^1`, shape-preserving, exact for
 //! quadratics, cubic on each interval. For `profile:`, `g` is computed at the table's radii by the MDR
 //! transform `g(x) = x int_0^x f'(r)/sqrt(x^2 - r^2) dr = x int_0^(pi/2) f'(x sin t) dt`
-//! of the interpolated `f` (Gauss-Legendre on each interval's image in `t`),
-//! and interpolated again. The error interpolation adds is estimated by
+//! of the interpolated `f` (in closed form per interval, summed over the
+//! intervals hierarchically in `O(n log n)`: [`mdr_transform_knots`]), and
+//! interpolated again. The error interpolation adds is estimated by
 //! computing `mu` a second time on the table with every other point removed:
 //! PCHIP converges like `h^3`, so the difference overestimates the error of the
 //! full table; it is reported as `interpolation_error`.
@@ -25,7 +26,7 @@ use crate::error::{Error, Result};
 use crate::flat::Ratio;
 use crate::quad;
 use crate::root;
-use rayon::prelude::*;
+use crate::special;
 use std::f64::consts::PI;
 
 /// Monotone piecewise-cubic Hermite interpolant: three-point slopes (exact for
@@ -99,26 +100,23 @@ impl Pchip {
         let h = self.x[i + 1] - self.x[i];
         let u = (t - self.x[i]) / h;
         let (y0, y1, d0, d1) = (self.y[i], self.y[i + 1], self.d[i] * h, self.d[i + 1] * h);
-        let (u2, u3) = (u * u, u * u * u);
-        let v =
-            (2.0 * u3 - 3.0 * u2 + 1.0) * y0 + (u3 - 2.0 * u2 + u) * d0 + (-2.0 * u3 + 3.0 * u2) * y1 + (u3 - u2) * d1;
-        let dv = (6.0 * u2 - 6.0 * u) * y0
-            + (3.0 * u2 - 4.0 * u + 1.0) * d0
-            + (-6.0 * u2 + 6.0 * u) * y1
-            + (3.0 * u2 - 2.0 * u) * d1;
+        // In the difference form (`y1 - y0` once), so that a table with a large
+        // offset loses nothing to cancellation between the value basis functions.
+        let (u2, u3, dy) = (u * u, u * u * u, y1 - y0);
+        let v = y0 + u2 * (3.0 - 2.0 * u) * dy + (u3 - 2.0 * u2 + u) * d0 + (u3 - u2) * d1;
+        let dv = 6.0 * u * (1.0 - u) * dy + (3.0 * u2 - 4.0 * u + 1.0) * d0 + (3.0 * u2 - 2.0 * u) * d1;
         (v, dv / h)
     }
 
-    /// The derivative on interval `i` as a quadratic in `r`: `(c0, c1, c2)` with
-    /// `f'(r) = c0 + c1 r + c2 r^2` (from the Hermite form in `rho = r - x_i`:
-    /// `d0 + a1 rho + a2 rho^2`).
-    fn derivative_quadratic(&self, i: usize) -> (f64, f64, f64) {
-        let (x0, h) = (self.x[i], self.x[i + 1] - self.x[i]);
+    /// The derivative on interval `i` about its left end: `(d_i, a1, a2)` with
+    /// `f'(x_i + rho) = d_i + a1 rho + a2 rho^2`.
+    fn derivative_about_left(&self, i: usize) -> (f64, f64, f64) {
+        let h = self.x[i + 1] - self.x[i];
         let (d0, d1) = (self.d[i], self.d[i + 1]);
         let del = (self.y[i + 1] - self.y[i]) / h;
         let a1 = (6.0 * del - 4.0 * d0 - 2.0 * d1) / h;
         let a2 = (-6.0 * del + 3.0 * d0 + 3.0 * d1) / (h * h);
-        (d0 - a1 * x0 + a2 * x0 * x0, a1 - 2.0 * a2 * x0, a2)
+        (d0, a1, a2)
     }
 
     /// The `t` with value `v` (the interpolant is nondecreasing; `v` within its range).
@@ -144,7 +142,7 @@ const PASS_ORDERS: (usize, usize) = (16, 32);
 /// Most rows of a tabulated profile: the MDR transform costs about 40 ns per
 /// pair of rows, on both cores (quadratic: 16,000 rows take 3 s), so 20,000 rows
 /// take about 5 s.
-pub const MAX_TABLE_ROWS: usize = 20_000;
+pub const MAX_TABLE_ROWS: usize = 1_000_000;
 
 /// Read a two-column table (`r,f` or `x,g`): comma, semicolon or blank
 /// separated, at most one header line (before the first row), `#` comments. Checks: at least 3 rows,
@@ -222,42 +220,164 @@ pub fn check_columns(
     Ok((xs, ys.iter().map(|y| y - y0).collect()))
 }
 
-/// `g(x) = x int_0^x f'(r) / sqrt(x^2 - r^2) dr` for the interpolated profile `f`, at `x`.
-///
-/// On each interval `f'` of the cubic interpolant is a quadratic
-/// `c0 + c1 r + c2 r^2`, and with `A = arcsin(r/x)`, `Q = sqrt(x^2 - r^2)`:
-/// `int dr/Q = A`, `int r dr/Q = -Q`, `int r^2 dr/Q = (x^2 A - r Q)/2`, so every
-/// interval is integrated exactly (the square-root end at `r = x` included), with
-/// two transcendental calls per knot below `x`. The whole transform is still
-/// quadratic in the rows (each `x` sees every knot below it): about 40 ns per pair.
+/// `g(x) = x int_0^x f'(r) / sqrt(x^2 - r^2) dr` for the interpolated profile `f`, at `x`:
+/// `x` times the sum of [`interval_integrals`] over the table below `x`.
+/// Linear in the rows; [`mdr_transform_knots`] gives all knots at once.
 pub fn mdr_transform(f: &Pchip, x: f64) -> f64 {
     if x <= 0.0 {
         return 0.0;
     }
-    let xx = x * x;
-    // F(r) for the quadratic c of one interval.
-    let prim = |c: (f64, f64, f64), r: f64, a: f64, q: f64| c.0 * a - c.1 * q + 0.5 * c.2 * (xx * a - r * q);
-    let ends = |r: f64| {
-        if r >= x {
-            (PI / 2.0, 0.0)
-        } else {
-            ((r / x).asin(), ((x - r) * (x + r)).sqrt())
-        }
-    };
+    x * interval_integrals(f, 0, f.x.len() - 1, x)
+}
+
+/// `sum_(lo <= i < hi) int_(r_i)^(min(r_(i+1), x)) f'(r) / sqrt(x^2 - r^2) dr`
+/// over the intervals `i` of `f` (those starting at or above `x` contribute nothing).
+///
+/// # Derivation
+/// With `r = x sin t` the integral over one interval becomes `int f'(x sin t) dt`
+/// over `[t0, t0 + D]`, and with the interval's derivative written about its
+/// left end, `f' = d0 + a1 rho + a2 rho^2`, `rho = x (sin t - sin t0)`, it is
+/// `d0 J0 + a1 J1 + a2 J2` with (`s = sin t0 = r0/x`, `c = cos t0 = Q0/x`,
+/// `Q = sqrt(x^2 - r^2)`, `h = sin^2(D/2)`, `S(y) = y - sin y`,
+/// `W(y) = int_0^y (1 - cos)^2`):
+/// - `J0 = D`,
+/// - `J1 = x (2 c h - s S(D))`,
+/// - `J2 = x^2 (s^2 W(D) - 4 s c h^2 + c^2 S(2D)/4)`.
+///
+/// `D` comes from `sin D = (r1 - r0)(r1 + r0)/(r1 Q0 + r0 Q1)` and
+/// `cos D = (Q0 Q1 + r0 r1)/x^2` by `atan2` (sums of positive terms), and
+/// `h = sin^2 D / (2 (1 + cos D))`, so every moment keeps its relative accuracy,
+/// even for an interval far below `x` (where a difference of antiderivatives
+/// would cancel to `(h/x)^3` of its terms). Since `t1 <= pi/2`, `c >= sin D`,
+/// which bounds the cancellation in `J1` and `J2` to a small factor.
+pub fn interval_integrals(f: &Pchip, lo: usize, hi: usize, x: f64) -> f64 {
+    let q = |r: f64| if r >= x { 0.0 } else { ((x - r) * (x + r)).sqrt() };
     let mut sum = 0.0;
-    let (mut a0, mut q0) = (0.0, x);
-    for i in 0..f.x.len() - 1 {
-        let p = f.x[i];
-        if p >= x {
+    let mut q0 = q(f.x[lo]);
+    for i in lo..hi {
+        let r0 = f.x[i];
+        if r0 >= x {
             break;
         }
-        let q = f.x[i + 1].min(x);
-        let c = f.derivative_quadratic(i);
-        let (a1, q1) = ends(q);
-        sum += prim(c, q, a1, q1) - prim(c, p, a0, q0);
-        (a0, q0) = (a1, q1);
+        let r1 = f.x[i + 1].min(x);
+        let q1 = q(r1);
+        let sin_d = (r1 - r0) * (r1 + r0) / (r1 * q0 + r0 * q1);
+        let cos_d = (q0 * q1 + r0 * r1) / (x * x);
+        // atan2 keeps D accurate up to pi/2; for small D the series is cheaper.
+        let d = if sin_d < special::ASIN_SERIES_LIMIT { special::asin_small(sin_d) } else { sin_d.atan2(cos_d) };
+        let h = sin_d * sin_d / (2.0 * (1.0 + cos_d));
+        let (sn, cs) = (r0 / x, q0 / x);
+        let j1 = x * (2.0 * cs * h - sn * special::x_minus_sin(d));
+        let j2 = x
+            * x
+            * (sn * sn * special::versin_sq_integral(d) - 4.0 * sn * cs * h * h
+                + 0.25 * cs * cs * special::x_minus_sin(2.0 * d));
+        let (d0, a1, a2) = f.derivative_about_left(i);
+        sum += d0 * d + a1 * j1 + a2 * j2;
+        q0 = q1;
     }
-    x * sum
+    sum
+}
+
+/// Chebyshev points per target block in [`mdr_transform_knots`]: the far sum is
+/// analytic on the block with its nearest branch point (`x = r_k`) three
+/// half-widths from the centre, so interpolation converges like
+/// `rho^-n`, `rho = 3 + sqrt 8 = 5.83`; 24 points give `5.83^-23 = 2e-18` of
+/// the terms' sizes, below their rounding.
+const FAR_POINTS: usize = 24;
+/// Target blocks of at most this many knots sum their near sources directly.
+const LEAF_TARGETS: usize = 32;
+
+/// The MDR transform [`mdr_transform`] at every knot of `f`, in `O(n log n)`
+/// operations instead of `O(n^2)`.
+///
+/// # Derivation
+/// Write `P_i` for the antiderivative of `f_i'(r)/sqrt(x^2 - r^2)` on interval
+/// `i` (built from `A = asin(r/x)`, `Q = sqrt(x^2 - r^2)`, see [`mdr_transform`]).
+/// Summing `P_i(r_(i+1)) - P_i(r_i)` over the intervals below a knot `x = r_j`
+/// and regrouping by knot gives
+/// `g(r_j)/r_j = a1_0 r_j + sum_(k=1)^(j-1) K_k(r_j) + (pi/2)(d_j - b1 r_j + 3/2 b2 r_j^2)`,
+/// where the first term is `-P_0(0)`, the last `P_(j-1)(r_j)` (with `b1`, `b2`
+/// the left interval's derivative `d_j + b1 rho + b2 rho^2` about its right end),
+/// and each interior knot contributes the jump of the derivative's quadratic:
+/// with `f'_(k-1) - f'_k = e1 rho + e2 rho^2` about `r_k` (no constant term, as
+/// `f'` is continuous),
+/// `K_k(x) = e1 (-Q - r_k A) + e2 ((x^2/2 + r_k^2) A + 3/2 r_k Q)` at `r = r_k`.
+///
+/// The sum over `k` is split hierarchically: the knots are bisected into target
+/// blocks `[c, d]` of width `W`; the sources `r_k < c - W` not yet summed by a
+/// parent form a function of `x` analytic on the block, which is evaluated at
+/// [`FAR_POINTS`] Chebyshev points and interpolated (barycentric formula) at the
+/// block's knots. Each level costs `O(n)` kernel evaluations; blocks of at most
+/// [`LEAF_TARGETS`] knots sum the remaining near sources directly.
+pub fn mdr_transform_knots(f: &Pchip) -> Vec<f64> {
+    let r = &f.x;
+    let mut sums = vec![0.0; r.len()];
+    far_sums(f, 0, (0.0, r[r.len() - 1]), 0, &mut sums);
+    r.iter().zip(&sums).map(|(&x, &s)| x * s).collect()
+}
+
+/// `out[t] = sum_(lo <= i < first + t)` of the [`interval_integrals`] at knot
+/// `first + t`, for the knots in the block `[c, d]`, with the intervals below
+/// `lo` already summed by the caller.
+fn far_sums(f: &Pchip, first: usize, (c, d): (f64, f64), lo: usize, out: &mut [f64]) {
+    let (r, nt) = (&f.x, out.len());
+    if nt == 0 {
+        return;
+    }
+    let width = d - c;
+    // Intervals well separated from the block: right ends r_(i+1) < c - width.
+    let hi = r[1..].partition_point(|&x| x < c - width).max(lo).min(first);
+    let m = hi - lo;
+    if m > 0 {
+        if m * nt <= FAR_POINTS * (m + nt) {
+            for (t, o) in out.iter_mut().enumerate() {
+                *o += interval_integrals(f, lo, hi, r[first + t]);
+            }
+        } else {
+            let cheb = chebyshev_points(c, d);
+            let vals: Vec<f64> = cheb.iter().map(|&x| interval_integrals(f, lo, hi, x)).collect();
+            for (t, o) in out.iter_mut().enumerate() {
+                *o += barycentric(&cheb, &vals, r[first + t]);
+            }
+        }
+    }
+    if nt <= LEAF_TARGETS || width <= 0.0 {
+        for (t, o) in out.iter_mut().enumerate() {
+            *o += interval_integrals(f, hi, first + t, r[first + t]);
+        }
+        return;
+    }
+    let mid = 0.5 * (c + d);
+    let split = r[first..first + nt].partition_point(|&x| x < mid);
+    let (left, right) = out.split_at_mut(split);
+    rayon::join(|| far_sums(f, first, (c, mid), hi, left), || far_sums(f, first + split, (mid, d), hi, right));
+}
+
+/// Chebyshev points of the second kind on `[c, d]`, ends included.
+fn chebyshev_points(c: f64, d: f64) -> [f64; FAR_POINTS] {
+    let (mid, half) = (0.5 * (c + d), 0.5 * (d - c));
+    std::array::from_fn(|i| mid + half * (PI * i as f64 / (FAR_POINTS - 1) as f64).cos())
+}
+
+/// Barycentric interpolation at Chebyshev points of the second kind (weights
+/// `(-1)^i`, halved at the ends): forward stable (Higham 2004).
+fn barycentric(nodes: &[f64; FAR_POINTS], vals: &[f64], x: f64) -> f64 {
+    let (mut num, mut den) = (0.0, 0.0);
+    for (i, (&xi, &fi)) in nodes.iter().zip(vals).enumerate() {
+        let diff = x - xi;
+        if diff == 0.0 {
+            return fi;
+        }
+        let mut w = if i % 2 == 0 { 1.0 } else { -1.0 };
+        if i == 0 || i == FAR_POINTS - 1 {
+            w *= 0.5;
+        }
+        let t = w / diff;
+        num += t * fi;
+        den += t;
+    }
+    num / den
 }
 
 /// MDR normal force at indentation `d` of the equivalent profile `g`, in units
@@ -343,8 +463,7 @@ impl Table {
                 return Ok(Pchip::new(xs, vs));
             }
             let f = Pchip::new(xs.clone(), vs);
-            // Each knot's transform is independent: in parallel (rayon).
-            let gv: Vec<f64> = xs.par_iter().map(|&xi| mdr_transform(&f, xi)).collect();
+            let gv = mdr_transform_knots(&f);
             // A profile with a steep step has a transform that falls again
             // (g ~ x / sqrt(x^2 - r0^2) after a step at r0): not a simple contact.
             if let Some(i) = (1..gv.len()).find(|&i| gv[i] < gv[i - 1]) {

@@ -36,8 +36,47 @@ const C_COEF: [f64; 14] = alternating_inverse_factorials::<14>(4);
 /// Below this `|x|` the Taylor series is used (its terms are all below `2^(2k)/(2k)!`).
 const SERIES_LIMIT: f64 = 2.0;
 
+/// Below this `x^2` the first [`SHORT_TERMS`] Taylor coefficients suffice:
+/// every series here has terms below `x^(2k)/(2k+1)!` relative to its first
+/// (times at most `4^k`), and at `k = 8`, `x = 0.4` that is under `1e-18`.
+const SHORT_SERIES_SQ: f64 = 0.16;
+/// Terms used below [`SHORT_SERIES_SQ`].
+const SHORT_TERMS: usize = 8;
+
+/// The power series with coefficients `coef` in `y = x^2`, by Horner's rule,
+/// shortened for small `y`.
 fn horner(coef: &[f64], y: f64) -> f64 {
+    let coef = if y < SHORT_SERIES_SQ { &coef[..SHORT_TERMS.min(coef.len())] } else { coef };
     coef.iter().rev().fold(0.0, |acc, &c| acc * y + c)
+}
+
+/// Taylor coefficients of `(asin s - s)/s^3` in powers of `s^2`:
+/// `(2k)! / (4^k (k!)^2 (2k + 1))` for `k = 1, 2, ...`.
+const ASIN_COEF: [f64; 9] = {
+    let mut c = [0.0; 9];
+    let mut binom = 1.0; // (2k)! / (4^k (k!)^2)
+    let mut k = 1;
+    while k <= 9 {
+        binom *= (2 * k - 1) as f64 / (2 * k) as f64;
+        c[k - 1] = binom / (2 * k + 1) as f64;
+        k += 1;
+    }
+    c
+};
+
+/// Below this `s` [`asin_small`] uses its series: the first omitted term is
+/// below `0.1^20 / 20`, relative.
+pub const ASIN_SERIES_LIMIT: f64 = 0.1;
+
+/// `asin s` for `0 <= s < ASIN_SERIES_LIMIT` by its Taylor series (cheaper than
+/// the library call, to the last bit), `s.asin()` above.
+pub fn asin_small(s: f64) -> f64 {
+    if s < ASIN_SERIES_LIMIT {
+        let y = s * s;
+        s + s * y * ASIN_COEF.iter().rev().fold(0.0, |acc, &c| acc * y + c)
+    } else {
+        s.asin()
+    }
 }
 
 /// `S(x) = x - sin x` with full relative accuracy, odd in `x`, about `x^3/6` near 0.
@@ -58,6 +97,32 @@ pub fn half_sq_minus_versin(x: f64) -> f64 {
     } else {
         0.5 * x * x - 1.0 + x.cos()
     }
+}
+
+/// Taylor coefficients of `W(x) / x^5` (below) in powers of `x^2`:
+/// `(-1)^k (4^k - 4) / (2 (2k+1)!)` for `k = 2, 3, ...`.
+const W_COEF: [f64; 16] = {
+    let mut c = [0.0; 16];
+    let (mut fact, mut pow4) = (120.0, 16.0); // 5!, 4^2
+    let mut j = 0;
+    while j < 16 {
+        let k = j + 2;
+        let t = (pow4 - 4.0) / (2.0 * fact);
+        c[j] = if k % 2 == 0 { t } else { -t };
+        fact *= ((2 * k + 2) * (2 * k + 3)) as f64;
+        pow4 *= 4.0;
+        j += 1;
+    }
+    c
+};
+
+/// `W(x) = int_0^x (1 - cos t)^2 dt = (3x - 4 sin x + sin(2x)/2) / 2` with full
+/// relative accuracy for `0 <= x <= pi/2` (about `x^5/20` near 0, where the
+/// direct formula loses everything): the Taylor series, whose largest term at
+/// `x = pi/2` is about 4 times the value.
+pub fn versin_sq_integral(x: f64) -> f64 {
+    let y = x * x;
+    y * y * x * horner(&W_COEF, y)
 }
 
 /// `x y` as an unevaluated sum `hi + lo` (exact, by one fused multiply-add).
@@ -132,6 +197,33 @@ mod tests {
         for (a, v, exact) in cases {
             let got = one_minus_a_cos_asin(a, v);
             assert!(((got - exact) / exact).abs() < 1e-14, "a={a} v={v}: {got:e} vs {exact:e}");
+        }
+    }
+
+    /// `int_0^x (1 - cos t)^2 dt` against 40-digit values (mpmath), from where
+    /// the direct formula loses every digit to `pi/2`.
+    #[test]
+    fn versin_sq_integral_agrees_with_high_precision_values() {
+        let cases = [
+            (1e-5, 4.999999999940476e-27),
+            (0.001, 4.999999404761939e-17),
+            (0.3, 0.00012020502607968909),
+            (1.0, 0.04438238709062741),
+            (std::f64::consts::FRAC_PI_2, 0.3561944901923449),
+        ];
+        for (x, exact) in cases {
+            let got = versin_sq_integral(x);
+            assert!(((got - exact) / exact).abs() < 4e-15, "W({x}) = {got:e}, exact {exact:e}");
+        }
+    }
+
+    /// The arcsine series against 40-digit values (mpmath), up to its limit.
+    #[test]
+    fn asin_series_agrees_with_high_precision_values() {
+        let cases = [(1e-9, 1e-9), (0.01, 0.010000166674167113), (0.0999999, 0.10016732065777878)];
+        for (s, exact) in cases {
+            let got = asin_small(s);
+            assert!(((got - exact) / exact).abs() < 2.3e-16, "asin({s}) = {got:e}, exact {exact:e}");
         }
     }
 
