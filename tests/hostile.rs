@@ -320,3 +320,22 @@ fn nothing_on_stdout_when_the_exit_code_is_2() {
     let out = bin().args(["figures", "--out", file.to_str().unwrap()]).output().unwrap();
     assert!(String::from_utf8_lossy(&out.stderr).contains("exists and is not a directory"));
 }
+
+/// A profile one row past the documented limit is refused as it is read, before
+/// any transform work: the limit is enforced, and quickly (a transform of
+/// 1,000,001 rows would take half a minute).
+#[test]
+fn a_profile_past_the_row_limit_is_refused_before_the_transform() {
+    use std::fmt::Write as _;
+    let rows = fricosc::profile::MAX_TABLE_ROWS + 1;
+    let mut text = String::with_capacity(rows * 12);
+    for i in 0..rows {
+        let _ = writeln!(text, "{i},{i}");
+    }
+    let path = std::env::temp_dir().join(format!("fricosc-rows-{}.csv", std::process::id()));
+    std::fs::write(&path, text).unwrap();
+    let shape = format!("profile:{}@1", path.display());
+    let out = bin().args(["point", "--shape", &shape, "--vbar", "0.3", "--amp", "0.5"]).output().unwrap();
+    let _ = std::fs::remove_file(&path);
+    refused(&out, &format!("is more than the limit of {}", fricosc::profile::MAX_TABLE_ROWS));
+}
