@@ -69,7 +69,7 @@ pub fn run<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Resul
         let shape = match index.get(spec.as_ref()) {
             Some(&k) => k,
             None => {
-                let parsed = Shape::parse(&spec).map_err(|e| row_err(e.to_string()))?;
+                let parsed = crate::input::parse_shape(&spec).map_err(|e| row_err(e.to_string()))?;
                 if let Some(st) = stepping {
                     st.check(&parsed).map_err(|e| row_err(e.to_string()))?;
                 }

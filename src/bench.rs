@@ -149,7 +149,7 @@ pub fn run(quick: bool) -> Report {
         };
         let refv: f64 = reference.parse().unwrap_or(f64::NAN);
         cases.push(Case { name: name.into(), shape: shape_name.into(), vbar, amp, reference: reference.clone() });
-        let shape = match Shape::parse(shape_name) {
+        let shape = match crate::input::parse_shape(shape_name) {
             Ok(s) => s,
             Err(e) => {
                 failures.push(format!("{name}: {e}"));

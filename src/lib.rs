@@ -13,7 +13,7 @@
 #![warn(missing_docs)]
 
 pub use fricosc_core::{
-    contact, error, flat, input, mdr, model, numerics, peers, profile, quad, ratio, root, seed, shape, special, spring,
+    contact, error, flat, mdr, model, numerics, peers, profile, quad, ratio, root, seed, shape, special, spring,
     stepper, Error, Result,
 };
 
@@ -24,6 +24,7 @@ pub mod export;
 pub mod figures;
 pub mod grid;
 pub mod history;
+pub mod input;
 pub mod output;
 pub mod plot;
 pub mod rows;

@@ -350,7 +350,8 @@ fn check(s: &Scene, source: &str) -> Result<Checked> {
         Indenter::Profile { file } => {
             let dir = std::path::Path::new(source).parent().unwrap_or(std::path::Path::new(""));
             let path = dir.join(file).to_string_lossy().into_owned();
-            let table = crate::profile::Table::load(&path, true)?;
+            let text = crate::input::read_capped(&path, crate::input::MAX_SMALL_BYTES)?;
+            let table = crate::profile::Table::parse(&text, &path, true)?;
             Some((path, table))
         }
         _ => None,

@@ -311,7 +311,7 @@ fn one_value_per_input() {
         let batch = format!(r#"[{{"shape":"{shape}","vbar":{vbar},"amp":{amp}}}]"#);
         let b = json(&fricosc(&["batch", "-"], Some(&batch)));
         let lib = fricosc::shape::evaluate(
-            &fricosc::shape::Shape::parse(shape).unwrap(),
+            &fricosc::input::parse_shape(shape).unwrap(),
             vbar.parse().unwrap(),
             amp.parse().unwrap(),
         )

@@ -54,7 +54,7 @@ fn agrees_with_the_tabulated_profile_of_the_same_body() {
         .collect();
     let file = dir.join("worn.csv");
     std::fs::write(&file, format!("r,f\n{rows}")).unwrap();
-    let table = Shape::parse(&format!("profile:{}@{u0:?}", file.display())).unwrap();
+    let table = fricosc::input::parse_shape(&format!("profile:{}@{u0:?}", file.display())).unwrap();
     for (v, amp) in [(0.3, 0.4), (0.1, 0.8), (0.5, 1.5)] {
         let t = evaluate(&table, v, amp).unwrap();
         let (m, est) = mu("flat-tip:0.5", v, amp);
@@ -69,7 +69,8 @@ fn agrees_with_the_tabulated_profile_of_the_same_body() {
         assert!(err < 2e-5, "v={v} amp={amp}: {err:e}");
     }
     // The transform itself: g(x) = x sqrt(x^2 - a^2)/R at points of the table.
-    let (x, f) = fricosc::profile::read_table(file.to_str().unwrap()).unwrap();
+    let text = std::fs::read_to_string(&file).unwrap();
+    let (x, f) = fricosc::profile::parse_table(&text, "flat tip").unwrap();
     let pchip = fricosc::profile::Pchip::new(x, f);
     for x in [0.08, 0.1, 0.2, 0.3] {
         let g = fricosc::profile::mdr_transform(&pchip, x);
@@ -92,4 +93,18 @@ fn the_error_estimate_bounds_the_error_at_every_tolerance() {
     }
     assert!(Shape::parse("flat-tip:1").is_err() && Shape::parse("flat-tip:-0.1").is_err());
     assert_eq!(Shape::parse("flat-tip:0.25").unwrap().name(), "flat-tip:0.25");
+}
+
+/// At a subnormal amplitude (the spring coordinate `(1 - G)/amp` overflows) the
+/// reduction is the small-amplitude slope times the amplitude, as at 1e-200:
+/// an internal error ("mean normal force NaN") before.
+#[test]
+fn subnormal_amplitude_gives_the_linear_reduction() {
+    let shape = Shape::parse("flat-tip:0.5").unwrap();
+    let slope = |a: f64| evaluate(&shape, 0.3, a).unwrap().ratio.reduction / a;
+    let (below, small) = (slope(1e-305), slope(1e-200));
+    assert!(((below - small) / small).abs() < 1e-12, "{below} vs {small}");
+    // 2.1e-314 is subnormal: the reduction carries about 4e-10 relative.
+    let tiny = slope(2.1219957905e-314);
+    assert!(((tiny - small) / small).abs() < 1e-9, "{tiny} vs {small}");
 }

@@ -10,6 +10,8 @@ fn any_f64() -> impl Strategy<Value = f64> {
         Just(f64::INFINITY),
         Just(-0.0),
         Just(1e-300),
+        Just(5e-324),
+        Just(2.1219957905e-314),
         Just(1e300),
         Just(1.0),
         Just(1.0 - f64::EPSILON),
@@ -44,7 +46,7 @@ proptest! {
 
     #[test]
     fn shape_specs_never_panic(text in ".{0,40}") {
-        let _ = Shape::parse(&text);
+        let _ = fricosc::input::parse_shape(&text);
     }
 
     #[test]
@@ -53,7 +55,7 @@ proptest! {
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("t.csv");
         std::fs::write(&path, &text).unwrap();
-        if let Ok(shape) = Shape::parse(&format!("profile:{}@1", path.display())) {
+        if let Ok(shape) = fricosc::input::parse_shape(&format!("profile:{}@1", path.display())) {
             match evaluate(&shape, v, a) {
                 Ok(e) => prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio)),
                 // Bad input or a table that cannot carry the contact, never an internal failure.
@@ -62,13 +64,58 @@ proptest! {
         }
     }
 
+    /// Mirror of `fuzz/fuzz_targets/profile_columns.rs`, on nondecreasing columns
+    /// (the ones that pass the checks and reach the transform) of up to 300 rows.
     #[test]
-    fn solvers_never_panic_and_stay_in_range(v in any_f64(), a in any_f64(), k in 0usize..5, n in any_f64()) {
+    fn profile_columns_never_panic(
+        steps in prop::collection::vec((1e-6f64..1.0, 0.0f64..2.0), 2..300),
+        profile in any::<bool>(), u0 in any_f64(), v in any_f64(), a in any_f64(),
+    ) {
+        let (mut x, mut f) = (vec![0.0], vec![0.0]);
+        for (dx, df) in steps {
+            x.push(x[x.len() - 1] + dx);
+            f.push(f[f.len() - 1] + df * df * df);
+        }
+        if let Ok(table) = fricosc::profile::Table::from_columns(x, f, profile, "mirror") {
+            if let Ok(contact) = table.at(u0) {
+                match fricosc::profile::evaluate(&contact, v, a) {
+                    Ok(e) => prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio)),
+                    Err(e) => prop_assert!(!matches!(e, fricosc::Error::Internal { .. }), "{e}"),
+                }
+            }
+        }
+    }
+
+    /// The hierarchical transform at the knots equals the direct sum on random
+    /// rough tables (up to 600 rows, so the far sums are interpolated).
+    #[test]
+    fn hierarchical_transform_equals_direct(steps in prop::collection::vec((1e-4f64..1.0, 0.0f64..2.0), 40..600)) {
+        let (mut x, mut f) = (vec![0.0], vec![0.0]);
+        for (dx, df) in steps {
+            x.push(x[x.len() - 1] + dx);
+            f.push(f[f.len() - 1] + df * df * df);
+        }
+        let p = fricosc::profile::Pchip::new(x, f);
+        let fast = fricosc::profile::mdr_transform_knots(&p);
+        for (i, &xi) in p.knots().iter().enumerate().skip(1) {
+            let direct = fricosc::profile::mdr_transform(&p, xi);
+            let scale = direct.abs().max(1e-300);
+            prop_assert!((fast[i] - direct).abs() <= 2e-14 * scale, "knot {i}: {} vs {direct}", fast[i]);
+        }
+    }
+
+    #[test]
+    fn solvers_never_panic_and_stay_in_range(v in any_f64(), a in any_f64(), k in 0usize..6, n in any_f64()) {
         let shape = match k {
             0 => Shape::Flat,
             1 => Shape::Power(2.0),
             2 => Shape::Power(1.0),
             3 => Shape::Power(0.7),
+            // A worn tip (flat-tip:E, E in [0, 1)), through the registry's parser.
+            4 => match Shape::parse(&format!("flat-tip:{:?}", n.fract().abs())) {
+                Ok(s) => s,
+                Err(_) => return Ok(()),
+            },
             // The exponent through the parser, as users give it (the fuzz target found power:6.5e91).
             _ => match Shape::parse(&format!("power:{n:?}")) {
                 Ok(s) => s,

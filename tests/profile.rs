@@ -1,7 +1,7 @@
 //! Tabulated shapes: the MDR transform (Hertz, Love) and tabulated profiles
 //! against the power laws they sample.
 use fricosc::profile::{mdr_transform, normal_force, Pchip};
-use fricosc::shape::{evaluate, Shape};
+use fricosc::shape::evaluate;
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
@@ -62,8 +62,8 @@ fn a_tabulated_sphere_reproduces_parabolic_within_the_interpolation_error() {
     let (radius, u0) = (1.0f64, 1e-8f64);
     let rmax = 4.0 * (radius * u0).sqrt();
     let path = write_table("sphere.csv", grid(300, rmax).map(|r| (r, radius - (radius * radius - r * r).sqrt())));
-    let shape = Shape::parse(&format!("profile:{}@{u0:?}", path.display())).unwrap();
-    let parabolic = Shape::parse("parabolic").unwrap();
+    let shape = fricosc::input::parse_shape(&format!("profile:{}@{u0:?}", path.display())).unwrap();
+    let parabolic = fricosc::input::parse_shape("parabolic").unwrap();
     for (v, a) in [(0.3, 0.4), (0.6, 1.0), (0.2, 2.0), (0.9, 0.7)] {
         let t = evaluate(&shape, v, a).unwrap();
         let p = evaluate(&parabolic, v, a).unwrap();
@@ -78,8 +78,8 @@ fn a_tabulated_sphere_reproduces_parabolic_within_the_interpolation_error() {
 #[test]
 fn a_tabulated_equivalent_profile_reproduces_the_power_law() {
     let path = write_table("g.csv", grid(200, 2.0).map(|x| (x, x.powf(2.5))));
-    let shape = Shape::parse(&format!("gx:{}@1", path.display())).unwrap();
-    let power = Shape::parse("power:2.5").unwrap();
+    let shape = fricosc::input::parse_shape(&format!("gx:{}@1", path.display())).unwrap();
+    let power = fricosc::input::parse_shape("power:2.5").unwrap();
     for (v, a) in [(0.3, 0.4), (0.5, 1.5)] {
         let t = evaluate(&shape, v, a).unwrap();
         let p = evaluate(&power, v, a).unwrap();
@@ -103,13 +103,13 @@ fn bad_tables_are_errors() {
         std::fs::create_dir_all(&dir).unwrap();
         let p = dir.join(name);
         std::fs::write(&p, text).unwrap();
-        let e = Shape::parse(&format!("profile:{}@1", p.display())).unwrap_err().to_string();
+        let e = fricosc::input::parse_shape(&format!("profile:{}@1", p.display())).unwrap_err().to_string();
         assert!(e.contains(frag), "{name}: {e}");
     }
-    assert!(Shape::parse("profile:/nonexistent.csv@1").unwrap_err().to_string().contains("cannot read"));
-    assert!(Shape::parse("profile:/tmp").unwrap_err().to_string().contains("mean indentation"));
-    assert!(Shape::parse("profile:/@1").unwrap_err().to_string().contains("cannot read"));
-    assert!(Shape::parse("gx:x.csv@-1").is_err());
+    assert!(fricosc::input::parse_shape("profile:/nonexistent.csv@1").unwrap_err().to_string().contains("cannot read"));
+    assert!(fricosc::input::parse_shape("profile:/tmp").unwrap_err().to_string().contains("mean indentation"));
+    assert!(fricosc::input::parse_shape("profile:/@1").unwrap_err().to_string().contains("cannot read"));
+    assert!(fricosc::input::parse_shape("gx:x.csv@-1").is_err());
 }
 
 #[test]
@@ -138,7 +138,7 @@ fn tabulated_shapes_at_extreme_scales_are_right_or_refused() {
         std::fs::write(&p, format!("x,g\n{text}")).unwrap();
         p.to_str().unwrap().to_string()
     };
-    let eval = |spec: &str, v: f64, a: f64| fricosc::shape::evaluate(&fricosc::shape::Shape::parse(spec)?, v, a);
+    let eval = |spec: &str, v: f64, a: f64| fricosc::shape::evaluate(&fricosc::input::parse_shape(spec)?, v, a);
     let parabolic = fricosc::mdr::power_law(2.0, 0.3, 0.4, fricosc::mdr::DEFAULT_TOL, false).unwrap().ratio.mu_ratio;
     // g = x^2 on 0..2 (41 rows) at several scales of x and g.
     for (sx, sg) in [(1.0, 1.0), (1e-150, 1e-300), (1e150, 1e300), (1e-300, 1e-300)] {
@@ -171,7 +171,7 @@ fn a_non_monotone_transform_is_refused() {
     std::fs::create_dir_all(&dir).unwrap();
     let p = dir.join("step.csv");
     std::fs::write(&p, "r,f\n0,0\n0.5,0\n0.9,0\n0.95,0.5\n1,1\n2,1\n").unwrap();
-    let e = fricosc::shape::Shape::parse(&format!("profile:{}@0.9", p.display())).unwrap_err().to_string();
+    let e = fricosc::input::parse_shape(&format!("profile:{}@0.9", p.display())).unwrap_err().to_string();
     assert!(e.contains("decreases after x") && e.contains("largest g"), "{e}");
 }
 
@@ -182,7 +182,8 @@ fn only_one_header_line() {
     std::fs::create_dir_all(&dir).unwrap();
     let p = dir.join("two.csv");
     std::fs::write(&p, "r,f\nradius,height\n0,0\n1,1\n2,4\n").unwrap();
-    let e = fricosc::profile::read_table(p.to_str().unwrap()).unwrap_err().to_string();
+    let text = std::fs::read_to_string(&p).unwrap();
+    let e = fricosc::profile::parse_table(&text, p.to_str().unwrap()).unwrap_err().to_string();
     assert!(e.contains("line 2: expected two numbers"), "{e}");
 }
 
@@ -300,4 +301,25 @@ fn transform_of_a_rough_table_matches_forty_digit_values() {
             assert!(rel < 4e-15, "{how} g at knot {j}: {got:?}, exact {g:?} (relative {rel:e})");
         }
     }
+}
+
+/// At a subnormal amplitude the spring coordinate `(1 - G)/amp` overflows; the
+/// fuzzer found "mean normal force inf" there (an internal error). The reduction
+/// is linear in the amplitude at small amplitude, and matches the analytic
+/// paraboloid's slope for a tabulated `g = x^2`.
+#[test]
+fn tabulated_contact_at_subnormal_amplitude() {
+    let x: Vec<f64> = (0..=200).map(|i| 0.01 * i as f64).collect();
+    let g: Vec<f64> = x.iter().map(|x| x * x).collect();
+    let t = fricosc::profile::Table::from_columns(x, g, false, "square").unwrap().at(1.0).unwrap();
+    let slope = |a: f64| fricosc::profile::evaluate(&t, 0.3, a).unwrap().ratio.reduction / a;
+    let (below, small) = (slope(1e-305), slope(1e-200));
+    assert!(((below - small) / small).abs() < 1e-12, "{below} vs {small}");
+    // A subnormal reduction carries only its own bits: 1.3e-314 has an ulp of
+    // 4.9e-324, a relative 4e-10.
+    let tiny = slope(2.1219957905e-314);
+    assert!(((tiny - small) / small).abs() < 1e-9, "{tiny} vs {small}");
+    let analytic = fricosc::mdr::power_law(2.0, 0.3, 1e-200, fricosc::mdr::DEFAULT_TOL, false).unwrap().ratio.reduction;
+    let rel = (small - analytic / 1e-200).abs() / small;
+    assert!(rel < 1e-6, "tabulated slope {small} vs paraboloid {}: {rel:e}", analytic / 1e-200);
 }

@@ -6,10 +6,14 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: (f64, f64, u8, f64)| {
     let (v, a, k, n) = data;
-    let shape = match k % 4 {
+    let shape = match k % 5 {
         0 => Shape::Flat,
         1 => Shape::Power(2.0),
         2 => Shape::Power(1.0),
+        3 => match Shape::parse(&format!("flat-tip:{:?}", n.fract().abs())) {
+            Ok(s) => s,
+            Err(_) => return,
+        },
         _ => match Shape::parse(&format!("power:{n:?}")) {
             Ok(s) => s,
             Err(_) => return,

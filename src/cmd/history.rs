@@ -4,7 +4,6 @@ use super::{emit, vbar_of, Velocity};
 use fricosc::error::Result;
 use fricosc::export::{export, Format};
 use fricosc::grid::{parse_number, parse_values};
-use fricosc::shape::Shape;
 
 pub(crate) fn run(
     shape: &str,
@@ -18,7 +17,7 @@ pub(crate) fn run(
         Some(t) => parse_values("--spring-at", t)?,
         None => vec![],
     };
-    let shape = Shape::parse(shape)?;
+    let shape = fricosc::input::parse_shape(shape)?;
     let amp = parse_number("--amp", amp)?;
     let vbar = match (&velocity.vbar, &velocity.vhat) {
         (Some(v), _) => parse_number("--vbar", v)?,

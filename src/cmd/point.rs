@@ -38,7 +38,7 @@ fn exact_point(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<serde_jso
 }
 
 pub(crate) fn run(a: PointArgs) -> Result<()> {
-    let shape = Shape::parse(&a.common.shape)?;
+    let shape = fricosc::input::parse_shape(&a.common.shape)?;
     let amp = parse_number("--amp", &a.amp)?;
     let vbar = match (&a.common.velocity.vbar, &a.common.velocity.vhat) {
         (Some(v), _) => parse_number("--vbar", v)?,

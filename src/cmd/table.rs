@@ -5,7 +5,7 @@ use clap::Args;
 use fricosc::error::{Error, Result};
 use fricosc::grid::parse_values;
 use fricosc::output::{Format, TableWriter};
-use fricosc::shape::{evaluate_stepping, evaluate_with, Shape};
+use fricosc::shape::{evaluate_stepping, evaluate_with};
 use rayon::prelude::*;
 use std::io;
 
@@ -22,7 +22,7 @@ pub(crate) struct TableArgs {
 }
 
 pub(crate) fn run(a: TableArgs) -> Result<()> {
-    let shape = Shape::parse(&a.common.shape)?;
+    let shape = fricosc::input::parse_shape(&a.common.shape)?;
     let tol = tol_of(&a.common.tol)?;
     let amps = parse_values("--amp", &a.amp)?;
     let (vels, is_vhat) = match (&a.common.velocity.vbar, &a.common.velocity.vhat) {

@@ -3,12 +3,11 @@
 use super::{io_err, read_input, Outcome};
 use fricosc::error::Result;
 use fricosc::grid::parse_number;
-use fricosc::shape::Shape;
 use std::io::{self, Write};
 
 /// Prints the comparison; [`Outcome::Negative`] when `--max-error` is exceeded.
 pub(crate) fn run(shape: &str, file: String, max_error: Option<String>) -> Result<Outcome> {
-    let shape = Shape::parse(shape)?;
+    let shape = fricosc::input::parse_shape(shape)?;
     let max_error = match max_error {
         Some(t) => Some(fricosc::error::check_nonneg("max-error", parse_number("--max-error", &t)?)?),
         None => None,

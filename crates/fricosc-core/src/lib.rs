@@ -34,7 +34,6 @@
 
 pub mod contact;
 pub mod error;
-pub mod input;
 pub mod model;
 pub mod numerics;
 pub mod peers;

@@ -100,6 +100,12 @@ impl Contact for FlatTip {
             let ratio = Ratio { mu_ratio: 1.0, reduction: 0.0 };
             return Ok(Evaluation { ratio, error_estimate: 0.0, interpolation_error: None });
         }
+        if amp < crate::contact::AMP_LINEAR {
+            let at = self.evaluate(vbar, crate::contact::AMP_LINEAR, tol)?;
+            let k = amp / crate::contact::AMP_LINEAR;
+            let ratio = at.ratio.scaled(k);
+            return Ok(Evaluation { ratio, error_estimate: at.error_estimate * k, interpolation_error: None });
+        }
         let tol = tol.max(crate::mdr::DEFAULT_TOL);
         // Forces in units of kz u0 (amp <= 1) or kz du (amp > 1): both finite.
         let unit = if amp <= 1.0 { amp } else { 1.0 };

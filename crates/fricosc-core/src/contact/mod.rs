@@ -60,6 +60,15 @@ pub(crate) fn cosine_band(
     (0.5 * std::f64::consts::PI * sn, 0.5 * std::f64::consts::PI * sd)
 }
 
+/// Below this amplitude an MDR contact's spring coordinate `s = (1 - G)/amp`
+/// could overflow. The reduction is linear in `amp` there: every spring inside
+/// the contact is in permanent contact, with a deficit (in units of `amp`) that
+/// does not depend on `s`, and the jumping springs at the edge, a band of width
+/// `O(amp)`, add `O(amp^2)`. So the tabulated and flat-tip contacts compute it
+/// at this amplitude and scale it ([`crate::ratio::Ratio::scaled`]), with a
+/// relative error of order `AMP_LINEAR` itself.
+pub const AMP_LINEAR: f64 = 1e-300;
+
 /// A parser of the part of a shape specification after its prefix.
 pub type Parser = fn(&str) -> Result<Arc<dyn Contact>>;
 

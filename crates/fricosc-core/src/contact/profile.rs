@@ -139,17 +139,18 @@ const STATIC_ORDER: usize = 32;
 /// value, their difference the error estimate.
 const PASS_ORDERS: (usize, usize) = (16, 32);
 
-/// Most rows of a tabulated profile: the MDR transform costs about 40 ns per
-/// pair of rows, on both cores (quadratic: 16,000 rows take 3 s), so 20,000 rows
-/// take about 5 s.
+/// Most rows of a tabulated profile: the MDR transform is `O(n log n)`
+/// ([`mdr_transform_knots`]); 1,000,000 rows take about 30 s on two cores.
 pub const MAX_TABLE_ROWS: usize = 1_000_000;
 
-/// Read a two-column table (`r,f` or `x,g`): comma, semicolon or blank
-/// separated, at most one header line (before the first row), `#` comments. Checks: at least 3 rows,
-/// finite values, the first column strictly increasing from 0, the second
-/// nondecreasing (it is shifted so that its first value is 0).
-pub fn read_table(path: &str) -> Result<(Vec<f64>, Vec<f64>)> {
-    let text = crate::input::read_capped(path, crate::input::MAX_SMALL_BYTES)?;
+/// Parse the text of a two-column table (`r,f` or `x,g`): comma, semicolon or
+/// blank separated, at most one header line (before the first row), `#`
+/// comments; `path` names it in messages. Checks: at most [`MAX_TABLE_ROWS`]
+/// (it stops reading past them), at least 3 rows, finite values, the first
+/// column strictly increasing from 0, the second nondecreasing (it is shifted so
+/// that its first value is 0). The core reads no files: the caller does (the
+/// command line with a size cap).
+pub fn parse_table(text: &str, path: &str) -> Result<(Vec<f64>, Vec<f64>)> {
     let bad = |reason: String| Error::Parse { context: path.into(), reason };
     let (mut xs, mut ys, mut lines) = (vec![], vec![], vec![]);
     let mut header_seen = false;
@@ -413,9 +414,10 @@ pub struct Table {
 }
 
 impl Table {
-    /// Read and transform a file: `profile` (true: `f(r)`, MDR-transformed) or `g(x)`.
-    pub fn load(path: &str, profile: bool) -> Result<Table> {
-        let (x, v) = read_table(path)?;
+    /// Parse and transform a table's text ([`parse_table`]; `path` names it in
+    /// messages): `profile` (true: `f(r)`, MDR-transformed) or `g(x)`.
+    pub fn parse(text: &str, path: &str, profile: bool) -> Result<Table> {
+        let (x, v) = parse_table(text, path)?;
         Self::from_checked(x, v, profile, path)
     }
 
@@ -548,13 +550,6 @@ pub struct Tabulated {
     pub contact_radius: f64,
 }
 
-impl Tabulated {
-    /// From a file: `profile` (true: `f(r)`, MDR-transformed) or `g(x)`, at mean indentation `u0`.
-    pub fn load(path: &str, u0: f64, profile: bool) -> Result<Tabulated> {
-        Table::load(path, profile)?.at(u0)
-    }
-}
-
 /// `mu_macro/mu0` of a tabulated contact and its error estimates.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TabulatedResult {
@@ -566,8 +561,11 @@ pub struct TabulatedResult {
     pub interpolation_error: f64,
 }
 
-/// Evaluate a tabulated contact at `(vbar, amp)` (both finite, `>= 0`).
+/// Evaluate a tabulated contact at `(vbar, amp)`; both must be finite and `>= 0`
+/// (an error otherwise).
 pub fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedResult> {
+    crate::error::check_nonneg("vbar", vbar)?;
+    crate::error::check_nonneg("amp", amp)?;
     let (ratio, err) = integrate(&t.g, vbar, amp)?;
     let interpolation_error = match &t.coarse {
         Some(c) => integrate(c, vbar, amp).map_or(0.0, |(r, _)| (r.mu_ratio - ratio.mu_ratio).abs()),
@@ -579,6 +577,7 @@ pub fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedResult> {
 /// Mean normal force of the whole contact at amplitude `amp`, units
 /// `E* x_c U0` (both sides of the MDR foundation), by the same quadrature.
 pub fn mean_normal(t: &Tabulated, amp: f64) -> Result<f64> {
+    crate::error::check_nonneg("amp", amp)?;
     Ok(2.0 * integrate_full(&t.g, 0.5, amp)?.2)
 }
 
@@ -591,6 +590,11 @@ fn integrate(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64)> {
 
 /// Ratio, error estimate, and the one-sided mean normal `int amp <B> dz`.
 fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
+    if amp > 0.0 && amp < crate::contact::AMP_LINEAR {
+        let (at, estimate, nn) = integrate_full(g, vbar, crate::contact::AMP_LINEAR)?;
+        let k = amp / crate::contact::AMP_LINEAR;
+        return Ok((at.scaled(k), estimate * k, nn));
+    }
     if amp == 0.0 {
         // No oscillation: int (1 - G(z))_+ dz, exactly the same quadrature at amp -> 0 is singular.
         let rule = quad::rule(STATIC_ORDER, 0.0);

@@ -37,9 +37,29 @@ impl PartialEq for Registered {
 }
 
 impl Shape {
-    /// Parse `flat`, `parabolic`, `cone`, `power:N` (`N` finite, `> 0`), or a
-    /// tabulated `profile:FILE@U0` / `gx:FILE@U0` (see [`crate::profile`]).
+    /// Parse `flat`, `parabolic`, `cone`, `power:N` (`N` finite, `> 0`) or a
+    /// registered shape (`flat-tip:E`). Tabulated shapes name a file, and the
+    /// core reads no files: they need [`Shape::parse_with`].
     pub fn parse(spec: &str) -> Result<Shape> {
+        Self::parse_with(spec, &|path: &str| {
+            Err(Error::InvalidShape {
+                spec: spec.trim().into(),
+                reason: format!("cannot read {path:?}: tabulated shapes need a reader (Shape::parse_with)"),
+            })
+        })
+    }
+
+    /// Parse any shape: those of [`Shape::parse`], and a tabulated
+    /// `profile:FILE@U0` / `gx:FILE@U0` (see [`crate::profile`]), whose file's
+    /// text `read(FILE)` supplies.
+    ///
+    /// ```
+    /// use fricosc_core::shape::Shape;
+    /// let text = "r,f\n0,0\n0.5,0.125\n1,0.5\n"; // f = r^2/2
+    /// let s = Shape::parse_with("profile:table@0.3", &|_| Ok(text.to_string())).unwrap();
+    /// assert!(matches!(s, Shape::Tabulated(..)));
+    /// ```
+    pub fn parse_with(spec: &str, read: &dyn Fn(&str) -> Result<String>) -> Result<Shape> {
         let bad = |reason: &str| Error::InvalidShape { spec: spec.trim().into(), reason: reason.into() };
         match spec.trim() {
             "flat" => Ok(Shape::Flat),
@@ -52,7 +72,7 @@ impl Shape {
                     .rsplit_once('@')
                     .ok_or_else(|| bad("needs the mean indentation: profile:FILE@U0 or gx:FILE@U0"))?;
                 let u0: f64 = u0.trim().parse().map_err(|_| bad("the mean indentation after '@' is not a number"))?;
-                let t = crate::profile::Tabulated::load(path, u0, profile)?;
+                let t = crate::profile::Table::parse(&read(path)?, path, profile)?.at(u0)?;
                 Ok(Shape::Tabulated(std::sync::Arc::new(t), other.to_string()))
             }
             other if crate::contact::REGISTRY.iter().any(|(p, _)| other.starts_with(p)) => {

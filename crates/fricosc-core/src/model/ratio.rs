@@ -56,6 +56,13 @@ fn unit_interval(name: &str, x: f64, slack: f64, context: &str) -> Result<f64> {
 }
 
 impl Ratio {
+    /// The ratio whose reduction is `k` times this one's (`k <= 1`): for a
+    /// reduction linear in the amplitude ([`crate::contact::AMP_LINEAR`]).
+    pub fn scaled(self, k: f64) -> Ratio {
+        let reduction = self.reduction * k;
+        Ratio { mu_ratio: 1.0 - reduction, reduction }
+    }
+
     /// From the reduction (the friction lost, over the friction without oscillation).
     pub fn from_reduction(reduction: f64, context: &str) -> Result<Self> {
         Self::from_reduction_within(reduction, ROUNDING_SLACK, context)

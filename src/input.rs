@@ -39,3 +39,9 @@ pub fn read_capped(path: &str, limit: u64) -> Result<String> {
         Error::read(name, std::io::Error::new(std::io::ErrorKind::InvalidData, format!("not UTF-8 text ({e})")))
     })
 }
+
+/// Parse a shape as the command line writes it, reading a tabulated shape's
+/// file (`profile:FILE@U0`, `gx:FILE@U0`) with the [`MAX_SMALL_BYTES`] cap.
+pub fn parse_shape(spec: &str) -> Result<crate::shape::Shape> {
+    crate::shape::Shape::parse_with(spec, &|path| read_capped(path, MAX_SMALL_BYTES))
+}
