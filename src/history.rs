@@ -94,7 +94,7 @@ pub fn history(
     for &x in chosen {
         check_nonneg("spring position", x)?;
     }
-    if !chosen.is_empty() && *shape == Shape::Flat {
+    if !chosen.is_empty() && shape.with_contact(|c| c.single_spring()) {
         return Err(Error::InvalidShape { spec: shape.name(), reason: "chosen springs need an MDR shape".into() });
     }
     if periods == 0 || samples == 0 || springs == 0 {
@@ -109,7 +109,7 @@ pub fn history(
     }
     // Rows: the uniform samples, their end point, and up to 4 events a period
     // (flat punch); every limit is checked before anything is allocated.
-    let events = if *shape == Shape::Flat { 4 * periods as u128 } else { 0 };
+    let events = if shape.with_contact(|c| c.single_spring()) { 4 * periods as u128 } else { 0 };
     let rows = samples as u128 + 1 + events;
     if rows > MAX_SAMPLES as u128 {
         return Err(Error::TooLarge {
@@ -126,7 +126,7 @@ pub fn history(
             limit: MAX_SAMPLES as u128,
         });
     }
-    let work = rows * if *shape == Shape::Flat { 1 } else { springs as u128 };
+    let work = rows * if shape.with_contact(|c| c.single_spring()) { 1 } else { springs as u128 };
     if work > MAX_SPRING_WORK {
         return Err(Error::TooLarge {
             what: "history spring evaluations (rows x springs)".into(),
@@ -137,8 +137,8 @@ pub fn history(
     let total = TAU * periods as f64;
     let mut taus: Vec<(f64, Option<EventKind>)> =
         (0..=samples).map(|j| (total * j as f64 / samples as f64, None)).collect();
-    let (units, out) = match shape {
-        Shape::Flat => {
+    let (units, out) = match shape.with_contact(|c| c.single_spring()) {
+        true => {
             let sp = crate::flat::spring(vbar, amp, true);
             for p in 0..periods {
                 for e in sp.events() {
@@ -160,30 +160,28 @@ pub fn history(
                 .collect();
             ("normal: kz u0; tangential: mu0 kz u0".to_string(), samples)
         }
-        Shape::Power(n) => {
-            let n = *n;
-            let zmax = (1.0 + amp).powf(1.0 / n);
-            let dz = zmax / springs as f64;
-            let sp: Vec<Spring> = if amp > 0.0 {
-                let (_, s_of) = fricosc_core::stepper::power_law_grid(n, amp, springs);
-                (0..springs).map(|i| Spring::with_events(s_of(i), vbar)).collect()
+        // Every other contact through its MDR foundation (crate::contact::grid):
+        // the normal force exactly, the tangential one as the grid's sum.
+        false => shape.with_contact(|c| -> Result<(String, Vec<Sample>)> {
+            let (dz, sp): (f64, Vec<Spring>) = if amp > 0.0 {
+                let (dz, s_of) = fricosc_core::contact::grid(c, amp, springs)?;
+                (dz, (0..springs).map(|i| Spring::with_events(s_of(i), vbar)).collect())
             } else {
-                vec![]
+                (0.0, vec![])
             };
             taus.sort_by(|a, b| a.0.total_cmp(&b.0));
             let picked: Vec<(f64, Option<Spring>)> = chosen
                 .iter()
                 .map(|&x| {
-                    let g = x.powf(n);
+                    let g = c.equivalent_profile(x);
                     (g, (amp > 0.0).then(|| Spring::with_events((1.0 - g) / amp, vbar)))
                 })
                 .collect();
             let samples = taus
                 .iter()
                 .map(|&(tau, _)| {
-                    let c = (1.0 - amp * tau.cos()).max(0.0);
                     // Both sides of the foundation.
-                    let normal = 2.0 * fricosc_core::mdr::foundation_force(n, c);
+                    let normal = c.static_force(1.0 - amp * tau.cos());
                     let tangential = if amp > 0.0 {
                         2.0 * amp * dz * sp.iter().map(|s| spring_force(s, tau)).sum::<f64>()
                     } else {
@@ -199,14 +197,8 @@ pub fn history(
                     Sample { tau, normal, tangential, event: None, springs }
                 })
                 .collect();
-            ("normal: E* x_c u0; tangential: mu0 E* x_c u0 (x_c: contact radius at u0)".to_string(), samples)
-        }
-        Shape::Tabulated(..) | Shape::Registered(..) => {
-            return Err(Error::InvalidShape {
-                spec: shape.name(),
-                reason: "history supports flat and power-law shapes".into(),
-            })
-        }
+            Ok(("normal: E* x_c u0; tangential: mu0 E* x_c u0 (x_c: contact radius at u0)".to_string(), samples))
+        })?,
     };
     Ok(History { shape: shape.name(), vbar, amp, units, spring_positions: chosen.to_vec(), samples: out })
 }

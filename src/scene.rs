@@ -433,27 +433,20 @@ fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
         }
         None => &c.shape,
     };
-    Ok(match shape {
-        Shape::Flat => {
-            let kz = 2.0 * c.e_star * c.geometry;
-            let m = crate::flat::mean_normal(amp);
-            (c.geometry, kz, kz * u0 * m)
-        }
-        Shape::Power(n) => {
-            let xc = (u0 / c.geometry).powf(1.0 / n);
-            let m = mdr::mean_normal_force(*n, amp, mdr::DEFAULT_TOL)?.unwrap_or(f64::NAN);
-            (xc, 2.0 * c.e_star * xc, c.e_star * xc * u0 * m)
-        }
+    // The contact radius from the scene's indenter; the force from the contact
+    // (Contact::mean_normal, units E* x_c u0; the stiffness is 2 E* x_c).
+    let xc = match shape {
+        Shape::Flat => c.geometry,
+        Shape::Power(n) => (u0 / c.geometry).powf(1.0 / n),
+        Shape::Tabulated(t, _) => t.contact_radius,
         // Scenes build their shapes from `indenter`: no registered shape reaches here.
         Shape::Registered(r) => {
             return Err(Error::InvalidShape { spec: r.0.name(), reason: "not available in scenes".into() })
         }
-        Shape::Tabulated(t, _) => {
-            let xc = t.contact_radius;
-            let m = crate::profile::mean_normal(t, amp)?;
-            (xc, 2.0 * c.e_star * xc, c.e_star * xc * u0 * m)
-        }
-    })
+    };
+    let kz = 2.0 * c.e_star * xc;
+    let m = shape.with_contact(|k| k.mean_normal(amp))?;
+    Ok((xc, kz, kz * u0 * (m / 2.0)))
 }
 
 /// Solve a scene; `source` is its path (tables are found relative to it).

@@ -258,8 +258,21 @@ fn nothing_on_stdout_when_the_exit_code_is_2() {
             "steps-per-period",
         ),
         (
-            vec!["table", "--shape", &gx_shape, "--vbar", "0.5", "--amp", "0.5", "--method", "stepping"],
-            "supports flat and power-law",
+            // Stepping a table (now supported): amp 5 needs the table beyond its end.
+            vec![
+                "table",
+                "--shape",
+                &gx_shape,
+                "--vbar",
+                "0.5",
+                "--amp",
+                "0.5,5",
+                "--method",
+                "stepping",
+                "--springs",
+                "50",
+            ],
+            "before the contact edge",
         ),
         (vec!["table", "--vbar", "0.9999999999999998:0.9999999999999999:3", "--amp", "0.5"], "distinct double values"),
         (vec!["point", "--vhat", "1e308", "--amp", "1e-10"], "vhat / amp = 1e308 / 1e-10 overflows"),

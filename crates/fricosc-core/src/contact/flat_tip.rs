@@ -88,9 +88,46 @@ impl Curved {
     }
 }
 
+impl FlatTip {
+    fn curved(&self) -> Curved {
+        Curved { e: self.flat_ratio, k: (1.0 - self.flat_ratio) * (1.0 + self.flat_ratio) }
+    }
+}
+
 impl Contact for FlatTip {
     fn name(&self) -> String {
         format!("flat-tip:{:?}", self.flat_ratio)
+    }
+
+    /// `G(z) = z sqrt(z^2 - E^2)/sqrt(1 - E^2)` beyond the flat, 0 on it.
+    fn equivalent_profile(&self, z: f64) -> f64 {
+        let (e, c) = (self.flat_ratio, self.curved());
+        if z <= e {
+            0.0
+        } else {
+            z * ((z - e) * (z + e)).sqrt() / c.k.sqrt()
+        }
+    }
+
+    fn reach(&self, amp: f64) -> Result<f64> {
+        Ok(self.curved().z_of_t((1.0 + amp).sqrt()).0)
+    }
+
+    /// With `z_c` the contact's edge at depth `c` (`G(z_c) = c`) and
+    /// `int z sqrt(z^2 - E^2) dz = (z^2 - E^2)^(3/2)/3`:
+    /// `F = 2 (c z_c - (z_c^2 - E^2)^(3/2) / (3 sqrt(1 - E^2)))`, where
+    /// `z_c^2 - E^2 = c^2 k / (c root + E^2/2)` (`t^2 = c`, `Curved::z_of_t`'s
+    /// `root`) has no cancellation as `c -> 0`. `E = 0` gives Hertz, `(4/3) c^(3/2)`.
+    fn static_force(&self, depth: f64) -> f64 {
+        if depth <= 0.0 {
+            return 0.0;
+        }
+        let c = self.curved();
+        let (zc, _) = c.z_of_t(depth.sqrt());
+        let q = 0.5 * c.e * c.e / depth;
+        let root = (c.k + q * q).sqrt();
+        let w = depth * depth * c.k / (depth * root + 0.5 * c.e * c.e);
+        2.0 * (depth * zc - w * w.sqrt() / (3.0 * c.k.sqrt()))
     }
 
     fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {

@@ -2,12 +2,16 @@
 //! profiles by the method of dimensionality reduction, and [`shape::Shape`].
 //!
 //! # Adding an indenter
-//! A new analytic indenter is one file implementing [`Contact`] and one line in
-//! [`REGISTRY`] (its name prefix and its parser); [`shape::Shape::parse`] then
-//! accepts it everywhere a shape is named (`point`, `table`, `batch`,
-//! `validate`). [`flat_tip`] is the example: a sphere worn flat at its tip.
+//! A new analytic indenter is one file implementing [`Contact`] (the solver
+//! `evaluate`, and its MDR profile: `equivalent_profile`, `reach`,
+//! `static_force`) and one line in [`REGISTRY`] (its name prefix and its
+//! parser); [`shape::Shape::parse`] then accepts it everywhere a shape is named
+//! (`point`, `table`, `batch`, `validate`, `history`), and the time-stepping
+//! peer steps it through [`grid`]. [`flat_tip`] is the example: a sphere worn
+//! flat at its tip.
 use crate::error::Result;
 use crate::shape::Evaluation;
+use std::f64::consts::PI;
 use std::sync::Arc;
 
 pub mod flat;
@@ -31,6 +35,63 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
         Ok(self.evaluate(0.0, amp, tol)?.ratio.mu_ratio)
     }
+
+    /// The MDR equivalent profile in the contact's units, `G(z) = g(x_c z)/u0`
+    /// (`G(1) = 1`, `x_c` the contact radius at the mean indentation `u0`): the
+    /// spring at `z` touches while the indentation exceeds `G(z) u0`. The flat
+    /// punch is 0 on `z <= 1` and infinite beyond.
+    fn equivalent_profile(&self, z: f64) -> f64;
+
+    /// `z_max` with `G(z_max) = 1 + amp`: no spring beyond it ever touches (an
+    /// error if the contact cannot reach that far, e.g. a table too short).
+    fn reach(&self, amp: f64) -> Result<f64>;
+
+    /// Static normal force at indentation `depth u0`,
+    /// `2 int_0^inf (depth - G(z))_+ dz`, in units of `E* x_c u0` (both sides of
+    /// the foundation; the flat punch's stiffness is `2 E* x_c`).
+    fn static_force(&self, depth: f64) -> f64;
+
+    /// The normal force averaged over a period at amplitude `amp`, in the units
+    /// of [`Contact::static_force`]. By default the phase average
+    /// `(1/pi) int_0^pi F(1 - amp cos tau) dtau` by Gauss-Legendre, on the part
+    /// of the period in contact, graded at both ends (where `F` vanishes like a
+    /// power of the depth); contacts with a closed form override it.
+    fn mean_normal(&self, amp: f64) -> Result<f64> {
+        crate::error::check_nonneg("amp", amp)?;
+        let start = if amp > 1.0 { (1.0 / amp).acos() } else { 0.0 };
+        let rule = crate::quad::rule(MEAN_NORMAL_ORDER, 0.0);
+        let half = 0.5 * (PI - start);
+        let mut sum = 0.0;
+        for (&x, &w) in rule.nodes.iter().zip(&rule.weights) {
+            let (st, ct) = (0.5 * PI * (1.0 + x)).sin_cos();
+            let tau = start + half * (1.0 - ct);
+            sum += w * half * st * 0.5 * PI * self.static_force(1.0 - amp * tau.cos());
+        }
+        Ok(sum / PI)
+    }
+
+    /// True if one spring represents the contact exactly (the flat punch): the
+    /// time-stepping peer and histories then use one spring.
+    fn single_spring(&self) -> bool {
+        false
+    }
+}
+
+/// Gauss-Legendre order of the default [`Contact::mean_normal`]: the graded
+/// integrand is smooth (a depth `c^(3/2)` becomes `theta^3`), and 64 points
+/// reproduce the paraboloid's closed form to 2e-15 (`tests/contact.rs`).
+const MEAN_NORMAL_ORDER: usize = 64;
+
+/// The foundation of `contact` discretised for the time-stepping peer and force
+/// histories: `count` springs at the midpoints of a uniform grid on the part
+/// that ever touches, `0 <= z < reach(amp)` (one spring for the flat punch).
+/// Returns the spacing `dz` and `s(i) = (1 - G(z_i))/amp` (`amp > 0`).
+pub fn grid(contact: &dyn Contact, amp: f64, count: usize) -> Result<(f64, impl Fn(usize) -> f64 + Sync + '_)> {
+    let count = if contact.single_spring() { 1 } else { count.max(1) };
+    let dz = contact.reach(amp)? / count as f64;
+    // s = 1/amp overflows for a subnormal amp: the largest finite s is as good
+    // (the spring never loses contact), as in `flat::spring_s`.
+    Ok((dz, move |i: usize| ((1.0 - contact.equivalent_profile((i as f64 + 0.5) * dz)) / amp).min(f64::MAX)))
 }
 
 /// `(int <B> w dx, int D w dx)` over `x` in `[p, q]` of the springs `s(x)`
@@ -87,6 +148,26 @@ impl Contact for FlatPunch {
     fn mu_static(&self, amp: f64, _tol: f64) -> Result<f64> {
         Ok(flat::mu_static_ratio(amp))
     }
+    fn equivalent_profile(&self, z: f64) -> f64 {
+        if z <= 1.0 {
+            0.0
+        } else {
+            f64::INFINITY
+        }
+    }
+    fn reach(&self, _amp: f64) -> Result<f64> {
+        Ok(1.0)
+    }
+    fn static_force(&self, depth: f64) -> f64 {
+        2.0 * depth.max(0.0)
+    }
+    fn mean_normal(&self, amp: f64) -> Result<f64> {
+        crate::error::check_nonneg("amp", amp)?;
+        Ok(2.0 * flat::mean_normal(amp))
+    }
+    fn single_spring(&self) -> bool {
+        true
+    }
 }
 
 /// The MDR power-law profile `g ~ |x|^n` ([`mdr`]).
@@ -107,6 +188,19 @@ impl Contact for PowerLaw {
     fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
         Ok(mdr::mu_static_ratio(self.n, amp, tol))
     }
+    fn equivalent_profile(&self, z: f64) -> f64 {
+        z.powf(self.n)
+    }
+    fn reach(&self, amp: f64) -> Result<f64> {
+        Ok((1.0 + amp).powf(1.0 / self.n))
+    }
+    fn static_force(&self, depth: f64) -> f64 {
+        2.0 * mdr::foundation_force(self.n, depth)
+    }
+    fn mean_normal(&self, amp: f64) -> Result<f64> {
+        mdr::mean_normal_force(self.n, amp, mdr::DEFAULT_TOL)?
+            .ok_or_else(|| crate::Error::param("amp", amp, "the mean normal force overflows double precision"))
+    }
 }
 
 impl Contact for profile::Tabulated {
@@ -120,6 +214,18 @@ impl Contact for profile::Tabulated {
             error_estimate: r.error_estimate,
             interpolation_error: Some(r.interpolation_error),
         })
+    }
+    fn equivalent_profile(&self, z: f64) -> f64 {
+        profile::equivalent_profile(self, z)
+    }
+    fn reach(&self, amp: f64) -> Result<f64> {
+        profile::reach(self, amp)
+    }
+    fn static_force(&self, depth: f64) -> f64 {
+        profile::static_force(self, depth)
+    }
+    fn mean_normal(&self, amp: f64) -> Result<f64> {
+        profile::mean_normal(self, amp)
     }
 }
 

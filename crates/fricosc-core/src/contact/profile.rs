@@ -308,9 +308,9 @@ const LEAF_TARGETS: usize = 32;
 /// The sum over `k` is split hierarchically: the knots are bisected into target
 /// blocks `[c, d]` of width `W`; the sources `r_k < c - W` not yet summed by a
 /// parent form a function of `x` analytic on the block, which is evaluated at
-/// [`FAR_POINTS`] Chebyshev points and interpolated (barycentric formula) at the
+/// `FAR_POINTS` (24) Chebyshev points and interpolated (barycentric formula) at the
 /// block's knots. Each level costs `O(n)` kernel evaluations; blocks of at most
-/// [`LEAF_TARGETS`] knots sum the remaining near sources directly.
+/// `LEAF_TARGETS` (32) knots sum the remaining near sources directly.
 pub fn mdr_transform_knots(f: &Pchip) -> Vec<f64> {
     let r = &f.x;
     let mut sums = vec![0.0; r.len()];
@@ -579,6 +579,35 @@ pub fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedResult> {
 pub fn mean_normal(t: &Tabulated, amp: f64) -> Result<f64> {
     crate::error::check_nonneg("amp", amp)?;
     Ok(2.0 * integrate_full(&t.g, 0.5, amp)?.2)
+}
+
+/// `G(z)` of a tabulated contact (the cubic interpolant; the end cubics
+/// extrapolate beyond the table).
+pub fn equivalent_profile(t: &Tabulated, z: f64) -> f64 {
+    t.g.eval(z).0
+}
+
+/// `z` with `G(z) = 1 + amp`: an error if the table ends before.
+pub fn reach(t: &Tabulated, amp: f64) -> Result<f64> {
+    crate::error::check_nonneg("amp", amp)?;
+    let gmax = *t.g.values().last().unwrap_or(&0.0);
+    if gmax < 1.0 + amp {
+        return Err(Error::param(
+            "amp",
+            amp,
+            &format!("the tabulated profile ends at g = {gmax:?} U0, before the contact edge at (1 + amp) U0"),
+        ));
+    }
+    Ok(t.g.inverse(1.0 + amp))
+}
+
+/// Static normal force at indentation `depth U0`, units `E* x_c U0` (both sides).
+pub fn static_force(t: &Tabulated, depth: f64) -> f64 {
+    if depth > 0.0 {
+        normal_force(&t.g, depth)
+    } else {
+        0.0
+    }
 }
 
 fn integrate(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64)> {

@@ -222,17 +222,11 @@ impl Stepping {
                 return Err(Error::param(name, v as f64, "must be between 1 and 1e8"));
             }
         }
-        match shape {
-            Shape::Flat => Ok(()),
-            Shape::Power(_) if self.steps_per_period as u128 * self.springs as u128 > MAX_STEPPING_WORK => {
-                Err(Error::param("springs", self.springs as f64, "steps-per-period x springs must be <= 1e11"))
-            }
-            Shape::Power(_) => Ok(()),
-            Shape::Tabulated(..) | Shape::Registered(..) => Err(Error::InvalidShape {
-                spec: shape.name(),
-                reason: "--method stepping supports flat and power-law shapes".into(),
-            }),
+        let springs = if shape.with_contact(|c| c.single_spring()) { 1 } else { self.springs };
+        if self.steps_per_period as u128 * springs as u128 > MAX_STEPPING_WORK {
+            return Err(Error::param("springs", self.springs as f64, "steps-per-period x springs must be <= 1e11"));
         }
+        Ok(())
     }
 }
 
@@ -256,13 +250,8 @@ pub fn evaluate_stepping(shape: &Shape, vbar: f64, amp: f64, st: Stepping) -> Re
     check_nonneg("vbar", vbar)?;
     check_nonneg("amp", amp)?;
     st.check(shape)?;
-    let (run, springs) = match shape {
-        Shape::Flat => (crate::stepper::flat_mu_ratio(vbar, amp, st.steps_per_period), 1),
-        Shape::Power(n) => {
-            (crate::stepper::power_law_mu_ratio(*n, vbar, amp, st.steps_per_period, st.springs), st.springs)
-        }
-        Shape::Tabulated(..) | Shape::Registered(..) => unreachable!("refused by Stepping::check"),
-    };
+    // Any contact: its foundation on a uniform grid (crate::contact::grid).
+    let (run, springs) = shape.with_contact(|c| crate::stepper::contact_mu_ratio(c, vbar, amp, st))?;
     // The peer's raw value: outside [0, 1] it says something about the peer.
     let mu = run.mu_ratio();
     if !mu.is_finite() {

@@ -144,22 +144,20 @@ pub fn flat_mu_ratio(vbar: f64, amp: f64, steps_per_period: usize) -> SteppedMea
     run(&[crate::flat::spring_s(amp)], &[1.0], vbar, steps_per_period, 2)
 }
 
-/// The midpoint grid of `springs` springs on the part of the foundation of
-/// `g = z^n` that ever touches, `0 <= z < (1 + amp)^(1/n)`: the spacing `dz`
-/// and `s` of spring `i`, `(1 - ((i + 1/2) dz)^n)/amp` (`amp > 0`).
-pub fn power_law_grid(n: f64, amp: f64, springs: usize) -> (f64, impl Fn(usize) -> f64) {
-    let dz = (1.0 + amp).powf(1.0 / n) / springs.max(1) as f64;
-    (dz, move |i: usize| (1.0 - ((i as f64 + 0.5) * dz).powf(n)) / amp)
-}
-
-/// `mu_macro/mu0` of the power-law profile `g = z^n` by time stepping with
-/// `springs` springs at the midpoints of a uniform grid on the part of the
-/// foundation that ever touches, `0 <= z < (1 + amp)^(1/n)`.
-pub fn power_law_mu_ratio(n: f64, vbar: f64, amp: f64, steps_per_period: usize, springs: usize) -> SteppedMeans {
+/// `mu_macro/mu0` of any contact by time stepping, over two periods: its
+/// foundation on the uniform grid of [`crate::contact::grid`] (`st.springs`
+/// springs at the midpoints of the part that ever touches; one for the flat
+/// punch). Returns the means and the number of springs stepped.
+pub fn contact_mu_ratio(
+    contact: &dyn crate::contact::Contact,
+    vbar: f64,
+    amp: f64,
+    st: crate::shape::Stepping,
+) -> crate::Result<(SteppedMeans, usize)> {
+    let count = if contact.single_spring() { 1 } else { st.springs.max(1) };
     if amp == 0.0 {
-        return SteppedMeans { tangential: 1.0, normal: 1.0, period_change: 0.0, steps: 0 };
+        return Ok((SteppedMeans { tangential: 1.0, normal: 1.0, period_change: 0.0, steps: 0 }, count));
     }
-    let k = springs.max(1);
-    let (dz, s_of) = power_law_grid(n, amp, k);
-    run_with(k, &|i| (s_of(i), dz), vbar, steps_per_period, 2)
+    let (dz, s_of) = crate::contact::grid(contact, amp, count)?;
+    Ok((run_with(count, &|i| (s_of(i), dz), vbar, st.steps_per_period, 2), count))
 }
