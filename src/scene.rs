@@ -51,18 +51,18 @@ pub struct Scene {
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Materials {
-    /// Young's modulus of body 1 [Pa].
+    /// Young's modulus of body 1 (Pa).
     pub e1_pa: f64,
     /// Poisson ratio of body 1, in (-1, 0.5].
     pub nu1: f64,
-    /// Young's modulus of body 2 [Pa].
+    /// Young's modulus of body 2 (Pa).
     pub e2_pa: f64,
     /// Poisson ratio of body 2, in (-1, 0.5].
     pub nu2: f64,
-    /// Shear modulus of body 1 [Pa] (default `E1/(2(1 + nu1))`).
+    /// Shear modulus of body 1 (Pa) (default `E1/(2(1 + nu1))`).
     #[serde(default)]
     pub g1_pa: Option<f64>,
-    /// Shear modulus of body 2 [Pa] (default `E2/(2(1 + nu2))`).
+    /// Shear modulus of body 2 (Pa) (default `E2/(2(1 + nu2))`).
     #[serde(default)]
     pub g2_pa: Option<f64>,
 }
@@ -73,12 +73,12 @@ pub struct Materials {
 pub enum Indenter {
     /// Flat cylindrical punch.
     FlatPunch {
-        /// Punch radius [m].
+        /// Punch radius (m).
         radius_m: f64,
     },
     /// Sphere (paraboloid `r^2/(2R)`, Hertz).
     Sphere {
-        /// Sphere radius [m].
+        /// Sphere radius (m).
         radius_m: f64,
     },
     /// Cone: give the half-angle (axis to surface) or the surface slope.
@@ -109,10 +109,10 @@ pub enum Indenter {
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Loading {
-    /// Mean indentation `u_z0` [m].
+    /// Mean indentation `u_z0` (m).
     #[serde(default)]
     pub mean_indentation_m: Option<f64>,
-    /// Period-averaged normal force [N] (load control).
+    /// Period-averaged normal force (N) (load control).
     #[serde(default)]
     pub mean_normal_force_n: Option<f64>,
 }
@@ -121,13 +121,13 @@ pub struct Loading {
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Oscillation {
-    /// Amplitude `du` [m] (or give `amplitude_fraction`).
+    /// Amplitude `du` (m) (or give `amplitude_fraction`).
     #[serde(default)]
     pub amplitude_m: Option<f64>,
     /// Amplitude as a fraction of the mean indentation, `du/u_z0`.
     #[serde(default)]
     pub amplitude_fraction: Option<f64>,
-    /// Frequency `f` [Hz] (`omega = 2 pi f`).
+    /// Frequency `f` (Hz) (`omega = 2 pi f`).
     pub frequency_hz: f64,
 }
 
@@ -135,7 +135,7 @@ pub struct Oscillation {
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct VelocitySpec {
-    /// Explicit velocities [m/s].
+    /// Explicit velocities (m/s).
     #[serde(default)]
     pub values_m_per_s: Option<Vec<f64>>,
     /// A sweep.
@@ -147,9 +147,9 @@ pub struct VelocitySpec {
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Sweep {
-    /// First velocity [m/s].
+    /// First velocity (m/s).
     pub start_m_per_s: f64,
-    /// Last velocity [m/s].
+    /// Last velocity (m/s).
     pub stop_m_per_s: f64,
     /// Number of velocities, 1 to 10^6.
     pub count: usize,
@@ -161,7 +161,7 @@ pub struct Sweep {
 /// One velocity's answer.
 #[derive(Debug, Clone, Serialize)]
 pub struct Row {
-    /// Sliding velocity [m/s].
+    /// Sliding velocity (m/s).
     pub velocity_m_per_s: f64,
     /// `vbar` (eq. 3).
     pub vbar: f64,
@@ -171,9 +171,9 @@ pub struct Row {
     pub mu_macro: f64,
     /// `mu_macro / mu0`.
     pub mu_ratio: f64,
-    /// Mean friction force [N].
+    /// Mean friction force (N).
     pub mean_friction_force_n: f64,
-    /// Mean normal force [N].
+    /// Mean normal force (N).
     pub mean_normal_force_n: f64,
     /// `sliding` at or above the critical velocity, else `stick_slip`.
     pub regime: String,
@@ -184,27 +184,27 @@ pub struct Row {
 pub struct SceneResult {
     /// The scene's name, if any.
     pub name: Option<String>,
-    /// Effective modulus `E*` [Pa] (eq. 23).
+    /// Effective modulus `E*` (Pa) (eq. 23).
     pub e_star_pa: f64,
-    /// Effective shear modulus `G*` [Pa] (eq. 24).
+    /// Effective shear modulus `G*` (Pa) (eq. 24).
     pub g_star_pa: f64,
-    /// Mean indentation [m] (given, or solved under load control).
+    /// Mean indentation (m) (given, or solved under load control).
     pub mean_indentation_m: f64,
-    /// Oscillation amplitude [m].
+    /// Oscillation amplitude (m).
     pub amplitude_m: f64,
     /// `du/u0`.
     pub amplitude_ratio: f64,
-    /// Contact radius at the mean indentation [m].
+    /// Contact radius at the mean indentation (m).
     pub contact_radius_m: f64,
     /// Normal contact stiffness at the mean indentation [N/m].
     pub kz_n_per_m: f64,
     /// Tangential contact stiffness [N/m].
     pub kx_n_per_m: f64,
-    /// Critical velocity (eq. 26) [m/s]: no reduction at or above it.
+    /// Critical velocity (eq. 26) (m/s): no reduction at or above it.
     pub critical_velocity_m_per_s: f64,
     /// Static coefficient of friction (the limit `v -> 0+`).
     pub mu_static: f64,
-    /// Period-averaged normal force [N].
+    /// Period-averaged normal force (N).
     pub mean_normal_force_n: f64,
     /// Whether the contact centre loses contact during each period.
     pub jumping: bool,
@@ -422,7 +422,7 @@ fn check(s: &Scene, source: &str) -> Result<Checked> {
     Ok(Checked { e_star, g_star, mu0, omega, shape, geometry, profile, velocities })
 }
 
-/// Contact radius, `kz`, and the mean normal force [N] at mean indentation `u0`, amplitude `du`.
+/// Contact radius, `kz`, and the mean normal force (N) at mean indentation `u0`, amplitude `du`.
 fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
     let amp = du / u0;
     let loaded;
