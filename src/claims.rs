@@ -5,6 +5,7 @@ use crate::flat;
 use crate::mdr::{mu_static_ratio, power_law, DEFAULT_TOL};
 use crate::seed;
 use crate::spring::EventKind;
+use crate::stepper::{physical_mu_ratio, PhysicalSpring};
 use serde::Serialize;
 use std::f64::consts::{PI, TAU};
 
@@ -72,38 +73,6 @@ pub fn exact_slope(amp: f64) -> f64 {
     mu_flat(SLOPE_VBAR, amp) / SLOPE_VBAR
 }
 
-/// A single spring in physical units (seed eq. 1): stiffnesses, friction,
-/// sliding velocity, angular frequency, mean indentation and amplitude.
-#[derive(Clone, Copy)]
-struct Physical {
-    kx: f64,
-    kz: f64,
-    mu0: f64,
-    v0: f64,
-    omega: f64,
-    u0: f64,
-    du: f64,
-}
-
-/// The seed's scheme in physical units, `m` steps per period; returns `mu/mu0`.
-fn dimensional_stepper(p: &Physical, m: usize) -> f64 {
-    let Physical { kx, kz, mu0, v0, omega, u0, du } = *p;
-    let dt = TAU / omega / m as f64;
-    let bound = |t: f64| (mu0 * kz * (u0 - du * (omega * t).cos())).max(0.0);
-    let mut f = bound(0.0);
-    let (mut sf, mut sn) = (0.0, 0.0);
-    for k in 1..=2 * m {
-        let t = dt * k as f64;
-        let b = bound(t);
-        f = if b > 0.0 { (f + kx * v0 * dt).min(b) } else { 0.0 };
-        if k > m {
-            sf += f;
-            sn += b / mu0;
-        }
-    }
-    sf / (mu0 * sn)
-}
-
 /// Largest `f(v, p)` over `v` in `{0, 1/k, ..., 1}` and `p` in `ps`, and where.
 fn worst_over(ps: &[f64], k: usize, f: impl Fn(f64, f64) -> f64) -> (f64, (f64, f64)) {
     let mut best = (0.0f64, (0.0, 0.0));
@@ -137,11 +106,37 @@ fn graded(err: f64, tol: f64) -> Verdict {
     }
 }
 
-/// Check every claim.
-pub fn check() -> Vec<Claim> {
-    let mut out = vec![];
+/// `mu/mu0` as a function of `(vbar, amp)`.
+type Mu = Box<dyn Fn(f64, f64) -> f64>;
 
-    // Eq. 8's sign, at vbar = 0.5, amp = 0.5: tau2 from the solver's events.
+/// The shapes the shape-dependent claims are checked on.
+fn shapes() -> [(&'static str, Mu); 3] {
+    [
+        ("flat", Box::new(mu_flat)),
+        ("parabolic", Box::new(|v, a| mu_mdr(2.0, v, a))),
+        ("cone", Box::new(|v, a| mu_mdr(1.0, v, a))),
+    ]
+}
+
+/// Check every claim: one function per claim, each computing its measured
+/// quantities and its verdict from the criterion written beside it.
+pub fn check() -> Vec<Claim> {
+    vec![
+        eq8_sign(),
+        eq11_error(),
+        eq12_exactness(),
+        eq21_factor_pi(),
+        eq22_limit(),
+        slope_drop(),
+        eq28_against_eq27(),
+        critical_velocity(),
+        eq27_shape_independence(),
+        two_parameters(),
+    ]
+}
+
+/// Eq. 8's sign, at vbar = 0.5, amp = 0.5: tau2 from the solver's events.
+fn eq8_sign() -> Claim {
     let v = 0.5f64;
     let t1 = v.asin();
     let t2 = flat::point(v, 0.5)
@@ -152,7 +147,7 @@ pub fn check() -> Vec<Claim> {
     let corrected = |t: f64| seed::eq8_corrected_residual(v, t);
     let worst_printed = (1..=1000).map(|k| printed(t1 + k as f64 * TAU / 1000.0)).fold(f64::NEG_INFINITY, f64::max);
     let (r_printed, r_corrected) = (printed(t2).abs(), corrected(t2).abs());
-    out.push(Claim {
+    Claim {
         claim: "eq. 8 (stick -> slip)".into(),
         seed_says: "cos tau2 = vbar (tau2 - arcsin vbar) + sqrt(1 - vbar^2)".into(),
         exact_gives: format!(
@@ -177,12 +172,14 @@ pub fn check() -> Vec<Claim> {
         } else {
             Verdict::Wrong
         },
-    });
+    }
+}
 
-    // Eq. 11's error, relative to amp.
+/// Eq. 11's error, relative to amp.
+fn eq11_error() -> Claim {
     let amps: Vec<f64> = (1..=10).map(|i| i as f64 / 10.0).collect();
     let (worst, at) = worst_over(&amps, 1000, |v, a| (seed::eq11(v, a) - mu_flat(v, a)).abs() / a);
-    out.push(Claim {
+    Claim {
         claim: "eq. 11 (empirical fit, amp <= 1)".into(),
         seed_says: "approximates the numerical results 'very accurately'".into(),
         exact_gives: format!("largest error {worst:.4} amp, exact at vbar = 0 and 1"),
@@ -194,13 +191,15 @@ pub fn check() -> Vec<Claim> {
         deviation: Some(worst),
         location: format!("vbar = {}, amp = {} (error / amp; the same at every amp to 1e-3)", at.0, at.1),
         verdict: graded(worst, EQ11_TOL),
-    });
+    }
+}
 
-    // Eq. 12's asymptotic exactness at amp = 1 (Fig. 3 inset).
+/// Eq. 12's asymptotic exactness at amp = 1 (Fig. 3 inset).
+fn eq12_exactness() -> Claim {
     let err12 = |v: f64| (seed::eq12(v, 1.0) - mu_flat(v, 1.0)).abs();
     let (e3, e4, e5) = (err12(1e-3), err12(1e-4), err12(1e-5));
     let order = (e4 / e5).log10();
-    out.push(Claim {
+    Claim {
         claim: "eq. 12 (low-velocity asymptote)".into(),
         seed_says: "asymptotically exact as vbar -> 0".into(),
         exact_gives: format!(
@@ -214,15 +213,17 @@ pub fn check() -> Vec<Claim> {
         deviation: Some(e3),
         location: "amp = 1, vbar = 1e-3".into(),
         verdict: if order > 2.0 { Verdict::Holds } else { Verdict::Wrong },
-    });
+    }
+}
 
-    // Eq. 21's factor pi.
+/// Eq. 21's factor pi.
+fn eq21_factor_pi() -> Claim {
     let amps21 = [1.5, 2.0, 10.0];
     let ratios: Vec<f64> = amps21.iter().map(|&a| exact_slope(a) / seed::eq21_slope_printed(a)).collect();
     let ratio = ratios.iter().sum::<f64>() / ratios.len() as f64;
     let spread = ratios.iter().map(|r| (r / ratio - 1.0).abs()).fold(0.0, f64::max);
     let dev21 = amps21.iter().map(|&a| (exact_slope(a) / seed::eq21_slope(a) - 1.0).abs()).fold(0.0, f64::max);
-    out.push(Claim {
+    Claim {
         claim: "eq. 21 (low-velocity slope, amp > 1)".into(),
         seed_says: "mu/mu0 = vbar (1 - th/pi)^2 / (s (1 - th/pi + (1/pi)(du/u0) sqrt(1 - s^2)))".into(),
         exact_gives: format!(
@@ -248,11 +249,13 @@ pub fn check() -> Vec<Claim> {
         } else {
             Verdict::Wrong
         },
-    });
+    }
+}
 
-    // Eq. 22 and the Fig. 5 caption.
+/// Eq. 22 and the Fig. 5 caption.
+fn eq22_limit() -> Claim {
     let big = exact_slope(1e8);
-    out.push(Claim {
+    Claim {
         claim: "eq. 22 and Fig. 5 caption (large-amplitude slope)".into(),
         seed_says: format!("limit pi/4 = {:.4}", seed::EQ22_PRINTED),
         exact_gives: format!("slope {big:.6} at amp = 1e8; the limit is pi^2/4 = {:.6}", seed::EQ22_CORRECTED),
@@ -269,9 +272,12 @@ pub fn check() -> Vec<Claim> {
         } else {
             Verdict::Wrong
         },
-    });
+    }
+}
 
-    // "The slope drops by about 20 %".
+/// "The slope drops by about 20 %".
+fn slope_drop() -> Claim {
+    let big = exact_slope(1e8);
     let s1 = exact_slope(1.0);
     let (mut smin, mut amin) = (f64::INFINITY, 1.0);
     for k in 1..=400 {
@@ -284,7 +290,7 @@ pub fn check() -> Vec<Claim> {
     }
     let drop_limit = 1.0 - big / s1;
     let drop_max = 1.0 - smin / s1;
-    out.push(Claim {
+    Claim {
         claim: "Fig. 5 inset / section 2 ('slope drops by about 20 %')".into(),
         seed_says: "once the sample jumps the slope drops by about 20 % and then stays nearly constant".into(),
         exact_gives: format!(
@@ -308,12 +314,14 @@ pub fn check() -> Vec<Claim> {
         } else {
             Verdict::HoldsApproximately
         },
-    });
+    }
+}
 
-    // Eq. 28 against eq. 27.
+/// Eq. 28 against eq. 27.
+fn eq28_against_eq27() -> Claim {
     let statics: Vec<f64> = (0..=100).map(|i| i as f64 / 100.0).collect();
     let (w28, at28) = worst_over(&statics, 1000, |v, ms| (seed::eq28(v, ms) - seed::eq27(v, ms)).abs());
-    out.push(Claim {
+    Claim {
         claim: "eq. 28 vs eq. 27".into(),
         seed_says: "differs from (27) by 1 % or less".into(),
         exact_gives: format!("largest difference {w28:.5} (of mu0)"),
@@ -325,15 +333,12 @@ pub fn check() -> Vec<Claim> {
             Verdict::HoldsApproximately => Verdict::Holds,
             other => other,
         },
-    });
+    }
+}
 
-    // The critical velocity vbar = 1 for every shape (eq. 26).
-    type Mu = Box<dyn Fn(f64, f64) -> f64>;
-    let shapes: [(&str, Mu); 3] = [
-        ("flat", Box::new(mu_flat)),
-        ("parabolic", Box::new(|v, a| mu_mdr(2.0, v, a))),
-        ("cone", Box::new(|v, a| mu_mdr(1.0, v, a))),
-    ];
+/// The critical velocity vbar = 1 for every shape (eq. 26).
+fn critical_velocity() -> Claim {
+    let shapes = shapes();
     let mut critical_ok = true;
     let mut worst_below = 1.0f64;
     for (_, f) in &shapes {
@@ -342,7 +347,7 @@ pub fn check() -> Vec<Claim> {
             worst_below = worst_below.min(1.0 - f(1.0 - 1e-3, a));
         }
     }
-    out.push(Claim {
+    Claim {
         claim: "eq. 26 (critical velocity)".into(),
         seed_says: "vbar = 1 for all shapes, with and without jumping".into(),
         exact_gives: format!(
@@ -355,9 +360,12 @@ pub fn check() -> Vec<Claim> {
         deviation: None,
         location: "flat, parabolic, cone".into(),
         verdict: if critical_ok { Verdict::Holds } else { Verdict::Wrong },
-    });
+    }
+}
 
-    // Eq. 27's shape independence.
+/// Eq. 27's shape independence.
+fn eq27_shape_independence() -> Claim {
+    let shapes = shapes();
     let mut parts = vec![];
     let mut w27 = 0.0f64;
     for (name, f) in &shapes {
@@ -371,7 +379,7 @@ pub fn check() -> Vec<Claim> {
         w27 = w27.max(w);
         parts.push(format!("{name} {w:.3} (vbar {}, amp {})", at.0, at.1));
     }
-    out.push(Claim {
+    Claim {
         claim: "eq. 27 (shape independence)".into(),
         seed_says: "approximately valid for all shapes, jumping or not; shape enters only through mu_static".into(),
         exact_gives: format!("largest error: {}", parts.join("; ")),
@@ -383,18 +391,22 @@ pub fn check() -> Vec<Claim> {
         deviation: Some(w27),
         location: "amp in 0.2..2, vbar in [0, 1]".into(),
         verdict: graded(w27, EQ27_TOL),
-    });
+    }
+}
 
-    // mu depends only on (vbar, amp): two dimensional systems with the same pair.
+/// mu depends only on (vbar, amp): two dimensional systems with the same pair.
+fn two_parameters() -> Claim {
     let (kx, kz, mu0, omega, u0, du) = (3.0e7, 4.0e7, 0.3, 2.0 * PI * 100.0, 2e-6, 1e-6);
     let v0 = 0.4 * kz * mu0 * omega * du / kx;
     let vbar = kx * v0 / (kz * mu0 * omega * du);
-    let a_ = dimensional_stepper(&Physical { kx, kz, mu0, v0, omega, u0, du }, 20000);
+    let a_ = physical_mu_ratio(&PhysicalSpring { kx, kz, mu0, v0, omega, u0, du }, 20000);
     // A second system: stiffnesses x 1e3, kz/kx changed, frequency x 7, lengths x 1e-3, same (vbar, amp).
     let (kx2, kz2, mu02, omega2, u02, du2) = (5.0e10, 2.0e10, 0.6, omega * 7.0, u0 * 1e-3, du * 1e-3);
     let v02 = vbar * kz2 * mu02 * omega2 * du2 / kx2;
-    let b_ =
-        dimensional_stepper(&Physical { kx: kx2, kz: kz2, mu0: mu02, v0: v02, omega: omega2, u0: u02, du: du2 }, 20000);
+    let b_ = physical_mu_ratio(
+        &PhysicalSpring { kx: kx2, kz: kz2, mu0: mu02, v0: v02, omega: omega2, u0: u02, du: du2 },
+        20000,
+    );
     let exact = mu_flat(vbar, du / u0);
     // The same with two physical scenes (sphere, exact solver), lengths x 1e3,
     // moduli x 1e-4, frequency x 1e-2, velocities scaled with omega du.
@@ -409,7 +421,7 @@ pub fn check() -> Vec<Claim> {
             .map_or(f64::NAN, |r| r.rows[0].mu_ratio)
     };
     let (sa, sb) = (scene(2e11, 5e-3, 1e-6, 1.3e-6, 1e3, 3e-4), scene(2e7, 5.0, 1e-3, 1.3e-3, 10.0, 3e-3));
-    out.push(Claim {
+    Claim {
         claim: "section 2 ('a function of only two dimensionless parameters')".into(),
         seed_says: "mu/mu0 depends only on vbar (eq. 3) and du/u0".into(),
         exact_gives: format!(
@@ -428,8 +440,7 @@ pub fn check() -> Vec<Claim> {
         } else {
             Verdict::Wrong
         },
-    });
-    out
+    }
 }
 
 impl crate::export::Report for Vec<Claim> {

@@ -133,8 +133,6 @@ impl Pchip {
 /// the integrand is the cubic interpolant itself, integrated exactly from 2 points
 /// on; 12 leaves margin for the inverse at the edge.
 const NORMAL_FORCE_ORDER: usize = 12;
-/// Gauss-Legendre order per interval of the static force (`amp = 0`).
-const STATIC_ORDER: usize = 32;
 /// The two orders of the tabulated quadrature per interval: the higher gives the
 /// value, their difference the error estimate.
 const PASS_ORDERS: (usize, usize) = (16, 32);
@@ -625,18 +623,8 @@ fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
         return Ok((at.scaled(k), estimate * k, nn));
     }
     if amp == 0.0 {
-        // No oscillation: int (1 - G(z))_+ dz, exactly the same quadrature at amp -> 0 is singular.
-        let rule = quad::rule(STATIC_ORDER, 0.0);
-        let mut cuts: Vec<f64> = g.knots().iter().copied().filter(|&z| z < 1.0).collect();
-        cuts.push(1.0);
-        let mut nn = 0.0;
-        for w in cuts.windows(2) {
-            let h = 0.5 * (w[1] - w[0]);
-            for (&x, &wt) in rule.nodes.iter().zip(&rule.weights) {
-                nn += wt * h * (1.0 - g.eval(w[0] + h * (1.0 + x)).0);
-            }
-        }
-        return Ok((Ratio { mu_ratio: 1.0, reduction: 0.0 }, 0.0, nn));
+        // No oscillation: one side's static force, int (1 - G(z))_+ dz.
+        return Ok((Ratio { mu_ratio: 1.0, reduction: 0.0 }, 0.0, 0.5 * normal_force(g, 1.0)));
     }
     let gmax = *g.values().last().unwrap_or(&0.0);
     if gmax < 1.0 + amp {

@@ -69,6 +69,61 @@ pub fn run(s: &[f64], weight: &[f64], vbar: f64, steps_per_period: usize, period
     run_with(s.len(), &|i| (s[i], weight[i]), vbar, steps_per_period, periods)
 }
 
+/// The seed's update of one spring's tangential force over one step: it grows
+/// by the drive's increment `df` (`kx v0 dt`; `vbar h` in units of
+/// `mu0 kz du`) and is capped by the Coulomb bound `b` (`mu0` times the normal
+/// force); without contact (`b <= 0`) it is 0. The one place the scheme lives.
+#[inline]
+pub fn update(f: f64, b: f64, df: f64) -> f64 {
+    if b > 0.0 {
+        (f + df).min(b)
+    } else {
+        0.0
+    }
+}
+
+/// A single spring in physical units (seed eq. 1): stiffnesses `kx`, `kz`
+/// (N/m), friction coefficient `mu0`, sliding velocity `v0` (m/s), angular
+/// frequency `omega` (1/s), mean indentation `u0` and amplitude `du` (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PhysicalSpring {
+    /// Tangential stiffness.
+    pub kx: f64,
+    /// Normal stiffness.
+    pub kz: f64,
+    /// Coulomb coefficient.
+    pub mu0: f64,
+    /// Sliding velocity.
+    pub v0: f64,
+    /// Angular frequency of the normal oscillation.
+    pub omega: f64,
+    /// Mean indentation.
+    pub u0: f64,
+    /// Oscillation amplitude.
+    pub du: f64,
+}
+
+/// `mu/mu0` of one spring by the seed's scheme in physical units (no
+/// nondimensionalisation: it checks the seed's claim that the result depends
+/// only on `vbar` and `du/u0`), `m` steps per period, the second of two periods.
+pub fn physical_mu_ratio(p: &PhysicalSpring, m: usize) -> f64 {
+    let PhysicalSpring { kx, kz, mu0, v0, omega, u0, du } = *p;
+    let m = m.max(1);
+    let dt = TAU / omega / m as f64;
+    let bound = |t: f64| mu0 * kz * (u0 - du * (omega * t).cos());
+    let mut f = bound(0.0).max(0.0);
+    let (mut sf, mut sn) = (0.0, 0.0);
+    for k in 1..=2 * m {
+        let b = bound(dt * k as f64);
+        f = update(f, b, kx * v0 * dt);
+        if k > m {
+            sf += f;
+            sn += b.max(0.0) / mu0;
+        }
+    }
+    sf / (mu0 * sn)
+}
+
 /// Steps computed per block of the cosine table: memory stays at this many
 /// values whatever the steps per period (a whole table of 10^8 steps took 800 MB).
 const COS_BLOCK: usize = 4096;
@@ -107,7 +162,7 @@ pub fn run_with(
                     let (mut st, mut sn) = (0.0, 0.0);
                     for ((fi, &si), &wi) in f.iter_mut().zip(&sc).zip(&wc) {
                         let b = si - c;
-                        *fi = if b > 0.0 { (*fi + dv).min(b) } else { 0.0 };
+                        *fi = update(*fi, b, dv);
                         st += wi * *fi;
                         sn += wi * b.max(0.0);
                     }
