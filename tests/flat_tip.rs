@@ -108,3 +108,17 @@ fn subnormal_amplitude_gives_the_linear_reduction() {
     let tiny = slope(2.1219957905e-314);
     assert!(((tiny - small) / small).abs() < 1e-9, "{tiny} vs {small}");
 }
+
+/// A flat far below every other length (E = 1e-152 at amp = 2.2e-159): near the
+/// axis t^2 underflowed and the profile's map gave NaN (found by the solver
+/// fuzz target). It is the paraboloid there.
+#[test]
+fn a_vanishing_flat_at_a_tiny_amplitude_is_the_paraboloid() {
+    let amp = 2.2138601171837047e-159;
+    for e in ["1e-152", "6.015012502120174e-153"] {
+        let tip = evaluate(&Shape::parse(&format!("flat-tip:{e}")).unwrap(), 0.5625000000004549, amp).unwrap();
+        let par = evaluate(&Shape::Power(2.0), 0.5625000000004549, amp).unwrap();
+        let rel = (tip.ratio.reduction - par.ratio.reduction).abs() / par.ratio.reduction;
+        assert!(rel < 1e-12, "E = {e}: {} vs {}", tip.ratio.reduction, par.ratio.reduction);
+    }
+}

@@ -70,8 +70,18 @@ impl Curved {
         if t == 0.0 {
             return (self.e, if self.e > 0.0 { 0.0 } else { 1.0 });
         }
+        if t < self.e {
+            // Inside the flat's scale, in r = t/E (t^2 may underflow where r
+            // does not): sqrt(E^4 + 4 t^4 k) = E^2 w with w = sqrt(1 + 4 r^4 k),
+            // z = E sqrt((1 + w)/2), dz/dt = 2 t^3 k/(z E^2 w) = 2 k r^3 E/(z w).
+            let r = t / self.e;
+            let r2 = r * r;
+            let w = (1.0 + 4.0 * r2 * r2 * k).sqrt();
+            let z = self.e * (0.5 * (1.0 + w)).sqrt();
+            return (z, 2.0 * k * r2 * r * (self.e / z) / w);
+        }
         // sqrt(E^4 + 4 t^4 k) = 2 t^2 root, root = sqrt(k + (E^2/(2 t^2))^2): no t^4
-        // (overflow) and no product of two tiny factors (underflow) below.
+        // (overflow), and t >= E keeps t^2 as normal as E^2 is.
         let t2 = t * t;
         let q = 0.5 * e2 / t2;
         let root = (k + q * q).sqrt();
