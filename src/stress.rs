@@ -12,7 +12,7 @@ use std::time::Instant;
 pub const EDGE_VBAR: [f64; 9] =
     [0.0, 5e-324, 1e-300, 1e-16, 1.0 - f64::EPSILON, 1.0, 1.0 + f64::EPSILON, 1e300, f64::MAX];
 /// The edge amplitudes: zero, tiny, `1 -+ 1e-15`, huge.
-pub const EDGE_AMP: [f64; 7] = [0.0, 1e-300, 1.0 - 1e-15, 1.0 + 1e-15, 1e300, 1e308, f64::MAX];
+pub const EDGE_AMP: [f64; 9] = [0.0, 5e-324, 2.2e-308, 1e-300, 1.0 - 1e-15, 1.0 + 1e-15, 1e300, 1e308, f64::MAX];
 /// Points per line of constant amplitude (the monotonicity check).
 const LINE: usize = 16;
 /// Slack for monotonicity: the solvers' absolute accuracy.

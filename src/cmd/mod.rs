@@ -114,16 +114,7 @@ pub(crate) fn tol_of(t: &Option<String>) -> Result<f64> {
 }
 
 pub(crate) fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
-    if amp > 0.0 {
-        let vbar = vhat / amp;
-        if vbar.is_finite() {
-            Ok(vbar)
-        } else {
-            Err(Error::param("vbar", vbar, &format!("vhat / amp = {vhat:?} / {amp:?} overflows double precision")))
-        }
-    } else {
-        Err(Error::param("amp", amp, "--vhat needs amp > 0 (vbar = vhat / amp)"))
-    }
+    fricosc::model::vbar_from_vhat(vhat, amp)
 }
 
 pub(crate) fn io_err(e: io::Error) -> Error {
