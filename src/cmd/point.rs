@@ -4,7 +4,7 @@ use super::{io_err, tol_of, vbar_of, Common};
 use clap::Args;
 use fricosc::error::{Error, Result};
 use fricosc::grid::parse_number;
-use fricosc::shape::{evaluate_stepping, evaluate_with, Shape};
+use fricosc::shape::{evaluate_stepping, Shape};
 use std::io::{self, Write};
 
 #[derive(Args)]
@@ -17,24 +17,8 @@ pub(crate) struct PointArgs {
 }
 
 fn exact_point(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<serde_json::Value> {
-    match shape {
-        Shape::Flat => serde_json::to_value(fricosc::flat::point(vbar, amp)?),
-        Shape::Power(n) => serde_json::to_value(fricosc::mdr::point(*n, vbar, amp, tol)?),
-        Shape::Tabulated(..) | Shape::Registered(..) => {
-            let e = evaluate_with(shape, vbar, amp, tol)?;
-            // vbar and amp first, then the evaluation (interpolation_error only for tables).
-            serde_json::to_value(e).map(|v| {
-                let mut m = serde_json::Map::new();
-                m.insert("vbar".into(), vbar.into());
-                m.insert("amp".into(), amp.into());
-                if let serde_json::Value::Object(o) = v {
-                    m.extend(o);
-                }
-                serde_json::Value::Object(m)
-            })
-        }
-    }
-    .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
+    serde_json::to_value(fricosc::shape::point(shape, vbar, amp, tol)?)
+        .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
 }
 
 pub(crate) fn run(a: PointArgs) -> Result<()> {

@@ -144,6 +144,45 @@ pub struct Evaluation {
     pub interpolation_error: Option<f64>,
 }
 
+/// Everything the solver reports about one point: the flat punch's regime and
+/// events ([`crate::flat::FlatPoint`]), a power law's bands ([`crate::mdr::MdrPoint`]),
+/// or, for other shapes, the evaluation with its error estimates. Serialised
+/// (feature `serde`) as one flat object: `fricosc point`'s output and the
+/// Python package's `point()`.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(untagged))]
+pub enum Point {
+    /// The flat punch.
+    Flat(crate::flat::FlatPoint),
+    /// A power-law profile.
+    Power(crate::mdr::MdrPoint),
+    /// Any other shape.
+    Other {
+        /// Dimensionless velocity.
+        vbar: f64,
+        /// Amplitude `du/u0`.
+        amp: f64,
+        /// The evaluation.
+        #[cfg_attr(feature = "serde", serde(flatten))]
+        evaluation: Evaluation,
+    },
+}
+
+/// The detailed [`Point`] of `shape` at `(vbar, amp)`, `tol` as in [`evaluate_with`].
+pub fn point(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<Point> {
+    check_nonneg("vbar", vbar)?;
+    check_nonneg("amp", amp)?;
+    check_tol(tol)?;
+    Ok(match shape {
+        Shape::Flat => Point::Flat(crate::flat::point(vbar, amp)?),
+        Shape::Power(n) => Point::Power(crate::mdr::point(*n, vbar, amp, tol)?),
+        Shape::Tabulated(..) | Shape::Registered(..) => {
+            Point::Other { vbar, amp, evaluation: evaluate_with(shape, vbar, amp, tol)? }
+        }
+    })
+}
+
 /// Absolute error estimate of the flat punch's `mu_ratio`: one of `mu_ratio`
 /// and the reduction is computed directly with relative error at most
 /// [`crate::ratio::ROUNDING_PER_TERM`] eps (measured: 3.3 eps,
