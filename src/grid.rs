@@ -4,7 +4,7 @@ use crate::error::{Error, Result};
 
 /// Most rows any command reads or writes (tables, batches, validated tables,
 /// histories), and most values one list or range may produce: the one limit.
-pub const MAX_ROWS: usize = 10_000_000;
+pub const MAX_ROWS: usize = fricosc_core::history::MAX_SAMPLES;
 /// [`MAX_ROWS`] for counts computed in `u128` (before they can overflow).
 pub const MAX_LIST: u128 = MAX_ROWS as u128;
 

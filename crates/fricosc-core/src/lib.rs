@@ -38,7 +38,7 @@ pub mod model;
 pub mod numerics;
 pub mod peers;
 
-pub use contact::{flat, mdr, profile, shape};
+pub use contact::{flat, history, mdr, profile, shape};
 pub use error::{Error, Result};
 pub use model::{ratio, spring};
 pub use numerics::{quad, root, special};

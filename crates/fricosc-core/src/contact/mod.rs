@@ -16,6 +16,7 @@ use std::sync::Arc;
 
 pub mod flat;
 pub mod flat_tip;
+pub mod history;
 pub mod mdr;
 pub mod profile;
 pub mod shape;
