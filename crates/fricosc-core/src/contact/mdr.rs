@@ -607,6 +607,16 @@ pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::R
         vec![]
     };
     let mean_normal = Some(2.0 * unscale(nn)).filter(|x| x.is_finite());
+    // At vbar = 0 a small mu_ratio comes from its closed form (the minimum
+    // normal force over the mean: exactly 0 when the body jumps) instead of
+    // 1 - reduction, which is only absolutely accurate (4e-16 at amp >= 1);
+    // the reduction, above 0.5 there, is then 1 - mu to rounding.
+    let ratio = if vbar == 0.0 && ratio.mu_ratio < 0.5 {
+        let mu = mu_static_ratio(n, amp, tol);
+        Ratio { mu_ratio: mu, reduction: 1.0 - mu }
+    } else {
+        ratio
+    };
     Ok(MdrResult { ratio, error_estimate, mean_normal, bands: band_list, nodes: total.nodes })
 }
 

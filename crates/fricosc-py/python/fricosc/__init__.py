@@ -1,0 +1,297 @@
+"""Exact friction reduction by normal oscillation (Popov, Popov, Popov 2017).
+
+``fricosc`` computes ``mu_macro / mu0`` of a contact whose normal load
+oscillates while it slides, as a function of the dimensionless velocity
+``vbar`` (eq. 3) and the amplitude ``amp = du/u0``, with the event-driven
+exact solver of the ``fricosc`` command line (the same Rust core, in process).
+
+>>> import fricosc
+>>> float(fricosc.mu_ratio("flat", 0.2, 0.5))
+0.7145191049466343
+
+Arrays broadcast like numpy's own functions; the result has the broadcast
+shape (a float for scalar inputs). Shapes are strings exactly as on the
+command line (``"flat"``, ``"parabolic"``, ``"cone"``, ``"power:2.5"``,
+``"flat-tip:0.5"``, ``"profile:file.csv@1e-6"``, ``"gx:file.csv@1"``) or the
+classes :class:`Flat`, :class:`PowerLaw`, :class:`FlatTip`, :class:`Profile`
+and :class:`EquivalentProfile` (tables from arrays, no file needed).
+
+Bad input raises ``ValueError`` (``TypeError`` for a wrong type) with the
+command line's message; for an array element the message ends with its index.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+from . import _fricosc
+
+__all__ = [
+    "Shape",
+    "Flat",
+    "PowerLaw",
+    "FlatTip",
+    "Profile",
+    "EquivalentProfile",
+    "mu_ratio",
+    "reduction",
+    "point",
+    "history",
+    "DEFAULT_TOL",
+    "__version__",
+]
+
+__version__: str = _fricosc.__version__
+
+#: Relative quadrature tolerance of curved shapes when ``tol`` is not given.
+DEFAULT_TOL: float = _fricosc.default_tol()
+
+FloatOrArray = Union[float, npt.NDArray[np.float64]]
+
+
+class Shape:
+    """A contact geometry, parsed from its command-line name.
+
+    >>> Shape("parabolic").name
+    'parabolic'
+    """
+
+    _core: _fricosc.CoreShape
+
+    def __init__(self, spec: str) -> None:
+        if not isinstance(spec, str):
+            raise TypeError(f"a shape is a string or a fricosc.Shape, not {type(spec).__name__}")
+        self._core = _fricosc.CoreShape.parse(spec)
+
+    @property
+    def name(self) -> str:
+        """The canonical name (it parses back to the same shape)."""
+        return self._core.name
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.name!r})"
+
+
+class Flat(Shape):
+    """The flat cylindrical punch: one spring (the seed's section 2)."""
+
+    def __init__(self) -> None:
+        super().__init__("flat")
+
+
+class PowerLaw(Shape):
+    """An MDR power-law profile ``g ~ |x|^n`` (``n = 1`` cone, ``n = 2`` paraboloid)."""
+
+    def __init__(self, n: float) -> None:
+        super().__init__(f"power:{float(n)!r}")
+
+
+class FlatTip(Shape):
+    """A sphere worn flat at its tip; ``e`` = flat radius / contact radius, in [0, 1)."""
+
+    def __init__(self, e: float) -> None:
+        super().__init__(f"flat-tip:{float(e)!r}")
+
+
+def _column(values: npt.ArrayLike, what: str) -> npt.NDArray[np.float64]:
+    array = np.ascontiguousarray(np.asarray(values, dtype=np.float64))
+    if array.ndim != 1:
+        raise ValueError(f"{what} must be one-dimensional, got shape {array.shape}")
+    return array
+
+
+class Profile(Shape):
+    """A tabulated axisymmetric profile ``f(r)`` (from the axis outwards, nondecreasing)
+    at mean indentation ``u0`` (in the columns' length unit), MDR-transformed;
+    the same checks and limits as a ``profile:FILE@U0`` file."""
+
+    def __init__(self, r: npt.ArrayLike, f: npt.ArrayLike, u0: float, name: str = "profile") -> None:
+        self._core = _fricosc.CoreShape.from_table(_column(r, "r"), _column(f, "f"), float(u0), True, name)
+
+
+class EquivalentProfile(Shape):
+    """A tabulated MDR equivalent profile ``g(x)`` at mean indentation ``u0``
+    (as ``gx:FILE@U0``)."""
+
+    def __init__(self, x: npt.ArrayLike, g: npt.ArrayLike, u0: float, name: str = "gx") -> None:
+        self._core = _fricosc.CoreShape.from_table(_column(x, "x"), _column(g, "g"), float(u0), False, name)
+
+
+ShapeLike = Union[str, Shape]
+
+
+def _core(shape: ShapeLike) -> _fricosc.CoreShape:
+    if isinstance(shape, Shape):
+        return shape._core
+    return Shape(shape)._core
+
+
+def _velocity(vbar: Optional[npt.ArrayLike], vhat: Optional[npt.ArrayLike]) -> Tuple[npt.ArrayLike, bool]:
+    if vbar is not None and vhat is None:
+        return vbar, False
+    if vbar is None and vhat is not None:
+        return vhat, True
+    raise TypeError("give exactly one of vbar (eq. 3) and vhat (eq. 15, vbar = vhat / amp)")
+
+
+def _floats(x: npt.ArrayLike, what: str) -> npt.NDArray[np.float64]:
+    if isinstance(x, (str, bytes)):
+        raise TypeError(f"{what} must be a number or an array of numbers, not {type(x).__name__}")
+    try:
+        return np.asarray(x, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"{what} must be a number or an array of numbers ({e})") from None
+
+
+def _tol(tol: Optional[float]) -> float:
+    return DEFAULT_TOL if tol is None else float(tol)
+
+
+def _evaluate(
+    shape: ShapeLike,
+    vbar: Optional[npt.ArrayLike],
+    amp: Optional[npt.ArrayLike],
+    vhat: Optional[npt.ArrayLike],
+    tol: Optional[float],
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], Tuple[int, ...]]:
+    core = _core(shape)
+    if amp is None:
+        raise TypeError("amp (du/u0) is required")
+    v, is_vhat = _velocity(vbar, vhat)
+    v_arr, a_arr = np.broadcast_arrays(_floats(v, "vhat" if is_vhat else "vbar"), _floats(amp, "amp"))
+    shape_out = v_arr.shape
+    flat_v = np.ascontiguousarray(v_arr).reshape(-1)
+    flat_a = np.ascontiguousarray(a_arr).reshape(-1)
+    try:
+        mu, red = _fricosc.evaluate(core, flat_v, flat_a, is_vhat, _tol(tol))
+    except (ValueError, RuntimeError) as e:
+        if len(e.args) == 2 and isinstance(e.args[1], int):
+            message, index = e.args
+            if shape_out:
+                where = tuple(int(i) for i in np.unravel_index(index, shape_out))
+                message = f"{message} (at index {where[0] if len(where) == 1 else where})"
+            raise type(e)(message) from None
+        raise
+    return mu.reshape(shape_out), red.reshape(shape_out), shape_out
+
+
+def mu_ratio(
+    shape: ShapeLike,
+    vbar: Optional[npt.ArrayLike] = None,
+    amp: Optional[npt.ArrayLike] = None,
+    *,
+    vhat: Optional[npt.ArrayLike] = None,
+    tol: Optional[float] = None,
+) -> FloatOrArray:
+    """``mu_macro / mu0`` of ``shape`` at velocity ``vbar`` (or ``vhat``) and amplitude ``amp``.
+
+    ``vbar`` and ``amp`` (or ``vhat`` and ``amp``, with ``vbar = vhat / amp``)
+    are numbers or arrays and broadcast against each other; the result is a
+    float for scalar inputs, else a float64 array of the broadcast shape.
+    ``tol`` is the relative quadrature tolerance of curved shapes (default
+    :data:`DEFAULT_TOL`). Arrays of 256 elements or more are evaluated on every
+    core with the GIL released.
+
+    >>> mu_ratio("flat", [0.0, 0.5, 1.0], 0.5).tolist()
+    [0.5, 0.8992738983331656, 1.0]
+    """
+    mu, _, shape_out = _evaluate(shape, vbar, amp, vhat, tol)
+    return float(mu) if not shape_out else mu
+
+
+def reduction(
+    shape: ShapeLike,
+    vbar: Optional[npt.ArrayLike] = None,
+    amp: Optional[npt.ArrayLike] = None,
+    *,
+    vhat: Optional[npt.ArrayLike] = None,
+    tol: Optional[float] = None,
+) -> FloatOrArray:
+    """``1 - mu_macro / mu0``, computed with its own relative accuracy (not as a
+    difference): the friction that the oscillation removes. Arguments as in
+    :func:`mu_ratio`.
+
+    >>> reduction("flat", 1 - 1e-6, 0.5)  # 1 - mu_ratio would keep 3 digits
+    3.580986935971103e-13
+    """
+    _, red, shape_out = _evaluate(shape, vbar, amp, vhat, tol)
+    return float(red) if not shape_out else red
+
+
+def point(
+    shape: ShapeLike,
+    vbar: Optional[float] = None,
+    amp: Optional[float] = None,
+    *,
+    vhat: Optional[float] = None,
+    tol: Optional[float] = None,
+) -> Dict[str, Any]:
+    """Everything the solver reports at one point, as ``fricosc point`` prints it:
+    the regime and events of the flat punch, the bands of a power law, the
+    error estimates.
+
+    >>> p = point("flat", 0.3, 0.5)
+    >>> p["regime"], p["mu_ratio"], [e["kind"] for e in p["events"]]
+    ('permanent_stick_slip', 0.7896790737003745, ['stick', 'slip'])
+    """
+    if amp is None:
+        raise TypeError("amp (du/u0) is required")
+    v, is_vhat = _velocity(vbar, vhat)
+    text = _fricosc.point(_core(shape), _scalar(v, "vbar"), _scalar(amp, "amp"), is_vhat, _tol(tol))
+    result: Dict[str, Any] = json.loads(text)
+    return result
+
+
+def _scalar(x: Any, what: str) -> float:
+    if isinstance(x, (bool, str, bytes)) or not np.isscalar(x) and np.ndim(x) != 0:
+        raise TypeError(f"{what} must be a number, not {type(x).__name__}")
+    try:
+        return float(x)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"{what} must be a number ({e})") from None
+
+
+def history(
+    shape: ShapeLike,
+    vbar: Optional[float] = None,
+    amp: Optional[float] = None,
+    *,
+    vhat: Optional[float] = None,
+    periods: int = 1,
+    samples: int = 400,
+    springs: int = 4000,
+    spring_at: Sequence[float] = (),
+) -> Dict[str, Any]:
+    """The normal force (times mu0) and the tangential force over ``periods``
+    periods (the seed's Fig. 2), as ``fricosc history`` computes them: exact,
+    with every event time among the samples (flat punch).
+
+    Returns a dict with ``tau`` (phase), ``normal``, ``tangential`` (float64
+    arrays), ``event`` (a list: the event at each sample or None), ``units``,
+    and for ``spring_at`` positions ``x/x_c`` the chosen springs' forces
+    ``springs`` (shape ``(samples, len(spring_at), 2)``: normal, tangential).
+    """
+    if amp is None:
+        raise TypeError("amp (du/u0) is required")
+    v, is_vhat = _velocity(vbar, vhat)
+    for name, value in (("periods", periods), ("samples", samples), ("springs", springs)):
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+            raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
+        if value < 1:
+            raise ValueError(f"invalid {name} = {value}: must be >= 1")
+    positions = [_scalar(x, "spring_at") for x in spring_at]
+    result: Dict[str, Any] = _fricosc.history(
+        _core(shape),
+        _scalar(v, "vbar"),
+        _scalar(amp, "amp"),
+        is_vhat,
+        int(periods),
+        int(samples),
+        int(springs),
+        positions,
+    )
+    return result
