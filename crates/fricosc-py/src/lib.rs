@@ -170,8 +170,7 @@ fn history<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let (v, a) = velocity(v, a, vhat).map_err(to_py)?;
     let shape = &shape.inner;
-    let h: History =
-        py.detach(|| core_history(shape, v, a, periods, samples, springs, &spring_at)).map_err(to_py)?;
+    let h: History = py.detach(|| core_history(shape, v, a, periods, samples, springs, &spring_at)).map_err(to_py)?;
     let d = PyDict::new(py);
     d.set_item("shape", &h.shape)?;
     d.set_item("vbar", h.vbar)?;
