@@ -34,14 +34,30 @@ enum Command {
     /// Compare a table of (vbar, amp, mu_ratio) from another code (CSV or JSON) with the exact values.
     /// Exit 1 when the largest error exceeds --max-error.
     Validate {
-        /// Shape of the table's contact.
-        #[arg(long, default_value = "flat")]
-        shape: String,
-        /// Table file; stdin when '-'.
+        /// Shape of the table's contact, where the table names none (a JSON 'shape' field or a
+        /// CSV 'shape' column decides; giving a different one is an error). Default: flat.
+        #[arg(long)]
+        shape: Option<String>,
+        /// Table file (JSON or CSV; columns vbar or vhat, amp, mu_ratio or mu); stdin when '-'.
         file: String,
-        /// Largest acceptable |mu_ratio - exact|.
+        /// Largest acceptable |mu_ratio - exact| (exit 1 beyond it).
         #[arg(long, allow_hyphen_values = true)]
         max_error: Option<String>,
+        /// What a vbar = 0 row is compared with: 'sliding' (the limit vbar -> 0+, mu_static) or
+        /// 'relaxed' (a stepper started from relaxed springs at exactly zero velocity: 0).
+        #[arg(long, default_value = "sliding")]
+        at_rest: String,
+        /// Coulomb coefficient, for a table that gives 'mu' (mu_ratio = mu / mu0).
+        #[arg(long, allow_hyphen_values = true)]
+        mu0: Option<String>,
+        /// How far a value may leave [0, 1], differ from 1 above vbar = 1, or decrease in vbar
+        /// before it is reported as a finding.
+        #[arg(long, default_value = "1e-9", allow_hyphen_values = true)]
+        tolerance: String,
+        /// summary (a short report; the default on a terminal), json (the default otherwise) or csv
+        /// (one line per row).
+        #[arg(long)]
+        format: Option<String>,
     },
     /// Work-precision benchmark: exact solver vs time stepping; writes JSON, CSV and SVG to DIR.
     Bench {
@@ -166,7 +182,9 @@ fn main() -> ExitCode {
         Command::Claims { format } => done(cmd::claims::run(&format)),
         Command::Stress { points, seed } => cmd::stress::run(points, seed),
         Command::Batch { file, method } => done(method.stepping().and_then(|st| cmd::batch::run(file, st))),
-        Command::Validate { shape, file, max_error } => cmd::validate::run(&shape, file, max_error),
+        Command::Validate { shape, file, max_error, at_rest, mu0, tolerance, format } => {
+            cmd::validate::run(cmd::validate::ValidateArgs { shape, file, max_error, at_rest, mu0, tolerance, format })
+        }
     };
     // Every exit code is decided here.
     match result {

@@ -1,105 +1,120 @@
-//! `validate`: compare another code's table of `(vbar, amp, mu_ratio)` with the
-//! exact solver.
+//! `validate`: read another code's table and compare it with the exact solver
+//! ([`fricosc_core::validation`]).
 //!
-//! Input is JSON (an array of row objects, or an object with a `rows` array, as
-//! `fricosc table` prints) or CSV with a header row naming at least `vbar`,
-//! `amp` and `mu_ratio` (other columns are listed as `ignored_columns` in the
-//! report; `--shape` decides the geometry). The format is recognised by the first non-blank character.
+//! Input is JSON (an array of row objects, or an object with a `rows` array and
+//! optionally a `shape`, as `fricosc table` prints) or CSV with a header row.
+//! Columns: `vbar` or `vhat` (eq. 15, `vbar = vhat / amp`), `amp`, and
+//! `mu_ratio` or `mu` (then `mu_ratio = mu / mu0`, `--mu0` required);
+//! optionally `shape` (a CSV column, a JSON row field or the JSON object's
+//! field). Other CSV columns are listed as `ignored_columns`. The format is
+//! recognised by the first non-blank character.
 
-use crate::error::{check_nonneg, Error, Result};
+use crate::error::{Error, Result};
 use crate::grid::parse_number;
-use crate::rows::{number, pick, raw_array};
-use crate::shape::{evaluate, Shape};
-use rayon::prelude::*;
-use serde::Serialize;
+use crate::rows::{number, pick, raw_array, string};
 use serde_json::value::RawValue;
+
+pub use fricosc_core::validation::*;
 
 /// Most rows one file may hold.
 pub const MAX_ROWS: usize = crate::grid::MAX_ROWS;
 
-/// One compared row.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Row {
-    /// Index of the row in the input (0-based, header not counted).
-    pub row: usize,
-    /// Dimensionless velocity.
-    pub vbar: f64,
+/// One row as read: the velocity column (`vbar` or `vhat`) and the friction
+/// column (`mu_ratio` or `mu`) as the file names them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RawRow {
+    /// `vbar`, or `vhat` if [`RawTable::vhat`].
+    pub velocity: f64,
     /// Amplitude `du/u0`.
     pub amp: f64,
-    /// The value under test.
-    pub mu_ratio: f64,
-    /// The exact value.
-    pub exact: f64,
-    /// `mu_ratio - exact`.
-    pub error: f64,
+    /// `mu_ratio`, or `mu` if [`RawTable::mu`].
+    pub friction: f64,
 }
 
-/// The comparison of a whole table.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Validation {
-    /// Shape name.
-    pub shape: String,
-    /// Number of rows.
-    pub n: usize,
-    /// Largest `|error|`.
-    pub max_abs_error: f64,
-    /// Root mean square of the errors.
-    pub rms_error: f64,
-    /// The row with the largest `|error|` (absent for an empty table).
-    pub worst: Option<Row>,
-    /// CSV columns that were read but not compared (absent when none).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub ignored_columns: Vec<String>,
-    /// Every row.
-    pub rows: Vec<Row>,
-}
-
-/// Read `(vbar, amp, mu_ratio)` rows from JSON or CSV text; `source` names it in errors.
-///
-/// JSON rows are read from their raw text (no value trees; duplicate keys are
-/// refused). CSV is read with a real CSV reader (quoted fields, a byte-order
-/// mark tolerated by [`crate::input`]); a duplicated column is refused, and a
-/// table without data rows is an error, never a pass.
-pub fn read_rows(text: &str, source: &str) -> Result<Vec<(f64, f64, f64)>> {
-    Ok(read_table(text, source)?.rows)
-}
-
-/// The rows of a table and the CSV columns that were not used.
+/// A table as read.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Table {
-    /// `(vbar, amp, mu_ratio)` per row.
-    pub rows: Vec<(f64, f64, f64)>,
-    /// CSV header columns other than `vbar`, `amp`, `mu_ratio` (not compared).
+pub struct RawTable {
+    /// The shape the file names (one for the whole table), if any.
+    pub shape: Option<String>,
+    /// True if the velocities are `vhat`.
+    pub vhat: bool,
+    /// True if the friction column is `mu` (not divided by `mu0`).
+    pub mu: bool,
+    /// The rows.
+    pub rows: Vec<RawRow>,
+    /// CSV header columns that are not read.
     pub ignored_columns: Vec<String>,
 }
 
-/// As [`read_rows`], with the ignored CSV columns.
-pub fn read_table(text: &str, source: &str) -> Result<Table> {
+/// One of two alternative columns, exactly one present: `(which, index)`.
+fn one_of(names: [&str; 2], have: [bool; 2], what: &str, missing: &str) -> std::result::Result<bool, String> {
+    match have {
+        [true, false] => Ok(false),
+        [false, true] => Ok(true),
+        [true, true] => Err(format!("both '{}' and '{}' given: one {what} only", names[0], names[1])),
+        [false, false] => Err(format!("{missing} '{}' (or '{}')", names[0], names[1])),
+    }
+}
+
+/// Read a table (JSON or CSV); `source` names it in errors. Every row is read
+/// and checked before anything is compared; a table without rows is an error.
+pub fn read_table(text: &str, source: &str) -> Result<RawTable> {
     let err = |reason: String| Error::Parse { context: source.into(), reason };
+    let mut shapes: Vec<String> = vec![];
     let mut ignored_columns = vec![];
-    let rows = match text.trim_start().chars().next() {
+    let (mut vhat, mut mu) = (None::<bool>, None::<bool>);
+    // The same alternative for every row.
+    let agree = |slot: &mut Option<bool>, value: bool, what: &str, i: usize| -> Result<()> {
+        match *slot {
+            Some(v) if v != value => Err(err(format!("row {i}: the {what} column changes from one row to the next"))),
+            _ => {
+                *slot = Some(value);
+                Ok(())
+            }
+        }
+    };
+    let rows: Vec<RawRow> = match text.trim_start().chars().next() {
         None => return Err(err("empty input".into())),
         Some('[') | Some('{') => {
             let whole: &RawValue = serde_json::from_str(text).map_err(|e| err(format!("malformed JSON: {e}")))?;
             let array = if whole.get().starts_with('{') {
-                let p = pick(whole, &["rows"]).map_err(err)?;
+                let p = pick(whole, &["rows", "shape"]).map_err(err)?;
+                if let Some(s) = p.0[1] {
+                    shapes.push(string(s, "shape").map_err(err)?.into_owned());
+                }
                 p.0[0].ok_or_else(|| err("a JSON object needs a 'rows' array".into()))?
             } else {
                 whole
             };
-            let rows = raw_array(array.get()).map_err(|_| err("'rows' must be a JSON array".into()))?;
-            rows.iter()
-                .enumerate()
-                .map(|(i, r)| {
-                    let row_err = |reason: String| err(format!("row {i}: {reason}"));
-                    let p = pick(r, &["vbar", "amp", "mu_ratio"]).map_err(row_err)?;
-                    let get = |k: usize, name: &str| {
-                        let raw = p.0[k].ok_or_else(|| row_err(format!("missing field '{name}'")))?;
-                        number(raw, name).map_err(row_err)
-                    };
-                    Ok((get(0, "vbar")?, get(1, "amp")?, get(2, "mu_ratio")?))
-                })
-                .collect::<Result<Vec<_>>>()?
+            let raw = raw_array(array.get()).map_err(|_| err("'rows' must be a JSON array".into()))?;
+            let mut rows = Vec::with_capacity(raw.len());
+            for (i, r) in raw.iter().enumerate() {
+                let row_err = |reason: String| err(format!("row {i}: {reason}"));
+                let p = pick(r, &["vbar", "vhat", "amp", "mu_ratio", "mu", "shape"]).map_err(row_err)?;
+                let is_vhat =
+                    one_of(["vbar", "vhat"], [p.0[0].is_some(), p.0[1].is_some()], "velocity", "missing field")
+                        .map_err(row_err)?;
+                let is_mu =
+                    one_of(["mu_ratio", "mu"], [p.0[3].is_some(), p.0[4].is_some()], "friction value", "missing field")
+                        .map_err(row_err)?;
+                agree(&mut vhat, is_vhat, "velocity", i)?;
+                agree(&mut mu, is_mu, "friction", i)?;
+                let get = |k: usize, name: &str| {
+                    number(p.0[k].ok_or_else(|| row_err(format!("missing field '{name}'")))?, name).map_err(row_err)
+                };
+                if let Some(s) = p.0[5] {
+                    let s = string(s, "shape").map_err(row_err)?;
+                    if !shapes.iter().any(|x| x == &*s) {
+                        shapes.push(s.into_owned());
+                    }
+                }
+                rows.push(RawRow {
+                    velocity: get(if is_vhat { 1 } else { 0 }, if is_vhat { "vhat" } else { "vbar" })?,
+                    amp: get(2, "amp")?,
+                    friction: get(if is_mu { 4 } else { 3 }, if is_mu { "mu" } else { "mu_ratio" })?,
+                });
+            }
+            rows
         }
         Some(_) => {
             let mut rd = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
@@ -110,23 +125,38 @@ pub fn read_table(text: &str, source: &str) -> Result<Table> {
                     return Err(err(format!("CSV header has column '{h}' twice")));
                 }
             }
-            let col = |name: &str| {
-                header.iter().position(|h| h == name).ok_or_else(|| err(format!("CSV header lacks column '{name}'")))
-            };
-            let (cv, ca, cm) = (col("vbar")?, col("amp")?, col("mu_ratio")?);
+            let col = |name: &str| header.iter().position(|h| h == name);
+            let lacks = "CSV header lacks column";
+            let is_vhat = one_of(["vbar", "vhat"], [col("vbar").is_some(), col("vhat").is_some()], "velocity", lacks)
+                .map_err(err)?;
+            let is_mu =
+                one_of(["mu_ratio", "mu"], [col("mu_ratio").is_some(), col("mu").is_some()], "friction value", lacks)
+                    .map_err(err)?;
+            let (vname, mname) = (if is_vhat { "vhat" } else { "vbar" }, if is_mu { "mu" } else { "mu_ratio" });
+            let need = |name: &str| col(name).ok_or_else(|| err(format!("CSV header lacks column '{name}'")));
+            let (cv, ca, cm, cs) = (need(vname)?, need("amp")?, need(mname)?, col("shape"));
+            vhat = Some(is_vhat);
+            mu = Some(is_mu);
             ignored_columns =
-                header.iter().filter(|h| !["vbar", "amp", "mu_ratio"].contains(&h.as_str())).cloned().collect();
-            rd.records()
-                .enumerate()
-                .map(|(i, rec)| {
-                    let rec = rec.map_err(|e| err(format!("row {i}: {e}")))?;
-                    let get = |c: usize, name: &str| {
-                        let t = rec.get(c).ok_or_else(|| err(format!("row {i}: missing column '{name}'")))?;
-                        parse_number(&format!("{source}: row {i}: {name}"), t)
-                    };
-                    Ok((get(cv, "vbar")?, get(ca, "amp")?, get(cm, "mu_ratio")?))
-                })
-                .collect::<Result<Vec<_>>>()?
+                header.iter().filter(|h| ![vname, "amp", mname, "shape"].contains(&h.as_str())).cloned().collect();
+            let mut rows = vec![];
+            for (i, rec) in rd.records().enumerate() {
+                let rec = rec.map_err(|e| err(format!("row {i}: {e}")))?;
+                let get = |c: usize, name: &str| {
+                    let t = rec.get(c).ok_or_else(|| err(format!("row {i}: missing column '{name}'")))?;
+                    parse_number(&format!("{source}: row {i}: {name}"), t)
+                };
+                if let Some(s) = cs.and_then(|c| rec.get(c)) {
+                    if !shapes.iter().any(|x| x == s) {
+                        shapes.push(s.to_string());
+                    }
+                }
+                rows.push(RawRow { velocity: get(cv, vname)?, amp: get(ca, "amp")?, friction: get(cm, mname)? });
+                if rows.len() > MAX_ROWS {
+                    break;
+                }
+            }
+            rows
         }
     };
     if rows.is_empty() {
@@ -139,29 +169,160 @@ pub fn read_table(text: &str, source: &str) -> Result<Table> {
             limit: MAX_ROWS as u128,
         });
     }
-    for (i, &(v, a, m)) in rows.iter().enumerate() {
-        let at = |e: Error| err(format!("row {i}: {e}"));
-        check_nonneg("vbar", v).map_err(at)?;
-        check_nonneg("amp", a).map_err(at)?;
-        if !m.is_finite() {
-            return Err(err(format!("row {i}: mu_ratio is not finite")));
-        }
+    if shapes.len() > 1 {
+        return Err(err(format!(
+            "the table names more than one shape ({}): validate one shape at a time",
+            shapes.iter().map(|s| format!("'{s}'")).collect::<Vec<_>>().join(", ")
+        )));
     }
-    Ok(Table { rows, ignored_columns })
+    Ok(RawTable { shape: shapes.pop(), vhat: vhat.unwrap_or(false), mu: mu.unwrap_or(false), rows, ignored_columns })
 }
 
-/// Compare `rows` with the exact solver for `shape`.
-pub fn validate(shape: &Shape, rows: &[(f64, f64, f64)]) -> Result<Validation> {
-    let exact: Vec<Result<f64>> =
-        rows.par_iter().map(|&(v, a, _)| evaluate(shape, v, a).map(|e| e.ratio.mu_ratio)).collect();
-    let mut out = Vec::with_capacity(rows.len());
-    for (i, (&(vbar, amp, mu_ratio), e)) in rows.iter().zip(exact).enumerate() {
-        let exact = e?;
-        out.push(Row { row: i, vbar, amp, mu_ratio, exact, error: mu_ratio - exact });
+/// `(vbar, amp, mu_ratio)` of every row: `vbar = vhat / amp` for `vhat` tables,
+/// `mu_ratio = mu / mu0` for `mu` tables (`mu0` required then, refused otherwise).
+pub fn normalise(table: &RawTable, mu0: Option<f64>, source: &str) -> Result<Vec<(f64, f64, f64)>> {
+    let err = |reason: String| Error::Parse { context: source.into(), reason };
+    let mu0 = match (table.mu, mu0) {
+        (true, Some(m)) if m.is_finite() && m > 0.0 => m,
+        (true, Some(m)) => return Err(Error::param("mu0", m, "must be finite and > 0")),
+        (true, None) => return Err(err("the table gives 'mu': --mu0 is needed (mu_ratio = mu / mu0)".into())),
+        (false, Some(_)) => {
+            return Err(err("--mu0 given, but the table gives 'mu_ratio' (already divided by mu0)".into()))
+        }
+        (false, None) => 1.0,
+    };
+    table
+        .rows
+        .iter()
+        .enumerate()
+        .map(|(i, r)| {
+            let at = |e: Error| err(format!("row {i}: {e}"));
+            fricosc_core::error::check_nonneg("amp", r.amp).map_err(at)?;
+            let vbar = if table.vhat {
+                fricosc_core::model::vbar_from_vhat(r.velocity, r.amp).map_err(at)?
+            } else {
+                fricosc_core::error::check_nonneg("vbar", r.velocity).map_err(at)?
+            };
+            Ok((vbar, r.amp, r.friction / mu0))
+        })
+        .collect()
+}
+
+/// The name of a regime (as JSON writes it).
+fn regime_name(r: RowRegime) -> String {
+    serde_json::to_value(r).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default()
+}
+
+/// Every compared row as CSV (one header line).
+pub fn rows_csv(v: &Validation) -> Result<String> {
+    let n = crate::output::num;
+    let mut w = csv::Writer::from_writer(vec![]);
+    let header = ["row", "vbar", "amp", "mu_ratio", "exact", "error", "relative_error", "regime"];
+    let fail = |e: csv::Error| Error::Internal { what: format!("writing CSV: {e}") };
+    w.write_record(header).map_err(fail)?;
+    for r in &v.rows {
+        let rel = r.relative_error.map(n).unwrap_or_default();
+        let rec =
+            [r.row.to_string(), n(r.vbar), n(r.amp), n(r.mu_ratio), n(r.exact), n(r.error), rel, regime_name(r.regime)];
+        w.write_record(rec).map_err(fail)?;
     }
-    let n = out.len();
-    let worst = out.iter().copied().max_by(|a, b| a.error.abs().total_cmp(&b.error.abs()));
-    let max_abs_error = worst.map_or(0.0, |w| w.error.abs());
-    let rms_error = if n > 0 { (out.iter().map(|r| r.error * r.error).sum::<f64>() / n as f64).sqrt() } else { 0.0 };
-    Ok(Validation { shape: shape.name(), n, max_abs_error, rms_error, worst, ignored_columns: vec![], rows: out })
+    let bytes = w.into_inner().map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })?;
+    String::from_utf8(bytes).map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })
+}
+
+/// Words wrapped to lines of at most `width` characters, the first prefixed by
+/// `first` and the rest indented as deep.
+fn wrap(first: &str, text: &str, width: usize) -> String {
+    let indent = " ".repeat(first.chars().count());
+    let mut out = String::new();
+    let mut line = first.to_string();
+    for word in text.split_whitespace() {
+        if line.chars().count() + 1 + word.chars().count() > width && !line.trim().is_empty() && line != first {
+            out.push_str(line.trim_end());
+            out.push('\n');
+            line = indent.clone();
+        } else if !line.ends_with(' ') && !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    out.push_str(line.trim_end());
+    out.push('\n');
+    out
+}
+
+/// A short report for a person (lines of at most 100 characters).
+pub fn summary(v: &Validation, shape_source: &str, ignored: &[String]) -> String {
+    let e = |x: f64| format!("{x:.2e}");
+    let w = &v.worst;
+    let at_rest = match v.at_rest {
+        AtRest::Sliding => "the sliding limit vbar -> 0+ (mu_static; --at-rest relaxed for a relaxed start)",
+        AtRest::Relaxed => "a relaxed start (0; --at-rest sliding for the limit vbar -> 0+)",
+    };
+    let mut s = String::new();
+    s += &wrap("", &format!("fricosc validate: {} rows, shape {} ({shape_source}).", v.n, v.shape), 100);
+    s += &wrap("", &format!("Rows at vbar = 0 are compared with {at_rest}."), 100);
+    s += &wrap(
+        "",
+        &format!(
+            "Largest |error| {} at row {} (vbar {}, amp {}: {} against the exact {}); rms {}.",
+            e(v.max_abs_error),
+            w.row,
+            w.vbar,
+            w.amp,
+            w.mu_ratio,
+            w.exact,
+            e(v.rms_error)
+        ),
+        100,
+    );
+    if !ignored.is_empty() {
+        s += &wrap("", &format!("Columns not read: {}.", ignored.join(", ")), 100);
+    }
+    s += &format!(
+        "\n{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
+        "regime", "rows", "max |error|", "rms error", "max rel error", "worst row"
+    );
+    for g in &v.by_regime {
+        let m = &g.summary;
+        s += &format!(
+            "{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
+            regime_name(g.regime),
+            m.n,
+            e(m.max_abs_error),
+            e(m.rms_error),
+            e(m.max_rel_error),
+            m.worst_row
+        );
+    }
+    s += &format!(
+        "\n{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
+        "amp", "rows", "max |error|", "rms error", "max rel error", "worst row"
+    );
+    for g in &v.by_amp {
+        let m = &g.summary;
+        s += &format!(
+            "{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
+            g.amp,
+            m.n,
+            e(m.max_abs_error),
+            e(m.rms_error),
+            e(m.max_rel_error),
+            m.worst_row
+        );
+    }
+    if v.findings.is_empty() {
+        s += &format!("\nFindings: none (value checks to {:?}).\n", v.tolerance);
+    } else {
+        s += &format!("\nFindings (value checks to {:?}):\n", v.tolerance);
+        for f in &v.findings {
+            let kind =
+                serde_json::to_value(f.kind).ok().and_then(|k| k.as_str().map(str::to_string)).unwrap_or_default();
+            let rows = f.rows.iter().map(|r| r.to_string()).collect::<Vec<_>>().join(", ");
+            let more = if f.count > f.rows.len() { ", ..." } else { "" };
+            let noun = if f.count == 1 { "row" } else { "rows" };
+            s += &wrap("- ", &format!("{kind}: {} {noun} ({rows}{more}): {}", f.count, f.hint), 100);
+        }
+    }
+    s
 }

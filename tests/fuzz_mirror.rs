@@ -35,8 +35,8 @@ proptest! {
 
     #[test]
     fn validate_reader_never_panics(text in ".{0,200}") {
-        let _ = fricosc::validate::read_rows(&text, "fuzz");
-        let _ = fricosc::validate::read_rows(&format!("vbar,amp,mu_ratio\n{text}"), "fuzz");
+        let _ = fricosc::validate::read_table(&text, "fuzz");
+        let _ = fricosc::validate::read_table(&format!("vbar,amp,mu_ratio\n{text}"), "fuzz");
     }
 
     #[test]
