@@ -178,34 +178,13 @@ pub fn read_table(text: &str, source: &str) -> Result<RawTable> {
     Ok(RawTable { shape: shapes.pop(), vhat: vhat.unwrap_or(false), mu: mu.unwrap_or(false), rows, ignored_columns })
 }
 
-/// `(vbar, amp, mu_ratio)` of every row: `vbar = vhat / amp` for `vhat` tables,
-/// `mu_ratio = mu / mu0` for `mu` tables (`mu0` required then, refused otherwise).
+/// `(vbar, amp, mu_ratio)` of every row ([`fricosc_core::validation::rows_from_columns`]).
 pub fn normalise(table: &RawTable, mu0: Option<f64>, source: &str) -> Result<Vec<(f64, f64, f64)>> {
-    let err = |reason: String| Error::Parse { context: source.into(), reason };
-    let mu0 = match (table.mu, mu0) {
-        (true, Some(m)) if m.is_finite() && m > 0.0 => m,
-        (true, Some(m)) => return Err(Error::param("mu0", m, "must be finite and > 0")),
-        (true, None) => return Err(err("the table gives 'mu': --mu0 is needed (mu_ratio = mu / mu0)".into())),
-        (false, Some(_)) => {
-            return Err(err("--mu0 given, but the table gives 'mu_ratio' (already divided by mu0)".into()))
-        }
-        (false, None) => 1.0,
-    };
-    table
-        .rows
-        .iter()
-        .enumerate()
-        .map(|(i, r)| {
-            let at = |e: Error| err(format!("row {i}: {e}"));
-            fricosc_core::error::check_nonneg("amp", r.amp).map_err(at)?;
-            let vbar = if table.vhat {
-                fricosc_core::model::vbar_from_vhat(r.velocity, r.amp).map_err(at)?
-            } else {
-                fricosc_core::error::check_nonneg("vbar", r.velocity).map_err(at)?
-            };
-            Ok((vbar, r.amp, r.friction / mu0))
-        })
-        .collect()
+    let v: Vec<f64> = table.rows.iter().map(|r| r.velocity).collect();
+    let a: Vec<f64> = table.rows.iter().map(|r| r.amp).collect();
+    let m: Vec<f64> = table.rows.iter().map(|r| r.friction).collect();
+    rows_from_columns(&v, &a, &m, table.vhat, table.mu, mu0)
+        .map_err(|e| Error::Parse { context: source.into(), reason: e.to_string() })
 }
 
 /// The name of a regime (as JSON writes it).

@@ -162,7 +162,7 @@ fn the_command_reads_shapes_velocities_and_formats() {
     assert_eq!(doc["ignored_columns"], serde_json::json!(["code"]));
     assert_eq!(doc["rows"][0]["regime"], "jumping_stick_first");
     let no_mu0 = fricosc_cmd(&["validate", "-"], &csv);
-    assert!(String::from_utf8_lossy(&no_mu0.stderr).contains("--mu0 is needed"));
+    assert!(String::from_utf8_lossy(&no_mu0.stderr).contains("mu0 is needed"));
     // CSV output: one line per row plus the header; the summary names findings.
     let csv_out = fricosc_cmd(&["validate", "-", "--mu0", "0.4", "--format", "csv"], &csv);
     let text = String::from_utf8(csv_out.stdout).unwrap();

@@ -197,6 +197,36 @@ fn history<'py>(
     Ok(d)
 }
 
+/// A table's comparison with the exact values (`fricosc validate`'s JSON), a
+/// string: columns as `fricosc_core::validation::rows_from_columns` reads them.
+#[pyfunction]
+#[pyo3(signature = (shape, velocity, amp, friction, vhat, mu, mu0, at_rest, tolerance))]
+#[allow(clippy::too_many_arguments)]
+fn validate(
+    py: Python<'_>,
+    shape: &CoreShape,
+    velocity: PyReadonlyArray1<'_, f64>,
+    amp: PyReadonlyArray1<'_, f64>,
+    friction: PyReadonlyArray1<'_, f64>,
+    vhat: bool,
+    mu: bool,
+    mu0: Option<f64>,
+    at_rest: &str,
+    tolerance: f64,
+) -> PyResult<String> {
+    use fricosc_core::validation::{compare, rows_from_columns, AtRest};
+    let at_rest = match at_rest {
+        "sliding" => AtRest::Sliding,
+        "relaxed" => AtRest::Relaxed,
+        other => return Err(PyValueError::new_err(format!("at_rest: '{other}' is neither 'sliding' nor 'relaxed'"))),
+    };
+    let (v, a, m) = (velocity.as_array().to_vec(), amp.as_array().to_vec(), friction.as_array().to_vec());
+    let rows = rows_from_columns(&v, &a, &m, vhat, mu, mu0).map_err(to_py)?;
+    let shape = &shape.inner;
+    let result = py.detach(|| compare(shape, &rows, at_rest, tolerance)).map_err(to_py)?;
+    serde_json::to_string(&result).map_err(|e| PyRuntimeError::new_err(format!("serialising: {e}")))
+}
+
 /// The default relative quadrature tolerance of curved shapes.
 #[pyfunction]
 fn default_tol() -> f64 {
@@ -209,6 +239,7 @@ fn _fricosc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(point, m)?)?;
     m.add_function(wrap_pyfunction!(history, m)?)?;
+    m.add_function(wrap_pyfunction!(validate, m)?)?;
     m.add_function(wrap_pyfunction!(default_tol, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

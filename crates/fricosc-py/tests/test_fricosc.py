@@ -263,3 +263,33 @@ def test_readme_session_works_as_printed() -> None:
     runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
     runner.run(test)
     assert runner.failures == 0 and runner.tries >= 8
+
+
+def test_validate_is_the_command_lines() -> None:
+    """The README walk-through's buggy table: the same report (findings, errors,
+    regimes) through Python as through `fricosc validate`."""
+    script = ROOT / "crates" / "fricosc-py" / "examples" / "buggy_stepper.py"
+    import sys
+
+    text = subprocess.run([sys.executable, str(script)], check=True, capture_output=True, text=True).stdout
+    path = ROOT / "target" / "py-buggy-run.csv"
+    path.parent.mkdir(exist_ok=True)
+    path.write_text(text)
+    expected = json.loads(cli("validate", str(path), "--format", "json"))
+    rows = list(csv.DictReader(io.StringIO(text)))
+    table = {k: [r[k] for r in rows] for k in ("shape", "vbar", "amp", "mu_ratio")}
+    got = fricosc.validate(table)
+    assert got == expected
+    assert [f["kind"] for f in got["findings"]] == ["above_one", "not_one_above_critical", "not_steady", "at_rest_convention"]
+    relaxed = fricosc.validate(table, at_rest="relaxed")
+    assert "at_rest_convention" not in [f["kind"] for f in relaxed["findings"]]
+    # vhat and mu with mu0; a conflicting shape; a missing mu0.
+    vh = {"vhat": [0.15, 0.6], "amp": [0.5, 2.0], "mu": [0.4 * float(fricosc.mu_ratio("cone", 0.3, 0.5)),
+                                                          0.4 * float(fricosc.mu_ratio("cone", 0.3, 2.0))]}
+    assert fricosc.validate(vh, "cone", mu0=0.4)["max_abs_error"] < 1e-15
+    with pytest.raises(ValueError, match="mu0 is needed"):
+        fricosc.validate(vh, "cone")
+    with pytest.raises(ValueError, match="shape= says 'cone'"):
+        fricosc.validate(table, "cone")
+    with pytest.raises(TypeError, match="mapping of columns"):
+        fricosc.validate([1, 2, 3])

@@ -41,6 +41,7 @@ __all__ = [
     "reduction",
     "point",
     "history",
+    "validate",
     "DEFAULT_TOL",
     "__version__",
 ]
@@ -294,4 +295,68 @@ def history(
         int(springs),
         positions,
     )
+    return result
+
+
+def validate(
+    table: Any,
+    shape: Optional[ShapeLike] = None,
+    *,
+    at_rest: str = "sliding",
+    mu0: Optional[float] = None,
+    tolerance: float = 1e-9,
+) -> Dict[str, Any]:
+    """Compare another code's table with the exact values, as ``fricosc validate``
+    does: the same JSON report as a dict (per-row errors and regimes, errors by
+    regime and by amplitude, findings with hints).
+
+    ``table`` is a mapping of columns (a dict of arrays, a pandas DataFrame):
+    ``vbar`` or ``vhat``, ``amp``, ``mu_ratio`` or ``mu`` (then ``mu0`` is
+    required), and optionally ``shape`` (one value for the whole table; ``shape=``
+    only where the table names none, an error where they disagree; the flat
+    punch by default). ``at_rest``: ``"sliding"`` or ``"relaxed"`` (what a
+    ``vbar = 0`` row is compared with).
+
+    >>> r = validate({"vbar": [0.2, 1.1], "amp": [0.5, 0.5], "mu_ratio": [0.7145, 1.2]})
+    >>> r["max_abs_error"] > 0.19, [f["kind"] for f in r["findings"]]
+    (True, ['above_one', 'not_one_above_critical'])
+    """
+    try:
+        columns = list(table.keys())
+    except AttributeError:
+        raise TypeError(f"a table is a mapping of columns (a dict of arrays, a DataFrame), not {type(table).__name__}") from None
+
+    def has(name: str) -> bool:
+        return name in columns
+
+    def column(name: str) -> npt.NDArray[np.float64]:
+        return _column(_floats(table[name], name), name)
+
+    for pair in (("vbar", "vhat"), ("mu_ratio", "mu")):
+        if has(pair[0]) and has(pair[1]):
+            raise ValueError(f"both '{pair[0]}' and '{pair[1]}' given: one only")
+        if not has(pair[0]) and not has(pair[1]):
+            raise ValueError(f"the table lacks column '{pair[0]}' (or '{pair[1]}')")
+    if not has("amp"):
+        raise ValueError("the table lacks column 'amp'")
+    named = sorted({str(s) for s in np.asarray(table["shape"]).reshape(-1).tolist()}) if has("shape") else []
+    if len(named) > 1:
+        raise ValueError(f"the table names more than one shape ({', '.join(repr(s) for s in named)}): validate one shape at a time")
+    if named and shape is not None and Shape(named[0]).name != (shape if isinstance(shape, Shape) else Shape(shape)).name:
+        raise ValueError(f"the table is for shape '{named[0]}', shape= says '{shape if isinstance(shape, str) else shape.name}'")
+    chosen: ShapeLike = named[0] if named else (shape if shape is not None else "flat")
+    is_vhat, is_mu = has("vhat"), has("mu")
+    text = _fricosc.validate(
+        _core(chosen),
+        column("vhat" if is_vhat else "vbar"),
+        column("amp"),
+        column("mu" if is_mu else "mu_ratio"),
+        is_vhat,
+        is_mu,
+        None if mu0 is None else float(mu0),
+        at_rest,
+        float(tolerance),
+    )
+    result: Dict[str, Any] = json.loads(text)
+    result["shape_source"] = "file" if named else ("option" if shape is not None else "default")
     return result

@@ -1,11 +1,11 @@
 """Type stub of the Rust extension (crates/fricosc-py/src/lib.rs)."""
 
-from typing import Any, Dict, List, Tuple, final
+from typing import Any, Dict, List, Optional, Tuple, final
 
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "evaluate", "point", "history", "default_tol", "__version__"]
+__all__ = ["CoreShape", "evaluate", "point", "history", "validate", "default_tol", "__version__"]
 __version__: str
 
 @final
@@ -33,4 +33,15 @@ def history(
     springs: int,
     spring_at: List[float],
 ) -> Dict[str, Any]: ...
+def validate(
+    shape: CoreShape,
+    velocity: npt.NDArray[np.float64],
+    amp: npt.NDArray[np.float64],
+    friction: npt.NDArray[np.float64],
+    vhat: bool,
+    mu: bool,
+    mu0: Optional[float],
+    at_rest: str,
+    tolerance: float,
+) -> str: ...
 def default_tol() -> float: ...
