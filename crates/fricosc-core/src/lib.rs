@@ -37,6 +37,7 @@ pub mod error;
 pub mod model;
 pub mod numerics;
 pub mod peers;
+pub mod scene;
 pub mod validation;
 
 pub use contact::{flat, history, mdr, profile, shape};

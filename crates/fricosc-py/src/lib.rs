@@ -227,6 +227,30 @@ fn validate(
     serde_json::to_string(&result).map_err(|e| PyRuntimeError::new_err(format!("serialising: {e}")))
 }
 
+/// A physical scene (`fricosc scene`): its JSON text in (or, without `text`, the
+/// file `source`, read with the command line's cap), its result's JSON out;
+/// `source` is its path (a profile file is found relative to it) or a name.
+#[pyfunction]
+#[pyo3(signature = (text, source))]
+fn scene(py: Python<'_>, text: Option<&str>, source: &str) -> PyResult<String> {
+    let owned;
+    let text = match text {
+        Some(t) => t,
+        None => {
+            owned = read_file(source).map_err(to_py)?;
+            &owned
+        }
+    };
+    // A scene is a JSON object: serde would also take its fields as an array.
+    if !text.trim_start().starts_with('{') {
+        return Err(PyValueError::new_err(format!("{source}: a scene is a JSON object ({{...}})")));
+    }
+    let s: fricosc_core::scene::Scene = serde_json::from_str(text)
+        .map_err(|e| to_py(Error::Parse { context: source.into(), reason: e.to_string() }))?;
+    let result = py.detach(|| fricosc_core::scene::solve_with(&s, source, &read_file, &|_| {})).map_err(to_py)?;
+    serde_json::to_string(&result).map_err(|e| PyRuntimeError::new_err(format!("serialising: {e}")))
+}
+
 /// The default relative quadrature tolerance of curved shapes.
 #[pyfunction]
 fn default_tol() -> f64 {
@@ -240,6 +264,7 @@ fn _fricosc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(point, m)?)?;
     m.add_function(wrap_pyfunction!(history, m)?)?;
     m.add_function(wrap_pyfunction!(validate, m)?)?;
+    m.add_function(wrap_pyfunction!(scene, m)?)?;
     m.add_function(wrap_pyfunction!(default_tol, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -293,3 +293,20 @@ def test_validate_is_the_command_lines() -> None:
         fricosc.validate(table, "cone")
     with pytest.raises(TypeError, match="mapping of columns"):
         fricosc.validate([1, 2, 3])
+
+
+def test_scene_is_the_command_lines() -> None:
+    """Every example scene through Python (from its path, and as a dict where it
+    names no file) gives `fricosc scene`'s JSON."""
+    for path in sorted((ROOT / "data" / "scenes").glob("*.json")):
+        expected = json.loads(cli("scene", str(path), "--format", "json"))
+        assert fricosc.scene(str(path)) == expected, path.name
+        spec = json.loads(path.read_text())
+        if "profile" not in spec["indenter"]:
+            assert fricosc.scene(spec) == expected, path.name
+    with pytest.raises(ValueError, match="unknown field"):
+        fricosc.scene({"mu0": 0.4, "colour": "red"})
+    with pytest.raises(ValueError, match="cannot read"):
+        fricosc.scene("/nonexistent/scene.json")
+    with pytest.raises(TypeError, match="a scene is a dict"):
+        fricosc.scene(42)  # type: ignore[arg-type]

@@ -23,6 +23,7 @@ command line's message; for an array element the message ends with its index.
 from __future__ import annotations
 
 import json
+import os
 from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -42,6 +43,7 @@ __all__ = [
     "point",
     "history",
     "validate",
+    "scene",
     "DEFAULT_TOL",
     "__version__",
 ]
@@ -359,4 +361,28 @@ def validate(
     )
     result: Dict[str, Any] = json.loads(text)
     result["shape_source"] = "file" if named else ("option" if shape is not None else "default")
+    return result
+
+
+def scene(spec: Union[Dict[str, Any], str, "os.PathLike[str]"]) -> Dict[str, Any]:
+    """Solve a physical scene (SI units), as ``fricosc scene`` does: ``spec`` is
+    the scene as a dict (the JSON file's content) or the path of its file (a
+    tabulated profile's file is then found relative to it). Returns the result
+    as a dict (``rows`` of velocity, ``mu_ratio``, friction force, ...).
+
+    >>> r = scene({"materials": {"e1_pa": 2e11, "nu1": 0.3, "e2_pa": 2e11, "nu2": 0.3}, "mu0": 0.4,
+    ...            "indenter": {"sphere": {"radius_m": 5e-3}}, "loading": {"mean_indentation_m": 1e-6},
+    ...            "oscillation": {"amplitude_m": 5e-7, "frequency_hz": 1e3},
+    ...            "velocity": {"values_m_per_s": [1e-3]}})
+    >>> round(r["rows"][0]["mu_ratio"], 12)
+    0.936881842762
+    """
+    text: Optional[str]
+    if isinstance(spec, dict):
+        text, source = json.dumps(spec), "scene"
+    elif isinstance(spec, (str, os.PathLike)):
+        text, source = None, os.fspath(spec)  # read by the extension, with the command line's size cap
+    else:
+        raise TypeError(f"a scene is a dict or the path of a JSON file, not {type(spec).__name__}")
+    result: Dict[str, Any] = json.loads(_fricosc.scene(text, source))
     return result

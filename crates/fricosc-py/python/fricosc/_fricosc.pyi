@@ -5,7 +5,7 @@ from typing import Any, Dict, List, Optional, Tuple, final
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "evaluate", "point", "history", "validate", "default_tol", "__version__"]
+__all__ = ["CoreShape", "evaluate", "point", "history", "validate", "scene", "default_tol", "__version__"]
 __version__: str
 
 @final
@@ -44,4 +44,5 @@ def validate(
     at_rest: str,
     tolerance: float,
 ) -> str: ...
+def scene(text: Optional[str], source: str) -> str: ...
 def default_tol() -> float: ...
