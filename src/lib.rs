@@ -30,4 +30,5 @@ pub mod plot;
 pub mod rows;
 pub mod scene;
 pub mod stress;
+pub mod suite;
 pub mod validate;

@@ -59,6 +59,16 @@ enum Command {
         #[arg(long)]
         format: Option<String>,
     },
+    /// The reference suite: canonical cases with error bounds, a manifest and a README (--out),
+    /// or verify a copy of it (--check; exit 1 when a file differs).
+    Suite {
+        /// Write the suite into this directory (created if missing).
+        #[arg(long)]
+        out: Option<String>,
+        /// Check the suite in this directory against the current solver.
+        #[arg(long)]
+        check: Option<String>,
+    },
     /// Work-precision benchmark: exact solver vs time stepping; writes JSON, CSV and SVG to DIR.
     Bench {
         /// Output directory (created if missing).
@@ -180,6 +190,7 @@ fn main() -> ExitCode {
             done(cmd::history::run(&shape, &velocity, &amp, (periods, samples, springs), spring_at.as_deref(), &format))
         }
         Command::Claims { format } => done(cmd::claims::run(&format)),
+        Command::Suite { out, check } => cmd::suite::run(out, check),
         Command::Stress { points, seed } => cmd::stress::run(points, seed),
         Command::Batch { file, method } => done(method.stepping().and_then(|st| cmd::batch::run(file, st))),
         Command::Validate { shape, file, max_error, at_rest, mu0, tolerance, format } => {

@@ -16,6 +16,7 @@ pub(crate) mod history;
 pub(crate) mod point;
 pub(crate) mod scene;
 pub(crate) mod stress;
+pub(crate) mod suite;
 pub(crate) mod table;
 pub(crate) mod validate;
 
