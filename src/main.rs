@@ -39,7 +39,20 @@ enum Command {
         #[arg(long)]
         shape: Option<String>,
         /// Table file (JSON or CSV; columns vbar or vhat, amp, mu_ratio or mu); stdin when '-'.
-        file: String,
+        /// With --series: several, each with its resolution (run@1000.csv, or run.csv@1000).
+        #[arg(required = true)]
+        files: Vec<String>,
+        /// A convergence study: the same table at several resolutions (e.g. steps per period);
+        /// reports the observed order per row and regime, the error constant, the Richardson value
+        /// and the resolution needed for --target.
+        #[arg(long)]
+        series: bool,
+        /// With --series: the target error for the needed resolution.
+        #[arg(long, allow_hyphen_values = true)]
+        target: Option<String>,
+        /// With --series: draw the errors against the resolution (SVG) into this file.
+        #[arg(long)]
+        plot: Option<String>,
         /// Largest acceptable |mu_ratio - exact| (exit 1 beyond it).
         #[arg(long, allow_hyphen_values = true)]
         max_error: Option<String>,
@@ -193,8 +206,19 @@ fn main() -> ExitCode {
         Command::Suite { out, check } => cmd::suite::run(out, check),
         Command::Stress { points, seed } => cmd::stress::run(points, seed),
         Command::Batch { file, method } => done(method.stepping().and_then(|st| cmd::batch::run(file, st))),
-        Command::Validate { shape, file, max_error, at_rest, mu0, tolerance, format } => {
-            cmd::validate::run(cmd::validate::ValidateArgs { shape, file, max_error, at_rest, mu0, tolerance, format })
+        Command::Validate { shape, files, series, target, plot, max_error, at_rest, mu0, tolerance, format } => {
+            cmd::validate::run(cmd::validate::ValidateArgs {
+                shape,
+                files,
+                series,
+                target,
+                plot,
+                max_error,
+                at_rest,
+                mu0,
+                tolerance,
+                format,
+            })
         }
     };
     // Every exit code is decided here.

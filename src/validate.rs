@@ -305,3 +305,125 @@ pub fn summary(v: &Validation, shape_source: &str, ignored: &[String]) -> String
     }
     s
 }
+
+/// A convergence study as CSV: one line per row, its order, constant,
+/// Richardson error and needed resolution, then its error at each resolution.
+pub fn series_csv(c: &Convergence) -> Result<String> {
+    let n = crate::output::num;
+    let opt = |x: Option<f64>| x.map(n).unwrap_or_default();
+    let fail = |e: csv::Error| Error::Internal { what: format!("writing CSV: {e}") };
+    let mut w = csv::Writer::from_writer(vec![]);
+    let mut header: Vec<String> =
+        ["vbar", "amp", "regime", "exact", "order", "constant", "richardson_error", "needed_resolution"]
+            .map(String::from)
+            .to_vec();
+    header.extend(c.resolutions.iter().map(|r| format!("error@{}", n(*r))));
+    w.write_record(&header).map_err(fail)?;
+    for r in &c.rows {
+        let mut rec = vec![
+            n(r.vbar),
+            n(r.amp),
+            regime_name(r.regime),
+            n(r.exact),
+            opt(r.order),
+            opt(r.constant),
+            opt(r.richardson_error),
+            opt(r.needed_resolution),
+        ];
+        rec.extend(r.errors.iter().map(|e| n(*e)));
+        w.write_record(&rec).map_err(fail)?;
+    }
+    let bytes = w.into_inner().map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })?;
+    String::from_utf8(bytes).map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })
+}
+
+/// A convergence study for a person: orders per regime, then every row.
+pub fn series_summary(c: &Convergence) -> String {
+    let e = |x: f64| format!("{x:.2e}");
+    let opt = |x: Option<f64>, f: &dyn Fn(f64) -> String| x.map(f).unwrap_or_else(|| "-".into());
+    let res: Vec<String> = c.resolutions.iter().map(|r| r.to_string()).collect();
+    let mut s = wrap(
+        "",
+        &format!("fricosc validate --series: {} rows of {} at resolutions {}.", c.rows.len(), c.shape, res.join(", ")),
+        100,
+    );
+    s += &wrap(
+        "",
+        "Observed order: the least-squares slope of log |error| against log resolution (errors at rounding left out).",
+        100,
+    );
+    s += &format!("\n{:<22}{:>6}{:>14}{:>8}{:>8}\n", "regime", "rows", "median order", "min", "max");
+    for g in &c.by_regime {
+        s += &format!(
+            "{:<22}{:>6}{:>14.2}{:>8.2}{:>8.2}\n",
+            regime_name(g.regime),
+            g.n,
+            g.median_order,
+            g.min_order,
+            g.max_order
+        );
+    }
+    let needed = if c.target.is_some() { "needed" } else { "" };
+    s += &format!(
+        "\n{:>8}{:>6}  {:<20}{:>7}{:>11}{:>13}{:>13}{:>12}\n",
+        "vbar", "amp", "regime", "order", "constant", "last error", "richardson", needed
+    );
+    for r in &c.rows {
+        s += &format!(
+            "{:>8}{:>6}  {:<20}{:>7}{:>11}{:>13}{:>13}{:>12}\n",
+            r.vbar,
+            r.amp,
+            regime_name(r.regime),
+            opt(r.order, &|p| format!("{p:.2}")),
+            opt(r.constant, &e),
+            e(*r.errors.last().unwrap_or(&0.0)),
+            opt(r.richardson_error, &e),
+            opt(r.needed_resolution, &|m| format!("{m:.3e}"))
+        );
+    }
+    s
+}
+
+/// Errors against resolution, log-log (log10 of both), per regime: the
+/// geometric mean of its rows' errors (solid) and the slope of its median order
+/// through the last point (dashed).
+pub fn series_svg(c: &Convergence) -> Result<String> {
+    let mut series = vec![];
+    let (mut ylo, mut yhi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for g in &c.by_regime {
+        let rows: Vec<&SeriesRow> = c.rows.iter().filter(|r| r.regime == g.regime).collect();
+        let mut pts = vec![];
+        for (k, &m) in c.resolutions.iter().enumerate() {
+            let logs: Vec<f64> = rows.iter().map(|r| r.errors[k].abs()).filter(|x| *x > 0.0).map(f64::log10).collect();
+            if !logs.is_empty() {
+                pts.push((m.log10(), logs.iter().sum::<f64>() / logs.len() as f64));
+            }
+        }
+        let Some(&(xl, yl)) = pts.last() else { continue };
+        let x0 = c.resolutions[0].log10();
+        let fitted = vec![(x0, yl + g.median_order * (xl - x0)), (xl, yl)];
+        for &(_, y) in pts.iter().chain(&fitted) {
+            ylo = ylo.min(y);
+            yhi = yhi.max(y);
+        }
+        series.push(crate::plot::Series { label: regime_name(g.regime), points: pts, dashed: false });
+        series.push(crate::plot::Series {
+            label: format!("order {:.2}", g.median_order),
+            points: fitted,
+            dashed: true,
+        });
+    }
+    let (x0, x1) = (c.resolutions[0].log10(), c.resolutions[c.resolutions.len() - 1].log10());
+    if !(ylo.is_finite() && yhi.is_finite()) {
+        return Err(Error::Parse { context: "--plot".into(), reason: "no errors above zero to draw".into() });
+    }
+    crate::plot::lines(
+        &format!("{}: error against resolution", c.shape),
+        "log10 resolution (e.g. steps per period)",
+        "log10 |mu_ratio - exact| (geometric mean per regime)",
+        (x0 - 0.05, x1 + 0.05),
+        (ylo - 0.3, yhi + 0.3),
+        &series,
+    )
+    .map_err(|e| Error::Internal { what: format!("drawing the plot: {e}") })
+}

@@ -197,3 +197,64 @@ fn the_readme_walk_through_names_every_planted_bug() {
     assert_eq!(doc["findings"], serde_json::json!([]), "{doc}");
     assert!(doc["max_abs_error"].as_f64().unwrap() < 1e-3);
 }
+
+/// The convergence study on the built-in peer (the seed's scheme) at 1000 to
+/// 64000 steps per period: second order without contact loss, first order
+/// where the stick starts at contact (the onset falls between steps), with the
+/// files' resolutions read from their names or after '@', and the plot drawn.
+#[test]
+fn the_series_finds_the_orders_of_the_seeds_scheme() {
+    use fricosc::shape::{evaluate_stepping, Stepping};
+    let dir = std::env::temp_dir().join(format!("fricosc-series-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut args: Vec<String> = vec!["validate".into(), "--series".into(), "--format".into(), "json".into()];
+    for k in 0..7 {
+        let m = 1000usize << k;
+        let mut text = String::from("vbar,amp,mu_ratio\n");
+        for a in [0.5, 0.9, 1.5, 2.0] {
+            for v in [0.2, 0.4, 0.6, 0.8] {
+                let st = Stepping { steps_per_period: m, springs: 1 };
+                let mu = evaluate_stepping(&Shape::Flat, v, a, st).unwrap().ratio.mu_ratio;
+                text += &format!("{v:?},{a:?},{mu:?}\n");
+            }
+        }
+        // Both ways of naming the resolution.
+        let (file, arg) = if k % 2 == 0 {
+            (dir.join(format!("run@{m}.csv")), dir.join(format!("run@{m}.csv")).display().to_string())
+        } else {
+            let f = dir.join(format!("run-{k}.csv"));
+            (f.clone(), format!("{}@{m}", f.display()))
+        };
+        std::fs::write(&file, text).unwrap();
+        args.push(arg);
+    }
+    let plot = dir.join("series.svg");
+    args.extend(["--target".into(), "1e-6".into(), "--plot".into(), plot.display().to_string()]);
+    let out = Command::new(env!("CARGO_BIN_EXE_fricosc")).args(&args).output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let median = |regime: &str| {
+        doc["by_regime"].as_array().unwrap().iter().find(|g| g["regime"] == regime).unwrap()["median_order"]
+            .as_f64()
+            .unwrap()
+    };
+    // Observed 1.94 and 1.00.
+    assert!((1.7..2.3).contains(&median("permanent_contact")), "{doc}");
+    assert!((0.8..1.2).contains(&median("jumping_stick_first")), "{doc}");
+    assert_eq!(doc["resolutions"].as_array().unwrap().len(), 7);
+    assert!(doc["rows"].as_array().unwrap().iter().all(|r| r["needed_resolution"].as_f64().is_some_and(|m| m > 0.0)));
+    assert!(std::fs::read_to_string(&plot).unwrap().starts_with("<svg"));
+    // A file without its resolution is refused.
+    let bad = Command::new(env!("CARGO_BIN_EXE_fricosc"))
+        .args([
+            "validate",
+            "--series",
+            dir.join("run-1.csv").to_str().unwrap(),
+            dir.join("run-3.csv").to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("needs its resolution"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

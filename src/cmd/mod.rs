@@ -150,3 +150,12 @@ pub(crate) fn check_out_dir(out: &str) -> Result<()> {
 pub(crate) fn to_json<T: serde::Serialize>(value: &T) -> Result<String> {
     serde_json::to_string_pretty(value).map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
 }
+
+/// Write `text` to the file `path` (an empty path is refused; a failed write is
+/// an error naming the path).
+pub(crate) fn write_file(path: &str, text: &str) -> Result<()> {
+    if path.trim().is_empty() {
+        return Err(Error::Parse { context: "--plot".into(), reason: "the file name is empty".into() });
+    }
+    std::fs::write(path, text).map_err(|e| Error::write(path, e))
+}

@@ -4,13 +4,17 @@
 use super::{io_err, read_input, Outcome};
 use fricosc::error::{Error, Result};
 use fricosc::grid::parse_number;
-use fricosc::validate::{AtRest, Validation};
+use fricosc::shape::Shape;
+use fricosc::validate::{AtRest, Convergence, Validation};
 use std::io::{self, IsTerminal, Write};
 
 /// The options of `validate` (see `main.rs` for their help).
 pub(crate) struct ValidateArgs {
     pub(crate) shape: Option<String>,
-    pub(crate) file: String,
+    pub(crate) files: Vec<String>,
+    pub(crate) series: bool,
+    pub(crate) target: Option<String>,
+    pub(crate) plot: Option<String>,
     pub(crate) max_error: Option<String>,
     pub(crate) at_rest: String,
     pub(crate) mu0: Option<String>,
@@ -66,25 +70,19 @@ pub(crate) fn run(a: ValidateArgs) -> Result<Outcome> {
         None if io::stdout().is_terminal() => "summary".into(),
         None => "json".into(),
     };
-    let (text, source) = read_input(Some(a.file))?;
+    if a.series {
+        return run_series(&a, at_rest, mu0, &format);
+    }
+    if a.files.len() != 1 || a.target.is_some() || a.plot.is_some() {
+        return Err(Error::Parse {
+            context: "validate".into(),
+            reason: "several files, --target and --plot need --series".into(),
+        });
+    }
+    let (text, source) = read_input(Some(a.files[0].clone()))?;
     let table = fricosc::validate::read_table(&text, &source)?;
     drop(text);
-    // The file's shape decides; --shape only where the file names none.
-    let (shape, shape_source) = match (&table.shape, &a.shape) {
-        (Some(f), Some(o)) => {
-            let (fs, os) = (fricosc::input::parse_shape(f)?, fricosc::input::parse_shape(o)?);
-            if fs.name() != os.name() {
-                return Err(Error::Parse {
-                    context: source,
-                    reason: format!("the table is for shape '{f}', --shape says '{o}'"),
-                });
-            }
-            (fs, ShapeSource::File)
-        }
-        (Some(f), None) => (fricosc::input::parse_shape(f)?, ShapeSource::File),
-        (None, Some(o)) => (fricosc::input::parse_shape(o)?, ShapeSource::Option),
-        (None, None) => (fricosc::shape::Shape::Flat, ShapeSource::Default),
-    };
+    let (shape, shape_source) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
     let rows = fricosc::validate::normalise(&table, mu0, &source)?;
     let v = fricosc::validate::compare(&shape, &rows, at_rest, tolerance)?;
     let report = Report { validation: &v, shape_source, ignored_columns: &table.ignored_columns };
@@ -105,4 +103,89 @@ fn report_source(r: &Report) -> String {
         ShapeSource::Option => "from --shape".into(),
         ShapeSource::Default => "the default: the table names none and --shape is not given".into(),
     }
+}
+
+/// The file's shape decides; `--shape` only where the file names none (an
+/// error where the two disagree); the flat punch where neither does.
+fn choose_shape(file: Option<&str>, option: Option<&str>, source: &str) -> Result<(Shape, ShapeSource)> {
+    Ok(match (file, option) {
+        (Some(f), Some(o)) => {
+            let (fs, os) = (fricosc::input::parse_shape(f)?, fricosc::input::parse_shape(o)?);
+            if fs.name() != os.name() {
+                return Err(Error::Parse {
+                    context: source.into(),
+                    reason: format!("the table is for shape '{f}', --shape says '{o}'"),
+                });
+            }
+            (fs, ShapeSource::File)
+        }
+        (Some(f), None) => (fricosc::input::parse_shape(f)?, ShapeSource::File),
+        (None, Some(o)) => (fricosc::input::parse_shape(o)?, ShapeSource::Option),
+        (None, None) => (Shape::Flat, ShapeSource::Default),
+    })
+}
+
+/// `FILE@N` (the resolution after the last `@`), or a file named like
+/// `run@1000.csv` (the digits after the last `@` of its name).
+fn file_and_resolution(arg: &str) -> Result<(String, f64)> {
+    let bad = || Error::Parse {
+        context: arg.into(),
+        reason: "a series file needs its resolution: run@1000.csv or run.csv@1000".into(),
+    };
+    let (head, tail) = arg.rsplit_once('@').ok_or_else(bad)?;
+    if let Ok(n) = tail.trim().parse::<f64>() {
+        return Ok((head.to_string(), n));
+    }
+    let digits: String = tail.chars().take_while(|c| c.is_ascii_digit() || *c == '.' || *c == 'e').collect();
+    let n = digits.trim_end_matches('.').parse::<f64>().map_err(|_| bad())?;
+    Ok((arg.to_string(), n))
+}
+
+#[derive(serde::Serialize)]
+struct SeriesReport<'a> {
+    #[serde(flatten)]
+    convergence: &'a Convergence,
+    shape_source: ShapeSource,
+}
+
+fn run_series(a: &ValidateArgs, at_rest: AtRest, mu0: Option<f64>, format: &str) -> Result<Outcome> {
+    let target = a.target.as_deref().map(|t| parse_number("--target", t)).transpose()?;
+    if a.files.len() < 2 {
+        return Err(Error::Parse { context: "--series".into(), reason: "needs two files or more".into() });
+    }
+    let mut resolutions = vec![];
+    let mut tables = vec![];
+    let mut chosen: Option<(Shape, ShapeSource)> = None;
+    for arg in &a.files {
+        let (file, n) = file_and_resolution(arg)?;
+        let (text, source) = read_input(Some(file))?;
+        let table = fricosc::validate::read_table(&text, &source)?;
+        let (shape, src) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
+        if let Some((s, _)) = &chosen {
+            if s.name() != shape.name() {
+                return Err(Error::Parse {
+                    context: source,
+                    reason: format!("its shape '{}' differs from the series' '{}'", shape.name(), s.name()),
+                });
+            }
+        }
+        chosen = Some((shape, src));
+        tables.push(fricosc::validate::normalise(&table, mu0, &source)?);
+        resolutions.push(n);
+    }
+    let (shape, shape_source) = chosen.ok_or_else(|| Error::Internal { what: "an empty series".into() })?;
+    let c = fricosc::validate::convergence(&shape, &resolutions, &tables, at_rest, target)?;
+    if let Some(path) = &a.plot {
+        let svg = fricosc::validate::series_svg(&c)?;
+        super::write_file(path, &svg)?;
+    }
+    let body = match format {
+        "json" => super::to_json(&SeriesReport { convergence: &c, shape_source })? + "\n",
+        "csv" => fricosc::validate::series_csv(&c)?,
+        _ => fricosc::validate::series_summary(&c),
+    };
+    let mut out = io::BufWriter::new(io::stdout().lock());
+    out.write_all(body.as_bytes()).map_err(io_err)?;
+    out.flush().map_err(io_err)?;
+    Ok(Outcome::Done)
 }
