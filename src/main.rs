@@ -53,6 +53,28 @@ enum Command {
         /// With --series: draw the errors against the resolution (SVG) into this file.
         #[arg(long)]
         plot: Option<String>,
+        /// The file is a force history (CSV: tau or t, tangential, optionally normal; forces in
+        /// units of kz u0 and mu0 kz u0) of the flat punch at --vbar (or --vhat) and --amp: errors
+        /// over the last period, periodicity, and the stick/slip/contact events with timing errors.
+        #[arg(long)]
+        history: bool,
+        /// With --history: the velocity vbar (eq. 3).
+        #[arg(long, allow_hyphen_values = true)]
+        vbar: Option<String>,
+        /// With --history: the velocity vhat (eq. 15), instead of --vbar.
+        #[arg(long, allow_hyphen_values = true)]
+        vhat: Option<String>,
+        /// With --history: the amplitude du/u0.
+        #[arg(long, allow_hyphen_values = true)]
+        amp: Option<String>,
+        /// With --history and a time column t: the angular frequency (tau = omega t); without it
+        /// the period and phase are found from the normal force's maxima (at tau = pi).
+        #[arg(long, allow_hyphen_values = true)]
+        omega: Option<String>,
+        /// With --history: forces in your units, where the static normal force kz u0 is this value
+        /// (normal / kz_u0; tangential / (mu0 kz_u0) with --mu0). Default: already normalised.
+        #[arg(long, allow_hyphen_values = true)]
+        kz_u0: Option<String>,
         /// Largest acceptable |mu_ratio - exact| (exit 1 beyond it).
         #[arg(long, allow_hyphen_values = true)]
         max_error: Option<String>,
@@ -131,6 +153,13 @@ enum Command {
         /// json, csv or svg.
         #[arg(long, default_value = "json")]
         format: String,
+        /// exact (default) or stepping: the seed's time-stepping scheme (flat punch), one row per
+        /// step, the same columns (for comparing with validate --history).
+        #[arg(long, value_enum, default_value = "exact")]
+        method: cmd::MethodArg,
+        /// Time steps per period with --method stepping (default 1000).
+        #[arg(long, allow_hyphen_values = true)]
+        steps_per_period: Option<usize>,
     },
     /// The seed's Figs. 3, 4, 5 (+ inset), 7, 8: exact curves and the seed's approximations, as JSON, CSV, SVG.
     Figures {
@@ -199,27 +228,72 @@ fn main() -> ExitCode {
         Command::Bench { out, quick } => done(cmd::bench::run(&out, quick)),
         Command::Scene { files, schema, format } => done(cmd::scene::run(files, schema, format)),
         Command::Figures { out } => done(cmd::figures::run(&out)),
-        Command::History { shape, velocity, amp, periods, samples, springs, spring_at, format } => {
-            done(cmd::history::run(&shape, &velocity, &amp, (periods, samples, springs), spring_at.as_deref(), &format))
+        Command::History {
+            shape,
+            velocity,
+            amp,
+            periods,
+            samples,
+            springs,
+            spring_at,
+            format,
+            method,
+            steps_per_period,
+        } => {
+            let stepping = match (method, steps_per_period) {
+                (cmd::MethodArg::Stepping, m) => Ok(Some(m.unwrap_or(cmd::DEFAULT_STEPPING))),
+                (_, Some(_)) => Err(Error::Parse {
+                    context: "--steps-per-period".into(),
+                    reason: "applies only with --method stepping".into(),
+                }),
+                (_, None) => Ok(None),
+            };
+            done(stepping.and_then(|st| {
+                cmd::history::run(
+                    &shape,
+                    &velocity,
+                    &amp,
+                    (periods, samples, springs),
+                    spring_at.as_deref(),
+                    &format,
+                    st,
+                )
+            }))
         }
         Command::Claims { format } => done(cmd::claims::run(&format)),
         Command::Suite { out, check } => cmd::suite::run(out, check),
         Command::Stress { points, seed } => cmd::stress::run(points, seed),
         Command::Batch { file, method } => done(method.stepping().and_then(|st| cmd::batch::run(file, st))),
-        Command::Validate { shape, files, series, target, plot, max_error, at_rest, mu0, tolerance, format } => {
-            cmd::validate::run(cmd::validate::ValidateArgs {
-                shape,
-                files,
-                series,
-                target,
-                plot,
-                max_error,
-                at_rest,
-                mu0,
-                tolerance,
-                format,
-            })
-        }
+        Command::Validate {
+            shape,
+            files,
+            series,
+            target,
+            plot,
+            history,
+            vbar,
+            vhat,
+            amp,
+            omega,
+            kz_u0,
+            max_error,
+            at_rest,
+            mu0,
+            tolerance,
+            format,
+        } => cmd::validate::run(cmd::validate::ValidateArgs {
+            shape,
+            files,
+            series,
+            target,
+            plot,
+            history: history.then_some(cmd::validate::HistoryArgs { vbar, vhat, amp, omega, kz_u0 }),
+            max_error,
+            at_rest,
+            mu0,
+            tolerance,
+            format,
+        }),
     };
     // Every exit code is decided here.
     match result {

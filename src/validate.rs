@@ -427,3 +427,103 @@ pub fn series_svg(c: &Convergence) -> Result<String> {
     )
     .map_err(|e| Error::Internal { what: format!("drawing the plot: {e}") })
 }
+
+fn event_name(k: fricosc_core::spring::EventKind) -> String {
+    serde_json::to_value(k).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default()
+}
+
+/// The events found in a history, as CSV.
+pub fn events_csv(v: &HistoryValidation) -> Result<String> {
+    let n = crate::output::num;
+    let opt = |x: Option<f64>| x.map(n).unwrap_or_default();
+    let fail = |e: csv::Error| Error::Internal { what: format!("writing CSV: {e}") };
+    let mut w = csv::Writer::from_writer(vec![]);
+    w.write_record(["kind", "tau", "exact_tau", "timing_error"]).map_err(fail)?;
+    for e in &v.events {
+        w.write_record([event_name(e.kind), n(e.tau), opt(e.exact_tau), opt(e.timing_error)]).map_err(fail)?;
+    }
+    let bytes = w.into_inner().map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })?;
+    String::from_utf8(bytes).map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })
+}
+
+/// A history's comparison for a person.
+pub fn history_summary(v: &HistoryValidation) -> String {
+    let e = |x: f64| format!("{x:.2e}");
+    let mut s = wrap(
+        "",
+        &format!(
+            "fricosc validate --history: flat punch at vbar {}, amp {}; {} whole periods, {} samples in the last.",
+            v.vbar, v.amp, v.periods, v.samples
+        ),
+        100,
+    );
+    s += &wrap(
+        "",
+        &format!(
+            "Tangential force over the last period: largest |error| {}, rms {} (units mu0 kz u0).",
+            e(v.max_abs_error),
+            e(v.rms_error)
+        ),
+        100,
+    );
+    s += &wrap(
+        "",
+        &match (v.period_drift, v.periodic, v.periods_needed) {
+            (Some(d), Some(true), _) => {
+                format!("Periodic: the last period differs from the one before by {} at most.", e(d))
+            }
+            (Some(d), _, Some(k)) => format!(
+                "Not yet periodic: the last period differs from the one before by up to {}; about {k} more periods \
+                 would bring that below the tolerance.",
+                e(d)
+            ),
+            (Some(d), _, None) => format!(
+                "Not yet periodic: the last period differs from the one before by up to {} (and the drift does not \
+                 decay from period to period: run more periods, or check the start).",
+                e(d)
+            ),
+            _ => "One period only: periodicity cannot be judged (give two or more).".into(),
+        },
+        100,
+    );
+    s += &format!("\n{:<18}{:>12}{:>12}{:>14}\n", "event", "tau", "exact tau", "timing error");
+    for f in &v.events {
+        let o = |x: Option<f64>| x.map_or("-".into(), |y| format!("{y:.6}"));
+        s += &format!(
+            "{:<18}{:>12.6}{:>12}{:>14}\n",
+            event_name(f.kind),
+            f.tau,
+            o(f.exact_tau),
+            f.timing_error.map_or("-".into(), e)
+        );
+    }
+    if v.above_bound_count > 0 {
+        let first: Vec<String> = v.above_bound.iter().map(|t| format!("{t:.4}")).collect();
+        s += &wrap(
+            "",
+            &format!(
+                "Above the Coulomb bound at {} samples (tau = {}{}): the tangential force exceeds mu0 times the \
+                 normal force, so the switch from stick to slip is missed (check the stick end, eq. 8, and its sign).",
+                v.above_bound_count,
+                first.join(", "),
+                if v.above_bound_count > first.len() { ", ..." } else { "" }
+            ),
+            100,
+        );
+    }
+    let found: Vec<_> = v.events.iter().map(|f| f.kind).collect();
+    for x in &v.exact_events {
+        if !found.contains(&x.kind) {
+            s += &wrap(
+                "",
+                &format!(
+                    "Missing: the exact {} at tau = {:.6} has no counterpart in the history.",
+                    event_name(x.kind),
+                    x.tau
+                ),
+                100,
+            );
+        }
+    }
+    s
+}

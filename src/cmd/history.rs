@@ -12,6 +12,7 @@ pub(crate) fn run(
     (periods, samples, springs): (usize, usize, usize),
     spring_at: Option<&str>,
     format: &str,
+    stepping: Option<usize>,
 ) -> Result<()> {
     let chosen = match spring_at {
         Some(t) => parse_values("--spring-at", t)?,
@@ -25,7 +26,18 @@ pub(crate) fn run(
         (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
     };
     let format = Format::parse(format, &[Format::Json, Format::Csv, Format::Svg])?;
-    let h = fricosc::history::history(&shape, vbar, amp, periods, samples, springs, &chosen)?;
+    let h = match stepping {
+        None => fricosc::history::history(&shape, vbar, amp, periods, samples, springs, &chosen)?,
+        Some(m) => {
+            if shape != fricosc::shape::Shape::Flat || !chosen.is_empty() {
+                return Err(fricosc::error::Error::InvalidShape {
+                    spec: shape.name(),
+                    reason: "history --method stepping steps the flat punch (without --spring-at)".into(),
+                });
+            }
+            fricosc::history::stepped_history(vbar, amp, periods, m)?
+        }
+    };
     let text = export(&h, format)?;
     emit(if text.ends_with('\n') { text } else { text + "\n" }.as_str())
 }

@@ -15,11 +15,21 @@ pub(crate) struct ValidateArgs {
     pub(crate) series: bool,
     pub(crate) target: Option<String>,
     pub(crate) plot: Option<String>,
+    pub(crate) history: Option<HistoryArgs>,
     pub(crate) max_error: Option<String>,
     pub(crate) at_rest: String,
     pub(crate) mu0: Option<String>,
     pub(crate) tolerance: String,
     pub(crate) format: Option<String>,
+}
+
+/// The options of `validate --history`.
+pub(crate) struct HistoryArgs {
+    pub(crate) vbar: Option<String>,
+    pub(crate) vhat: Option<String>,
+    pub(crate) amp: Option<String>,
+    pub(crate) omega: Option<String>,
+    pub(crate) kz_u0: Option<String>,
 }
 
 /// Where the shape came from.
@@ -72,6 +82,9 @@ pub(crate) fn run(a: ValidateArgs) -> Result<Outcome> {
     };
     if a.series {
         return run_series(&a, at_rest, mu0, &format);
+    }
+    if let Some(h) = &a.history {
+        return run_history(&a, h, mu0, tolerance, &format);
     }
     if a.files.len() != 1 || a.target.is_some() || a.plot.is_some() {
         return Err(Error::Parse {
@@ -188,4 +201,83 @@ fn run_series(a: &ValidateArgs, at_rest: AtRest, mu0: Option<f64>, format: &str)
     out.write_all(body.as_bytes()).map_err(io_err)?;
     out.flush().map_err(io_err)?;
     Ok(Outcome::Done)
+}
+
+fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f64, format: &str) -> Result<Outcome> {
+    if a.files.len() != 1 {
+        return Err(Error::Parse { context: "--history".into(), reason: "takes one file".into() });
+    }
+    if let Some(spec) = &a.shape {
+        if fricosc::input::parse_shape(spec)? != Shape::Flat {
+            return Err(Error::InvalidShape {
+                spec: spec.clone(),
+                reason: "validate --history compares with the flat punch's exact history".into(),
+            });
+        }
+    }
+    let amp = parse_number(
+        "--amp",
+        h.amp.as_deref().ok_or_else(|| Error::Parse { context: "--history".into(), reason: "needs --amp".into() })?,
+    )?;
+    let vbar = match (&h.vbar, &h.vhat) {
+        (Some(v), None) => parse_number("--vbar", v)?,
+        (None, Some(v)) => super::vbar_of(parse_number("--vhat", v)?, amp)?,
+        _ => return Err(Error::Parse { context: "--history".into(), reason: "needs one of --vbar and --vhat".into() }),
+    };
+    let omega = h.omega.as_deref().map(|w| parse_number("--omega", w)).transpose()?;
+    let (text, source) = read_input(Some(a.files[0].clone()))?;
+    let err = |reason: String| Error::Parse { context: source.clone(), reason };
+    let mut rd = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
+    let header: Vec<String> =
+        rd.headers().map_err(|e| err(format!("CSV header: {e}")))?.iter().map(str::to_string).collect();
+    let col = |name: &str| header.iter().position(|h| h == name);
+    let (time, is_tau) = match (col("tau"), col("t")) {
+        (Some(c), None) => (c, true),
+        (None, Some(c)) => (c, false),
+        (Some(_), Some(_)) => return Err(err("both 'tau' and 't' given: one time column only".into())),
+        (None, None) => return Err(err("CSV header lacks column 'tau' (or 't')".into())),
+    };
+    let tangential = col("tangential").ok_or_else(|| err("CSV header lacks column 'tangential'".into()))?;
+    let normal_col = col("normal");
+    let (mut t, mut ft, mut fnorm) = (vec![], vec![], vec![]);
+    for (i, rec) in rd.records().enumerate() {
+        let rec = rec.map_err(|e| err(format!("row {i}: {e}")))?;
+        let get = |c: usize, name: &str| parse_number(&format!("{source}: row {i}: {name}"), rec.get(c).unwrap_or(""));
+        t.push(get(time, "time")?);
+        ft.push(get(tangential, "tangential")?);
+        if let Some(c) = normal_col {
+            fnorm.push(get(c, "normal")?);
+        }
+        if t.len() > fricosc::grid::MAX_ROWS {
+            return Err(Error::TooLarge {
+                what: format!("rows of {source}"),
+                count: t.len() as u128,
+                limit: fricosc::grid::MAX_ROWS as u128,
+            });
+        }
+    }
+    // Forces in the user's units: normal / (kz u0), tangential / (mu0 kz u0).
+    let unit = h.kz_u0.as_deref().map(|u| parse_number("--kz-u0", u)).transpose()?.unwrap_or(1.0);
+    let mu0 = mu0.unwrap_or(1.0);
+    for (name, x) in [("kz-u0", unit), ("mu0", mu0)] {
+        if !(x.is_finite() && x > 0.0) {
+            return Err(Error::param(name, x, "must be finite and > 0"));
+        }
+    }
+    fnorm.iter_mut().for_each(|x| *x /= unit);
+    ft.iter_mut().for_each(|x| *x /= mu0 * unit);
+    let normal = normal_col.map(|_| fnorm.as_slice());
+    let taus = fricosc::validate::phases(&t, is_tau, omega, normal)
+        .map_err(|e| Error::Parse { context: source.clone(), reason: e.to_string() })?;
+    let v = fricosc::validate::compare_history(vbar, amp, &taus, &ft, normal, tolerance)?;
+    let body = match format {
+        "json" => super::to_json(&v)? + "\n",
+        "csv" => fricosc::validate::events_csv(&v)?,
+        _ => fricosc::validate::history_summary(&v),
+    };
+    let mut out = io::BufWriter::new(io::stdout().lock());
+    out.write_all(body.as_bytes()).map_err(io_err)?;
+    out.flush().map_err(io_err)?;
+    let max_error = a.max_error.as_deref().map(|m| parse_number("--max-error", m)).transpose()?;
+    Ok(if max_error.is_none_or(|e| v.max_abs_error <= e) { Outcome::Done } else { Outcome::Negative })
 }

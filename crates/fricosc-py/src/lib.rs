@@ -227,6 +227,33 @@ fn validate(
     serde_json::to_string(&result).map_err(|e| PyRuntimeError::new_err(format!("serialising: {e}")))
 }
 
+/// A flat punch's force history against the exact one (`fricosc validate
+/// --history`'s JSON), a string.
+#[pyfunction]
+#[pyo3(signature = (time, is_tau, tangential, normal, v, a, vhat, omega, tolerance))]
+#[allow(clippy::too_many_arguments)]
+fn validate_history(
+    py: Python<'_>,
+    time: PyReadonlyArray1<'_, f64>,
+    is_tau: bool,
+    tangential: PyReadonlyArray1<'_, f64>,
+    normal: Option<PyReadonlyArray1<'_, f64>>,
+    v: f64,
+    a: f64,
+    vhat: bool,
+    omega: Option<f64>,
+    tolerance: f64,
+) -> PyResult<String> {
+    use fricosc_core::validation::{compare_history, phases};
+    let (v, a) = velocity(v, a, vhat).map_err(to_py)?;
+    let t = time.as_array().to_vec();
+    let f = tangential.as_array().to_vec();
+    let n: Option<Vec<f64>> = normal.map(|x| x.as_array().to_vec());
+    let taus = phases(&t, is_tau, omega, n.as_deref()).map_err(to_py)?;
+    let result = py.detach(|| compare_history(v, a, &taus, &f, n.as_deref(), tolerance)).map_err(to_py)?;
+    serde_json::to_string(&result).map_err(|e| PyRuntimeError::new_err(format!("serialising: {e}")))
+}
+
 /// A physical scene (`fricosc scene`): its JSON text in (or, without `text`, the
 /// file `source`, read with the command line's cap), its result's JSON out;
 /// `source` is its path (a profile file is found relative to it) or a name.
@@ -265,6 +292,7 @@ fn _fricosc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(history, m)?)?;
     m.add_function(wrap_pyfunction!(validate, m)?)?;
     m.add_function(wrap_pyfunction!(scene, m)?)?;
+    m.add_function(wrap_pyfunction!(validate_history, m)?)?;
     m.add_function(wrap_pyfunction!(default_tol, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -310,3 +310,25 @@ def test_scene_is_the_command_lines() -> None:
         fricosc.scene("/nonexistent/scene.json")
     with pytest.raises(TypeError, match="a scene is a dict"):
         fricosc.scene(42)  # type: ignore[arg-type]
+
+
+def test_validate_history_is_the_command_lines() -> None:
+    """A stepped history (the built-in peer) through Python and through
+    `fricosc validate --history`: the same report; a time column with the period
+    found from the normal force gives the same events."""
+    text = cli("history", "--method", "stepping", "--steps-per-period", "500", "--periods", "3",
+               "--vbar", "0.3", "--amp", "1.5", "--format", "csv")
+    path = ROOT / "target" / "py-stepped-history.csv"
+    path.parent.mkdir(exist_ok=True)
+    path.write_text(text)
+    expected = json.loads(cli("validate", "--history", str(path), "--vbar", "0.3", "--amp", "1.5", "--format", "json"))
+    rows = list(csv.DictReader(io.StringIO(text)))
+    cols = {k: np.array([float(r[k]) for r in rows]) for k in ("tau", "normal", "tangential")}
+    got = fricosc.validate_history(cols, 0.3, 1.5)
+    assert json.loads(json.dumps(got)) == json.loads(json.dumps(expected))
+    assert [e["kind"] for e in got["events"]] == ["contact", "stick", "slip", "loss_of_contact"]
+    timed = fricosc.validate_history({"t": cols["tau"] / 100.0, "normal": cols["normal"], "tangential": cols["tangential"]},
+                                     vhat=0.45, amp=1.5)
+    assert [e["kind"] for e in timed["events"]] == [e["kind"] for e in got["events"]]
+    with pytest.raises(ValueError, match="one time column"):
+        fricosc.validate_history({"tangential": [0.0]}, 0.3, 1.5)

@@ -203,3 +203,47 @@ pub fn history(
     };
     Ok(History { shape: shape.name(), vbar, amp, units, spring_positions: chosen.to_vec(), samples: out })
 }
+
+/// The flat punch's history by the seed's time-stepping scheme (the peer),
+/// every step of `periods` periods at `steps_per_period` steps, in the units of
+/// [`history`]: the same columns as the exact history, so that a stepper's
+/// output can be checked against it (`validate --history`). The spring starts
+/// sliding (on its bound), as the peer does.
+pub fn stepped_history(vbar: f64, amp: f64, periods: usize, steps_per_period: usize) -> Result<History> {
+    check_nonneg("vbar", vbar)?;
+    check_nonneg("amp", amp)?;
+    if periods == 0 || steps_per_period == 0 {
+        return Err(Error::param("periods/steps-per-period", 0.0, "must be >= 1"));
+    }
+    let rows = periods as u128 * steps_per_period as u128 + 1;
+    if rows > MAX_SAMPLES as u128 {
+        return Err(Error::TooLarge {
+            what: "history rows (periods x steps + 1)".into(),
+            count: rows,
+            limit: MAX_SAMPLES as u128,
+        });
+    }
+    if amp == 0.0 {
+        return Err(Error::param("amp", amp, "a stepped history needs an oscillation (amp > 0)"));
+    }
+    let s = crate::flat::spring_s(amp);
+    let h = TAU / steps_per_period as f64;
+    let mut f = (s - 1.0).max(0.0);
+    let mut samples = Vec::with_capacity(rows as usize);
+    for k in 0..rows as usize {
+        let tau = h * k as f64;
+        let b = (s - tau.cos()).max(0.0);
+        if k > 0 {
+            f = crate::stepper::update(f, b, vbar * h);
+        }
+        samples.push(Sample { tau, normal: b * amp, tangential: f * amp, event: None, springs: vec![] });
+    }
+    Ok(History {
+        shape: "flat".into(),
+        vbar,
+        amp,
+        units: "normal: kz u0; tangential: mu0 kz u0 (time stepping)".into(),
+        spring_positions: vec![],
+        samples,
+    })
+}

@@ -43,6 +43,7 @@ __all__ = [
     "point",
     "history",
     "validate",
+    "validate_history",
     "scene",
     "DEFAULT_TOL",
     "__version__",
@@ -385,4 +386,56 @@ def scene(spec: Union[Dict[str, Any], str, "os.PathLike[str]"]) -> Dict[str, Any
     else:
         raise TypeError(f"a scene is a dict or the path of a JSON file, not {type(spec).__name__}")
     result: Dict[str, Any] = json.loads(_fricosc.scene(text, source))
+    return result
+
+
+def validate_history(
+    history: Any,
+    vbar: Optional[float] = None,
+    amp: Optional[float] = None,
+    *,
+    vhat: Optional[float] = None,
+    omega: Optional[float] = None,
+    tolerance: float = 1e-9,
+) -> Dict[str, Any]:
+    """Compare a flat punch's force history with the exact steady state, as
+    ``fricosc validate --history`` does: errors over the last period, whether it
+    is periodic yet (and how many more periods it needs), and the stick, slip
+    and contact events found from the force against its Coulomb bound, each
+    with its timing error.
+
+    ``history`` is a mapping of columns: ``tau`` (the phase omega t) or ``t``
+    (with ``omega``, or found from the normal force's maxima), ``tangential``
+    (units mu0 kz u0) and optionally ``normal`` (units kz u0).
+
+    >>> h = history("flat", 0.3, 1.5, periods=2, samples=2000)
+    >>> r = validate_history({"tau": h["tau"], "tangential": h["tangential"]}, 0.3, 1.5)
+    >>> r["periodic"], [e["kind"] for e in r["events"]]
+    (True, ['contact', 'stick', 'slip', 'loss_of_contact'])
+    """
+    try:
+        columns = list(history.keys())
+    except AttributeError:
+        raise TypeError(f"a history is a mapping of columns, not {type(history).__name__}") from None
+    if amp is None:
+        raise TypeError("amp (du/u0) is required")
+    v, is_vhat = _velocity(vbar, vhat)
+    if ("tau" in columns) == ("t" in columns):
+        raise ValueError("give exactly one time column: 'tau' (phase) or 't' (time)")
+    if "tangential" not in columns:
+        raise ValueError("the history lacks column 'tangential'")
+    time = _column(_floats(history["tau" if "tau" in columns else "t"], "time"), "time")
+    normal = _column(_floats(history["normal"], "normal"), "normal") if "normal" in columns else None
+    text = _fricosc.validate_history(
+        time,
+        "tau" in columns,
+        _column(_floats(history["tangential"], "tangential"), "tangential"),
+        normal,
+        _scalar(v, "vbar"),
+        _scalar(amp, "amp"),
+        is_vhat,
+        None if omega is None else float(omega),
+        float(tolerance),
+    )
+    result: Dict[str, Any] = json.loads(text)
     return result

@@ -5,7 +5,7 @@ from typing import Any, Dict, List, Optional, Tuple, final
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "evaluate", "point", "history", "validate", "scene", "default_tol", "__version__"]
+__all__ = ["CoreShape", "evaluate", "point", "history", "validate", "scene", "validate_history", "default_tol", "__version__"]
 __version__: str
 
 @final
@@ -45,4 +45,15 @@ def validate(
     tolerance: float,
 ) -> str: ...
 def scene(text: Optional[str], source: str) -> str: ...
+def validate_history(
+    time: npt.NDArray[np.float64],
+    is_tau: bool,
+    tangential: npt.NDArray[np.float64],
+    normal: Optional[npt.NDArray[np.float64]],
+    v: float,
+    a: float,
+    vhat: bool,
+    omega: Optional[float],
+    tolerance: float,
+) -> str: ...
 def default_tol() -> float: ...
