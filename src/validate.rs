@@ -452,17 +452,18 @@ pub fn history_summary(v: &HistoryValidation) -> String {
     let mut s = wrap(
         "",
         &format!(
-            "fricosc validate --history: flat punch at vbar {}, amp {}; {} whole periods, {} samples in the last.",
-            v.vbar, v.amp, v.periods, v.samples
+            "fricosc validate --history: {} at vbar {}, amp {}; {} whole periods, {} samples in the last.",
+            v.shape, v.vbar, v.amp, v.periods, v.samples
         ),
         100,
     );
     s += &wrap(
         "",
         &format!(
-            "Tangential force over the last period: largest |error| {}, rms {} (units mu0 kz u0).",
+            "Tangential force over the last period: largest |error| {}, rms {} ({}).",
             e(v.max_abs_error),
-            e(v.rms_error)
+            e(v.rms_error),
+            v.units
         ),
         100,
     );

@@ -5,7 +5,7 @@ use super::{io_err, read_input, Outcome};
 use fricosc::error::{Error, Result};
 use fricosc::grid::parse_number;
 use fricosc::shape::Shape;
-use fricosc::validate::{AtRest, Convergence, Validation};
+use fricosc::validate::{AtRest, Convergence, HistoryValidation, Validation};
 use std::io::{self, IsTerminal, Write};
 
 /// The options of `validate` (see `main.rs` for their help).
@@ -81,6 +81,9 @@ pub(crate) fn run(a: ValidateArgs) -> Result<Outcome> {
         None => "json".into(),
     };
     if a.series {
+        if let Some(h) = &a.history {
+            return run_history_series(&a, h, mu0, tolerance, &format);
+        }
         return run_series(&a, at_rest, mu0, &format);
     }
     if let Some(h) = &a.history {
@@ -203,18 +206,18 @@ fn run_series(a: &ValidateArgs, at_rest: AtRest, mu0: Option<f64>, format: &str)
     Ok(Outcome::Done)
 }
 
-fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f64, format: &str) -> Result<Outcome> {
-    if a.files.len() != 1 {
-        return Err(Error::Parse { context: "--history".into(), reason: "takes one file".into() });
-    }
-    if let Some(spec) = &a.shape {
-        if fricosc::input::parse_shape(spec)? != Shape::Flat {
-            return Err(Error::InvalidShape {
-                spec: spec.clone(),
-                reason: "validate --history compares with the flat punch's exact history".into(),
-            });
-        }
-    }
+/// Read and compare one history file.
+fn history_of(
+    a: &ValidateArgs,
+    h: &HistoryArgs,
+    file: &str,
+    mu0: Option<f64>,
+    tolerance: f64,
+) -> Result<HistoryValidation> {
+    let shape = match &a.shape {
+        Some(spec) => fricosc::input::parse_shape(spec)?,
+        None => Shape::Flat,
+    };
     let amp = parse_number(
         "--amp",
         h.amp.as_deref().ok_or_else(|| Error::Parse { context: "--history".into(), reason: "needs --amp".into() })?,
@@ -225,7 +228,7 @@ fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f
         _ => return Err(Error::Parse { context: "--history".into(), reason: "needs one of --vbar and --vhat".into() }),
     };
     let omega = h.omega.as_deref().map(|w| parse_number("--omega", w)).transpose()?;
-    let (text, source) = read_input(Some(a.files[0].clone()))?;
+    let (text, source) = read_input(Some(file.to_string()))?;
     let err = |reason: String| Error::Parse { context: source.clone(), reason };
     let mut rd = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
     let header: Vec<String> =
@@ -269,7 +272,17 @@ fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f
     let normal = normal_col.map(|_| fnorm.as_slice());
     let taus = fricosc::validate::phases(&t, is_tau, omega, normal)
         .map_err(|e| Error::Parse { context: source.clone(), reason: e.to_string() })?;
-    let v = fricosc::validate::compare_history(vbar, amp, &taus, &ft, normal, tolerance)?;
+    fricosc::validate::compare_history(&shape, vbar, amp, &taus, &ft, normal, tolerance)
+}
+
+fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f64, format: &str) -> Result<Outcome> {
+    if a.files.len() != 1 {
+        return Err(Error::Parse {
+            context: "--history".into(),
+            reason: "takes one file (several with --series)".into(),
+        });
+    }
+    let v = history_of(a, h, &a.files[0], mu0, tolerance)?;
     let body = match format {
         "json" => super::to_json(&v)? + "\n",
         "csv" => fricosc::validate::events_csv(&v)?,
@@ -280,4 +293,88 @@ fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f
     out.flush().map_err(io_err)?;
     let max_error = a.max_error.as_deref().map(|m| parse_number("--max-error", m)).transpose()?;
     Ok(if max_error.is_none_or(|e| v.max_abs_error <= e) { Outcome::Done } else { Outcome::Negative })
+}
+
+/// The convergence of a series of histories: per resolution the largest error
+/// over the last period and each event's timing error, with their observed orders.
+#[derive(serde::Serialize)]
+struct HistorySeries {
+    resolutions: Vec<f64>,
+    max_abs_errors: Vec<f64>,
+    order: Option<f64>,
+    constant: Option<f64>,
+    /// Per event kind: the timing errors (one per resolution) and their order.
+    events: Vec<EventSeries>,
+}
+
+#[derive(serde::Serialize)]
+struct EventSeries {
+    kind: String,
+    timing_errors: Vec<Option<f64>>,
+    order: Option<f64>,
+}
+
+fn run_history_series(
+    a: &ValidateArgs,
+    h: &HistoryArgs,
+    mu0: Option<f64>,
+    tolerance: f64,
+    format: &str,
+) -> Result<Outcome> {
+    if a.files.len() < 2 {
+        return Err(Error::Parse { context: "--series".into(), reason: "needs two files or more".into() });
+    }
+    let mut runs = vec![];
+    for arg in &a.files {
+        let (file, n) = file_and_resolution(arg)?;
+        runs.push((n, history_of(a, h, &file, mu0, tolerance)?));
+    }
+    runs.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let resolutions: Vec<f64> = runs.iter().map(|r| r.0).collect();
+    let max_abs_errors: Vec<f64> = runs.iter().map(|r| r.1.max_abs_error).collect();
+    let (order, constant) = fricosc::validate::observed_order(&resolutions, &max_abs_errors);
+    let mut kinds: Vec<fricosc::spring::EventKind> = runs[0].1.exact_events.iter().map(|e| e.kind).collect();
+    kinds.dedup();
+    let events = kinds
+        .iter()
+        .map(|&k| {
+            let timing_errors: Vec<Option<f64>> =
+                runs.iter().map(|r| r.1.events.iter().find(|e| e.kind == k).and_then(|e| e.timing_error)).collect();
+            let (res, errs): (Vec<f64>, Vec<f64>) =
+                resolutions.iter().zip(&timing_errors).filter_map(|(r, e)| e.map(|e| (*r, e))).unzip();
+            let name = serde_json::to_value(k).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default();
+            EventSeries { kind: name, timing_errors, order: fricosc::validate::observed_order(&res, &errs).0 }
+        })
+        .collect();
+    let report = HistorySeries { resolutions, max_abs_errors, order, constant, events };
+    let body = match format {
+        "csv" => {
+            let mut t = String::from("resolution,max_abs_error\n");
+            for (r, e) in report.resolutions.iter().zip(&report.max_abs_errors) {
+                t += &format!("{},{}\n", fricosc::output::num(*r), fricosc::output::num(*e));
+            }
+            t
+        }
+        "json" => super::to_json(&report)? + "\n",
+        _ => {
+            let o = |p: Option<f64>| p.map_or("-".into(), |p| format!("{p:.2}"));
+            let mut t = format!(
+                "fricosc validate --series --history: {} histories; the largest error over the last period has \
+                 order {}.\n",
+                report.resolutions.len(),
+                o(report.order)
+            );
+            for (r, e) in report.resolutions.iter().zip(&report.max_abs_errors) {
+                t += &format!("  resolution {r:>10}: largest |error| {e:.2e}\n");
+            }
+            for ev in &report.events {
+                t += &format!("  event {:<16} timing order {}\n", ev.kind, o(ev.order));
+            }
+            t
+        }
+    };
+    let mut out = io::BufWriter::new(io::stdout().lock());
+    out.write_all(body.as_bytes()).map_err(io_err)?;
+    out.flush().map_err(io_err)?;
+    Ok(Outcome::Done)
 }

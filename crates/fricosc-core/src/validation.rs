@@ -508,6 +508,20 @@ fn line_fit(points: &[(f64, f64)]) -> Option<(f64, f64)> {
     (sxx > 0.0).then(|| (my - sxy / sxx * mx, sxy / sxx))
 }
 
+/// The observed order `p` and constant `C` of `|error| = C resolution^-p`: the
+/// least-squares line through `(ln resolution, ln |error|)` over the errors
+/// above rounding (none with fewer than two).
+pub fn observed_order(resolutions: &[f64], errors: &[f64]) -> (Option<f64>, Option<f64>) {
+    let points: Vec<(f64, f64)> = resolutions
+        .iter()
+        .zip(errors)
+        .filter(|(_, e)| e.abs() > ROUNDING_ERROR)
+        .map(|(r, e)| (r.ln(), e.abs().ln()))
+        .collect();
+    let fit = line_fit(&points);
+    (fit.map(|(_, b)| -b), fit.map(|(a, _)| a.exp()))
+}
+
 /// Compare `tables` (rows `(vbar, amp, mu_ratio)`) at `resolutions` (one each,
 /// positive and distinct) with the exact values: per row the observed order,
 /// error constant, Richardson value and (with `target`) the resolution needed;
@@ -547,15 +561,7 @@ pub fn convergence(
         }
         let exact = exact_value(shape, vbar, amp, at_rest)?;
         let errors: Vec<f64> = values.iter().map(|v| v - exact).collect();
-        let points: Vec<(f64, f64)> = res
-            .iter()
-            .zip(&errors)
-            .filter(|(_, e)| e.abs() > ROUNDING_ERROR)
-            .map(|(r, e)| (r.ln(), e.abs().ln()))
-            .collect();
-        let fit = line_fit(&points);
-        let p = fit.map(|(_, b)| -b);
-        let constant = fit.map(|(a, _)| a.exp());
+        let (p, constant) = observed_order(&res, &errors);
         let n = values.len();
         let ratio = res[n - 1] / res[n - 2];
         let richardson =
@@ -617,6 +623,10 @@ pub struct FoundEvent {
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct HistoryValidation {
+    /// Shape name.
+    pub shape: String,
+    /// Units of the forces compared.
+    pub units: String,
     /// Dimensionless velocity.
     pub vbar: f64,
     /// Amplitude.
@@ -705,12 +715,21 @@ fn drift(taus: &[f64], f: &[f64], from: f64, to: f64) -> Option<f64> {
     worst
 }
 
-/// Compare a flat punch's force history (phases `taus`, increasing; tangential
-/// force in units of `mu0 kz u0`; the normal force in units of `kz u0` if known,
-/// else the exact one is used for the Coulomb bound) with the exact steady
-/// state at `(vbar, amp)`. `tolerance` decides "on the bound", "no contact" and
+/// Springs of the reference tangential force of a curved contact's history
+/// (the midpoint grid of [`crate::contact::grid`]; second order in the spacing).
+pub const HISTORY_REFERENCE_SPRINGS: usize = 20_000;
+
+/// Compare a force history (phases `taus`, nondecreasing; the tangential force
+/// in units of `mu0 kz u0` for the flat punch, `mu0 E* x_c u0` for other
+/// shapes; the normal force in units of `kz u0` or `E* x_c u0` if known, else
+/// the exact one is used for the Coulomb bound) with the steady state of
+/// `shape` at `(vbar, amp)`: exact for the flat punch; for other shapes the
+/// normal force is exact and the tangential force the sum over
+/// [`HISTORY_REFERENCE_SPRINGS`] springs, and events are not compared (the
+/// total has none). `tolerance` decides "on the bound", "no contact" and
 /// "periodic" (relative to the peak normal force).
 pub fn compare_history(
+    shape: &Shape,
     vbar: f64,
     amp: f64,
     taus: &[f64],
@@ -747,16 +766,39 @@ pub fn compare_history(
             reason: format!("it spans {:.3} periods: at least one whole period is needed", span / TAU),
         });
     }
+    let flat = shape.with_contact(|c| c.single_spring());
     let sp = crate::flat::spring(vbar, amp, true);
-    let exact_normal = |t: f64| (sp.s - t.cos()).max(0.0) * amp;
-    let exact_tangential = |t: f64| crate::history::spring_force(&sp, t) * amp;
+    // Curved contacts: the reference springs, and the static force at each depth.
+    let (dz, springs) = if flat {
+        (0.0, vec![])
+    } else {
+        shape.with_contact(|c| -> Result<(f64, Vec<Spring>)> {
+            let (dz, s_of) = crate::contact::grid(c, amp, HISTORY_REFERENCE_SPRINGS)?;
+            Ok((dz, (0..HISTORY_REFERENCE_SPRINGS).map(|i| Spring::with_events(s_of(i), vbar)).collect()))
+        })?
+    };
+    let exact_normal = |t: f64| {
+        if flat {
+            (sp.s - t.cos()).max(0.0) * amp
+        } else {
+            shape.with_contact(|c| c.static_force(1.0 - amp * t.cos()))
+        }
+    };
+    let exact_tangential = |t: f64| {
+        if flat {
+            crate::history::spring_force(&sp, t) * amp
+        } else {
+            2.0 * amp * dz * springs.iter().map(|s| crate::history::spring_force(s, t)).sum::<f64>()
+        }
+    };
     let end = taus[n - 1];
     let start = end - TAU;
     let last: Vec<usize> = (0..n).filter(|&i| taus[i] > start + 1e-12 * TAU).collect();
     let (mut max_abs, mut sq) = (0.0f64, 0.0);
     let mut sample_errors = Vec::with_capacity(last.len());
-    for &i in &last {
-        let e = tangential[i] - exact_tangential(taus[i]);
+    let exact_last: Vec<f64> = last.par_iter().map(|&i| exact_tangential(taus[i])).collect();
+    for (&i, &x) in last.iter().zip(&exact_last) {
+        let e = tangential[i] - x;
         max_abs = max_abs.max(e.abs());
         sq += e * e;
         sample_errors.push((taus[i], e));
@@ -783,7 +825,7 @@ pub fn compare_history(
             2
         }
     };
-    let exact_events = crate::flat::point(vbar, amp)?.events;
+    let exact_events = if flat { crate::flat::point(vbar, amp)?.events } else { vec![] };
     let above: Vec<f64> = last
         .iter()
         .filter(|&&i| tangential[i] > normal.map_or(exact_normal(taus[i]), |x| x[i]) + bar)
@@ -791,7 +833,7 @@ pub fn compare_history(
         .collect();
     let mut found = vec![];
     let mut prev = last.first().map(|&i| state(i));
-    for &i in last.iter().skip(1) {
+    for &i in last.iter().skip(1).filter(|_| flat) {
         let s = state(i);
         let kinds: &[EventKind] = match (prev, s) {
             (Some(0), 1) => &[EventKind::Contact],
@@ -816,7 +858,11 @@ pub fn compare_history(
         }
         prev = Some(s);
     }
+    let units =
+        if flat { "normal: kz u0; tangential: mu0 kz u0" } else { "normal: E* x_c u0; tangential: mu0 E* x_c u0" };
     Ok(HistoryValidation {
+        shape: shape.name(),
+        units: units.into(),
         vbar,
         amp,
         periods,

@@ -230,10 +230,11 @@ fn validate(
 /// A flat punch's force history against the exact one (`fricosc validate
 /// --history`'s JSON), a string.
 #[pyfunction]
-#[pyo3(signature = (time, is_tau, tangential, normal, v, a, vhat, omega, tolerance))]
+#[pyo3(signature = (shape, time, is_tau, tangential, normal, v, a, vhat, omega, tolerance))]
 #[allow(clippy::too_many_arguments)]
 fn validate_history(
     py: Python<'_>,
+    shape: &CoreShape,
     time: PyReadonlyArray1<'_, f64>,
     is_tau: bool,
     tangential: PyReadonlyArray1<'_, f64>,
@@ -250,7 +251,8 @@ fn validate_history(
     let f = tangential.as_array().to_vec();
     let n: Option<Vec<f64>> = normal.map(|x| x.as_array().to_vec());
     let taus = phases(&t, is_tau, omega, n.as_deref()).map_err(to_py)?;
-    let result = py.detach(|| compare_history(v, a, &taus, &f, n.as_deref(), tolerance)).map_err(to_py)?;
+    let shape = &shape.inner;
+    let result = py.detach(|| compare_history(shape, v, a, &taus, &f, n.as_deref(), tolerance)).map_err(to_py)?;
     serde_json::to_string(&result).map_err(|e| PyRuntimeError::new_err(format!("serialising: {e}")))
 }
 

@@ -394,11 +394,14 @@ def validate_history(
     vbar: Optional[float] = None,
     amp: Optional[float] = None,
     *,
+    shape: ShapeLike = "flat",
     vhat: Optional[float] = None,
     omega: Optional[float] = None,
     tolerance: float = 1e-9,
 ) -> Dict[str, Any]:
-    """Compare a flat punch's force history with the exact steady state, as
+    """Compare a force history with the steady state of ``shape`` (exact for the
+    flat punch; for curved shapes the normal force exact and the tangential one
+    summed over 20,000 springs, without events), as
     ``fricosc validate --history`` does: errors over the last period, whether it
     is periodic yet (and how many more periods it needs), and the stick, slip
     and contact events found from the force against its Coulomb bound, each
@@ -427,6 +430,7 @@ def validate_history(
     time = _column(_floats(history["tau" if "tau" in columns else "t"], "time"), "time")
     normal = _column(_floats(history["normal"], "normal"), "normal") if "normal" in columns else None
     text = _fricosc.validate_history(
+        _core(shape),
         time,
         "tau" in columns,
         _column(_floats(history["tangential"], "tangential"), "tangential"),

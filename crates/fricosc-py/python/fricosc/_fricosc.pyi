@@ -46,6 +46,7 @@ def validate(
 ) -> str: ...
 def scene(text: Optional[str], source: str) -> str: ...
 def validate_history(
+    shape: CoreShape,
     time: npt.NDArray[np.float64],
     is_tau: bool,
     tangential: npt.NDArray[np.float64],
