@@ -230,6 +230,27 @@ fn wrap(first: &str, text: &str, width: usize) -> String {
     out
 }
 
+/// A table of error summaries, one line per group, after a blank line.
+fn summary_table<'a>(title: &str, groups: impl Iterator<Item = (String, &'a Summary)>) -> String {
+    let e = |x: f64| format!("{x:.2e}");
+    let mut s = format!(
+        "\n{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
+        title, "rows", "max |error|", "rms error", "max rel error", "worst row"
+    );
+    for (name, m) in groups {
+        s += &format!(
+            "{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
+            name,
+            m.n,
+            e(m.max_abs_error),
+            e(m.rms_error),
+            e(m.max_rel_error),
+            m.worst_row
+        );
+    }
+    s
+}
+
 /// A short report for a person (lines of at most 100 characters).
 pub fn summary(v: &Validation, shape_source: &str, ignored: &[String]) -> String {
     let e = |x: f64| format!("{x:.2e}");
@@ -258,38 +279,8 @@ pub fn summary(v: &Validation, shape_source: &str, ignored: &[String]) -> String
     if !ignored.is_empty() {
         s += &wrap("", &format!("Columns not read: {}.", ignored.join(", ")), 100);
     }
-    s += &format!(
-        "\n{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
-        "regime", "rows", "max |error|", "rms error", "max rel error", "worst row"
-    );
-    for g in &v.by_regime {
-        let m = &g.summary;
-        s += &format!(
-            "{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
-            regime_name(g.regime),
-            m.n,
-            e(m.max_abs_error),
-            e(m.rms_error),
-            e(m.max_rel_error),
-            m.worst_row
-        );
-    }
-    s += &format!(
-        "\n{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
-        "amp", "rows", "max |error|", "rms error", "max rel error", "worst row"
-    );
-    for g in &v.by_amp {
-        let m = &g.summary;
-        s += &format!(
-            "{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
-            g.amp,
-            m.n,
-            e(m.max_abs_error),
-            e(m.rms_error),
-            e(m.max_rel_error),
-            m.worst_row
-        );
-    }
+    s += &summary_table("regime", v.by_regime.iter().map(|g| (regime_name(g.regime), &g.summary)));
+    s += &summary_table("amp", v.by_amp.iter().map(|g| (g.amp.to_string(), &g.summary)));
     if v.findings.is_empty() {
         s += &format!("\nFindings: none (value checks to {:?}).\n", v.tolerance);
     } else {
