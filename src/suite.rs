@@ -2,8 +2,9 @@
 //! with every value's error bound, a manifest (the command that reproduces each
 //! file, its SHA-256) and a README saying how to use it.
 //!
-//! Files (all CSV with a header line, numbers in shortest round-trip form):
-//! - `tables/SHAPE.csv`: `shape,vbar,amp,mu_ratio,reduction,error_bound` on one
+//! Files (CSV with a header line, and the tables also as JSON; numbers in
+//! shortest round-trip form):
+//! - `tables/SHAPE.csv` and `.json`: `shape,vbar,amp,mu_ratio,reduction,error_bound` on one
 //!   grid over every regime (`vbar` from 0 to 1.1 with points near 1; `amp`
 //!   from 0.2 to 3: permanent contact, `amp = 1`, jumping slip-first and
 //!   stick-first), for `flat`, `parabolic`, `cone` and a tabulated sphere;
@@ -27,7 +28,7 @@ use sha2::{Digest, Sha256};
 use std::path::Path;
 
 /// The suite's version: changed whenever a case is added or a file's form changes.
-pub const SUITE_VERSION: u32 = 1;
+pub const SUITE_VERSION: u32 = 2;
 
 /// Velocities of the tables: every regime, and close to the critical velocity.
 const VBAR: [f64; 17] = [0.0, 0.01, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 0.99, 0.999, 1.0, 1.1];
@@ -74,6 +75,22 @@ fn value_row(shape: &Shape, spec: &str, vbar: f64, amp: f64) -> Result<Vec<Strin
 
 const VALUE_HEADER: [&str; 6] = ["shape", "vbar", "amp", "mu_ratio", "reduction", "error_bound"];
 
+/// The same rows as JSON, as `fricosc table` prints it (one object with the
+/// shape and a `rows` array, one row per line), with the error bound added.
+fn json_rows(spec: &str, rows: &[Vec<String>]) -> Result<String> {
+    let name = serde_json::to_string(spec).map_err(|e| Error::Internal { what: format!("JSON: {e}") })?;
+    let lines: Vec<String> = rows
+        .iter()
+        .map(|r| {
+            format!(
+                "{{\"vbar\":{},\"amp\":{},\"mu_ratio\":{},\"reduction\":{},\"error_bound\":{}}}",
+                r[1], r[2], r[3], r[4], r[5]
+            )
+        })
+        .collect();
+    Ok(format!("{{\"shape\":{name},\"rows\":[\n{}\n]}}\n", lines.join(",\n")))
+}
+
 /// Every file of the suite, computed now (paths relative to the repository for
 /// the tabulated shape's table).
 pub fn files() -> Result<Vec<SuiteFile>> {
@@ -88,10 +105,16 @@ pub fn files() -> Result<Vec<SuiteFile>> {
                 rows.push(value_row(&shape, spec, v, a)?);
             }
         }
+        let command = format!("fricosc table --shape {spec} --amp {} --vbar {}", list(&AMP), list(&VBAR));
+        out.push(SuiteFile {
+            path: format!("tables/{name}.json"),
+            text: json_rows(spec, &rows)?,
+            command: command.clone(),
+        });
         out.push(SuiteFile {
             path: format!("tables/{name}.csv"),
             text: csv(&VALUE_HEADER, &rows)?,
-            command: format!("fricosc table --shape {spec} --amp {} --vbar {} --format csv", list(&AMP), list(&VBAR)),
+            command: format!("{command} --format csv"),
         });
     }
     let mut rows = vec![];
@@ -168,7 +191,7 @@ pub fn readme() -> String {
         "# fricosc reference suite, version {SUITE_VERSION}\n\n\
 Canonical cases for codes that compute friction under normal oscillation (Popov, Popov, Popov,\n\
 Friction 2017): the exact values of fricosc {} with an error bound on each.\n\n\
-- `tables/*.csv`: `mu_ratio = mu_macro/mu0` and `reduction = 1 - mu_ratio` (computed on its own, with\n\
+- `tables/*.csv` (the same as `tables/*.json`): `mu_ratio = mu_macro/mu0` and `reduction = 1 - mu_ratio` (computed on its own, with\n\
   full relative accuracy) on one grid of `vbar` (eq. 3) and `amp = du/u0` covering every regime, for\n\
   the flat punch, the paraboloid (`parabolic`), the cone and a tabulated sphere. `error_bound` bounds\n\
   `|mu_ratio - exact|`. At `vbar = 0` the value is the limit `vbar -> 0+` of a sliding contact\n\
