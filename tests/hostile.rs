@@ -223,7 +223,7 @@ fn scene_edge_values_are_errors_naming_the_cause() {
         ("loading", json!({"mean_normal_force_n": 1e300})),
     ]);
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert!((v["mean_normal_force_n"].as_f64().unwrap() / 1e300 - 1.0).abs() < 1e-12);
+    assert!((v[0]["mean_normal_force_n"].as_f64().unwrap() / 1e300 - 1.0).abs() < 1e-12);
     // An unreachable load names the smallest reachable force.
     let out = run(&[("loading", json!({"mean_normal_force_n": 1e-12})), ("oscillation.amplitude_m", json!(1e-5))]);
     assert!(String::from_utf8_lossy(&out.stderr).contains("smallest reachable mean normal force is about"));

@@ -149,3 +149,45 @@ fn a_tabulated_sphere_scene_matches_the_analytic_one_to_the_sphere_s_own_differe
     assert!((lc.mean_normal_force_n - 1.0).abs() < 1e-12, "{}", lc.mean_normal_force_n);
     assert!((lc.mean_indentation_m / ana.mean_indentation_m - 1.0).abs() < 1e-4);
 }
+
+/// Several scenes: JSON is a list (one per file, also for one file), CSV one
+/// long table with a scene column and the scene-level results on every row;
+/// a scene from stdin.
+#[test]
+fn output_has_one_shape_for_any_number_of_scenes() {
+    use std::process::Command;
+    let root = env!("CARGO_MANIFEST_DIR");
+    let run =
+        |args: &[&str]| Command::new(env!("CARGO_BIN_EXE_fricosc")).args(args).current_dir(root).output().unwrap();
+    let one: serde_json::Value =
+        serde_json::from_slice(&run(&["scene", "data/scenes/flat-punch.json"]).stdout).unwrap();
+    assert_eq!(one.as_array().map(Vec::len), Some(1));
+    let out = run(&["scene", "data/scenes/flat-punch.json", "data/scenes/soft-cone.json", "--format", "csv"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut rd = csv::Reader::from_reader(text.as_bytes());
+    let header = rd.headers().unwrap().clone();
+    assert_eq!(&header[0], "scene");
+    assert!(header.iter().any(|h| h == "critical_velocity_m_per_s") && header.iter().any(|h| h == "mu_ratio"));
+    let rows: Vec<csv::StringRecord> = rd.records().map(|r| r.unwrap()).collect();
+    let scenes: std::collections::BTreeSet<String> = rows.iter().map(|r| r[0].to_string()).collect();
+    assert_eq!(scenes.len(), 2, "{text}");
+    assert!(rows.iter().all(|r| r.len() == header.len()));
+    assert_eq!(text.lines().filter(|l| l.starts_with("scene,")).count(), 1, "one header");
+    // The flat punch's sweep shows the reduction below its critical velocity.
+    let below = rows.iter().filter(|r| r[0].starts_with("flat") && r[11].parse::<f64>().unwrap() < 1.0).count();
+    assert!(below >= 6, "{below} velocities below the critical one");
+    // stdin.
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_fricosc"))
+        .args(["scene", "-"])
+        .current_dir(root)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let text = std::fs::read_to_string(std::path::Path::new(root).join("data/scenes/soft-cone.json")).unwrap();
+    child.stdin.take().unwrap().write_all(text.as_bytes()).unwrap();
+    let out = child.wait_with_output().unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v.as_array().map(Vec::len), Some(1));
+}

@@ -41,17 +41,43 @@ pub(crate) fn run(files: Vec<String>, schema: bool, format: Format) -> Result<()
             eprintln!("warning: {f}: {w}");
         }
     }
+    // One shape of output whatever the number of files: a JSON list, and CSV in
+    // long form (one header; each row with its scene and the scene's results).
     let text = match format {
-        Format::Csv => results
-            .iter()
-            .map(|r| fricosc::export::export(r, fricosc::export::Format::Csv))
-            .collect::<Result<Vec<_>>>()?
-            .join("\n"),
-        Format::Json => {
-            let v = if results.len() == 1 { serde_json::to_value(&results[0]) } else { serde_json::to_value(&results) };
-            v.and_then(|v| serde_json::to_string_pretty(&v))
-                .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?
-        }
+        Format::Csv => scenes_csv(&results, &files)?,
+        Format::Json => serde_json::to_string_pretty(&results)
+            .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?,
     };
     emit(&format!("{}\n", text.trim_end()))
+}
+
+/// Every scene's rows in one CSV table: the scene (its name, or its file), the
+/// scene-level results repeated on each row, then the row's own columns.
+fn scenes_csv(results: &[fricosc::scene::SceneResult], files: &[String]) -> Result<String> {
+    use fricosc::export::Report;
+    let n = fricosc::output::num;
+    let fail = |e: csv::Error| Error::Internal { what: format!("writing CSV: {e}") };
+    let mut w = csv::Writer::from_writer(vec![]);
+    let scene_cols = ["scene", "u0_m", "du_m", "amp", "contact_radius_m", "critical_velocity_m_per_s", "mu_static"];
+    let mut header: Vec<String> = scene_cols.map(String::from).to_vec();
+    if let Some(r) = results.first() {
+        header.extend(r.columns());
+    }
+    w.write_record(&header).map_err(fail)?;
+    for (r, f) in results.iter().zip(files) {
+        let scene = [
+            r.name.clone().unwrap_or_else(|| f.clone()),
+            n(r.mean_indentation_m),
+            n(r.amplitude_m),
+            n(r.amplitude_ratio),
+            n(r.contact_radius_m),
+            n(r.critical_velocity_m_per_s),
+            n(r.mu_static),
+        ];
+        for row in r.rows() {
+            w.write_record(scene.iter().cloned().chain(row)).map_err(fail)?;
+        }
+    }
+    let bytes = w.into_inner().map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })?;
+    String::from_utf8(bytes).map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })
 }
