@@ -69,16 +69,8 @@ pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
                 }
             };
             let mut out: Vec<f64> = (0..n).map(|k| if k + 1 == n { stop } else { at(k) }).collect();
-            // Remove the binary noise of k * step (0.30000000000000004 -> 0.3), but only
-            // where the decimal value is within two ulps of the computed one and keeps
-            // the list inside [start, stop] and strictly increasing.
-            for k in 1..n - 1 {
-                let (x, r) = (out[k], decimal(out[k]));
-                let ulp = f64::from_bits(x.abs().to_bits() + 1) - x.abs();
-                if (r - x).abs() <= 2.0 * ulp && r > out[k - 1] && r < stop && r >= start {
-                    out[k] = r;
-                }
-            }
+            // Remove the binary noise of k * step (0.30000000000000004 -> 0.3), where it is noise.
+            fricosc_core::numerics::decimal::tidy(&mut out, start, stop);
             if let Some(w) = out.windows(2).find(|w| w[1] <= w[0]) {
                 return Err(Error::Parse {
                     context: what.into(),
@@ -95,11 +87,6 @@ pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
             reason: format!("'{t}' is neither a comma list nor start:stop:count"),
         }),
     }
-}
-
-/// Round to 15 significant digits: removes the binary noise of `k * step`.
-fn decimal(x: f64) -> f64 {
-    format!("{x:.14e}").parse().unwrap_or(x)
 }
 
 #[cfg(test)]

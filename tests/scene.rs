@@ -191,3 +191,18 @@ fn output_has_one_shape_for_any_number_of_scenes() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v.as_array().map(Vec::len), Some(1));
 }
+
+/// Sweeps print what the user meant: 0.005, not 0.005000000000000001 (binary
+/// noise within two ulps is rounded away; the value printed is the value used).
+#[test]
+fn sweeps_have_no_binary_noise() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_fricosc"))
+        .args(["scene", "data/scenes/soft-cone.json"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let vs: Vec<f64> = v[0]["rows"].as_array().unwrap().iter().map(|r| r["velocity_m_per_s"].as_f64().unwrap()).collect();
+    assert_eq!(&vs[..4], &[0.0, 0.005, 0.01, 0.015]);
+    assert!(vs.windows(2).all(|w| w[1] > w[0]));
+}

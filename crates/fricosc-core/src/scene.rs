@@ -406,7 +406,7 @@ fn check(s: &Scene, source: &str, read: &dyn Fn(&str) -> Result<String>) -> Resu
                 });
             }
             let k = sw.count;
-            (0..k)
+            let mut v: Vec<f64> = (0..k)
                 .map(|i| {
                     let t = if k == 1 { 0.0 } else { i as f64 / (k - 1) as f64 };
                     if i + 1 == k {
@@ -417,7 +417,10 @@ fn check(s: &Scene, source: &str, read: &dyn Fn(&str) -> Result<String>) -> Resu
                         a + (b - a) * t
                     }
                 })
-                .collect()
+                .collect();
+            // 0.005000000000000001 -> 0.005 where that is only binary noise.
+            crate::numerics::decimal::tidy(&mut v, a, b);
+            v
         }
         _ => {
             return Err(Error::Parse {
