@@ -132,6 +132,8 @@ pub fn check() -> Vec<Claim> {
         critical_velocity(),
         eq27_shape_independence(),
         two_parameters(),
+        eq14_small_amplitude(),
+        static_friction_minimum_normal(),
     ]
 }
 
@@ -360,6 +362,96 @@ fn critical_velocity() -> Claim {
         deviation: None,
         location: "flat, parabolic, cone".into(),
         verdict: if critical_ok { Verdict::Holds } else { Verdict::Wrong },
+    }
+}
+
+/// The small-amplitude slope `D = reduction N0 / (kz du)` of `shape`, with `N0`
+/// the static normal force and `kz` the incremental stiffness `2 E* x_c`
+/// (the flat punch's `kz u0` is its static force): eq. 14's bracket, if the
+/// seed is right that it holds for every shape.
+fn small_amplitude_slope(spec: &str, vbar: f64, amp: f64) -> f64 {
+    let shape = crate::shape::Shape::parse(spec).map_err(|e| e.to_string()).unwrap_or(crate::shape::Shape::Flat);
+    let reduction = crate::shape::evaluate(&shape, vbar, amp).map_or(f64::NAN, |e| e.ratio.reduction);
+    let n0 = shape.with_contact(|c| c.mean_normal(0.0)).unwrap_or(f64::NAN);
+    reduction * n0 / (2.0 * amp)
+}
+
+/// Shape independence at small amplitude, eqs. 14 and 25 (the bar: 1e-5 relative at amp = 1e-6).
+const EQ14_TOL: f64 = 1e-5;
+
+/// Eqs. 14 and 25: at small amplitude the friction change does not depend on the shape.
+fn eq14_small_amplitude() -> Claim {
+    let amp = 1e-6;
+    let mut spread = 0.0f64;
+    let mut bracket_error = 0.0f64;
+    let mut parts = vec![];
+    let mut measured = vec![];
+    for vbar in [0.2, 0.5, 0.8] {
+        let d: Vec<f64> =
+            ["flat", "parabolic", "cone", "power:3.7"].iter().map(|s| small_amplitude_slope(s, vbar, amp)).collect();
+        let (lo, hi) = d.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
+        spread = spread.max((hi - lo) / hi.abs());
+        let bracket = 0.75 * (vbar - 1.0) * (vbar - 1.0) + 0.25 * (vbar - 1.0).powi(4);
+        bracket_error = bracket_error.max((bracket - d[0]).abs());
+        parts.push(format!("vbar {vbar}: {:.9} (flat) .. {:.9}", d[0], d[3]));
+        measured.push((format!("slope_flat_vbar_{vbar}"), d[0]));
+        measured.push((format!("slope_parabolic_vbar_{vbar}"), d[1]));
+        measured.push((format!("slope_cone_vbar_{vbar}"), d[2]));
+    }
+    measured.push(("relative_spread".into(), spread));
+    measured.push(("bracket_error".into(), bracket_error));
+    Claim {
+        claim: "eqs. 14, 25 (small amplitude)".into(),
+        seed_says: "the change of friction -mu0 kz du [3/4 (vbar-1)^2 + 1/4 (vbar-1)^4] holds for every shape at small \
+                    amplitude, kz the incremental normal stiffness"
+            .into(),
+        exact_gives: format!(
+            "reduction N0/(kz du) at du/u0 = 1e-6 for flat, parabolic, cone, power:3.7: {}; relative spread {spread:.1e} \
+             (shape independence holds); the bracket itself is eq. 11's, off by up to {bracket_error:.4}",
+            parts.join("; ")
+        ),
+        criterion: format!(
+            "holds if the slopes of the four shapes agree to {EQ14_TOL:e} relative at du/u0 = 1e-6 (their \
+             difference is O(du/u0)); wrong otherwise. The bracket's accuracy is eq. 11's claim"
+        ),
+        measured,
+        deviation: Some(spread),
+        location: "vbar 0.2, 0.5, 0.8; du/u0 = 1e-6".into(),
+        verdict: if spread <= EQ14_TOL { Verdict::Holds } else { Verdict::Wrong },
+    }
+}
+
+/// "The static friction force is determined just by the minimum of the normal
+/// force": mu at vbar = 1e-10 (the solver) against N_min / N_mean.
+fn static_friction_minimum_normal() -> Claim {
+    let mut worst = 0.0f64;
+    let mut measured = vec![];
+    for spec in ["flat", "parabolic", "cone", "flat-tip:0.5"] {
+        let shape = crate::shape::Shape::parse(spec).unwrap_or(crate::shape::Shape::Flat);
+        for amp in [0.2, 0.5, 0.8, 1.5] {
+            let mu = crate::shape::evaluate(&shape, 1e-10, amp).map_or(f64::NAN, |e| e.ratio.mu_ratio);
+            let ratio = shape
+                .with_contact(|c| c.mean_normal(amp).map(|mean| c.static_force(1.0 - amp) / mean).unwrap_or(f64::NAN));
+            worst = worst.max((mu - ratio).abs());
+            measured.push((format!("{spec}_amp_{amp}_mu"), mu));
+            measured.push((format!("{spec}_amp_{amp}_nmin_over_nmean"), ratio));
+        }
+    }
+    measured.push(("max_difference".into(), worst));
+    Claim {
+        claim: "section 5 (static friction)".into(),
+        seed_says: "the static friction force is determined just by the minimum of the normal force during the cycle"
+            .into(),
+        exact_gives: format!(
+            "mu/mu0 at vbar = 1e-10 equals N_min/N_mean to {worst:.1e} for flat, parabolic, cone and flat-tip:0.5 at \
+             du/u0 = 0.2, 0.5, 0.8, 1.5"
+        ),
+        criterion: "holds if they agree to 1e-8 (mu approaches its static value like pi vbar du/u0); wrong otherwise"
+            .into(),
+        measured,
+        deviation: Some(worst),
+        location: "vbar -> 0+".into(),
+        verdict: if worst <= 1e-8 { Verdict::Holds } else { Verdict::Wrong },
     }
 }
 

@@ -202,7 +202,8 @@ fn sweeps_have_no_binary_noise() {
         .output()
         .unwrap();
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let vs: Vec<f64> = v[0]["rows"].as_array().unwrap().iter().map(|r| r["velocity_m_per_s"].as_f64().unwrap()).collect();
+    let vs: Vec<f64> =
+        v[0]["rows"].as_array().unwrap().iter().map(|r| r["velocity_m_per_s"].as_f64().unwrap()).collect();
     assert_eq!(&vs[..4], &[0.0, 0.005, 0.01, 0.015]);
     assert!(vs.windows(2).all(|w| w[1] > w[0]));
 }
