@@ -81,6 +81,25 @@ pub struct Report {
     pub failures: Vec<String>,
     /// `quick` or `full`.
     pub mode: String,
+    /// Instructions per row of whole processes, from a deterministic counter
+    /// (callgrind; full mode, where valgrind is installed).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub instructions: Vec<InstructionCount>,
+}
+
+/// Instructions per row of one workload, as a whole process: `(I(n) - I(1)) /
+/// (n - 1)` with `I` callgrind's total over every thread, so that start-up and
+/// reading are not counted per row.
+#[derive(Debug, Clone, Serialize)]
+pub struct InstructionCount {
+    /// What ran.
+    pub workload: String,
+    /// Rows of the large run.
+    pub rows: usize,
+    /// Instructions per row.
+    pub instructions_per_row: f64,
+    /// The command (`FILE` a JSON array of random rows).
+    pub command: String,
 }
 
 /// The machine the numbers come from.
@@ -236,6 +255,7 @@ pub fn run(quick: bool) -> Report {
         ratios,
         failures,
         mode: if quick { "quick" } else { "full" }.into(),
+        instructions: vec![],
     }
 }
 
