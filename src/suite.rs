@@ -36,6 +36,8 @@ const VBAR: [f64; 17] = [0.0, 0.01, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8
 const AMP: [f64; 8] = [0.2, 0.5, 0.8, 1.0, 1.2, 1.5, 2.0, 3.0];
 /// The tabulated shape of the suite (the sphere of `data/profiles`, R = 1 m, at u0 = 1e-6 m).
 const TABULATED: &str = "profile:data/profiles/sphere.csv@1e-6";
+/// `data/profiles/sphere.csv`, compiled in.
+const SPHERE_TABLE: &str = include_str!("../data/profiles/sphere.csv");
 /// The histories: `(vbar, amp)`.
 const HISTORIES: [(f64, f64); 2] = [(0.3, 0.5), (0.3, 1.5)];
 /// Uniform samples of each history (event times are added).
@@ -98,7 +100,8 @@ pub fn files() -> Result<Vec<SuiteFile>> {
     for (name, spec) in
         [("flat", "flat"), ("parabolic", "parabolic"), ("cone", "cone"), ("tabulated-sphere", TABULATED)]
     {
-        let shape = crate::input::parse_shape(spec)?;
+        // The tabulated sphere's table is built in: the suite is the same from any directory.
+        let shape = crate::shape::Shape::parse_with(spec, &|_| Ok(SPHERE_TABLE.to_string()))?;
         let mut rows = vec![];
         for &a in &AMP {
             for &v in &VBAR {
@@ -119,7 +122,7 @@ pub fn files() -> Result<Vec<SuiteFile>> {
     }
     let mut rows = vec![];
     for spec in ["flat", "parabolic", "cone"] {
-        let shape = crate::input::parse_shape(spec)?;
+        let shape = crate::shape::Shape::parse(spec)?;
         for (v, a) in [(0.0, 0.5), (0.0, 1.5), (1.0 - 1e-3, 0.5), (1.0 - 1e-6, 0.5), (1.0 - 1e-6, 1.5), (0.5, 1.0)] {
             rows.push(value_row(&shape, spec, v, a)?);
         }
@@ -178,7 +181,7 @@ pub fn manifest(files: &[SuiteFile]) -> Result<String> {
     let doc = serde_json::json!({
         "suite_version": SUITE_VERSION,
         "fricosc_version": env!("CARGO_PKG_VERSION"),
-        "made_by": "fricosc suite --out DIR (run from the repository: the tabulated shape's table is data/profiles/sphere.csv)",
+        "made_by": "fricosc suite --out DIR (the tabulated shape is data/profiles/sphere.csv, built into fricosc)",
         "units": "dimensionless: vbar (eq. 3), amp = du/u0, mu_ratio = mu_macro/mu0; histories in units of kz u0 (normal) and mu0 kz u0 (tangential), phase tau = omega t",
         "files": entries,
     });
