@@ -369,8 +369,9 @@ fn critical_velocity() -> Claim {
 /// the static normal force and `kz` the incremental stiffness `2 E* x_c`
 /// (the flat punch's `kz u0` is its static force): eq. 14's bracket, if the
 /// seed is right that it holds for every shape.
+/// NaN where anything fails (the claim's verdict then says so).
 fn small_amplitude_slope(spec: &str, vbar: f64, amp: f64) -> f64 {
-    let shape = crate::shape::Shape::parse(spec).map_err(|e| e.to_string()).unwrap_or(crate::shape::Shape::Flat);
+    let Ok(shape) = crate::shape::Shape::parse(spec) else { return f64::NAN };
     let reduction = crate::shape::evaluate(&shape, vbar, amp).map_or(f64::NAN, |e| e.ratio.reduction);
     let n0 = shape.with_contact(|c| c.mean_normal(0.0)).unwrap_or(f64::NAN);
     reduction * n0 / (2.0 * amp)
@@ -390,7 +391,9 @@ fn eq14_small_amplitude() -> Claim {
         let d: Vec<f64> =
             ["flat", "parabolic", "cone", "power:3.7"].iter().map(|s| small_amplitude_slope(s, vbar, amp)).collect();
         let (lo, hi) = d.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
-        spread = spread.max((hi - lo) / hi.abs());
+        // f64::max drops a NaN: a failed evaluation must fail the claim instead.
+        let this = if d.iter().all(|x| x.is_finite()) { (hi - lo) / hi.abs() } else { f64::INFINITY };
+        spread = spread.max(this);
         let bracket = 0.75 * (vbar - 1.0) * (vbar - 1.0) + 0.25 * (vbar - 1.0).powi(4);
         bracket_error = bracket_error.max((bracket - d[0]).abs());
         parts.push(format!("vbar {vbar}: {:.9} (flat) .. {:.9}", d[0], d[3]));
@@ -427,12 +430,16 @@ fn static_friction_minimum_normal() -> Claim {
     let mut worst = 0.0f64;
     let mut measured = vec![];
     for spec in ["flat", "parabolic", "cone", "flat-tip:0.5"] {
-        let shape = crate::shape::Shape::parse(spec).unwrap_or(crate::shape::Shape::Flat);
+        let Ok(shape) = crate::shape::Shape::parse(spec) else {
+            worst = f64::INFINITY;
+            continue;
+        };
         for amp in [0.2, 0.5, 0.8, 1.5] {
             let mu = crate::shape::evaluate(&shape, 1e-10, amp).map_or(f64::NAN, |e| e.ratio.mu_ratio);
             let ratio = shape
                 .with_contact(|c| c.mean_normal(amp).map(|mean| c.static_force(1.0 - amp) / mean).unwrap_or(f64::NAN));
-            worst = worst.max((mu - ratio).abs());
+            // A NaN (a failed evaluation) fails the claim: f64::max would drop it.
+            worst = worst.max(if (mu - ratio).is_finite() { (mu - ratio).abs() } else { f64::INFINITY });
             measured.push((format!("{spec}_amp_{amp}_mu"), mu));
             measured.push((format!("{spec}_amp_{amp}_nmin_over_nmean"), ratio));
         }

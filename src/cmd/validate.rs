@@ -87,7 +87,7 @@ pub(crate) fn run(a: ValidateArgs) -> Result<Outcome> {
         return run_series(&a, at_rest, mu0, &format);
     }
     if let Some(h) = &a.history {
-        return run_history(&a, h, mu0, tolerance, &format);
+        return run_history(&a, h, mu0, tolerance, &format, max_error);
     }
     if a.files.len() != 1 || a.target.is_some() || a.plot.is_some() {
         return Err(Error::Parse {
@@ -275,7 +275,14 @@ fn history_of(
     fricosc::validate::compare_history(&shape, vbar, amp, &taus, &ft, normal, tolerance)
 }
 
-fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f64, format: &str) -> Result<Outcome> {
+fn run_history(
+    a: &ValidateArgs,
+    h: &HistoryArgs,
+    mu0: Option<f64>,
+    tolerance: f64,
+    format: &str,
+    max_error: Option<f64>,
+) -> Result<Outcome> {
     if a.files.len() != 1 {
         return Err(Error::Parse {
             context: "--history".into(),
@@ -291,7 +298,6 @@ fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f
     let mut out = io::BufWriter::new(io::stdout().lock());
     out.write_all(body.as_bytes()).map_err(io_err)?;
     out.flush().map_err(io_err)?;
-    let max_error = a.max_error.as_deref().map(|m| parse_number("--max-error", m)).transpose()?;
     Ok(if max_error.is_none_or(|e| v.max_abs_error <= e) { Outcome::Done } else { Outcome::Negative })
 }
 
