@@ -26,6 +26,19 @@ emit data/scene-steel-sphere-fig9.out.json $B scene data/scenes/steel-sphere-fig
 emit data/scene.schema.json $B scene --schema
 emit data/history-flat.csv $B history --shape flat --vbar 0.3 --amp 0.5 --samples 200 --format csv
 emit data/history-flat.svg $B history --shape flat --vbar 0.3 --amp 0.5 --samples 400 --format svg
+emit data/history-flat.png $B history --shape flat --vbar 0.3 --amp 0.5 --samples 400 --format png
+# A command that writes its drawing to the file named last (plot --out FILE).
+emit_to() { # emit_to FILE command...
+  local file=$1; shift
+  if [ "$check" = "--check" ]; then
+    local tmp; tmp=$(mktemp -d)/$(basename "$file")
+    "$@" "$tmp"
+    if ! cmp -s "$tmp" "$file"; then echo "stale: $file (run bash data/regenerate.sh)" >&2; exit 1; fi
+  else
+    "$@" "$file"
+  fi
+}
+emit_to data/plot-parabolic.png $B plot --shape parabolic --amp 0:3:7 --vhat 0:2:201 --out
 if [ "$check" = "--check" ]; then
   tmp=$(mktemp -d)
   $B figures --out "$tmp" > /dev/null

@@ -281,63 +281,61 @@ impl crate::export::Report for Report {
     }
 
     fn svg(&self) -> Option<crate::error::Result<String>> {
-        Some(to_svg(self).map_err(|e| crate::error::Error::Internal { what: format!("drawing the plot: {e}") }))
+        Some(Ok(to_svg(self)))
     }
 }
 
-/// Log-log SVG of error against time per evaluation, one series per case and method.
-fn to_svg(r: &Report) -> Result<String, String> {
-    use plotters::prelude::*;
-    let floor = 1e-17;
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let (tmin, tmax) =
-            r.points.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.time_s), b.max(p.time_s)));
-        let (tmin, tmax) = if tmax > 0.0 { (tmin / 3.0, tmax * 3.0) } else { (1e-9, 1.0) };
-        let mut chart = ChartBuilder::on(&root)
-            .caption("fricosc work-precision: exact solver vs time stepping", ("sans-serif", 20))
-            .margin(15)
-            .x_label_area_size(45)
-            .y_label_area_size(70)
-            .build_cartesian_2d((tmin..tmax).log_scale(), (floor..1.0).log_scale())
-            .map_err(|e| e.to_string())?;
-        chart
-            .configure_mesh()
-            .x_desc("wall time per evaluation [s] (min of k)")
-            .y_desc("|mu_ratio - reference| (floored at 1e-17)")
-            .x_label_formatter(&|x| format!("{x:.0e}"))
-            .y_label_formatter(&|y| format!("{y:.0e}"))
-            .draw()
-            .map_err(|e| e.to_string())?;
-        let mut series: Vec<(String, Vec<(f64, f64)>)> = vec![];
-        for p in &r.points {
-            let key = format!("{} / {}", p.case, p.method);
-            let xy = (p.time_s, p.error.max(floor));
-            match series.iter_mut().find(|s| s.0 == key) {
-                Some(s) => s.1.push(xy),
-                None => series.push((key, vec![xy])),
-            }
+/// Errors at or below this are drawn at it (the reference has 40 digits; an
+/// error of 0 means the f64 result is the reference rounded).
+const ERROR_FLOOR: f64 = 1e-17;
+
+/// Log-log SVG of error against time per evaluation: one colour per case, the
+/// exact solver solid with circles, time stepping dashed with triangles.
+fn to_svg(r: &Report) -> String {
+    use crate::plot::{Axis, Chart, Dash, Key, Marker, Rgb, Series, Style, OKABE_ITO};
+    let (tmin, tmax) = r.points.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.time_s), b.max(p.time_s)));
+    let (tmin, tmax) = if tmax > 0.0 { (tmin / 3.0, tmax * 3.0) } else { (1e-9, 1.0) };
+    let mut cases: Vec<&str> = vec![];
+    for p in &r.points {
+        if !cases.contains(&p.case.as_str()) {
+            cases.push(&p.case);
         }
-        for (i, (key, mut xy)) in series.into_iter().enumerate() {
-            xy.sort_by(|a, b| a.0.total_cmp(&b.0));
-            let color = Palette99::pick(i).to_rgba();
-            chart
-                .draw_series(LineSeries::new(xy.clone(), color.stroke_width(2)))
-                .map_err(|e| e.to_string())?
-                .label(key)
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
-            chart.draw_series(xy.into_iter().map(|p| Circle::new(p, 4, color.filled()))).map_err(|e| e.to_string())?;
-        }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::LowerRight)
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .draw()
-            .map_err(|e| e.to_string())?;
-        root.present().map_err(|e| e.to_string())?;
     }
-    Ok(svg)
+    let color = |case: &str| OKABE_ITO[cases.iter().position(|c| *c == case).unwrap_or(0) % OKABE_ITO.len()];
+    let style = |case: &str, method: &str| {
+        if method == "exact" {
+            Style::line(color(case)).marker(Marker::Circle)
+        } else {
+            Style::dashed(color(case), Dash::Dashed).marker(Marker::Triangle)
+        }
+    };
+    let mut series: Vec<Series> = vec![];
+    for p in &r.points {
+        let label = format!("{} / {}", p.case, p.method);
+        let xy = (p.time_s, p.error.max(ERROR_FLOOR));
+        match series.iter_mut().find(|s| s.label == label) {
+            Some(s) => s.points.push(xy),
+            None => series.push(Series { label, points: vec![xy], style: style(&p.case, &p.method), legend: false }),
+        }
+    }
+    for s in &mut series {
+        s.points.sort_by(|a, b| a.0.total_cmp(&b.0));
+    }
+    let grey = Rgb(0x55, 0x55, 0x55);
+    let mut key = vec![Key::Heading("case".into())];
+    let pretty = |c: &str| c.replace("amp<=", "Δu_{z}/u_{z0} ≤ ").replace("amp>", "Δu_{z}/u_{z0} > ");
+    key.extend(cases.iter().map(|c| Key::Entry(Style::line(color(c)), pretty(c))));
+    key.push(Key::Heading(String::new()));
+    key.push(Key::Entry(Style::line(grey).marker(Marker::Circle), "exact".into()));
+    key.push(Key::Entry(Style::dashed(grey, Dash::Dashed).marker(Marker::Triangle), "stepping".into()));
+    key.push(Key::Heading("errors ≤ 10^{−17} drawn on the grey line".into()));
+    Chart {
+        title: "fricosc work-precision: the exact solver against time stepping".into(),
+        x: Axis::log("time per evaluation (s)", (tmin, tmax)),
+        y: Axis::log("error |μ/μ_{0} − reference|", (ERROR_FLOOR / 10.0, 1.0)),
+        series,
+        key,
+        rules: vec![crate::plot::Rule { horizontal: true, at: ERROR_FLOOR }],
+    }
+    .svg()
 }

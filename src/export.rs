@@ -1,6 +1,6 @@
 //! One exporter for every report: a report names its columns and rows (CSV and
 //! Markdown are drawn from them), serialises itself (JSON) and may draw itself
-//! (SVG). Output formats are a choice at the edge, never part of a computation.
+//! (SVG, and PNG from it). Output formats are a choice at the edge, never part of a computation.
 //! (`table` streams its rows through [`crate::output::TableWriter`] instead: it
 //! may hold 10^7 of them.)
 
@@ -29,6 +29,8 @@ pub enum Format {
     Markdown,
     /// An SVG drawing.
     Svg,
+    /// The SVG drawing rendered as PNG ([`crate::plot::png`]; bytes: see [`export_bytes`]).
+    Png,
 }
 
 impl Format {
@@ -39,6 +41,7 @@ impl Format {
             "csv" => Some(Format::Csv),
             "markdown" => Some(Format::Markdown),
             "svg" => Some(Format::Svg),
+            "png" => Some(Format::Png),
             _ => None,
         };
         match f {
@@ -60,6 +63,7 @@ impl Format {
             Format::Csv => "csv",
             Format::Markdown => "markdown",
             Format::Svg => "svg",
+            Format::Png => "png",
         }
     }
 }
@@ -86,5 +90,16 @@ pub fn export(report: &impl Report, format: Format) -> Result<String> {
             Some(svg) => svg,
             None => Err(Error::Parse { context: "--format".into(), reason: "this report has no drawing".into() }),
         },
+        Format::Png => Err(Error::Internal { what: "a PNG is bytes: export_bytes writes it".into() }),
+    }
+}
+
+/// The report in `format` as bytes: [`export`]'s text, or for [`Format::Png`]
+/// the SVG drawing rendered.
+pub fn export_bytes(report: &impl Report, format: Format) -> Result<Vec<u8>> {
+    match format {
+        Format::Png => crate::plot::png(&export(report, Format::Svg)?)
+            .map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") }),
+        f => export(report, f).map(String::into_bytes),
     }
 }

@@ -1,7 +1,7 @@
 //! `fricosc history`: the force histories of [`fricosc_core::history`] as a
 //! report (CSV, JSON, the seed's Fig. 2 as SVG).
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 pub use fricosc_core::history::*;
 
 impl crate::export::Report for History {
@@ -24,17 +24,37 @@ impl crate::export::Report for History {
 
     /// Both forces over the phase (the seed's Fig. 2).
     fn svg(&self) -> Option<Result<String>> {
+        use crate::plot::{Axis, Chart, Series, Style, OKABE_ITO};
         let pts = |f: fn(&Sample) -> f64| self.samples.iter().map(|x| (x.tau, f(x))).collect::<Vec<_>>();
         let ymax = self.samples.iter().map(|x| x.normal).fold(0.0, f64::max) * 1.05 + 1e-12;
-        let series = [
-            crate::plot::Series { label: "mu0 x normal force".into(), points: pts(|x| x.normal), dashed: false },
-            crate::plot::Series { label: "tangential force".into(), points: pts(|x| x.tangential), dashed: false },
+        let series = vec![
+            Series {
+                label: "μ_{0} × normal force".into(),
+                points: pts(|x| x.normal),
+                style: Style::line(OKABE_ITO[4]),
+                legend: true,
+            },
+            Series {
+                label: "tangential force".into(),
+                points: pts(|x| x.tangential),
+                style: Style::line(OKABE_ITO[5]).width(1.5),
+                legend: true,
+            },
         ];
-        let title = format!("{} vbar = {}, du/u0 = {} ({})", self.shape, self.vbar, self.amp, self.units);
         let tmax = self.samples.last().map_or(1.0, |x| x.tau);
-        Some(
-            crate::plot::lines(&title, "omega t", "force", (0.0, tmax), (0.0, ymax), &series)
-                .map_err(|e| Error::Internal { what: format!("drawing the plot: {e}") }),
-        )
+        let unit = if self.units.contains("E*") {
+            "force / (μ_{0} E* x_{c} u_{z0})"
+        } else {
+            "force / (μ_{0} k_{z} u_{z0})"
+        };
+        Some(Ok(Chart {
+            title: format!("{}: forces at vbar = {}, du/u0 = {} ({})", self.shape, self.vbar, self.amp, self.units),
+            x: Axis::linear("phase ωt (rad)", (0.0, tmax)),
+            y: Axis::linear(unit, (0.0, ymax)),
+            series,
+            key: vec![],
+            rules: vec![],
+        }
+        .svg()))
     }
 }

@@ -31,6 +31,8 @@ enum Command {
     Point(cmd::point::PointArgs),
     /// A grid of amplitudes x velocities: JSON or CSV.
     Table(cmd::table::TableArgs),
+    /// Draw mu/mu0 against vbar or vhat, one curve per amplitude, as SVG or PNG.
+    Plot(cmd::plot::PlotArgs),
     /// Compare a table of (vbar, amp, mu_ratio) from another code (CSV or JSON) with the exact values.
     /// Exit 1 when the largest error exceeds --max-error.
     Validate {
@@ -150,7 +152,7 @@ enum Command {
         /// MDR shapes: report these springs too (positions x/x_c, comma list; JSON only).
         #[arg(long, allow_hyphen_values = true)]
         spring_at: Option<String>,
-        /// json, csv or svg.
+        /// json, csv, svg or png (the seed's Fig. 2, 300 dpi).
         #[arg(long, default_value = "json")]
         format: String,
         /// exact (default) or stepping: the seed's time-stepping scheme (flat punch), one row per
@@ -225,6 +227,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Point(a) => done(cmd::point::run(a)),
         Command::Table(a) => done(cmd::table::run(a)),
+        Command::Plot(a) => done(cmd::plot::run(a)),
         Command::Bench { out, quick } => done(cmd::bench::run(&out, quick)),
         Command::Scene { files, schema, format } => done(cmd::scene::run(files, schema, format)),
         Command::Figures { out } => done(cmd::figures::run(&out)),

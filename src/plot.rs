@@ -1,69 +1,650 @@
-//! SVG line plots (plotters' SVG backend only: no font or system library).
+//! Figures: SVG written directly (real coordinates to 0.01 pt, Unicode text,
+//! a legend outside the plot area) and PNG rendered from that SVG by `resvg`
+//! with an embedded font (DejaVu Sans), so a PNG looks the same on every machine.
+//!
+//! Decisions (the house style of every drawing fricosc makes):
+//! - Size: 8.5 cm wide (a journal's single column; 1 SVG unit = 1 pt), text at
+//!   7-8 pt, lines 1 pt (bold 2 pt). The SVG scales to a full page; the PNG is
+//!   rendered at 300 dpi (1004 px wide).
+//! - No title inside the plot (journals set captions below the figure); the
+//!   title goes into the SVG's `<title>` element.
+//! - Colour: families of curves (one per amplitude) take evenly spaced colours
+//!   of viridis (colour-blind safe, monotone in lightness, so it also reads in
+//!   greyscale) in the order of the amplitude; the light yellow end is left out.
+//!   Single curves take the Okabe-Ito palette. No two curves of one figure
+//!   share colour, dash and width ([`distinct`]).
+//! - Exact values are solid lines; approximations are dashed (a second one
+//!   dotted) in the colour of their amplitude; reference lines (no oscillation,
+//!   the critical amplitude) are black or bold.
+//! - Text takes a small markup: `_{...}` a subscript, `^{...}` a superscript.
 
-use plotters::prelude::*;
+use std::fmt::Write as _;
 
-/// One curve: label, points, dashed (an approximation) or solid (exact).
-pub struct Series {
-    /// Legend label.
-    pub label: String,
-    /// Points in order of `x`.
-    pub points: Vec<(f64, f64)>,
-    /// Dashed line (used for the seed's approximations).
-    pub dashed: bool,
+/// An sRGB colour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Rgb(pub u8, pub u8, pub u8);
+
+impl Rgb {
+    /// `#rrggbb`.
+    pub fn hex(self) -> String {
+        format!("#{:02x}{:02x}{:02x}", self.0, self.1, self.2)
+    }
+
+    /// CIELAB (D65) of the colour, for distinctness checks.
+    pub fn lab(self) -> [f64; 3] {
+        let lin = |c: u8| {
+            let c = c as f64 / 255.0;
+            if c <= 0.04045 {
+                c / 12.92
+            } else {
+                ((c + 0.055) / 1.055).powf(2.4)
+            }
+        };
+        let (r, g, b) = (lin(self.0), lin(self.1), lin(self.2));
+        let x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
+        let y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+        let z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+        let f = |t: f64| if t > 0.008856 { t.cbrt() } else { 7.787 * t + 16.0 / 116.0 };
+        [116.0 * f(y) - 16.0, 500.0 * (f(x) - f(y)), 200.0 * (f(y) - f(z))]
+    }
+
+    /// CIE76 colour difference.
+    pub fn delta_e(self, other: Rgb) -> f64 {
+        let (a, b) = (self.lab(), other.lab());
+        ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+    }
 }
 
-/// A linear-axes line plot with a legend, as an SVG document.
-pub fn lines(
-    title: &str,
-    x_label: &str,
-    y_label: &str,
-    x: (f64, f64),
-    y: (f64, f64),
-    series: &[Series],
-) -> Result<String, String> {
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 20))
-            .margin(15)
-            .x_label_area_size(45)
-            .y_label_area_size(60)
-            .build_cartesian_2d(x.0..x.1, y.0..y.1)
-            .map_err(|e| e.to_string())?;
-        chart.configure_mesh().x_desc(x_label).y_desc(y_label).draw().map_err(|e| e.to_string())?;
-        for (i, s) in series.iter().enumerate() {
-            let color = Palette99::pick(i).to_rgba();
-            let style = color.stroke_width(2);
-            if s.dashed {
-                // Dashes: every other segment of a fine resampling.
-                let segs: Vec<Vec<(f64, f64)>> = s.points.windows(2).step_by(2).map(|w| w.to_vec()).collect();
-                let mut first = true;
-                for seg in segs {
-                    let a = chart.draw_series(LineSeries::new(seg, style)).map_err(|e| e.to_string())?;
-                    if first {
-                        a.label(s.label.clone())
-                            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 8, y)], style));
-                        first = false;
-                    }
-                }
-            } else {
-                chart
-                    .draw_series(LineSeries::new(s.points.clone(), style))
-                    .map_err(|e| e.to_string())?
-                    .label(s.label.clone())
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+/// Black.
+pub const BLACK: Rgb = Rgb(0, 0, 0);
+
+/// The Okabe-Ito palette without its yellow (too light on white): black,
+/// orange, sky blue, bluish green, blue, vermillion, reddish purple.
+pub const OKABE_ITO: [Rgb; 7] = [
+    Rgb(0, 0, 0),
+    Rgb(230, 159, 0),
+    Rgb(86, 180, 233),
+    Rgb(0, 158, 115),
+    Rgb(0, 114, 178),
+    Rgb(213, 94, 0),
+    Rgb(204, 121, 167),
+];
+
+/// Viridis at `t` in `[0, 1]` (linear between its colours at tenths).
+pub fn viridis(t: f64) -> Rgb {
+    const STOPS: [(u8, u8, u8); 11] = [
+        (0x44, 0x01, 0x54),
+        (0x48, 0x24, 0x75),
+        (0x41, 0x44, 0x87),
+        (0x35, 0x5f, 0x8d),
+        (0x2a, 0x78, 0x8e),
+        (0x21, 0x91, 0x8c),
+        (0x22, 0xa8, 0x84),
+        (0x44, 0xbf, 0x70),
+        (0x7a, 0xd1, 0x51),
+        (0xbd, 0xdf, 0x26),
+        (0xfd, 0xe7, 0x25),
+    ];
+    let s = t.clamp(0.0, 1.0) * 10.0;
+    let k = (s.floor() as usize).min(9);
+    let f = s - k as f64;
+    let mix = |a: u8, b: u8| (a as f64 + (b as f64 - a as f64) * f).round() as u8;
+    let (a, b) = (STOPS[k], STOPS[k + 1]);
+    Rgb(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// The colour of member `i` of a family of `n` curves: viridis from 0 to 0.85.
+pub fn family_color(i: usize, n: usize) -> Rgb {
+    viridis(if n > 1 { 0.85 * i as f64 / (n - 1) as f64 } else { 0.0 })
+}
+
+/// A line's dash pattern.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Dash {
+    /// Solid.
+    Solid,
+    /// Long dashes.
+    Dashed,
+    /// Dots.
+    Dotted,
+    /// Dash and dot.
+    DashDot,
+}
+
+impl Dash {
+    fn array(self) -> Option<&'static str> {
+        match self {
+            Dash::Solid => None,
+            Dash::Dashed => Some("4 2"),
+            Dash::Dotted => Some("1 1.5"),
+            Dash::DashDot => Some("4 1.5 1 1.5"),
+        }
+    }
+}
+
+/// A point marker.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Marker {
+    /// A filled circle.
+    Circle,
+    /// A filled square.
+    Square,
+    /// A filled triangle.
+    Triangle,
+    /// A filled diamond.
+    Diamond,
+}
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Style {
+    /// Colour.
+    pub color: Rgb,
+    /// Dash pattern (`None`: no line, markers only).
+    pub dash: Option<Dash>,
+    /// Line width (pt).
+    pub width: f64,
+    /// Marker at each point.
+    pub marker: Option<Marker>,
+}
+
+impl Style {
+    /// A solid line.
+    pub fn line(color: Rgb) -> Style {
+        Style { color, dash: Some(Dash::Solid), width: 1.0, marker: None }
+    }
+
+    /// A line with `dash`.
+    pub fn dashed(color: Rgb, dash: Dash) -> Style {
+        Style { color, dash: Some(dash), width: 1.0, marker: None }
+    }
+
+    /// The same, `width` pt wide.
+    pub fn width(self, width: f64) -> Style {
+        Style { width, ..self }
+    }
+
+    /// The same, with markers.
+    pub fn marker(self, marker: Marker) -> Style {
+        Style { marker: Some(marker), ..self }
+    }
+}
+
+/// One curve.
+#[derive(Debug, Clone)]
+pub struct Series {
+    /// Name (the SVG's `data-series`; legend text where `legend` is true).
+    pub label: String,
+    /// Points in drawing order (non-finite points break the line).
+    pub points: Vec<(f64, f64)>,
+    /// Style.
+    pub style: Style,
+    /// Whether the series has its own legend entry.
+    pub legend: bool,
+}
+
+/// One axis.
+#[derive(Debug, Clone)]
+pub struct Axis {
+    /// Label (with markup), including the unit.
+    pub label: String,
+    /// Range in data units.
+    pub range: (f64, f64),
+    /// Logarithmic (base 10).
+    pub log: bool,
+}
+
+impl Axis {
+    /// A linear axis.
+    pub fn linear(label: &str, range: (f64, f64)) -> Axis {
+        Axis { label: label.into(), range, log: false }
+    }
+
+    /// A log10 axis.
+    pub fn log(label: &str, range: (f64, f64)) -> Axis {
+        Axis { label: label.into(), range, log: true }
+    }
+
+    fn t(&self, v: f64) -> f64 {
+        if self.log {
+            v.log10()
+        } else {
+            v
+        }
+    }
+
+    /// Where `v` falls, 0 at the start of the range, 1 at its end.
+    fn frac(&self, v: f64) -> f64 {
+        let (a, b) = (self.t(self.range.0), self.t(self.range.1));
+        (self.t(v) - a) / (b - a)
+    }
+}
+
+/// A legend entry that is not a series: a heading, or a style sample.
+#[derive(Debug, Clone)]
+pub enum Key {
+    /// A heading line.
+    Heading(String),
+    /// A sample line in `Style` with its text.
+    Entry(Style, String),
+}
+
+/// A reference line across the plot (e.g. `mu = mu0`).
+#[derive(Debug, Clone)]
+pub struct Rule {
+    /// Horizontal (`y` = value) or vertical (`x` = value).
+    pub horizontal: bool,
+    /// Where.
+    pub at: f64,
+}
+
+/// A chart: axes, series, legend.
+#[derive(Debug, Clone)]
+pub struct Chart {
+    /// Title (the SVG's `<title>`; not drawn).
+    pub title: String,
+    /// Horizontal axis.
+    pub x: Axis,
+    /// Vertical axis.
+    pub y: Axis,
+    /// Curves, drawn in order.
+    pub series: Vec<Series>,
+    /// Legend, outside the plot on the right: headings and style samples,
+    /// followed by the series with `legend` set. Empty: no legend.
+    pub key: Vec<Key>,
+    /// Thin grey reference lines.
+    pub rules: Vec<Rule>,
+}
+
+/// Width of the drawing (pt): 8.5 cm.
+pub const WIDTH: f64 = 241.0;
+const HEIGHT: f64 = 172.0;
+const FONT: f64 = 7.5;
+const TICK_FONT: f64 = 6.5;
+/// Mean advance of DejaVu Sans, in em (for layout).
+const EM: f64 = 0.58;
+/// The PNG's resolution (dots per inch).
+pub const DPI: f64 = 300.0;
+
+fn esc(s: &str) -> String {
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+/// Plain text of a marked-up label (markup removed).
+pub fn plain(s: &str) -> String {
+    s.replace("_{", "").replace("^{", "").replace('}', "")
+}
+
+/// Estimated width of a marked-up label at `size` pt.
+fn text_width(s: &str, size: f64) -> f64 {
+    let (mut w, mut small) = (0.0, 0usize);
+    let mut chars = s.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '_' | '^' if chars.peek() == Some(&'{') => {
+                chars.next();
+                small += 1;
+            }
+            '}' if small > 0 => small -= 1,
+            // Combining marks take no advance.
+            '\u{300}'..='\u{36f}' => {}
+            _ => w += if small > 0 { 0.7 } else { 1.0 },
+        }
+    }
+    w * EM * size
+}
+
+/// SVG text content for a marked-up label: sub- and superscripts as `tspan`s.
+fn markup(s: &str, size: f64) -> String {
+    let mut out = String::new();
+    let mut depth: Vec<bool> = vec![];
+    let mut chars = s.chars().peekable();
+    let mut buf = String::new();
+    while let Some(c) = chars.next() {
+        match c {
+            '_' | '^' if chars.peek() == Some(&'{') => {
+                chars.next();
+                out += &esc(&buf);
+                buf.clear();
+                let shift = if c == '_' { "sub" } else { "super" };
+                let _ = write!(out, r#"<tspan baseline-shift="{shift}" font-size="{:.2}">"#, size * 0.7);
+                depth.push(true);
+            }
+            '}' if !depth.is_empty() => {
+                out += &esc(&buf);
+                buf.clear();
+                out += "</tspan>";
+                depth.pop();
+            }
+            _ => buf.push(c),
+        }
+    }
+    out += &esc(&buf);
+    for _ in depth {
+        out += "</tspan>";
+    }
+    out
+}
+
+/// Four to seven round tick values in `[lo, hi]` (1, 2 or 5 times a power of ten apart).
+pub fn ticks(lo: f64, hi: f64) -> Vec<f64> {
+    let span = hi - lo;
+    if !(span > 0.0 && span.is_finite()) {
+        return vec![lo];
+    }
+    let raw = span / 6.0;
+    let p = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 5.0, 10.0].iter().map(|m| m * p).find(|s| *s >= raw * 0.999).unwrap_or(10.0 * p);
+    let (k0, k1) = ((lo / step - 1e-9).ceil() as i64, (hi / step + 1e-9).floor() as i64);
+    (k0..=k1).map(|k| k as f64 * step).collect()
+}
+
+/// A tick value as text: the fewest decimals of the step, a true minus sign.
+fn tick_label(v: f64, step: f64) -> String {
+    let d = (-(step.log10().floor())).max(0.0) as usize;
+    let s = format!("{:.*}", d, v);
+    let s = if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') { "0".to_string() } else { s };
+    s.replace('-', "\u{2212}")
+}
+
+/// Tick positions (data units) and labels for an axis.
+fn axis_ticks(a: &Axis) -> Vec<(f64, String)> {
+    if a.log {
+        let (lo, hi) = (a.range.0.log10(), a.range.1.log10());
+        let (k0, k1) = ((lo - 1e-9).ceil() as i64, (hi + 1e-9).floor() as i64);
+        let every = ((k1 - k0) / 6 + 1).max(1);
+        (k0..=k1)
+            .filter(|k| (k - k0) % every == 0)
+            .map(|k| (10f64.powi(k as i32), format!("10^{{{}}}", k.to_string().replace('-', "\u{2212}"))))
+            .collect()
+    } else {
+        let t = ticks(a.range.0, a.range.1);
+        let step = if t.len() > 1 { t[1] - t[0] } else { 1.0 };
+        t.iter().map(|&v| (v, tick_label(v, step))).collect()
+    }
+}
+
+fn path_data(points: &[(f64, f64)], to: impl Fn(f64, f64) -> Option<(f64, f64)>) -> String {
+    let mut d = String::new();
+    let mut pen_down = false;
+    for &(x, y) in points {
+        match to(x, y) {
+            Some((px, py)) => {
+                let _ = write!(d, "{}{px:.2},{py:.2}", if pen_down { " L" } else { " M" });
+                pen_down = true;
+            }
+            None => pen_down = false,
+        }
+    }
+    d.trim_start().to_string()
+}
+
+fn stroke(style: &Style) -> String {
+    let mut s = format!(r#"fill="none" stroke="{}" stroke-width="{}""#, style.color.hex(), style.width);
+    if let Some(a) = style.dash.and_then(Dash::array) {
+        let _ = write!(s, r#" stroke-dasharray="{a}""#);
+    }
+    s + r#" stroke-linejoin="round" stroke-linecap="butt""#
+}
+
+fn marker(out: &mut String, m: Marker, x: f64, y: f64, color: Rgb) {
+    let c = color.hex();
+    let r = 1.8;
+    let _ = match m {
+        Marker::Circle => write!(out, r#"<circle cx="{x:.2}" cy="{y:.2}" r="{r}" fill="{c}"/>"#),
+        Marker::Square => {
+            write!(
+                out,
+                r#"<rect x="{:.2}" y="{:.2}" width="{:.2}" height="{:.2}" fill="{c}"/>"#,
+                x - r,
+                y - r,
+                2.0 * r,
+                2.0 * r
+            )
+        }
+        Marker::Triangle => write!(
+            out,
+            r#"<path d="M{x:.2},{:.2} L{:.2},{:.2} L{:.2},{:.2} Z" fill="{c}"/>"#,
+            y - 1.2 * r,
+            x + 1.1 * r,
+            y + 0.8 * r,
+            x - 1.1 * r,
+            y + 0.8 * r
+        ),
+        Marker::Diamond => write!(
+            out,
+            r#"<path d="M{x:.2},{:.2} L{:.2},{y:.2} L{x:.2},{:.2} L{:.2},{y:.2} Z" fill="{c}"/>"#,
+            y - 1.3 * r,
+            x + 1.3 * r,
+            y + 1.3 * r,
+            x - 1.3 * r
+        ),
+    };
+}
+
+/// Whether no two series of `chart` share colour, dash, width and marker, where
+/// two colours count as shared unless they differ by `min_delta_e` (CIE76) or more.
+pub fn distinct(chart: &Chart, min_delta_e: f64) -> Result<(), String> {
+    for (i, a) in chart.series.iter().enumerate() {
+        for b in &chart.series[i + 1..] {
+            let (s, t) = (a.style, b.style);
+            if s.dash == t.dash && s.width == t.width && s.marker == t.marker && s.color.delta_e(t.color) < min_delta_e
+            {
+                return Err(format!("'{}' and '{}' look the same", a.label, b.label));
             }
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::LowerRight)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(|e| e.to_string())?;
-        root.present().map_err(|e| e.to_string())?;
     }
-    Ok(svg)
+    Ok(())
+}
+
+impl Chart {
+    /// The chart as an SVG document.
+    pub fn svg(&self) -> String {
+        // The legend: headings, style samples, then the series' own entries.
+        let mut key = self.key.clone();
+        key.extend(self.series.iter().filter(|s| s.legend).map(|s| Key::Entry(s.style, s.label.clone())));
+        let line = FONT * 1.3;
+        let sample = 14.0;
+        let key_w = key
+            .iter()
+            .map(|k| match k {
+                Key::Heading(t) => text_width(t, FONT),
+                Key::Entry(_, t) => sample + 3.0 + text_width(t, FONT),
+            })
+            .fold(0.0, f64::max);
+        let xt = axis_ticks(&self.x);
+        let yt = axis_ticks(&self.y);
+        let ytw = yt.iter().map(|(_, l)| text_width(l, TICK_FONT)).fold(0.0, f64::max);
+        let left = 3.0 + FONT + 6.0 + 1.1 * ytw + 3.0;
+        let axes_bottom = 3.0 + TICK_FONT + 3.0 + FONT + 4.0;
+        let top = 6.0;
+        // A narrow legend goes to the right of the plot, a wide one below it.
+        let below = key_w > 0.3 * WIDTH;
+        let right = if key.is_empty() || below { 8.0 } else { key_w + 14.0 };
+        let key_h = key.len() as f64 * line + 4.0;
+        let bottom = if below { axes_bottom + key_h } else { axes_bottom };
+        let height = if below { HEIGHT + key_h } else { HEIGHT.max(top + key_h + axes_bottom) };
+        let (pw, ph) = (WIDTH - left - right, height - top - bottom);
+        let px = |x: f64| left + pw * self.x.frac(x);
+        let py = |y: f64| top + ph * (1.0 - self.y.frac(y));
+        let mut o = String::new();
+        let _ = write!(
+            o,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}pt" height="{height}pt" viewBox="0 0 {WIDTH} {height}" font-family="DejaVu Sans, Verdana, sans-serif">"#
+        );
+        let _ = write!(o, "<title>{}</title>", esc(&plain(&self.title)));
+        let _ = write!(o, r#"<rect width="{WIDTH}" height="{height}" fill="white"/>"#);
+        let _ = write!(
+            o,
+            r#"<clipPath id="plot"><rect x="{left:.2}" y="{top:.2}" width="{pw:.2}" height="{ph:.2}"/></clipPath>"#
+        );
+        // Ticks and tick labels.
+        let _ = write!(o, r#"<g stroke="black" stroke-width="0.5">"#);
+        for (v, _) in &xt {
+            let x = px(*v);
+            let _ = write!(o, r#"<path d="M{x:.2},{:.2} v2.5"/>"#, top + ph);
+        }
+        for (v, _) in &yt {
+            let y = py(*v);
+            let _ = write!(o, r#"<path d="M{left:.2},{y:.2} h-2.5"/>"#);
+        }
+        o += "</g>";
+        let _ = write!(o, r#"<g font-size="{TICK_FONT}" fill="black">"#);
+        for (v, l) in &xt {
+            let _ = write!(
+                o,
+                r#"<text x="{:.2}" y="{:.2}" text-anchor="middle">{}</text>"#,
+                px(*v),
+                top + ph + 3.0 + TICK_FONT,
+                markup(l, TICK_FONT)
+            );
+        }
+        for (v, l) in &yt {
+            let _ = write!(
+                o,
+                r#"<text x="{:.2}" y="{:.2}" text-anchor="end">{}</text>"#,
+                left - 3.5,
+                py(*v) + TICK_FONT * 0.35,
+                markup(l, TICK_FONT)
+            );
+        }
+        o += "</g>";
+        // Axis labels.
+        let _ = write!(
+            o,
+            r#"<text x="{:.2}" y="{:.2}" font-size="{FONT}" text-anchor="middle" class="x-label">{}</text>"#,
+            left + pw / 2.0,
+            top + ph + axes_bottom - 4.0,
+            markup(&self.x.label, FONT)
+        );
+        let (lx, ly) = (3.0 + FONT * 0.8, top + ph / 2.0);
+        let _ = write!(
+            o,
+            r#"<text x="{lx:.2}" y="{ly:.2}" font-size="{FONT}" text-anchor="middle" transform="rotate(-90 {lx:.2} {ly:.2})" class="y-label">{}</text>"#,
+            markup(&self.y.label, FONT)
+        );
+        // Reference lines, series (clipped), frame.
+        let _ = write!(o, r#"<g clip-path="url(#plot)">"#);
+        for r in &self.rules {
+            let d = if r.horizontal {
+                format!("M{left:.2},{:.2} h{pw:.2}", py(r.at))
+            } else {
+                format!("M{:.2},{top:.2} v{ph:.2}", px(r.at))
+            };
+            let _ = write!(o, r##"<path d="{d}" stroke="#999999" stroke-width="0.5" fill="none"/>"##);
+        }
+        let inside = |x: f64, y: f64| {
+            let ok = x.is_finite() && y.is_finite() && (!self.x.log || x > 0.0) && (!self.y.log || y > 0.0);
+            ok.then(|| (px(x), py(y)))
+        };
+        for s in &self.series {
+            let _ = write!(o, r#"<g data-series="{}">"#, esc(&plain(&s.label)));
+            if s.style.dash.is_some() {
+                let _ = write!(o, r#"<path d="{}" {}/>"#, path_data(&s.points, inside), stroke(&s.style));
+            }
+            if let Some(m) = s.style.marker {
+                for &(x, y) in &s.points {
+                    if let Some((x, y)) = inside(x, y) {
+                        marker(&mut o, m, x, y, s.style.color);
+                    }
+                }
+            }
+            o += "</g>";
+        }
+        o += "</g>";
+        let _ = write!(
+            o,
+            r#"<rect x="{left:.2}" y="{top:.2}" width="{pw:.2}" height="{ph:.2}" fill="none" stroke="black" stroke-width="0.6"/>"#
+        );
+        // Legend.
+        if !key.is_empty() {
+            let (x0, y0) = if below { (left, top + ph + axes_bottom) } else { (left + pw + 8.0, top) };
+            let _ = write!(o, r#"<g font-size="{FONT}" class="legend">"#);
+            for (i, k) in key.iter().enumerate() {
+                let y = y0 + line * (i as f64 + 0.75);
+                match k {
+                    Key::Heading(t) => {
+                        let _ = write!(o, r#"<text x="{x0:.2}" y="{:.2}">{}</text>"#, y + FONT * 0.35, markup(t, FONT));
+                    }
+                    Key::Entry(st, t) => {
+                        if st.dash.is_some() {
+                            let _ = write!(o, r#"<path d="M{x0:.2},{y:.2} h{sample}" {}/>"#, stroke(st));
+                        }
+                        if let Some(m) = st.marker {
+                            marker(&mut o, m, x0 + sample / 2.0, y, st.color);
+                        }
+                        let _ = write!(
+                            o,
+                            r#"<text x="{:.2}" y="{:.2}">{}</text>"#,
+                            x0 + sample + 3.0,
+                            y + FONT * 0.35,
+                            markup(t, FONT)
+                        );
+                    }
+                }
+            }
+            o += "</g>";
+        }
+        o += "</svg>\n";
+        o
+    }
+}
+
+/// The font PNGs are drawn with, built in.
+fn fonts() -> resvg::usvg::Options<'static> {
+    let mut opt = resvg::usvg::Options { font_family: "DejaVu Sans".into(), ..Default::default() };
+    let db = opt.fontdb_mut();
+    db.load_font_data(dejavu::sans::regular().to_vec());
+    db.load_font_data(dejavu::sans::oblique().to_vec());
+    db.set_sans_serif_family("DejaVu Sans");
+    opt
+}
+
+/// Render an SVG document as a PNG at [`DPI`] (the same pixels on every machine:
+/// the only font is the built-in DejaVu Sans).
+pub fn png(svg: &str) -> Result<Vec<u8>, String> {
+    let tree = resvg::usvg::Tree::from_str(svg, &fonts()).map_err(|e| e.to_string())?;
+    let scale = (DPI / 96.0) as f32;
+    let size = tree.size();
+    let (w, h) = ((size.width() * scale).round() as u32, (size.height() * scale).round() as u32);
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(w, h).ok_or("empty drawing")?;
+    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(scale, scale), &mut pixmap.as_mut());
+    pixmap.encode_png().map_err(|e| e.to_string())
+}
+
+/// Check that `svg` parses as SVG (with `resvg`'s parser) and return its size
+/// in pt (to 0.01 pt: the parser works in `f32`).
+pub fn parse_size(svg: &str) -> Result<(f64, f64), String> {
+    let tree = resvg::usvg::Tree::from_str(svg, &fonts()).map_err(|e| e.to_string())?;
+    let s = tree.size();
+    let pt = |px: f32| (px as f64 * 75.0).round() / 100.0;
+    Ok((pt(s.width()), pt(s.height())))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ticks_are_round() {
+        assert_eq!(ticks(0.0, 1.2), vec![0.0, 0.2, 0.4, 0.6000000000000001, 0.8, 1.0, 1.2000000000000002]);
+        assert_eq!(tick_label(0.6000000000000001, 0.2), "0.6");
+        assert_eq!(tick_label(-0.5, 0.5), "\u{2212}0.5");
+        assert_eq!(tick_label(-0.0, 0.5), "0");
+        assert_eq!(ticks(0.0, 0.1).len(), 6);
+    }
+
+    #[test]
+    fn markup_nests_and_escapes() {
+        assert_eq!(markup("μ_{a<b}/x", 10.0), r#"μ<tspan baseline-shift="sub" font-size="7.00">a&lt;b</tspan>/x"#);
+        assert_eq!(plain("Δu_{z}/u_{z0}"), "Δuz/uz0");
+    }
+
+    #[test]
+    fn viridis_ends_and_distance() {
+        assert_eq!(viridis(0.0), Rgb(0x44, 0x01, 0x54));
+        assert_eq!(viridis(1.0), Rgb(0xfd, 0xe7, 0x25));
+        // CIE76: black to white is 100.
+        assert!((BLACK.delta_e(Rgb(255, 255, 255)) - 100.0).abs() < 0.01);
+    }
 }

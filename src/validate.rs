@@ -375,48 +375,56 @@ pub fn series_summary(c: &Convergence) -> String {
     s
 }
 
-/// Errors against resolution, log-log (log10 of both), per regime: the
-/// geometric mean of its rows' errors (solid) and the slope of its median order
-/// through the last point (dashed).
+/// Errors against resolution on log axes, per regime (one colour each): the
+/// geometric mean of its rows' errors (solid, circles) and the slope of its
+/// median order through the last point (dashed).
 pub fn series_svg(c: &Convergence) -> Result<String> {
+    use crate::plot::{Axis, Chart, Dash, Marker, Series, Style, OKABE_ITO};
     let mut series = vec![];
     let (mut ylo, mut yhi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for g in &c.by_regime {
+    for (i, g) in c.by_regime.iter().enumerate() {
         let rows: Vec<&SeriesRow> = c.rows.iter().filter(|r| r.regime == g.regime).collect();
         let mut pts = vec![];
         for (k, &m) in c.resolutions.iter().enumerate() {
             let logs: Vec<f64> = rows.iter().map(|r| r.errors[k].abs()).filter(|x| *x > 0.0).map(f64::log10).collect();
             if !logs.is_empty() {
-                pts.push((m.log10(), logs.iter().sum::<f64>() / logs.len() as f64));
+                pts.push((m, 10f64.powf(logs.iter().sum::<f64>() / logs.len() as f64)));
             }
         }
-        let Some(&(xl, yl)) = pts.last() else { continue };
-        let x0 = c.resolutions[0].log10();
-        let fitted = vec![(x0, yl + g.median_order * (xl - x0)), (xl, yl)];
+        let Some(&(ml, el)) = pts.last() else { continue };
+        let m0 = c.resolutions[0];
+        let fitted = vec![(m0, el * (ml / m0).powf(g.median_order)), (ml, el)];
         for &(_, y) in pts.iter().chain(&fitted) {
             ylo = ylo.min(y);
             yhi = yhi.max(y);
         }
-        series.push(crate::plot::Series { label: regime_name(g.regime), points: pts, dashed: false });
-        series.push(crate::plot::Series {
+        let color = OKABE_ITO[(i + 1) % OKABE_ITO.len()];
+        series.push(Series {
+            label: regime_name(g.regime),
+            points: pts,
+            style: Style::line(color).marker(Marker::Circle),
+            legend: true,
+        });
+        series.push(Series {
             label: format!("order {:.2}", g.median_order),
             points: fitted,
-            dashed: true,
+            style: Style::dashed(color, Dash::Dashed),
+            legend: true,
         });
     }
-    let (x0, x1) = (c.resolutions[0].log10(), c.resolutions[c.resolutions.len() - 1].log10());
+    let (x0, x1) = (c.resolutions[0], c.resolutions[c.resolutions.len() - 1]);
     if !(ylo.is_finite() && yhi.is_finite()) {
         return Err(Error::Parse { context: "--plot".into(), reason: "no errors above zero to draw".into() });
     }
-    crate::plot::lines(
-        &format!("{}: error against resolution", c.shape),
-        "log10 resolution (e.g. steps per period)",
-        "log10 |mu_ratio - exact| (geometric mean per regime)",
-        (x0 - 0.05, x1 + 0.05),
-        (ylo - 0.3, yhi + 0.3),
-        &series,
-    )
-    .map_err(|e| Error::Internal { what: format!("drawing the plot: {e}") })
+    Ok(Chart {
+        title: format!("{}: error against resolution", c.shape),
+        x: Axis::log("resolution (e.g. steps per period)", (x0 / 1.2, x1 * 1.2)),
+        y: Axis::log("|μ/μ_{0} − exact| (geometric mean per regime)", (ylo / 3.0, yhi * 3.0)),
+        series,
+        key: vec![],
+        rules: vec![],
+    }
+    .svg())
 }
 
 fn event_name(k: fricosc_core::spring::EventKind) -> String {

@@ -345,3 +345,36 @@ fn help_texts_and_stepping_only_options() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("applies only with --method stepping"));
 }
+
+/// `plot`: the user's curves as SVG (stdout) or PNG (by the file's name); every
+/// bad request is refused before any work, with nothing on stdout.
+#[test]
+fn plot_draws_the_users_curves_and_refuses_bad_requests() {
+    let out = fricosc(&["plot", "--shape", "cone", "--amp", "0.5,1,2", "--vbar", "0:1.2:61"], None);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let svg = String::from_utf8(out.stdout).unwrap();
+    assert!(fricosc::plot::parse_size(&svg).is_ok());
+    assert_eq!(svg.matches("<g data-series=").count(), 3);
+    assert!(svg.contains("v\u{304}"));
+    let dir = std::env::temp_dir().join(format!("fricosc-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let png = dir.join("p.png");
+    let out = fricosc(&["plot", "--amp", "0.5", "--vhat", "0,0.5,1", "--out", png.to_str().unwrap()], None);
+    assert!(out.status.success() && out.stdout.is_empty());
+    assert_eq!(&std::fs::read(&png).unwrap()[1..4], b"PNG");
+    let thirteen = (1..=13).map(|k| k.to_string()).collect::<Vec<_>>().join(",");
+    for (args, message) in [
+        (vec!["plot", "--amp", "0.5", "--vbar", "0,1", "--out", "p.pdf"], "must end in .svg or .png"),
+        (vec!["plot", "--amp", &thirteen, "--vbar", "0,1"], "amplitudes in one plot"),
+        (vec!["plot", "--amp", "0.5", "--vbar", "0:1:100001"], "velocities in one plot"),
+        (vec!["plot", "--amp", "0.5", "--vbar", "0.3"], "two different velocities"),
+        (vec!["plot", "--amp", "-1", "--vbar", "0,1"], "amp"),
+        (vec!["plot", "--shape", "nope", "--amp", "1", "--vbar", "0,1"], "nope"),
+    ] {
+        let out = fricosc(&args, None);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(out.stdout.is_empty() && err.contains(message) && err.lines().count() == 1, "{args:?}: {err}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -1,5 +1,9 @@
-//! The figures' exact curves are the solver's values (no second implementation).
-use fricosc::figures::build;
+//! The figures: exact curves are the solver's values (no second implementation),
+//! each approximation is drawn only where the seed uses it, and every drawing
+//! parses, tells its curves apart, names its axes' symbols and renders to a PNG
+//! of the stated size.
+use fricosc::figures::{build, chart, XAxis};
+use fricosc::plot::{self, Rgb};
 use fricosc::shape::{evaluate, Shape};
 
 #[test]
@@ -10,20 +14,143 @@ fn exact_curves_equal_the_solver_and_every_figure_is_there() {
     for f in &figs {
         let shape =
             if f.name.starts_with("fig7") || f.name.starts_with("fig8") { Shape::Power(2.0) } else { Shape::Flat };
-        let vhat = f.x_label.starts_with("vhat");
         for c in f.curves.iter().filter(|c| c.kind == "exact") {
             let Some(amp) = c.amp else { continue };
             for p in c.points.iter().step_by(7) {
-                let vbar = if vhat { p[0] / amp } else { p[0] };
+                let vbar = if f.x == XAxis::Vhat && amp > 0.0 { p[0] / amp } else { p[0] };
                 assert_eq!(p[1], evaluate(&shape, vbar, amp).unwrap().ratio.mu_ratio, "{} {}", f.name, c.label);
             }
         }
-        let svg = fricosc::export::export(f, fricosc::export::Format::Svg).unwrap();
-        assert!(svg.starts_with("<svg"));
     }
     // The inset's exact slope is the claims' one, and the corrected eq. 21 follows it.
     let inset = figs.iter().find(|f| f.name == "fig5-inset").unwrap();
     for (e, c) in inset.curves[0].points.iter().zip(&inset.curves[1].points).skip(1) {
         assert!((e[1] / c[1] - 1.0).abs() < 1e-6, "amp {}: {} vs {}", e[0], e[1], c[1]);
     }
+}
+
+/// The seed's approximations where it uses them: eq. 16 (eq. 11 in vhat) only
+/// without jumping, eq. 17 for jumping; no approximation at du/u0 = 0 (mu = mu0
+/// is exact there); the seed's amplitudes and the line at du/u0 = 0 where it has them.
+#[test]
+fn approximations_are_drawn_where_the_seed_uses_them() {
+    let figs = build().unwrap();
+    for f in &figs {
+        for c in f.curves.iter().filter(|c| c.kind == "approximation") {
+            let eq = c.equation.as_deref().unwrap();
+            match (eq, c.amp) {
+                ("eq. 16", Some(a)) => assert!(a > 0.0 && a <= 1.0, "{}: eq. 16 at {a}", f.name),
+                ("eq. 17", Some(a)) => assert!(a > 1.0, "{}: eq. 17 at {a}", f.name),
+                (_, Some(a)) => assert!(a > 0.0, "{}: {eq} at 0", f.name),
+                _ => {}
+            }
+            // On a mu axis an approximation stays within [0, 1]: none is drawn
+            // where it goes negative (eq. 16 at jumping amplitudes reaches -1).
+            if f.y_label == fricosc::figures::MU_LABEL {
+                assert!(c.points.iter().all(|p| (0.0..=1.0).contains(&p[1])), "{}: {}", f.name, c.label);
+            }
+        }
+        let amps = |kind: &str| {
+            let mut a: Vec<f64> = f.curves.iter().filter(|c| c.kind == kind).filter_map(|c| c.amp).collect();
+            a.dedup();
+            a
+        };
+        let expected: &[f64] = match f.name.as_str() {
+            "fig3" | "fig7" => &[0.0, 0.2, 0.4, 0.6, 0.8, 1.0],
+            "fig4" | "fig8" => &[0.0, 0.2, 0.4, 0.6, 0.8, 1.0, 1.2, 1.4, 1.6, 1.8, 2.0],
+            "fig5" => &[1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 2.0],
+            "fig3-inset" => &[1.0],
+            _ => &[],
+        };
+        assert_eq!(amps("exact"), expected, "{}", f.name);
+    }
+}
+
+/// `(colour, width, dash)` of every series in an SVG, read from the document.
+fn series_styles(svg: &str) -> Vec<(String, Rgb, String, String)> {
+    let attr = |s: &str, name: &str| {
+        s.split(&format!(" {name}=\"")).nth(1).map(|t| t.split('"').next().unwrap_or("").to_string())
+    };
+    svg.split("<g data-series=\"")
+        .skip(1)
+        .map(|g| {
+            let label = g.split('"').next().unwrap().to_string();
+            let path = g.split("</g>").next().unwrap();
+            let hex = attr(path, "stroke").or_else(|| attr(path, "fill")).expect("a colour");
+            let c = u32::from_str_radix(hex.trim_start_matches('#'), 16).unwrap();
+            let rgb = Rgb((c >> 16) as u8, (c >> 8) as u8, c as u8);
+            (
+                label,
+                rgb,
+                attr(path, "stroke-width").unwrap_or_default(),
+                attr(path, "stroke-dasharray").unwrap_or_default(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn every_drawing_parses_tells_curves_apart_and_renders() {
+    for f in build().unwrap() {
+        let svg = fricosc::export::export(&f, fricosc::export::Format::Svg).unwrap();
+        let (w, h) = plot::parse_size(&svg).unwrap_or_else(|e| panic!("{}: {e}", f.name));
+        assert_eq!(w, plot::WIDTH, "{}: 8.5 cm wide", f.name);
+        // Axis symbols in Unicode, never the ASCII stand-ins.
+        let symbol = match f.x {
+            XAxis::Vbar => "v\u{304}",
+            XAxis::Vhat => "v\u{302}",
+            XAxis::Amp => "Δu",
+        };
+        let text: String = svg.split("<text").skip(1).map(|t| t.split("</text>").next().unwrap()).collect();
+        assert!(text.contains(symbol) && text.contains("μ"), "{}: axis symbols", f.name);
+        for ascii in ["mu_macro", "mu0", "vbar", "vhat", "du/u0"] {
+            assert!(!text.contains(ascii), "{}: '{ascii}' printed", f.name);
+        }
+        // No two series alike: the library's own check, and the same read back from the SVG.
+        let c = chart(&f);
+        plot::distinct(&c, 8.0).unwrap_or_else(|e| panic!("{}: {e}", f.name));
+        let styles = series_styles(&svg);
+        assert_eq!(styles.len(), f.curves.len(), "{}", f.name);
+        for (i, a) in styles.iter().enumerate() {
+            for b in &styles[i + 1..] {
+                let same_line = a.2 == b.2 && a.3 == b.3;
+                assert!(!(same_line && a.1.delta_e(b.1) < 8.0), "{}: '{}' and '{}' look alike", f.name, a.0, b.0);
+            }
+        }
+        // Coordinates carry fractions of a point (no whole-pixel steps).
+        assert!(svg.contains(".") && svg.split(" L").nth(5).is_some_and(|s| s.contains('.')), "{}", f.name);
+        // The PNG: 300 dpi of the drawing's size in pt.
+        let png = plot::png(&svg).unwrap();
+        assert_eq!(&png[1..4], b"PNG");
+        let be = |k: usize| u32::from_be_bytes([png[k], png[k + 1], png[k + 2], png[k + 3]]);
+        let px = |pt: f64| (pt / 72.0 * plot::DPI).round() as u32;
+        assert_eq!((be(16), be(20)), (px(w), px(h)), "{}", f.name);
+    }
+}
+
+/// The checker itself: two series in one style are caught.
+#[test]
+fn distinct_catches_a_repeated_style() {
+    let mut c = chart(&build().unwrap()[0]);
+    assert!(plot::distinct(&c, 8.0).is_ok());
+    c.series[2].style = c.series[0].style;
+    assert!(plot::distinct(&c, 8.0).is_err());
+    // Near colours count as the same.
+    let s = c.series[0].style;
+    c.series[2].style = plot::Style { color: Rgb(s.color.0.saturating_add(3), s.color.1, s.color.2), ..s };
+    assert!(plot::distinct(&c, 8.0).is_err());
+}
+
+/// `plot`'s limit of 12 amplitudes keeps neighbouring colours apart.
+#[test]
+fn the_largest_user_plot_tells_its_curves_apart() {
+    let amps: Vec<f64> = (1..=fricosc::figures::MAX_CURVES).map(|k| k as f64 * 0.25).collect();
+    let xs: Vec<f64> = (0..=12).map(|k| k as f64 * 0.1).collect();
+    let f = fricosc::figures::user(&Shape::Flat, &amps, &xs, false).unwrap();
+    assert_eq!(f.curves.len(), 12);
+    plot::distinct(&chart(&f), 8.0).unwrap();
+    // With a 13th amplitude the limit is enforced.
+    let mut more = amps.clone();
+    more.push(9.0);
+    assert!(fricosc::figures::user(&Shape::Flat, &more, &xs, false).is_err());
 }

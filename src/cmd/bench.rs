@@ -2,9 +2,9 @@
 
 use super::{check_out_dir, emit};
 use fricosc::error::{Error, Result};
-use fricosc::export::{export, Format};
+use fricosc::export::{export_bytes, Format};
 
-/// Run the benchmark and write its JSON, CSV and SVG into `out`.
+/// Run the benchmark and write its JSON, CSV, SVG and PNG into `out`.
 pub(crate) fn run(out: &str, quick: bool) -> Result<()> {
     check_out_dir(out)?;
     let dir = std::path::Path::new(out);
@@ -13,8 +13,8 @@ pub(crate) fn run(out: &str, quick: bool) -> Result<()> {
     if !quick {
         report.instructions = instruction_counts(dir)?;
     }
-    for (ext, format) in [("json", Format::Json), ("csv", Format::Csv), ("svg", Format::Svg)] {
-        std::fs::write(dir.join(format!("work-precision.{ext}")), export(&report, format)?)
+    for (ext, format) in [("json", Format::Json), ("csv", Format::Csv), ("svg", Format::Svg), ("png", Format::Png)] {
+        std::fs::write(dir.join(format!("work-precision.{ext}")), export_bytes(&report, format)?)
             .map_err(|e| Error::write(out, e))?;
     }
     let mut o = String::new();
@@ -33,7 +33,7 @@ pub(crate) fn run(out: &str, quick: bool) -> Result<()> {
     for f in &report.failures {
         o += &format!("failure: {f}\n");
     }
-    emit(&format!("{o}wrote {out}/work-precision.{{json,csv,svg}}\n"))
+    emit(&format!("{o}wrote {out}/work-precision.{{json,csv,svg,png}}\n"))
 }
 
 /// Total instructions of `fricosc ARGS` under callgrind, or `None` without valgrind.

@@ -1,8 +1,8 @@
 //! `fricosc history`: exact force histories (the seed's Fig. 2).
 
-use super::{emit, vbar_of, Velocity};
+use super::{emit_bytes, vbar_of, Velocity};
 use fricosc::error::Result;
-use fricosc::export::{export, Format};
+use fricosc::export::{export_bytes, Format};
 use fricosc::grid::{parse_number, parse_values};
 
 pub(crate) fn run(
@@ -25,7 +25,7 @@ pub(crate) fn run(
         (None, Some(h)) => vbar_of(parse_number("--vhat", h)?, amp)?,
         (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
     };
-    let format = Format::parse(format, &[Format::Json, Format::Csv, Format::Svg])?;
+    let format = Format::parse(format, &[Format::Json, Format::Csv, Format::Svg, Format::Png])?;
     let h = match stepping {
         None => fricosc::history::history(&shape, vbar, amp, periods, samples, springs, &chosen)?,
         Some(m) => {
@@ -38,6 +38,9 @@ pub(crate) fn run(
             fricosc::history::stepped_history(vbar, amp, periods, m)?
         }
     };
-    let text = export(&h, format)?;
-    emit(if text.ends_with('\n') { text } else { text + "\n" }.as_str())
+    let mut bytes = export_bytes(&h, format)?;
+    if format != Format::Png && bytes.last() != Some(&b'\n') {
+        bytes.push(b'\n');
+    }
+    emit_bytes(&bytes)
 }

@@ -13,6 +13,7 @@ pub(crate) mod bench;
 pub(crate) mod claims;
 pub(crate) mod figures;
 pub(crate) mod history;
+pub(crate) mod plot;
 pub(crate) mod point;
 pub(crate) mod scene;
 pub(crate) mod stress;
@@ -125,8 +126,41 @@ pub(crate) fn io_err(e: io::Error) -> Error {
 /// The one path to stdout: the whole text at once, errors checked (a closed
 /// pipe or a full disk is an `Error::Write`, never a panic).
 pub(crate) fn emit(text: &str) -> Result<()> {
+    emit_bytes(text.as_bytes())
+}
+
+/// [`emit`] for bytes (a PNG).
+pub(crate) fn emit_bytes(bytes: &[u8]) -> Result<()> {
     let mut o = io::stdout().lock();
-    o.write_all(text.as_bytes()).and_then(|()| o.flush()).map_err(io_err)
+    o.write_all(bytes).and_then(|()| o.flush()).map_err(io_err)
+}
+
+/// An SVG document rendered as PNG (an internal error if our own SVG does not render).
+pub(crate) fn png_of(svg: &str) -> Result<Vec<u8>> {
+    fricosc::plot::png(svg).map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") })
+}
+
+/// Whether a drawing's file name asks for a PNG (`.png`) or an SVG (`.svg`);
+/// any other name is refused before any work is done.
+pub(crate) fn drawing_kind(option: &str, path: &str) -> Result<bool> {
+    let lower = path.to_ascii_lowercase();
+    if lower.ends_with(".png") {
+        Ok(true)
+    } else if lower.ends_with(".svg") {
+        Ok(false)
+    } else {
+        Err(Error::Parse { context: option.into(), reason: format!("'{path}' must end in .svg or .png") })
+    }
+}
+
+/// Write a drawing to `path` as SVG or PNG, by its extension ([`drawing_kind`]).
+pub(crate) fn write_drawing(option: &str, path: &str, svg: &str) -> Result<()> {
+    if drawing_kind(option, path)? {
+        let png = png_of(svg)?;
+        std::fs::write(path, png).map_err(|e| Error::write(path, e))
+    } else {
+        write_file(option, path, svg)
+    }
 }
 
 pub(crate) fn read_input(file: Option<String>) -> Result<(String, String)> {
@@ -153,9 +187,9 @@ pub(crate) fn to_json<T: serde::Serialize>(value: &T) -> Result<String> {
 
 /// Write `text` to the file `path` (an empty path is refused; a failed write is
 /// an error naming the path).
-pub(crate) fn write_file(path: &str, text: &str) -> Result<()> {
+pub(crate) fn write_file(option: &str, path: &str, text: &str) -> Result<()> {
     if path.trim().is_empty() {
-        return Err(Error::Parse { context: "--plot".into(), reason: "the file name is empty".into() });
+        return Err(Error::Parse { context: option.into(), reason: "the file name is empty".into() });
     }
     std::fs::write(path, text).map_err(|e| Error::write(path, e))
 }

@@ -166,6 +166,9 @@ struct SeriesReport<'a> {
 
 fn run_series(a: &ValidateArgs, at_rest: AtRest, mu0: Option<f64>, format: &str) -> Result<Outcome> {
     let target = a.target.as_deref().map(|t| parse_number("--target", t)).transpose()?;
+    if let Some(path) = &a.plot {
+        super::drawing_kind("--plot", path)?;
+    }
     if a.files.len() < 2 {
         return Err(Error::Parse { context: "--series".into(), reason: "needs two files or more".into() });
     }
@@ -193,7 +196,7 @@ fn run_series(a: &ValidateArgs, at_rest: AtRest, mu0: Option<f64>, format: &str)
     let c = fricosc::validate::convergence(&shape, &resolutions, &tables, at_rest, target)?;
     if let Some(path) = &a.plot {
         let svg = fricosc::validate::series_svg(&c)?;
-        super::write_file(path, &svg)?;
+        super::write_drawing("--plot", path, &svg)?;
     }
     let body = match format {
         "json" => super::to_json(&SeriesReport { convergence: &c, shape_source })? + "\n",
