@@ -40,6 +40,8 @@ pub struct Claim {
     pub measured: Vec<(String, f64)>,
     /// Largest deviation found (absolute, in the claim's own quantity), if any.
     pub deviation: Option<f64>,
+    /// What the deviation is, with its unit.
+    pub deviation_is: String,
     /// Where the largest deviation is.
     pub location: String,
     /// The verdict.
@@ -74,12 +76,15 @@ pub fn exact_slope(amp: f64) -> f64 {
 }
 
 /// Largest `f(v, p)` over `v` in `{0, 1/k, ..., 1}` and `p` in `ps`, and where.
+/// A NaN (a failed evaluation) is the largest of all: it becomes infinity, so
+/// that the claim's verdict is "wrong" rather than the NaN being skipped.
 fn worst_over(ps: &[f64], k: usize, f: impl Fn(f64, f64) -> f64) -> (f64, (f64, f64)) {
     let mut best = (0.0f64, (0.0, 0.0));
     for &p in ps {
         for j in 0..=k {
             let v = j as f64 / k as f64;
             let d = f(v, p);
+            let d = if d.is_nan() { f64::INFINITY } else { d };
             if d > best.0 {
                 best = (d, (v, p));
             }
@@ -96,7 +101,7 @@ pub const DROP_TOL: f64 = 0.05;
 pub const EQ27_TOL: f64 = 0.05;
 
 /// Verdict of an approximation with error `err` against its bar `tol`.
-fn graded(err: f64, tol: f64) -> Verdict {
+pub fn graded(err: f64, tol: f64) -> Verdict {
     if err <= tol {
         Verdict::HoldsApproximately
     } else if err <= 3.0 * tol {
@@ -166,7 +171,9 @@ fn eq8_sign() -> Claim {
             ("printed_max_residual", worst_printed),
         ]),
         deviation: Some(r_printed),
-        location: "vbar = 0.5, amp = 0.5 (residual of the printed form at the true tau2)".into(),
+        deviation_is: "|printed eq. 8 residual| at the exact stick end tau2 (a difference of cosines, dimensionless)"
+            .into(),
+        location: "vbar = 0.5, amp = 0.5".into(),
         verdict: if r_printed < 1e-12 {
             Verdict::Holds
         } else if worst_printed < 0.0 && r_corrected < 1e-12 {
@@ -191,7 +198,8 @@ fn eq11_error() -> Claim {
         ),
         measured: named(&[("max_error_over_amp", worst), ("at_vbar", at.0), ("at_amp", at.1)]),
         deviation: Some(worst),
-        location: format!("vbar = {}, amp = {} (error / amp; the same at every amp to 1e-3)", at.0, at.1),
+        deviation_is: "max |eq. 11 - exact| / (du/u0) (mu/mu0 per unit amplitude)".into(),
+        location: format!("vbar = {}, amp = {} (the same at every amp to 1e-3)", at.0, at.1),
         verdict: graded(worst, EQ11_TOL),
     }
 }
@@ -213,6 +221,7 @@ fn eq12_exactness() -> Claim {
             .into(),
         measured: named(&[("error_1e-3", e3), ("error_1e-4", e4), ("error_1e-5", e5), ("order", order)]),
         deviation: Some(e3),
+        deviation_is: "|eq. 12 - exact| (mu/mu0)".into(),
         location: "amp = 1, vbar = 1e-3".into(),
         verdict: if order > 2.0 { Verdict::Holds } else { Verdict::Wrong },
     }
@@ -229,8 +238,9 @@ fn eq21_factor_pi() -> Claim {
         claim: "eq. 21 (low-velocity slope, amp > 1)".into(),
         seed_says: "mu/mu0 = vbar (1 - th/pi)^2 / (s (1 - th/pi + (1/pi)(du/u0) sqrt(1 - s^2)))".into(),
         exact_gives: format!(
-            "the exact slope is {ratio:.9} = pi times the printed one; corrected: (pi - th)^2 / (s (pi - th) + sin th), \
-             matching the solver to {dev21:.1e}"
+            "exact slope / printed slope = {ratio:.9} at every amplitude: pi (3.141592654) to 1e-9, so the printed \
+             formula lacks a factor pi; corrected: (pi - th)^2 / (s (pi - th) + sin th), matching the solver to \
+             {dev21:.1e}"
         ),
         criterion: "holds if exact / printed slope is 1 within 1e-6; misprint if it is one constant factor at every \
                     amplitude (spread < 1e-6) equal to pi within 1e-6; wrong otherwise"
@@ -243,6 +253,7 @@ fn eq21_factor_pi() -> Claim {
             ("ratio_spread", spread),
         ]),
         deviation: Some((ratio - 1.0).abs()),
+        deviation_is: "exact / printed slope - 1 (dimensionless)".into(),
         location: "amp = 1.5, 2, 10 (vbar = 1e-10)".into(),
         verdict: if (ratio - 1.0).abs() < 1e-6 {
             Verdict::Holds
@@ -266,6 +277,7 @@ fn eq22_limit() -> Claim {
             .into(),
         measured: named(&[("slope_amp_1e8", big)]),
         deviation: Some((big - seed::EQ22_PRINTED).abs()),
+        deviation_is: "|slope - pi/4| (slope mu/(mu0 vbar), dimensionless)".into(),
         location: "amp = 1e8".into(),
         verdict: if (big / seed::EQ22_PRINTED - 1.0).abs() < 1e-6 {
             Verdict::Holds
@@ -293,7 +305,7 @@ fn slope_drop() -> Claim {
     let drop_limit = 1.0 - big / s1;
     let drop_max = 1.0 - smin / s1;
     Claim {
-        claim: "Fig. 5 inset / section 2 ('slope drops by about 20 %')".into(),
+        claim: "Fig. 5 inset (slope drops by about 20 %)".into(),
         seed_says: "once the sample jumps the slope drops by about 20 % and then stays nearly constant".into(),
         exact_gives: format!(
             "slope {s1:.6} (= pi) at amp = 1, a minimum {smin:.4} at amp = {amin:.2} (a drop of {:.1} %), then rising to \
@@ -308,7 +320,8 @@ fn slope_drop() -> Claim {
         ),
         measured: named(&[("slope_amp_1", s1), ("min_slope", smin), ("drop_max", drop_max), ("drop_limit", drop_limit)]),
         deviation: Some(drop_max - 0.2),
-        location: format!("amp = {amin:.2} (largest drop minus 20 %)"),
+        deviation_is: "deepest drop - 20 % (fraction of the slope at amp = 1)".into(),
+        location: format!("amp = {amin:.2}"),
         verdict: if (drop_limit - 0.2).abs() > DROP_TOL {
             Verdict::Wrong
         } else if (drop_max - 0.2).abs() > DROP_TOL {
@@ -330,6 +343,7 @@ fn eq28_against_eq27() -> Claim {
         criterion: "the seed's own bar, 1 % of mu0: holds within it, overstated within 3x it, wrong beyond".into(),
         measured: named(&[("max_difference", w28), ("at_vbar", at28.0), ("at_mu_static", at28.1)]),
         deviation: Some(w28),
+        deviation_is: "max |eq. 28 - eq. 27| (mu/mu0)".into(),
         location: format!("vbar = {}, mu_static/mu0 = {}", at28.0, at28.1),
         verdict: match graded(w28, 0.01) {
             Verdict::HoldsApproximately => Verdict::Holds,
@@ -360,6 +374,7 @@ fn critical_velocity() -> Claim {
             .into(),
         measured: named(&[("all_checks_pass", if critical_ok { 1.0 } else { 0.0 }), ("min_reduction_1e-3", worst_below)]),
         deviation: None,
+        deviation_is: "none (a yes/no check)".into(),
         location: "flat, parabolic, cone".into(),
         verdict: if critical_ok { Verdict::Holds } else { Verdict::Wrong },
     }
@@ -419,6 +434,8 @@ fn eq14_small_amplitude() -> Claim {
         ),
         measured,
         deviation: Some(spread),
+        deviation_is: "(max - min) / max of reduction N0/(kz du) over the four shapes (relative, dimensionless)"
+            .into(),
         location: "vbar 0.2, 0.5, 0.8; du/u0 = 1e-6".into(),
         verdict: if spread <= EQ14_TOL { Verdict::Holds } else { Verdict::Wrong },
     }
@@ -457,7 +474,8 @@ fn static_friction_minimum_normal() -> Claim {
             .into(),
         measured,
         deviation: Some(worst),
-        location: "vbar -> 0+".into(),
+        deviation_is: "max |mu/mu0 - N_min/N_mean| (mu/mu0)".into(),
+        location: "vbar = 1e-10".into(),
         verdict: if worst <= 1e-8 { Verdict::Holds } else { Verdict::Wrong },
     }
 }
@@ -488,6 +506,7 @@ fn eq27_shape_independence() -> Claim {
         ),
         measured: named(&[("max_error", w27)]),
         deviation: Some(w27),
+        deviation_is: "max |eq. 27 - exact| (mu/mu0)".into(),
         location: "amp in 0.2..2, vbar in [0, 1]".into(),
         verdict: graded(w27, EQ27_TOL),
     }
@@ -521,7 +540,7 @@ fn two_parameters() -> Claim {
     };
     let (sa, sb) = (scene(2e11, 5e-3, 1e-6, 1.3e-6, 1e3, 3e-4), scene(2e7, 5.0, 1e-3, 1.3e-3, 10.0, 3e-3));
     Claim {
-        claim: "section 2 ('a function of only two dimensionless parameters')".into(),
+        claim: "section 2 (two dimensionless parameters)".into(),
         seed_says: "mu/mu0 depends only on vbar (eq. 3) and du/u0".into(),
         exact_gives: format!(
             "two dimensional systems (stiffnesses, mu0, frequency and lengths changed by up to 1e3) with vbar = {vbar:.6}, \
@@ -533,6 +552,7 @@ fn two_parameters() -> Claim {
             .into(),
         measured: named(&[("stepped_a", a_), ("stepped_b", b_), ("exact", exact), ("scene_a", sa), ("scene_b", sb)]),
         deviation: Some((a_ - b_).abs().max((sa - sb).abs())),
+        deviation_is: "max of |system a - system b| over both pairs (mu/mu0)".into(),
         location: "flat punch (time stepping in physical units) and sphere scenes".into(),
         verdict: if (a_ - b_).abs() < 1e-10 && (a_ - exact).abs() < 1e-6 && (sa - sb).abs() < 1e-14 {
             Verdict::Holds
@@ -542,24 +562,110 @@ fn two_parameters() -> Claim {
     }
 }
 
+/// The verdict's name in the table.
+pub fn verdict_name(v: Verdict) -> &'static str {
+    match v {
+        Verdict::Holds => "holds",
+        Verdict::HoldsApproximately => "holds approximately",
+        Verdict::Overstated => "overstated",
+        Verdict::Misprint => "misprint",
+        Verdict::Wrong => "wrong",
+    }
+}
+
+/// Width of the Markdown report's lines.
+pub const WIDTH: usize = 100;
+
+/// `text` in lines of at most `width` characters (words longer than a line
+/// stand alone), the first line after `first`, the others after `indent`.
+pub fn wrap(first: &str, text: &str, indent: &str, width: usize) -> String {
+    let mut out = String::new();
+    let mut line = first.to_string();
+    let mut empty = first.trim().is_empty();
+    for word in text.split_whitespace() {
+        let len = line.chars().count();
+        if !empty && len + 1 + word.chars().count() > width {
+            out += line.trim_end();
+            out.push('\n');
+            line = indent.to_string();
+            empty = true;
+        }
+        if !empty {
+            line.push(' ');
+        }
+        line += word;
+        empty = false;
+    }
+    out += line.trim_end();
+    out.push('\n');
+    out
+}
+
+/// The claims as Markdown in lines of at most [`WIDTH`] characters: a summary
+/// table (claim, verdict, deviation), then each claim with the seed's
+/// statement, the exact value, the deviation with its definition and unit, and
+/// the criterion the verdict is computed by.
+pub fn markdown(claims: &[Claim]) -> String {
+    let mut s = String::from("| # | claim | verdict | deviation |\n|---|---|---|---|\n");
+    for (i, c) in claims.iter().enumerate() {
+        let dev = c.deviation.map_or("-".to_string(), |d| format!("{d:.3e}"));
+        s += &format!("| {} | {} | {} | {dev} |\n", i + 1, c.claim, verdict_name(c.verdict));
+    }
+    for (i, c) in claims.iter().enumerate() {
+        s += &format!("\n### {}. {}: {}\n\n", i + 1, c.claim, verdict_name(c.verdict));
+        s += &wrap("- The seed says:", &c.seed_says, "  ", WIDTH);
+        s += &wrap("- The exact solver gives:", &c.exact_gives, "  ", WIDTH);
+        let dev = match c.deviation {
+            Some(d) => format!("{d:.3e}, {} at {}.", c.deviation_is, c.location),
+            None => format!("{} ({}).", c.deviation_is, c.location),
+        };
+        s += &wrap("- Deviation:", &dev, "  ", WIDTH);
+        s += &wrap(
+            "- Verdict:",
+            &format!("{}, by the criterion: {}.", verdict_name(c.verdict), c.criterion),
+            "  ",
+            WIDTH,
+        );
+    }
+    s
+}
+
 impl crate::export::Report for Vec<Claim> {
+    /// One row per claim, every field (the deviation as a number in round-trip precision).
     fn columns(&self) -> Vec<String> {
-        ["claim", "the seed says", "the exact solver gives", "deviation", "verdict"].map(String::from).to_vec()
+        ["claim", "seed_says", "exact_gives", "deviation", "deviation_is", "location", "criterion", "verdict"]
+            .map(String::from)
+            .to_vec()
     }
 
     fn rows(&self) -> Vec<Vec<String>> {
         self.iter()
             .map(|c| {
-                let dev = c.deviation.map_or("-".to_string(), |d| format!("{d:.3e} ({})", c.location));
-                let verdict = match c.verdict {
-                    Verdict::Holds => "holds",
-                    Verdict::HoldsApproximately => "holds approximately",
-                    Verdict::Overstated => "overstated",
-                    Verdict::Misprint => "misprint",
-                    Verdict::Wrong => "wrong",
-                };
-                vec![c.claim.clone(), c.seed_says.clone(), c.exact_gives.clone(), dev, verdict.to_string()]
+                vec![
+                    c.claim.clone(),
+                    c.seed_says.clone(),
+                    c.exact_gives.clone(),
+                    c.deviation.map_or(String::new(), crate::output::num),
+                    c.deviation_is.clone(),
+                    c.location.clone(),
+                    c.criterion.clone(),
+                    verdict_name(c.verdict).to_string(),
+                ]
             })
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A failed evaluation (NaN) anywhere on the grid makes the claim wrong.
+    #[test]
+    fn a_nan_is_the_worst_deviation() {
+        let (w, at) = worst_over(&[1.0], 4, |v, _| if v == 0.5 { f64::NAN } else { v * 0.1 });
+        assert_eq!((w, at), (f64::INFINITY, (0.5, 1.0)));
+        assert_eq!(graded(w, 0.01), Verdict::Wrong);
+        assert_eq!(worst_over(&[1.0], 4, |v, _| v * 0.1).0, 0.1);
     }
 }

@@ -195,3 +195,56 @@ fn static_friction_matches_the_closed_forms() {
     assert_eq!(m(c, "parabolic_amp_1.5_nmin_over_nmean"), 0.0);
     assert_eq!(c.verdict, Verdict::Holds);
 }
+
+/// The Markdown report fits a 100-column terminal and says everything the
+/// claims hold: each verdict with its criterion, each deviation with its definition.
+#[test]
+fn markdown_is_wrapped_and_complete() {
+    let cs = claims();
+    let md = fricosc::claims::markdown(&cs);
+    for line in md.lines() {
+        assert!(line.chars().count() <= fricosc::claims::WIDTH, "too long: {line}");
+    }
+    let flat: String = md.split_whitespace().collect::<Vec<_>>().join(" ");
+    for (i, c) in cs.iter().enumerate() {
+        let verdict = fricosc::claims::verdict_name(c.verdict);
+        assert!(md.contains(&format!("| {} | {} | {verdict} |", i + 1, c.claim)), "{}", c.claim);
+        for part in [&c.seed_says, &c.exact_gives, &c.deviation_is, &c.criterion] {
+            let part = part.split_whitespace().collect::<Vec<_>>().join(" ");
+            assert!(flat.contains(&part), "{}: '{part}' missing", c.claim);
+        }
+    }
+}
+
+/// The CSV form holds every field, and the deviations read back bit for bit.
+#[test]
+fn csv_round_trips() {
+    let cs = claims();
+    let text = fricosc::export::export(&cs, fricosc::export::Format::Csv).unwrap();
+    let mut reader = csv::Reader::from_reader(text.as_bytes());
+    let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
+    assert_eq!(
+        header,
+        ["claim", "seed_says", "exact_gives", "deviation", "deviation_is", "location", "criterion", "verdict"]
+    );
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), cs.len());
+    for (r, c) in rows.iter().zip(&cs) {
+        assert_eq!(&r[0], c.claim);
+        assert_eq!(&r[1], c.seed_says);
+        assert_eq!(&r[2], c.exact_gives);
+        assert_eq!(r[3].parse::<f64>().ok(), c.deviation, "{}", c.claim);
+        assert_eq!(&r[4], c.deviation_is);
+        assert_eq!(&r[5], c.location);
+        assert_eq!(&r[6], c.criterion);
+        assert_eq!(&r[7], fricosc::claims::verdict_name(c.verdict));
+    }
+}
+
+#[test]
+fn wrap_breaks_at_words_within_the_width() {
+    use fricosc::claims::wrap;
+    assert_eq!(wrap("- a:", "one two three", "  ", 9), "- a: one\n  two\n  three\n");
+    // A word longer than the width stands alone on its line.
+    assert_eq!(wrap("-", "x abcdefghijkl y", " ", 5), "- x\n abcdefghijkl\n y\n");
+}
