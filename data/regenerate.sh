@@ -32,13 +32,14 @@ emit_to() { # emit_to FILE command...
   local file=$1; shift
   if [ "$check" = "--check" ]; then
     local tmp; tmp=$(mktemp -d)/$(basename "$file")
-    "$@" "$tmp"
+    "$@" "$tmp" > /dev/null
     if ! cmp -s "$tmp" "$file"; then echo "stale: $file (run bash data/regenerate.sh)" >&2; exit 1; fi
   else
-    "$@" "$file"
+    "$@" "$file" > /dev/null
   fi
 }
 emit_to data/plot-parabolic.png $B plot --shape parabolic --amp 0:3:7 --vhat 0:2:201 --out
+emit_to data/scene-steel-sphere-fig9.png $B scene data/scenes/steel-sphere-fig9.json --plot
 if [ "$check" = "--check" ]; then
   tmp=$(mktemp -d)
   $B figures --out "$tmp" > /dev/null

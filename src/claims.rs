@@ -536,7 +536,7 @@ fn two_parameters() -> Claim {
         );
         crate::scene::parse(&json, "claim")
             .and_then(|s| crate::scene::solve(&s, "claim"))
-            .map_or(f64::NAN, |r| r.rows[0].mu_ratio)
+            .map_or(f64::NAN, |r| r[0].rows[0].mu_ratio)
     };
     let (sa, sb) = (scene(2e11, 5e-3, 1e-6, 1.3e-6, 1e3, 3e-4), scene(2e7, 5.0, 1e-3, 1.3e-3, 10.0, 3e-3));
     Claim {

@@ -179,6 +179,10 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
+        /// Also draw mu_macro against the velocity, one curve per amplitude (the seed's Fig. 9
+        /// layout), to this file: SVG or PNG by its extension.
+        #[arg(long)]
+        plot: Option<String>,
     },
     /// A JSON array of {shape, vbar, amp, ...} from FILE or stdin; the same array with mu_ratio and reduction added.
     Batch {
@@ -229,7 +233,7 @@ fn main() -> ExitCode {
         Command::Table(a) => done(cmd::table::run(a)),
         Command::Plot(a) => done(cmd::plot::run(a)),
         Command::Bench { out, quick } => done(cmd::bench::run(&out, quick)),
-        Command::Scene { files, schema, format } => done(cmd::scene::run(files, schema, format)),
+        Command::Scene { files, schema, format, plot } => done(cmd::scene::run(files, schema, format, plot)),
         Command::Figures { out } => done(cmd::figures::run(&out)),
         Command::History {
             shape,

@@ -2,8 +2,11 @@
 use fricosc::scene::{parse, solve, SceneResult};
 use std::f64::consts::PI;
 
+/// The answer of a scene with one amplitude.
 fn run(json: &str) -> SceneResult {
-    solve(&parse(json, "test.json").unwrap(), "test.json").unwrap()
+    let mut r = solve(&parse(json, "test.json").unwrap(), "test.json").unwrap();
+    assert_eq!(r.len(), 1);
+    r.remove(0)
 }
 
 fn sphere(e: f64, r: f64, u0: f64, du: f64, f: f64, v: &[f64]) -> String {
@@ -102,8 +105,9 @@ fn every_example_scene_runs() {
             continue;
         }
         let src = p.to_string_lossy();
-        let r = solve(&parse(&std::fs::read_to_string(&p).unwrap(), &src).unwrap(), &src).unwrap();
-        assert!(!r.rows.is_empty() && r.rows.iter().all(|x| (0.0..=1.0).contains(&x.mu_ratio)), "{}", p.display());
+        for r in solve(&parse(&std::fs::read_to_string(&p).unwrap(), &src).unwrap(), &src).unwrap() {
+            assert!(!r.rows.is_empty() && r.rows.iter().all(|x| (0.0..=1.0).contains(&x.mu_ratio)), "{}", p.display());
+        }
         n += 1;
     }
     assert!(n >= 4);
@@ -136,7 +140,9 @@ fn a_tabulated_sphere_scene_matches_the_analytic_one_to_the_sphere_s_own_differe
         let p = format!("{dir}{f}");
         solve(&parse(&std::fs::read_to_string(&p).unwrap(), &p).unwrap(), &p).unwrap()
     };
-    let (tab, ana) = (load("tabulated-sphere.json"), load("steel-sphere-fig9.json"));
+    // The analytic scene's third amplitude, 0.16 um, is the tabulated scene's.
+    let (tab, ana) = (&load("tabulated-sphere.json")[0], &load("steel-sphere-fig9.json")[2]);
+    assert_eq!(ana.amplitude_m, 0.16e-6);
     // Same mean indentation; the exact sphere differs from Hertz's paraboloid by O(u0/R) = 4e-5.
     assert!((tab.mean_normal_force_n / ana.mean_normal_force_n - 1.0).abs() < 1e-4);
     assert!((tab.rows[0].mu_ratio / ana.rows[0].mu_ratio - 1.0).abs() < 1e-4);
@@ -145,7 +151,7 @@ fn a_tabulated_sphere_scene_matches_the_analytic_one_to_the_sphere_s_own_differe
         .unwrap()
         .replace("\"mean_indentation_m\": 1.8614506668782813e-7", "\"mean_normal_force_n\": 1");
     // Load control with the table: 1 N, as the analytic scene, at nearly its indentation.
-    let lc = parse(&json, &p).and_then(|s| solve(&s, &p)).unwrap();
+    let lc = &parse(&json, &p).and_then(|s| solve(&s, &p)).unwrap()[0];
     assert!((lc.mean_normal_force_n - 1.0).abs() < 1e-12, "{}", lc.mean_normal_force_n);
     assert!((lc.mean_indentation_m / ana.mean_indentation_m - 1.0).abs() < 1e-4);
 }
@@ -206,4 +212,91 @@ fn sweeps_have_no_binary_noise() {
         v[0]["rows"].as_array().unwrap().iter().map(|r| r["velocity_m_per_s"].as_f64().unwrap()).collect();
     assert_eq!(&vs[..4], &[0.0, 0.005, 0.01, 0.015]);
     assert!(vs.windows(2).all(|w| w[1] > w[0]));
+}
+
+/// An amplitude list or sweep is a family: each member is bit for bit the
+/// scene with that one amplitude; every member is checked, and the limits
+/// enforced, before any work.
+#[test]
+fn amplitude_families_equal_their_single_members() {
+    let base = sphere(2e11, 5e-3, 1e-6, 1e-7, 1e3, &[1e-4, 1e-3, 3e-3]);
+    let with = |amp: &str| base.replace("\"amplitude_m\": 1e-7", &format!("\"amplitude_m\": {amp}"));
+    let family = solve(&parse(&with("[1e-7, 5e-7, 2e-6]"), "f.json").unwrap(), "f.json").unwrap();
+    assert_eq!(family.len(), 3);
+    for (member, du) in family.iter().zip([1e-7, 5e-7, 2e-6]) {
+        let single = run(&with(&format!("{du:e}")));
+        assert_eq!(member.amplitude_m, du);
+        for (a, b) in member.rows.iter().zip(&single.rows) {
+            assert_eq!(a.mu_macro.to_bits(), b.mu_macro.to_bits());
+        }
+        assert_eq!(member.mu_static.to_bits(), single.mu_static.to_bits());
+    }
+    // A sweep: decimal values, the stop exact; logarithmic.
+    let sweep =
+        solve(&parse(&with(r#"{"start": 1e-7, "stop": 3e-7, "count": 3}"#), "f.json").unwrap(), "f.json").unwrap();
+    assert_eq!(sweep.iter().map(|r| r.amplitude_m).collect::<Vec<_>>(), [1e-7, 2e-7, 3e-7]);
+    let log =
+        solve(&parse(&with(r#"{"start": 1e-8, "stop": 1e-6, "count": 3, "log": true}"#), "f.json").unwrap(), "f.json")
+            .unwrap();
+    assert_eq!(log.iter().map(|r| r.amplitude_m).collect::<Vec<_>>(), [1e-8, 1e-7, 1e-6]);
+    // Under load control each amplitude solves its own mean indentation.
+    let lc = base.replace("\"mean_indentation_m\": 1e-6", "\"mean_normal_force_n\": 5.0");
+    let lc = lc.replace("\"amplitude_m\": 1e-7", "\"amplitude_m\": [1e-7, 1e-6]");
+    let r = solve(&parse(&lc, "f.json").unwrap(), "f.json").unwrap();
+    assert!(r.iter().all(|x| (x.mean_normal_force_n - 5.0).abs() < 1e-11));
+    assert!(r[1].mean_indentation_m != r[0].mean_indentation_m);
+    // Bad members and sizes, named.
+    let many = format!("[{}]", vec!["1e-7"; 1001].join(","));
+    let velocities: Vec<f64> = (0..2000).map(|k| k as f64 * 1e-6).collect();
+    let too_many_rows = sphere(2e11, 5e-3, 1e-6, 1e-7, 1e3, &velocities)
+        .replace("\"amplitude_m\": 1e-7", "\"amplitude_m\": {\"start\": 1e-7, \"stop\": 1e-6, \"count\": 501}");
+    for (json, frag) in [
+        (with("[1e-7, 0.0]"), "oscillation.amplitude_m[1]"),
+        (with("[]"), "needs 1 to 1000 values"),
+        (with(&many), "needs 1 to 1000 values"),
+        (with(r#"{"start": 0, "stop": 1e-6, "count": 3}"#), "oscillation.amplitude_m.start"),
+        (with(r#"{"start": 1e-6, "stop": 1e-7, "count": 3}"#), "oscillation.amplitude_m.stop"),
+        (with(r#"{"start": 1e-7, "stop": 1e-6, "count": 1001}"#), "oscillation.amplitude_m.count"),
+        (with(r#""big""#), "a number, a list of numbers, or a sweep"),
+        (too_many_rows, "rows (amplitudes x velocities)"),
+    ] {
+        let e = parse(&json, "f.json").and_then(|s| solve(&s, "f.json")).unwrap_err().to_string();
+        assert!(e.contains(frag), "{frag}: {e}");
+    }
+}
+
+/// `scene --plot`: mu_macro against v, one curve per amplitude, SVG or PNG.
+#[test]
+fn scene_plot_draws_one_curve_per_amplitude() {
+    use std::process::Command;
+    let root = env!("CARGO_MANIFEST_DIR");
+    let dir = std::env::temp_dir().join(format!("fricosc-scene-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = format!("{root}/data/scenes/steel-sphere-fig9.json");
+    for name in ["f.svg", "f.png"] {
+        let path = dir.join(name);
+        let out = Command::new(env!("CARGO_BIN_EXE_fricosc"))
+            .args(["scene", &scene, "--plot", path.to_str().unwrap()])
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(json.as_array().unwrap().len(), 4);
+        let bytes = std::fs::read(&path).unwrap();
+        if name.ends_with("svg") {
+            let svg = String::from_utf8(bytes).unwrap();
+            assert!(fricosc::plot::parse_size(&svg).is_ok());
+            assert_eq!(svg.matches("<g data-series=").count(), 4);
+            for label in ["60 nm", "100 nm", "160 nm", "270 nm", "(m/s)", "μ"] {
+                assert!(svg.contains(label), "{label}");
+            }
+        } else {
+            assert_eq!(&bytes[1..4], b"PNG");
+        }
+    }
+    // A bad name: refused before the work, nothing on stdout.
+    let out = Command::new(env!("CARGO_BIN_EXE_fricosc")).args(["scene", &scene, "--plot", "f.gif"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty() && String::from_utf8_lossy(&out.stderr).contains("must end in .svg or .png"));
+    std::fs::remove_dir_all(&dir).unwrap();
 }

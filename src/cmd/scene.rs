@@ -6,9 +6,12 @@ use fricosc::output::Format;
 use rayon::prelude::*;
 use std::io::IsTerminal;
 
-pub(crate) fn run(files: Vec<String>, schema: bool, format: Format) -> Result<()> {
+pub(crate) fn run(files: Vec<String>, schema: bool, format: Format, plot: Option<String>) -> Result<()> {
     if schema {
         return emit(&format!("{}\n", fricosc::scene::schema()));
+    }
+    if let Some(path) = &plot {
+        super::drawing_kind("--plot", path)?;
     }
     if files.is_empty() {
         return Err(Error::Parse { context: "scene".into(), reason: "give a scene file (or --schema)".into() });
@@ -30,21 +33,30 @@ pub(crate) fn run(files: Vec<String>, schema: bool, format: Format) -> Result<()
             b.inc(k);
         }
     };
-    let results: Vec<Result<fricosc::scene::SceneResult>> =
+    let results: Vec<Result<Vec<fricosc::scene::SceneResult>>> =
         scenes.par_iter().zip(&files).map(|(s, f)| fricosc::scene::solve_with_progress(s, f, &tick)).collect();
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
-    let results = results.into_iter().collect::<Result<Vec<_>>>()?;
-    for (r, f) in results.iter().zip(&files) {
+    // Each answer (one per amplitude) with its scene's label: its name, or its file.
+    let mut labelled: Vec<(String, fricosc::scene::SceneResult)> = vec![];
+    for (r, f) in results.into_iter().zip(&files) {
+        labelled.extend(r?.into_iter().map(|x| (x.name.clone().unwrap_or_else(|| f.clone()), x)));
+    }
+    for (f, r) in &labelled {
         for w in &r.warnings {
             eprintln!("warning: {f}: {w}");
         }
     }
+    if let Some(path) = &plot {
+        let svg = fricosc::scene::family_chart(&labelled).svg();
+        super::write_drawing("--plot", path, &svg)?;
+    }
+    let results: Vec<&fricosc::scene::SceneResult> = labelled.iter().map(|(_, r)| r).collect();
     // One shape of output whatever the number of files: a JSON list, and CSV in
     // long form (one header; each row with its scene and the scene's results).
     let text = match format {
-        Format::Csv => scenes_csv(&results, &files)?,
+        Format::Csv => scenes_csv(&labelled)?,
         Format::Json => serde_json::to_string_pretty(&results)
             .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?,
     };
@@ -52,21 +64,22 @@ pub(crate) fn run(files: Vec<String>, schema: bool, format: Format) -> Result<()
 }
 
 /// Every scene's rows in one CSV table: the scene (its name, or its file), the
-/// scene-level results repeated on each row, then the row's own columns.
-fn scenes_csv(results: &[fricosc::scene::SceneResult], files: &[String]) -> Result<String> {
+/// scene-level results repeated on each row (one amplitude of a family each),
+/// then the row's own columns.
+fn scenes_csv(results: &[(String, fricosc::scene::SceneResult)]) -> Result<String> {
     use fricosc::export::Report;
     let n = fricosc::output::num;
     let fail = |e: csv::Error| Error::Internal { what: format!("writing CSV: {e}") };
     let mut w = csv::Writer::from_writer(vec![]);
     let scene_cols = ["scene", "u0_m", "du_m", "amp", "contact_radius_m", "critical_velocity_m_per_s", "mu_static"];
     let mut header: Vec<String> = scene_cols.map(String::from).to_vec();
-    if let Some(r) = results.first() {
+    if let Some((_, r)) = results.first() {
         header.extend(r.columns());
     }
     w.write_record(&header).map_err(fail)?;
-    for (r, f) in results.iter().zip(files) {
+    for (label, r) in results {
         let scene = [
-            r.name.clone().unwrap_or_else(|| f.clone()),
+            label.clone(),
             n(r.mean_indentation_m),
             n(r.amplitude_m),
             n(r.amplitude_ratio),

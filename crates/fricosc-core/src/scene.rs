@@ -131,15 +131,58 @@ pub struct Loading {
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct Oscillation {
-    /// Amplitude `du` (m) (or give `amplitude_fraction`).
+    /// Amplitude `du` (m) (or give `amplitude_fraction`): one value, a list or a
+    /// sweep; several amplitudes make a family of curves, one answer each.
     #[cfg_attr(feature = "serde", serde(default))]
-    pub amplitude_m: Option<f64>,
-    /// Amplitude as a fraction of the mean indentation, `du/u_z0`.
+    pub amplitude_m: Option<Values>,
+    /// Amplitude as a fraction of the mean indentation, `du/u_z0`: one value, a list or a sweep.
     #[cfg_attr(feature = "serde", serde(default))]
-    pub amplitude_fraction: Option<f64>,
+    pub amplitude_fraction: Option<Values>,
     /// Frequency `f` (Hz) (`omega = 2 pi f`).
     pub frequency_hz: f64,
 }
+
+/// One value, a list of values, or a sweep (of amplitudes).
+#[derive(Debug, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Deserialize))]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[cfg_attr(
+    feature = "serde",
+    serde(untagged, expecting = "a number, a list of numbers, or a sweep {\"start\", \"stop\", \"count\", \"log\"}")
+)]
+pub enum Values {
+    /// One value.
+    One(f64),
+    /// Values in the order given, 1 to 1000 of them.
+    List(Vec<f64>),
+    /// `count` values from `start` to `stop`.
+    Sweep(ValueSweep),
+}
+
+/// `count` values from `start` to `stop` (inclusive), linear or logarithmic, in
+/// the unit of the field that holds the sweep.
+#[derive(Debug, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Deserialize))]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct ValueSweep {
+    /// First value.
+    pub start: f64,
+    /// Last value.
+    pub stop: f64,
+    /// Number of values, 1 to 1000.
+    pub count: usize,
+    /// Logarithmic spacing.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub log: bool,
+}
+
+/// At most this many amplitudes in one scene.
+pub const MAX_AMPLITUDES: usize = 1000;
+/// At most this many velocities in one scene.
+pub const MAX_VELOCITIES: usize = 1_000_000;
+/// At most this many rows (amplitudes x velocities) in one scene.
+pub const MAX_SCENE_ROWS: usize = 1_000_000;
 
 /// Sliding velocities.
 #[derive(Debug, Clone)]
@@ -200,6 +243,8 @@ pub struct Row {
 pub struct SceneResult {
     /// The scene's name, if any.
     pub name: Option<String>,
+    /// The local coefficient of friction `mu0` (as given).
+    pub mu0: f64,
     /// Effective modulus `E*` (Pa) (eq. 23).
     pub e_star_pa: f64,
     /// Effective shear modulus `G*` (Pa) (eq. 24).
@@ -365,7 +410,7 @@ fn check(s: &Scene, source: &str, read: &dyn Fn(&str) -> Result<String>) -> Resu
     };
     let velocities = match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
         (Some(v), None) => {
-            if v.is_empty() || v.len() > 1_000_000 {
+            if v.is_empty() || v.len() > MAX_VELOCITIES {
                 return Err(Error::Parse {
                     context: format!("{source}: velocity.values_m_per_s"),
                     reason: "needs 1 to 10^6 values".into(),
@@ -378,50 +423,13 @@ fn check(s: &Scene, source: &str, read: &dyn Fn(&str) -> Result<String>) -> Resu
                 })
                 .collect::<Result<Vec<_>>>()?
         }
-        (None, Some(sw)) => {
-            let a = field(
-                source,
-                "velocity.sweep.start_m_per_s",
-                sw.start_m_per_s,
-                sw.start_m_per_s >= 0.0,
-                "must be >= 0",
-            )?;
-            let b = field(
-                source,
-                "velocity.sweep.stop_m_per_s",
-                sw.stop_m_per_s,
-                sw.stop_m_per_s >= a,
-                "must be >= start",
-            )?;
-            if sw.count == 0 || sw.count > 1_000_000 {
-                return Err(Error::Parse {
-                    context: format!("{source}: velocity.sweep.count"),
-                    reason: "must be 1 to 10^6".into(),
-                });
-            }
-            if sw.log && a <= 0.0 {
-                return Err(Error::Parse {
-                    context: format!("{source}: velocity.sweep.start_m_per_s"),
-                    reason: "a log sweep needs start > 0".into(),
-                });
-            }
-            let k = sw.count;
-            let mut v: Vec<f64> = (0..k)
-                .map(|i| {
-                    let t = if k == 1 { 0.0 } else { i as f64 / (k - 1) as f64 };
-                    if i + 1 == k {
-                        b
-                    } else if sw.log {
-                        a * (b / a).powf(t)
-                    } else {
-                        a + (b - a) * t
-                    }
-                })
-                .collect();
-            // 0.005000000000000001 -> 0.005 where that is only binary noise.
-            crate::numerics::decimal::tidy(&mut v, a, b);
-            v
-        }
+        (None, Some(sw)) => sweep(
+            source,
+            ("velocity.sweep.start_m_per_s", "velocity.sweep.stop_m_per_s", "velocity.sweep.count"),
+            (sw.start_m_per_s, sw.stop_m_per_s, sw.count, sw.log),
+            MAX_VELOCITIES,
+            true,
+        )?,
         _ => {
             return Err(Error::Parse {
                 context: format!("{source}: velocity"),
@@ -430,6 +438,105 @@ fn check(s: &Scene, source: &str, read: &dyn Fn(&str) -> Result<String>) -> Resu
         }
     };
     Ok(Checked { e_star, g_star, mu0, omega, shape, geometry, profile, velocities })
+}
+
+/// `count` values from `start` to `stop` (inclusive; `names` are the three
+/// fields' paths for errors), linear or logarithmic, at most `max`, tidied to
+/// their decimal values where the spacing only added binary noise
+/// (0.005000000000000001 -> 0.005). `zero_ok`: whether `start` may be 0.
+fn sweep(
+    source: &str,
+    names: (&str, &str, &str),
+    (start, stop, count, log): (f64, f64, usize, bool),
+    max: usize,
+    zero_ok: bool,
+) -> Result<Vec<f64>> {
+    let a = if zero_ok {
+        field(source, names.0, start, start >= 0.0, "must be >= 0")?
+    } else {
+        field(source, names.0, start, start > 0.0, "must be > 0")?
+    };
+    let b = field(source, names.1, stop, stop >= a, "must be >= start")?;
+    if count == 0 || count > max {
+        return Err(Error::Parse { context: format!("{source}: {}", names.2), reason: format!("must be 1 to {max}") });
+    }
+    if log && a <= 0.0 {
+        return Err(Error::Parse {
+            context: format!("{source}: {}", names.0),
+            reason: "a log sweep needs start > 0".into(),
+        });
+    }
+    let mut v: Vec<f64> = (0..count)
+        .map(|i| {
+            let t = if count == 1 { 0.0 } else { i as f64 / (count - 1) as f64 };
+            if i + 1 == count {
+                b
+            } else if log {
+                a * (b / a).powf(t)
+            } else {
+                a + (b - a) * t
+            }
+        })
+        .collect();
+    crate::numerics::decimal::tidy(&mut v, a, b);
+    Ok(v)
+}
+
+/// The amplitudes of `values` at the field `path`, each finite and > 0.
+fn amplitudes(source: &str, path: &str, values: &Values) -> Result<Vec<f64>> {
+    let positive = |p: &str, x: f64| field(source, p, x, x > 0.0, "must be finite and > 0");
+    match values {
+        Values::One(x) => Ok(vec![positive(path, *x)?]),
+        Values::List(v) => {
+            if v.is_empty() || v.len() > MAX_AMPLITUDES {
+                return Err(Error::Parse {
+                    context: format!("{source}: {path}"),
+                    reason: format!("needs 1 to {MAX_AMPLITUDES} values"),
+                });
+            }
+            v.iter().enumerate().map(|(i, &x)| positive(&format!("{path}[{i}]"), x)).collect()
+        }
+        Values::Sweep(sw) => sweep(
+            source,
+            (&format!("{path}.start"), &format!("{path}.stop"), &format!("{path}.count")),
+            (sw.start, sw.stop, sw.count, sw.log),
+            MAX_AMPLITUDES,
+            false,
+        ),
+    }
+}
+
+/// The amplitude of one member of a scene's family: in metres, or as a fraction of `u0`.
+#[derive(Debug, Clone, Copy)]
+enum Amplitude {
+    Metres(f64),
+    Fraction(f64),
+}
+
+impl Amplitude {
+    fn at(self, u0: f64) -> f64 {
+        match self {
+            Amplitude::Metres(d) => d,
+            Amplitude::Fraction(f) => f * u0,
+        }
+    }
+}
+
+/// The scene's amplitudes, each one answer.
+fn family(s: &Scene, source: &str) -> Result<Vec<Amplitude>> {
+    match (&s.oscillation.amplitude_m, &s.oscillation.amplitude_fraction) {
+        // Without oscillation vbar is infinite and mu = mu0 at every velocity: nothing to compute.
+        (Some(v), None) => {
+            Ok(amplitudes(source, "oscillation.amplitude_m", v)?.into_iter().map(Amplitude::Metres).collect())
+        }
+        (None, Some(v)) => {
+            Ok(amplitudes(source, "oscillation.amplitude_fraction", v)?.into_iter().map(Amplitude::Fraction).collect())
+        }
+        _ => Err(Error::Parse {
+            context: format!("{source}: oscillation"),
+            reason: "give exactly one of amplitude_m, amplitude_fraction".into(),
+        }),
+    }
 }
 
 /// Contact radius, `kz`, and the mean normal force (N) at mean indentation `u0`, amplitude `du`.
@@ -459,39 +566,55 @@ fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
     Ok((xc, kz, kz * u0 * (m / 2.0)))
 }
 
-/// Number of velocities of a scene (for progress reporting), if it parses.
+/// Number of rows of a scene (velocities times amplitudes, for progress reporting), if it parses.
 pub fn velocity_count(s: &Scene) -> usize {
-    match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
+    let v = match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
         (Some(v), _) => v.len(),
         (None, Some(sw)) => sw.count,
         _ => 0,
-    }
+    };
+    let count = |a: &Values| match a {
+        Values::One(_) => 1,
+        Values::List(l) => l.len(),
+        Values::Sweep(sw) => sw.count,
+    };
+    let o = &s.oscillation;
+    v.saturating_mul(o.amplitude_m.as_ref().or(o.amplitude_fraction.as_ref()).map_or(1, count))
 }
 
-/// Solve a scene; `source` is its path (a tabulated profile's file is found
-/// relative to it and its text supplied by `read`: the core reads no files),
-/// calling `progress(k)` after each chunk of `k` velocities.
+/// Solve a scene, one answer per amplitude (in the order given); `source` is
+/// its path (a tabulated profile's file is found relative to it and its text
+/// supplied by `read`: the core reads no files), calling `progress(k)` after
+/// each chunk of `k` velocities. Every amplitude and velocity is checked, and
+/// the size limits enforced, before any is computed.
 pub fn solve_with(
     s: &Scene,
     source: &str,
     read: &dyn Fn(&str) -> Result<String>,
     progress: &(dyn Fn(u64) + Sync),
+) -> Result<Vec<SceneResult>> {
+    let c = check(s, source, read)?;
+    let amps = family(s, source)?;
+    let rows = amps.len().saturating_mul(c.velocities.len());
+    if rows > MAX_SCENE_ROWS {
+        return Err(Error::TooLarge {
+            what: format!("{source}: rows (amplitudes x velocities)"),
+            count: rows as u128,
+            limit: MAX_SCENE_ROWS as u128,
+        });
+    }
+    amps.iter().map(|&a| solve_amplitude(s, &c, a, source, progress)).collect()
+}
+
+/// One member of a scene's family.
+fn solve_amplitude(
+    s: &Scene,
+    c: &Checked,
+    amplitude: Amplitude,
+    source: &str,
+    progress: &(dyn Fn(u64) + Sync),
 ) -> Result<SceneResult> {
-    let mut c = check(s, source, read)?;
-    let o = &s.oscillation;
-    let amp_of = |u0: f64| -> Result<f64> {
-        match (o.amplitude_m, o.amplitude_fraction) {
-            // Without oscillation vbar is infinite and mu = mu0 at every velocity: nothing to compute.
-            (Some(d), None) => field(source, "oscillation.amplitude_m", d, d > 0.0, "must be finite and > 0"),
-            (None, Some(f)) => {
-                Ok(u0 * field(source, "oscillation.amplitude_fraction", f, f > 0.0, "must be finite and > 0")?)
-            }
-            _ => Err(Error::Parse {
-                context: format!("{source}: oscillation"),
-                reason: "give exactly one of amplitude_m, amplitude_fraction".into(),
-            }),
-        }
-    };
+    let amp_of = |u0: f64| -> Result<f64> { Ok(amplitude.at(u0)) };
     let l = &s.loading;
     let (u0, note) = match (l.mean_indentation_m, l.mean_normal_force_n) {
         (Some(u), None) => {
@@ -500,7 +623,7 @@ pub fn solve_with(
         (None, Some(f)) => {
             let f = field(source, "loading.mean_normal_force_n", f, f > 0.0, "must be finite and > 0")?;
             (
-                solve_load(&c, f, &amp_of, source)?,
+                solve_load(c, f, &amp_of, source)?,
                 "load control: u_z0 solved so that the period-averaged normal force equals \
               mean_normal_force_n; with contact loss this differs from the static force-indentation relation"
                     .into(),
@@ -513,12 +636,13 @@ pub fn solve_with(
             })
         }
     };
-    if let Some((path, table)) = &c.profile {
-        c.shape = tabulated(table, path, u0)?;
-    }
+    let shape = match &c.profile {
+        Some((path, table)) => tabulated(table, path, u0)?,
+        None => c.shape.clone(),
+    };
     let du = amp_of(u0)?;
     let amp = du / u0;
-    let (xc, kz, fbar) = contact(&c, u0, du)?;
+    let (xc, kz, fbar) = contact(c, u0, du)?;
     let ratio = c.g_star / c.e_star;
     let v_crit = c.mu0 * c.omega * du / ratio;
     let mut warnings = vec![];
@@ -540,7 +664,7 @@ pub fn solve_with(
             ));
         }
     }
-    let mu_static = c.shape.mu_static(amp, mdr::DEFAULT_TOL)? * c.mu0;
+    let mu_static = shape.mu_static(amp, mdr::DEFAULT_TOL)? * c.mu0;
     // eq. 3 with kx/kz = G*/E*: vbar = v0 / v_crit. The velocity scale must be an
     // ordinary number, else every vbar is 0, infinite or NaN.
     if !(v_crit.is_normal() && v_crit > 0.0) {
@@ -555,7 +679,7 @@ pub fn solve_with(
     let row = |v0: f64| -> Result<Row> {
         let vbar = v0 / v_crit;
         // At or above the critical velocity no spring is computed.
-        let mu = if vbar >= 1.0 { 1.0 } else { evaluate(&c.shape, vbar, amp)?.ratio.mu_ratio };
+        let mu = if vbar >= 1.0 { 1.0 } else { evaluate(&shape, vbar, amp)?.ratio.mu_ratio };
         Ok(Row {
             velocity_m_per_s: v0,
             vbar,
@@ -607,6 +731,7 @@ pub fn solve_with(
     }
     Ok(SceneResult {
         name: s.name.clone(),
+        mu0: c.mu0,
         e_star_pa: c.e_star,
         g_star_pa: c.g_star,
         mean_indentation_m: u0,

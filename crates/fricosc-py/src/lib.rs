@@ -257,7 +257,8 @@ fn validate_history(
 }
 
 /// A physical scene (`fricosc scene`): its JSON text in (or, without `text`, the
-/// file `source`, read with the command line's cap), its result's JSON out;
+/// file `source`, read with the command line's cap), its results' JSON out (a
+/// list, one per amplitude);
 /// `source` is its path (a profile file is found relative to it) or a name.
 #[pyfunction]
 #[pyo3(signature = (text, source))]

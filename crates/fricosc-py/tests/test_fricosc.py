@@ -299,7 +299,7 @@ def test_scene_is_the_command_lines() -> None:
     """Every example scene through Python (from its path, and as a dict where it
     names no file) gives `fricosc scene`'s JSON."""
     for path in sorted((ROOT / "data" / "scenes").glob("*.json")):
-        expected = json.loads(cli("scene", str(path), "--format", "json"))[0]
+        expected = json.loads(cli("scene", str(path), "--format", "json"))
         assert fricosc.scene(str(path)) == expected, path.name
         spec = json.loads(path.read_text())
         if "profile" not in spec["indenter"]:

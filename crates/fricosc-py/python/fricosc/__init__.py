@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any, Dict, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -365,18 +365,19 @@ def validate(
     return result
 
 
-def scene(spec: Union[Dict[str, Any], str, "os.PathLike[str]"]) -> Dict[str, Any]:
+def scene(spec: Union[Dict[str, Any], str, "os.PathLike[str]"]) -> List[Dict[str, Any]]:
     """Solve a physical scene (SI units), as ``fricosc scene`` does: ``spec`` is
     the scene as a dict (the JSON file's content) or the path of its file (a
-    tabulated profile's file is then found relative to it). Returns the result
-    as a dict (``rows`` of velocity, ``mu_ratio``, friction force, ...).
+    tabulated profile's file is then found relative to it). Returns a list with
+    one dict per amplitude (``oscillation.amplitude_m`` may be a list or a
+    sweep): ``rows`` of velocity, ``mu_ratio``, friction force, ...
 
     >>> r = scene({"materials": {"e1_pa": 2e11, "nu1": 0.3, "e2_pa": 2e11, "nu2": 0.3}, "mu0": 0.4,
     ...            "indenter": {"sphere": {"radius_m": 5e-3}}, "loading": {"mean_indentation_m": 1e-6},
-    ...            "oscillation": {"amplitude_m": 5e-7, "frequency_hz": 1e3},
+    ...            "oscillation": {"amplitude_m": [5e-7, 1e-6], "frequency_hz": 1e3},
     ...            "velocity": {"values_m_per_s": [1e-3]}})
-    >>> round(r["rows"][0]["mu_ratio"], 12)
-    0.936881842762
+    >>> [round(a["rows"][0]["mu_ratio"], 12) for a in r]
+    [0.936881842762, 0.588043871144]
     """
     text: Optional[str]
     if isinstance(spec, dict):
@@ -385,7 +386,7 @@ def scene(spec: Union[Dict[str, Any], str, "os.PathLike[str]"]) -> Dict[str, Any
         text, source = None, os.fspath(spec)  # read by the extension, with the command line's size cap
     else:
         raise TypeError(f"a scene is a dict or the path of a JSON file, not {type(spec).__name__}")
-    result: Dict[str, Any] = json.loads(_fricosc.scene(text, source))
+    result: List[Dict[str, Any]] = json.loads(_fricosc.scene(text, source))
     return result
 
 
