@@ -802,7 +802,27 @@ fn solve_load(c: &Checked, f: f64, amp_of: &dyn Fn(f64) -> Result<f64>, source: 
     if !(fhi >= f && fhi.is_finite()) {
         return Err(bad(format!("{f:?} N is beyond what double precision can represent for this indenter")));
     }
-    Ok(root::bracketed(|u| force(u) - f, lo, hi, 1e-15).x)
+    let u = root::bracketed(|u| force(u) - f, lo, hi, 1e-15).x;
+    // Polish: of the doubles within 8 ulps of the root, the one whose force is
+    // closest to `f` (often `f` itself), so that a force of 2 N is not printed
+    // as 1.9999999999999998 N where a neighbouring indentation gives 2 exactly.
+    // The force printed is always the one computed at the indentation used.
+    let mut best = (u, (force(u) - f).abs());
+    let (mut down, mut up) = (u, u);
+    for _ in 0..8 {
+        down = down.next_down();
+        up = up.next_up();
+        for x in [down, up] {
+            let d = (force(x) - f).abs();
+            if d < best.1 {
+                best = (x, d);
+            }
+        }
+        if best.1 == 0.0 {
+            break;
+        }
+    }
+    Ok(best.0)
 }
 
 #[cfg(test)]
