@@ -28,6 +28,7 @@ pub mod input;
 pub mod output;
 pub mod plot;
 pub mod rows;
+pub mod scan;
 pub mod scene;
 pub mod stress;
 pub mod suite;

@@ -184,10 +184,14 @@ enum Command {
         #[arg(long)]
         plot: Option<String>,
     },
-    /// A JSON array of {shape, vbar, amp, ...} from FILE or stdin; the same array with mu_ratio and reduction added.
+    /// Rows of {shape, vbar, amp, ...} (a JSON array, JSON Lines or CSV) from FILE or stdin; the same rows with mu_ratio and reduction added.
     Batch {
         /// Input file; stdin when absent or '-'.
         file: Option<String>,
+        /// Input and output format: json (an array), jsonl (one object per line, streamed) or csv
+        /// (streamed); default: by the file's extension (.jsonl, .ndjson, .csv), else json.
+        #[arg(long)]
+        format: Option<String>,
         #[command(flatten)]
         method: MethodArgs,
     },
@@ -270,7 +274,9 @@ fn main() -> ExitCode {
         Command::Claims { format } => done(cmd::claims::run(&format)),
         Command::Suite { out, check } => cmd::suite::run(out, check),
         Command::Stress { points, seed } => cmd::stress::run(points, seed),
-        Command::Batch { file, method } => done(method.stepping().and_then(|st| cmd::batch::run(file, st))),
+        Command::Batch { file, format, method } => {
+            done(method.stepping().and_then(|st| cmd::batch::run(file, format, st)))
+        }
         Command::Validate {
             shape,
             files,

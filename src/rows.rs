@@ -35,25 +35,14 @@ pub fn raw_array(text: &str) -> Result<Vec<&RawValue>, String> {
     serde_json::from_str(text).map_err(|e| format!("malformed JSON: {e}"))
 }
 
-/// A finite number from a raw JSON value.
+/// A finite number from a raw JSON value ([`crate::scan::number_of`]).
 pub fn number(raw: &RawValue, name: &str) -> Result<f64, String> {
-    let t = raw.get();
-    if !t.starts_with(|c: char| c == '-' || c.is_ascii_digit()) {
-        return Err(format!("'{name}' must be a number"));
-    }
-    match t.parse::<f64>() {
-        Ok(x) if x.is_finite() => Ok(x + 0.0),
-        _ => Err(format!("'{name}' is not a finite number")),
-    }
+    crate::scan::number_of(raw.get(), name)
 }
 
-/// A string from a raw JSON value (escapes resolved).
+/// A string from a raw JSON value, escapes resolved ([`crate::scan::string_of`]).
 pub fn string<'a>(raw: &'a RawValue, name: &str) -> Result<Cow<'a, str>, String> {
-    if !raw.get().starts_with('"') {
-        return Err(format!("'{name}' must be a string"));
-    }
-    let s: Key<'a> = serde_json::from_str(raw.get()).map_err(|e| format!("'{name}': {e}"))?;
-    Ok(s.0)
+    crate::scan::string_of(raw.get(), name)
 }
 
 struct Pick<'n>(&'n [&'n str]);

@@ -1,14 +1,66 @@
-//! `fricosc batch`: a JSON array of rows in, the same rows with results out.
+//! `fricosc batch`: rows in (a JSON array, JSON Lines or CSV), the same rows
+//! with results out, in the same format.
 
 use super::{io_err, read_input};
-use fricosc::batch;
-use fricosc::error::Result;
+use fricosc::batch::{self, Format};
+use fricosc::error::{Error, Result};
 use fricosc::shape::Stepping;
-use std::io::{self, Write};
+use std::io::{self, BufRead, Write};
 
-pub(crate) fn run(file: Option<String>, stepping: Option<Stepping>) -> Result<()> {
-    let (text, source) = read_input(file)?;
-    let rows = batch::run(&text, &source, stepping)?;
-    let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
-    rows.write(&mut out).and_then(|()| out.flush()).map_err(io_err)
+pub(crate) fn run(file: Option<String>, format: Option<String>, stepping: Option<Stepping>) -> Result<()> {
+    let path = file.clone().unwrap_or_else(|| "-".into());
+    match Format::choose(format.as_deref(), &path)? {
+        Format::Json => {
+            let (text, source) = read_input(file)?;
+            let rows = batch::run(&text, &source, stepping)?;
+            let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
+            rows.write(&mut out).and_then(|()| out.flush()).map_err(io_err)
+        }
+        streamed => {
+            // Streaming reads its input twice: stdin is first copied to a
+            // temporary file (removed when done), in constant memory.
+            let spool = if path == "-" { Some(Spool::from_stdin()?) } else { None };
+            let (read_path, source) = match &spool {
+                Some(s) => (s.path.display().to_string(), "stdin".to_string()),
+                None => (path.clone(), path.clone()),
+            };
+            let open = || -> Result<Box<dyn BufRead>> {
+                let f = std::fs::File::open(&read_path)
+                    .map_err(|e| Error::Parse { context: source.clone(), reason: format!("cannot read: {e}") })?;
+                if f.metadata().is_ok_and(|m| m.is_dir()) {
+                    return Err(Error::Parse { context: source.clone(), reason: "cannot read: a directory".into() });
+                }
+                Ok(Box::new(io::BufReader::with_capacity(1 << 16, f)))
+            };
+            let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
+            batch::stream(streamed, &open, &source, stepping, &mut out).map(|_| ())
+        }
+    }
+}
+
+/// Standard input copied to a temporary file, removed on drop.
+struct Spool {
+    path: std::path::PathBuf,
+}
+
+impl Spool {
+    fn from_stdin() -> Result<Spool> {
+        let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_nanos());
+        let path = std::env::temp_dir().join(format!("fricosc-batch-{}-{nanos}", std::process::id()));
+        let spool = Spool { path };
+        let werr = |e: io::Error| Error::write(&spool.path.display().to_string(), e);
+        let mut f = std::fs::OpenOptions::new().write(true).create_new(true).open(&spool.path).map_err(werr)?;
+        io::copy(&mut io::stdin().lock(), &mut f).map_err(|e| match e.kind() {
+            io::ErrorKind::WriteZero | io::ErrorKind::StorageFull => werr(e),
+            _ => Error::Parse { context: "stdin".into(), reason: format!("cannot read: {e}") },
+        })?;
+        f.sync_data().ok();
+        Ok(spool)
+    }
+}
+
+impl Drop for Spool {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.path);
+    }
 }
