@@ -83,6 +83,13 @@ fn figure(name: &str, title: &str, x: XAxis, range: [f64; 4], curves: Vec<Curve>
     }
 }
 
+/// A figure against `vhat` over both regimes, the critical amplitude bold between them (Figs. 4, 8).
+fn against_vhat(name: &str, title: &str, curves: Vec<Curve>) -> Figure {
+    let mut f = figure(name, title, XAxis::Vhat, [0.0, 2.0, 0.0, 1.05], curves);
+    f.bold_critical = true;
+    f
+}
+
 fn grid(x0: f64, x1: f64, n: usize) -> Vec<f64> {
     (0..n).map(|k| x0 + (x1 - x0) * k as f64 / (n - 1) as f64).collect()
 }
@@ -170,15 +177,11 @@ pub fn build() -> Result<Vec<Figure>> {
             c.push(approx("eq. 16", Some(a), &vh, |x| seed::eq16(x, a)));
         }
     }
-    let mut f = figure(
+    figs.push(against_vhat(
         "fig4",
         "Fig. 4: flat punch against v\u{302}, exact, eq. 16 (no jumping) and eq. 17 (jumping)",
-        XAxis::Vhat,
-        [0.0, 2.0, 0.0, 1.05],
         c,
-    );
-    f.bold_critical = true;
-    figs.push(f);
+    ));
 
     // Fig. 5: jumping, and eq. 17.
     let mut c = vec![];
@@ -238,15 +241,7 @@ pub fn build() -> Result<Vec<Figure>> {
             c.push(approx("eq. 27", Some(a), &vh, |x| seed::eq27(x / a, ms)));
         }
     }
-    let mut f = figure(
-        "fig8",
-        "Fig. 8: parabolic indenter against v\u{302}, exact and eq. 27",
-        XAxis::Vhat,
-        [0.0, 2.0, 0.0, 1.05],
-        c,
-    );
-    f.bold_critical = true;
-    figs.push(f);
+    figs.push(against_vhat("fig8", "Fig. 8: parabolic indenter against v\u{302}, exact and eq. 27", c));
     Ok(figs)
 }
 

@@ -40,6 +40,7 @@ pub(crate) fn run(out: &str, quick: bool) -> Result<()> {
 fn callgrind(args: &[&str]) -> Option<f64> {
     let exe = std::env::current_exe().ok()?;
     let out = std::process::Command::new("valgrind")
+        .env("RAYON_NUM_THREADS", "1")
         .args(["--tool=callgrind", "--callgrind-out-file=/dev/null"])
         .arg(exe)
         .args(args)
@@ -51,10 +52,13 @@ fn callgrind(args: &[&str]) -> Option<f64> {
     line.rsplit(':').next()?.trim().parse().ok()
 }
 
-/// Per-row instruction counts of `batch` (flat and parabolic rows) and `table`,
-/// where valgrind is installed (none otherwise).
+/// Per-row instruction counts of `batch` (JSON array, JSON Lines and CSV; flat
+/// and parabolic rows) and `table`, where valgrind is installed (none
+/// otherwise). Each is the count of a large run minus a one-row run (so that
+/// start-up is not counted), over the rows' difference. Rayon runs one thread
+/// (`RAYON_NUM_THREADS=1`): idle worker threads spin, and their instructions
+/// would count as work.
 fn instruction_counts(dir: &std::path::Path) -> Result<Vec<fricosc::bench::InstructionCount>> {
-    let mut out = vec![];
     // A fixed pseudo-random row set: vbar in [0, 1.2], amp in [0, 3].
     let mut seed = 0x9E3779B97F4A7C15u64;
     let mut rand = || {
@@ -63,40 +67,67 @@ fn instruction_counts(dir: &std::path::Path) -> Result<Vec<fricosc::bench::Instr
         seed ^= seed << 17;
         (seed >> 11) as f64 / (1u64 << 53) as f64
     };
-    let mut rows = |shape: &str, n: usize| -> String {
-        let r: Vec<String> = (0..n)
-            .map(|_| format!("{{\"shape\":\"{shape}\",\"vbar\":{:?},\"amp\":{:?}}}", 1.2 * rand(), 3.0 * rand()))
-            .collect();
+    let random = |n: usize, rand: &mut dyn FnMut() -> f64| -> Vec<(f64, f64)> {
+        (0..n).map(|_| (1.2 * rand(), 3.0 * rand())).collect()
+    };
+    // The parabolic table's own grid, for batch against table on the same points.
+    let grid: Vec<(f64, f64)> =
+        (0..10).flat_map(|a| (0..100).map(move |v| (1.2 * v as f64 / 99.0, 3.0 * a as f64 / 9.0))).collect();
+    let json = |shape: &str, pts: &[(f64, f64)]| {
+        let r: Vec<String> =
+            pts.iter().map(|(v, a)| format!("{{\"shape\":\"{shape}\",\"vbar\":{v:?},\"amp\":{a:?}}}")).collect();
         format!("[{}]", r.join(",\n"))
     };
-    for (shape, n) in [("flat", 10_000usize), ("parabolic", 1_000)] {
-        let (big, one) = (dir.join(format!("rows-{shape}.json")), dir.join(format!("row-{shape}.json")));
-        std::fs::write(&big, rows(shape, n)).map_err(|e| Error::write(&big.display().to_string(), e))?;
-        std::fs::write(&one, rows(shape, 1)).map_err(|e| Error::write(&one.display().to_string(), e))?;
-        let (Some(i_n), Some(i_1)) =
-            (callgrind(&["batch", &big.display().to_string()]), callgrind(&["batch", &one.display().to_string()]))
-        else {
-            return Ok(vec![]);
-        };
+    let lines = |shape: &str, pts: &[(f64, f64)]| -> String {
+        pts.iter().map(|(v, a)| format!("{{\"shape\":\"{shape}\",\"vbar\":{v:?},\"amp\":{a:?}}}\n")).collect()
+    };
+    let csv = |shape: &str, pts: &[(f64, f64)]| -> String {
+        "shape,vbar,amp\n".to_string() + &pts.iter().map(|(v, a)| format!("{shape},{v:?},{a:?}\n")).collect::<String>()
+    };
+    let flat = random(10_000, &mut rand);
+    let parabolic = random(1_000, &mut rand);
+    type Make<'a> = &'a dyn Fn(&str, &[(f64, f64)]) -> String;
+    let files: [(&str, &str, Make, &[(f64, f64)], &str); 5] = [
+        ("batch, random flat rows (JSON array)", "flat", &json, &flat, "json"),
+        ("batch, random flat rows (JSON Lines)", "flat", &lines, &flat, "jsonl"),
+        ("batch, random flat rows (CSV)", "flat", &csv, &flat, "csv"),
+        ("batch, random parabolic rows (JSON array)", "parabolic", &json, &parabolic, "json"),
+        ("batch, the parabolic table's 10 x 100 points (JSON array)", "parabolic", &json, &grid, "json"),
+    ];
+    let mut out = vec![];
+    for (workload, shape, make, pts, ext) in files {
+        let (big, one) = (dir.join(format!("rows.{ext}")), dir.join(format!("row.{ext}")));
+        let werr = |p: &std::path::Path, e| Error::write(&p.display().to_string(), e);
+        std::fs::write(&big, make(shape, pts)).map_err(|e| werr(&big, e))?;
+        std::fs::write(&one, make(shape, &pts[..1])).map_err(|e| werr(&one, e))?;
+        let counts =
+            (callgrind(&["batch", &big.display().to_string()]), callgrind(&["batch", &one.display().to_string()]));
         let _ = (std::fs::remove_file(&big), std::fs::remove_file(&one));
+        let (Some(i_n), Some(i_1)) = counts else { return Ok(vec![]) };
         out.push(fricosc::bench::InstructionCount {
-            workload: format!("batch, random {shape} rows"),
-            rows: n,
-            instructions_per_row: (i_n - i_1) / (n - 1) as f64,
-            command: format!("valgrind --tool=callgrind fricosc batch FILE ({n} rows minus 1 row)"),
+            workload: workload.into(),
+            rows: pts.len(),
+            instructions_per_row: (i_n - i_1) / (pts.len() - 1) as f64,
+            command: format!("valgrind --tool=callgrind fricosc batch FILE.{ext} ({} rows minus 1 row)", pts.len()),
         });
     }
-    let table = callgrind(&["table", "--shape", "flat", "--vbar", "0:1.2:100", "--amp", "0:3:100"]);
-    let single = callgrind(&["table", "--shape", "flat", "--vbar", "0.6", "--amp", "1.5"]);
-    if let (Some(t), Some(s)) = (table, single) {
-        out.push(fricosc::bench::InstructionCount {
-            workload: "table, 100 x 100 flat".into(),
-            rows: 10_000,
-            instructions_per_row: (t - s) / 9_999.0,
-            command:
-                "valgrind --tool=callgrind fricosc table --shape flat --vbar 0:1.2:100 --amp 0:3:100 (minus 1 point)"
-                    .into(),
-        });
+    for (workload, shape, vbar, amp, rows) in [
+        ("table, 100 x 100 flat", "flat", "0:1.2:100", "0:3:100", 10_000usize),
+        ("table, 10 x 100 parabolic", "parabolic", "0:1.2:100", "0:3:10", 1_000),
+    ] {
+        let table = callgrind(&["table", "--shape", shape, "--vbar", vbar, "--amp", amp, "--format", "csv"]);
+        let single = callgrind(&["table", "--shape", shape, "--vbar", "0.6", "--amp", "1.5", "--format", "csv"]);
+        if let (Some(t), Some(s)) = (table, single) {
+            out.push(fricosc::bench::InstructionCount {
+                workload: workload.into(),
+                rows,
+                instructions_per_row: (t - s) / (rows - 1) as f64,
+                command: format!(
+                    "valgrind --tool=callgrind fricosc table --shape {shape} --vbar {vbar} --amp {amp} --format csv \
+                     (minus 1 point)"
+                ),
+            });
+        }
     }
     Ok(out)
 }
