@@ -106,7 +106,7 @@ enum Command {
         #[arg(long)]
         check: Option<String>,
     },
-    /// Work-precision benchmark: exact solver vs time stepping; writes JSON, CSV and SVG to DIR.
+    /// Work-precision benchmark: exact solver vs time stepping; writes JSON, CSV, SVG and PNG to DIR.
     Bench {
         /// Output directory (created if missing).
         #[arg(long)]
@@ -130,7 +130,7 @@ enum Command {
         #[arg(long, default_value = "markdown")]
         format: String,
     },
-    /// Normal and tangential force over time (the seed's Fig. 2), exact: JSON, CSV or SVG.
+    /// Normal and tangential force over time (the seed's Fig. 2), exact: JSON, CSV, SVG or PNG.
     History {
         /// Shape: flat or a power law.
         #[arg(long, default_value = "flat")]
@@ -163,7 +163,7 @@ enum Command {
         #[arg(long, allow_hyphen_values = true)]
         steps_per_period: Option<usize>,
     },
-    /// The seed's Figs. 3, 4, 5 (+ inset), 7, 8: exact curves and the seed's approximations, as JSON, CSV, SVG.
+    /// The seed's Figs. 3, 4, 5 (+ inset), 7, 8: exact curves and the seed's approximations, as JSON, CSV, SVG and PNG.
     Figures {
         /// Output directory (created if missing).
         #[arg(long)]

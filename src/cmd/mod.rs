@@ -34,11 +34,11 @@ pub(crate) enum Outcome {
 #[derive(Args)]
 #[group(required = true, multiple = false)]
 pub(crate) struct Velocity {
-    /// Dimensionless velocity vbar = (kx/kz) v0 / (mu0 omega du) (eq. 3); for table a comma list
+    /// Dimensionless velocity vbar = (kx/kz) v0 / (mu0 omega du) (eq. 3); for table and plot a comma list
     /// or start:stop:count.
     #[arg(long, allow_hyphen_values = true)]
     pub(crate) vbar: Option<String>,
-    /// Velocity vhat = (kx/kz) v0 / (mu0 omega u0) (eq. 15), vbar = vhat / amp; for table a comma
+    /// Velocity vhat = (kx/kz) v0 / (mu0 omega u0) (eq. 15), vbar = vhat / amp; for table and plot a comma
     /// list or start:stop:count.
     #[arg(long, allow_hyphen_values = true)]
     pub(crate) vhat: Option<String>,
