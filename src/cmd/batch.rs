@@ -38,10 +38,14 @@ pub(crate) fn run(file: Option<String>, format: Option<String>, stepping: Option
     }
 }
 
-/// Standard input copied to a temporary file, removed on drop.
+/// Standard input copied to a temporary file (readable by its owner only),
+/// removed on drop.
 struct Spool {
     path: std::path::PathBuf,
 }
+
+/// Most bytes of standard input a streamed batch spools (16 GiB).
+pub(crate) const MAX_SPOOL_BYTES: u64 = 16 << 30;
 
 impl Spool {
     fn from_stdin() -> Result<Spool> {
@@ -49,11 +53,25 @@ impl Spool {
         let path = std::env::temp_dir().join(format!("fricosc-batch-{}-{nanos}", std::process::id()));
         let spool = Spool { path };
         let werr = |e: io::Error| Error::write(&spool.path.display().to_string(), e);
-        let mut f = std::fs::OpenOptions::new().write(true).create_new(true).open(&spool.path).map_err(werr)?;
-        io::copy(&mut io::stdin().lock(), &mut f).map_err(|e| match e.kind() {
-            io::ErrorKind::WriteZero | io::ErrorKind::StorageFull => werr(e),
-            _ => Error::Parse { context: "stdin".into(), reason: format!("cannot read: {e}") },
-        })?;
+        let mut options = std::fs::OpenOptions::new();
+        options.write(true).create_new(true);
+        #[cfg(unix)]
+        std::os::unix::fs::OpenOptionsExt::mode(&mut options, 0o600);
+        let mut f = options.open(&spool.path).map_err(werr)?;
+        let copied =
+            io::copy(&mut io::Read::take(io::stdin().lock(), MAX_SPOOL_BYTES + 1), &mut f).map_err(|e| {
+                match e.kind() {
+                    io::ErrorKind::WriteZero | io::ErrorKind::StorageFull => werr(e),
+                    _ => Error::Parse { context: "stdin".into(), reason: format!("cannot read: {e}") },
+                }
+            })?;
+        if copied > MAX_SPOOL_BYTES {
+            return Err(Error::TooLarge {
+                what: "bytes of stdin (JSON Lines and CSV are spooled to a temporary file; give a file instead)".into(),
+                count: copied as u128,
+                limit: MAX_SPOOL_BYTES as u128,
+            });
+        }
         f.sync_data().ok();
         Ok(spool)
     }

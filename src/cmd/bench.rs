@@ -87,7 +87,8 @@ fn instruction_counts(dir: &std::path::Path) -> Result<Vec<fricosc::bench::Instr
     let flat = random(10_000, &mut rand);
     let parabolic = random(1_000, &mut rand);
     type Make<'a> = &'a dyn Fn(&str, &[(f64, f64)]) -> String;
-    let files: [(&str, &str, Make, &[(f64, f64)], &str); 5] = [
+    type Workload<'a> = (&'a str, &'a str, Make<'a>, &'a [(f64, f64)], &'a str);
+    let files: [Workload; 5] = [
         ("batch, random flat rows (JSON array)", "flat", &json, &flat, "json"),
         ("batch, random flat rows (JSON Lines)", "flat", &lines, &flat, "jsonl"),
         ("batch, random flat rows (CSV)", "flat", &csv, &flat, "csv"),
