@@ -17,7 +17,8 @@
 //! - JSON Lines and CSV stream in constant memory, in two passes over the
 //!   input: the first checks every row, the second computes chunks of rows in
 //!   parallel and writes them in order (the caller spools stdin to a temporary
-//!   file to read it twice). Blank lines of JSON Lines are skipped. CSV keeps
+//!   file to read it twice). JSON Lines are read a chunk at a time (65,536
+//!   lines or 32 MiB) and scanned, checked and formatted in parallel too. Blank lines of JSON Lines are skipped. CSV keeps
 //!   every column's value (fields are re-quoted only where CSV needs it) and
 //!   appends `mu_ratio,reduction`, or fills those columns where they exist.
 //! - Duplicate keys are refused. Each distinct shape string is parsed once.
@@ -180,12 +181,6 @@ fn json_numbers(shapes: &Shapes, shape: u32, f: &[Option<&str>; 5]) -> std::resu
     shapes.check(shape, vbar, amp, f[3].is_some() || f[4].is_some()).map_err(|e| e.to_string())
 }
 
-/// The job of one JSON row (its raw fields).
-fn json_job(shapes: &mut Shapes, f: &[Option<&str>; 5]) -> std::result::Result<Job, String> {
-    let shape = shapes.id(&json_spec(f)?).map_err(|e| e.to_string())?;
-    json_numbers(shapes, shape, f)
-}
-
 /// An evaluated JSON array, borrowing its rows from the input text.
 pub struct Batch<'a> {
     rows: Vec<&'a str>,
@@ -193,12 +188,61 @@ pub struct Batch<'a> {
     replace: Vec<usize>,
 }
 
+/// Most bytes of lines read into one chunk of a streamed batch.
+const CHUNK_BYTES: usize = 32 << 20;
+
+/// A row of a chunk as scanned: its fields, or why it is malformed.
+type Scanned<'a> = std::result::Result<scan::Row<'a, 5>, String>;
+
+/// Check one chunk of `n` rows: each scanned in parallel (`scan_row(j)`), their
+/// shapes looked up serially (each distinct string parsed once), their numbers
+/// checked in parallel. Returns the rows' raw text and jobs, or the first row
+/// at fault (its index in the chunk, and why), as a serial reading finds it.
+fn check_chunk<'a>(
+    n: usize,
+    scan_row: &(dyn Fn(usize) -> Scanned<'a> + Sync),
+    shapes: &mut Shapes,
+) -> std::result::Result<Vec<(&'a str, Job)>, (usize, String)> {
+    let scanned: Vec<Scanned<'a>> = (0..n).into_par_iter().map(scan_row).collect();
+    // Serially: the first malformed row, and every shape up to it.
+    let mut ids = Vec::with_capacity(n);
+    let mut first: Option<(usize, String)> = None;
+    for (j, r) in scanned.iter().enumerate() {
+        let id = r
+            .clone()
+            .and_then(|row| json_spec(&row.fields).and_then(|spec| shapes.id(&spec).map_err(|e| e.to_string())));
+        match id {
+            Ok(k) => ids.push(k),
+            Err(reason) => {
+                first = Some((j, reason));
+                break;
+            }
+        }
+    }
+    // In parallel: the numbers of the rows before it.
+    let shapes = &*shapes;
+    let checked: Vec<std::result::Result<(&'a str, Job), String>> = scanned[..ids.len()]
+        .par_iter()
+        .zip(&ids)
+        .map(|(r, &k)| match r {
+            Ok(row) => json_numbers(shapes, k, &row.fields).map(|job| (row.raw, job)),
+            Err(e) => Err(e.clone()),
+        })
+        .collect();
+    if let Some(j) = checked.iter().position(|x| x.is_err()) {
+        first = Some((j, checked[j].clone().err().unwrap_or_default()));
+    }
+    match first {
+        Some(fault) => Err(fault),
+        None => Ok(checked.into_iter().flatten().collect()),
+    }
+}
+
 /// Check and evaluate every row of `text` (a JSON array); `source` names the input in errors.
 ///
 /// The rows' starts are found in one cheap serial pass ([`scan::row_starts`]);
-/// then, a chunk at a time, the rows are scanned and checked in parallel, their
-/// shapes looked up serially (each distinct string parsed once), and the first
-/// row at fault (the lowest index, as a serial reading would find) reported.
+/// then, a chunk at a time, the rows are checked by [`check_chunk`], and the
+/// first row at fault (the lowest index, as a serial reading would find) reported.
 pub fn run<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Result<Batch<'a>> {
     let parse_err = |reason: String| Error::Parse { context: source.into(), reason };
     let (starts, tail) = scan::row_starts(text);
@@ -213,44 +257,12 @@ pub fn run<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Resul
     let mut rows = Vec::with_capacity(starts.len());
     let mut jobs = Vec::with_capacity(starts.len());
     for (c, chunk) in starts.chunks(CHUNK).enumerate() {
-        let base = c * CHUNK;
-        let scanned: Vec<_> = chunk.par_iter().map(|&i| scan::row(text, i, &NAMES)).collect();
-        // Serially: the first malformed row, and every shape up to it.
-        let mut ids = Vec::with_capacity(chunk.len());
-        let mut first: Option<(usize, String)> = None;
-        for (j, r) in scanned.iter().enumerate() {
-            let id = match r {
-                Err(e) => Err(e.describe(text)),
-                Ok((row, _)) => json_spec(&row.fields).and_then(|spec| shapes.id(&spec).map_err(|e| e.to_string())),
-            };
-            match id {
-                Ok(k) => ids.push(k),
-                Err(reason) => {
-                    first = Some((j, reason));
-                    break;
-                }
-            }
-        }
-        // In parallel: the numbers of the rows before it.
-        let checked: Vec<std::result::Result<Job, String>> = scanned[..ids.len()]
-            .par_iter()
-            .zip(&ids)
-            .map(|(r, &k)| match r {
-                Ok((row, _)) => json_numbers(&shapes, k, &row.fields),
-                Err(_) => Err(String::new()),
-            })
-            .collect();
-        if let Some(j) = checked.iter().position(|x| x.is_err()) {
-            first = Some((j, checked[j].clone().err().unwrap_or_default()));
-        }
-        if let Some((j, reason)) = first {
-            return Err(parse_err(format!("row {}: {reason}", base + j)));
-        }
-        for (r, job) in scanned.into_iter().zip(checked) {
-            if let (Ok((row, _)), Ok(job)) = (r, job) {
-                rows.push(row.raw);
-                jobs.push(job);
-            }
+        let scan_row = |j: usize| scan::row(text, chunk[j], &NAMES).map(|(r, _)| r).map_err(|e| e.describe(text));
+        let checked = check_chunk(chunk.len(), &scan_row, &mut shapes)
+            .map_err(|(j, reason)| parse_err(format!("row {}: {reason}", c * CHUNK + j)))?;
+        for (raw, job) in checked {
+            rows.push(raw);
+            jobs.push(job);
         }
     }
     drop(starts);
@@ -337,43 +349,6 @@ impl Batch<'_> {
     }
 }
 
-/// A line of at most [`MAX_LINE`] bytes (without its line break) into `buf`;
-/// `false` at the end of the input.
-fn next_line(input: &mut dyn BufRead, buf: &mut Vec<u8>, source: &str, line: u64) -> Result<bool> {
-    buf.clear();
-    let n = Read::take(&mut *input, MAX_LINE as u64 + 2)
-        .read_until(b'\n', buf)
-        .map_err(|e| Error::Parse { context: source.into(), reason: format!("cannot read: {e}") })?;
-    if n == 0 {
-        return Ok(false);
-    }
-    if buf.last() == Some(&b'\n') {
-        buf.pop();
-        if buf.last() == Some(&b'\r') {
-            buf.pop();
-        }
-    }
-    if buf.len() > MAX_LINE {
-        return Err(Error::TooLarge {
-            what: format!("bytes of line {line} of {source}"),
-            count: n as u128,
-            limit: MAX_LINE as u128,
-        });
-    }
-    Ok(true)
-}
-
-/// The rows of a streamed input, one parsed at a time.
-trait RowSource {
-    /// Write the output's header (CSV), if any.
-    fn header(&mut self, out: &mut dyn Write) -> io::Result<()>;
-    /// The next row's line number (1-based) and job; `None` at the end. With
-    /// `keep`, the row is kept to be written by [`RowSource::write_kept`].
-    fn next(&mut self, shapes: &mut Shapes, keep: bool) -> Result<Option<(u64, Job)>>;
-    /// Write the kept rows with their results (in order), and forget them.
-    fn write_kept(&mut self, out: &mut dyn Write, results: &[Ratio]) -> io::Result<()>;
-}
-
 /// Stream a JSON Lines or CSV batch: `open()` gives the input (called twice:
 /// once to check every row, once to compute and write); `source` names it.
 /// Returns the number of rows.
@@ -384,30 +359,147 @@ pub fn stream(
     stepping: Option<Stepping>,
     out: &mut dyn Write,
 ) -> Result<u64> {
+    match format {
+        Format::JsonLines => stream_lines(open, source, stepping, out),
+        Format::Csv => stream_csv(open, source, stepping, out),
+        Format::Json => Err(Error::Internal { what: "a JSON array is not streamed".into() }),
+    }
+}
+
+fn too_many(source: &str, n: u64) -> Error {
+    Error::TooLarge { what: format!("rows of batch {source}"), count: n as u128, limit: MAX_STREAM_ROWS as u128 }
+}
+
+/// The next chunk of non-blank lines of JSON Lines (at most [`CHUNK`] lines
+/// and about [`CHUNK_BYTES`] bytes), read into one buffer: each line's span
+/// (without its line break) and number; no spans at the end.
+fn line_chunk(
+    input: &mut dyn BufRead,
+    source: &str,
+    line: &mut u64,
+    buf: &mut Vec<u8>,
+    spans: &mut Vec<(usize, usize)>,
+    numbers: &mut Vec<u64>,
+) -> Result<()> {
+    buf.clear();
+    spans.clear();
+    numbers.clear();
+    while spans.len() < CHUNK && buf.len() < CHUNK_BYTES {
+        let start = buf.len();
+        let n = Read::take(&mut *input, MAX_LINE as u64 + 2)
+            .read_until(b'\n', buf)
+            .map_err(|e| Error::Parse { context: source.into(), reason: format!("cannot read: {e}") })?;
+        if n == 0 {
+            break;
+        }
+        *line += 1;
+        let mut end = buf.len();
+        if buf[end - 1] == b'\n' {
+            end -= 1;
+            if end > start && buf[end - 1] == b'\r' {
+                end -= 1;
+            }
+        }
+        if end - start > MAX_LINE {
+            return Err(Error::TooLarge {
+                what: format!("bytes of line {line} of {source}"),
+                count: n as u128,
+                limit: MAX_LINE as u128,
+            });
+        }
+        if buf[start..end].iter().all(|b| b.is_ascii_whitespace()) {
+            buf.truncate(start);
+            continue;
+        }
+        spans.push((start, end));
+        numbers.push(*line);
+    }
+    Ok(())
+}
+
+/// One line of JSON Lines, scanned.
+fn scan_line(line: &[u8]) -> Scanned<'_> {
+    let text = std::str::from_utf8(line).map_err(|_| "not UTF-8".to_string())?;
+    scan::line_row(text, &NAMES).map_err(|e| e.describe(text))
+}
+
+/// JSON Lines: chunks of lines read serially, checked ([`check_chunk`]),
+/// evaluated and formatted in parallel; blank lines skipped.
+fn stream_lines(
+    open: &dyn Fn() -> Result<Box<dyn BufRead>>,
+    source: &str,
+    stepping: Option<Stepping>,
+    out: &mut dyn Write,
+) -> Result<u64> {
     let mut shapes = Shapes::new(stepping);
-    let make = |input: Box<dyn BufRead>| -> Result<Box<dyn RowSource>> {
-        Ok(match format {
-            Format::JsonLines => Box::new(Lines { input, source: source.into(), line: 0, buf: vec![], kept: vec![] }),
-            Format::Csv => Box::new(Csv::new(input, source)?),
-            Format::Json => return Err(Error::Internal { what: "a JSON array is not streamed".into() }),
-        })
+    let (mut buf, mut spans, mut numbers) = (vec![], vec![], vec![]);
+    let fault = |numbers: &[u64], (j, reason): (usize, String)| Error::Parse {
+        context: source.into(),
+        reason: format!("line {}: {reason}", numbers[j]),
     };
+    let werr = |e: io::Error| Error::write("stdout", e);
+    let mut total = 0u64;
+    for pass in [1, 2] {
+        let mut input = open()?;
+        let mut line = 0u64;
+        loop {
+            line_chunk(&mut *input, source, &mut line, &mut buf, &mut spans, &mut numbers)?;
+            if spans.is_empty() {
+                break;
+            }
+            let checked = check_chunk(spans.len(), &|j| scan_line(&buf[spans[j].0..spans[j].1]), &mut shapes)
+                .map_err(|f| fault(&numbers, f))?;
+            if pass == 1 {
+                total += checked.len() as u64;
+                if total > MAX_STREAM_ROWS {
+                    return Err(too_many(source, total));
+                }
+                continue;
+            }
+            let jobs: Vec<Job> = checked.iter().map(|(_, j)| *j).collect();
+            let results = shapes.evaluate_all(&jobs, source, &|i| format!("line {}", numbers[i]))?;
+            let pieces: Vec<io::Result<Vec<u8>>> = checked
+                .par_chunks(4096)
+                .zip(results.par_chunks(4096))
+                .map(|(rows, rs)| {
+                    let mut buf = Vec::with_capacity(rows.len() * 128);
+                    let mut ryu = ryu::Buffer::new();
+                    for ((raw, job), r) in rows.iter().zip(rs) {
+                        write_json_row(&mut buf, raw, r, job.replace, &mut ryu)?;
+                        buf.push(b'\n');
+                    }
+                    Ok(buf)
+                })
+                .collect();
+            for p in pieces {
+                out.write_all(&p.map_err(werr)?).map_err(werr)?;
+            }
+        }
+    }
+    out.flush().map_err(werr)?;
+    Ok(total)
+}
+
+/// CSV: records read and checked one at a time, evaluated in parallel chunks.
+fn stream_csv(
+    open: &dyn Fn() -> Result<Box<dyn BufRead>>,
+    source: &str,
+    stepping: Option<Stepping>,
+    out: &mut dyn Write,
+) -> Result<u64> {
+    let mut shapes = Shapes::new(stepping);
     // Pass 1: check every row.
-    let mut rows = make(open()?)?;
+    let mut rows = Csv::new(open()?, source)?;
     let mut n = 0u64;
     while rows.next(&mut shapes, false)?.is_some() {
         n += 1;
         if n > MAX_STREAM_ROWS {
-            return Err(Error::TooLarge {
-                what: format!("rows of batch {source}"),
-                count: n as u128,
-                limit: MAX_STREAM_ROWS as u128,
-            });
+            return Err(too_many(source, n));
         }
     }
     // Pass 2: compute chunks in parallel, write them in order.
     let werr = |e: io::Error| Error::write("stdout", e);
-    let mut rows = make(open()?)?;
+    let mut rows = Csv::new(open()?, source)?;
     rows.header(out).map_err(werr)?;
     let (mut jobs, mut lines) = (Vec::with_capacity(CHUNK), Vec::with_capacity(CHUNK));
     loop {
@@ -426,53 +518,6 @@ pub fn stream(
     }
     out.flush().map_err(werr)?;
     Ok(n)
-}
-
-/// JSON Lines rows.
-struct Lines {
-    input: Box<dyn BufRead>,
-    source: String,
-    line: u64,
-    buf: Vec<u8>,
-    /// Kept rows: raw text, and whether it carried results to replace.
-    kept: Vec<(String, bool)>,
-}
-
-impl RowSource for Lines {
-    fn header(&mut self, _out: &mut dyn Write) -> io::Result<()> {
-        Ok(())
-    }
-
-    fn next(&mut self, shapes: &mut Shapes, keep: bool) -> Result<Option<(u64, Job)>> {
-        loop {
-            self.line += 1;
-            if !next_line(&mut *self.input, &mut self.buf, &self.source, self.line)? {
-                return Ok(None);
-            }
-            if self.buf.iter().all(|b| b.is_ascii_whitespace()) {
-                continue;
-            }
-            let bad = |reason: String| Error::Parse { context: self.source.clone(), reason };
-            let text = std::str::from_utf8(&self.buf).map_err(|_| bad(format!("line {}: not UTF-8", self.line)))?;
-            let r =
-                scan::line_row(text, &NAMES).map_err(|e| bad(format!("line {}: {}", self.line, e.describe(text))))?;
-            let job = json_job(shapes, &r.fields).map_err(|e| bad(format!("line {}: {e}", self.line)))?;
-            if keep {
-                self.kept.push((r.raw.to_string(), job.replace));
-            }
-            return Ok(Some((self.line, job)));
-        }
-    }
-
-    fn write_kept(&mut self, out: &mut dyn Write, results: &[Ratio]) -> io::Result<()> {
-        let mut buf = ryu::Buffer::new();
-        for ((row, replace), r) in self.kept.iter().zip(results) {
-            write_json_row(&mut *out, row, r, *replace, &mut buf)?;
-            out.write_all(b"\n")?;
-        }
-        self.kept.clear();
-        Ok(())
-    }
 }
 
 /// CSV rows.
@@ -510,7 +555,8 @@ impl Csv {
     }
 }
 
-impl RowSource for Csv {
+impl Csv {
+    /// Write the output's header: the input's, with the result columns appended where it has none.
     fn header(&mut self, out: &mut dyn Write) -> io::Result<()> {
         let mut h = self.header.clone();
         if self.results.is_none() {
@@ -522,6 +568,8 @@ impl RowSource for Csv {
         w.flush()
     }
 
+    /// The next record's line number and job; `None` at the end. With `keep`,
+    /// the record is kept to be written by [`Csv::write_kept`].
     fn next(&mut self, shapes: &mut Shapes, keep: bool) -> Result<Option<(u64, Job)>> {
         let more = self.reader.read_byte_record(&mut self.record).map_err(|e| {
             let reason = match e.kind() {
@@ -561,6 +609,7 @@ impl RowSource for Csv {
         Ok(Some((line, job)))
     }
 
+    /// Write the kept records with their results (in order), and forget them.
     fn write_kept(&mut self, out: &mut dyn Write, results: &[Ratio]) -> io::Result<()> {
         let mut buf = ryu::Buffer::new();
         let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(&mut *out);
