@@ -73,8 +73,11 @@ pub fn family_chart(results: &[(String, SceneResult)]) -> crate::plot::Chart {
         Axis::log("sliding velocity v_{0} (m/s)", (positive_min / 1.2, vmax * 1.2))
     } else if vmax > vmin {
         Axis::linear("sliding velocity v_{0} (m/s)", (vmin, vmax))
+    } else if vmin > 0.0 {
+        // One velocity: a range around it.
+        Axis::linear("sliding velocity v_{0} (m/s)", (0.5 * vmin, 1.5 * vmin))
     } else {
-        Axis::linear("sliding velocity v_{0} (m/s)", (vmin - 1.0, vmin + 1.0))
+        Axis::linear("sliding velocity v_{0} (m/s)", (0.0, 1.0))
     };
     let top = mumax.max(mu0s.iter().copied().fold(0.0, f64::max)) * 1.08;
     let n = results.len();
@@ -87,7 +90,12 @@ pub fn family_chart(results: &[(String, SceneResult)]) -> crate::plot::Chart {
             Series {
                 label: text,
                 points: r.rows.iter().map(|x| (x.velocity_m_per_s, x.mu_macro)).collect(),
-                style: Style::line(family_color(i, n)),
+                // A lone velocity is a point: drawn as a marker.
+                style: if r.rows.len() < 2 {
+                    Style::line(family_color(i, n)).marker(crate::plot::Marker::Circle)
+                } else {
+                    Style::line(family_color(i, n))
+                },
                 legend: true,
             }
         })

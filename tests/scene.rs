@@ -300,3 +300,14 @@ fn scene_plot_draws_one_curve_per_amplitude() {
     assert!(out.stdout.is_empty() && String::from_utf8_lossy(&out.stderr).contains("must end in .svg or .png"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A scene of one velocity still draws: an axis around it, one marked curve point.
+#[test]
+fn a_single_velocity_scene_draws() {
+    for v in [0.0, 1e-3] {
+        let r = run(&sphere(2e11, 5e-3, 1e-6, 1e-7, 1e3, &[v]));
+        let svg = fricosc::scene::family_chart(&[("one".to_string(), r)]).svg();
+        assert!(fricosc::plot::parse_size(&svg).is_ok(), "{v}");
+        assert!(!svg.contains("NaN") && !svg.contains("inf") && svg.contains("<circle"), "{v}");
+    }
+}
