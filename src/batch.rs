@@ -269,7 +269,10 @@ pub fn run<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Resul
     match scan::tail_error(text, tail) {
         None => {}
         Some(RowsError::Row { row, reason }) => return Err(parse_err(format!("row {row}: {reason}"))),
-        Some(RowsError::Syntax { error, .. }) if text[..error.at.min(text.len())].trim().is_empty() => {
+        // Nothing but whitespace before it (an empty input, not an array): the reason alone.
+        Some(RowsError::Syntax { error, .. })
+            if text.as_bytes()[..error.at.min(text.len())].iter().all(u8::is_ascii_whitespace) =>
+        {
             return Err(parse_err(error.what))
         }
         Some(RowsError::Syntax { error, .. }) => return Err(parse_err(error.describe(text))),
