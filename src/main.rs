@@ -5,12 +5,10 @@
 //! answer (`validate`, `stress`), 2 bad input or a failed read/write (one line
 //! on stderr, nothing on stdout), 3 an internal error (`Error::Internal`).
 
-mod cmd;
-
 use clap::{Parser, Subcommand};
-use cmd::{emit, MethodArgs, Outcome, Velocity};
+use fricosc::cli::cmd::{self, emit, MethodArgs, Outcome, Velocity};
+use fricosc::cli::output::Format;
 use fricosc::error::{Error, Result};
-use fricosc::output::Format;
 use std::process::ExitCode;
 
 #[derive(Parser)]

@@ -5,7 +5,7 @@
 //! grid searches), so a wrong measurement fails here whatever verdict it gives.
 // Reference values keep their published digits.
 #![allow(clippy::excessive_precision)]
-use fricosc::claims::{check, Claim, Verdict};
+use fricosc::cli::claims::{check, Claim, Verdict};
 use fricosc::seed;
 use std::f64::consts::PI;
 
@@ -33,7 +33,7 @@ fn mpmath_mu(vbar: f64, amp: f64) -> f64 {
 fn eq_8_tau2_is_the_independent_slip_phase_and_the_printed_sign_has_no_root() {
     let cs = claims();
     let c = get(&cs, "eq. 8");
-    // scripts/flat_events.py: bisection on the plain gap, 50 digits.
+    // data/scripts/flat_events.py: bisection on the plain gap, 50 digits.
     assert!((m(c, "tau2") - 3.816801916092870826511380654400820576018).abs() < 1e-14);
     let (v, t2) = (0.5f64, 3.816801916092870826511380654400820576018f64);
     let printed = t2.cos() - ((1.0 - v * v).sqrt() + v * (t2 - v.asin()));
@@ -139,7 +139,7 @@ fn every_claim_states_its_criterion_and_markdown_has_a_row_per_claim() {
     let cs = claims();
     assert_eq!(cs.len(), 12);
     assert!(cs.iter().all(|c| c.criterion.len() > 20 && !c.measured.is_empty()));
-    use fricosc::export::{export, Format};
+    use fricosc::cli::export::{export, Format};
     let md = export(&cs, Format::Markdown).unwrap();
     assert_eq!(md.lines().count(), 2 + cs.len());
     // The CSV form reads back, one record per claim, with every cell intact.
@@ -201,13 +201,13 @@ fn static_friction_matches_the_closed_forms() {
 #[test]
 fn markdown_is_wrapped_and_complete() {
     let cs = claims();
-    let md = fricosc::claims::markdown(&cs);
+    let md = fricosc::cli::claims::markdown(&cs);
     for line in md.lines() {
-        assert!(line.chars().count() <= fricosc::claims::WIDTH, "too long: {line}");
+        assert!(line.chars().count() <= fricosc::cli::claims::WIDTH, "too long: {line}");
     }
     let flat: String = md.split_whitespace().collect::<Vec<_>>().join(" ");
     for (i, c) in cs.iter().enumerate() {
-        let verdict = fricosc::claims::verdict_name(c.verdict);
+        let verdict = fricosc::cli::claims::verdict_name(c.verdict);
         assert!(md.contains(&format!("| {} | {} | {verdict} |", i + 1, c.claim)), "{}", c.claim);
         for part in [&c.seed_says, &c.exact_gives, &c.deviation_is, &c.criterion] {
             let part = part.split_whitespace().collect::<Vec<_>>().join(" ");
@@ -220,7 +220,7 @@ fn markdown_is_wrapped_and_complete() {
 #[test]
 fn csv_round_trips() {
     let cs = claims();
-    let text = fricosc::export::export(&cs, fricosc::export::Format::Csv).unwrap();
+    let text = fricosc::cli::export::export(&cs, fricosc::cli::export::Format::Csv).unwrap();
     let mut reader = csv::Reader::from_reader(text.as_bytes());
     let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
     assert_eq!(
@@ -237,13 +237,13 @@ fn csv_round_trips() {
         assert_eq!(&r[4], c.deviation_is);
         assert_eq!(&r[5], c.location);
         assert_eq!(&r[6], c.criterion);
-        assert_eq!(&r[7], fricosc::claims::verdict_name(c.verdict));
+        assert_eq!(&r[7], fricosc::cli::claims::verdict_name(c.verdict));
     }
 }
 
 #[test]
 fn wrap_breaks_at_words_within_the_width() {
-    use fricosc::claims::wrap;
+    use fricosc::cli::claims::wrap;
     assert_eq!(wrap("- a:", "one two three", "  ", 9), "- a: one\n  two\n  three\n");
     // A word longer than the width stands alone on its line.
     assert_eq!(wrap("-", "x abcdefghijkl y", " ", 5), "- x\n abcdefghijkl\n y\n");

@@ -312,7 +312,7 @@ fn one_value_per_input() {
         let batch = format!(r#"[{{"shape":"{shape}","vbar":{vbar},"amp":{amp}}}]"#);
         let b = json(&fricosc(&["batch", "-"], Some(&batch)));
         let lib = fricosc::shape::evaluate(
-            &fricosc::input::parse_shape(shape).unwrap(),
+            &fricosc::cli::input::parse_shape(shape).unwrap(),
             vbar.parse().unwrap(),
             amp.parse().unwrap(),
         )
@@ -353,7 +353,7 @@ fn plot_draws_the_users_curves_and_refuses_bad_requests() {
     let out = fricosc(&["plot", "--shape", "cone", "--amp", "0.5,1,2", "--vbar", "0:1.2:61"], None);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let svg = String::from_utf8(out.stdout).unwrap();
-    assert!(fricosc::plot::parse_size(&svg).is_ok());
+    assert!(fricosc::cli::plot::parse_size(&svg).is_ok());
     assert_eq!(svg.matches("<g data-series=").count(), 3);
     assert!(svg.contains("v\u{304}"));
     let dir = std::env::temp_dir().join(format!("fricosc-plot-{}", std::process::id()));

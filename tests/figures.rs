@@ -2,8 +2,8 @@
 //! each approximation is drawn only where the seed uses it, and every drawing
 //! parses, tells its curves apart, names its axes' symbols and renders to a PNG
 //! of the stated size.
-use fricosc::figures::{build, chart, XAxis};
-use fricosc::plot::{self, Rgb};
+use fricosc::cli::figures::{build, chart, XAxis};
+use fricosc::cli::plot::{self, Rgb};
 use fricosc::shape::{evaluate, Shape};
 
 #[test]
@@ -46,7 +46,7 @@ fn approximations_are_drawn_where_the_seed_uses_them() {
             }
             // On a mu axis an approximation stays within [0, 1]: none is drawn
             // where it goes negative (eq. 16 at jumping amplitudes reaches -1).
-            if f.y_label == fricosc::figures::MU_LABEL {
+            if f.y_label == fricosc::cli::figures::MU_LABEL {
                 assert!(c.points.iter().all(|p| (0.0..=1.0).contains(&p[1])), "{}: {}", f.name, c.label);
             }
         }
@@ -92,7 +92,7 @@ fn series_styles(svg: &str) -> Vec<(String, Rgb, String, String)> {
 #[test]
 fn every_drawing_parses_tells_curves_apart_and_renders() {
     for f in build().unwrap() {
-        let svg = fricosc::export::export(&f, fricosc::export::Format::Svg).unwrap();
+        let svg = fricosc::cli::export::export(&f, fricosc::cli::export::Format::Svg).unwrap();
         let (w, h) = plot::parse_size(&svg).unwrap_or_else(|e| panic!("{}: {e}", f.name));
         assert_eq!(w, plot::WIDTH, "{}: 8.5 cm wide", f.name);
         // Axis symbols in Unicode, never the ASCII stand-ins.
@@ -144,13 +144,13 @@ fn distinct_catches_a_repeated_style() {
 /// `plot`'s limit of 12 amplitudes keeps neighbouring colours apart.
 #[test]
 fn the_largest_user_plot_tells_its_curves_apart() {
-    let amps: Vec<f64> = (1..=fricosc::figures::MAX_CURVES).map(|k| k as f64 * 0.25).collect();
+    let amps: Vec<f64> = (1..=fricosc::cli::figures::MAX_CURVES).map(|k| k as f64 * 0.25).collect();
     let xs: Vec<f64> = (0..=12).map(|k| k as f64 * 0.1).collect();
-    let f = fricosc::figures::user(&Shape::Flat, &amps, &xs, false).unwrap();
+    let f = fricosc::cli::figures::user(&Shape::Flat, &amps, &xs, false).unwrap();
     assert_eq!(f.curves.len(), 12);
     plot::distinct(&chart(&f), 8.0).unwrap();
     // With a 13th amplitude the limit is enforced.
     let mut more = amps.clone();
     more.push(9.0);
-    assert!(fricosc::figures::user(&Shape::Flat, &more, &xs, false).is_err());
+    assert!(fricosc::cli::figures::user(&Shape::Flat, &more, &xs, false).is_err());
 }

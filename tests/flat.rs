@@ -10,7 +10,7 @@ fn mu(v: f64, a: f64) -> f64 {
     ratio(v, a).unwrap().mu_ratio
 }
 
-/// 50-digit values from `scripts/near_critical.py` (the seed's tau form of the
+/// 50-digit values from `data/scripts/near_critical.py` (the seed's tau form of the
 /// stick, evaluated in mpmath; independent of fricosc's rearranged S/C form).
 const NEAR_CRITICAL: [(f64, f64, f64); 8] = [
     (0.6, 0.999, 4.298043219550465912711544e-7),

@@ -1,5 +1,5 @@
 //! Flat-punch event phases, event forces and small `mu_ratio` against independent
-//! 40-digit values (`scripts/flat_events.py`, committed as `data/flat-events.json`):
+//! 40-digit values (`data/scripts/flat_events.py`, committed as `data/flat-events.json`):
 //! vbar from 1.7e-16 to 0.5, amp from 0.5 through 1 + 1e-9 to 1e3.
 use serde_json::Value;
 

@@ -54,7 +54,7 @@ fn agrees_with_the_tabulated_profile_of_the_same_body() {
         .collect();
     let file = dir.join("worn.csv");
     std::fs::write(&file, format!("r,f\n{rows}")).unwrap();
-    let table = fricosc::input::parse_shape(&format!("profile:{}@{u0:?}", file.display())).unwrap();
+    let table = fricosc::cli::input::parse_shape(&format!("profile:{}@{u0:?}", file.display())).unwrap();
     for (v, amp) in [(0.3, 0.4), (0.1, 0.8), (0.5, 1.5)] {
         let t = evaluate(&table, v, amp).unwrap();
         let (m, est) = mu("flat-tip:0.5", v, amp);

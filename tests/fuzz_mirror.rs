@@ -1,4 +1,4 @@
-//! Stable mirrors of the cargo-fuzz targets in `fuzz/`: the readers and the
+//! Stable mirrors of the cargo-fuzz targets in `tests/fuzz/`: the readers and the
 //! solver entry points never panic, whatever they are given.
 use fricosc::shape::{evaluate, evaluate_stepping, Shape, Stepping};
 use proptest::prelude::*;
@@ -24,29 +24,29 @@ proptest! {
 
     #[test]
     fn batch_reader_never_panics(text in ".{0,200}") {
-        let _ = fricosc::batch::run(&text, "fuzz", None);
+        let _ = fricosc::cli::batch::run(&text, "fuzz", None);
     }
 
     #[test]
     fn batch_reader_on_json_like_input(rows in prop::collection::vec((".{0,12}", any_f64(), any_f64()), 0..5)) {
         let body: Vec<String> = rows.iter().map(|(s, v, a)| format!(r#"{{"shape":{:?},"vbar":{v:?},"amp":{a:?}}}"#, s)).collect();
-        let _ = fricosc::batch::run(&format!("[{}]", body.join(",")), "fuzz", None);
+        let _ = fricosc::cli::batch::run(&format!("[{}]", body.join(",")), "fuzz", None);
     }
 
     #[test]
     fn validate_reader_never_panics(text in ".{0,200}") {
-        let _ = fricosc::validate::read_table(&text, "fuzz");
-        let _ = fricosc::validate::read_table(&format!("vbar,amp,mu_ratio\n{text}"), "fuzz");
+        let _ = fricosc::cli::validate::read_table(&text, "fuzz");
+        let _ = fricosc::cli::validate::read_table(&format!("vbar,amp,mu_ratio\n{text}"), "fuzz");
     }
 
     #[test]
     fn value_lists_never_panic(text in ".{0,40}") {
-        let _ = fricosc::grid::parse_values("fuzz", &text);
+        let _ = fricosc::cli::grid::parse_values("fuzz", &text);
     }
 
     #[test]
     fn shape_specs_never_panic(text in ".{0,40}") {
-        let _ = fricosc::input::parse_shape(&text);
+        let _ = fricosc::cli::input::parse_shape(&text);
     }
 
     #[test]
@@ -55,7 +55,7 @@ proptest! {
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("t.csv");
         std::fs::write(&path, &text).unwrap();
-        if let Ok(shape) = fricosc::input::parse_shape(&format!("profile:{}@1", path.display())) {
+        if let Ok(shape) = fricosc::cli::input::parse_shape(&format!("profile:{}@1", path.display())) {
             match evaluate(&shape, v, a) {
                 Ok(e) => prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio)),
                 // Bad input or a table that cannot carry the contact, never an internal failure.
@@ -64,7 +64,7 @@ proptest! {
         }
     }
 
-    /// Mirror of `fuzz/fuzz_targets/profile_columns.rs`, on nondecreasing columns
+    /// Mirror of `tests/fuzz/fuzz_targets/profile_columns.rs`, on nondecreasing columns
     /// (the ones that pass the checks and reach the transform) of up to 300 rows.
     #[test]
     fn profile_columns_never_panic(

@@ -8,7 +8,7 @@ use fricosc::shape::{evaluate, Shape};
 fn parabolic_and_cone_references_to_1e_13_within_the_error_estimate() {
     let mut n = 0;
     for c in reference_cases().iter().filter(|c| c.shape != "flat") {
-        let shape = fricosc::input::parse_shape(&c.shape).unwrap();
+        let shape = fricosc::cli::input::parse_shape(&c.shape).unwrap();
         let e = evaluate(&shape, c.vbar, c.amp).unwrap();
         let err = (e.ratio.mu_ratio - c.mu_ratio).abs();
         assert!(

@@ -62,8 +62,8 @@ fn a_tabulated_sphere_reproduces_parabolic_within_the_interpolation_error() {
     let (radius, u0) = (1.0f64, 1e-8f64);
     let rmax = 4.0 * (radius * u0).sqrt();
     let path = write_table("sphere.csv", grid(300, rmax).map(|r| (r, radius - (radius * radius - r * r).sqrt())));
-    let shape = fricosc::input::parse_shape(&format!("profile:{}@{u0:?}", path.display())).unwrap();
-    let parabolic = fricosc::input::parse_shape("parabolic").unwrap();
+    let shape = fricosc::cli::input::parse_shape(&format!("profile:{}@{u0:?}", path.display())).unwrap();
+    let parabolic = fricosc::cli::input::parse_shape("parabolic").unwrap();
     for (v, a) in [(0.3, 0.4), (0.6, 1.0), (0.2, 2.0), (0.9, 0.7)] {
         let t = evaluate(&shape, v, a).unwrap();
         let p = evaluate(&parabolic, v, a).unwrap();
@@ -78,8 +78,8 @@ fn a_tabulated_sphere_reproduces_parabolic_within_the_interpolation_error() {
 #[test]
 fn a_tabulated_equivalent_profile_reproduces_the_power_law() {
     let path = write_table("g.csv", grid(200, 2.0).map(|x| (x, x.powf(2.5))));
-    let shape = fricosc::input::parse_shape(&format!("gx:{}@1", path.display())).unwrap();
-    let power = fricosc::input::parse_shape("power:2.5").unwrap();
+    let shape = fricosc::cli::input::parse_shape(&format!("gx:{}@1", path.display())).unwrap();
+    let power = fricosc::cli::input::parse_shape("power:2.5").unwrap();
     for (v, a) in [(0.3, 0.4), (0.5, 1.5)] {
         let t = evaluate(&shape, v, a).unwrap();
         let p = evaluate(&power, v, a).unwrap();
@@ -103,13 +103,16 @@ fn bad_tables_are_errors() {
         std::fs::create_dir_all(&dir).unwrap();
         let p = dir.join(name);
         std::fs::write(&p, text).unwrap();
-        let e = fricosc::input::parse_shape(&format!("profile:{}@1", p.display())).unwrap_err().to_string();
+        let e = fricosc::cli::input::parse_shape(&format!("profile:{}@1", p.display())).unwrap_err().to_string();
         assert!(e.contains(frag), "{name}: {e}");
     }
-    assert!(fricosc::input::parse_shape("profile:/nonexistent.csv@1").unwrap_err().to_string().contains("cannot read"));
-    assert!(fricosc::input::parse_shape("profile:/tmp").unwrap_err().to_string().contains("mean indentation"));
-    assert!(fricosc::input::parse_shape("profile:/@1").unwrap_err().to_string().contains("cannot read"));
-    assert!(fricosc::input::parse_shape("gx:x.csv@-1").is_err());
+    assert!(fricosc::cli::input::parse_shape("profile:/nonexistent.csv@1")
+        .unwrap_err()
+        .to_string()
+        .contains("cannot read"));
+    assert!(fricosc::cli::input::parse_shape("profile:/tmp").unwrap_err().to_string().contains("mean indentation"));
+    assert!(fricosc::cli::input::parse_shape("profile:/@1").unwrap_err().to_string().contains("cannot read"));
+    assert!(fricosc::cli::input::parse_shape("gx:x.csv@-1").is_err());
 }
 
 #[test]
@@ -138,7 +141,7 @@ fn tabulated_shapes_at_extreme_scales_are_right_or_refused() {
         std::fs::write(&p, format!("x,g\n{text}")).unwrap();
         p.to_str().unwrap().to_string()
     };
-    let eval = |spec: &str, v: f64, a: f64| fricosc::shape::evaluate(&fricosc::input::parse_shape(spec)?, v, a);
+    let eval = |spec: &str, v: f64, a: f64| fricosc::shape::evaluate(&fricosc::cli::input::parse_shape(spec)?, v, a);
     let parabolic = fricosc::mdr::power_law(2.0, 0.3, 0.4, fricosc::mdr::DEFAULT_TOL, false).unwrap().ratio.mu_ratio;
     // g = x^2 on 0..2 (41 rows) at several scales of x and g.
     for (sx, sg) in [(1.0, 1.0), (1e-150, 1e-300), (1e150, 1e300), (1e-300, 1e-300)] {
@@ -171,7 +174,7 @@ fn a_non_monotone_transform_is_refused() {
     std::fs::create_dir_all(&dir).unwrap();
     let p = dir.join("step.csv");
     std::fs::write(&p, "r,f\n0,0\n0.5,0\n0.9,0\n0.95,0.5\n1,1\n2,1\n").unwrap();
-    let e = fricosc::input::parse_shape(&format!("profile:{}@0.9", p.display())).unwrap_err().to_string();
+    let e = fricosc::cli::input::parse_shape(&format!("profile:{}@0.9", p.display())).unwrap_err().to_string();
     assert!(e.contains("decreases after x") && e.contains("largest g"), "{e}");
 }
 
@@ -269,7 +272,7 @@ fn transform_matches_quadrature_in_the_angle() {
 }
 
 /// A rough table (steep steps beside flat pieces, uneven spacing) against
-/// 40-digit values from `scripts/mdr_transform_rough.py`, which rebuilds the
+/// 40-digit values from `data/scripts/mdr_transform_rough.py`, which rebuilds the
 /// same interpolant and integrates each cubic in the angle. (A difference of
 /// antiderivatives, the transform before this one, was off by 1e-8 relative on
 /// a 3000-row table of random steps.)

@@ -1,9 +1,9 @@
-//! The one-pass row scanner (`fricosc::scan`) against `serde_json`: on random
+//! The one-pass row scanner (`fricosc::cli::scan`) against `serde_json`: on random
 //! JSON-like arrays, valid and broken, it accepts exactly what `serde_json`
 //! accepts (an array of raw values whose objects have no duplicate keys) and
 //! picks the same raw rows and fields.
-use fricosc::rows::{pick, raw_array};
-use fricosc::scan::array_rows;
+use fricosc::cli::rows::{pick, raw_array};
+use fricosc::cli::scan::array_rows;
 use proptest::prelude::*;
 
 const NAMES: [&str; 3] = ["shape", "vbar", "amp"];
@@ -186,10 +186,10 @@ fn edges_agree() {
 /// The row at fault as a serial reading finds it: the first row that is
 /// malformed, lacks a field, names an unknown shape or holds a bad number.
 fn serial_fault(text: &str) -> Result<(), Option<usize>> {
-    use fricosc::scan::{number_of, string_of, RowsError};
+    use fricosc::cli::scan::{number_of, string_of, RowsError};
     let r = array_rows(text, &NAMES, |_, r| {
         let spec = string_of(r.fields[0].ok_or("shape")?, "shape")?;
-        fricosc::input::parse_shape(&spec).map_err(|e| e.to_string())?;
+        fricosc::cli::input::parse_shape(&spec).map_err(|e| e.to_string())?;
         for k in [1, 2] {
             let x = number_of(r.fields[k].ok_or("field")?, "x")?;
             fricosc::error::check_nonneg("x", x).map_err(|e| e.to_string())?;
@@ -232,7 +232,7 @@ proptest! {
     ) {
         let text = format!("[{}]", rows.join(","));
         let text = if broken { mutate(&text, at, op, byte) } else { text };
-        let got = fricosc::batch::run(&text, "t", None);
+        let got = fricosc::cli::batch::run(&text, "t", None);
         match serial_fault(&text) {
             Ok(()) => prop_assert!(got.is_ok(), "{}: {:?}", text, got.err()),
             Err(row) => {

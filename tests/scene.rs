@@ -1,5 +1,5 @@
 //! Physical scenes: unit invariance, load control, stiffness checks, the schema, the examples.
-use fricosc::scene::{parse, solve, SceneResult};
+use fricosc::cli::scene::{parse, solve, SceneResult};
 use std::f64::consts::PI;
 
 /// The answer of a scene with one amplitude.
@@ -90,7 +90,7 @@ fn the_schema_file_is_in_sync() {
     let committed = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/scene.schema.json")).unwrap();
     assert_eq!(
         committed.trim_end(),
-        fricosc::scene::schema().trim_end(),
+        fricosc::cli::scene::schema().trim_end(),
         "run: fricosc scene --schema > data/scene.schema.json"
     );
 }
@@ -285,7 +285,7 @@ fn scene_plot_draws_one_curve_per_amplitude() {
         let bytes = std::fs::read(&path).unwrap();
         if name.ends_with("svg") {
             let svg = String::from_utf8(bytes).unwrap();
-            assert!(fricosc::plot::parse_size(&svg).is_ok());
+            assert!(fricosc::cli::plot::parse_size(&svg).is_ok());
             assert_eq!(svg.matches("<g data-series=").count(), 4);
             for label in ["60 nm", "100 nm", "160 nm", "270 nm", "(m/s)", "μ"] {
                 assert!(svg.contains(label), "{label}");
@@ -306,8 +306,8 @@ fn scene_plot_draws_one_curve_per_amplitude() {
 fn a_single_velocity_scene_draws() {
     for v in [0.0, 1e-3] {
         let r = run(&sphere(2e11, 5e-3, 1e-6, 1e-7, 1e3, &[v]));
-        let svg = fricosc::scene::family_chart(&[("one".to_string(), r)]).svg();
-        assert!(fricosc::plot::parse_size(&svg).is_ok(), "{v}");
+        let svg = fricosc::cli::scene::family_chart(&[("one".to_string(), r)]).svg();
+        assert!(fricosc::cli::plot::parse_size(&svg).is_ok(), "{v}");
         assert!(!svg.contains("NaN") && !svg.contains("inf") && svg.contains("<circle"), "{v}");
     }
 }

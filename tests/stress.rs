@@ -1,6 +1,6 @@
 //! Numerical stress: random and edge points, and continuity across every regime boundary.
+use fricosc::cli::stress::{default_shapes, run};
 use fricosc::mdr::{power_law, DEFAULT_TOL};
-use fricosc::stress::{default_shapes, run};
 
 /// A 10^5-point subset of `fricosc stress --points 1000000` (README: Stress).
 #[test]

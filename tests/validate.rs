@@ -3,8 +3,8 @@
 //! The stepper here is the seed's scheme written out for one spring (the flat
 //! punch), with the start and the number of periods as parameters, so that the
 //! bugs of a user's stepper can be planted in it.
+use fricosc::cli::validate::{compare, AtRest, FindingKind, RowRegime};
 use fricosc::shape::Shape;
-use fricosc::validate::{compare, AtRest, FindingKind, RowRegime};
 use std::process::Command;
 
 /// `mu/mu0` of the flat punch by the seed's scheme: `m` steps per period,
@@ -44,9 +44,9 @@ fn the_two_starts_at_zero_velocity() {
     for amp in [0.3, 0.8, 1.5] {
         assert_eq!(stepper(0.0, amp, 1000, 5, true), 0.0);
         let sliding = stepper(0.0, amp, 100_000, 3, false);
-        let exact = fricosc::validate::exact_value(&Shape::Flat, 0.0, amp, AtRest::Sliding).unwrap();
+        let exact = fricosc::cli::validate::exact_value(&Shape::Flat, 0.0, amp, AtRest::Sliding).unwrap();
         assert!((sliding - exact).abs() < 1e-4, "amp {amp}: {sliding} vs {exact}");
-        assert_eq!(fricosc::validate::exact_value(&Shape::Flat, 0.0, amp, AtRest::Relaxed).unwrap(), 0.0);
+        assert_eq!(fricosc::cli::validate::exact_value(&Shape::Flat, 0.0, amp, AtRest::Relaxed).unwrap(), 0.0);
     }
 }
 
@@ -180,7 +180,7 @@ fn the_command_reads_shapes_velocities_and_formats() {
 /// a message otherwise).
 #[test]
 fn the_readme_walk_through_names_every_planted_bug() {
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/crates/fricosc-py/examples/buggy_stepper.py");
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/src/python/examples/buggy_stepper.py");
     let run = |args: &[&str]| Command::new("python3").arg(script).args(args).output();
     let Ok(buggy) = run(&[]) else {
         eprintln!("python3 not found: the walk-through is not run");
@@ -272,7 +272,7 @@ fn history_events_of_the_peer_are_within_one_step() {
                 h.samples.iter().map(|s| s.tangential).collect(),
                 h.samples.iter().map(|s| s.normal).collect(),
             );
-            let r = fricosc::validate::compare_history(&Shape::Flat, v, a, &t, &f, Some(&n), 1e-9).unwrap();
+            let r = fricosc::cli::validate::compare_history(&Shape::Flat, v, a, &t, &f, Some(&n), 1e-9).unwrap();
             let step = std::f64::consts::TAU / m as f64;
             let kinds: Vec<_> = r.exact_events.iter().map(|e| e.kind).collect();
             for k in &kinds {
@@ -309,7 +309,7 @@ fn history_bugs_are_named() {
             ft.push(f * a);
             nn.push(b * a);
         }
-        fricosc::validate::compare_history(&Shape::Flat, v, a, &t, &ft, Some(&nn), 1e-9).unwrap()
+        fricosc::cli::validate::compare_history(&Shape::Flat, v, a, &t, &ft, Some(&nn), 1e-9).unwrap()
     };
     let short = run(3, 1.0, true);
     assert_eq!(short.periodic, Some(false), "{short:?}");
@@ -370,7 +370,7 @@ fn a_missed_stick_end_is_named() {
         ft.push(f * a);
         nn.push(b * a);
     }
-    let r = fricosc::validate::compare_history(&Shape::Flat, v, a, &t, &ft, Some(&nn), 1e-9).unwrap();
+    let r = fricosc::cli::validate::compare_history(&Shape::Flat, v, a, &t, &ft, Some(&nn), 1e-9).unwrap();
     assert!(r.above_bound_count > 100 && !r.above_bound.is_empty(), "{}", r.above_bound_count);
     // The exact history never is above its bound.
     let exact = fricosc::history::history(&Shape::Flat, v, a, 2, 500, 1, &[]).unwrap();
@@ -379,7 +379,7 @@ fn a_missed_stick_end_is_named() {
         exact.samples.iter().map(|s| s.tangential).collect(),
         exact.samples.iter().map(|s| s.normal).collect(),
     );
-    let r = fricosc::validate::compare_history(&Shape::Flat, v, a, &t, &f, Some(&n), 1e-9).unwrap();
+    let r = fricosc::cli::validate::compare_history(&Shape::Flat, v, a, &t, &f, Some(&n), 1e-9).unwrap();
     assert_eq!(r.above_bound_count, 0);
     assert!(r.max_abs_error < 1e-15, "{}", r.max_abs_error);
 }
@@ -419,9 +419,9 @@ fn curved_histories_are_compared_with_the_reference_grid() {
         let t: Vec<f64> = h.samples.iter().map(|s| s.tau).collect();
         let f: Vec<f64> = h.samples.iter().map(|s| s.tangential).collect();
         let n: Vec<f64> = h.samples.iter().map(|s| s.normal).collect();
-        fricosc::validate::compare_history(&shape, 0.3, 1.3, &t, &f, Some(&n), 1e-9).unwrap()
+        fricosc::cli::validate::compare_history(&shape, 0.3, 1.3, &t, &f, Some(&n), 1e-9).unwrap()
     };
-    let same = cols(fricosc::validate::HISTORY_REFERENCE_SPRINGS);
+    let same = cols(fricosc::cli::validate::HISTORY_REFERENCE_SPRINGS);
     assert!(same.max_abs_error < 1e-13, "{}", same.max_abs_error);
     assert!(same.events.is_empty() && same.exact_events.is_empty() && same.above_bound_count == 0);
     let (e100, e400) = (cols(100).max_abs_error, cols(400).max_abs_error);

@@ -1,0 +1,640 @@
+//! `batch`: rows of `{shape, vbar, amp, ...}` in, the same rows with
+//! `mu_ratio` and `reduction` added out, as a JSON array, JSON Lines or CSV.
+//!
+//! Decisions:
+//! - One bad row rejects the whole batch (the error names the row, or the line
+//!   of JSON Lines and CSV), so a caller never receives a partial output: every
+//!   row is checked (its numbers, its shape, that the shape reaches the
+//!   amplitude) before the first byte is written. What can still fail after
+//!   that is an internal error (exit code 3), never the input.
+//! - A JSON array is read whole (at most 10^7 rows) and each row kept as its raw
+//!   text, borrowed from the input; only `shape`, `vbar`, `amp` are read, by a
+//!   one-pass scanner ([`crate::cli::scan`]). Each row is written back as given
+//!   (other fields keep their order and bytes) with
+//!   `"mu_ratio":..,"reduction":..` spliced in before its closing brace. A row
+//!   that already has `mu_ratio` or `reduction` has them replaced (through a
+//!   parsed map, for that row only). Memory: the input text plus 56 bytes per row.
+//! - JSON Lines and CSV stream in constant memory, in two passes over the
+//!   input: the first checks every row, the second computes chunks of rows in
+//!   parallel and writes them in order (the caller spools stdin to a temporary
+//!   file to read it twice). JSON Lines are read a chunk at a time (65,536
+//!   lines or 32 MiB) and scanned, checked and formatted in parallel too. Blank lines of JSON Lines are skipped. CSV keeps
+//!   every column's value (fields are re-quoted only where CSV needs it) and
+//!   appends `mu_ratio,reduction`, or fills those columns where they exist.
+//! - Duplicate keys are refused. Each distinct shape string is parsed once.
+
+use crate::cli::scan::{self, number_of, string_of, RowsError};
+use crate::error::{check_nonneg, Error, Result};
+use crate::ratio::Ratio;
+use crate::shape::{evaluate, evaluate_stepping, Shape, Stepping};
+use rayon::prelude::*;
+use std::collections::HashMap;
+use std::io::{self, BufRead, Read, Write};
+
+/// Most rows one JSON array may hold.
+pub const MAX_ROWS: usize = crate::cli::grid::MAX_ROWS;
+/// Most rows of a streamed batch (JSON Lines, CSV).
+pub const MAX_STREAM_ROWS: u64 = 1_000_000_000;
+/// Longest line of JSON Lines or CSV, in bytes.
+pub const MAX_LINE: usize = 1 << 20;
+/// Rows computed at once when streaming.
+const CHUNK: usize = 1 << 16;
+
+/// The fields a row is read for.
+const NAMES: [&str; 5] = ["shape", "vbar", "amp", "mu_ratio", "reduction"];
+
+/// The input (and output) format of a batch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// One JSON array of objects.
+    Json,
+    /// One JSON object per line.
+    JsonLines,
+    /// CSV with a header naming `shape`, `vbar`, `amp`.
+    Csv,
+}
+
+impl Format {
+    /// The format named `name` (`json`, `jsonl`, `csv`), or else the one the
+    /// file's extension says (`.jsonl`/`.ndjson`, `.csv`; JSON otherwise).
+    pub fn choose(name: Option<&str>, path: &str) -> Result<Format> {
+        match name {
+            Some("json") => Ok(Format::Json),
+            Some("jsonl") => Ok(Format::JsonLines),
+            Some("csv") => Ok(Format::Csv),
+            Some(other) => Err(Error::Parse {
+                context: "--format".into(),
+                reason: format!("'{other}' is not one of json, jsonl, csv"),
+            }),
+            None => {
+                let p = path.to_ascii_lowercase();
+                Ok(if p.ends_with(".jsonl") || p.ends_with(".ndjson") {
+                    Format::JsonLines
+                } else if p.ends_with(".csv") {
+                    Format::Csv
+                } else {
+                    Format::Json
+                })
+            }
+        }
+    }
+}
+
+/// One checked row: its shape (an index into [`Shapes`]), inputs, and whether
+/// it already carried results to replace.
+#[derive(Debug, Clone, Copy)]
+struct Job {
+    shape: u32,
+    replace: bool,
+    vbar: f64,
+    amp: f64,
+}
+
+/// The shapes of a batch, each distinct string parsed (and checked) once.
+struct Shapes {
+    index: HashMap<String, u32>,
+    list: Vec<Shape>,
+    stepping: Option<Stepping>,
+    /// The last row's shape string and index (most batches use one shape).
+    last: Option<(String, u32)>,
+}
+
+impl Shapes {
+    fn new(stepping: Option<Stepping>) -> Shapes {
+        Shapes { index: HashMap::new(), list: vec![], stepping, last: None }
+    }
+
+    /// The index of the shape `spec`, parsed (and checked for the method) the first time.
+    fn id(&mut self, spec: &str) -> Result<u32> {
+        if let Some((last, k)) = &self.last {
+            if last == spec {
+                return Ok(*k);
+            }
+        }
+        let k = match self.index.get(spec) {
+            Some(&k) => k,
+            None => {
+                let parsed = crate::cli::input::parse_shape(spec)?;
+                if let Some(st) = self.stepping {
+                    st.check(&parsed)?;
+                }
+                self.list.push(parsed);
+                let k = (self.list.len() - 1) as u32;
+                self.index.insert(spec.to_string(), k);
+                k
+            }
+        };
+        self.last = Some((spec.to_string(), k));
+        Ok(k)
+    }
+
+    /// Check a row's numbers, and that its shape reaches the amplitude.
+    fn check(&self, shape: u32, vbar: f64, amp: f64, replace: bool) -> Result<Job> {
+        check_nonneg("vbar", vbar)?;
+        check_nonneg("amp", amp)?;
+        // A tabulated profile must reach the deepest indentation (else the
+        // evaluation would refuse the row after output had begun).
+        if !matches!(self.list[shape as usize], Shape::Flat) {
+            self.list[shape as usize].with_contact(|c| c.reach(amp))?;
+        }
+        Ok(Job { shape, replace, vbar, amp })
+    }
+
+    /// Check a row's inputs: shape, numbers, reach.
+    fn job(&mut self, spec: &str, vbar: f64, amp: f64, replace: bool) -> Result<Job> {
+        let k = self.id(spec)?;
+        self.check(k, vbar, amp, replace)
+    }
+
+    fn evaluate(&self, j: &Job) -> Result<Ratio> {
+        let shape = &self.list[j.shape as usize];
+        match self.stepping {
+            Some(st) => evaluate_stepping(shape, j.vbar, j.amp, st).map(|e| e.ratio),
+            None => evaluate(shape, j.vbar, j.amp).map(|e| e.ratio),
+        }
+    }
+
+    /// Evaluate `jobs` in parallel; `name(i)` names the row `i` of them in errors.
+    fn evaluate_all(&self, jobs: &[Job], source: &str, name: &(dyn Fn(usize) -> String + Sync)) -> Result<Vec<Ratio>> {
+        jobs.par_iter()
+            .enumerate()
+            .map(|(i, j)| {
+                self.evaluate(j).map_err(|e| match e {
+                    Error::Internal { what } => Error::Internal { what: format!("{source} {}: {what}", name(i)) },
+                    e => Error::Parse { context: source.into(), reason: format!("{}: {e}", name(i)) },
+                })
+            })
+            .collect()
+    }
+}
+
+/// The shape string of one JSON row (its raw fields).
+fn json_spec<'a>(f: &[Option<&'a str>; 5]) -> std::result::Result<std::borrow::Cow<'a, str>, String> {
+    string_of(f[0].ok_or("missing field 'shape'")?, "shape")
+}
+
+/// The inputs of one JSON row whose shape has index `shape`.
+fn json_numbers(shapes: &Shapes, shape: u32, f: &[Option<&str>; 5]) -> std::result::Result<Job, String> {
+    let field = |k: usize| f[k].ok_or_else(|| format!("missing field '{}'", NAMES[k]));
+    let vbar = number_of(field(1)?, "vbar")?;
+    let amp = number_of(field(2)?, "amp")?;
+    shapes.check(shape, vbar, amp, f[3].is_some() || f[4].is_some()).map_err(|e| e.to_string())
+}
+
+/// An evaluated JSON array, borrowing its rows from the input text.
+pub struct Batch<'a> {
+    rows: Vec<&'a str>,
+    results: Vec<Ratio>,
+    replace: Vec<usize>,
+}
+
+/// Most bytes of lines read into one chunk of a streamed batch.
+const CHUNK_BYTES: usize = 32 << 20;
+
+/// A row of a chunk as scanned: its fields, or why it is malformed.
+type Scanned<'a> = std::result::Result<scan::Row<'a, 5>, String>;
+
+/// Check one chunk of `n` rows: each scanned in parallel (`scan_row(j)`), their
+/// shapes looked up serially (each distinct string parsed once), their numbers
+/// checked in parallel. Returns the rows' raw text and jobs, or the first row
+/// at fault (its index in the chunk, and why), as a serial reading finds it.
+fn check_chunk<'a>(
+    n: usize,
+    scan_row: &(dyn Fn(usize) -> Scanned<'a> + Sync),
+    shapes: &mut Shapes,
+) -> std::result::Result<Vec<(&'a str, Job)>, (usize, String)> {
+    let scanned: Vec<Scanned<'a>> = (0..n).into_par_iter().map(scan_row).collect();
+    // Serially: the first malformed row, and every shape up to it.
+    let mut ids = Vec::with_capacity(n);
+    let mut first: Option<(usize, String)> = None;
+    for (j, r) in scanned.iter().enumerate() {
+        let id = r
+            .clone()
+            .and_then(|row| json_spec(&row.fields).and_then(|spec| shapes.id(&spec).map_err(|e| e.to_string())));
+        match id {
+            Ok(k) => ids.push(k),
+            Err(reason) => {
+                first = Some((j, reason));
+                break;
+            }
+        }
+    }
+    // In parallel: the numbers of the rows before it.
+    let shapes = &*shapes;
+    let checked: Vec<std::result::Result<(&'a str, Job), String>> = scanned[..ids.len()]
+        .par_iter()
+        .zip(&ids)
+        .map(|(r, &k)| match r {
+            Ok(row) => json_numbers(shapes, k, &row.fields).map(|job| (row.raw, job)),
+            Err(e) => Err(e.clone()),
+        })
+        .collect();
+    if let Some(j) = checked.iter().position(|x| x.is_err()) {
+        first = Some((j, checked[j].clone().err().unwrap_or_default()));
+    }
+    match first {
+        Some(fault) => Err(fault),
+        None => Ok(checked.into_iter().flatten().collect()),
+    }
+}
+
+/// Check and evaluate every row of `text` (a JSON array); `source` names the input in errors.
+///
+/// The rows' starts are found in one cheap serial pass ([`scan::row_starts`]);
+/// then, a chunk at a time, the rows are checked by [`check_chunk`], and the
+/// first row at fault (the lowest index, as a serial reading would find) reported.
+pub fn run<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Result<Batch<'a>> {
+    let parse_err = |reason: String| Error::Parse { context: source.into(), reason };
+    let (starts, tail) = scan::row_starts(text);
+    if starts.len() > MAX_ROWS {
+        return Err(Error::TooLarge {
+            what: format!("rows of batch {source}"),
+            count: starts.len() as u128,
+            limit: MAX_ROWS as u128,
+        });
+    }
+    let mut shapes = Shapes::new(stepping);
+    let mut rows = Vec::with_capacity(starts.len());
+    let mut jobs = Vec::with_capacity(starts.len());
+    for (c, chunk) in starts.chunks(CHUNK).enumerate() {
+        let scan_row = |j: usize| scan::row(text, chunk[j], &NAMES).map(|(r, _)| r).map_err(|e| e.describe(text));
+        let checked = check_chunk(chunk.len(), &scan_row, &mut shapes)
+            .map_err(|(j, reason)| parse_err(format!("row {}: {reason}", c * CHUNK + j)))?;
+        for (raw, job) in checked {
+            rows.push(raw);
+            jobs.push(job);
+        }
+    }
+    drop(starts);
+    match scan::tail_error(text, tail) {
+        None => {}
+        Some(RowsError::Row { row, reason }) => return Err(parse_err(format!("row {row}: {reason}"))),
+        // Nothing but whitespace before it (an empty input, not an array): the reason alone.
+        Some(RowsError::Syntax { error, .. })
+            if text.as_bytes()[..error.at.min(text.len())].iter().all(u8::is_ascii_whitespace) =>
+        {
+            return Err(parse_err(error.what))
+        }
+        Some(RowsError::Syntax { error, .. }) => return Err(parse_err(error.describe(text))),
+    }
+    let results = shapes.evaluate_all(&jobs, source, &|i| format!("row {i}"))?;
+    let replace = jobs.iter().enumerate().filter(|(_, j)| j.replace).map(|(i, _)| i).collect();
+    Ok(Batch { rows, results, replace })
+}
+
+/// Write one JSON row with its results: spliced before its closing brace, or
+/// (where it carried results) through a parsed map that replaces them.
+fn write_json_row<W: Write + ?Sized>(
+    out: &mut W,
+    row: &str,
+    r: &Ratio,
+    replace: bool,
+    buf: &mut ryu::Buffer,
+) -> io::Result<()> {
+    if replace {
+        let mut map: serde_json::Map<String, serde_json::Value> =
+            serde_json::from_str(row).map_err(io::Error::other)?;
+        map.insert("mu_ratio".into(), r.mu_ratio.into());
+        map.insert("reduction".into(), r.reduction.into());
+        return serde_json::to_writer(&mut *out, &map).map_err(io::Error::other);
+    }
+    // Every row is an object with at least shape, vbar and amp: splice before '}'.
+    out.write_all(&row.as_bytes()[..row.len() - 1])?;
+    out.write_all(b",\"mu_ratio\":")?;
+    out.write_all(buf.format_finite(r.mu_ratio).as_bytes())?;
+    out.write_all(b",\"reduction\":")?;
+    out.write_all(buf.format_finite(r.reduction).as_bytes())?;
+    out.write_all(b"}")
+}
+
+impl Batch<'_> {
+    /// Number of rows.
+    pub fn len(&self) -> usize {
+        self.rows.len()
+    }
+
+    /// True for an empty array.
+    pub fn is_empty(&self) -> bool {
+        self.rows.is_empty()
+    }
+
+    /// `mu_macro/mu0` and the reduction of every row, in order.
+    pub fn results(&self) -> &[Ratio] {
+        &self.results
+    }
+
+    /// Write the array: `[`, one row per line, `]`. Chunks of rows are
+    /// formatted in parallel and written in order.
+    pub fn write(&self, out: &mut impl Write) -> io::Result<()> {
+        out.write_all(b"[")?;
+        let n = self.rows.len();
+        for c in (0..n).step_by(CHUNK) {
+            let end = (c + CHUNK).min(n);
+            let pieces: Vec<io::Result<Vec<u8>>> = (c..end)
+                .into_par_iter()
+                .chunks(4096)
+                .map(|idx| {
+                    let mut buf = Vec::with_capacity(idx.len() * 128);
+                    let mut ryu = ryu::Buffer::new();
+                    for i in idx {
+                        buf.extend_from_slice(if i == 0 { b"\n" } else { b",\n" });
+                        let rep = self.replace.binary_search(&i).is_ok();
+                        write_json_row(&mut buf, self.rows[i], &self.results[i], rep, &mut ryu)?;
+                    }
+                    Ok(buf)
+                })
+                .collect();
+            for p in pieces {
+                out.write_all(&p?)?;
+            }
+        }
+        out.write_all(b"\n]\n")
+    }
+}
+
+/// Stream a JSON Lines or CSV batch: `open()` gives the input (called twice:
+/// once to check every row, once to compute and write); `source` names it.
+/// Returns the number of rows.
+pub fn stream(
+    format: Format,
+    open: &dyn Fn() -> Result<Box<dyn BufRead>>,
+    source: &str,
+    stepping: Option<Stepping>,
+    out: &mut dyn Write,
+) -> Result<u64> {
+    match format {
+        Format::JsonLines => stream_lines(open, source, stepping, out),
+        Format::Csv => stream_csv(open, source, stepping, out),
+        Format::Json => Err(Error::Internal { what: "a JSON array is not streamed".into() }),
+    }
+}
+
+fn too_many(source: &str, n: u64) -> Error {
+    Error::TooLarge { what: format!("rows of batch {source}"), count: n as u128, limit: MAX_STREAM_ROWS as u128 }
+}
+
+/// The next chunk of non-blank lines of JSON Lines (at most [`CHUNK`] lines
+/// and about [`CHUNK_BYTES`] bytes), read into one buffer: each line's span
+/// (without its line break) and number; no spans at the end.
+fn line_chunk(
+    input: &mut dyn BufRead,
+    source: &str,
+    line: &mut u64,
+    buf: &mut Vec<u8>,
+    spans: &mut Vec<(usize, usize)>,
+    numbers: &mut Vec<u64>,
+) -> Result<()> {
+    buf.clear();
+    spans.clear();
+    numbers.clear();
+    while spans.len() < CHUNK && buf.len() < CHUNK_BYTES {
+        let start = buf.len();
+        let n = Read::take(&mut *input, MAX_LINE as u64 + 2)
+            .read_until(b'\n', buf)
+            .map_err(|e| Error::Parse { context: source.into(), reason: format!("cannot read: {e}") })?;
+        if n == 0 {
+            break;
+        }
+        *line += 1;
+        let mut end = buf.len();
+        if buf[end - 1] == b'\n' {
+            end -= 1;
+            if end > start && buf[end - 1] == b'\r' {
+                end -= 1;
+            }
+        }
+        if end - start > MAX_LINE {
+            return Err(Error::TooLarge {
+                what: format!("bytes of line {line} of {source}"),
+                count: n as u128,
+                limit: MAX_LINE as u128,
+            });
+        }
+        if buf[start..end].iter().all(|b| b.is_ascii_whitespace()) {
+            buf.truncate(start);
+            continue;
+        }
+        spans.push((start, end));
+        numbers.push(*line);
+    }
+    Ok(())
+}
+
+/// One line of JSON Lines, scanned.
+fn scan_line(line: &[u8]) -> Scanned<'_> {
+    let text = std::str::from_utf8(line).map_err(|_| "not UTF-8".to_string())?;
+    scan::line_row(text, &NAMES).map_err(|e| e.describe(text))
+}
+
+/// JSON Lines: chunks of lines read serially, checked ([`check_chunk`]),
+/// evaluated and formatted in parallel; blank lines skipped.
+fn stream_lines(
+    open: &dyn Fn() -> Result<Box<dyn BufRead>>,
+    source: &str,
+    stepping: Option<Stepping>,
+    out: &mut dyn Write,
+) -> Result<u64> {
+    let mut shapes = Shapes::new(stepping);
+    let (mut buf, mut spans, mut numbers) = (vec![], vec![], vec![]);
+    let fault = |numbers: &[u64], (j, reason): (usize, String)| Error::Parse {
+        context: source.into(),
+        reason: format!("line {}: {reason}", numbers[j]),
+    };
+    let werr = |e: io::Error| Error::write("stdout", e);
+    let mut total = 0u64;
+    for pass in [1, 2] {
+        let mut input = open()?;
+        let mut line = 0u64;
+        loop {
+            line_chunk(&mut *input, source, &mut line, &mut buf, &mut spans, &mut numbers)?;
+            if spans.is_empty() {
+                break;
+            }
+            let checked = check_chunk(spans.len(), &|j| scan_line(&buf[spans[j].0..spans[j].1]), &mut shapes)
+                .map_err(|f| fault(&numbers, f))?;
+            if pass == 1 {
+                total += checked.len() as u64;
+                if total > MAX_STREAM_ROWS {
+                    return Err(too_many(source, total));
+                }
+                continue;
+            }
+            let jobs: Vec<Job> = checked.iter().map(|(_, j)| *j).collect();
+            let results = shapes.evaluate_all(&jobs, source, &|i| format!("line {}", numbers[i]))?;
+            let pieces: Vec<io::Result<Vec<u8>>> = checked
+                .par_chunks(4096)
+                .zip(results.par_chunks(4096))
+                .map(|(rows, rs)| {
+                    let mut buf = Vec::with_capacity(rows.len() * 128);
+                    let mut ryu = ryu::Buffer::new();
+                    for ((raw, job), r) in rows.iter().zip(rs) {
+                        write_json_row(&mut buf, raw, r, job.replace, &mut ryu)?;
+                        buf.push(b'\n');
+                    }
+                    Ok(buf)
+                })
+                .collect();
+            for p in pieces {
+                out.write_all(&p.map_err(werr)?).map_err(werr)?;
+            }
+        }
+    }
+    out.flush().map_err(werr)?;
+    Ok(total)
+}
+
+/// CSV: records read and checked one at a time, evaluated in parallel chunks.
+fn stream_csv(
+    open: &dyn Fn() -> Result<Box<dyn BufRead>>,
+    source: &str,
+    stepping: Option<Stepping>,
+    out: &mut dyn Write,
+) -> Result<u64> {
+    let mut shapes = Shapes::new(stepping);
+    // Pass 1: check every row.
+    let mut rows = Csv::new(open()?, source)?;
+    let mut n = 0u64;
+    while rows.next(&mut shapes, false)?.is_some() {
+        n += 1;
+        if n > MAX_STREAM_ROWS {
+            return Err(too_many(source, n));
+        }
+    }
+    // Pass 2: compute chunks in parallel, write them in order.
+    let werr = |e: io::Error| Error::write("stdout", e);
+    let mut rows = Csv::new(open()?, source)?;
+    rows.header(out).map_err(werr)?;
+    let (mut jobs, mut lines) = (Vec::with_capacity(CHUNK), Vec::with_capacity(CHUNK));
+    loop {
+        jobs.clear();
+        lines.clear();
+        while jobs.len() < CHUNK {
+            let Some((line, job)) = rows.next(&mut shapes, true)? else { break };
+            jobs.push(job);
+            lines.push(line);
+        }
+        if jobs.is_empty() {
+            break;
+        }
+        let results = shapes.evaluate_all(&jobs, source, &|i| format!("line {}", lines[i]))?;
+        rows.write_kept(out, &results).map_err(werr)?;
+    }
+    out.flush().map_err(werr)?;
+    Ok(n)
+}
+
+/// CSV rows.
+struct Csv {
+    reader: csv::Reader<Box<dyn BufRead>>,
+    source: String,
+    /// Columns of shape, vbar, amp; of mu_ratio and reduction where present.
+    cols: [usize; 3],
+    results: Option<(usize, usize)>,
+    header: csv::ByteRecord,
+    record: csv::ByteRecord,
+    kept: Vec<csv::ByteRecord>,
+}
+
+impl Csv {
+    fn new(input: Box<dyn BufRead>, source: &str) -> Result<Csv> {
+        let bad = |reason: String| Error::Parse { context: source.into(), reason };
+        let mut reader = csv::ReaderBuilder::new().has_headers(true).from_reader(input);
+        let header = reader.byte_headers().map_err(|e| bad(format!("header: {e}")))?.clone();
+        let find = |name: &str| header.iter().position(|h| h.trim_ascii() == name.as_bytes());
+        let col = |name: &str| find(name).ok_or_else(|| bad(format!("the header has no column '{name}'")));
+        for (i, h) in header.iter().enumerate() {
+            if header.iter().take(i).any(|g| g == h) {
+                return Err(bad(format!("the header repeats the column '{}'", String::from_utf8_lossy(h))));
+            }
+        }
+        let cols = [col("shape")?, col("vbar")?, col("amp")?];
+        let results = match (find("mu_ratio"), find("reduction")) {
+            (Some(m), Some(r)) => Some((m, r)),
+            (None, None) => None,
+            _ => return Err(bad("the header has only one of 'mu_ratio', 'reduction'".into())),
+        };
+        let record = csv::ByteRecord::new();
+        Ok(Csv { reader, source: source.into(), cols, results, header, record, kept: vec![] })
+    }
+}
+
+impl Csv {
+    /// Write the output's header: the input's, with the result columns appended where it has none.
+    fn header(&mut self, out: &mut dyn Write) -> io::Result<()> {
+        let mut h = self.header.clone();
+        if self.results.is_none() {
+            h.push_field(b"mu_ratio");
+            h.push_field(b"reduction");
+        }
+        let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(&mut *out);
+        w.write_byte_record(&h)?;
+        w.flush()
+    }
+
+    /// The next record's line number and job; `None` at the end. With `keep`,
+    /// the record is kept to be written by [`Csv::write_kept`].
+    fn next(&mut self, shapes: &mut Shapes, keep: bool) -> Result<Option<(u64, Job)>> {
+        let more = self.reader.read_byte_record(&mut self.record).map_err(|e| {
+            let reason = match e.kind() {
+                csv::ErrorKind::UnequalLengths { pos, expected_len, len } => format!(
+                    "line {}: {len} fields where the header has {expected_len}",
+                    pos.as_ref().map_or(self.reader.position().line(), |p| p.line())
+                ),
+                _ => format!("line {}: {e}", self.reader.position().line()),
+            };
+            Error::Parse { context: self.source.clone(), reason }
+        })?;
+        if !more {
+            return Ok(None);
+        }
+        let line = self.record.position().map_or(0, |p| p.line());
+        let bad =
+            |reason: String| Error::Parse { context: self.source.clone(), reason: format!("line {line}: {reason}") };
+        if self.record.as_slice().len() > MAX_LINE {
+            return Err(bad(format!("a record of more than {MAX_LINE} bytes")));
+        }
+        let text = |k: usize, name: &str| {
+            std::str::from_utf8(&self.record[self.cols[k]]).map_err(|_| bad(format!("'{name}' is not UTF-8")))
+        };
+        let number = |k: usize, name: &str| -> Result<f64> {
+            let t = text(k, name)?.trim();
+            match t.parse::<f64>() {
+                Ok(x) if x.is_finite() => Ok(x + 0.0),
+                _ => Err(bad(format!("'{name}' is not a finite number: '{t}'"))),
+            }
+        };
+        let spec = text(0, "shape")?.trim();
+        let (vbar, amp) = (number(1, "vbar")?, number(2, "amp")?);
+        let job = shapes.job(spec, vbar, amp, self.results.is_some()).map_err(|e| bad(e.to_string()))?;
+        if keep {
+            self.kept.push(self.record.clone());
+        }
+        Ok(Some((line, job)))
+    }
+
+    /// Write the kept records with their results (in order), and forget them.
+    fn write_kept(&mut self, out: &mut dyn Write, results: &[Ratio]) -> io::Result<()> {
+        let mut buf = ryu::Buffer::new();
+        let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(&mut *out);
+        let mut rec = csv::ByteRecord::new();
+        for (row, r) in self.kept.iter().zip(results) {
+            rec.clear();
+            for (i, f) in row.iter().enumerate() {
+                match self.results {
+                    Some((m, _)) if i == m => rec.push_field(buf.format_finite(r.mu_ratio).as_bytes()),
+                    Some((_, d)) if i == d => rec.push_field(buf.format_finite(r.reduction).as_bytes()),
+                    _ => rec.push_field(f),
+                }
+            }
+            if self.results.is_none() {
+                rec.push_field(buf.format_finite(r.mu_ratio).as_bytes());
+                rec.push_field(buf.format_finite(r.reduction).as_bytes());
+            }
+            w.write_byte_record(&rec)?;
+        }
+        w.flush()?;
+        drop(w);
+        self.kept.clear();
+        Ok(())
+    }
+}

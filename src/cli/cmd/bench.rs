@@ -1,0 +1,134 @@
+//! `fricosc bench`: the work-precision benchmark.
+
+use super::{check_out_dir, emit};
+use crate::cli::export::{export_bytes, Format};
+use crate::error::{Error, Result};
+
+/// Run the benchmark and write its JSON, CSV, SVG and PNG into `out`.
+pub fn run(out: &str, quick: bool) -> Result<()> {
+    check_out_dir(out)?;
+    let dir = std::path::Path::new(out);
+    std::fs::create_dir_all(dir).map_err(|e| Error::write(out, e))?;
+    let mut report = crate::cli::bench::run(quick);
+    if !quick {
+        report.instructions = instruction_counts(dir)?;
+    }
+    for (ext, format) in [("json", Format::Json), ("csv", Format::Csv), ("svg", Format::Svg), ("png", Format::Png)] {
+        std::fs::write(dir.join(format!("work-precision.{ext}")), export_bytes(&report, format)?)
+            .map_err(|e| Error::write(out, e))?;
+    }
+    let mut o = String::new();
+    for r in &report.ratios {
+        o += &format!(
+            "{}: exact {:.1e} s at error {:.1e}; stepping {:.1e} s at error {:.1e}; time ratio {:.2e}\n",
+            r.case, r.exact_time_s, r.exact_error, r.stepping_time_s, r.stepping_error, r.time_ratio
+        );
+    }
+    for c in &report.instructions {
+        o += &format!(
+            "{}: {:.0} instructions per row (callgrind, {} rows)\n",
+            c.workload, c.instructions_per_row, c.rows
+        );
+    }
+    for f in &report.failures {
+        o += &format!("failure: {f}\n");
+    }
+    emit(&format!("{o}wrote {out}/work-precision.{{json,csv,svg,png}}\n"))
+}
+
+/// Total instructions of `fricosc ARGS` under callgrind, or `None` without valgrind.
+fn callgrind(args: &[&str]) -> Option<f64> {
+    let exe = std::env::current_exe().ok()?;
+    let out = std::process::Command::new("valgrind")
+        .env("RAYON_NUM_THREADS", "1")
+        .args(["--tool=callgrind", "--callgrind-out-file=/dev/null"])
+        .arg(exe)
+        .args(args)
+        .stdout(std::process::Stdio::null())
+        .output()
+        .ok()?;
+    let err = String::from_utf8_lossy(&out.stderr);
+    let line = err.lines().find(|l| l.contains("Collected :"))?;
+    line.rsplit(':').next()?.trim().parse().ok()
+}
+
+/// Per-row instruction counts of `batch` (JSON array, JSON Lines and CSV; flat
+/// and parabolic rows) and `table`, where valgrind is installed (none
+/// otherwise). Each is the count of a large run minus a one-row run (so that
+/// start-up is not counted), over the rows' difference. Rayon runs one thread
+/// (`RAYON_NUM_THREADS=1`): idle worker threads spin, and their instructions
+/// would count as work.
+fn instruction_counts(dir: &std::path::Path) -> Result<Vec<crate::cli::bench::InstructionCount>> {
+    // A fixed pseudo-random row set: vbar in [0, 1.2], amp in [0, 3].
+    let mut seed = 0x9E3779B97F4A7C15u64;
+    let mut rand = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let random = |n: usize, rand: &mut dyn FnMut() -> f64| -> Vec<(f64, f64)> {
+        (0..n).map(|_| (1.2 * rand(), 3.0 * rand())).collect()
+    };
+    // The parabolic table's own grid, for batch against table on the same points.
+    let grid: Vec<(f64, f64)> =
+        (0..10).flat_map(|a| (0..100).map(move |v| (1.2 * v as f64 / 99.0, 3.0 * a as f64 / 9.0))).collect();
+    let json = |shape: &str, pts: &[(f64, f64)]| {
+        let r: Vec<String> =
+            pts.iter().map(|(v, a)| format!("{{\"shape\":\"{shape}\",\"vbar\":{v:?},\"amp\":{a:?}}}")).collect();
+        format!("[{}]", r.join(",\n"))
+    };
+    let lines = |shape: &str, pts: &[(f64, f64)]| -> String {
+        pts.iter().map(|(v, a)| format!("{{\"shape\":\"{shape}\",\"vbar\":{v:?},\"amp\":{a:?}}}\n")).collect()
+    };
+    let csv = |shape: &str, pts: &[(f64, f64)]| -> String {
+        "shape,vbar,amp\n".to_string() + &pts.iter().map(|(v, a)| format!("{shape},{v:?},{a:?}\n")).collect::<String>()
+    };
+    let flat = random(10_000, &mut rand);
+    let parabolic = random(1_000, &mut rand);
+    type Make<'a> = &'a dyn Fn(&str, &[(f64, f64)]) -> String;
+    type Workload<'a> = (&'a str, &'a str, Make<'a>, &'a [(f64, f64)], &'a str);
+    let files: [Workload; 5] = [
+        ("batch, random flat rows (JSON array)", "flat", &json, &flat, "json"),
+        ("batch, random flat rows (JSON Lines)", "flat", &lines, &flat, "jsonl"),
+        ("batch, random flat rows (CSV)", "flat", &csv, &flat, "csv"),
+        ("batch, random parabolic rows (JSON array)", "parabolic", &json, &parabolic, "json"),
+        ("batch, the parabolic table's 10 x 100 points (JSON array)", "parabolic", &json, &grid, "json"),
+    ];
+    let mut out = vec![];
+    for (workload, shape, make, pts, ext) in files {
+        let (big, one) = (dir.join(format!("rows.{ext}")), dir.join(format!("row.{ext}")));
+        let werr = |p: &std::path::Path, e| Error::write(&p.display().to_string(), e);
+        std::fs::write(&big, make(shape, pts)).map_err(|e| werr(&big, e))?;
+        std::fs::write(&one, make(shape, &pts[..1])).map_err(|e| werr(&one, e))?;
+        let counts =
+            (callgrind(&["batch", &big.display().to_string()]), callgrind(&["batch", &one.display().to_string()]));
+        let _ = (std::fs::remove_file(&big), std::fs::remove_file(&one));
+        let (Some(i_n), Some(i_1)) = counts else { return Ok(vec![]) };
+        out.push(crate::cli::bench::InstructionCount {
+            workload: workload.into(),
+            rows: pts.len(),
+            instructions_per_row: (i_n - i_1) / (pts.len() - 1) as f64,
+            command: format!("valgrind --tool=callgrind fricosc batch FILE.{ext} ({} rows minus 1 row)", pts.len()),
+        });
+    }
+    for (workload, shape, vbar, amp, rows) in [
+        ("table, 100 x 100 flat", "flat", "0:1.2:100", "0:3:100", 10_000usize),
+        ("table, 10 x 100 parabolic", "parabolic", "0:1.2:100", "0:3:10", 1_000),
+    ] {
+        let table = callgrind(&["table", "--shape", shape, "--vbar", vbar, "--amp", amp, "--format", "csv"]);
+        let single = callgrind(&["table", "--shape", shape, "--vbar", "0.6", "--amp", "1.5", "--format", "csv"]);
+        if let (Some(t), Some(s)) = (table, single) {
+            out.push(crate::cli::bench::InstructionCount {
+                workload: workload.into(),
+                rows,
+                instructions_per_row: (t - s) / (rows - 1) as f64,
+                command: format!(
+                    "valgrind --tool=callgrind fricosc table --shape {shape} --vbar {vbar} --amp {amp} --format csv \
+                     (minus 1 point)"
+                ),
+            });
+        }
+    }
+    Ok(out)
+}

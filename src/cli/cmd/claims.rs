@@ -1,0 +1,16 @@
+//! `fricosc claims`: every quantitative statement of the seed, checked.
+
+use super::emit;
+use crate::cli::export::{export, Format};
+use crate::error::Result;
+
+/// Print the claims as Markdown, JSON or CSV.
+pub fn run(format: &str) -> Result<()> {
+    let format = Format::parse(format, &[Format::Markdown, Format::Json, Format::Csv])?;
+    let claims = crate::cli::claims::check();
+    let text = match format {
+        Format::Markdown => crate::cli::claims::markdown(&claims),
+        f => export(&claims, f)?,
+    };
+    emit(if text.ends_with('\n') { text } else { text + "\n" }.as_str())
+}

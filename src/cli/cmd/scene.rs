@@ -1,0 +1,122 @@
+//! `fricosc scene`: physical scenes in SI units.
+
+use super::emit;
+use crate::cli::output::Format;
+use crate::error::{Error, Result};
+use rayon::prelude::*;
+use std::io::{IsTerminal, Write};
+
+pub fn run(files: Vec<String>, schema: bool, format: Format, plot: Option<String>) -> Result<()> {
+    if schema {
+        return emit(&format!("{}\n", crate::cli::scene::schema()));
+    }
+    if let Some(path) = &plot {
+        super::drawing_kind("--plot", path)?;
+    }
+    if files.is_empty() {
+        return Err(Error::Parse { context: "scene".into(), reason: "give a scene file (or --schema)".into() });
+    }
+    // Read and solve everything before the first byte is written.
+    let scenes: Vec<Result<crate::cli::scene::Scene>> = files
+        .iter()
+        .map(|f| {
+            let text = crate::cli::input::read_capped(f, crate::cli::input::MAX_SMALL_BYTES)?;
+            crate::cli::scene::parse(&text, f)
+        })
+        .collect();
+    let scenes = scenes.into_iter().collect::<Result<Vec<_>>>()?;
+    // A progress bar on stderr only when it is a terminal and the work is long.
+    let total: usize = scenes.iter().map(crate::cli::scene::velocity_count).sum();
+    let bar = (std::io::stderr().is_terminal() && total >= 2000).then(|| Progress::new(total as u64));
+    let tick = |k: u64| {
+        if let Some(b) = &bar {
+            b.inc(k);
+        }
+    };
+    let results: Vec<Result<Vec<crate::cli::scene::SceneResult>>> =
+        scenes.par_iter().zip(&files).map(|(s, f)| crate::cli::scene::solve_with_progress(s, f, &tick)).collect();
+    if let Some(b) = &bar {
+        b.finish();
+    }
+    // Each answer (one per amplitude) with its scene's label: its name, or its file.
+    let mut labelled: Vec<(String, crate::cli::scene::SceneResult)> = vec![];
+    for (r, f) in results.into_iter().zip(&files) {
+        labelled.extend(r?.into_iter().map(|x| (x.name.clone().unwrap_or_else(|| f.clone()), x)));
+    }
+    for (f, r) in &labelled {
+        for w in &r.warnings {
+            eprintln!("warning: {f}: {w}");
+        }
+    }
+    if let Some(path) = &plot {
+        let svg = crate::cli::scene::family_chart(&labelled).svg();
+        super::write_drawing("--plot", path, &svg)?;
+    }
+    let results: Vec<&crate::cli::scene::SceneResult> = labelled.iter().map(|(_, r)| r).collect();
+    // One shape of output whatever the number of files: a JSON list, and CSV in
+    // long form (one header; each row with its scene and the scene's results).
+    let text = match format {
+        Format::Csv => scenes_csv(&labelled)?,
+        Format::Json => serde_json::to_string_pretty(&results)
+            .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?,
+    };
+    emit(&format!("{}\n", text.trim_end()))
+}
+
+/// Every scene's rows in one CSV table: the scene (its name, or its file), the
+/// scene-level results repeated on each row (one amplitude of a family each),
+/// then the row's own columns.
+fn scenes_csv(results: &[(String, crate::cli::scene::SceneResult)]) -> Result<String> {
+    use crate::cli::export::Report;
+    let n = crate::cli::output::num;
+    let fail = |e: csv::Error| Error::Internal { what: format!("writing CSV: {e}") };
+    let mut w = csv::Writer::from_writer(vec![]);
+    let scene_cols = ["scene", "u0_m", "du_m", "amp", "contact_radius_m", "critical_velocity_m_per_s", "mu_static"];
+    let mut header: Vec<String> = scene_cols.map(String::from).to_vec();
+    if let Some((_, r)) = results.first() {
+        header.extend(r.columns());
+    }
+    w.write_record(&header).map_err(fail)?;
+    for (label, r) in results {
+        let scene = [
+            label.clone(),
+            n(r.mean_indentation_m),
+            n(r.amplitude_m),
+            n(r.amplitude_ratio),
+            n(r.contact_radius_m),
+            n(r.critical_velocity_m_per_s),
+            n(r.mu_static),
+        ];
+        for row in r.rows() {
+            w.write_record(scene.iter().cloned().chain(row)).map_err(fail)?;
+        }
+    }
+    let bytes = w.into_inner().map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })?;
+    String::from_utf8(bytes).map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })
+}
+
+/// A percentage on a terminal's stderr, rewritten in place (whole percents
+/// only); a failed write to stderr is ignored (the answer matters more).
+struct Progress {
+    total: u64,
+    done: std::sync::atomic::AtomicU64,
+}
+
+impl Progress {
+    fn new(total: u64) -> Self {
+        Progress { total: total.max(1), done: std::sync::atomic::AtomicU64::new(0) }
+    }
+
+    fn inc(&self, k: u64) {
+        use std::sync::atomic::Ordering::Relaxed;
+        let before = self.done.fetch_add(k, Relaxed);
+        let (p0, p1) = (100 * before / self.total, 100 * (before + k) / self.total);
+        if p1 > p0 {
+            let _ = write!(std::io::stderr(), "\rscene: {p1:>3} %");
+        }
+    }
+
+    fn finish(&self) {
+        let _ = write!(std::io::stderr(), "\r             \r");
+    }
+}

@@ -1,0 +1,17 @@
+//! `fricosc stress`: random and edge points through every check.
+
+use super::{emit, to_json, Outcome};
+use crate::error::{Error, Result};
+
+/// Most points one stress run may take.
+pub const MAX_POINTS: usize = 100_000_000;
+
+/// Run and print the report; [`Outcome::Negative`] when any check failed.
+pub fn run(points: usize, seed: u64) -> Result<Outcome> {
+    if points > MAX_POINTS {
+        return Err(Error::TooLarge { what: "stress points".into(), count: points as u128, limit: MAX_POINTS as u128 });
+    }
+    let r = crate::cli::stress::run(points, seed, &crate::cli::stress::default_shapes());
+    emit(&format!("{}\n", to_json(&r)?))?;
+    Ok(if r.failure_count == 0 { Outcome::Done } else { Outcome::Negative })
+}

@@ -1,0 +1,38 @@
+//! `fricosc suite`: write the reference suite, or check a copy of it.
+
+use super::{check_out_dir, emit, Outcome};
+use crate::error::Result;
+
+/// `--out DIR` writes the suite; `--check DIR` compares it with the current
+/// solver ([`Outcome::Negative`] when a file differs or is missing).
+pub fn run(out: Option<String>, check: Option<String>) -> Result<Outcome> {
+    match (out, check) {
+        (Some(dir), None) => {
+            check_out_dir(&dir)?;
+            let files = crate::cli::suite::write(std::path::Path::new(&dir))?;
+            emit(&format!(
+                "wrote the reference suite (version {}) to {dir}: {} files\n",
+                crate::cli::suite::SUITE_VERSION,
+                files.len()
+            ))?;
+            Ok(Outcome::Done)
+        }
+        (None, Some(dir)) => {
+            let bad = crate::cli::suite::check(std::path::Path::new(&dir))?;
+            if bad.is_empty() {
+                emit(&format!(
+                    "{dir}: the reference suite (version {}) is current\n",
+                    crate::cli::suite::SUITE_VERSION
+                ))?;
+                Ok(Outcome::Done)
+            } else {
+                emit(&format!("{dir}: {}\n", bad.join("; ")))?;
+                Ok(Outcome::Negative)
+            }
+        }
+        _ => Err(crate::error::Error::Parse {
+            context: "suite".into(),
+            reason: "give exactly one of --out DIR (write) and --check DIR (verify)".into(),
+        }),
+    }
+}

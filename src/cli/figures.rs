@@ -1,0 +1,435 @@
+//! `fricosc figures`: the seed's Figs. 3, 4, 5 (with its inset), 7 and 8, exact,
+//! with the seed's approximations on each (dashed), as JSON, CSV and SVG.
+//! Every exact point is the solver's value ([`crate::shape::evaluate`]).
+
+use crate::cli::plot::{self, Axis, Chart, Dash, Key, Rule, Series, Style};
+use crate::error::{Error, Result};
+use crate::seed;
+use crate::shape::{evaluate, Shape};
+use serde::Serialize;
+
+/// One curve of a figure.
+#[derive(Debug, Clone, Serialize)]
+pub struct Curve {
+    /// Legend label (plain text).
+    pub label: String,
+    /// `exact` (the solver's values) or `approximation` (one of the seed's formulas).
+    pub kind: String,
+    /// The seed's equation an approximation evaluates (`eq. 11`, ...).
+    pub equation: Option<String>,
+    /// Amplitude `du/u0`, where the curve has one.
+    pub amp: Option<f64>,
+    /// `(x, y)` points.
+    pub points: Vec<[f64; 2]>,
+}
+
+/// What a figure's horizontal axis is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum XAxis {
+    /// `vbar` (eq. 3).
+    Vbar,
+    /// `vhat = vbar amp` (eq. 15).
+    Vhat,
+    /// The amplitude `du/u0`.
+    Amp,
+}
+
+/// One figure.
+#[derive(Debug, Clone, Serialize)]
+pub struct Figure {
+    /// File stem (`fig3`, `fig5-inset`, ...).
+    pub name: String,
+    /// Caption (the SVG's title; README sets it below the picture).
+    pub title: String,
+    /// The horizontal axis' quantity.
+    pub x: XAxis,
+    /// Axis label (markup of [`crate::cli::plot`]: `_{}` subscripts).
+    pub x_label: String,
+    /// Axis label.
+    pub y_label: String,
+    /// Axis ranges `[x0, x1, y0, y1]`.
+    pub range: [f64; 4],
+    /// Draw the critical amplitude `du/u0 = 1` bold (where the seed does).
+    pub bold_critical: bool,
+    /// Curves.
+    pub curves: Vec<Curve>,
+}
+
+/// Axis label of `vbar`.
+pub const VBAR_LABEL: &str = "normalized velocity v\u{304} (eq. 3)";
+/// Axis label of `vhat`.
+pub const VHAT_LABEL: &str = "normalized velocity v\u{302} (eq. 15)";
+/// Axis label of `mu_macro/mu0`.
+pub const MU_LABEL: &str = "friction coefficient μ_{macro}/μ_{0}";
+/// Legend heading of an amplitude family.
+pub const AMP_LABEL: &str = "Δu_{z}/u_{z0}";
+
+fn figure(name: &str, title: &str, x: XAxis, range: [f64; 4], curves: Vec<Curve>) -> Figure {
+    let x_label = match x {
+        XAxis::Vbar => VBAR_LABEL,
+        XAxis::Vhat => VHAT_LABEL,
+        XAxis::Amp => "oscillation amplitude Δu_{z}/u_{z0}",
+    };
+    Figure {
+        name: name.into(),
+        title: title.into(),
+        x,
+        x_label: x_label.into(),
+        y_label: MU_LABEL.into(),
+        range,
+        bold_critical: false,
+        curves,
+    }
+}
+
+/// A figure against `vhat` over both regimes, the critical amplitude bold between them (Figs. 4, 8).
+fn against_vhat(name: &str, title: &str, curves: Vec<Curve>) -> Figure {
+    let mut f = figure(name, title, XAxis::Vhat, [0.0, 2.0, 0.0, 1.05], curves);
+    f.bold_critical = true;
+    f
+}
+
+fn grid(x0: f64, x1: f64, n: usize) -> Vec<f64> {
+    (0..n).map(|k| x0 + (x1 - x0) * k as f64 / (n - 1) as f64).collect()
+}
+
+/// The exact curve of `shape` at `amp` over `xs` (`vbar`, or `vhat` where
+/// `vhat` is set; at `amp = 0` the value does not depend on the velocity).
+fn exact(shape: &Shape, amp: f64, xs: &[f64], vhat: bool) -> Result<Curve> {
+    let vbar_of = |x: f64| if vhat && amp > 0.0 { x / amp } else { x };
+    let points = xs
+        .iter()
+        .map(|&x| evaluate(shape, vbar_of(x), amp).map(|e| [x, e.ratio.mu_ratio]))
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Curve { label: format!("exact, du/u0 = {amp}"), kind: "exact".into(), equation: None, amp: Some(amp), points })
+}
+
+fn approx(eq: &str, amp: Option<f64>, xs: &[f64], f: impl Fn(f64) -> f64) -> Curve {
+    let label = match amp {
+        Some(a) => format!("{eq}, du/u0 = {a}"),
+        None => eq.to_string(),
+    };
+    Curve {
+        label,
+        kind: "approximation".into(),
+        equation: Some(eq.into()),
+        amp,
+        points: xs.iter().map(|&x| [x, f(x)]).collect(),
+    }
+}
+
+/// Build all figures.
+///
+/// Which approximation is drawn where follows the seed: eq. 11 on Fig. 3 (no
+/// contact loss), eq. 12 on its inset (`du/u0 = 1`), eq. 16 (eq. 11 in `vhat`)
+/// for the amplitudes up to 1 and eq. 17 (eq. 11 at the critical amplitude,
+/// the seed's rough rule for jumping) beyond it on Fig. 4, eq. 17 on Fig. 5,
+/// eqs. 21 and 22 (as printed and corrected) on Fig. 5's inset, eq. 27 (the
+/// universal form, for both regimes) on Figs. 7 and 8; eq. 28 differs from
+/// eq. 27 by at most 1.55 % of mu0 (see `claims`), too little to tell apart at
+/// print size, so it is left out. The line at `du/u0 = 0` (sliding without
+/// oscillation, mu = mu0) is drawn where the seed draws it (Figs. 3, 4, 7, 8),
+/// and the critical amplitude `du/u0 = 1` bold where it separates the two
+/// regimes (Figs. 4 and 8).
+pub fn build() -> Result<Vec<Figure>> {
+    let flat = Shape::Flat;
+    let parabolic = Shape::Power(2.0);
+    let vb = grid(0.0, 1.2, 241);
+    let small = [0.0, 0.2, 0.4, 0.6, 0.8, 1.0];
+    let jumping = [1.2, 1.4, 1.6, 1.8, 2.0];
+    let mut figs = vec![];
+
+    // Fig. 3: flat punch, no jumping, and eq. 11.
+    let mut c = vec![];
+    for &a in &small {
+        c.push(exact(&flat, a, &vb, false)?);
+        if a > 0.0 {
+            c.push(approx("eq. 11", Some(a), &vb, |v| seed::eq11(v, a)));
+        }
+    }
+    figs.push(figure(
+        "fig3",
+        "Fig. 3: flat punch without jumping, exact and eq. 11",
+        XAxis::Vbar,
+        [0.0, 1.2, 0.0, 1.05],
+        c,
+    ));
+
+    // Fig. 3 inset: amp = 1 at low velocity, eq. 12.
+    let vs = grid(0.0, 0.1, 201);
+    figs.push(figure(
+        "fig3-inset",
+        "Fig. 3 inset: flat punch at du/u0 = 1, low velocity, exact and eq. 12",
+        XAxis::Vbar,
+        [0.0, 0.1, 0.0, 0.3],
+        vec![exact(&flat, 1.0, &vs, false)?, approx("eq. 12", Some(1.0), &vs, |v| seed::eq12(v, 1.0))],
+    ));
+
+    // Fig. 4: flat punch against vhat = vbar amp; eq. 16 up to amp 1, eq. 17 beyond.
+    let vh = grid(0.0, 2.0, 201);
+    let mut c = vec![];
+    for &a in small.iter().chain(&jumping) {
+        c.push(exact(&flat, a, &vh, true)?);
+        if a > 1.0 {
+            c.push(approx("eq. 17", Some(a), &vh, |x| seed::eq17(x / a)));
+        } else if a > 0.0 {
+            c.push(approx("eq. 16", Some(a), &vh, |x| seed::eq16(x, a)));
+        }
+    }
+    figs.push(against_vhat(
+        "fig4",
+        "Fig. 4: flat punch against v\u{302}, exact, eq. 16 (no jumping) and eq. 17 (jumping)",
+        c,
+    ));
+
+    // Fig. 5: jumping, and eq. 17.
+    let mut c = vec![];
+    for k in 0..=10 {
+        let a = (10 + k) as f64 / 10.0;
+        c.push(exact(&flat, a, &vb, false)?);
+    }
+    c.push(approx("eq. 17", None, &vb, seed::eq17));
+    figs.push(figure(
+        "fig5",
+        "Fig. 5: flat punch, jumping, du/u0 = 1 to 2, exact and eq. 17",
+        XAxis::Vbar,
+        [0.0, 1.2, 0.0, 1.05],
+        c,
+    ));
+
+    // Fig. 5 inset: the low-velocity slope against the amplitude.
+    let aa = grid(1.0, 5.0, 161);
+    let slope_exact: Vec<[f64; 2]> = aa.iter().map(|&a| [a, crate::cli::claims::exact_slope(a)]).collect();
+    let mut f = figure(
+        "fig5-inset",
+        "Fig. 5 inset: low-velocity slope against the amplitude, exact, eqs. 21 and 22 as printed and corrected",
+        XAxis::Amp,
+        [1.0, 5.0, 0.0, 3.5],
+        vec![
+            Curve {
+                label: "exact (the solver at v\u{304} = 10^{−9})".into(),
+                kind: "exact".into(),
+                equation: None,
+                amp: None,
+                points: slope_exact,
+            },
+            approx("eq. 21 corrected", None, &aa, seed::eq21_slope),
+            approx("eq. 21 as printed (π too small)", None, &aa, seed::eq21_slope_printed),
+            approx("eq. 22 corrected, π²/4", None, &aa, |_| seed::EQ22_CORRECTED),
+            approx("eq. 22 as printed, π/4", None, &aa, |_| seed::EQ22_PRINTED),
+        ],
+    );
+    f.y_label = "low-velocity slope μ_{macro}/(μ_{0} v\u{304})".into();
+    figs.push(f);
+
+    // Figs. 7 and 8: paraboloid, with eq. 27.
+    let mut c = vec![];
+    for &a in &small {
+        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::mdr::DEFAULT_TOL);
+        c.push(exact(&parabolic, a, &vb, false)?);
+        if a > 0.0 {
+            c.push(approx("eq. 27", Some(a), &vb, |v| seed::eq27(v, ms)));
+        }
+    }
+    figs.push(figure("fig7", "Fig. 7: parabolic indenter, exact and eq. 27", XAxis::Vbar, [0.0, 1.2, 0.0, 1.05], c));
+    let mut c = vec![];
+    for &a in small.iter().chain(&jumping) {
+        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::mdr::DEFAULT_TOL);
+        c.push(exact(&parabolic, a, &vh, true)?);
+        if a > 0.0 {
+            c.push(approx("eq. 27", Some(a), &vh, |x| seed::eq27(x / a, ms)));
+        }
+    }
+    figs.push(against_vhat("fig8", "Fig. 8: parabolic indenter against v\u{302}, exact and eq. 27", c));
+    Ok(figs)
+}
+
+/// At most this many amplitudes in one [`user`] figure (so that neighbouring
+/// colours stay apart: CIE76 difference 8 or more, checked by the tests).
+pub const MAX_CURVES: usize = 12;
+/// At most this many velocities per curve of a [`user`] figure.
+pub const MAX_POINTS: usize = 100_000;
+
+/// A figure of the user's own curves (`fricosc plot`): the exact `mu/mu0` of
+/// `shape` at each amplitude over the velocities `xs` (`vbar`, or `vhat` where
+/// `vhat` is set), in the style of the seed's figures.
+pub fn user(shape: &Shape, amps: &[f64], xs: &[f64], vhat: bool) -> Result<Figure> {
+    if amps.len() > MAX_CURVES {
+        return Err(Error::TooLarge {
+            what: "amplitudes in one plot".into(),
+            count: amps.len() as u128,
+            limit: MAX_CURVES as u128,
+        });
+    }
+    if xs.len() > MAX_POINTS {
+        return Err(Error::TooLarge {
+            what: "velocities in one plot".into(),
+            count: xs.len() as u128,
+            limit: MAX_POINTS as u128,
+        });
+    }
+    let what = if vhat { "vhat" } else { "vbar" };
+    for &a in amps {
+        crate::error::check_nonneg("amp", a)?;
+    }
+    for &x in xs {
+        crate::error::check_nonneg(what, x)?;
+    }
+    let mut xs = xs.to_vec();
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let (lo, hi) = match (xs.first(), xs.last()) {
+        (Some(&lo), Some(&hi)) if hi > lo => (lo, hi),
+        _ => {
+            return Err(Error::Parse {
+                context: format!("--{what}"),
+                reason: "needs two different velocities or more".into(),
+            })
+        }
+    };
+    let mut seen = vec![];
+    let curves = amps
+        .iter()
+        .filter(|a| {
+            let new = !seen.contains(*a);
+            seen.push(**a);
+            new
+        })
+        .map(|&a| exact(shape, a, &xs, vhat))
+        .collect::<Result<Vec<_>>>()?;
+    let (x, title) = if vhat { (XAxis::Vhat, "vhat") } else { (XAxis::Vbar, "vbar") };
+    let mut f = figure("plot", &format!("{}: mu/mu0 against {title}", shape.name()), x, [lo, hi, 0.0, 1.05], curves);
+    f.bold_critical = amps.len() > 1 && amps.contains(&1.0);
+    Ok(f)
+}
+
+/// The house style for a family of curves over amplitudes, with approximations.
+///
+/// Every distinct amplitude gets one colour (black for `du/u0 = 0`, viridis in
+/// order for the others); exact curves are solid (2 pt at the critical
+/// amplitude where `bold_critical`), approximations dashed, a second
+/// approximation dotted, a third dash-dotted. Curves without an amplitude get
+/// the Okabe-Ito colours and their own legend entries.
+pub fn chart(f: &Figure) -> Chart {
+    let mut amps: Vec<f64> = f.curves.iter().filter_map(|c| c.amp).collect();
+    amps.sort_by(f64::total_cmp);
+    amps.dedup();
+    let nonzero: Vec<f64> = amps.iter().copied().filter(|a| *a != 0.0).collect();
+    let color = |a: f64| match nonzero.iter().position(|x| *x == a) {
+        Some(i) => plot::family_color(i, nonzero.len()),
+        None => plot::BLACK,
+    };
+    let bold = |a: f64| if f.bold_critical && a == 1.0 { 2.0 } else { 1.0 };
+    // The approximations' equations in order of appearance: dash patterns.
+    let mut eqs: Vec<&str> = vec![];
+    for c in &f.curves {
+        if let Some(e) = &c.equation {
+            if !eqs.contains(&e.as_str()) {
+                eqs.push(e);
+            }
+        }
+    }
+    let dash = |c: &Curve| match c.equation.as_deref().and_then(|e| eqs.iter().position(|x| *x == e)) {
+        None => Dash::Solid,
+        Some(0) => Dash::Dashed,
+        Some(1) => Dash::Dotted,
+        Some(_) => Dash::DashDot,
+    };
+    let mut loners = 0;
+    let mut series = vec![];
+    for c in &f.curves {
+        let (style, legend) = match c.amp {
+            Some(a) => (Style::dashed(color(a), dash(c)).width(if c.kind == "exact" { bold(a) } else { 1.0 }), false),
+            None => {
+                let s = Style::dashed(plot::OKABE_ITO[loners % plot::OKABE_ITO.len()], dash(c));
+                loners += 1;
+                (s, true)
+            }
+        };
+        series.push(Series {
+            label: c.label.clone(),
+            points: c.points.iter().map(|p| (p[0], p[1])).collect(),
+            style,
+            legend,
+        });
+    }
+    let mut key = vec![];
+    if !amps.is_empty() {
+        key.push(Key::Heading(AMP_LABEL.into()));
+        for &a in &amps {
+            key.push(Key::Entry(Style::line(color(a)).width(bold(a)), crate::cli::output::num(a)));
+        }
+        let grey = plot::Rgb(0x55, 0x55, 0x55);
+        let family_eqs: Vec<&str> = eqs
+            .iter()
+            .copied()
+            .filter(|e| f.curves.iter().any(|c| c.amp.is_some() && c.equation.as_deref() == Some(*e)))
+            .collect();
+        if !family_eqs.is_empty() {
+            key.push(Key::Heading(String::new()));
+            key.push(Key::Entry(Style::line(grey), "exact".into()));
+            for e in family_eqs {
+                let d = dash(f.curves.iter().find(|c| c.equation.as_deref() == Some(e)).expect("listed above"));
+                key.push(Key::Entry(Style::dashed(grey, d), e.to_string()));
+            }
+        }
+    }
+    let ratio_axis = f.y_label == MU_LABEL;
+    Chart {
+        title: f.title.clone(),
+        x: Axis::linear(&f.x_label, (f.range[0], f.range[1])),
+        y: Axis::linear(&f.y_label, (f.range[2], f.range[3])),
+        series,
+        key,
+        rules: if ratio_axis { vec![Rule { horizontal: true, at: 1.0 }] } else { vec![] },
+    }
+}
+
+impl crate::cli::export::Report for Figure {
+    /// Long format: `curve,kind,equation,amp,x,y`.
+    fn columns(&self) -> Vec<String> {
+        ["curve", "kind", "equation", "amp", "x", "y"].map(String::from).to_vec()
+    }
+
+    fn rows(&self) -> Vec<Vec<String>> {
+        let n = crate::cli::output::num;
+        self.curves
+            .iter()
+            .flat_map(|c| {
+                c.points.iter().map(move |p| {
+                    vec![
+                        c.label.clone(),
+                        c.kind.to_string(),
+                        c.equation.clone().unwrap_or_default(),
+                        c.amp.map_or(String::new(), n),
+                        n(p[0]),
+                        n(p[1]),
+                    ]
+                })
+            })
+            .collect()
+    }
+
+    fn svg(&self) -> Option<Result<String>> {
+        Some(Ok(chart(self).svg()))
+    }
+}
+
+/// Write every figure as `name.json`, `name.csv`, `name.svg` and `name.png` into `dir`.
+pub fn write_all(dir: &std::path::Path) -> Result<Vec<String>> {
+    let werr = |e: std::io::Error| Error::write(&dir.display().to_string(), e);
+    std::fs::create_dir_all(dir).map_err(werr)?;
+    let mut names = vec![];
+    for f in build()? {
+        use crate::cli::export::{export, Format};
+        for (ext, format) in [("json", Format::Json), ("csv", Format::Csv), ("svg", Format::Svg)] {
+            std::fs::write(dir.join(format!("{}.{ext}", f.name)), export(&f, format)?).map_err(werr)?;
+        }
+        let png =
+            plot::png(&chart(&f).svg()).map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") })?;
+        std::fs::write(dir.join(format!("{}.png", f.name)), png).map_err(werr)?;
+        names.push(f.name);
+    }
+    Ok(names)
+}

@@ -1,0 +1,120 @@
+//! Parsing of value lists on the command line: `0,0.2,0.4` or `start:stop:count`.
+
+use crate::error::{Error, Result};
+
+/// Most rows any command reads or writes (tables, batches, validated tables,
+/// histories), and most values one list or range may produce: the one limit.
+pub const MAX_ROWS: usize = crate::history::MAX_SAMPLES;
+/// [`MAX_ROWS`] for counts computed in `u128` (before they can overflow).
+pub const MAX_LIST: u128 = MAX_ROWS as u128;
+
+/// Parse one finite number; `what` names it in the error.
+pub fn parse_number(what: &str, text: &str) -> Result<f64> {
+    let t = text.trim();
+    let x: f64 =
+        t.parse().map_err(|_| Error::Parse { context: what.into(), reason: format!("'{t}' is not a number") })?;
+    if !x.is_finite() {
+        return Err(Error::Parse { context: what.into(), reason: format!("'{t}' is not finite") });
+    }
+    // -0.0 is 0 (it would print back as -0.0 in vbar and reduction).
+    Ok(x + 0.0)
+}
+
+/// A comma list `a,b,c` or an inclusive range `start:stop:count` (`count >= 1`,
+/// `stop >= start`; `count = 1` gives `start`). Values are
+/// `start + (stop - start) k / (count - 1)` rounded to 15 significant digits (so
+/// `0:1.2:13` gives 0.1, 0.2, ... rather than 0.09999999999999999), the last one
+/// `stop` exactly; outputs print the value actually used.
+pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
+    let t = text.trim();
+    if t.is_empty() {
+        return Err(Error::Parse { context: what.into(), reason: "empty value list".into() });
+    }
+    let parts: Vec<&str> = t.split(':').collect();
+    match parts.len() {
+        1 => t.split(',').map(|p| parse_number(what, p)).collect(),
+        3 => {
+            let start = parse_number(what, parts[0])?;
+            let stop = parse_number(what, parts[1])?;
+            let c = parts[2].trim();
+            let count: u128 = c.parse().map_err(|_| Error::Parse {
+                context: what.into(),
+                reason: format!("range count '{c}' is not a whole number"),
+            })?;
+            if count == 0 {
+                return Err(Error::Parse { context: what.into(), reason: "range count must be >= 1".into() });
+            }
+            if count > MAX_LIST {
+                return Err(Error::TooLarge { what: format!("{what} range count"), count, limit: MAX_LIST });
+            }
+            if stop < start {
+                return Err(Error::Parse {
+                    context: what.into(),
+                    reason: format!("range stop {stop:?} is below start {start:?}"),
+                });
+            }
+            let n = count as usize;
+            if n == 1 {
+                return Ok(vec![start]);
+            }
+            let span = stop - start;
+            let last = (n - 1) as f64;
+            let at = |k: usize| {
+                let t = k as f64 / last;
+                // stop - start overflows for ranges across most of f64 (-1e308:1e308).
+                if span.is_finite() {
+                    start + span * t
+                } else {
+                    start * (1.0 - t) + stop * t
+                }
+            };
+            let mut out: Vec<f64> = (0..n).map(|k| if k + 1 == n { stop } else { at(k) }).collect();
+            // Remove the binary noise of k * step (0.30000000000000004 -> 0.3), where it is noise.
+            crate::numerics::decimal::tidy(&mut out, start, stop);
+            if let Some(w) = out.windows(2).find(|w| w[1] <= w[0]) {
+                return Err(Error::Parse {
+                    context: what.into(),
+                    reason: format!(
+                        "the range {start:?}:{stop:?} holds fewer than {n} distinct double values ({:?} repeats)",
+                        w[1]
+                    ),
+                });
+            }
+            Ok(out)
+        }
+        _ => Err(Error::Parse {
+            context: what.into(),
+            reason: format!("'{t}' is neither a comma list nor start:stop:count"),
+        }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lists_and_ranges() {
+        assert_eq!(parse_values("v", "0, 0.2,0.4").unwrap(), vec![0.0, 0.2, 0.4]);
+        let r = parse_values("v", "0:1.2:121").unwrap();
+        assert_eq!(r.len(), 121);
+        assert_eq!(r[120], 1.2);
+        assert_eq!(r[60], 0.6);
+        assert_eq!(parse_values("v", "0:1.2:13").unwrap()[1], 0.1);
+        assert_eq!(parse_values("v", "0.5:0.5:1").unwrap(), vec![0.5]);
+        // Rounding never leaves [start, stop] nor repeats a value; a range too
+        // narrow for its count is an error, a range across f64 is not NaN.
+        assert_eq!(
+            parse_values("v", "0.9999999999999998:0.9999999999999999:2").unwrap(),
+            vec![0.9999999999999998, 0.9999999999999999]
+        );
+        assert!(parse_values("v", "0.9999999999999998:0.9999999999999999:3").is_err());
+        assert!(parse_values("v", "0.999999999999999:1:11").is_err());
+        assert_eq!(parse_values("v", "-1e308:1e308:3").unwrap(), vec![-1e308, 0.0, 1e308]);
+        let r = parse_values("v", "0.1:0.7:7").unwrap();
+        assert_eq!(r, vec![0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7]);
+        for bad in ["", "a", "nan", "inf", "1e999", "1:0:3", "0:1:0", "0:1:x", "0:1", "0:1:1000000000000"] {
+            assert!(parse_values("v", bad).is_err(), "{bad}");
+        }
+    }
+}

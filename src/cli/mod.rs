@@ -1,0 +1,22 @@
+//! The `fricosc` command-line tool: its subcommands ([`cmd`]), reports, formats
+//! and I/O, over the library. Behind the `cli` feature; not part of the
+//! library's API (the binary, the fuzz targets and the tests use it).
+#![allow(missing_docs)]
+
+pub mod batch;
+pub mod bench;
+pub mod claims;
+pub mod cmd;
+pub mod export;
+pub mod figures;
+pub mod grid;
+pub mod history;
+pub mod input;
+pub mod output;
+pub mod plot;
+pub mod rows;
+pub mod scan;
+pub mod scene;
+pub mod stress;
+pub mod suite;
+pub mod validate;

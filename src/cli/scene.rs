@@ -1,0 +1,159 @@
+//! `fricosc scene`: the core's physical scenes ([`crate::scene`]) read
+//! from JSON, with the capped file reader, their schema, and their report.
+
+use crate::error::{Error, Result};
+pub use crate::scene::*;
+
+/// Parse a scene from JSON text; `source` names the file in errors. A scene is a
+/// JSON object: serde would also accept its fields as a positional array.
+pub fn parse(text: &str, source: &str) -> Result<Scene> {
+    if !text.trim_start().starts_with('{') {
+        return Err(Error::Parse { context: source.into(), reason: "a scene is a JSON object ({...})".into() });
+    }
+    serde_json::from_str(text).map_err(|e| Error::Parse { context: source.into(), reason: e.to_string() })
+}
+
+/// Solve a scene, one answer per amplitude; `source` is its path (tables are
+/// found relative to it and read with the command line's cap).
+pub fn solve(s: &Scene, source: &str) -> Result<Vec<SceneResult>> {
+    solve_with_progress(s, source, &|_| {})
+}
+
+/// [`solve`], calling `progress(k)` after each chunk of `k` velocities.
+pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sync)) -> Result<Vec<SceneResult>> {
+    solve_with(s, source, &|path| crate::cli::input::read_capped(path, crate::cli::input::MAX_SMALL_BYTES), progress)
+}
+
+/// The JSON Schema of the scene file (schemars).
+pub fn schema() -> String {
+    serde_json::to_string_pretty(&schemars::schema_for!(Scene)).unwrap_or_default()
+}
+
+/// An amplitude in a readable unit: nm, μm, mm or m, four significant digits.
+pub fn length_label(m: f64) -> String {
+    let (scale, unit) = match m.abs() {
+        x if x < 1e-6 => (1e9, "nm"),
+        x if x < 1e-3 => (1e6, "μm"),
+        x if x < 1.0 => (1e3, "mm"),
+        _ => (1.0, "m"),
+    };
+    let v: f64 = format!("{:.3e}", m * scale).parse().unwrap_or(m * scale);
+    format!("{} {unit}", crate::cli::output::num(v).trim_end_matches(".0"))
+}
+
+/// `mu_macro` against the sliding velocity, one curve per answer (the seed's
+/// Fig. 9 layout: one scene's amplitudes as a family in viridis order, with the
+/// line of sliding without oscillation, `mu = mu0`, in black). Each answer
+/// comes with its scene's label; with several scenes the legend names both.
+/// The velocity axis is logarithmic where the velocities are positive and span
+/// two decades or more.
+pub fn family_chart(results: &[(String, SceneResult)]) -> crate::cli::plot::Chart {
+    use crate::cli::plot::{family_color, Axis, Chart, Key, Rule, Series, Style};
+    let scenes: Vec<&str> = results.iter().fold(vec![], |mut v, (l, _)| {
+        if !v.contains(&l.as_str()) {
+            v.push(l.as_str());
+        }
+        v
+    });
+    let (mut vmin, mut vmax, mut mumax) = (f64::INFINITY, 0.0f64, 0.0f64);
+    let mut positive_min = f64::INFINITY;
+    for (_, r) in results {
+        for x in &r.rows {
+            vmin = vmin.min(x.velocity_m_per_s);
+            vmax = vmax.max(x.velocity_m_per_s);
+            if x.velocity_m_per_s > 0.0 {
+                positive_min = positive_min.min(x.velocity_m_per_s);
+            }
+        }
+        mumax = mumax.max(r.mu_static.max(r.rows.iter().map(|x| x.mu_macro).fold(0.0, f64::max)));
+    }
+    let mu0s: Vec<f64> = results.iter().map(|(_, r)| r.mu0).collect();
+    let log = vmin > 0.0 && vmax >= 100.0 * vmin;
+    let x = if log {
+        Axis::log("sliding velocity v_{0} (m/s)", (positive_min / 1.2, vmax * 1.2))
+    } else if vmax > vmin {
+        Axis::linear("sliding velocity v_{0} (m/s)", (vmin, vmax))
+    } else if vmin > 0.0 {
+        // One velocity: a range around it.
+        Axis::linear("sliding velocity v_{0} (m/s)", (0.5 * vmin, 1.5 * vmin))
+    } else {
+        Axis::linear("sliding velocity v_{0} (m/s)", (0.0, 1.0))
+    };
+    let top = mumax.max(mu0s.iter().copied().fold(0.0, f64::max)) * 1.08;
+    let n = results.len();
+    let series = results
+        .iter()
+        .enumerate()
+        .map(|(i, (label, r))| {
+            let du = length_label(r.amplitude_m);
+            let text = if scenes.len() > 1 { format!("{label}: {du}") } else { du };
+            Series {
+                label: text,
+                points: r.rows.iter().map(|x| (x.velocity_m_per_s, x.mu_macro)).collect(),
+                // A lone velocity is a point: drawn as a marker.
+                style: if r.rows.len() < 2 {
+                    Style::line(family_color(i, n)).marker(crate::cli::plot::Marker::Circle)
+                } else {
+                    Style::line(family_color(i, n))
+                },
+                legend: true,
+            }
+        })
+        .collect();
+    let mut key = vec![Key::Heading("Δu_{z}".into())];
+    // Sliding without oscillation: mu = mu0 (one line per distinct mu0).
+    let mut rules = vec![];
+    for &m in &mu0s {
+        if m > 0.0 && !rules.iter().any(|r: &Rule| r.at == m) {
+            rules.push(Rule { horizontal: true, at: m });
+        }
+    }
+    if !rules.is_empty() {
+        key.push(Key::Entry(Style::line(crate::cli::plot::Rgb(0x99, 0x99, 0x99)).width(0.5), "0 (μ_{0})".into()));
+    }
+    Chart {
+        title: format!("mu_macro against velocity: {}", scenes.join(", ")),
+        x,
+        y: Axis::linear("friction coefficient μ_{macro}", (0.0, if top > 0.0 { top } else { 1.0 })),
+        series,
+        key,
+        rules,
+    }
+}
+
+impl crate::cli::export::Report for SceneResult {
+    /// One row per velocity.
+    fn columns(&self) -> Vec<String> {
+        [
+            "velocity_m_per_s",
+            "vbar",
+            "vhat",
+            "mu_macro",
+            "mu_ratio",
+            "mean_friction_force_n",
+            "mean_normal_force_n",
+            "regime",
+        ]
+        .map(String::from)
+        .to_vec()
+    }
+
+    fn rows(&self) -> Vec<Vec<String>> {
+        let n = crate::cli::output::num;
+        self.rows
+            .iter()
+            .map(|x| {
+                vec![
+                    n(x.velocity_m_per_s),
+                    n(x.vbar),
+                    n(x.vhat),
+                    n(x.mu_macro),
+                    n(x.mu_ratio),
+                    n(x.mean_friction_force_n),
+                    n(x.mean_normal_force_n),
+                    x.regime.to_string(),
+                ]
+            })
+            .collect()
+    }
+}

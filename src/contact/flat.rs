@@ -1,0 +1,143 @@
+//! The flat cylindrical punch: one spring with `s = u0/du = 1/amp` (seed section 2).
+//!
+//! Forces here are in units of the static normal force: `kz u0` (normal) and
+//! `mu0 kz u0` (tangential), so that `amp = 0` (no oscillation) stays finite.
+
+use crate::error::{check_nonneg, Result};
+pub use crate::ratio::Ratio;
+use crate::special::one_minus_a_cos_asin;
+use crate::spring::{Event, EventKind, Regime, Spring};
+
+/// The exact steady state of a flat punch.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct FlatPoint {
+    /// Dimensionless velocity (eq. 3).
+    pub vbar: f64,
+    /// Amplitude `du/u0`.
+    pub amp: f64,
+    /// `mu_macro/mu0` and the reduction.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub ratio: Ratio,
+    /// `mu_static/mu0`, the limit `vbar -> 0+`: `1 - amp` for `amp <= 1`, else 0.
+    pub mu_static_ratio: f64,
+    /// Regime of the spring.
+    pub regime: Regime,
+    /// Mean normal force, units `kz u0` (1 without contact loss; eq. 20 with it).
+    pub mean_normal: f64,
+    /// Mean tangential force, units `mu0 kz u0`.
+    pub mean_tangential: f64,
+    /// Events of one period, forces in units of `kz u0` and `mu0 kz u0`.
+    pub events: Vec<Event>,
+    /// Root-finder function evaluations spent.
+    pub root_evaluations: u32,
+}
+
+/// The spring of a flat punch of amplitude `amp`: `s = 1/amp`, with
+/// `1 - s = (amp - 1)/amp` passed unrounded (the contact phase near `amp = 1`).
+/// `s` comes from [`spring_s`], the one place it is formed (with its stand-in
+/// for `amp = 0`).
+pub fn spring(vbar: f64, amp: f64, events: bool) -> Spring {
+    let s = spring_s(amp);
+    // 1 - s = (amp - 1)/amp without cancellation (only used where |s| < 1).
+    let one_minus_s = if amp > 0.0 { (amp - 1.0) / amp } else { -s };
+    Spring::with_complement(s, one_minus_s, vbar, events)
+}
+
+/// `s = u0/du = 1/amp` of the flat punch's spring; `f64::MAX` where `1/amp`
+/// overflows (`amp = 0` or subnormal): a spring always in contact, whose stick
+/// phases and deficit do not depend on `s`.
+pub fn spring_s(amp: f64) -> f64 {
+    let s = 1.0 / amp;
+    if s.is_finite() {
+        s
+    } else {
+        f64::MAX
+    }
+}
+
+/// Mean normal force of the flat punch over a period, units `kz u0`: 1 without
+/// contact loss, `amp <B>(1/amp)` (eq. 20) with it.
+pub fn mean_normal(amp: f64) -> f64 {
+    if amp <= 1.0 {
+        1.0
+    } else {
+        amp * crate::spring::mean_normal(spring_s(amp))
+    }
+}
+
+/// Reduction from the spring: for `amp <= 1`, `<B> = s = 1/amp` and the
+/// reduction is `amp * D` (no division by a large `s`).
+fn ratio_of(sp: &Spring, amp: f64) -> Result<Ratio> {
+    let context = "flat punch";
+    if amp <= 1.0 {
+        Ratio::from_reduction(amp * sp.deficit, context)
+    } else if matches!(sp.regime, Regime::JumpingStickFirst | Regime::JumpingSlipFirst) {
+        // The smaller of the two from its own integral (full relative accuracy:
+        // mu -> 0 as vbar -> 0, the reduction as vbar -> 1), the other its complement.
+        let mu_ratio = sp.mean_tangential() / sp.mean_normal;
+        if mu_ratio < 0.5 {
+            Ratio::from_mu(mu_ratio, context)
+        } else {
+            Ratio::from_deficit(sp.deficit, sp.mean_normal, context)
+        }
+    } else {
+        Ratio::from_deficit(sp.deficit, sp.mean_normal, context)
+    }
+}
+
+/// `mu_macro/mu0` of a flat punch; `vbar, amp` finite and `>= 0`.
+///
+/// ```
+/// let r = fricosc::flat::ratio(0.5, 0.5).unwrap();
+/// assert!((r.mu_ratio - 0.8992738983331656556).abs() < 1e-15);
+/// ```
+pub fn ratio(vbar: f64, amp: f64) -> Result<Ratio> {
+    check_nonneg("vbar", vbar)?;
+    check_nonneg("amp", amp)?;
+    ratio_of(&spring(vbar, amp, false), amp)
+}
+
+/// `mu_static/mu0` of a flat punch: the minimum normal force over the mean, `(1 - amp)_+`.
+pub fn mu_static_ratio(amp: f64) -> f64 {
+    (1.0 - amp).max(0.0)
+}
+
+/// The full steady state of a flat punch, with events to full precision.
+///
+/// `mu_ratio` is the value of [`ratio`] (one value per input, whatever the
+/// command); the events come from a second solve at the event tolerance.
+pub fn point(vbar: f64, amp: f64) -> Result<FlatPoint> {
+    let ratio = ratio(vbar, amp)?;
+    let sp = spring(vbar, amp, true);
+    // In units of kz u0 every event force lies on the bound (1 - amp cos tau)_+
+    // and on the stick line: amp F(tau_s) = 1 - amp sqrt(1 - vbar^2) after a
+    // tangent start (cancellation-free), 0 after a start at contact, plus
+    // amp vbar L at the stick's end.
+    let start = if sp.regime == Regime::JumpingStickFirst { 0.0 } else { one_minus_a_cos_asin(amp, vbar) };
+    let length = sp.stick.map_or(0.0, |st| st.length);
+    let events = sp
+        .events()
+        .into_iter()
+        .map(|e| {
+            let f = match e.kind {
+                EventKind::Contact | EventKind::LossOfContact => 0.0,
+                EventKind::Stick => start,
+                EventKind::Slip => start + amp * vbar * length,
+            };
+            Event { normal: f, tangential: f, ..e }
+        })
+        .collect();
+    let mean_normal = mean_normal(amp);
+    Ok(FlatPoint {
+        vbar,
+        amp,
+        ratio,
+        mu_static_ratio: mu_static_ratio(amp),
+        regime: sp.regime,
+        mean_normal,
+        mean_tangential: ratio.mu_ratio * mean_normal,
+        events,
+        root_evaluations: sp.root_evaluations,
+    })
+}

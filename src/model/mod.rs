@@ -1,0 +1,28 @@
+//! The model: checked results ([`ratio::Ratio`]) and one spring ([`spring`]).
+pub mod ratio;
+pub mod spring;
+
+use crate::error::{Error, Result};
+
+/// `vbar` (eq. 3) from the velocity `vhat = vbar amp` (eq. 15), which the seed
+/// uses for its jumping amplitudes: `vhat / amp`, refused where `amp` is 0 (the
+/// velocity has no `vbar` then) or the quotient overflows.
+///
+/// ```
+/// assert_eq!(fricosc::model::vbar_from_vhat(0.3, 2.0).unwrap(), 0.15);
+/// assert!(fricosc::model::vbar_from_vhat(0.3, 0.0).is_err());
+/// ```
+pub fn vbar_from_vhat(vhat: f64, amp: f64) -> Result<f64> {
+    crate::error::check_nonneg("vhat", vhat)?;
+    crate::error::check_nonneg("amp", amp)?;
+    if amp > 0.0 {
+        let vbar = vhat / amp;
+        if vbar.is_finite() {
+            Ok(vbar)
+        } else {
+            Err(Error::param("vbar", vbar, &format!("vhat / amp = {vhat:?} / {amp:?} overflows double precision")))
+        }
+    } else {
+        Err(Error::param("amp", amp, "vhat needs amp > 0 (vbar = vhat / amp)"))
+    }
+}

@@ -1,0 +1,60 @@
+"""Type stub of the Rust extension (src/python/src/lib.rs)."""
+
+from typing import Any, Dict, List, Optional, Tuple, final
+
+import numpy as np
+import numpy.typing as npt
+
+__all__ = ["CoreShape", "evaluate", "point", "history", "validate", "scene", "validate_history", "default_tol", "__version__"]
+__version__: str
+
+@final
+class CoreShape:
+    @staticmethod
+    def parse(spec: str) -> CoreShape: ...
+    @staticmethod
+    def from_table(
+        x: npt.NDArray[np.float64], v: npt.NDArray[np.float64], u0: float, profile: bool, name: str
+    ) -> CoreShape: ...
+    @property
+    def name(self) -> str: ...
+
+def evaluate(
+    shape: CoreShape, v: npt.NDArray[np.float64], a: npt.NDArray[np.float64], vhat: bool, tol: float
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+def point(shape: CoreShape, v: float, a: float, vhat: bool, tol: float) -> str: ...
+def history(
+    shape: CoreShape,
+    v: float,
+    a: float,
+    vhat: bool,
+    periods: int,
+    samples: int,
+    springs: int,
+    spring_at: List[float],
+) -> Dict[str, Any]: ...
+def validate(
+    shape: CoreShape,
+    velocity: npt.NDArray[np.float64],
+    amp: npt.NDArray[np.float64],
+    friction: npt.NDArray[np.float64],
+    vhat: bool,
+    mu: bool,
+    mu0: Optional[float],
+    at_rest: str,
+    tolerance: float,
+) -> str: ...
+def scene(text: Optional[str], source: str) -> str: ...
+def validate_history(
+    shape: CoreShape,
+    time: npt.NDArray[np.float64],
+    is_tau: bool,
+    tangential: npt.NDArray[np.float64],
+    normal: Optional[npt.NDArray[np.float64]],
+    v: float,
+    a: float,
+    vhat: bool,
+    omega: Optional[float],
+    tolerance: float,
+) -> str: ...
+def default_tol() -> float: ...

@@ -1,0 +1,334 @@
+"""The Python package against independent values and against the command line.
+
+Run from the repository: ``pytest src/python/tests`` after
+``pip install ./src/python``. The comparisons with the command line need
+the release binary (``cargo build --release``); they are skipped without it,
+unless ``FRICOSC_REQUIRE_BIN=1`` (CI) makes its absence a failure.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import os
+import pathlib
+import subprocess
+from decimal import Decimal
+from typing import Any, Callable, Dict, List, Tuple
+
+import numpy as np
+import numpy.typing as npt
+import pytest
+
+import fricosc
+
+ROOT = pathlib.Path(__file__).resolve().parents[3]
+BIN = ROOT / "target" / "release" / "fricosc"
+
+
+def cli(*args: str) -> str:
+    if not BIN.exists():
+        if os.environ.get("FRICOSC_REQUIRE_BIN") == "1":
+            pytest.fail(f"{BIN} missing: run cargo build --release")
+        pytest.skip(f"{BIN} missing: run cargo build --release")
+    return subprocess.run([str(BIN), *args], check=True, capture_output=True, text=True).stdout
+
+
+def cli_error(*args: str) -> str:
+    if not BIN.exists():
+        if os.environ.get("FRICOSC_REQUIRE_BIN") == "1":
+            pytest.fail(f"{BIN} missing: run cargo build --release")
+        pytest.skip(f"{BIN} missing: run cargo build --release")
+    out = subprocess.run([str(BIN), *args], capture_output=True, text=True)
+    assert out.returncode == 2 and out.stdout == ""
+    return out.stderr.strip().removeprefix("error: ")
+
+
+def reference_cases() -> List[Dict[str, Any]]:
+    data = json.loads((ROOT / "data" / "reference-values.json").read_text())
+    cases: List[Dict[str, Any]] = data["cases"]
+    return cases
+
+
+def test_reference_values_through_the_numpy_path() -> None:
+    """Every 40-digit reference value, all of one shape in one array call."""
+    cases = reference_cases()
+    for shape in sorted({c["shape"] for c in cases}):
+        mine = [c for c in cases if c["shape"] == shape]
+        vbar = np.array([c["vbar"] for c in mine])
+        amp = np.array([c["amp"] for c in mine])
+        mu = fricosc.mu_ratio(shape, vbar, amp)
+        red = fricosc.reduction(shape, vbar, amp)
+        assert isinstance(mu, np.ndarray) and isinstance(red, np.ndarray)
+        for c, m, r in zip(mine, mu, red):
+            assert abs(Decimal(float(m)) - Decimal(c["mu_ratio"])) < Decimal("1e-14"), (c, m)
+            assert abs(Decimal(float(r)) - Decimal(c["reduction"])) < Decimal("1e-14"), (c, r)
+
+
+def test_bit_identical_to_the_command_line() -> None:
+    """The same inputs through `fricosc table` and through numpy give the same doubles."""
+    vbar = [0.0, 1e-9, 0.1, 0.3, 0.5, 0.7, 0.9, 0.999999, 1.0, 1.2]
+    amps = [0.0, 0.3, 0.999, 1.0, 1.5, 4.0]
+    for shape in ["flat", "parabolic", "cone", "power:3.7", "flat-tip:0.4"]:
+        text = cli("table", "--shape", shape, "--vbar", ",".join(map(repr, vbar)),
+                   "--amp", ",".join(map(repr, amps)), "--format", "csv")
+        rows = list(csv.DictReader(io.StringIO(text)))
+        v = np.array([float(r["vbar"]) for r in rows])
+        a = np.array([float(r["amp"]) for r in rows])
+        mu = fricosc.mu_ratio(shape, v, a)
+        red = fricosc.reduction(shape, v, a)
+        assert isinstance(mu, np.ndarray) and isinstance(red, np.ndarray)
+        assert mu.tolist() == [float(r["mu_ratio"]) for r in rows], shape
+        assert red.tolist() == [float(r["reduction"]) for r in rows], shape
+
+
+def test_point_is_the_command_lines_json() -> None:
+    for shape, v, a in [("flat", 0.3, 0.5), ("parabolic", 0.2, 1.4), ("flat-tip:0.5", 0.3, 0.4)]:
+        assert fricosc.point(shape, v, a) == json.loads(cli("point", "--shape", shape, "--vbar", repr(v), "--amp", repr(a)))
+    # Key order too: shape, vbar, amp first.
+    assert list(fricosc.point("flat", 0.3, 0.5))[:3] == ["shape", "vbar", "amp"]
+
+
+def test_history_is_the_command_lines() -> None:
+    for shape, extra in [("flat", []), ("parabolic", ["--springs", "300", "--spring-at", "0.2,0.9"])]:
+        doc = json.loads(cli("history", "--shape", shape, "--vbar", "0.3", "--amp", "1.3", "--samples", "40", *extra))
+        h = fricosc.history(shape, 0.3, 1.3, samples=40, springs=300 if extra else 4000,
+                            spring_at=[0.2, 0.9] if extra else [])
+        assert h["tau"].tolist() == [s["tau"] for s in doc["samples"]]
+        assert h["normal"].tolist() == [s["normal"] for s in doc["samples"]]
+        assert h["tangential"].tolist() == [s["tangential"] for s in doc["samples"]]
+        assert h["event"] == [s.get("event") for s in doc["samples"]]
+        if extra:
+            assert h["springs"].tolist() == [s["springs"] for s in doc["samples"]]
+    flat = fricosc.history("flat", 0.3, 1.3, samples=40)
+    assert {"contact", "loss_of_contact", "stick"} <= {e for e in flat["event"] if e}
+
+
+def test_broadcasting_shapes() -> None:
+    v = np.linspace(0.0, 1.2, 5)
+    a = np.array([0.2, 0.8, 1.6])
+    out = fricosc.mu_ratio("parabolic", v[:, None], a[None, :])
+    assert isinstance(out, np.ndarray) and out.shape == (5, 3) and out.dtype == np.float64
+    for i in range(5):
+        for j in range(3):
+            assert out[i, j] == fricosc.mu_ratio("parabolic", float(v[i]), float(a[j]))
+    assert np.asarray(fricosc.mu_ratio("flat", v, 0.5)).shape == (5,)
+    assert np.asarray(fricosc.mu_ratio("flat", 0.5, a.reshape(3, 1, 1))).shape == (3, 1, 1)
+    assert np.asarray(fricosc.mu_ratio("flat", np.zeros((0, 4)), 0.5)).shape == (0, 4)
+    scalar = fricosc.mu_ratio("flat", 0.2, 0.5)
+    assert type(scalar) is float and scalar == 0.7145191049466343
+    # A 0-d array is a scalar too; lists and tuples are arrays.
+    assert type(fricosc.mu_ratio("flat", np.float64(0.2), np.array(0.5))) is float
+    assert np.asarray(fricosc.reduction("flat", (0.2, 0.3), [0.5])).shape == (2,)
+    with pytest.raises(ValueError, match="broadcast"):
+        fricosc.mu_ratio("flat", [0.1, 0.2], [0.1, 0.2, 0.3])
+
+
+def test_vhat_and_tolerance() -> None:
+    a = np.array([0.5, 2.0, 4.0])
+    assert np.array_equal(np.asarray(fricosc.mu_ratio("flat", vhat=0.6, amp=a)),
+                          np.asarray(fricosc.mu_ratio("flat", 0.6 / a, a)))
+    loose = fricosc.mu_ratio("parabolic", 0.3, 0.4, tol=1e-6)
+    tight = fricosc.mu_ratio("parabolic", 0.3, 0.4)
+    assert isinstance(loose, float) and isinstance(tight, float) and abs(loose - tight) < 1e-6
+    assert fricosc.DEFAULT_TOL > 0
+
+
+def test_shape_classes_equal_their_strings(tmp_path: pathlib.Path) -> None:
+    pairs = [(fricosc.Flat(), "flat"), (fricosc.PowerLaw(2), "parabolic"), (fricosc.PowerLaw(2.5), "power:2.5"),
+             (fricosc.FlatTip(0.5), "flat-tip:0.5")]
+    for cls, spec in pairs:
+        assert cls.name == spec
+        assert fricosc.mu_ratio(cls, 0.3, 0.7) == fricosc.mu_ratio(spec, 0.3, 0.7)
+    # A tabulated sphere from arrays equals the same table from a file.
+    r = np.linspace(0.0, 0.3, 301)
+    f = 1.0 - np.sqrt(1.0 - r * r)
+    path = tmp_path / "sphere.csv"
+    path.write_text("r,f\n" + "".join(f"{x!r},{y!r}\n" for x, y in zip(r.tolist(), f.tolist())))
+    arrays = fricosc.Profile(r, f, 1e-3)
+    from_file = fricosc.Shape(f"profile:{path}@1e-3")
+    v, a = np.array([0.0, 0.3, 0.8]), np.array([0.4, 1.2, 0.9])
+    assert np.array_equal(np.asarray(fricosc.mu_ratio(arrays, v, a)), np.asarray(fricosc.mu_ratio(from_file, v, a)))
+    # ... and reproduces the paraboloid to the table's accuracy.
+    diff = np.asarray(fricosc.mu_ratio(arrays, v, a)) - np.asarray(fricosc.mu_ratio("parabolic", v, a))
+    assert float(np.max(np.abs(diff))) < 1e-3
+    x = np.linspace(0.0, 2.0, 201)
+    g = fricosc.EquivalentProfile(x, x * x, 1.0)
+    assert abs(float(fricosc.mu_ratio(g, 0.3, 0.4)) - float(fricosc.mu_ratio("parabolic", 0.3, 0.4))) < 1e-9
+
+
+@pytest.mark.parametrize(
+    "call, error, message",
+    [
+        (lambda: fricosc.mu_ratio("flat", float("nan"), 0.5), ValueError, "invalid vbar = NaN: must be finite"),
+        (lambda: fricosc.mu_ratio("flat", [0.1, 0.2, float("inf")], 0.5), ValueError, r"invalid vbar = inf.*\(at index 2\)"),
+        (lambda: fricosc.mu_ratio("flat", 0.1, [[0.1, 0.2], [0.3, -1.0]]), ValueError, r"invalid amp = -1.0.*\(at index \(1, 1\)\)"),
+        (lambda: fricosc.mu_ratio("flat", -0.0 - 1e-300, 0.5), ValueError, "must be >= 0"),
+        (lambda: fricosc.mu_ratio("nonsense", 0.1, 0.5), ValueError, "invalid shape 'nonsense'"),
+        (lambda: fricosc.mu_ratio("power:-1", 0.1, 0.5), ValueError, "exponent must be finite and > 0"),
+        (lambda: fricosc.mu_ratio("profile:/nonexistent.csv@1", 0.1, 0.5), ValueError, "cannot read /nonexistent.csv"),
+        (lambda: fricosc.mu_ratio("flat", 0.1, 0.5, tol=0.0), ValueError, "invalid tol = 0.0"),
+        (lambda: fricosc.mu_ratio("flat", vhat=0.3, amp=0.0), ValueError, "vhat needs amp > 0"),
+        (lambda: fricosc.mu_ratio("flat", vhat=1e308, amp=1e-10), ValueError, "overflows double precision"),
+        (lambda: fricosc.mu_ratio("flat", 0.1, vhat=0.1, amp=0.5), TypeError, "exactly one of vbar"),
+        (lambda: fricosc.mu_ratio("flat", 0.1), TypeError, "amp"),
+        (lambda: fricosc.mu_ratio("flat", "0.1", 0.5), TypeError, "vbar must be a number"),
+        (lambda: fricosc.mu_ratio("flat", [0.1, "x"], 0.5), TypeError, "vbar must be a number"),  # type: ignore[arg-type]
+        (lambda: fricosc.mu_ratio("flat", 0.1, {"a": 1}), TypeError, "amp must be a number"),  # type: ignore[arg-type]
+        (lambda: fricosc.mu_ratio(3, 0.1, 0.5), TypeError, "a shape is a string"),  # type: ignore[arg-type]
+        (lambda: fricosc.Profile([0.0, 1.0, 2.0], [0.0, 2.0, 1.0], 0.5), ValueError, "must not decrease"),
+        (lambda: fricosc.Profile([0.0, 1.0], [0.0, 1.0], 0.5), ValueError, "at least 3 rows"),
+        (lambda: fricosc.Profile([[0.0, 1.0]], [0.0, 1.0], 0.5), ValueError, "one-dimensional"),
+        (lambda: fricosc.Profile([0.0, 1.0, float("nan")], [0.0, 1.0, 2.0], 0.5), ValueError, "finite"),
+        (lambda: fricosc.point("flat", [0.1, 0.2], 0.5), TypeError, "vbar must be a number"),  # type: ignore[arg-type]
+        (lambda: fricosc.history("flat", 0.1, 0.5, samples=0), ValueError, "invalid samples = 0"),
+        (lambda: fricosc.history("flat", 0.1, 0.5, samples=1.5), TypeError, "samples must be an integer"),  # type: ignore[arg-type]
+        (lambda: fricosc.history("parabolic", 0.1, 0.5, springs=2_000_000), ValueError, "more than the limit"),
+    ],
+)
+def test_bad_input(call: Callable[[], object], error: type, message: str) -> None:
+    with pytest.raises(error, match=message):
+        call()
+
+
+def test_messages_are_the_command_lines() -> None:
+    cases: List[Tuple[List[str], Callable[[], object]]] = [
+        (["point", "--shape", "nonsense", "--vbar", "0.1", "--amp", "0.5"], lambda: fricosc.point("nonsense", 0.1, 0.5)),
+        (["point", "--vbar", "0.1", "--amp", "-1"], lambda: fricosc.point("flat", 0.1, -1.0)),
+        (["point", "--vhat", "1e308", "--amp", "1e-10"], lambda: fricosc.point("flat", vhat=1e308, amp=1e-10)),
+        (["point", "--shape", "power:0.01", "--vbar", "0.1", "--amp", "0.5"], lambda: fricosc.point("power:0.01", 0.1, 0.5)),
+    ]
+    for args, py in cases:
+        with pytest.raises(ValueError) as e:
+            py()
+        assert str(e.value) == cli_error(*args)
+
+
+def test_a_million_points() -> None:
+    """10^6 random flat points in one call (in parallel, the GIL released):
+    every value in range and equal to the same point computed alone."""
+    rng = np.random.default_rng(7)
+    v = rng.uniform(0.0, 1.2, 1_000_000)
+    a = rng.uniform(0.0, 3.0, 1_000_000)
+    mu = np.asarray(fricosc.mu_ratio("flat", v, a))
+    red = np.asarray(fricosc.reduction("flat", v, a))
+    assert mu.shape == (1_000_000,) and np.all((mu >= 0) & (mu <= 1)) and np.all(np.isfinite(red))
+    assert np.all(mu[v >= 1.0] == 1.0)
+    for i in rng.integers(0, 1_000_000, 50):
+        assert mu[i] == fricosc.mu_ratio("flat", float(v[i]), float(a[i]))
+        assert red[i] == fricosc.reduction("flat", float(v[i]), float(a[i]))
+    # Parallel (>= 256 elements) and sequential evaluation agree bit for bit.
+    small = np.asarray(fricosc.mu_ratio("parabolic", v[:100], a[:100]))
+    large = np.asarray(fricosc.mu_ratio("parabolic", v[:1000], a[:1000]))
+    assert np.array_equal(small, large[:100])
+
+
+def test_threads_share_the_module() -> None:
+    """Calls from several Python threads at once (the GIL is released inside)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    v = np.linspace(0.0, 1.0, 2000)
+    expected = np.asarray(fricosc.mu_ratio("cone", v, 0.7))
+    with ThreadPoolExecutor(4) as pool:
+        results = list(pool.map(lambda _: np.asarray(fricosc.mu_ratio("cone", v, 0.7)), range(8)))
+    assert all(np.array_equal(r, expected) for r in results)
+
+
+def test_fig7_example_runs(tmp_path: pathlib.Path) -> None:
+    """The example script draws Fig. 7 (only where matplotlib is installed)."""
+    pytest.importorskip("matplotlib")
+    import runpy
+    import sys
+
+    out = tmp_path / "fig7.png"
+    argv = sys.argv
+    sys.argv = ["plot_fig7.py", str(out)]
+    try:
+        runpy.run_path(str(ROOT / "src" / "python" / "examples" / "plot_fig7.py"), run_name="__main__")
+    finally:
+        sys.argv = argv
+    assert out.stat().st_size > 10_000
+
+
+def test_readme_session_works_as_printed() -> None:
+    """README's Python session, run as a doctest: every output as printed."""
+    import doctest
+
+    text = (ROOT / "README.md").read_text()
+    start = text.index("```python\n>>> import numpy as np, fricosc") + len("```python\n")
+    block = text[start : text.index("```", start)]
+    test = doctest.DocTestParser().get_doctest(block, {}, "README", "README.md", 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    runner.run(test)
+    assert runner.failures == 0 and runner.tries >= 8
+
+
+def test_validate_is_the_command_lines() -> None:
+    """The README walk-through's buggy table: the same report (findings, errors,
+    regimes) through Python as through `fricosc validate`."""
+    script = ROOT / "src" / "python" / "examples" / "buggy_stepper.py"
+    import sys
+
+    text = subprocess.run([sys.executable, str(script)], check=True, capture_output=True, text=True).stdout
+    path = ROOT / "target" / "py-buggy-run.csv"
+    path.parent.mkdir(exist_ok=True)
+    path.write_text(text)
+    expected = json.loads(cli("validate", str(path), "--format", "json"))
+    rows = list(csv.DictReader(io.StringIO(text)))
+    table = {k: [r[k] for r in rows] for k in ("shape", "vbar", "amp", "mu_ratio")}
+    got = fricosc.validate(table)
+    assert got == expected
+    assert [f["kind"] for f in got["findings"]] == ["above_one", "not_one_above_critical", "not_steady", "at_rest_convention"]
+    relaxed = fricosc.validate(table, at_rest="relaxed")
+    assert "at_rest_convention" not in [f["kind"] for f in relaxed["findings"]]
+    # vhat and mu with mu0; a conflicting shape; a missing mu0.
+    vh = {"vhat": [0.15, 0.6], "amp": [0.5, 2.0], "mu": [0.4 * float(fricosc.mu_ratio("cone", 0.3, 0.5)),
+                                                          0.4 * float(fricosc.mu_ratio("cone", 0.3, 2.0))]}
+    assert fricosc.validate(vh, "cone", mu0=0.4)["max_abs_error"] < 1e-15
+    with pytest.raises(ValueError, match="mu0 is needed"):
+        fricosc.validate(vh, "cone")
+    with pytest.raises(ValueError, match="shape= says 'cone'"):
+        fricosc.validate(table, "cone")
+    with pytest.raises(TypeError, match="mapping of columns"):
+        fricosc.validate([1, 2, 3])
+
+
+def test_scene_is_the_command_lines() -> None:
+    """Every example scene through Python (from its path, and as a dict where it
+    names no file) gives `fricosc scene`'s JSON."""
+    for path in sorted((ROOT / "data" / "scenes").glob("*.json")):
+        expected = json.loads(cli("scene", str(path), "--format", "json"))
+        assert fricosc.scene(str(path)) == expected, path.name
+        spec = json.loads(path.read_text())
+        if "profile" not in spec["indenter"]:
+            assert fricosc.scene(spec) == expected, path.name
+    with pytest.raises(ValueError, match="unknown field"):
+        fricosc.scene({"mu0": 0.4, "colour": "red"})
+    with pytest.raises(ValueError, match="cannot read"):
+        fricosc.scene("/nonexistent/scene.json")
+    with pytest.raises(TypeError, match="a scene is a dict"):
+        fricosc.scene(42)  # type: ignore[arg-type]
+
+
+def test_validate_history_is_the_command_lines() -> None:
+    """A stepped history (the built-in peer) through Python and through
+    `fricosc validate --history`: the same report; a time column with the period
+    found from the normal force gives the same events."""
+    text = cli("history", "--method", "stepping", "--steps-per-period", "500", "--periods", "3",
+               "--vbar", "0.3", "--amp", "1.5", "--format", "csv")
+    path = ROOT / "target" / "py-stepped-history.csv"
+    path.parent.mkdir(exist_ok=True)
+    path.write_text(text)
+    expected = json.loads(cli("validate", "--history", str(path), "--vbar", "0.3", "--amp", "1.5", "--format", "json"))
+    rows = list(csv.DictReader(io.StringIO(text)))
+    cols = {k: np.array([float(r[k]) for r in rows]) for k in ("tau", "normal", "tangential")}
+    got = fricosc.validate_history(cols, 0.3, 1.5)
+    assert json.loads(json.dumps(got)) == json.loads(json.dumps(expected))
+    assert [e["kind"] for e in got["events"]] == ["contact", "stick", "slip", "loss_of_contact"]
+    timed = fricosc.validate_history({"t": cols["tau"] / 100.0, "normal": cols["normal"], "tangential": cols["tangential"]},
+                                     vhat=0.45, amp=1.5)
+    assert [e["kind"] for e in timed["events"]] == [e["kind"] for e in got["events"]]
+    with pytest.raises(ValueError, match="one time column"):
+        fricosc.validate_history({"tangential": [0.0]}, 0.3, 1.5)

@@ -1,0 +1,39 @@
+#![no_main]
+//! The batch reader on arbitrary bytes (mirrored by tests/fuzz_mirror.rs), and
+//! the one-pass row scanner against serde_json (mirrored by tests/scan.rs): both
+//! accept the same inputs and pick the same rows and fields.
+use libfuzzer_sys::fuzz_target;
+
+const NAMES: [&str; 3] = ["shape", "vbar", "amp"];
+
+type Rows = Option<Vec<(String, Vec<Option<String>>)>>;
+
+fn by_serde(text: &str) -> Rows {
+    let rows = fricosc::cli::rows::raw_array(text).ok()?;
+    rows.iter()
+        .map(|r| {
+            let p = fricosc::cli::rows::pick(r, &NAMES).ok()?;
+            Some((r.get().to_string(), p.0.iter().map(|v| v.map(|v| v.get().to_string())).collect()))
+        })
+        .collect()
+}
+
+fn by_scan(text: &str) -> Rows {
+    let mut out = vec![];
+    fricosc::cli::scan::array_rows(text, &NAMES, |_, r| {
+        out.push((r.raw.to_string(), r.fields.iter().map(|v| v.map(String::from)).collect()));
+        Ok(())
+    })
+    .ok()?;
+    Some(out)
+}
+
+fuzz_target!(|data: &[u8]| {
+    if let Ok(text) = std::str::from_utf8(data) {
+        let _ = fricosc::cli::batch::run(text, "fuzz", None);
+        // Nesting beyond the scanner's depth limit is refused on purpose.
+        if text.matches(['[', '{']).count() < fricosc::cli::scan::MAX_DEPTH {
+            assert_eq!(by_scan(text), by_serde(text), "{text:?}");
+        }
+    }
+});
