@@ -1,18 +1,21 @@
-//! Typed errors of the library. Every message is one line and names the problem.
+//! The library's errors: what was asked of the physics and could not be done.
+//! Every message is one line and names the problem. Reading and writing files
+//! and streams, and exit codes, are the caller's business (the command line's
+//! own error type wraps this one).
 
 use thiserror::Error;
 
-/// Everything that can go wrong in fricosc, with the context to act on it.
+/// Everything that can go wrong in a computation, with the context to act on it.
 #[derive(Debug, Error)]
 #[non_exhaustive]
 pub enum Error {
     /// A numeric parameter is NaN, infinite or outside its domain.
-    #[error("invalid {name} = {value}: {reason}")]
+    #[error("invalid {name} = {value:?}: {reason}")]
     InvalidParameter {
-        /// Parameter name as the user wrote it (`vbar`, `amp`, ...).
-        name: String,
-        /// The offending value, as text.
-        value: String,
+        /// Parameter name as the user writes it (`vbar`, `amp`, ...).
+        name: &'static str,
+        /// The offending value.
+        value: f64,
         /// What is wrong with it.
         reason: String,
     },
@@ -24,44 +27,36 @@ pub enum Error {
         /// What is wrong with it.
         reason: String,
     },
-    /// Malformed input text (JSON, CSV, a number list).
+    /// The file a tabulated shape or a scene names could not be read (by the
+    /// reader the caller passed in; its error is kept as the source).
+    #[error("cannot read {path}: {source}")]
+    File {
+        /// The path as the specification names it.
+        path: String,
+        /// The reader's reason.
+        #[source]
+        source: Box<dyn std::error::Error + Send + Sync>,
+    },
+    /// Malformed input text or columns (a profile table, a scene, a table to validate).
     #[error("{context}: {reason}")]
     Parse {
-        /// Where: a file name, `stdin`, or an option name.
+        /// Where: a file name, a field, a row.
         context: String,
         /// What is wrong.
         reason: String,
     },
-    /// A file could not be read.
-    #[error("cannot read {path}: {source}")]
-    Io {
-        /// The path (or `stdin`).
-        path: String,
-        /// The operating system's reason.
-        #[source]
-        source: std::io::Error,
-    },
-    /// A file or stream could not be written.
-    #[error("cannot write {path}: {source}")]
-    Write {
-        /// The path (or `stdout`).
-        path: String,
-        /// The operating system's reason.
-        #[source]
-        source: std::io::Error,
-    },
     /// An internal result is not finite or outside its mathematical range: a bug
     /// of fricosc (or an input at the edge of what f64 can represent), never
-    /// reported as a number. The CLI exits with code 3.
+    /// reported as a number.
     #[error("internal error: {what} (please report this with the command that caused it)")]
     Internal {
         /// What was computed and the value it had.
         what: String,
     },
-    /// A request beyond the documented size limits.
+    /// A request beyond the documented size limits (checked before the work).
     #[error("{what}: {count} is more than the limit of {limit}")]
     TooLarge {
-        /// What is counted, and in what (`bytes of stdin`, `table rows`).
+        /// What is counted (`history rows`, `profile rows`).
         what: String,
         /// Its size.
         count: u128,
@@ -74,29 +69,23 @@ pub enum Error {
 pub type Result<T> = std::result::Result<T, Error>;
 
 impl Error {
-    /// An [`Error::Write`] for `path` from an I/O error.
-    pub fn write(path: &str, source: std::io::Error) -> Self {
-        Error::Write { path: path.into(), source }
-    }
-
-    /// An [`Error::Io`] (a failed read) for `path`.
-    pub fn read(path: &str, source: std::io::Error) -> Self {
-        Error::Io { path: path.into(), source }
-    }
-
-    /// True for a write to a closed pipe (the reader went away: not an error).
-    pub fn is_broken_pipe(&self) -> bool {
-        matches!(self, Error::Write { source, .. } if source.kind() == std::io::ErrorKind::BrokenPipe)
-    }
-
     /// Shorthand for [`Error::InvalidParameter`].
-    pub fn param(name: &str, value: f64, reason: &str) -> Self {
-        Error::InvalidParameter { name: name.into(), value: format!("{value:?}"), reason: reason.into() }
+    pub fn param(name: &'static str, value: f64, reason: &str) -> Self {
+        Error::InvalidParameter { name, value, reason: reason.into() }
+    }
+
+    /// True for an internal error (a bug to report, not bad input).
+    pub fn is_internal(&self) -> bool {
+        matches!(self, Error::Internal { .. })
     }
 }
 
-/// Check that `x` is finite and `>= 0`.
-pub fn check_nonneg(name: &str, x: f64) -> Result<f64> {
+/// Check that `x` is finite and `>= 0`: the check (and message) of every
+/// velocity and amplitude, for callers that check inputs before computing.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `name` otherwise.
+pub fn check_nonneg(name: &'static str, x: f64) -> Result<f64> {
     if !x.is_finite() {
         Err(Error::param(name, x, "must be finite"))
     } else if x < 0.0 {

@@ -7,8 +7,8 @@
 
 use clap::{Parser, Subcommand};
 use fricosc::cli::cmd::{self, emit, MethodArgs, Outcome, Velocity};
+use fricosc::cli::error::{Error, Result};
 use fricosc::cli::output::Format;
-use fricosc::error::{Error, Result};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -312,13 +312,9 @@ fn main() -> ExitCode {
         Ok(Outcome::Negative) => ExitCode::from(1),
         // The reader went away (`| head`): end quietly, as ripgrep does.
         Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
-        Err(e @ Error::Internal { .. }) => {
-            eprintln!("error: {e}");
-            ExitCode::from(3)
-        }
         Err(e) => {
             eprintln!("error: {e}");
-            ExitCode::from(2)
+            ExitCode::from(e.exit_code())
         }
     }
 }

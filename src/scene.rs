@@ -20,10 +20,8 @@
 //!   static force-indentation relation; the output says so.
 
 use crate::error::{Error, Result};
-use crate::mdr;
 use crate::root;
-use crate::shape::{evaluate, Shape, MAX_EXPONENT, MIN_EXPONENT};
-use rayon::prelude::*;
+use crate::shape::{Shape, MAX_EXPONENT, MIN_EXPONENT};
 use std::f64::consts::PI;
 
 /// One experiment.
@@ -308,20 +306,34 @@ struct Checked {
     g_star: f64,
     mu0: f64,
     omega: f64,
-    shape: Shape,
-    /// Flat: punch radius; MDR: `kappa c` of `g = kappa c x^n`.
-    geometry: f64,
-    /// A tabulated profile's path and its table, read and transformed once
-    /// (its normalised shape depends on the mean indentation).
-    profile: Option<(String, crate::profile::Table)>,
+    geometry: Geometry,
     velocities: Vec<f64>,
 }
 
-/// The tabulated shape at mean indentation `u0`, from the table read (and
-/// MDR-transformed) once per scene.
-fn tabulated(table: &crate::profile::Table, path: &str, u0: f64) -> Result<Shape> {
-    let t = table.at(u0)?;
-    Ok(Shape::Tabulated(std::sync::Arc::new(t), format!("profile:{path}@{u0:?}")))
+/// The indenter of a scene, checked, in SI units.
+enum Geometry {
+    /// A flat punch of this radius (m).
+    Flat { radius: f64 },
+    /// The MDR profile `g = kc |x|^n` (`kc = kappa(n) c` for `f = c r^n`).
+    Power { n: f64, kc: f64 },
+    /// A tabulated profile's path and its table, read and transformed once
+    /// (its normalised shape depends on the mean indentation).
+    Profile { path: String, table: crate::profile::Table },
+}
+
+impl Geometry {
+    /// The shape at mean indentation `u0` (m) and its contact radius (m).
+    fn at(&self, u0: f64) -> Result<(Shape, f64)> {
+        Ok(match self {
+            Geometry::Flat { radius } => (Shape::flat(), *radius),
+            Geometry::Power { n, kc } => (Shape::power(*n)?, (u0 / kc).powf(1.0 / n)),
+            Geometry::Profile { path, table } => {
+                let t = table.at(u0)?.named(&format!("profile:{path}@{u0:?}"));
+                let xc = t.contact_radius;
+                (Shape::from_contact(std::sync::Arc::new(t)), xc)
+            }
+        })
+    }
 }
 
 fn field(source: &str, path: &str, value: f64, ok: bool, what: &str) -> Result<f64> {
@@ -332,7 +344,7 @@ fn field(source: &str, path: &str, value: f64, ok: bool, what: &str) -> Result<f
     }
 }
 
-fn check(s: &Scene, source: &str, read: &dyn Fn(&str) -> Result<String>) -> Result<Checked> {
+fn check(s: &Scene, source: &str, read: crate::Reader) -> Result<Checked> {
     let m = &s.materials;
     let pos = |p: &str, v: f64| field(source, p, v, v > 0.0, "must be finite and > 0");
     let nu = |p: &str, v: f64| field(source, p, v, v > -1.0 && v <= 0.5, "must be in (-1, 0.5]");
@@ -365,9 +377,11 @@ fn check(s: &Scene, source: &str, read: &dyn Fn(&str) -> Result<String>) -> Resu
     let f_hz = pos("oscillation.frequency_hz", s.oscillation.frequency_hz)?;
     let omega = field(source, "oscillation.frequency_hz", f_hz, (2.0 * PI * f_hz).is_finite(), "overflows 2 pi f")?
         * (2.0 * PI);
-    let (shape, geometry) = match &s.indenter {
-        Indenter::FlatPunch { radius_m } => (Shape::Flat, pos("indenter.flat_punch.radius_m", *radius_m)?),
-        Indenter::Sphere { radius_m } => (Shape::Power(2.0), 1.0 / pos("indenter.sphere.radius_m", *radius_m)?),
+    let geometry = match &s.indenter {
+        Indenter::FlatPunch { radius_m } => Geometry::Flat { radius: pos("indenter.flat_punch.radius_m", *radius_m)? },
+        Indenter::Sphere { radius_m } => {
+            Geometry::Power { n: 2.0, kc: 1.0 / pos("indenter.sphere.radius_m", *radius_m)? }
+        }
         Indenter::Cone { half_angle_deg, slope } => {
             let slope = match (half_angle_deg, slope) {
                 (Some(h), None) => {
@@ -383,7 +397,7 @@ fn check(s: &Scene, source: &str, read: &dyn Fn(&str) -> Result<String>) -> Resu
                     })
                 }
             };
-            (Shape::Power(1.0), PI / 2.0 * slope)
+            Geometry::Power { n: 1.0, kc: PI / 2.0 * slope }
         }
         Indenter::PowerLaw { c, n } => {
             let n = field(
@@ -393,20 +407,15 @@ fn check(s: &Scene, source: &str, read: &dyn Fn(&str) -> Result<String>) -> Resu
                 (MIN_EXPONENT..=MAX_EXPONENT).contains(n),
                 "must be in [0.05, 1e6]",
             )?;
-            (Shape::Power(n), kappa(n) * pos("indenter.power_law.c", *c)?)
+            Geometry::Power { n, kc: kappa(n) * pos("indenter.power_law.c", *c)? }
         }
-        // Loaded once the mean indentation is known.
-        Indenter::Profile { .. } => (Shape::Flat, f64::NAN),
-    };
-    let profile = match &s.indenter {
         Indenter::Profile { file } => {
             let dir = std::path::Path::new(source).parent().unwrap_or(std::path::Path::new(""));
             let path = dir.join(file).to_string_lossy().into_owned();
-            let text = read(&path)?;
+            let text = read(&path).map_err(|e| Error::File { path: path.clone(), source: Box::new(e) })?;
             let table = crate::profile::Table::parse(&text, &path, true)?;
-            Some((path, table))
+            Geometry::Profile { path, table }
         }
-        _ => None,
     };
     let velocities = match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
         (Some(v), None) => {
@@ -437,7 +446,7 @@ fn check(s: &Scene, source: &str, read: &dyn Fn(&str) -> Result<String>) -> Resu
             })
         }
     };
-    Ok(Checked { e_star, g_star, mu0, omega, shape, geometry, profile, velocities })
+    Ok(Checked { e_star, g_star, mu0, omega, geometry, velocities })
 }
 
 /// `count` values from `start` to `stop` (inclusive; `names` are the three
@@ -542,27 +551,11 @@ fn family(s: &Scene, source: &str) -> Result<Vec<Amplitude>> {
 /// Contact radius, `kz`, and the mean normal force (N) at mean indentation `u0`, amplitude `du`.
 fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
     let amp = du / u0;
-    let loaded;
-    let shape = match &c.profile {
-        Some((path, table)) => {
-            loaded = tabulated(table, path, u0)?;
-            &loaded
-        }
-        None => &c.shape,
-    };
     // The contact radius from the scene's indenter; the force from the contact
     // (Contact::mean_normal, units E* x_c u0; the stiffness is 2 E* x_c).
-    let xc = match shape {
-        Shape::Flat => c.geometry,
-        Shape::Power(n) => (u0 / c.geometry).powf(1.0 / n),
-        Shape::Tabulated(t, _) => t.contact_radius,
-        // Scenes build their shapes from `indenter`: no registered shape reaches here.
-        Shape::Registered(r) => {
-            return Err(Error::InvalidShape { spec: r.0.name(), reason: "not available in scenes".into() })
-        }
-    };
+    let (shape, xc) = c.geometry.at(u0)?;
     let kz = 2.0 * c.e_star * xc;
-    let m = shape.with_contact(|k| k.mean_normal(amp))?;
+    let m = shape.contact().mean_normal(amp)?;
     Ok((xc, kz, kz * u0 * (m / 2.0)))
 }
 
@@ -590,7 +583,7 @@ pub fn velocity_count(s: &Scene) -> usize {
 pub fn solve_with(
     s: &Scene,
     source: &str,
-    read: &dyn Fn(&str) -> Result<String>,
+    read: crate::Reader,
     progress: &(dyn Fn(u64) + Sync),
 ) -> Result<Vec<SceneResult>> {
     let c = check(s, source, read)?;
@@ -636,10 +629,7 @@ fn solve_amplitude(
             })
         }
     };
-    let shape = match &c.profile {
-        Some((path, table)) => tabulated(table, path, u0)?,
-        None => c.shape.clone(),
-    };
+    let (shape, _) = c.geometry.at(u0)?;
     let du = amp_of(u0)?;
     let amp = du / u0;
     let (xc, kz, fbar) = contact(c, u0, du)?;
@@ -664,7 +654,7 @@ fn solve_amplitude(
             ));
         }
     }
-    let mu_static = shape.mu_static(amp, mdr::DEFAULT_TOL)? * c.mu0;
+    let mu_static = shape.mu_static(amp, &crate::Options::default())? * c.mu0;
     // eq. 3 with kx/kz = G*/E*: vbar = v0 / v_crit. The velocity scale must be an
     // ordinary number, else every vbar is 0, infinite or NaN.
     if !(v_crit.is_normal() && v_crit > 0.0) {
@@ -679,7 +669,7 @@ fn solve_amplitude(
     let row = |v0: f64| -> Result<Row> {
         let vbar = v0 / v_crit;
         // At or above the critical velocity no spring is computed.
-        let mu = if vbar >= 1.0 { 1.0 } else { evaluate(&shape, vbar, amp)?.ratio.mu_ratio };
+        let mu = if vbar >= 1.0 { 1.0 } else { shape.evaluate(vbar, amp)?.ratio.mu_ratio };
         Ok(Row {
             velocity_m_per_s: v0,
             vbar,
@@ -693,7 +683,7 @@ fn solve_amplitude(
     };
     let mut rows = Vec::with_capacity(c.velocities.len());
     for chunk in c.velocities.chunks(1024) {
-        rows.extend(chunk.par_iter().map(|&v| row(v)).collect::<Result<Vec<_>>>()?);
+        rows.extend(crate::numerics::par::map(chunk, |&v| row(v)).into_iter().collect::<Result<Vec<_>>>()?);
         progress(chunk.len() as u64);
     }
     // Every number of the answer must be finite: an overflow names its field.
@@ -758,14 +748,11 @@ fn solve_load(c: &Checked, f: f64, amp_of: &dyn Fn(f64) -> Result<f64>, source: 
         contact(c, u0, du).map_or(f64::NAN, |x| x.2)
     };
     // Static guess (no oscillation), then bracket by factors of 2 in u0.
-    let guess = match (&c.profile, &c.shape) {
+    let guess = match &c.geometry {
         // A tabulated profile: start from a thousandth of the table's depth.
-        (Some((_, table)), _) => table.max_g() * 1e-3,
-        (None, Shape::Flat) => f / (2.0 * c.e_star * c.geometry),
-        (None, Shape::Power(n)) => {
-            (f * c.geometry.powf(1.0 / n) * (n + 1.0) / (2.0 * n * c.e_star)).powf(n / (n + 1.0))
-        }
-        (None, Shape::Tabulated(..) | Shape::Registered(..)) => f64::NAN,
+        Geometry::Profile { table, .. } => table.max_g() * 1e-3,
+        Geometry::Flat { radius } => f / (2.0 * c.e_star * radius),
+        Geometry::Power { n, kc } => (f * kc.powf(1.0 / n) * (n + 1.0) / (2.0 * n * c.e_star)).powf(n / (n + 1.0)),
     };
     let bad = |reason: String| Error::Parse { context: format!("{source}: loading.mean_normal_force_n"), reason };
     if !(guess.is_finite() && guess > 0.0) {

@@ -22,9 +22,8 @@
 //! state; a `vbar = 0` value that matches the other start).
 
 use crate::error::{Error, Result};
-use crate::shape::{evaluate, Shape};
+use crate::shape::Shape;
 use crate::spring::{Regime, Spring};
-use rayon::prelude::*;
 
 /// The start a `vbar = 0` row is compared with (module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -261,7 +260,7 @@ pub fn exact_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest) -> Resul
     if vbar == 0.0 && at_rest == AtRest::Relaxed {
         return Ok(0.0);
     }
-    Ok(evaluate(shape, vbar, amp)?.ratio.mu_ratio)
+    Ok(shape.evaluate(vbar, amp)?.ratio.mu_ratio)
 }
 
 /// Compare `rows` of `(vbar, amp, mu_ratio)` with the exact solver for `shape`;
@@ -283,7 +282,7 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], at_rest: AtRest, toleran
             });
         }
     }
-    let exact: Vec<Result<f64>> = rows.par_iter().map(|&(v, a, _)| exact_value(shape, v, a, at_rest)).collect();
+    let exact: Vec<Result<f64>> = crate::numerics::par::map(rows, |&(v, a, _)| exact_value(shape, v, a, at_rest));
     let mut out = Vec::with_capacity(rows.len());
     for (i, (&(vbar, amp, mu_ratio), e)) in rows.iter().zip(exact).enumerate() {
         let exact = e?;
@@ -310,7 +309,7 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], at_rest: AtRest, toleran
         .collect();
     let findings = findings(shape, &out, &amps, at_rest, tolerance)?;
     Ok(Validation {
-        shape: shape.name(),
+        shape: shape.name().to_string(),
         at_rest,
         tolerance,
         n: out.len(),
@@ -602,7 +601,7 @@ pub fn convergence(
             })
         })
         .collect();
-    Ok(Convergence { shape: shape.name(), resolutions: res, target, rows, by_regime })
+    Ok(Convergence { shape: shape.name().to_string(), resolutions: res, target, rows, by_regime })
 }
 
 /// An event found in a user's history, matched to the exact one of its kind.
@@ -766,22 +765,20 @@ pub fn compare_history(
             reason: format!("it spans {:.3} periods: at least one whole period is needed", span / TAU),
         });
     }
-    let flat = shape.with_contact(|c| c.single_spring());
-    let sp = crate::flat::spring(vbar, amp, true);
+    let flat = shape.is_flat();
+    let sp = crate::flat::spring(vbar, amp, crate::spring::Precision::Events);
     // Curved contacts: the reference springs, and the static force at each depth.
     let (dz, springs) = if flat {
         (0.0, vec![])
     } else {
-        shape.with_contact(|c| -> Result<(f64, Vec<Spring>)> {
-            let (dz, s_of) = crate::contact::grid(c, amp, HISTORY_REFERENCE_SPRINGS)?;
-            Ok((dz, (0..HISTORY_REFERENCE_SPRINGS).map(|i| Spring::with_events(s_of(i), vbar)).collect()))
-        })?
+        let (dz, s_of) = crate::contact::grid(shape.contact(), amp, HISTORY_REFERENCE_SPRINGS)?;
+        (dz, (0..HISTORY_REFERENCE_SPRINGS).map(|i| Spring::with_events(s_of(i), vbar)).collect())
     };
     let exact_normal = |t: f64| {
         if flat {
             (sp.s - t.cos()).max(0.0) * amp
         } else {
-            shape.with_contact(|c| c.static_force(1.0 - amp * t.cos()))
+            shape.contact().static_force(1.0 - amp * t.cos())
         }
     };
     let exact_tangential = |t: f64| {
@@ -796,7 +793,7 @@ pub fn compare_history(
     let last: Vec<usize> = (0..n).filter(|&i| taus[i] > start + 1e-12 * TAU).collect();
     let (mut max_abs, mut sq) = (0.0f64, 0.0);
     let mut sample_errors = Vec::with_capacity(last.len());
-    let exact_last: Vec<f64> = last.par_iter().map(|&i| exact_tangential(taus[i])).collect();
+    let exact_last: Vec<f64> = crate::numerics::par::map(&last, |&i| exact_tangential(taus[i]));
     for (&i, &x) in last.iter().zip(&exact_last) {
         let e = tangential[i] - x;
         max_abs = max_abs.max(e.abs());
@@ -861,7 +858,7 @@ pub fn compare_history(
     let units =
         if flat { "normal: kz u0; tangential: mu0 kz u0" } else { "normal: E* x_c u0; tangential: mu0 E* x_c u0" };
     Ok(HistoryValidation {
-        shape: shape.name(),
+        shape: shape.name().to_string(),
         units: units.into(),
         vbar,
         amp,

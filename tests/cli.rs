@@ -311,14 +311,12 @@ fn one_value_per_input() {
         let t = json(&fricosc(&["table", "--shape", shape, "--vbar", vbar, "--amp", amp], None));
         let batch = format!(r#"[{{"shape":"{shape}","vbar":{vbar},"amp":{amp}}}]"#);
         let b = json(&fricosc(&["batch", "-"], Some(&batch)));
-        let lib = fricosc::shape::evaluate(
-            &fricosc::cli::input::parse_shape(shape).unwrap(),
-            vbar.parse().unwrap(),
-            amp.parse().unwrap(),
-        )
-        .unwrap()
-        .ratio
-        .mu_ratio;
+        let lib = fricosc::cli::input::parse_shape(shape)
+            .unwrap()
+            .evaluate(vbar.parse().unwrap(), amp.parse().unwrap())
+            .unwrap()
+            .ratio
+            .mu_ratio;
         let bits = |v: &serde_json::Value| v.as_f64().unwrap().to_bits();
         assert_eq!(bits(&p["mu_ratio"]), lib.to_bits(), "{shape} {vbar} {amp}: point");
         assert_eq!(bits(&t["rows"][0]["mu_ratio"]), lib.to_bits(), "{shape} {vbar} {amp}: table");

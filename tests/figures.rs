@@ -4,7 +4,7 @@
 //! of the stated size.
 use fricosc::cli::figures::{build, chart, XAxis};
 use fricosc::cli::plot::{self, Rgb};
-use fricosc::shape::{evaluate, Shape};
+use fricosc::Shape;
 
 #[test]
 fn exact_curves_equal_the_solver_and_every_figure_is_there() {
@@ -13,12 +13,12 @@ fn exact_curves_equal_the_solver_and_every_figure_is_there() {
     assert_eq!(names, ["fig3", "fig3-inset", "fig4", "fig5", "fig5-inset", "fig7", "fig8"]);
     for f in &figs {
         let shape =
-            if f.name.starts_with("fig7") || f.name.starts_with("fig8") { Shape::Power(2.0) } else { Shape::Flat };
+            if f.name.starts_with("fig7") || f.name.starts_with("fig8") { Shape::parabolic() } else { Shape::flat() };
         for c in f.curves.iter().filter(|c| c.kind == "exact") {
             let Some(amp) = c.amp else { continue };
             for p in c.points.iter().step_by(7) {
                 let vbar = if f.x == XAxis::Vhat && amp > 0.0 { p[0] / amp } else { p[0] };
-                assert_eq!(p[1], evaluate(&shape, vbar, amp).unwrap().ratio.mu_ratio, "{} {}", f.name, c.label);
+                assert_eq!(p[1], shape.evaluate(vbar, amp).unwrap().ratio.mu_ratio, "{} {}", f.name, c.label);
             }
         }
     }
@@ -146,11 +146,11 @@ fn distinct_catches_a_repeated_style() {
 fn the_largest_user_plot_tells_its_curves_apart() {
     let amps: Vec<f64> = (1..=fricosc::cli::figures::MAX_CURVES).map(|k| k as f64 * 0.25).collect();
     let xs: Vec<f64> = (0..=12).map(|k| k as f64 * 0.1).collect();
-    let f = fricosc::cli::figures::user(&Shape::Flat, &amps, &xs, false).unwrap();
+    let f = fricosc::cli::figures::user(&Shape::flat(), &amps, &xs, false).unwrap();
     assert_eq!(f.curves.len(), 12);
     plot::distinct(&chart(&f), 8.0).unwrap();
     // With a 13th amplitude the limit is enforced.
     let mut more = amps.clone();
     more.push(9.0);
-    assert!(fricosc::cli::figures::user(&Shape::Flat, &more, &xs, false).is_err());
+    assert!(fricosc::cli::figures::user(&Shape::flat(), &more, &xs, false).is_err());
 }

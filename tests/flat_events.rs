@@ -1,6 +1,7 @@
 //! Flat-punch event phases, event forces and small `mu_ratio` against independent
 //! 40-digit values (`data/scripts/flat_events.py`, committed as `data/flat-events.json`):
 //! vbar from 1.7e-16 to 0.5, amp from 0.5 through 1 + 1e-9 to 1e3.
+use fricosc::Shape;
 use serde_json::Value;
 
 fn cases() -> Vec<Value> {
@@ -45,7 +46,7 @@ fn event_phases_forces_and_small_mu_match_independent_40_digit_values() {
             worst_mu = worst_mu.max(rel_mu);
         }
         // The reported estimate bounds the error (a derived rounding bound, no floor).
-        let est = fricosc::shape::flat_error_estimate(&p.ratio);
+        let est = Shape::flat().evaluate(vbar, amp).unwrap().error_estimate;
         assert!((p.ratio.mu_ratio - mu).abs() <= est, "vbar {vbar} amp {amp}: estimate {est:e}");
         let red = num(&c["reduction"]);
         assert!((p.ratio.reduction - red).abs() <= 1e-15, "reduction at vbar {vbar} amp {amp}");

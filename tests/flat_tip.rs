@@ -1,10 +1,10 @@
 //! The sphere worn flat at its tip (`flat-tip:E`), added through the `Contact`
 //! trait: its MDR profile against the transform of a tabulated profile of the
 //! same body, and its limits (the paraboloid at E = 0, the flat punch as E -> 1).
-use fricosc::shape::{evaluate, evaluate_with, Shape};
+use fricosc::Shape;
 
 fn mu(spec: &str, v: f64, a: f64) -> (f64, f64) {
-    let e = evaluate(&Shape::parse(spec).unwrap(), v, a).unwrap();
+    let e = Shape::parse(spec).unwrap().evaluate(v, a).unwrap();
     (e.ratio.mu_ratio, e.error_estimate)
 }
 
@@ -56,7 +56,7 @@ fn agrees_with_the_tabulated_profile_of_the_same_body() {
     std::fs::write(&file, format!("r,f\n{rows}")).unwrap();
     let table = fricosc::cli::input::parse_shape(&format!("profile:{}@{u0:?}", file.display())).unwrap();
     for (v, amp) in [(0.3, 0.4), (0.1, 0.8), (0.5, 1.5)] {
-        let t = evaluate(&table, v, amp).unwrap();
+        let t = table.evaluate(v, amp).unwrap();
         let (m, est) = mu("flat-tip:0.5", v, amp);
         let err = (t.ratio.mu_ratio - m).abs();
         let interp = t.interpolation_error.unwrap();
@@ -68,12 +68,13 @@ fn agrees_with_the_tabulated_profile_of_the_same_body() {
         // Regression bar, about 10x the observed 1.5e-6 (the table smooths the kink at r = a).
         assert!(err < 2e-5, "v={v} amp={amp}: {err:e}");
     }
-    // The transform itself: g(x) = x sqrt(x^2 - a^2)/R at points of the table.
+    // The transform itself: g(x) = x sqrt(x^2 - a^2)/R at points of the table,
+    // through the tabulated contact's normalised profile G(z) = g(x_c z)/U0.
     let text = std::fs::read_to_string(&file).unwrap();
-    let (x, f) = fricosc::profile::parse_table(&text, "flat tip").unwrap();
-    let pchip = fricosc::profile::Pchip::new(x, f);
+    let t = fricosc::profile::Table::parse(&text, "flat tip", true).unwrap().at(u0).unwrap();
+    let xc = t.contact_radius;
     for x in [0.08, 0.1, 0.2, 0.3] {
-        let g = fricosc::profile::mdr_transform(&pchip, x);
+        let g = u0 * fricosc::Contact::equivalent_profile(&t, x / xc);
         let exact = x * (x * x - a * a).sqrt() / r_sphere;
         assert!((g / exact - 1.0).abs() < 1e-4, "x={x}: {g} vs {exact}");
     }
@@ -84,9 +85,9 @@ fn agrees_with_the_tabulated_profile_of_the_same_body() {
 fn the_error_estimate_bounds_the_error_at_every_tolerance() {
     let shape = Shape::parse("flat-tip:0.3").unwrap();
     for (v, a) in [(0.3, 0.4), (0.05, 0.95), (0.6, 3.0), (1e-4, 1.2)] {
-        let best = evaluate(&shape, v, a).unwrap().ratio.mu_ratio;
+        let best = shape.evaluate(v, a).unwrap().ratio.mu_ratio;
         for tol in [1e-3, 1e-6, 1e-9, 1e-12] {
-            let e = evaluate_with(&shape, v, a, tol).unwrap();
+            let e = shape.evaluate_with(v, a, &fricosc::Options::default().with_tol(tol)).unwrap();
             let err = (e.ratio.mu_ratio - best).abs();
             assert!(err <= e.error_estimate + 1e-15, "v={v} a={a} tol={tol:e}: {err:e} > {:e}", e.error_estimate);
         }
@@ -101,7 +102,7 @@ fn the_error_estimate_bounds_the_error_at_every_tolerance() {
 #[test]
 fn subnormal_amplitude_gives_the_linear_reduction() {
     let shape = Shape::parse("flat-tip:0.5").unwrap();
-    let slope = |a: f64| evaluate(&shape, 0.3, a).unwrap().ratio.reduction / a;
+    let slope = |a: f64| shape.evaluate(0.3, a).unwrap().ratio.reduction / a;
     let (below, small) = (slope(1e-305), slope(1e-200));
     assert!(((below - small) / small).abs() < 1e-12, "{below} vs {small}");
     // 2.1e-314 is subnormal: the reduction carries about 4e-10 relative.
@@ -116,8 +117,8 @@ fn subnormal_amplitude_gives_the_linear_reduction() {
 fn a_vanishing_flat_at_a_tiny_amplitude_is_the_paraboloid() {
     let amp = 2.2138601171837047e-159;
     for e in ["1e-152", "6.015012502120174e-153"] {
-        let tip = evaluate(&Shape::parse(&format!("flat-tip:{e}")).unwrap(), 0.5625000000004549, amp).unwrap();
-        let par = evaluate(&Shape::Power(2.0), 0.5625000000004549, amp).unwrap();
+        let tip = Shape::parse(&format!("flat-tip:{e}")).unwrap().evaluate(0.5625000000004549, amp).unwrap();
+        let par = Shape::parabolic().evaluate(0.5625000000004549, amp).unwrap();
         let rel = (tip.ratio.reduction - par.ratio.reduction).abs() / par.ratio.reduction;
         assert!(rel < 1e-12, "E = {e}: {} vs {}", tip.ratio.reduction, par.ratio.reduction);
     }

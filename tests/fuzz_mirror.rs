@@ -1,6 +1,8 @@
 //! Stable mirrors of the cargo-fuzz targets in `tests/fuzz/`: the readers and the
 //! solver entry points never panic, whatever they are given.
-use fricosc::shape::{evaluate, evaluate_stepping, Shape, Stepping};
+use fricosc::stepper::Stepping;
+use fricosc::Shape;
+
 use proptest::prelude::*;
 
 fn any_f64() -> impl Strategy<Value = f64> {
@@ -56,7 +58,7 @@ proptest! {
         let path = dir.join("t.csv");
         std::fs::write(&path, &text).unwrap();
         if let Ok(shape) = fricosc::cli::input::parse_shape(&format!("profile:{}@1", path.display())) {
-            match evaluate(&shape, v, a) {
+            match shape.evaluate(v, a) {
                 Ok(e) => prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio)),
                 // Bad input or a table that cannot carry the contact, never an internal failure.
                 Err(e) => prop_assert!(!matches!(e, fricosc::Error::Internal { .. }), "{e}"),
@@ -78,7 +80,7 @@ proptest! {
         }
         if let Ok(table) = fricosc::profile::Table::from_columns(x, f, profile, "mirror") {
             if let Ok(contact) = table.at(u0) {
-                match fricosc::profile::evaluate(&contact, v, a) {
+                match fricosc::Shape::from_contact(std::sync::Arc::new(contact)).evaluate(v, a) {
                     Ok(e) => prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio)),
                     Err(e) => prop_assert!(!matches!(e, fricosc::Error::Internal { .. }), "{e}"),
                 }
@@ -86,31 +88,13 @@ proptest! {
         }
     }
 
-    /// The hierarchical transform at the knots equals the direct sum on random
-    /// rough tables (up to 600 rows, so the far sums are interpolated).
-    #[test]
-    fn hierarchical_transform_equals_direct(steps in prop::collection::vec((1e-4f64..1.0, 0.0f64..2.0), 40..600)) {
-        let (mut x, mut f) = (vec![0.0], vec![0.0]);
-        for (dx, df) in steps {
-            x.push(x[x.len() - 1] + dx);
-            f.push(f[f.len() - 1] + df * df * df);
-        }
-        let p = fricosc::profile::Pchip::new(x, f);
-        let fast = fricosc::profile::mdr_transform_knots(&p);
-        for (i, &xi) in p.knots().iter().enumerate().skip(1) {
-            let direct = fricosc::profile::mdr_transform(&p, xi);
-            let scale = direct.abs().max(1e-300);
-            prop_assert!((fast[i] - direct).abs() <= 2e-14 * scale, "knot {i}: {} vs {direct}", fast[i]);
-        }
-    }
-
     #[test]
     fn solvers_never_panic_and_stay_in_range(v in any_f64(), a in any_f64(), k in 0usize..6, n in any_f64()) {
         let shape = match k {
-            0 => Shape::Flat,
-            1 => Shape::Power(2.0),
-            2 => Shape::Power(1.0),
-            3 => Shape::Power(0.7),
+            0 => Shape::flat(),
+            1 => Shape::parabolic(),
+            2 => Shape::cone(),
+            3 => Shape::power(0.7).unwrap(),
             // A worn tip (flat-tip:E, E in [0, 1)), through the registry's parser.
             4 => match Shape::parse(&format!("flat-tip:{:?}", n.fract().abs())) {
                 Ok(s) => s,
@@ -122,13 +106,13 @@ proptest! {
                 Err(_) => return Ok(()),
             },
         };
-        match evaluate(&shape, v, a) {
+        match shape.evaluate(v, a) {
             Ok(e) => {
                 prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio));
                 prop_assert!(e.ratio.reduction >= 0.0);
             }
             Err(_) => prop_assert!(!(v.is_finite() && a.is_finite() && v >= 0.0 && a >= 0.0)),
         }
-        let _ = evaluate_stepping(&shape, v, a, Stepping { steps_per_period: 16, springs: 8 });
+        let _ = fricosc::stepper::evaluate(&shape, v, a, Stepping { steps_per_period: 16, springs: 8 });
     }
 }

@@ -8,7 +8,8 @@
 //! `tests/mdr.rs` (which includes amp 0.999 and 1.001, vbar 1e-6 and 1 - 1e-6),
 //! the solver's `error_estimate` must bound its distance to this reference
 //! (up to the reference's own accuracy).
-use fricosc::mdr::{power_law, DEFAULT_TOL};
+use fricosc::mdr::power_law;
+use fricosc::DEFAULT_TOL;
 use std::f64::consts::{PI, TAU};
 
 /// Mean normal force of a spring, eq. 20 form: `(s (pi - th) + sin th)/pi`.
@@ -129,7 +130,7 @@ fn the_error_estimate_bounds_the_error_at_every_tolerance_against_an_independent
         let mut misses = vec![];
         let mut worst = 0.0f64;
         for &(n, v, a, (mu, acc)) in &refs {
-            let r = power_law(n, v, a, tol, false).unwrap();
+            let r = power_law(n, v, a, &fricosc::Options::default().with_tol(tol)).unwrap();
             let err = (r.ratio.mu_ratio - mu).abs();
             worst = worst.max(err);
             if err > r.error_estimate + acc {

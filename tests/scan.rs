@@ -192,7 +192,9 @@ fn serial_fault(text: &str) -> Result<(), Option<usize>> {
         fricosc::cli::input::parse_shape(&spec).map_err(|e| e.to_string())?;
         for k in [1, 2] {
             let x = number_of(r.fields[k].ok_or("field")?, "x")?;
-            fricosc::error::check_nonneg("x", x).map_err(|e| e.to_string())?;
+            if !(x.is_finite() && x >= 0.0) {
+                return Err(format!("invalid x = {x:?}"));
+            }
         }
         Ok(())
     });

@@ -1,5 +1,6 @@
 //! Physical scenes: unit invariance, load control, stiffness checks, the schema, the examples.
-use fricosc::cli::scene::{parse, solve, SceneResult};
+use fricosc::cli::scene::{parse, solve};
+use fricosc::scene::SceneResult;
 use std::f64::consts::PI;
 
 /// The answer of a scene with one amplitude.

@@ -1,6 +1,7 @@
 //! Numerical stress: random and edge points, and continuity across every regime boundary.
 use fricosc::cli::stress::{default_shapes, run};
-use fricosc::mdr::{power_law, DEFAULT_TOL};
+use fricosc::mdr::power_law;
+use fricosc::DEFAULT_TOL;
 
 /// A 10^5-point subset of `fricosc stress --points 1000000` (README: Stress).
 #[test]
@@ -11,7 +12,7 @@ fn a_hundred_thousand_random_and_edge_points_pass_every_check() {
 }
 
 fn mu(n: f64, v: f64, a: f64) -> f64 {
-    power_law(n, v, a, DEFAULT_TOL, false).unwrap().ratio.mu_ratio
+    power_law(n, v, a, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap().ratio.mu_ratio
 }
 
 /// Jumps of mu across a boundary at distance d on both sides: Lipschitz part

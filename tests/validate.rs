@@ -3,8 +3,9 @@
 //! The stepper here is the seed's scheme written out for one spring (the flat
 //! punch), with the start and the number of periods as parameters, so that the
 //! bugs of a user's stepper can be planted in it.
-use fricosc::cli::validate::{compare, AtRest, FindingKind, RowRegime};
-use fricosc::shape::Shape;
+use fricosc::history::HistoryOptions;
+use fricosc::validation::{compare, AtRest, FindingKind, RowRegime};
+use fricosc::Shape;
 use std::process::Command;
 
 /// `mu/mu0` of the flat punch by the seed's scheme: `m` steps per period,
@@ -34,7 +35,7 @@ fn table(mu: impl Fn(f64, f64) -> f64) -> Vec<(f64, f64, f64)> {
 }
 
 fn kinds(rows: &[(f64, f64, f64)], at_rest: AtRest) -> Vec<FindingKind> {
-    compare(&Shape::Flat, rows, at_rest, 1e-9).unwrap().findings.iter().map(|f| f.kind).collect()
+    compare(&Shape::flat(), rows, at_rest, 1e-9).unwrap().findings.iter().map(|f| f.kind).collect()
 }
 
 /// The derivation of the two conventions at vbar = 0: a relaxed start stays at
@@ -44,9 +45,9 @@ fn the_two_starts_at_zero_velocity() {
     for amp in [0.3, 0.8, 1.5] {
         assert_eq!(stepper(0.0, amp, 1000, 5, true), 0.0);
         let sliding = stepper(0.0, amp, 100_000, 3, false);
-        let exact = fricosc::cli::validate::exact_value(&Shape::Flat, 0.0, amp, AtRest::Sliding).unwrap();
+        let exact = fricosc::validation::exact_value(&Shape::flat(), 0.0, amp, AtRest::Sliding).unwrap();
         assert!((sliding - exact).abs() < 1e-4, "amp {amp}: {sliding} vs {exact}");
-        assert_eq!(fricosc::cli::validate::exact_value(&Shape::Flat, 0.0, amp, AtRest::Relaxed).unwrap(), 0.0);
+        assert_eq!(fricosc::validation::exact_value(&Shape::flat(), 0.0, amp, AtRest::Relaxed).unwrap(), 0.0);
     }
 }
 
@@ -55,7 +56,7 @@ fn the_two_starts_at_zero_velocity() {
 #[test]
 fn a_correct_table_has_no_findings() {
     let rows = table(|v, a| stepper(v, a, 20_000, 60, false));
-    let v = compare(&Shape::Flat, &rows, AtRest::Sliding, 1e-9).unwrap();
+    let v = compare(&Shape::flat(), &rows, AtRest::Sliding, 1e-9).unwrap();
     assert!(v.findings.is_empty(), "{:?}", v.findings);
     assert!(v.max_abs_error < 2e-3, "{}", v.max_abs_error);
     // Every regime appears, each with its rows.
@@ -89,7 +90,7 @@ fn a_relaxed_start_is_named_and_accepted_with_its_convention() {
     let rows = table(|v, a| stepper(v, a, 20_000, 60, v == 0.0));
     let k = kinds(&rows, AtRest::Sliding);
     assert_eq!(k, [FindingKind::AtRestConvention], "{k:?}");
-    let relaxed = compare(&Shape::Flat, &rows, AtRest::Relaxed, 1e-9).unwrap();
+    let relaxed = compare(&Shape::flat(), &rows, AtRest::Relaxed, 1e-9).unwrap();
     assert!(relaxed.findings.is_empty(), "{:?}", relaxed.findings);
     assert!(relaxed.rows.iter().filter(|r| r.vbar == 0.0).all(|r| r.error == 0.0));
 }
@@ -99,7 +100,7 @@ fn a_relaxed_start_is_named_and_accepted_with_its_convention() {
 #[test]
 fn too_few_periods_are_named() {
     let rows = table(|v, a| if v == 0.0 { stepper(0.0, a, 20_000, 60, false) } else { stepper(v, a, 20_000, 3, true) });
-    let v = compare(&Shape::Flat, &rows, AtRest::Sliding, 1e-9).unwrap();
+    let v = compare(&Shape::flat(), &rows, AtRest::Sliding, 1e-9).unwrap();
     let steady = v.findings.iter().find(|f| f.kind == FindingKind::NotSteady).expect("not_steady finding");
     // The flagged rows are the low-velocity ones.
     assert!(steady.rows.iter().all(|&i| rows[i].0 > 0.0 && rows[i].0 < 0.3), "{steady:?}");
@@ -117,7 +118,7 @@ fn a_decrease_in_velocity_is_named() {
             m
         }
     });
-    let v = compare(&Shape::Flat, &rows, AtRest::Sliding, 1e-9).unwrap();
+    let v = compare(&Shape::flat(), &rows, AtRest::Sliding, 1e-9).unwrap();
     let f = v.findings.iter().find(|f| f.kind == FindingKind::NotMonotone).expect("not_monotone finding");
     assert_eq!(f.rows, [VBAR.len() + 4], "{f:?}");
 }
@@ -139,7 +140,7 @@ fn fricosc_cmd(args: &[&str], stdin: &str) -> std::process::Output {
 /// conflicting --shape refused, vhat and mu with --mu0 read, the three formats.
 #[test]
 fn the_command_reads_shapes_velocities_and_formats() {
-    let exact = |v: f64, a: f64| fricosc::shape::evaluate(&Shape::Power(2.0), v, a).unwrap().ratio.mu_ratio;
+    let exact = |v: f64, a: f64| Shape::parabolic().evaluate(v, a).unwrap().ratio.mu_ratio;
     // JSON with its shape: compared with the paraboloid, not the flat punch.
     let json = format!(
         r#"{{"shape": "parabolic", "rows": [{{"vbar": 0.5, "amp": 0.5, "mu_ratio": {:?}}}]}}"#,
@@ -204,7 +205,8 @@ fn the_readme_walk_through_names_every_planted_bug() {
 /// files' resolutions read from their names or after '@', and the plot drawn.
 #[test]
 fn the_series_finds_the_orders_of_the_seeds_scheme() {
-    use fricosc::shape::{evaluate_stepping, Stepping};
+    use fricosc::stepper::Stepping;
+
     let dir = std::env::temp_dir().join(format!("fricosc-series-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mut args: Vec<String> = vec!["validate".into(), "--series".into(), "--format".into(), "json".into()];
@@ -214,7 +216,7 @@ fn the_series_finds_the_orders_of_the_seeds_scheme() {
         for a in [0.5, 0.9, 1.5, 2.0] {
             for v in [0.2, 0.4, 0.6, 0.8] {
                 let st = Stepping { steps_per_period: m, springs: 1 };
-                let mu = evaluate_stepping(&Shape::Flat, v, a, st).unwrap().ratio.mu_ratio;
+                let mu = fricosc::stepper::evaluate(&Shape::flat(), v, a, st).unwrap().ratio.mu_ratio;
                 text += &format!("{v:?},{a:?},{mu:?}\n");
             }
         }
@@ -272,7 +274,7 @@ fn history_events_of_the_peer_are_within_one_step() {
                 h.samples.iter().map(|s| s.tangential).collect(),
                 h.samples.iter().map(|s| s.normal).collect(),
             );
-            let r = fricosc::cli::validate::compare_history(&Shape::Flat, v, a, &t, &f, Some(&n), 1e-9).unwrap();
+            let r = fricosc::validation::compare_history(&Shape::flat(), v, a, &t, &f, Some(&n), 1e-9).unwrap();
             let step = std::f64::consts::TAU / m as f64;
             let kinds: Vec<_> = r.exact_events.iter().map(|e| e.kind).collect();
             for k in &kinds {
@@ -309,7 +311,7 @@ fn history_bugs_are_named() {
             ft.push(f * a);
             nn.push(b * a);
         }
-        fricosc::cli::validate::compare_history(&Shape::Flat, v, a, &t, &ft, Some(&nn), 1e-9).unwrap()
+        fricosc::validation::compare_history(&Shape::flat(), v, a, &t, &ft, Some(&nn), 1e-9).unwrap()
     };
     let short = run(3, 1.0, true);
     assert_eq!(short.periodic, Some(false), "{short:?}");
@@ -370,16 +372,18 @@ fn a_missed_stick_end_is_named() {
         ft.push(f * a);
         nn.push(b * a);
     }
-    let r = fricosc::cli::validate::compare_history(&Shape::Flat, v, a, &t, &ft, Some(&nn), 1e-9).unwrap();
+    let r = fricosc::validation::compare_history(&Shape::flat(), v, a, &t, &ft, Some(&nn), 1e-9).unwrap();
     assert!(r.above_bound_count > 100 && !r.above_bound.is_empty(), "{}", r.above_bound_count);
     // The exact history never is above its bound.
-    let exact = fricosc::history::history(&Shape::Flat, v, a, 2, 500, 1, &[]).unwrap();
+    let exact =
+        fricosc::history::history(&Shape::flat(), v, a, &HistoryOptions::default().with_periods(2).with_samples(500))
+            .unwrap();
     let (t, f, n): (Vec<f64>, Vec<f64>, Vec<f64>) = (
         exact.samples.iter().map(|s| s.tau).collect(),
         exact.samples.iter().map(|s| s.tangential).collect(),
         exact.samples.iter().map(|s| s.normal).collect(),
     );
-    let r = fricosc::cli::validate::compare_history(&Shape::Flat, v, a, &t, &f, Some(&n), 1e-9).unwrap();
+    let r = fricosc::validation::compare_history(&Shape::flat(), v, a, &t, &f, Some(&n), 1e-9).unwrap();
     assert_eq!(r.above_bound_count, 0);
     assert!(r.max_abs_error < 1e-15, "{}", r.max_abs_error);
 }
@@ -413,15 +417,21 @@ fn history_forces_in_physical_units() {
 /// agrees to rounding, a coarse one to its grid's error (second order).
 #[test]
 fn curved_histories_are_compared_with_the_reference_grid() {
-    let shape = Shape::Power(2.0);
+    let shape = Shape::parabolic();
     let cols = |springs: usize| {
-        let h = fricosc::history::history(&shape, 0.3, 1.3, 2, 300, springs, &[]).unwrap();
+        let h = fricosc::history::history(
+            &shape,
+            0.3,
+            1.3,
+            &HistoryOptions::default().with_periods(2).with_samples(300).with_springs(springs),
+        )
+        .unwrap();
         let t: Vec<f64> = h.samples.iter().map(|s| s.tau).collect();
         let f: Vec<f64> = h.samples.iter().map(|s| s.tangential).collect();
         let n: Vec<f64> = h.samples.iter().map(|s| s.normal).collect();
-        fricosc::cli::validate::compare_history(&shape, 0.3, 1.3, &t, &f, Some(&n), 1e-9).unwrap()
+        fricosc::validation::compare_history(&shape, 0.3, 1.3, &t, &f, Some(&n), 1e-9).unwrap()
     };
-    let same = cols(fricosc::cli::validate::HISTORY_REFERENCE_SPRINGS);
+    let same = cols(fricosc::validation::HISTORY_REFERENCE_SPRINGS);
     assert!(same.max_abs_error < 1e-13, "{}", same.max_abs_error);
     assert!(same.events.is_empty() && same.exact_events.is_empty() && same.above_bound_count == 0);
     let (e100, e400) = (cols(100).max_abs_error, cols(400).max_abs_error);

@@ -23,10 +23,12 @@
 //!   appends `mu_ratio,reduction`, or fills those columns where they exist.
 //! - Duplicate keys are refused. Each distinct shape string is parsed once.
 
+use crate::cli::error::{Error, Result};
 use crate::cli::scan::{self, number_of, string_of, RowsError};
-use crate::error::{check_nonneg, Error, Result};
+use crate::error::check_nonneg;
 use crate::ratio::Ratio;
-use crate::shape::{evaluate, evaluate_stepping, Shape, Stepping};
+use crate::shape::Shape;
+use crate::stepper::Stepping;
 use rayon::prelude::*;
 use std::collections::HashMap;
 use std::io::{self, BufRead, Read, Write};
@@ -134,8 +136,8 @@ impl Shapes {
         check_nonneg("amp", amp)?;
         // A tabulated profile must reach the deepest indentation (else the
         // evaluation would refuse the row after output had begun).
-        if !matches!(self.list[shape as usize], Shape::Flat) {
-            self.list[shape as usize].with_contact(|c| c.reach(amp))?;
+        if !self.list[shape as usize].is_flat() {
+            self.list[shape as usize].contact().reach(amp)?;
         }
         Ok(Job { shape, replace, vbar, amp })
     }
@@ -146,11 +148,11 @@ impl Shapes {
         self.check(k, vbar, amp, replace)
     }
 
-    fn evaluate(&self, j: &Job) -> Result<Ratio> {
+    fn evaluate(&self, j: &Job) -> crate::Result<Ratio> {
         let shape = &self.list[j.shape as usize];
         match self.stepping {
-            Some(st) => evaluate_stepping(shape, j.vbar, j.amp, st).map(|e| e.ratio),
-            None => evaluate(shape, j.vbar, j.amp).map(|e| e.ratio),
+            Some(st) => crate::stepper::evaluate(shape, j.vbar, j.amp, st).map(|e| e.ratio),
+            None => shape.evaluate(j.vbar, j.amp).map(|e| e.ratio),
         }
     }
 
@@ -160,7 +162,9 @@ impl Shapes {
             .enumerate()
             .map(|(i, j)| {
                 self.evaluate(j).map_err(|e| match e {
-                    Error::Internal { what } => Error::Internal { what: format!("{source} {}: {what}", name(i)) },
+                    crate::Error::Internal { what } => {
+                        Error::Internal { what: format!("{source} {}: {what}", name(i)) }
+                    }
                     e => Error::Parse { context: source.into(), reason: format!("{}: {e}", name(i)) },
                 })
             })

@@ -6,7 +6,8 @@
 //! a sample repeats the evaluation until it lasts a few milliseconds. Failures
 //! (an error or a non-finite value) are kept and listed, never dropped.
 
-use crate::shape::{evaluate_stepping, evaluate_with, Shape, Stepping};
+use crate::shape::Shape;
+use crate::stepper::Stepping;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -175,7 +176,8 @@ pub fn run(quick: bool) -> Report {
                 continue;
             }
         };
-        let mut record = |method: &str, setting: String, value: crate::Result<f64>, time_s: f64| match value {
+        let mut record = |method: &str, setting: String, value: crate::cli::error::Result<f64>, time_s: f64| match value
+        {
             Ok(m) if m.is_finite() => {
                 points.push(Point {
                     case: name.into(),
@@ -196,23 +198,25 @@ pub fn run(quick: bool) -> Report {
             }
         };
         // Exact solver at several tolerances (the flat punch has no tolerance to set).
-        let tols: &[f64] = if shape == Shape::Flat {
-            &[crate::mdr::DEFAULT_TOL]
-        } else {
-            &[1e-4, 1e-6, 1e-8, 1e-11, crate::mdr::DEFAULT_TOL]
-        };
+        let tols: &[f64] =
+            if shape == Shape::flat() { &[crate::DEFAULT_TOL] } else { &[1e-4, 1e-6, 1e-8, 1e-11, crate::DEFAULT_TOL] };
         let mut exact_best = None;
         for &tol in tols {
-            let value = evaluate_with(&shape, vbar, amp, tol).map(|e| e.ratio.mu_ratio);
+            let value = shape
+                .evaluate_with(vbar, amp, &crate::Options::default().with_tol(tol))
+                .map(|e| e.ratio.mu_ratio)
+                .map_err(crate::cli::error::Error::from);
             let t = time_per_call(k, sample, || {
-                evaluate_with(&shape, vbar, amp, tol).map_or(f64::NAN, |e| e.ratio.mu_ratio)
+                shape
+                    .evaluate_with(vbar, amp, &crate::Options::default().with_tol(tol))
+                    .map_or(f64::NAN, |e| e.ratio.mu_ratio)
             });
             if let Some(err) = record("exact", format!("tol={tol:e}"), value, t) {
                 exact_best = Some((err, t));
             }
         }
         // Time stepping at several resolutions.
-        let steps: Vec<(usize, usize)> = match (shape == Shape::Flat, quick) {
+        let steps: Vec<(usize, usize)> = match (shape == Shape::flat(), quick) {
             (true, true) => vec![(100, 1), (1000, 1), (10_000, 1)],
             (true, false) => vec![(100, 1), (1000, 1), (10_000, 1), (100_000, 1), (1_000_000, 1), (10_000_000, 1)],
             (false, true) => vec![(50, 50), (100, 100), (200, 200)],
@@ -221,9 +225,11 @@ pub fn run(quick: bool) -> Report {
         let mut stepping_best: Option<(f64, f64)> = None;
         for (m, n) in steps {
             let st = Stepping { steps_per_period: m, springs: n };
-            let value = evaluate_stepping(&shape, vbar, amp, st).map(|e| e.ratio.mu_ratio);
+            let value = crate::stepper::evaluate(&shape, vbar, amp, st)
+                .map(|e| e.ratio.mu_ratio)
+                .map_err(crate::cli::error::Error::from);
             let t = time_per_call(k.min(3), sample, || {
-                evaluate_stepping(&shape, vbar, amp, st).map_or(f64::NAN, |e| e.ratio.mu_ratio)
+                crate::stepper::evaluate(&shape, vbar, amp, st).map_or(f64::NAN, |e| e.ratio.mu_ratio)
             });
             if let Some(err) = record("stepping", format!("M={m},N={n}"), value, t) {
                 if stepping_best.is_none_or(|(e, _)| err < e) {
@@ -280,7 +286,7 @@ impl crate::cli::export::Report for Report {
             .collect()
     }
 
-    fn svg(&self) -> Option<crate::error::Result<String>> {
+    fn svg(&self) -> Option<crate::cli::error::Result<String>> {
         Some(Ok(to_svg(self)))
     }
 }

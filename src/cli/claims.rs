@@ -2,10 +2,11 @@
 //! the exact solver, with a verdict. `tests/claims.rs` asserts each verdict.
 
 use crate::flat;
-use crate::mdr::{mu_static_ratio, power_law, DEFAULT_TOL};
+use crate::mdr::{mu_static_ratio, power_law};
 use crate::seed;
 use crate::spring::EventKind;
 use crate::stepper::{physical_mu_ratio, PhysicalSpring};
+use crate::{Options, DEFAULT_TOL};
 use serde::Serialize;
 use std::f64::consts::{PI, TAU};
 
@@ -64,7 +65,7 @@ fn mu_flat(v: f64, a: f64) -> f64 {
 }
 
 fn mu_mdr(n: f64, v: f64, a: f64) -> f64 {
-    power_law(n, v, a, DEFAULT_TOL, false).map_or(f64::NAN, |r| r.ratio.mu_ratio)
+    power_law(n, v, a, &Options::default()).map_or(f64::NAN, |r| r.ratio.mu_ratio)
 }
 
 /// The velocity at which small-velocity slopes are measured.
@@ -387,8 +388,8 @@ fn critical_velocity() -> Claim {
 /// NaN where anything fails (the claim's verdict then says so).
 fn small_amplitude_slope(spec: &str, vbar: f64, amp: f64) -> f64 {
     let Ok(shape) = crate::shape::Shape::parse(spec) else { return f64::NAN };
-    let reduction = crate::shape::evaluate(&shape, vbar, amp).map_or(f64::NAN, |e| e.ratio.reduction);
-    let n0 = shape.with_contact(|c| c.mean_normal(0.0)).unwrap_or(f64::NAN);
+    let reduction = shape.evaluate(vbar, amp).map_or(f64::NAN, |e| e.ratio.reduction);
+    let n0 = shape.contact().mean_normal(0.0).unwrap_or(f64::NAN);
     reduction * n0 / (2.0 * amp)
 }
 
@@ -452,9 +453,9 @@ fn static_friction_minimum_normal() -> Claim {
             continue;
         };
         for amp in [0.2, 0.5, 0.8, 1.5] {
-            let mu = crate::shape::evaluate(&shape, 1e-10, amp).map_or(f64::NAN, |e| e.ratio.mu_ratio);
-            let ratio = shape
-                .with_contact(|c| c.mean_normal(amp).map(|mean| c.static_force(1.0 - amp) / mean).unwrap_or(f64::NAN));
+            let mu = shape.evaluate(1e-10, amp).map_or(f64::NAN, |e| e.ratio.mu_ratio);
+            let c = shape.contact();
+            let ratio = c.mean_normal(amp).map(|mean| c.static_force(1.0 - amp) / mean).unwrap_or(f64::NAN);
             // A NaN (a failed evaluation) fails the claim: f64::max would drop it.
             worst = worst.max(if (mu - ratio).is_finite() { (mu - ratio).abs() } else { f64::INFINITY });
             measured.push((format!("{spec}_amp_{amp}_mu"), mu));

@@ -4,7 +4,7 @@
 //! (`table` streams its rows through [`crate::cli::output::TableWriter`] instead: it
 //! may hold 10^7 of them.)
 
-use crate::error::{Error, Result};
+use crate::cli::error::{Error, Result};
 
 /// Something a command prints or writes.
 pub trait Report: serde::Serialize {

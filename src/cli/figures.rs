@@ -2,10 +2,10 @@
 //! with the seed's approximations on each (dashed), as JSON, CSV and SVG.
 //! Every exact point is the solver's value ([`crate::shape::evaluate`]).
 
+use crate::cli::error::{Error, Result};
 use crate::cli::plot::{self, Axis, Chart, Dash, Key, Rule, Series, Style};
-use crate::error::{Error, Result};
 use crate::seed;
-use crate::shape::{evaluate, Shape};
+use crate::shape::Shape;
 use serde::Serialize;
 
 /// One curve of a figure.
@@ -100,8 +100,8 @@ fn exact(shape: &Shape, amp: f64, xs: &[f64], vhat: bool) -> Result<Curve> {
     let vbar_of = |x: f64| if vhat && amp > 0.0 { x / amp } else { x };
     let points = xs
         .iter()
-        .map(|&x| evaluate(shape, vbar_of(x), amp).map(|e| [x, e.ratio.mu_ratio]))
-        .collect::<Result<Vec<_>>>()?;
+        .map(|&x| shape.evaluate(vbar_of(x), amp).map(|e| [x, e.ratio.mu_ratio]))
+        .collect::<crate::Result<Vec<_>>>()?;
     Ok(Curve { label: format!("exact, du/u0 = {amp}"), kind: "exact".into(), equation: None, amp: Some(amp), points })
 }
 
@@ -133,8 +133,8 @@ fn approx(eq: &str, amp: Option<f64>, xs: &[f64], f: impl Fn(f64) -> f64) -> Cur
 /// and the critical amplitude `du/u0 = 1` bold where it separates the two
 /// regimes (Figs. 4 and 8).
 pub fn build() -> Result<Vec<Figure>> {
-    let flat = Shape::Flat;
-    let parabolic = Shape::Power(2.0);
+    let flat = Shape::flat();
+    let parabolic = Shape::parabolic();
     let vb = grid(0.0, 1.2, 241);
     let small = [0.0, 0.2, 0.4, 0.6, 0.8, 1.0];
     let jumping = [1.2, 1.4, 1.6, 1.8, 2.0];
@@ -226,7 +226,7 @@ pub fn build() -> Result<Vec<Figure>> {
     // Figs. 7 and 8: paraboloid, with eq. 27.
     let mut c = vec![];
     for &a in &small {
-        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::mdr::DEFAULT_TOL);
+        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::DEFAULT_TOL);
         c.push(exact(&parabolic, a, &vb, false)?);
         if a > 0.0 {
             c.push(approx("eq. 27", Some(a), &vb, |v| seed::eq27(v, ms)));
@@ -235,7 +235,7 @@ pub fn build() -> Result<Vec<Figure>> {
     figs.push(figure("fig7", "Fig. 7: parabolic indenter, exact and eq. 27", XAxis::Vbar, [0.0, 1.2, 0.0, 1.05], c));
     let mut c = vec![];
     for &a in small.iter().chain(&jumping) {
-        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::mdr::DEFAULT_TOL);
+        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::DEFAULT_TOL);
         c.push(exact(&parabolic, a, &vh, true)?);
         if a > 0.0 {
             c.push(approx("eq. 27", Some(a), &vh, |x| seed::eq27(x / a, ms)));

@@ -1,6 +1,6 @@
 //! Parsing of value lists on the command line: `0,0.2,0.4` or `start:stop:count`.
 
-use crate::error::{Error, Result};
+use crate::cli::error::{Error, Result};
 
 /// Most rows any command reads or writes (tables, batches, validated tables,
 /// histories), and most values one list or range may produce: the one limit.

@@ -1,8 +1,8 @@
 //! `fricosc history`: the force histories of [`crate::history`] as a
 //! report (CSV, JSON, the seed's Fig. 2 as SVG).
 
-use crate::error::Result;
-pub use crate::history::*;
+use crate::cli::error::Result;
+use crate::history::{History, Sample};
 
 impl crate::cli::export::Report for History {
     fn columns(&self) -> Vec<String> {

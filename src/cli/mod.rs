@@ -7,6 +7,7 @@ pub mod batch;
 pub mod bench;
 pub mod claims;
 pub mod cmd;
+pub mod error;
 pub mod export;
 pub mod figures;
 pub mod grid;

@@ -1,8 +1,8 @@
 //! `fricosc scene`: the core's physical scenes ([`crate::scene`]) read
 //! from JSON, with the capped file reader, their schema, and their report.
 
-use crate::error::{Error, Result};
-pub use crate::scene::*;
+use crate::cli::error::{Error, Result};
+use crate::scene::{solve_with, Scene, SceneResult};
 
 /// Parse a scene from JSON text; `source` names the file in errors. A scene is a
 /// JSON object: serde would also accept its fields as a positional array.
@@ -21,7 +21,7 @@ pub fn solve(s: &Scene, source: &str) -> Result<Vec<SceneResult>> {
 
 /// [`solve`], calling `progress(k)` after each chunk of `k` velocities.
 pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sync)) -> Result<Vec<SceneResult>> {
-    solve_with(s, source, &|path| crate::cli::input::read_capped(path, crate::cli::input::MAX_SMALL_BYTES), progress)
+    Ok(solve_with(s, source, &crate::cli::input::small_file, progress)?)
 }
 
 /// The JSON Schema of the scene file (schemars).

@@ -21,9 +21,9 @@
 //! `fricosc suite --check DIR` recomputes every file and compares bytes and
 //! hashes: a suite made by another version is reported file by file.
 
+use crate::cli::error::{Error, Result};
 use crate::cli::output::num;
-use crate::error::{Error, Result};
-use crate::shape::{evaluate_with, Shape};
+use crate::shape::Shape;
 use sha2::{Digest, Sha256};
 use std::path::Path;
 
@@ -70,7 +70,7 @@ fn csv(header: &[&str], rows: &[Vec<String>]) -> Result<String> {
 }
 
 fn value_row(shape: &Shape, spec: &str, vbar: f64, amp: f64) -> Result<Vec<String>> {
-    let e = evaluate_with(shape, vbar, amp, crate::mdr::DEFAULT_TOL)?;
+    let e = shape.evaluate(vbar, amp)?;
     let bound = e.error_estimate + e.interpolation_error.unwrap_or(0.0);
     Ok(vec![spec.into(), num(vbar), num(amp), num(e.ratio.mu_ratio), num(e.ratio.reduction), num(bound)])
 }
@@ -133,7 +133,12 @@ pub fn files() -> Result<Vec<SuiteFile>> {
         command: "fricosc point --shape S --vbar V --amp A (each row)".into(),
     });
     for (v, a) in HISTORIES {
-        let h = crate::cli::history::history(&Shape::Flat, v, a, 1, HISTORY_SAMPLES, 1, &[])?;
+        let h = crate::history::history(
+            &Shape::flat(),
+            v,
+            a,
+            &crate::history::HistoryOptions::default().with_samples(HISTORY_SAMPLES),
+        )?;
         let event = |e: Option<crate::spring::EventKind>| {
             e.and_then(|k| serde_json::to_value(k).ok())
                 .and_then(|k| k.as_str().map(str::to_string))

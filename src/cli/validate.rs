@@ -9,12 +9,13 @@
 //! field). Other CSV columns are listed as `ignored_columns`. The format is
 //! recognised by the first non-blank character.
 
+use crate::cli::error::{Error, Result};
 use crate::cli::grid::parse_number;
 use crate::cli::rows::{number, pick, raw_array, string};
-use crate::error::{Error, Result};
+use crate::validation::{
+    rows_from_columns, AtRest, Convergence, HistoryValidation, RowRegime, SeriesRow, Summary, Validation,
+};
 use serde_json::value::RawValue;
-
-pub use crate::validation::*;
 
 /// Most rows one file may hold.
 pub const MAX_ROWS: usize = crate::cli::grid::MAX_ROWS;

@@ -4,9 +4,9 @@
 //! `mu0 kz u0` (tangential), so that `amp = 0` (no oscillation) stays finite.
 
 use crate::error::{check_nonneg, Result};
-pub use crate::ratio::Ratio;
+use crate::ratio::Ratio;
 use crate::special::one_minus_a_cos_asin;
-use crate::spring::{Event, EventKind, Regime, Spring};
+use crate::spring::{Event, EventKind, Precision, Regime, Spring};
 
 /// The exact steady state of a flat punch.
 #[derive(Debug, Clone, PartialEq)]
@@ -37,11 +37,11 @@ pub struct FlatPoint {
 /// `1 - s = (amp - 1)/amp` passed unrounded (the contact phase near `amp = 1`).
 /// `s` comes from [`spring_s`], the one place it is formed (with its stand-in
 /// for `amp = 0`).
-pub fn spring(vbar: f64, amp: f64, events: bool) -> Spring {
+pub(crate) fn spring(vbar: f64, amp: f64, precision: Precision) -> Spring {
     let s = spring_s(amp);
     // 1 - s = (amp - 1)/amp without cancellation (only used where |s| < 1).
     let one_minus_s = if amp > 0.0 { (amp - 1.0) / amp } else { -s };
-    Spring::with_complement(s, one_minus_s, vbar, events)
+    Spring::with_complement(s, one_minus_s, vbar, precision)
 }
 
 /// `s = u0/du = 1/amp` of the flat punch's spring; `f64::MAX` where `1/amp`
@@ -95,7 +95,7 @@ fn ratio_of(sp: &Spring, amp: f64) -> Result<Ratio> {
 pub fn ratio(vbar: f64, amp: f64) -> Result<Ratio> {
     check_nonneg("vbar", vbar)?;
     check_nonneg("amp", amp)?;
-    ratio_of(&spring(vbar, amp, false), amp)
+    ratio_of(&spring(vbar, amp, Precision::Means), amp)
 }
 
 /// `mu_static/mu0` of a flat punch: the minimum normal force over the mean, `(1 - amp)_+`.
@@ -109,7 +109,7 @@ pub fn mu_static_ratio(amp: f64) -> f64 {
 /// command); the events come from a second solve at the event tolerance.
 pub fn point(vbar: f64, amp: f64) -> Result<FlatPoint> {
     let ratio = ratio(vbar, amp)?;
-    let sp = spring(vbar, amp, true);
+    let sp = spring(vbar, amp, Precision::Events);
     // In units of kz u0 every event force lies on the bound (1 - amp cos tau)_+
     // and on the stick line: amp F(tau_s) = 1 - amp sqrt(1 - vbar^2) after a
     // tangent start (cancellation-free), 0 after a start at contact, plus

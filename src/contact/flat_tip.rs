@@ -153,10 +153,10 @@ impl Contact for FlatTip {
             let ratio = at.ratio.scaled(k);
             return Ok(Evaluation { ratio, error_estimate: at.error_estimate * k, interpolation_error: None });
         }
-        let tol = tol.max(crate::mdr::DEFAULT_TOL);
+        let tol = tol.max(crate::DEFAULT_TOL);
         // Forces in units of kz u0 (amp <= 1) or kz du (amp > 1): both finite.
         let unit = if amp <= 1.0 { amp } else { 1.0 };
-        let flat = crate::flat::spring(vbar, amp, false);
+        let flat = crate::flat::spring(vbar, amp, crate::spring::Precision::Means);
         // Lengths scaled by sqrt(amp) for amp > 1 (module docs).
         let big = amp > 1.0;
         let scale = if big { amp.sqrt() } else { 1.0 };

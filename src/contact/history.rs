@@ -53,7 +53,7 @@ pub struct History {
 }
 
 /// Tangential force of one spring at phase `tau`, units `mu0 kz du`, from its phases.
-pub fn spring_force(sp: &Spring, tau: f64) -> f64 {
+pub(crate) fn spring_force(sp: &Spring, tau: f64) -> f64 {
     let b = (sp.s - tau.cos()).max(0.0);
     if b == 0.0 {
         return 0.0;
@@ -79,129 +79,178 @@ pub const MAX_SPRING_WORK: u128 = 4_000_000_000;
 /// 10^7 as every other output of the command line (`grid::MAX_ROWS` there).
 pub const MAX_SAMPLES: usize = 10_000_000;
 
-/// The history of `periods` periods with `samples` uniform samples (plus events).
-/// `chosen`: positions `x/x_c >= 0` of springs of an MDR shape to report one by one.
-pub fn history(
-    shape: &Shape,
-    vbar: f64,
-    amp: f64,
-    periods: usize,
-    samples: usize,
-    springs: usize,
-    chosen: &[f64],
-) -> Result<History> {
+/// What a [`history`] samples.
+///
+/// ```
+/// use fricosc::history::{history, HistoryOptions};
+/// let opts = HistoryOptions::default().with_samples(100);
+/// let h = history(&fricosc::Shape::flat(), 0.3, 0.5, &opts)?;
+/// assert_eq!(h.samples.len(), 101 + 2); // 100 intervals, and the stick and slip events
+/// # Ok::<(), fricosc::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct HistoryOptions {
+    /// Periods sampled (default 1).
+    pub periods: usize,
+    /// Uniform samples over all periods (default 400; the events are added).
+    pub samples: usize,
+    /// Springs summed for curved shapes (default 4000).
+    pub springs: usize,
+    /// Positions `x/x_c >= 0` of springs of a curved shape reported one by one.
+    pub spring_at: Vec<f64>,
+}
+
+impl Default for HistoryOptions {
+    fn default() -> Self {
+        HistoryOptions { periods: 1, samples: 400, springs: 4000, spring_at: vec![] }
+    }
+}
+
+impl HistoryOptions {
+    /// With `periods` periods.
+    #[must_use]
+    pub fn with_periods(self, periods: usize) -> Self {
+        HistoryOptions { periods, ..self }
+    }
+    /// With `samples` uniform samples.
+    #[must_use]
+    pub fn with_samples(self, samples: usize) -> Self {
+        HistoryOptions { samples, ..self }
+    }
+    /// With `springs` springs summed (curved shapes).
+    #[must_use]
+    pub fn with_springs(self, springs: usize) -> Self {
+        HistoryOptions { springs, ..self }
+    }
+    /// With these springs reported one by one (positions `x/x_c`, curved shapes).
+    #[must_use]
+    pub fn with_spring_at(self, spring_at: Vec<f64>) -> Self {
+        HistoryOptions { spring_at, ..self }
+    }
+}
+
+/// Every limit of a history, checked before anything is allocated; the rows
+/// (uniform samples, their end point, and up to 4 events a period of the flat punch).
+fn check_history(shape: &Shape, vbar: f64, amp: f64, o: &HistoryOptions) -> Result<u128> {
     check_nonneg("vbar", vbar)?;
     check_nonneg("amp", amp)?;
-    for &x in chosen {
+    for &x in &o.spring_at {
         check_nonneg("spring position", x)?;
     }
-    if !chosen.is_empty() && shape.with_contact(|c| c.single_spring()) {
-        return Err(Error::InvalidShape { spec: shape.name(), reason: "chosen springs need an MDR shape".into() });
-    }
-    if periods == 0 || samples == 0 || springs == 0 {
-        return Err(Error::param("periods/samples/springs", 0.0, "must be >= 1"));
-    }
-    if springs > MAX_SPRINGS {
-        return Err(Error::TooLarge {
-            what: "history springs".into(),
-            count: springs as u128,
-            limit: MAX_SPRINGS as u128,
+    if !o.spring_at.is_empty() && shape.is_flat() {
+        return Err(Error::InvalidShape {
+            spec: shape.name().into(),
+            reason: "chosen springs need an MDR shape".into(),
         });
     }
-    // Rows: the uniform samples, their end point, and up to 4 events a period
-    // (flat punch); every limit is checked before anything is allocated.
-    let events = if shape.with_contact(|c| c.single_spring()) { 4 * periods as u128 } else { 0 };
-    let rows = samples as u128 + 1 + events;
-    if rows > MAX_SAMPLES as u128 {
-        return Err(Error::TooLarge {
-            what: "history rows (samples + 1 + events)".into(),
-            count: rows,
-            limit: MAX_SAMPLES as u128,
-        });
+    for (name, v) in [("periods", o.periods), ("samples", o.samples), ("springs", o.springs)] {
+        if v == 0 {
+            return Err(Error::param(name, 0.0, "must be >= 1"));
+        }
     }
-    let values = rows * chosen.len() as u128;
-    if values > MAX_SAMPLES as u128 {
-        return Err(Error::TooLarge {
-            what: "history chosen-spring values (rows x --spring-at positions)".into(),
-            count: values,
-            limit: MAX_SAMPLES as u128,
-        });
-    }
-    let work = rows * if shape.with_contact(|c| c.single_spring()) { 1 } else { springs as u128 };
-    if work > MAX_SPRING_WORK {
-        return Err(Error::TooLarge {
-            what: "history spring evaluations (rows x springs)".into(),
-            count: work,
-            limit: MAX_SPRING_WORK,
-        });
-    }
-    let total = TAU * periods as f64;
+    let too_large = |what: &str, count: u128, limit: u128| {
+        if count > limit {
+            Err(Error::TooLarge { what: what.into(), count, limit })
+        } else {
+            Ok(())
+        }
+    };
+    too_large("history springs", o.springs as u128, MAX_SPRINGS as u128)?;
+    let events = if shape.is_flat() { 4 * o.periods as u128 } else { 0 };
+    let rows = o.samples as u128 + 1 + events;
+    too_large("history rows (samples + 1 + events)", rows, MAX_SAMPLES as u128)?;
+    let values = rows * o.spring_at.len() as u128;
+    too_large("history chosen-spring values (rows x --spring-at positions)", values, MAX_SAMPLES as u128)?;
+    let work = rows * if shape.is_flat() { 1 } else { o.springs as u128 };
+    too_large("history spring evaluations (rows x springs)", work, MAX_SPRING_WORK)?;
+    Ok(rows)
+}
+
+/// The force history of `shape` at `(vbar, amp)`: `opts.periods` periods with
+/// `opts.samples` uniform samples, plus the flat punch's events.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] for bad inputs, [`Error::TooLarge`] beyond the
+/// limits ([`MAX_SAMPLES`] rows, [`MAX_SPRINGS`] springs, [`MAX_SPRING_WORK`]).
+pub fn history(shape: &Shape, vbar: f64, amp: f64, opts: &HistoryOptions) -> Result<History> {
+    check_history(shape, vbar, amp, opts)?;
+    let total = TAU * opts.periods as f64;
+    let samples = opts.samples;
     let mut taus: Vec<(f64, Option<EventKind>)> =
         (0..=samples).map(|j| (total * j as f64 / samples as f64, None)).collect();
-    let (units, out) = match shape.with_contact(|c| c.single_spring()) {
-        true => {
-            let sp = crate::flat::spring(vbar, amp, true);
-            for p in 0..periods {
-                for e in sp.events() {
-                    taus.push((e.tau + TAU * p as f64, Some(e.kind)));
-                }
-            }
-            taus.sort_by(|a, b| a.0.total_cmp(&b.0));
-            let scale = if amp > 0.0 { amp } else { 1.0 };
-            let samples = taus
-                .iter()
-                .map(|&(tau, event)| {
-                    let (normal, tangential) = if amp > 0.0 {
-                        ((sp.s - tau.cos()).max(0.0) * scale, spring_force(&sp, tau) * scale)
-                    } else {
-                        (1.0, 1.0)
-                    };
-                    Sample { tau, normal, tangential, event, springs: vec![] }
-                })
-                .collect();
-            ("normal: kz u0; tangential: mu0 kz u0".to_string(), samples)
-        }
-        // Every other contact through its MDR foundation (crate::contact::grid):
-        // the normal force exactly, the tangential one as the grid's sum.
-        false => shape.with_contact(|c| -> Result<(String, Vec<Sample>)> {
-            let (dz, sp): (f64, Vec<Spring>) = if amp > 0.0 {
-                let (dz, s_of) = crate::contact::grid(c, amp, springs)?;
-                (dz, (0..springs).map(|i| Spring::with_events(s_of(i), vbar)).collect())
-            } else {
-                (0.0, vec![])
-            };
-            taus.sort_by(|a, b| a.0.total_cmp(&b.0));
-            let picked: Vec<(f64, Option<Spring>)> = chosen
-                .iter()
-                .map(|&x| {
-                    let g = c.equivalent_profile(x);
-                    (g, (amp > 0.0).then(|| Spring::with_events((1.0 - g) / amp, vbar)))
-                })
-                .collect();
-            let samples = taus
-                .iter()
-                .map(|&(tau, _)| {
-                    // Both sides of the foundation.
-                    let normal = c.static_force(1.0 - amp * tau.cos());
-                    let tangential = if amp > 0.0 {
-                        2.0 * amp * dz * sp.iter().map(|s| spring_force(s, tau)).sum::<f64>()
-                    } else {
-                        normal
-                    };
-                    let springs = picked
-                        .iter()
-                        .map(|(g, sp)| {
-                            let nrm = (1.0 - g - amp * tau.cos()).max(0.0);
-                            [nrm, sp.as_ref().map_or(nrm, |s| amp * spring_force(s, tau))]
-                        })
-                        .collect();
-                    Sample { tau, normal, tangential, event: None, springs }
-                })
-                .collect();
-            Ok(("normal: E* x_c u0; tangential: mu0 E* x_c u0 (x_c: contact radius at u0)".to_string(), samples))
-        })?,
+    let (units, out) = if shape.is_flat() {
+        ("normal: kz u0; tangential: mu0 kz u0".to_string(), flat_samples(vbar, amp, opts.periods, taus))
+    } else {
+        taus.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let units = "normal: E* x_c u0; tangential: mu0 E* x_c u0 (x_c: contact radius at u0)".to_string();
+        (units, foundation_samples(shape.contact(), vbar, amp, opts, &taus)?)
     };
-    Ok(History { shape: shape.name(), vbar, amp, units, spring_positions: chosen.to_vec(), samples: out })
+    Ok(History { shape: shape.name().into(), vbar, amp, units, spring_positions: opts.spring_at.clone(), samples: out })
+}
+
+/// The flat punch's samples at `taus`, with its events added.
+fn flat_samples(vbar: f64, amp: f64, periods: usize, mut taus: Vec<(f64, Option<EventKind>)>) -> Vec<Sample> {
+    let sp = crate::flat::spring(vbar, amp, crate::spring::Precision::Events);
+    for p in 0..periods {
+        for e in sp.events() {
+            taus.push((e.tau + TAU * p as f64, Some(e.kind)));
+        }
+    }
+    taus.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let scale = if amp > 0.0 { amp } else { 1.0 };
+    taus.iter()
+        .map(|&(tau, event)| {
+            let (normal, tangential) = if amp > 0.0 {
+                ((sp.s - tau.cos()).max(0.0) * scale, spring_force(&sp, tau) * scale)
+            } else {
+                (1.0, 1.0)
+            };
+            Sample { tau, normal, tangential, event, springs: vec![] }
+        })
+        .collect()
+}
+
+/// Every other contact through its MDR foundation ([`crate::contact::grid`]):
+/// the normal force exactly, the tangential one as the grid's sum.
+fn foundation_samples(
+    c: &dyn crate::Contact,
+    vbar: f64,
+    amp: f64,
+    opts: &HistoryOptions,
+    taus: &[(f64, Option<EventKind>)],
+) -> Result<Vec<Sample>> {
+    let (dz, sp): (f64, Vec<Spring>) = if amp > 0.0 {
+        let (dz, s_of) = crate::contact::grid(c, amp, opts.springs)?;
+        (dz, (0..opts.springs).map(|i| Spring::with_events(s_of(i), vbar)).collect())
+    } else {
+        (0.0, vec![])
+    };
+    let picked: Vec<(f64, Option<Spring>)> = opts
+        .spring_at
+        .iter()
+        .map(|&x| {
+            let g = c.equivalent_profile(x);
+            (g, (amp > 0.0).then(|| Spring::with_events((1.0 - g) / amp, vbar)))
+        })
+        .collect();
+    Ok(taus
+        .iter()
+        .map(|&(tau, _)| {
+            // Both sides of the foundation.
+            let normal = c.static_force(1.0 - amp * tau.cos());
+            let tangential =
+                if amp > 0.0 { 2.0 * amp * dz * sp.iter().map(|s| spring_force(s, tau)).sum::<f64>() } else { normal };
+            let springs = picked
+                .iter()
+                .map(|(g, sp)| {
+                    let nrm = (1.0 - g - amp * tau.cos()).max(0.0);
+                    [nrm, sp.as_ref().map_or(nrm, |s| amp * spring_force(s, tau))]
+                })
+                .collect();
+            Sample { tau, normal, tangential, event: None, springs }
+        })
+        .collect())
 }
 
 /// The flat punch's history by the seed's time-stepping scheme (the peer),
@@ -212,8 +261,10 @@ pub fn history(
 pub fn stepped_history(vbar: f64, amp: f64, periods: usize, steps_per_period: usize) -> Result<History> {
     check_nonneg("vbar", vbar)?;
     check_nonneg("amp", amp)?;
-    if periods == 0 || steps_per_period == 0 {
-        return Err(Error::param("periods/steps-per-period", 0.0, "must be >= 1"));
+    for (name, v) in [("periods", periods), ("steps-per-period", steps_per_period)] {
+        if v == 0 {
+            return Err(Error::param(name, 0.0, "must be >= 1"));
+        }
     }
     let rows = periods as u128 * steps_per_period as u128 + 1;
     if rows > MAX_SAMPLES as u128 {

@@ -40,20 +40,19 @@
 //! (`d`, `d'` the last two differences, capped at `d`), is; the estimates of the
 //! pieces add up to the reported one.
 
-use crate::flat::Ratio;
 use crate::quad;
+use crate::ratio::Ratio;
+use crate::shape::DEFAULT_TOL;
 use crate::spring::{mean_normal_sin_cos, Spring, Velocity};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Highest Gauss order tried per piece.
-pub const MAX_ORDER: usize = 256;
+pub(crate) const MAX_ORDER: usize = 256;
 /// First order tried per piece at the default tolerance; a tolerance of
 /// `LOOSE_TOL` or looser starts at 2.
-pub const MIN_ORDER: usize = 4;
+pub(crate) const MIN_ORDER: usize = 4;
 /// Tolerances at or above this start the order ladder at 2.
-pub const LOOSE_TOL: f64 = 1e-9;
-/// Default relative tolerance: about what f64 allows.
-pub const DEFAULT_TOL: f64 = 4e-15;
+pub(crate) const LOOSE_TOL: f64 = 1e-9;
 /// Lowest Gauss order whose error is predicted by extrapolation: below it the
 /// orders are pre-asymptotic (a 2-4-8 ladder was seen to predict 5e-11 for an
 /// error of 1e-7), so the plain difference of the last two orders is both the
@@ -429,7 +428,7 @@ fn elliptic_ke(m: f64, m1: f64) -> (f64, f64) {
 /// Force of one side of the elastic foundation of `g = z^n` pressed to depth
 /// `c` (units `E* x_c u0`): `int_0^(c^(1/n)) (c - z^n) dz = (n/(n+1)) c^(1 + 1/n)`;
 /// 0 for `c <= 0`. The one place this formula lives.
-pub fn foundation_force(n: f64, c: f64) -> f64 {
+pub(crate) fn foundation_force(n: f64, c: f64) -> f64 {
     if c <= 0.0 {
         0.0
     } else {
@@ -482,21 +481,47 @@ fn total_normal(n: f64, amp: f64) -> Option<f64> {
 /// `mu_macro/mu0` of the power-law profile `g = z^n` at `(vbar, amp)`.
 ///
 /// ```
-/// // The cone (n = 1) at vbar = 0.3, du/u0 = 0.5, with the band report.
-/// let r = fricosc::mdr::power_law(1.0, 0.3, 0.5, fricosc::mdr::DEFAULT_TOL, true).unwrap();
+/// // The cone (n = 1) at vbar = 0.3, du/u0 = 0.5.
+/// let r = fricosc::mdr::power_law(1.0, 0.3, 0.5, &fricosc::Options::default())?;
 /// assert!((r.ratio.mu_ratio - 0.6635626779221783).abs() < 1e-14);
 /// assert!(r.error_estimate < 1e-14);
-/// let shares: f64 = r.bands.iter().map(|b| b.normal_share).sum();
-/// assert!((shares - 1.0).abs() < 1e-14);
+/// # Ok::<(), fricosc::Error>(())
 /// ```
 ///
-/// `n > 0`, `vbar, amp` finite and `>= 0` (checked by [`crate::shape`]); `tol`
-/// is the relative quadrature tolerance; `bands` asks for the per-band report.
-/// All integrals are scaled by `amp` (units `kz u0` rather than `kz du`), so
-/// that `amp -> 0` stays finite.
-pub fn power_law(n: f64, vbar: f64, amp: f64, tol: f64, bands: bool) -> crate::Result<MdrResult> {
+/// # Errors
+/// [`crate::Error::InvalidParameter`] for a negative or non-finite `vbar` or
+/// `amp`, `n` outside [[`crate::MIN_EXPONENT`], [`crate::MAX_EXPONENT`]], or bad
+/// options; [`crate::Error::Internal`] for a bug.
+pub fn power_law(n: f64, vbar: f64, amp: f64, opts: &crate::Options) -> crate::Result<MdrResult> {
+    check(n, vbar, amp, opts)?;
+    solve(n, vbar, amp, opts.tol, Report::Ratio)
+}
+
+/// Check the inputs of [`power_law`] and [`point`].
+fn check(n: f64, vbar: f64, amp: f64, opts: &crate::Options) -> crate::Result<()> {
+    if !(crate::MIN_EXPONENT..=crate::MAX_EXPONENT).contains(&n) {
+        return Err(crate::Error::param("n", n, "the exponent must be within [0.05, 1e6]"));
+    }
     crate::error::check_nonneg("vbar", vbar)?;
     crate::error::check_nonneg("amp", amp)?;
+    opts.check()
+}
+
+/// What [`solve`] reports besides the ratio.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Report {
+    /// The ratio and its error estimate only (the normal force from its closed
+    /// form where one exists).
+    Ratio,
+    /// Also the bands (every band's normal force by quadrature).
+    Bands,
+}
+
+/// [`power_law`] on checked inputs: `n > 0`, `vbar, amp` finite and `>= 0`,
+/// `tol` the relative quadrature tolerance. All integrals are scaled by `amp`
+/// (units `kz u0` rather than `kz du`), so that `amp -> 0` stays finite.
+pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> crate::Result<MdrResult> {
+    let bands = report == Report::Bands;
     let tol = tol.max(DEFAULT_TOL);
     // For amp > 1 every integral is computed divided by amp^(1 + 1/n) (in
     // `y/amp`), so that huge amplitudes and small exponents cannot overflow; the
@@ -642,13 +667,7 @@ pub struct MdrPoint {
 /// paraboloid, otherwise the band quadrature of the normal force alone (the
 /// solver asked at `vbar = 1`, where no spring sticks and no deficit is computed).
 /// The one place the contact's mean normal force is obtained.
-///
-/// ```
-/// // Hertz at amp = 0: F = (4/3) E* x_c u0.
-/// let f = fricosc::mdr::mean_normal_force(2.0, 0.0, fricosc::mdr::DEFAULT_TOL).unwrap().unwrap();
-/// assert!((f - 4.0 / 3.0).abs() < 1e-15);
-/// ```
-pub fn mean_normal_force(n: f64, amp: f64, tol: f64) -> crate::Result<Option<f64>> {
+pub(crate) fn mean_normal_force(n: f64, amp: f64, tol: f64) -> crate::Result<Option<f64>> {
     crate::error::check_nonneg("amp", amp)?;
     if amp == 0.0 {
         return Ok(Some(2.0 * foundation_force(n, 1.0)));
@@ -659,7 +678,7 @@ pub fn mean_normal_force(n: f64, amp: f64, tol: f64) -> crate::Result<Option<f64
             let scale = if amp > 1.0 { amp.powf(1.0 + 1.0 / n) } else { 1.0 };
             Ok(Some(2.0 * half * scale).filter(|x| x.is_finite()))
         }
-        None => Ok(power_law(n, 1.0, amp, tol, true)?.mean_normal),
+        None => Ok(solve(n, 1.0, amp, tol, Report::Bands)?.mean_normal),
     }
 }
 
@@ -668,7 +687,7 @@ pub fn mean_normal_force(n: f64, amp: f64, tol: f64) -> crate::Result<Option<f64
 /// loses `D(0) = 1`, so what remains is the minimum normal force over its mean,
 /// `int_0^{z1} (1 - amp - z^n) dz / N = (n/(n+1)) (1 - amp)_+^(1 + 1/n) / N`
 /// (the seed's section 4). `tests/mdr.rs` checks it against `power_law` at `vbar = 0`.
-pub fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> f64 {
+pub(crate) fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> f64 {
     if amp == 0.0 {
         return 1.0;
     }
@@ -680,15 +699,25 @@ pub fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> f64 {
     (2.0 * foundation_force(n, 1.0 - amp) / nn).min(1.0)
 }
 
-/// [`power_law`] with the bands and the static limit; inputs are checked.
-pub fn point(n: f64, vbar: f64, amp: f64, tol: f64) -> crate::Result<MdrPoint> {
-    crate::error::check_nonneg("vbar", vbar)?;
-    crate::error::check_nonneg("amp", amp)?;
-    crate::shape::check_tol(tol)?;
+/// [`power_law`] with the bands and the static limit.
+///
+/// ```
+/// // The cone (n = 1) at vbar = 0.3, du/u0 = 0.5: its bands carry the whole force.
+/// let p = fricosc::mdr::point(1.0, 0.3, 0.5, &fricosc::Options::default())?;
+/// let shares: f64 = p.result.bands.iter().map(|b| b.normal_share).sum();
+/// assert!((shares - 1.0).abs() < 1e-14);
+/// # Ok::<(), fricosc::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`power_law`].
+pub fn point(n: f64, vbar: f64, amp: f64, opts: &crate::Options) -> crate::Result<MdrPoint> {
+    check(n, vbar, amp, opts)?;
+    let tol = opts.tol;
     // mu_ratio and its estimate from the same call as every other command (one
     // value per input); the bands, normal force and node count from the banded run.
-    let plain = power_law(n, vbar, amp, tol, false)?;
-    let mut result = power_law(n, vbar, amp, tol, true)?;
+    let plain = solve(n, vbar, amp, tol, Report::Ratio)?;
+    let mut result = solve(n, vbar, amp, tol, Report::Bands)?;
     result.ratio = plain.ratio;
     result.error_estimate = plain.error_estimate;
     let mu_static_ratio = mu_static_ratio(n, amp, tol);
@@ -704,7 +733,7 @@ mod tests {
         for n in [1.0, 2.0] {
             for a in [1e-6, 0.1, 0.5, 0.9, 0.999999, 1.0, 1.000001, 1.5, 3.0, 10.0, 1e4] {
                 let closed = total_normal(n, a).unwrap();
-                let r = power_law(n, 0.3, a, DEFAULT_TOL, true).unwrap();
+                let r = solve(n, 0.3, a, DEFAULT_TOL, Report::Bands).unwrap();
                 let shares: f64 = r.bands.iter().map(|b| b.normal_share).sum();
                 assert!((shares - 1.0).abs() < 1e-14);
                 // The quadrature's total, rebuilt from the bands of the report.

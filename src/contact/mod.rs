@@ -4,15 +4,15 @@
 //! # Adding an indenter
 //! A new analytic indenter is one file implementing [`Contact`] (the solver
 //! `evaluate`, and its MDR profile: `equivalent_profile`, `reach`,
-//! `static_force`) and one line in [`REGISTRY`] (its name prefix and its
-//! parser); [`shape::Shape::parse`] then accepts it everywhere a shape is named
-//! (`point`, `table`, `batch`, `validate`, `history`), and the time-stepping
-//! peer steps it through [`grid`]. [`flat_tip`] is the example: a sphere worn
-//! flat at its tip.
+//! `static_force`) and one line in the registry of [`shape`] (its name prefix
+//! and its parser); [`shape::Shape::parse`] then accepts it everywhere a shape is
+//! named (`point`, `table`, `batch`, `validate`, `history`), and the
+//! time-stepping peer steps it through [`grid`]. [`flat_tip`] is the example: a
+//! sphere worn flat at its tip. A caller's own contact needs no registry:
+//! [`shape::Shape::from_contact`].
 use crate::error::Result;
-use crate::shape::Evaluation;
+use crate::shape::{Evaluation, Point};
 use std::f64::consts::PI;
-use std::sync::Arc;
 
 pub mod flat;
 pub mod flat_tip;
@@ -30,6 +30,13 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     /// `mu_macro/mu0` with its error estimate; `vbar`, `amp` finite and `>= 0`,
     /// `tol` the relative quadrature tolerance.
     fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation>;
+
+    /// Everything the solver reports about one point (checked inputs). By
+    /// default the evaluation alone; the flat punch adds its events, power laws
+    /// their bands.
+    fn point(&self, vbar: f64, amp: f64, tol: f64) -> Result<Point> {
+        Ok(Point::Other { vbar, amp, evaluation: self.evaluate(vbar, amp, tol)? })
+    }
 
     /// `mu_static/mu0`, the limit `vbar -> 0+` (the minimum normal force over
     /// its mean, seed section 4). By default the solver at `vbar = 0`.
@@ -131,9 +138,6 @@ pub(crate) fn cosine_band(
 /// relative error of order `AMP_LINEAR` itself.
 pub const AMP_LINEAR: f64 = 1e-300;
 
-/// A parser of the part of a shape specification after its prefix.
-pub type Parser = fn(&str) -> Result<Arc<dyn Contact>>;
-
 /// The flat cylindrical punch: one spring (seed section 2).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct FlatPunch;
@@ -145,6 +149,9 @@ impl Contact for FlatPunch {
     fn evaluate(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Evaluation> {
         let ratio = flat::ratio(vbar, amp)?;
         Ok(Evaluation { ratio, error_estimate: shape::flat_error_estimate(&ratio), interpolation_error: None })
+    }
+    fn point(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Point> {
+        Ok(Point::Flat(flat::point(vbar, amp)?))
     }
     fn mu_static(&self, amp: f64, _tol: f64) -> Result<f64> {
         Ok(flat::mu_static_ratio(amp))
@@ -180,11 +187,20 @@ pub struct PowerLaw {
 
 impl Contact for PowerLaw {
     fn name(&self) -> String {
-        shape::Shape::Power(self.n).name()
+        if self.n == 2.0 {
+            "parabolic".into()
+        } else if self.n == 1.0 {
+            "cone".into()
+        } else {
+            format!("power:{:?}", self.n)
+        }
     }
     fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
-        let r = mdr::power_law(self.n, vbar, amp, tol, false)?;
+        let r = mdr::power_law(self.n, vbar, amp, &crate::shape::Options::default().with_tol(tol))?;
         Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate, interpolation_error: None })
+    }
+    fn point(&self, vbar: f64, amp: f64, tol: f64) -> Result<Point> {
+        Ok(Point::Power(mdr::point(self.n, vbar, amp, &crate::shape::Options::default().with_tol(tol))?))
     }
     fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
         Ok(mdr::mu_static_ratio(self.n, amp, tol))
@@ -199,14 +215,14 @@ impl Contact for PowerLaw {
         2.0 * mdr::foundation_force(self.n, depth)
     }
     fn mean_normal(&self, amp: f64) -> Result<f64> {
-        mdr::mean_normal_force(self.n, amp, mdr::DEFAULT_TOL)?
+        mdr::mean_normal_force(self.n, amp, crate::DEFAULT_TOL)?
             .ok_or_else(|| crate::Error::param("amp", amp, "the mean normal force overflows double precision"))
     }
 }
 
 impl Contact for profile::Tabulated {
     fn name(&self) -> String {
-        "tabulated".into()
+        self.name().to_string()
     }
     fn evaluate(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Evaluation> {
         let r = profile::evaluate(self, vbar, amp)?;
@@ -230,5 +246,17 @@ impl Contact for profile::Tabulated {
     }
 }
 
-/// Shapes implemented through [`Contact`]: name prefix and parser.
-pub const REGISTRY: &[(&str, Parser)] = &[("flat-tip:", flat_tip::parse)];
+impl PowerLaw {
+    /// The power law of `power:N`: `N` finite within [[`shape::MIN_EXPONENT`], [`shape::MAX_EXPONENT`]].
+    pub(crate) fn parse(rest: &str, spec: &str) -> Result<PowerLaw> {
+        let bad = |reason: &str| crate::Error::InvalidShape { spec: spec.into(), reason: reason.into() };
+        let n: f64 = rest.trim().parse().map_err(|_| bad("the exponent is not a number"))?;
+        if !n.is_finite() || n <= 0.0 {
+            Err(bad("the exponent must be finite and > 0"))
+        } else if !(shape::MIN_EXPONENT..=shape::MAX_EXPONENT).contains(&n) {
+            Err(bad("the exponent must be within [0.05, 1e6] (power:N tends to flat as N grows)"))
+        } else {
+            Ok(PowerLaw { n })
+        }
+    }
+}

@@ -23,8 +23,8 @@
 //! value and its error estimate.
 
 use crate::error::{Error, Result};
-use crate::flat::Ratio;
 use crate::quad;
+use crate::ratio::Ratio;
 use crate::root;
 use crate::special;
 use std::f64::consts::PI;
@@ -350,7 +350,10 @@ fn far_sums(f: &Pchip, first: usize, (c, d): (f64, f64), lo: usize, out: &mut [f
     let mid = 0.5 * (c + d);
     let split = r[first..first + nt].partition_point(|&x| x < mid);
     let (left, right) = out.split_at_mut(split);
-    rayon::join(|| far_sums(f, first, (c, mid), hi, left), || far_sums(f, first + split, (mid, d), hi, right));
+    crate::numerics::par::join(
+        || far_sums(f, first, (c, mid), hi, left),
+        || far_sums(f, first + split, (mid, d), hi, right),
+    );
 }
 
 /// Chebyshev points of the second kind on `[c, d]`, ends included.
@@ -533,8 +536,25 @@ impl Table {
             });
         }
         let coarse = self.coarse.as_ref().filter(|c| *c.values().last().unwrap_or(&0.0) >= u).map(|c| normalise(c).0);
-        Ok(Tabulated { g, coarse, contact_radius: xc * xmax })
+        Ok(Tabulated { g, coarse, contact_radius: xc * xmax, name: format!("{}@{u0:?}", self.path) })
     }
+}
+
+/// The contact of a `profile:FILE@U0` (`profile`) or `gx:FILE@U0` shape; `rest`
+/// is `FILE@U0`, `spec` the whole name (which the contact keeps).
+pub(crate) fn parse_shape(
+    rest: &str,
+    spec: &str,
+    profile: bool,
+    read: crate::shape::Reader,
+) -> Result<std::sync::Arc<dyn crate::contact::Contact>> {
+    let bad = |reason: &str| Error::InvalidShape { spec: spec.into(), reason: reason.into() };
+    let (path, u0) =
+        rest.rsplit_once('@').ok_or_else(|| bad("needs the mean indentation: profile:FILE@U0 or gx:FILE@U0"))?;
+    let u0: f64 = u0.trim().parse().map_err(|_| bad("the mean indentation after '@' is not a number"))?;
+    let text = read(path).map_err(|e| Error::File { path: path.into(), source: Box::new(e) })?;
+    let t = Table::parse(&text, path, profile)?.at(u0)?.named(spec);
+    Ok(std::sync::Arc::new(t))
 }
 
 /// A tabulated contact, normalised: `G(z) = g(x_c z)/U0` with `G(1) = 1`.
@@ -546,6 +566,21 @@ pub struct Tabulated {
     coarse: Option<Pchip>,
     /// Contact radius at the mean indentation, in the table's length unit.
     pub contact_radius: f64,
+    /// The name outputs give the shape.
+    name: String,
+}
+
+impl Tabulated {
+    /// This contact named `name` (as outputs print it).
+    #[must_use]
+    pub fn named(self, name: &str) -> Tabulated {
+        Tabulated { name: name.into(), ..self }
+    }
+
+    /// The name outputs give the shape.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
 }
 
 /// `mu_macro/mu0` of a tabulated contact and its error estimates.
@@ -668,3 +703,7 @@ fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
     let ratio = Ratio::from_deficit_within(dd, nn, estimate, "tabulated contact")?;
     Ok((ratio, estimate, nn))
 }
+
+#[cfg(test)]
+#[path = "profile_tests.rs"]
+mod tests;

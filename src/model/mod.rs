@@ -9,9 +9,13 @@ use crate::error::{Error, Result};
 /// velocity has no `vbar` then) or the quotient overflows.
 ///
 /// ```
-/// assert_eq!(fricosc::model::vbar_from_vhat(0.3, 2.0).unwrap(), 0.15);
-/// assert!(fricosc::model::vbar_from_vhat(0.3, 0.0).is_err());
+/// assert_eq!(fricosc::vbar_from_vhat(0.3, 2.0)?, 0.15);
+/// assert!(fricosc::vbar_from_vhat(0.3, 0.0).is_err());
+/// # Ok::<(), fricosc::Error>(())
 /// ```
+///
+/// # Errors
+/// [`Error::InvalidParameter`] for a negative or non-finite input, `amp = 0`, or an overflow.
 pub fn vbar_from_vhat(vhat: f64, amp: f64) -> Result<f64> {
     crate::error::check_nonneg("vhat", vhat)?;
     crate::error::check_nonneg("amp", amp)?;

@@ -40,6 +40,24 @@ use crate::root;
 use crate::special::{half_sq_minus_versin as c_fn, x_minus_sin as s_fn};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
+/// How precisely a spring's stick phase is solved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Precision {
+    /// Enough for the means to full accuracy ([`ROOT_RTOL_MEANS`]).
+    Means,
+    /// Event times to full double precision ([`ROOT_RTOL_EVENTS`]).
+    Events,
+}
+
+impl Precision {
+    fn rtol(self) -> f64 {
+        match self {
+            Precision::Means => ROOT_RTOL_MEANS,
+            Precision::Events => ROOT_RTOL_EVENTS,
+        }
+    }
+}
+
 /// Relative root tolerance when only mean forces are wanted. Newton stops once
 /// a step is below this (relative) and returns the next iterate, whose error is
 /// then about its square (1e-12); the deficit is stationary in the stick length,
@@ -358,12 +376,12 @@ impl Spring {
         Self::solve(s, 1.0 - s, vbar, ROOT_RTOL_EVENTS)
     }
 
-    /// As [`Spring::new`] (or, with `events`, [`Spring::with_events`]) for a
-    /// spring given by `s` and `one_minus_s = 1 - s` computed without
-    /// cancellation by the caller (the flat punch: `(amp - 1)/amp`), so that the
-    /// contact phase `arccos s` keeps its relative accuracy as `s -> 1-`.
-    pub fn with_complement(s: f64, one_minus_s: f64, vbar: f64, events: bool) -> Self {
-        Self::solve(s, one_minus_s, vbar, if events { ROOT_RTOL_EVENTS } else { ROOT_RTOL_MEANS })
+    /// As [`Spring::new`] (or [`Spring::with_events`]) for a spring given by
+    /// `s` and `one_minus_s = 1 - s` computed without cancellation by the caller
+    /// (the flat punch: `(amp - 1)/amp`), so that the contact phase `arccos s`
+    /// keeps its relative accuracy as `s -> 1-`.
+    pub(crate) fn with_complement(s: f64, one_minus_s: f64, vbar: f64, precision: Precision) -> Self {
+        Self::solve(s, one_minus_s, vbar, precision.rtol())
     }
 
     fn solve(s: f64, one_minus_s: f64, vbar: f64, rtol: f64) -> Self {

@@ -10,13 +10,7 @@ fn decimal(x: f64) -> f64 {
 /// `start` to `stop`) by its 15-digit decimal where that is within two ulps of
 /// the computed value and keeps the sequence strictly increasing and inside
 /// `[start, stop]`; the first and last values stay as they are.
-///
-/// ```
-/// let mut v = vec![0.0, 0.1 * 3.0, 1.0];
-/// fricosc::numerics::decimal::tidy(&mut v, 0.0, 1.0);
-/// assert_eq!(v[1], 0.3);
-/// ```
-pub fn tidy(values: &mut [f64], start: f64, stop: f64) {
+pub(crate) fn tidy(values: &mut [f64], start: f64, stop: f64) {
     let n = values.len();
     for k in 1..n.saturating_sub(1) {
         let (x, r) = (values[k], decimal(values[k]));
@@ -24,5 +18,15 @@ pub fn tidy(values: &mut [f64], start: f64, stop: f64) {
         if (r - x).abs() <= 2.0 * ulp && r > values[k - 1] && r < stop && r >= start {
             values[k] = r;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn binary_noise_is_removed_and_the_ends_kept() {
+        let mut v = vec![0.0, 0.1 * 3.0, 1.0];
+        super::tidy(&mut v, 0.0, 1.0);
+        assert_eq!(v, [0.0, 0.3, 1.0]);
     }
 }

@@ -19,7 +19,7 @@ fn flat(c: &mut Criterion) {
 
 fn parabolic(c: &mut Criterion) {
     c.bench_function("parabolic point (vbar 0.3, amp 0.4)", |b| {
-        b.iter(|| fricosc::mdr::power_law(2.0, black_box(0.3), black_box(0.4), fricosc::mdr::DEFAULT_TOL, false))
+        b.iter(|| fricosc::mdr::power_law(2.0, black_box(0.3), black_box(0.4), &fricosc::Options::default()))
     });
 }
 
@@ -33,7 +33,7 @@ fn parabolic_table(c: &mut Criterion) {
             for i in 0..11 {
                 for j in 0..1001 {
                     let (a, v) = (i as f64 / 10.0, j as f64 / 1000.0);
-                    acc += fricosc::mdr::power_law(2.0, v, a, fricosc::mdr::DEFAULT_TOL, false).unwrap().ratio.mu_ratio;
+                    acc += fricosc::mdr::power_law(2.0, v, a, &fricosc::Options::default()).unwrap().ratio.mu_ratio;
                 }
             }
             acc

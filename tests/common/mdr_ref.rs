@@ -1,12 +1,13 @@
 //! A second quadrature for MDR power laws (not independent: it shares
-//! `Spring::new` and `quad::rule` with the solver; the independent check is
+//! `Spring::new` with the solver; its Gauss rules are the tests' own
+//! (`common/quad.rs`); the independent check is
 //! `tests/mdr_independent.rs`): the integral over `z` is done in
 //! the variable `y = z^n` (not the solver's `beta = arcsin s`), with a
 //! `y = p + (q-p)(1 - cos t)/2` substitution for the square-root thresholds,
 //! Gauss-Jacobi at the centre, geometric splitting near it, and fixed high orders
 //! (96 and 128 points per piece, whose difference is returned as the accuracy).
 //! Each spring is solved by the generic `Spring::new(s, vbar)`.
-use fricosc::quad;
+use crate::common::quad::gauss_jacobi;
 use fricosc::spring::{mean_normal, Spring};
 use std::f64::consts::PI;
 
@@ -26,9 +27,9 @@ fn pass(n: f64, amp: f64, vbar: f64, p: f64, q: f64, m: usize) -> (f64, f64) {
     let (mut sn, mut sd) = (0.0, 0.0);
     if p == 0.0 {
         let beta = 2.0 * inv_n - 1.0;
-        let r = quad::rule(m, beta);
+        let (nodes, weights) = gauss_jacobi(m, beta);
         let scale = (0.5 * PI).powf(beta + 1.0) * q.powf(inv_n) * inv_n;
-        for (&x, &w) in r.nodes.iter().zip(&r.weights) {
+        for (&x, &w) in nodes.iter().zip(&weights) {
             let t = 0.5 * PI * (1.0 + x);
             let h = (0.5 * t).sin();
             let jac = if beta == 0.0 { 1.0 } else { (h / t).powf(beta) } * (0.5 * t).cos();
@@ -38,9 +39,9 @@ fn pass(n: f64, amp: f64, vbar: f64, p: f64, q: f64, m: usize) -> (f64, f64) {
         }
         (scale * sn, scale * sd)
     } else {
-        let r = quad::rule(m, 0.0);
+        let (nodes, weights) = gauss_jacobi(m, 0.0);
         let half = 0.5 * (q - p);
-        for (&x, &w) in r.nodes.iter().zip(&r.weights) {
+        for (&x, &w) in nodes.iter().zip(&weights) {
             let t = 0.5 * PI * (1.0 + x);
             let (st, ct) = t.sin_cos();
             let y = p + half * (1.0 - ct);

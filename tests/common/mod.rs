@@ -3,6 +3,8 @@
 
 use serde_json::Value;
 
+pub mod quad;
+
 /// One case of `data/reference-values.json` (a copy of `shared/reference-values.json`).
 pub struct Case {
     pub shape: String,

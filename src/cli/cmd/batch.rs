@@ -3,8 +3,8 @@
 
 use super::{io_err, read_input};
 use crate::cli::batch::{self, Format};
-use crate::error::{Error, Result};
-use crate::shape::Stepping;
+use crate::cli::error::{Error, Result};
+use crate::stepper::Stepping;
 use std::io::{self, BufRead, Write};
 
 pub fn run(file: Option<String>, format: Option<String>, stepping: Option<Stepping>) -> Result<()> {

@@ -1,8 +1,8 @@
 //! `fricosc bench`: the work-precision benchmark.
 
 use super::{check_out_dir, emit};
+use crate::cli::error::{Error, Result};
 use crate::cli::export::{export_bytes, Format};
-use crate::error::{Error, Result};
 
 /// Run the benchmark and write its JSON, CSV, SVG and PNG into `out`.
 pub fn run(out: &str, quick: bool) -> Result<()> {

@@ -1,8 +1,8 @@
 //! `fricosc claims`: every quantitative statement of the seed, checked.
 
 use super::emit;
+use crate::cli::error::Result;
 use crate::cli::export::{export, Format};
-use crate::error::Result;
 
 /// Print the claims as Markdown, JSON or CSV.
 pub fn run(format: &str) -> Result<()> {

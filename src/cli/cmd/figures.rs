@@ -1,7 +1,7 @@
 //! `fricosc figures`: the seed's figures, exact, with its approximations.
 
 use super::{check_out_dir, emit};
-use crate::error::Result;
+use crate::cli::error::Result;
 
 /// Write every figure into `out`.
 pub fn run(out: &str) -> Result<()> {

@@ -1,9 +1,9 @@
 //! `fricosc history`: exact force histories (the seed's Fig. 2).
 
 use super::{emit_bytes, vbar_of, Velocity};
+use crate::cli::error::Result;
 use crate::cli::export::{export_bytes, Format};
 use crate::cli::grid::{parse_number, parse_values};
-use crate::error::Result;
 
 pub fn run(
     shape: &str,
@@ -27,15 +27,23 @@ pub fn run(
     };
     let format = Format::parse(format, &[Format::Json, Format::Csv, Format::Svg, Format::Png])?;
     let h = match stepping {
-        None => crate::cli::history::history(&shape, vbar, amp, periods, samples, springs, &chosen)?,
+        None => {
+            let opts = crate::history::HistoryOptions::default()
+                .with_periods(periods)
+                .with_samples(samples)
+                .with_springs(springs)
+                .with_spring_at(chosen);
+            crate::history::history(&shape, vbar, amp, &opts)?
+        }
         Some(m) => {
-            if shape != crate::shape::Shape::Flat || !chosen.is_empty() {
-                return Err(crate::error::Error::InvalidShape {
-                    spec: shape.name(),
+            if !shape.is_flat() || !chosen.is_empty() {
+                return Err(crate::Error::InvalidShape {
+                    spec: shape.name().into(),
                     reason: "history --method stepping steps the flat punch (without --spring-at)".into(),
-                });
+                }
+                .into());
             }
-            crate::cli::history::stepped_history(vbar, amp, periods, m)?
+            crate::history::stepped_history(vbar, amp, periods, m)?
         }
     };
     let mut bytes = export_bytes(&h, format)?;

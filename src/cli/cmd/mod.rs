@@ -2,9 +2,10 @@
 //! the one checked path to stdout, bounded input, and the outcome that `main`
 //! turns into an exit code.
 
+use crate::cli::error::{Error, Result};
 use crate::cli::grid::parse_number;
-use crate::error::{Error, Result};
-use crate::shape::{check_tol, Stepping};
+use crate::shape::check_tol;
+use crate::stepper::Stepping;
 use clap::Args;
 use std::io::{self, Write};
 
@@ -110,13 +111,13 @@ pub struct Common {
 
 pub fn tol_of(t: &Option<String>) -> Result<f64> {
     match t {
-        Some(t) => check_tol(parse_number("--tol", t)?),
-        None => Ok(crate::mdr::DEFAULT_TOL),
+        Some(t) => Ok(check_tol(parse_number("--tol", t)?)?),
+        None => Ok(crate::DEFAULT_TOL),
     }
 }
 
 pub fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
-    crate::model::vbar_from_vhat(vhat, amp)
+    Ok(crate::vbar_from_vhat(vhat, amp)?)
 }
 
 pub fn io_err(e: io::Error) -> Error {

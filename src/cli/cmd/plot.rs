@@ -1,8 +1,8 @@
 //! `fricosc plot`: the user's own curves in the style of the seed's figures.
 
 use super::{drawing_kind, emit, write_drawing, Velocity};
+use crate::cli::error::Result;
 use crate::cli::grid::parse_values;
-use crate::error::Result;
 use clap::Args;
 
 #[derive(Args)]

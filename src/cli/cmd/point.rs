@@ -1,9 +1,9 @@
 //! `fricosc point`: one point with its regime, events and bands (JSON).
 
 use super::{io_err, tol_of, vbar_of, Common};
+use crate::cli::error::{Error, Result};
 use crate::cli::grid::parse_number;
-use crate::error::{Error, Result};
-use crate::shape::{evaluate_stepping, Shape};
+use crate::shape::Shape;
 use clap::Args;
 use std::io::{self, Write};
 
@@ -17,7 +17,7 @@ pub struct PointArgs {
 }
 
 fn exact_point(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<serde_json::Value> {
-    serde_json::to_value(crate::shape::point(shape, vbar, amp, tol)?)
+    serde_json::to_value(shape.point(vbar, amp, &crate::Options::default().with_tol(tol))?)
         .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
 }
 
@@ -32,7 +32,7 @@ pub fn run(a: PointArgs) -> Result<()> {
     let tol = tol_of(&a.common.tol)?;
     let body = match a.common.method.stepping()? {
         Some(st) => {
-            let e = evaluate_stepping(&shape, vbar, amp, st)?;
+            let e = crate::stepper::evaluate(&shape, vbar, amp, st)?;
             serde_json::json!({"vbar": vbar, "amp": amp, "mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction,
                 "method": "stepping", "steps": e.steps, "springs": e.springs, "period_change": e.period_change})
         }

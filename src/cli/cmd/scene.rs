@@ -1,8 +1,8 @@
 //! `fricosc scene`: physical scenes in SI units.
 
 use super::emit;
+use crate::cli::error::{Error, Result};
 use crate::cli::output::Format;
-use crate::error::{Error, Result};
 use rayon::prelude::*;
 use std::io::{IsTerminal, Write};
 
@@ -17,7 +17,7 @@ pub fn run(files: Vec<String>, schema: bool, format: Format, plot: Option<String
         return Err(Error::Parse { context: "scene".into(), reason: "give a scene file (or --schema)".into() });
     }
     // Read and solve everything before the first byte is written.
-    let scenes: Vec<Result<crate::cli::scene::Scene>> = files
+    let scenes: Vec<Result<crate::scene::Scene>> = files
         .iter()
         .map(|f| {
             let text = crate::cli::input::read_capped(f, crate::cli::input::MAX_SMALL_BYTES)?;
@@ -26,20 +26,20 @@ pub fn run(files: Vec<String>, schema: bool, format: Format, plot: Option<String
         .collect();
     let scenes = scenes.into_iter().collect::<Result<Vec<_>>>()?;
     // A progress bar on stderr only when it is a terminal and the work is long.
-    let total: usize = scenes.iter().map(crate::cli::scene::velocity_count).sum();
+    let total: usize = scenes.iter().map(crate::scene::velocity_count).sum();
     let bar = (std::io::stderr().is_terminal() && total >= 2000).then(|| Progress::new(total as u64));
     let tick = |k: u64| {
         if let Some(b) = &bar {
             b.inc(k);
         }
     };
-    let results: Vec<Result<Vec<crate::cli::scene::SceneResult>>> =
+    let results: Vec<Result<Vec<crate::scene::SceneResult>>> =
         scenes.par_iter().zip(&files).map(|(s, f)| crate::cli::scene::solve_with_progress(s, f, &tick)).collect();
     if let Some(b) = &bar {
         b.finish();
     }
     // Each answer (one per amplitude) with its scene's label: its name, or its file.
-    let mut labelled: Vec<(String, crate::cli::scene::SceneResult)> = vec![];
+    let mut labelled: Vec<(String, crate::scene::SceneResult)> = vec![];
     for (r, f) in results.into_iter().zip(&files) {
         labelled.extend(r?.into_iter().map(|x| (x.name.clone().unwrap_or_else(|| f.clone()), x)));
     }
@@ -52,7 +52,7 @@ pub fn run(files: Vec<String>, schema: bool, format: Format, plot: Option<String
         let svg = crate::cli::scene::family_chart(&labelled).svg();
         super::write_drawing("--plot", path, &svg)?;
     }
-    let results: Vec<&crate::cli::scene::SceneResult> = labelled.iter().map(|(_, r)| r).collect();
+    let results: Vec<&crate::scene::SceneResult> = labelled.iter().map(|(_, r)| r).collect();
     // One shape of output whatever the number of files: a JSON list, and CSV in
     // long form (one header; each row with its scene and the scene's results).
     let text = match format {
@@ -66,7 +66,7 @@ pub fn run(files: Vec<String>, schema: bool, format: Format, plot: Option<String
 /// Every scene's rows in one CSV table: the scene (its name, or its file), the
 /// scene-level results repeated on each row (one amplitude of a family each),
 /// then the row's own columns.
-fn scenes_csv(results: &[(String, crate::cli::scene::SceneResult)]) -> Result<String> {
+fn scenes_csv(results: &[(String, crate::scene::SceneResult)]) -> Result<String> {
     use crate::cli::export::Report;
     let n = crate::cli::output::num;
     let fail = |e: csv::Error| Error::Internal { what: format!("writing CSV: {e}") };

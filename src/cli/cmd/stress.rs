@@ -1,7 +1,7 @@
 //! `fricosc stress`: random and edge points through every check.
 
 use super::{emit, to_json, Outcome};
-use crate::error::{Error, Result};
+use crate::cli::error::{Error, Result};
 
 /// Most points one stress run may take.
 pub const MAX_POINTS: usize = 100_000_000;

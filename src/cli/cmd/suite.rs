@@ -1,7 +1,7 @@
 //! `fricosc suite`: write the reference suite, or check a copy of it.
 
 use super::{check_out_dir, emit, Outcome};
-use crate::error::Result;
+use crate::cli::error::Result;
 
 /// `--out DIR` writes the suite; `--check DIR` compares it with the current
 /// solver ([`Outcome::Negative`] when a file differs or is missing).
@@ -30,7 +30,7 @@ pub fn run(out: Option<String>, check: Option<String>) -> Result<Outcome> {
                 Ok(Outcome::Negative)
             }
         }
-        _ => Err(crate::error::Error::Parse {
+        _ => Err(crate::cli::error::Error::Parse {
             context: "suite".into(),
             reason: "give exactly one of --out DIR (write) and --check DIR (verify)".into(),
         }),

@@ -1,10 +1,9 @@
 //! `fricosc table`: a grid of amplitudes x velocities (JSON or CSV).
 
 use super::{io_err, tol_of, vbar_of, Common};
+use crate::cli::error::{Error, Result};
 use crate::cli::grid::parse_values;
 use crate::cli::output::{Format, TableWriter};
-use crate::error::{Error, Result};
-use crate::shape::{evaluate_stepping, evaluate_with};
 use clap::Args;
 use rayon::prelude::*;
 use std::io;
@@ -23,7 +22,7 @@ pub struct TableArgs {
 
 pub fn run(a: TableArgs) -> Result<()> {
     let shape = crate::cli::input::parse_shape(&a.common.shape)?;
-    let tol = tol_of(&a.common.tol)?;
+    let opts = crate::Options::default().with_tol(tol_of(&a.common.tol)?);
     let amps = parse_values("--amp", &a.amp)?;
     let (vels, is_vhat) = match (&a.common.velocity.vbar, &a.common.velocity.vhat) {
         (Some(v), _) => (parse_values("--vbar", v)?, false),
@@ -64,14 +63,14 @@ pub fn run(a: TableArgs) -> Result<()> {
         .map(|&(amp, v)| {
             let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
             let r = match stepping {
-                Some(st) => evaluate_stepping(&shape, vbar, amp, st)?.ratio,
-                None => evaluate_with(&shape, vbar, amp, tol)?.ratio,
+                Some(st) => crate::stepper::evaluate(&shape, vbar, amp, st)?.ratio,
+                None => shape.evaluate_with(vbar, amp, &opts)?.ratio,
             };
             Ok([v, vbar, amp, r.mu_ratio, r.reduction])
         })
         .collect::<Result<Vec<_>>>()?;
     drop(pairs);
-    let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, &name, cols).map_err(io_err)?;
+    let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, name, cols).map_err(io_err)?;
     for r in &rows {
         if is_vhat { w.row(r) } else { w.row(&r[1..]) }.map_err(io_err)?;
     }

@@ -2,10 +2,10 @@
 //! errors by regime and amplitude and findings that point at bugs.
 
 use super::{io_err, read_input, Outcome};
+use crate::cli::error::{Error, Result};
 use crate::cli::grid::parse_number;
-use crate::cli::validate::{AtRest, Convergence, HistoryValidation, Validation};
-use crate::error::{Error, Result};
 use crate::shape::Shape;
+use crate::validation::{AtRest, Convergence, HistoryValidation, Validation};
 use std::io::{self, IsTerminal, Write};
 
 /// The options of `validate` (see `main.rs` for their help).
@@ -100,7 +100,7 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
     drop(text);
     let (shape, shape_source) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
     let rows = crate::cli::validate::normalise(&table, mu0, &source)?;
-    let v = crate::cli::validate::compare(&shape, &rows, at_rest, tolerance)?;
+    let v = crate::validation::compare(&shape, &rows, at_rest, tolerance)?;
     let report = Report { validation: &v, shape_source, ignored_columns: &table.ignored_columns };
     let body = match format.as_str() {
         "json" => super::to_json(&report)? + "\n",
@@ -137,7 +137,7 @@ fn choose_shape(file: Option<&str>, option: Option<&str>, source: &str) -> Resul
         }
         (Some(f), None) => (crate::cli::input::parse_shape(f)?, ShapeSource::File),
         (None, Some(o)) => (crate::cli::input::parse_shape(o)?, ShapeSource::Option),
-        (None, None) => (Shape::Flat, ShapeSource::Default),
+        (None, None) => (Shape::flat(), ShapeSource::Default),
     })
 }
 
@@ -193,7 +193,7 @@ fn run_series(a: &ValidateArgs, at_rest: AtRest, mu0: Option<f64>, format: &str)
         resolutions.push(n);
     }
     let (shape, shape_source) = chosen.ok_or_else(|| Error::Internal { what: "an empty series".into() })?;
-    let c = crate::cli::validate::convergence(&shape, &resolutions, &tables, at_rest, target)?;
+    let c = crate::validation::convergence(&shape, &resolutions, &tables, at_rest, target)?;
     if let Some(path) = &a.plot {
         let svg = crate::cli::validate::series_svg(&c)?;
         super::write_drawing("--plot", path, &svg)?;
@@ -219,7 +219,7 @@ fn history_of(
 ) -> Result<HistoryValidation> {
     let shape = match &a.shape {
         Some(spec) => crate::cli::input::parse_shape(spec)?,
-        None => Shape::Flat,
+        None => Shape::flat(),
     };
     let amp = parse_number(
         "--amp",
@@ -273,9 +273,9 @@ fn history_of(
     fnorm.iter_mut().for_each(|x| *x /= unit);
     ft.iter_mut().for_each(|x| *x /= mu0 * unit);
     let normal = normal_col.map(|_| fnorm.as_slice());
-    let taus = crate::cli::validate::phases(&t, is_tau, omega, normal)
+    let taus = crate::validation::phases(&t, is_tau, omega, normal)
         .map_err(|e| Error::Parse { context: source.clone(), reason: e.to_string() })?;
-    crate::cli::validate::compare_history(&shape, vbar, amp, &taus, &ft, normal, tolerance)
+    Ok(crate::validation::compare_history(&shape, vbar, amp, &taus, &ft, normal, tolerance)?)
 }
 
 fn run_history(
@@ -341,7 +341,7 @@ fn run_history_series(
     runs.sort_by(|x, y| x.0.total_cmp(&y.0));
     let resolutions: Vec<f64> = runs.iter().map(|r| r.0).collect();
     let max_abs_errors: Vec<f64> = runs.iter().map(|r| r.1.max_abs_error).collect();
-    let (order, constant) = crate::cli::validate::observed_order(&resolutions, &max_abs_errors);
+    let (order, constant) = crate::validation::observed_order(&resolutions, &max_abs_errors);
     let mut kinds: Vec<crate::spring::EventKind> = runs[0].1.exact_events.iter().map(|e| e.kind).collect();
     kinds.dedup();
     let events = kinds
@@ -352,7 +352,7 @@ fn run_history_series(
             let (res, errs): (Vec<f64>, Vec<f64>) =
                 resolutions.iter().zip(&timing_errors).filter_map(|(r, e)| e.map(|e| (*r, e))).unzip();
             let name = serde_json::to_value(k).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default();
-            EventSeries { kind: name, timing_errors, order: crate::cli::validate::observed_order(&res, &errs).0 }
+            EventSeries { kind: name, timing_errors, order: crate::validation::observed_order(&res, &errs).0 }
         })
         .collect();
     let report = HistorySeries { resolutions, max_abs_errors, order, constant, events };

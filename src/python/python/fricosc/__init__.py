@@ -3,7 +3,7 @@
 ``fricosc`` computes ``mu_macro / mu0`` of a contact whose normal load
 oscillates while it slides, as a function of the dimensionless velocity
 ``vbar`` (eq. 3) and the amplitude ``amp = du/u0``, with the event-driven
-exact solver of the ``fricosc`` command line (the same Rust core, in process).
+exact solver of the ``fricosc`` command line (the same Rust library, in process).
 
 >>> import fricosc
 >>> float(fricosc.mu_ratio("flat", 0.2, 0.5))
@@ -16,20 +16,30 @@ command line (``"flat"``, ``"parabolic"``, ``"cone"``, ``"power:2.5"``,
 classes :class:`Flat`, :class:`PowerLaw`, :class:`FlatTip`, :class:`Profile`
 and :class:`EquivalentProfile` (tables from arrays, no file needed).
 
-Bad input raises ``ValueError`` (``TypeError`` for a wrong type) with the
-command line's message; for an array element the message ends with its index.
+Bad input raises :class:`InputError` (a ``ValueError``) with the command line's
+message (for an array element the message ends with its index), a wrong type
+``TypeError``, and a bug of fricosc :class:`InternalError` (a ``RuntimeError``).
 """
 
-from __future__ import annotations
-
-import json
-import os
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
-
-import numpy as np
-import numpy.typing as npt
-
-from . import _fricosc
+from ._api import (
+    DEFAULT_TOL,
+    EquivalentProfile,
+    Flat,
+    FlatTip,
+    InputError,
+    InternalError,
+    PowerLaw,
+    Profile,
+    Shape,
+    __version__,
+    history,
+    mu_ratio,
+    point,
+    reduction,
+    scene,
+    validate,
+    validate_history,
+)
 
 __all__ = [
     "Shape",
@@ -45,402 +55,8 @@ __all__ = [
     "validate",
     "validate_history",
     "scene",
+    "InputError",
+    "InternalError",
     "DEFAULT_TOL",
     "__version__",
 ]
-
-__version__: str = _fricosc.__version__
-
-#: Relative quadrature tolerance of curved shapes when ``tol`` is not given.
-DEFAULT_TOL: float = _fricosc.default_tol()
-
-FloatOrArray = Union[float, npt.NDArray[np.float64]]
-
-
-class Shape:
-    """A contact geometry, parsed from its command-line name.
-
-    >>> Shape("parabolic").name
-    'parabolic'
-    """
-
-    _core: _fricosc.CoreShape
-
-    def __init__(self, spec: str) -> None:
-        if not isinstance(spec, str):
-            raise TypeError(f"a shape is a string or a fricosc.Shape, not {type(spec).__name__}")
-        self._core = _fricosc.CoreShape.parse(spec)
-
-    @property
-    def name(self) -> str:
-        """The canonical name (it parses back to the same shape)."""
-        return self._core.name
-
-    def __repr__(self) -> str:
-        return f"{type(self).__name__}({self.name!r})"
-
-
-class Flat(Shape):
-    """The flat cylindrical punch: one spring (the seed's section 2)."""
-
-    def __init__(self) -> None:
-        super().__init__("flat")
-
-
-class PowerLaw(Shape):
-    """An MDR power-law profile ``g ~ |x|^n`` (``n = 1`` cone, ``n = 2`` paraboloid)."""
-
-    def __init__(self, n: float) -> None:
-        super().__init__(f"power:{float(n)!r}")
-
-
-class FlatTip(Shape):
-    """A sphere worn flat at its tip; ``e`` = flat radius / contact radius, in [0, 1)."""
-
-    def __init__(self, e: float) -> None:
-        super().__init__(f"flat-tip:{float(e)!r}")
-
-
-def _column(values: npt.ArrayLike, what: str) -> npt.NDArray[np.float64]:
-    array = np.ascontiguousarray(np.asarray(values, dtype=np.float64))
-    if array.ndim != 1:
-        raise ValueError(f"{what} must be one-dimensional, got shape {array.shape}")
-    return array
-
-
-class Profile(Shape):
-    """A tabulated axisymmetric profile ``f(r)`` (from the axis outwards, nondecreasing)
-    at mean indentation ``u0`` (in the columns' length unit), MDR-transformed;
-    the same checks and limits as a ``profile:FILE@U0`` file."""
-
-    def __init__(self, r: npt.ArrayLike, f: npt.ArrayLike, u0: float, name: str = "profile") -> None:
-        self._core = _fricosc.CoreShape.from_table(_column(r, "r"), _column(f, "f"), float(u0), True, name)
-
-
-class EquivalentProfile(Shape):
-    """A tabulated MDR equivalent profile ``g(x)`` at mean indentation ``u0``
-    (as ``gx:FILE@U0``)."""
-
-    def __init__(self, x: npt.ArrayLike, g: npt.ArrayLike, u0: float, name: str = "gx") -> None:
-        self._core = _fricosc.CoreShape.from_table(_column(x, "x"), _column(g, "g"), float(u0), False, name)
-
-
-ShapeLike = Union[str, Shape]
-
-
-def _core(shape: ShapeLike) -> _fricosc.CoreShape:
-    if isinstance(shape, Shape):
-        return shape._core
-    return Shape(shape)._core
-
-
-def _velocity(vbar: Optional[npt.ArrayLike], vhat: Optional[npt.ArrayLike]) -> Tuple[npt.ArrayLike, bool]:
-    if vbar is not None and vhat is None:
-        return vbar, False
-    if vbar is None and vhat is not None:
-        return vhat, True
-    raise TypeError("give exactly one of vbar (eq. 3) and vhat (eq. 15, vbar = vhat / amp)")
-
-
-def _floats(x: npt.ArrayLike, what: str) -> npt.NDArray[np.float64]:
-    if isinstance(x, (str, bytes)):
-        raise TypeError(f"{what} must be a number or an array of numbers, not {type(x).__name__}")
-    try:
-        return np.asarray(x, dtype=np.float64)
-    except (TypeError, ValueError) as e:
-        raise TypeError(f"{what} must be a number or an array of numbers ({e})") from None
-
-
-def _tol(tol: Optional[float]) -> float:
-    return DEFAULT_TOL if tol is None else float(tol)
-
-
-def _evaluate(
-    shape: ShapeLike,
-    vbar: Optional[npt.ArrayLike],
-    amp: Optional[npt.ArrayLike],
-    vhat: Optional[npt.ArrayLike],
-    tol: Optional[float],
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], Tuple[int, ...]]:
-    core = _core(shape)
-    if amp is None:
-        raise TypeError("amp (du/u0) is required")
-    v, is_vhat = _velocity(vbar, vhat)
-    v_arr, a_arr = np.broadcast_arrays(_floats(v, "vhat" if is_vhat else "vbar"), _floats(amp, "amp"))
-    shape_out = v_arr.shape
-    flat_v = np.ascontiguousarray(v_arr).reshape(-1)
-    flat_a = np.ascontiguousarray(a_arr).reshape(-1)
-    try:
-        mu, red = _fricosc.evaluate(core, flat_v, flat_a, is_vhat, _tol(tol))
-    except (ValueError, RuntimeError) as e:
-        if len(e.args) == 2 and isinstance(e.args[1], int):
-            message, index = e.args
-            if shape_out:
-                where = tuple(int(i) for i in np.unravel_index(index, shape_out))
-                message = f"{message} (at index {where[0] if len(where) == 1 else where})"
-            raise type(e)(message) from None
-        raise
-    return mu.reshape(shape_out), red.reshape(shape_out), shape_out
-
-
-def mu_ratio(
-    shape: ShapeLike,
-    vbar: Optional[npt.ArrayLike] = None,
-    amp: Optional[npt.ArrayLike] = None,
-    *,
-    vhat: Optional[npt.ArrayLike] = None,
-    tol: Optional[float] = None,
-) -> FloatOrArray:
-    """``mu_macro / mu0`` of ``shape`` at velocity ``vbar`` (or ``vhat``) and amplitude ``amp``.
-
-    ``vbar`` and ``amp`` (or ``vhat`` and ``amp``, with ``vbar = vhat / amp``)
-    are numbers or arrays and broadcast against each other; the result is a
-    float for scalar inputs, else a float64 array of the broadcast shape.
-    ``tol`` is the relative quadrature tolerance of curved shapes (default
-    :data:`DEFAULT_TOL`). Arrays of 256 elements or more are evaluated on every
-    core with the GIL released.
-
-    >>> mu_ratio("flat", [0.0, 0.5, 1.0], 0.5).tolist()
-    [0.5, 0.8992738983331656, 1.0]
-    """
-    mu, _, shape_out = _evaluate(shape, vbar, amp, vhat, tol)
-    return float(mu) if not shape_out else mu
-
-
-def reduction(
-    shape: ShapeLike,
-    vbar: Optional[npt.ArrayLike] = None,
-    amp: Optional[npt.ArrayLike] = None,
-    *,
-    vhat: Optional[npt.ArrayLike] = None,
-    tol: Optional[float] = None,
-) -> FloatOrArray:
-    """``1 - mu_macro / mu0``, computed with its own relative accuracy (not as a
-    difference): the friction that the oscillation removes. Arguments as in
-    :func:`mu_ratio`.
-
-    >>> reduction("flat", 1 - 1e-6, 0.5)  # 1 - mu_ratio would keep 3 digits
-    3.580986935971103e-13
-    """
-    _, red, shape_out = _evaluate(shape, vbar, amp, vhat, tol)
-    return float(red) if not shape_out else red
-
-
-def point(
-    shape: ShapeLike,
-    vbar: Optional[float] = None,
-    amp: Optional[float] = None,
-    *,
-    vhat: Optional[float] = None,
-    tol: Optional[float] = None,
-) -> Dict[str, Any]:
-    """Everything the solver reports at one point, as ``fricosc point`` prints it:
-    the regime and events of the flat punch, the bands of a power law, the
-    error estimates.
-
-    >>> p = point("flat", 0.3, 0.5)
-    >>> p["regime"], p["mu_ratio"], [e["kind"] for e in p["events"]]
-    ('permanent_stick_slip', 0.7896790737003745, ['stick', 'slip'])
-    """
-    if amp is None:
-        raise TypeError("amp (du/u0) is required")
-    v, is_vhat = _velocity(vbar, vhat)
-    text = _fricosc.point(_core(shape), _scalar(v, "vbar"), _scalar(amp, "amp"), is_vhat, _tol(tol))
-    result: Dict[str, Any] = json.loads(text)
-    return result
-
-
-def _scalar(x: Any, what: str) -> float:
-    if isinstance(x, (bool, str, bytes)) or not np.isscalar(x) and np.ndim(x) != 0:
-        raise TypeError(f"{what} must be a number, not {type(x).__name__}")
-    try:
-        return float(x)
-    except (TypeError, ValueError) as e:
-        raise TypeError(f"{what} must be a number ({e})") from None
-
-
-def history(
-    shape: ShapeLike,
-    vbar: Optional[float] = None,
-    amp: Optional[float] = None,
-    *,
-    vhat: Optional[float] = None,
-    periods: int = 1,
-    samples: int = 400,
-    springs: int = 4000,
-    spring_at: Sequence[float] = (),
-) -> Dict[str, Any]:
-    """The normal force (times mu0) and the tangential force over ``periods``
-    periods (the seed's Fig. 2), as ``fricosc history`` computes them: exact,
-    with every event time among the samples (flat punch).
-
-    Returns a dict with ``tau`` (phase), ``normal``, ``tangential`` (float64
-    arrays), ``event`` (a list: the event at each sample or None), ``units``,
-    and for ``spring_at`` positions ``x/x_c`` the chosen springs' forces
-    ``springs`` (shape ``(samples, len(spring_at), 2)``: normal, tangential).
-    """
-    if amp is None:
-        raise TypeError("amp (du/u0) is required")
-    v, is_vhat = _velocity(vbar, vhat)
-    for name, value in (("periods", periods), ("samples", samples), ("springs", springs)):
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
-            raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
-        if value < 1:
-            raise ValueError(f"invalid {name} = {value}: must be >= 1")
-    positions = [_scalar(x, "spring_at") for x in spring_at]
-    result: Dict[str, Any] = _fricosc.history(
-        _core(shape),
-        _scalar(v, "vbar"),
-        _scalar(amp, "amp"),
-        is_vhat,
-        int(periods),
-        int(samples),
-        int(springs),
-        positions,
-    )
-    return result
-
-
-def validate(
-    table: Any,
-    shape: Optional[ShapeLike] = None,
-    *,
-    at_rest: str = "sliding",
-    mu0: Optional[float] = None,
-    tolerance: float = 1e-9,
-) -> Dict[str, Any]:
-    """Compare another code's table with the exact values, as ``fricosc validate``
-    does: the same JSON report as a dict (per-row errors and regimes, errors by
-    regime and by amplitude, findings with hints).
-
-    ``table`` is a mapping of columns (a dict of arrays, a pandas DataFrame):
-    ``vbar`` or ``vhat``, ``amp``, ``mu_ratio`` or ``mu`` (then ``mu0`` is
-    required), and optionally ``shape`` (one value for the whole table; ``shape=``
-    only where the table names none, an error where they disagree; the flat
-    punch by default). ``at_rest``: ``"sliding"`` or ``"relaxed"`` (what a
-    ``vbar = 0`` row is compared with).
-
-    >>> r = validate({"vbar": [0.2, 1.1], "amp": [0.5, 0.5], "mu_ratio": [0.7145, 1.2]})
-    >>> r["max_abs_error"] > 0.19, [f["kind"] for f in r["findings"]]
-    (True, ['above_one', 'not_one_above_critical'])
-    """
-    try:
-        columns = list(table.keys())
-    except AttributeError:
-        raise TypeError(f"a table is a mapping of columns (a dict of arrays, a DataFrame), not {type(table).__name__}") from None
-
-    def has(name: str) -> bool:
-        return name in columns
-
-    def column(name: str) -> npt.NDArray[np.float64]:
-        return _column(_floats(table[name], name), name)
-
-    for pair in (("vbar", "vhat"), ("mu_ratio", "mu")):
-        if has(pair[0]) and has(pair[1]):
-            raise ValueError(f"both '{pair[0]}' and '{pair[1]}' given: one only")
-        if not has(pair[0]) and not has(pair[1]):
-            raise ValueError(f"the table lacks column '{pair[0]}' (or '{pair[1]}')")
-    if not has("amp"):
-        raise ValueError("the table lacks column 'amp'")
-    named = sorted({str(s) for s in np.asarray(table["shape"]).reshape(-1).tolist()}) if has("shape") else []
-    if len(named) > 1:
-        raise ValueError(f"the table names more than one shape ({', '.join(repr(s) for s in named)}): validate one shape at a time")
-    if named and shape is not None and Shape(named[0]).name != (shape if isinstance(shape, Shape) else Shape(shape)).name:
-        raise ValueError(f"the table is for shape '{named[0]}', shape= says '{shape if isinstance(shape, str) else shape.name}'")
-    chosen: ShapeLike = named[0] if named else (shape if shape is not None else "flat")
-    is_vhat, is_mu = has("vhat"), has("mu")
-    text = _fricosc.validate(
-        _core(chosen),
-        column("vhat" if is_vhat else "vbar"),
-        column("amp"),
-        column("mu" if is_mu else "mu_ratio"),
-        is_vhat,
-        is_mu,
-        None if mu0 is None else float(mu0),
-        at_rest,
-        float(tolerance),
-    )
-    result: Dict[str, Any] = json.loads(text)
-    result["shape_source"] = "file" if named else ("option" if shape is not None else "default")
-    return result
-
-
-def scene(spec: Union[Dict[str, Any], str, "os.PathLike[str]"]) -> List[Dict[str, Any]]:
-    """Solve a physical scene (SI units), as ``fricosc scene`` does: ``spec`` is
-    the scene as a dict (the JSON file's content) or the path of its file (a
-    tabulated profile's file is then found relative to it). Returns a list with
-    one dict per amplitude (``oscillation.amplitude_m`` may be a list or a
-    sweep): ``rows`` of velocity, ``mu_ratio``, friction force, ...
-
-    >>> r = scene({"materials": {"e1_pa": 2e11, "nu1": 0.3, "e2_pa": 2e11, "nu2": 0.3}, "mu0": 0.4,
-    ...            "indenter": {"sphere": {"radius_m": 5e-3}}, "loading": {"mean_indentation_m": 1e-6},
-    ...            "oscillation": {"amplitude_m": [5e-7, 1e-6], "frequency_hz": 1e3},
-    ...            "velocity": {"values_m_per_s": [1e-3]}})
-    >>> [round(a["rows"][0]["mu_ratio"], 12) for a in r]
-    [0.936881842762, 0.588043871144]
-    """
-    text: Optional[str]
-    if isinstance(spec, dict):
-        text, source = json.dumps(spec), "scene"
-    elif isinstance(spec, (str, os.PathLike)):
-        text, source = None, os.fspath(spec)  # read by the extension, with the command line's size cap
-    else:
-        raise TypeError(f"a scene is a dict or the path of a JSON file, not {type(spec).__name__}")
-    result: List[Dict[str, Any]] = json.loads(_fricosc.scene(text, source))
-    return result
-
-
-def validate_history(
-    history: Any,
-    vbar: Optional[float] = None,
-    amp: Optional[float] = None,
-    *,
-    shape: ShapeLike = "flat",
-    vhat: Optional[float] = None,
-    omega: Optional[float] = None,
-    tolerance: float = 1e-9,
-) -> Dict[str, Any]:
-    """Compare a force history with the steady state of ``shape`` (exact for the
-    flat punch; for curved shapes the normal force exact and the tangential one
-    summed over 20,000 springs, without events), as
-    ``fricosc validate --history`` does: errors over the last period, whether it
-    is periodic yet (and how many more periods it needs), and the stick, slip
-    and contact events found from the force against its Coulomb bound, each
-    with its timing error.
-
-    ``history`` is a mapping of columns: ``tau`` (the phase omega t) or ``t``
-    (with ``omega``, or found from the normal force's maxima), ``tangential``
-    (units mu0 kz u0) and optionally ``normal`` (units kz u0).
-
-    >>> h = history("flat", 0.3, 1.5, periods=2, samples=2000)
-    >>> r = validate_history({"tau": h["tau"], "tangential": h["tangential"]}, 0.3, 1.5)
-    >>> r["periodic"], [e["kind"] for e in r["events"]]
-    (True, ['contact', 'stick', 'slip', 'loss_of_contact'])
-    """
-    try:
-        columns = list(history.keys())
-    except AttributeError:
-        raise TypeError(f"a history is a mapping of columns, not {type(history).__name__}") from None
-    if amp is None:
-        raise TypeError("amp (du/u0) is required")
-    v, is_vhat = _velocity(vbar, vhat)
-    if ("tau" in columns) == ("t" in columns):
-        raise ValueError("give exactly one time column: 'tau' (phase) or 't' (time)")
-    if "tangential" not in columns:
-        raise ValueError("the history lacks column 'tangential'")
-    time = _column(_floats(history["tau" if "tau" in columns else "t"], "time"), "time")
-    normal = _column(_floats(history["normal"], "normal"), "normal") if "normal" in columns else None
-    text = _fricosc.validate_history(
-        _core(shape),
-        time,
-        "tau" in columns,
-        _column(_floats(history["tangential"], "tangential"), "tangential"),
-        normal,
-        _scalar(v, "vbar"),
-        _scalar(amp, "amp"),
-        is_vhat,
-        None if omega is None else float(omega),
-        float(tolerance),
-    )
-    result: Dict[str, Any] = json.loads(text)
-    return result

@@ -1,12 +1,15 @@
 """Type stub of the Rust extension (src/python/src/lib.rs)."""
 
-from typing import Any, Dict, List, Optional, Tuple, final
+from typing import Any, Dict, List, Optional, final
 
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "evaluate", "point", "history", "validate", "scene", "validate_history", "default_tol", "__version__"]
+__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "history", "validate", "scene", "validate_history", "default_tol", "__version__"]
 __version__: str
+
+class InputError(ValueError): ...
+class InternalError(RuntimeError): ...
 
 @final
 class CoreShape:
@@ -20,9 +23,9 @@ class CoreShape:
     def name(self) -> str: ...
 
 def evaluate(
-    shape: CoreShape, v: npt.NDArray[np.float64], a: npt.NDArray[np.float64], vhat: bool, tol: float
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
-def point(shape: CoreShape, v: float, a: float, vhat: bool, tol: float) -> str: ...
+    shape: CoreShape, v: npt.NDArray[np.float64], a: npt.NDArray[np.float64], vhat: bool, tol: float, reduction: bool
+) -> npt.NDArray[np.float64]: ...
+def point(shape: CoreShape, v: float, a: float, vhat: bool, tol: float) -> Dict[str, Any]: ...
 def history(
     shape: CoreShape,
     v: float,
@@ -43,8 +46,8 @@ def validate(
     mu0: Optional[float],
     at_rest: str,
     tolerance: float,
-) -> str: ...
-def scene(text: Optional[str], source: str) -> str: ...
+) -> Dict[str, Any]: ...
+def scene(text: Optional[str], source: str) -> List[Dict[str, Any]]: ...
 def validate_history(
     shape: CoreShape,
     time: npt.NDArray[np.float64],
@@ -56,5 +59,5 @@ def validate_history(
     vhat: bool,
     omega: Optional[float],
     tolerance: float,
-) -> str: ...
+) -> Dict[str, Any]: ...
 def default_tol() -> float: ...
