@@ -49,7 +49,15 @@ fn eq_11_error_matches_a_converged_time_stepper() {
     let c = get(&cs, "eq. 11");
     let (v, a) = (m(c, "at_vbar"), m(c, "at_amp"));
     // The seed's scheme is second order without contact loss: at M = 20000 it is within 1e-8.
-    let stepped = fricosc::stepper::flat_mu_ratio(v, a, 20000).mu_ratio();
+    let stepped = fricosc::stepper::evaluate(
+        &fricosc::Shape::flat(),
+        v,
+        a,
+        fricosc::stepper::Stepping { steps_per_period: 20000, springs: 1 },
+    )
+    .unwrap()
+    .ratio
+    .mu_ratio;
     let err = (seed::eq11(v, a) - stepped).abs() / a;
     assert!((m(c, "max_error_over_amp") - err).abs() < 1e-6, "{} vs {err}", m(c, "max_error_over_amp"));
     // Off by up to 0.0144 amp near vbar 0.1 (verified against the converged stepper above).
@@ -123,10 +131,31 @@ fn critical_velocity_and_two_parameter_claims_agree_with_the_stepper() {
     let c = get(&cs, "eq. 26");
     assert_eq!(m(c, "all_checks_pass"), 1.0);
     // The stepper slips throughout above vbar = 1.
-    assert!((fricosc::stepper::flat_mu_ratio(1.1, 0.3, 1000).mu_ratio() - 1.0).abs() < 1e-12);
+    assert!(
+        (fricosc::stepper::evaluate(
+            &fricosc::Shape::flat(),
+            1.1,
+            0.3,
+            fricosc::stepper::Stepping { steps_per_period: 1000, springs: 1 }
+        )
+        .unwrap()
+        .ratio
+        .mu_ratio
+            - 1.0)
+            .abs()
+            < 1e-12
+    );
     assert!(m(c, "min_reduction_1e-3") > 0.0);
     let c = get(&cs, "section 2");
-    let stepped = fricosc::stepper::flat_mu_ratio(0.4, 0.5, 20000).mu_ratio();
+    let stepped = fricosc::stepper::evaluate(
+        &fricosc::Shape::flat(),
+        0.4,
+        0.5,
+        fricosc::stepper::Stepping { steps_per_period: 20000, springs: 1 },
+    )
+    .unwrap()
+    .ratio
+    .mu_ratio;
     assert!((m(c, "stepped_a") - stepped).abs() < 1e-9);
     assert!((m(c, "stepped_a") - m(c, "exact")).abs() < 1e-6);
     assert_eq!(c.verdict, Verdict::Holds);

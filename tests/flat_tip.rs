@@ -1,6 +1,8 @@
 //! The sphere worn flat at its tip (`flat-tip:E`), added through the `Contact`
 //! trait: its MDR profile against the transform of a tabulated profile of the
 //! same body, and its limits (the paraboloid at E = 0, the flat punch as E -> 1).
+mod common;
+
 use fricosc::Shape;
 
 fn mu(spec: &str, v: f64, a: f64) -> (f64, f64) {
@@ -54,7 +56,7 @@ fn agrees_with_the_tabulated_profile_of_the_same_body() {
         .collect();
     let file = dir.join("worn.csv");
     std::fs::write(&file, format!("r,f\n{rows}")).unwrap();
-    let table = fricosc::cli::input::parse_shape(&format!("profile:{}@{u0:?}", file.display())).unwrap();
+    let table = common::shape(&format!("profile:{}@{u0:?}", file.display())).unwrap();
     for (v, amp) in [(0.3, 0.4), (0.1, 0.8), (0.5, 1.5)] {
         let t = table.evaluate(v, amp).unwrap();
         let (m, est) = mu("flat-tip:0.5", v, amp);

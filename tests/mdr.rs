@@ -9,7 +9,7 @@ use fricosc::{Options, DEFAULT_TOL};
 fn parabolic_and_cone_references_to_1e_13_within_the_error_estimate() {
     let mut n = 0;
     for c in reference_cases().iter().filter(|c| c.shape != "flat") {
-        let shape = fricosc::cli::input::parse_shape(&c.shape).unwrap();
+        let shape = common::shape(&c.shape).unwrap();
         let e = shape.evaluate(c.vbar, c.amp).unwrap();
         let err = (e.ratio.mu_ratio - c.mu_ratio).abs();
         assert!(
@@ -68,11 +68,9 @@ fn time_stepping_agrees_in_every_regime() {
         let exact = power_law(n, v, a, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap().ratio.mu_ratio;
         let mut errs = vec![];
         for k in [1000usize, 4000] {
-            let zmax = (1.0f64 + a).powf(1.0 / n);
-            let dz = zmax / k as f64;
-            let s: Vec<f64> = (0..k).map(|i| (1.0 - ((i as f64 + 0.5) * dz).powf(n)) / a).collect();
-            let run = fricosc::stepper::run(&s, &vec![dz; k], v, k, 2);
-            errs.push((run.mu_ratio() - exact).abs());
+            let st = fricosc::stepper::Stepping { steps_per_period: k, springs: k };
+            let run = fricosc::stepper::evaluate(&Shape::power(n).unwrap(), v, a, st).unwrap();
+            errs.push((run.ratio.mu_ratio - exact).abs());
         }
         assert!(errs[1] <= 1.0 / 4000.0, "n={n} v={v} a={a}: {errs:?}");
         assert!(errs[1] <= 0.5 * errs[0] || errs[1] < 1e-12, "n={n} v={v} a={a}: not converging {errs:?}");

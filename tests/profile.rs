@@ -1,6 +1,8 @@
 //! Tabulated shapes against the power laws they sample, bad tables, tables at
 //! the edges of f64. (The MDR transform itself is unit-tested beside it:
 //! `src/contact/profile_tests.rs`.)
+mod common;
+
 use std::path::PathBuf;
 
 fn write_table(name: &str, rows: impl Iterator<Item = (f64, f64)>) -> PathBuf {
@@ -25,8 +27,8 @@ fn a_tabulated_sphere_reproduces_parabolic_within_the_interpolation_error() {
     let (radius, u0) = (1.0f64, 1e-8f64);
     let rmax = 4.0 * (radius * u0).sqrt();
     let path = write_table("sphere.csv", grid(300, rmax).map(|r| (r, radius - (radius * radius - r * r).sqrt())));
-    let shape = fricosc::cli::input::parse_shape(&format!("profile:{}@{u0:?}", path.display())).unwrap();
-    let parabolic = fricosc::cli::input::parse_shape("parabolic").unwrap();
+    let shape = common::shape(&format!("profile:{}@{u0:?}", path.display())).unwrap();
+    let parabolic = common::shape("parabolic").unwrap();
     for (v, a) in [(0.3, 0.4), (0.6, 1.0), (0.2, 2.0), (0.9, 0.7)] {
         let t = shape.evaluate(v, a).unwrap();
         let p = parabolic.evaluate(v, a).unwrap();
@@ -41,8 +43,8 @@ fn a_tabulated_sphere_reproduces_parabolic_within_the_interpolation_error() {
 #[test]
 fn a_tabulated_equivalent_profile_reproduces_the_power_law() {
     let path = write_table("g.csv", grid(200, 2.0).map(|x| (x, x.powf(2.5))));
-    let shape = fricosc::cli::input::parse_shape(&format!("gx:{}@1", path.display())).unwrap();
-    let power = fricosc::cli::input::parse_shape("power:2.5").unwrap();
+    let shape = common::shape(&format!("gx:{}@1", path.display())).unwrap();
+    let power = common::shape("power:2.5").unwrap();
     for (v, a) in [(0.3, 0.4), (0.5, 1.5)] {
         let t = shape.evaluate(v, a).unwrap();
         let p = power.evaluate(v, a).unwrap();
@@ -66,16 +68,13 @@ fn bad_tables_are_errors() {
         std::fs::create_dir_all(&dir).unwrap();
         let p = dir.join(name);
         std::fs::write(&p, text).unwrap();
-        let e = fricosc::cli::input::parse_shape(&format!("profile:{}@1", p.display())).unwrap_err().to_string();
+        let e = common::shape(&format!("profile:{}@1", p.display())).unwrap_err().to_string();
         assert!(e.contains(frag), "{name}: {e}");
     }
-    assert!(fricosc::cli::input::parse_shape("profile:/nonexistent.csv@1")
-        .unwrap_err()
-        .to_string()
-        .contains("cannot read"));
-    assert!(fricosc::cli::input::parse_shape("profile:/tmp").unwrap_err().to_string().contains("mean indentation"));
-    assert!(fricosc::cli::input::parse_shape("profile:/@1").unwrap_err().to_string().contains("cannot read"));
-    assert!(fricosc::cli::input::parse_shape("gx:x.csv@-1").is_err());
+    assert!(common::shape("profile:/nonexistent.csv@1").unwrap_err().to_string().contains("cannot read"));
+    assert!(common::shape("profile:/tmp").unwrap_err().to_string().contains("mean indentation"));
+    assert!(common::shape("profile:/@1").unwrap_err().to_string().contains("cannot read"));
+    assert!(common::shape("gx:x.csv@-1").is_err());
 }
 
 /// Tables at the edges of f64: scaled before interpolation they give the same
@@ -91,9 +90,7 @@ fn tabulated_shapes_at_extreme_scales_are_right_or_refused() {
         std::fs::write(&p, format!("x,g\n{text}")).unwrap();
         p.to_str().unwrap().to_string()
     };
-    let eval = |spec: &str, v: f64, a: f64| {
-        fricosc::cli::input::parse_shape(spec)?.evaluate(v, a).map_err(fricosc::cli::error::Error::from)
-    };
+    let eval = |spec: &str, v: f64, a: f64| common::shape(spec)?.evaluate(v, a);
     let parabolic = fricosc::mdr::power_law(2.0, 0.3, 0.4, &fricosc::Options::default().with_tol(fricosc::DEFAULT_TOL))
         .unwrap()
         .ratio
@@ -129,7 +126,7 @@ fn a_non_monotone_transform_is_refused() {
     std::fs::create_dir_all(&dir).unwrap();
     let p = dir.join("step.csv");
     std::fs::write(&p, "r,f\n0,0\n0.5,0\n0.9,0\n0.95,0.5\n1,1\n2,1\n").unwrap();
-    let e = fricosc::cli::input::parse_shape(&format!("profile:{}@0.9", p.display())).unwrap_err().to_string();
+    let e = common::shape(&format!("profile:{}@0.9", p.display())).unwrap_err().to_string();
     assert!(e.contains("decreases after x") && e.contains("largest g"), "{e}");
 }
 

@@ -305,7 +305,8 @@ fn history_bugs_are_named() {
             let tau = step * k as f64;
             let b = (s - tau.cos()).max(0.0);
             if k > 0 {
-                f = fricosc::stepper::update(f, b, vscale * v * step);
+                // The user's own update: grow by the drive, capped by the bound.
+                f = if b > 0.0 { (f + vscale * v * step).min(b) } else { 0.0 };
             }
             t.push(tau);
             ft.push(f * a);

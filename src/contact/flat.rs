@@ -47,7 +47,7 @@ pub(crate) fn spring(vbar: f64, amp: f64, precision: Precision) -> Spring {
 /// `s = u0/du = 1/amp` of the flat punch's spring; `f64::MAX` where `1/amp`
 /// overflows (`amp = 0` or subnormal): a spring always in contact, whose stick
 /// phases and deficit do not depend on `s`.
-pub fn spring_s(amp: f64) -> f64 {
+pub(crate) fn spring_s(amp: f64) -> f64 {
     let s = 1.0 / amp;
     if s.is_finite() {
         s

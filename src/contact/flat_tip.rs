@@ -54,7 +54,7 @@ struct Curved {
 }
 
 /// Parse the `E` of `flat-tip:E`.
-pub fn parse(rest: &str) -> Result<Arc<dyn Contact>> {
+pub(crate) fn parse(rest: &str) -> Result<Arc<dyn Contact>> {
     let bad = |reason: &str| Error::InvalidShape { spec: format!("flat-tip:{rest}"), reason: reason.into() };
     let e: f64 = rest.trim().parse().map_err(|_| bad("E (flat radius / contact radius) is not a number"))?;
     if !(0.0..1.0).contains(&e) {

@@ -94,7 +94,7 @@ const MEAN_NORMAL_ORDER: usize = 64;
 /// histories: `count` springs at the midpoints of a uniform grid on the part
 /// that ever touches, `0 <= z < reach(amp)` (one spring for the flat punch).
 /// Returns the spacing `dz` and `s(i) = (1 - G(z_i))/amp` (`amp > 0`).
-pub fn grid(contact: &dyn Contact, amp: f64, count: usize) -> Result<(f64, impl Fn(usize) -> f64 + Sync + '_)> {
+pub(crate) fn grid(contact: &dyn Contact, amp: f64, count: usize) -> Result<(f64, impl Fn(usize) -> f64 + Sync + '_)> {
     let count = if contact.single_spring() { 1 } else { count.max(1) };
     let dz = contact.reach(amp)? / count as f64;
     // s = 1/amp overflows for a subnormal amp: the largest finite s is as good
@@ -136,7 +136,7 @@ pub(crate) fn cosine_band(
 /// `O(amp)`, add `O(amp^2)`. So the tabulated and flat-tip contacts compute it
 /// at this amplitude and scale it ([`crate::ratio::Ratio::scaled`]), with a
 /// relative error of order `AMP_LINEAR` itself.
-pub const AMP_LINEAR: f64 = 1e-300;
+pub(crate) const AMP_LINEAR: f64 = 1e-300;
 
 /// The flat cylindrical punch: one spring (seed section 2).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -33,7 +33,7 @@ use std::f64::consts::PI;
 /// quadratics, so the interpolation error is `O(h^3)` for smooth data) with
 /// Hyman's monotonicity limiter, and one-sided three-point end slopes.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Pchip {
+pub(crate) struct Pchip {
     x: Vec<f64>,
     y: Vec<f64>,
     d: Vec<f64>,
@@ -41,7 +41,7 @@ pub struct Pchip {
 
 impl Pchip {
     /// Interpolant through `(x[i], y[i])`, `x` strictly increasing, `y` nondecreasing.
-    pub fn new(x: Vec<f64>, y: Vec<f64>) -> Pchip {
+    pub(crate) fn new(x: Vec<f64>, y: Vec<f64>) -> Pchip {
         let n = x.len();
         let h: Vec<f64> = (0..n - 1).map(|i| x[i + 1] - x[i]).collect();
         let del: Vec<f64> = (0..n - 1).map(|i| (y[i + 1] - y[i]) / h[i]).collect();
@@ -77,12 +77,12 @@ impl Pchip {
     }
 
     /// The knots.
-    pub fn knots(&self) -> &[f64] {
+    pub(crate) fn knots(&self) -> &[f64] {
         &self.x
     }
 
     /// The values at the knots.
-    pub fn values(&self) -> &[f64] {
+    pub(crate) fn values(&self) -> &[f64] {
         &self.y
     }
 
@@ -95,7 +95,7 @@ impl Pchip {
     }
 
     /// Value and derivative at `t` (extrapolating the end cubics outside).
-    pub fn eval(&self, t: f64) -> (f64, f64) {
+    pub(crate) fn eval(&self, t: f64) -> (f64, f64) {
         let i = self.segment(t);
         let h = self.x[i + 1] - self.x[i];
         let u = (t - self.x[i]) / h;
@@ -120,7 +120,7 @@ impl Pchip {
     }
 
     /// The `t` with value `v` (the interpolant is nondecreasing; `v` within its range).
-    pub fn inverse(&self, v: f64) -> f64 {
+    pub(crate) fn inverse(&self, v: f64) -> f64 {
         let i = match self.y.binary_search_by(|w| w.total_cmp(&v)) {
             Ok(i) => return self.x[i],
             Err(i) => i.saturating_sub(1).min(self.x.len() - 2),
@@ -148,7 +148,7 @@ pub const MAX_TABLE_ROWS: usize = 1_000_000;
 /// column strictly increasing from 0, the second nondecreasing (it is shifted so
 /// that its first value is 0). The core reads no files: the caller does (the
 /// command line with a size cap).
-pub fn parse_table(text: &str, path: &str) -> Result<(Vec<f64>, Vec<f64>)> {
+pub(crate) fn parse_table(text: &str, path: &str) -> Result<(Vec<f64>, Vec<f64>)> {
     let bad = |reason: String| Error::Parse { context: path.into(), reason };
     let (mut xs, mut ys, mut lines) = (vec![], vec![], vec![]);
     let mut header_seen = false;
@@ -181,7 +181,7 @@ pub fn parse_table(text: &str, path: &str) -> Result<(Vec<f64>, Vec<f64>)> {
 /// [`MAX_TABLE_ROWS`] and at least 3 rows, finite values, the first column
 /// strictly increasing from 0, the second nondecreasing (returned shifted so that
 /// it starts at 0); `label(i)` names row `i` in messages.
-pub fn check_columns(
+pub(crate) fn check_columns(
     xs: Vec<f64>,
     ys: Vec<f64>,
     source: &str,
@@ -222,7 +222,8 @@ pub fn check_columns(
 /// `g(x) = x int_0^x f'(r) / sqrt(x^2 - r^2) dr` for the interpolated profile `f`, at `x`:
 /// `x` times the sum of [`interval_integrals`] over the table below `x`.
 /// Linear in the rows; [`mdr_transform_knots`] gives all knots at once.
-pub fn mdr_transform(f: &Pchip, x: f64) -> f64 {
+#[cfg(test)]
+pub(crate) fn mdr_transform(f: &Pchip, x: f64) -> f64 {
     if x <= 0.0 {
         return 0.0;
     }
@@ -249,7 +250,7 @@ pub fn mdr_transform(f: &Pchip, x: f64) -> f64 {
 /// even for an interval far below `x` (where a difference of antiderivatives
 /// would cancel to `(h/x)^3` of its terms). Since `t1 <= pi/2`, `c >= sin D`,
 /// which bounds the cancellation in `J1` and `J2` to a small factor.
-pub fn interval_integrals(f: &Pchip, lo: usize, hi: usize, x: f64) -> f64 {
+pub(crate) fn interval_integrals(f: &Pchip, lo: usize, hi: usize, x: f64) -> f64 {
     let q = |r: f64| if r >= x { 0.0 } else { ((x - r) * (x + r)).sqrt() };
     let mut sum = 0.0;
     let mut q0 = q(f.x[lo]);
@@ -309,7 +310,7 @@ const LEAF_TARGETS: usize = 32;
 /// `FAR_POINTS` (24) Chebyshev points and interpolated (barycentric formula) at the
 /// block's knots. Each level costs `O(n)` kernel evaluations; blocks of at most
 /// `LEAF_TARGETS` (32) knots sum the remaining near sources directly.
-pub fn mdr_transform_knots(f: &Pchip) -> Vec<f64> {
+pub(crate) fn mdr_transform_knots(f: &Pchip) -> Vec<f64> {
     let r = &f.x;
     let mut sums = vec![0.0; r.len()];
     far_sums(f, 0, (0.0, r[r.len() - 1]), 0, &mut sums);
@@ -384,7 +385,7 @@ fn barycentric(nodes: &[f64; FAR_POINTS], vals: &[f64], x: f64) -> f64 {
 
 /// MDR normal force at indentation `d` of the equivalent profile `g`, in units
 /// of `E*` times length squared: `2 int_0^a (d - g(x)) dx` with `g(a) = d`.
-pub fn normal_force(g: &Pchip, d: f64) -> f64 {
+pub(crate) fn normal_force(g: &Pchip, d: f64) -> f64 {
     let a = g.inverse(d);
     let mut cuts: Vec<f64> = g.knots().iter().copied().filter(|&x| x < a).collect();
     cuts.push(a);
@@ -585,7 +586,7 @@ impl Tabulated {
 
 /// `mu_macro/mu0` of a tabulated contact and its error estimates.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TabulatedResult {
+pub(crate) struct TabulatedResult {
     /// Ratio and reduction.
     pub ratio: Ratio,
     /// Quadrature error estimate of `mu_ratio`.
@@ -596,7 +597,7 @@ pub struct TabulatedResult {
 
 /// Evaluate a tabulated contact at `(vbar, amp)`; both must be finite and `>= 0`
 /// (an error otherwise).
-pub fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedResult> {
+pub(crate) fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedResult> {
     crate::error::check_nonneg("vbar", vbar)?;
     crate::error::check_nonneg("amp", amp)?;
     let (ratio, err) = integrate(&t.g, vbar, amp)?;
@@ -609,19 +610,19 @@ pub fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedResult> {
 
 /// Mean normal force of the whole contact at amplitude `amp`, units
 /// `E* x_c U0` (both sides of the MDR foundation), by the same quadrature.
-pub fn mean_normal(t: &Tabulated, amp: f64) -> Result<f64> {
+pub(crate) fn mean_normal(t: &Tabulated, amp: f64) -> Result<f64> {
     crate::error::check_nonneg("amp", amp)?;
     Ok(2.0 * integrate_full(&t.g, 0.5, amp)?.2)
 }
 
 /// `G(z)` of a tabulated contact (the cubic interpolant; the end cubics
 /// extrapolate beyond the table).
-pub fn equivalent_profile(t: &Tabulated, z: f64) -> f64 {
+pub(crate) fn equivalent_profile(t: &Tabulated, z: f64) -> f64 {
     t.g.eval(z).0
 }
 
 /// `z` with `G(z) = 1 + amp`: an error if the table ends before.
-pub fn reach(t: &Tabulated, amp: f64) -> Result<f64> {
+pub(crate) fn reach(t: &Tabulated, amp: f64) -> Result<f64> {
     crate::error::check_nonneg("amp", amp)?;
     let gmax = *t.g.values().last().unwrap_or(&0.0);
     if gmax < 1.0 + amp {
@@ -635,7 +636,7 @@ pub fn reach(t: &Tabulated, amp: f64) -> Result<f64> {
 }
 
 /// Static normal force at indentation `depth U0`, units `E* x_c U0` (both sides).
-pub fn static_force(t: &Tabulated, depth: f64) -> f64 {
+pub(crate) fn static_force(t: &Tabulated, depth: f64) -> f64 {
     if depth > 0.0 {
         normal_force(&t.g, depth)
     } else {

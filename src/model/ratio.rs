@@ -7,26 +7,26 @@ use crate::error::{Error, Result};
 /// How far outside `[0, 1]` rounding may put a ratio or a reduction that is
 /// mathematically inside: a few ulps of 1. Such values are rounded onto the
 /// interval; anything further out is a bug and an error.
-pub const ROUNDING_SLACK: f64 = 8.0 * f64::EPSILON;
+pub(crate) const ROUNDING_SLACK: f64 = 8.0 * f64::EPSILON;
 
 /// Relative rounding error of one spring's means and one quadrature weight, in
 /// units of the machine epsilon: the closed-form phases are cancellation-free
 /// (a few roundings each; `tests/flat_events.rs` measures at most 3.3 eps) and
 /// Golub-Welsch weights carry a few more.
-pub const ROUNDING_PER_TERM: f64 = 16.0;
+pub(crate) const ROUNDING_PER_TERM: f64 = 16.0;
 
 /// Rounding part of the error estimate of `mu_ratio` computed as `1 - dd/nn`
 /// from two sums of `terms` positive terms: each term carries
 /// [`ROUNDING_PER_TERM`] eps, the sums accumulate like `sqrt(terms)`, the
 /// quotient adds both, and `1 - reduction` half an ulp of 1.
-pub fn rounding_estimate(reduction: f64, terms: usize) -> f64 {
+pub(crate) fn rounding_estimate(reduction: f64, terms: usize) -> f64 {
     f64::EPSILON * (2.0 * (ROUNDING_PER_TERM + (terms as f64).sqrt()) * reduction.abs() + 0.5)
 }
 
 /// Truncation part of the error estimate of the reduction `dd/nn`, from the
 /// estimated errors `en` of `nn` and `ed` of `dd` (first-order propagation
 /// through the quotient: `ed/nn + dd en/nn^2`); 0 without normal force.
-pub fn quotient_error(nn: f64, dd: f64, en: f64, ed: f64) -> f64 {
+pub(crate) fn quotient_error(nn: f64, dd: f64, en: f64, ed: f64) -> f64 {
     if nn > 0.0 {
         ed / nn + dd * en / (nn * nn)
     } else {
@@ -58,7 +58,7 @@ fn unit_interval(name: &str, x: f64, slack: f64, context: &str) -> Result<f64> {
 impl Ratio {
     /// The ratio whose reduction is `k` times this one's (`k <= 1`): for a
     /// reduction linear in the amplitude ([`crate::contact::AMP_LINEAR`]).
-    pub fn scaled(self, k: f64) -> Ratio {
+    pub(crate) fn scaled(self, k: f64) -> Ratio {
         let reduction = self.reduction * k;
         Ratio { mu_ratio: 1.0 - reduction, reduction }
     }

@@ -62,9 +62,9 @@ impl Precision {
 /// a step is below this (relative) and returns the next iterate, whose error is
 /// then about its square (1e-12); the deficit is stationary in the stick length,
 /// so its relative error is of the order of that squared again.
-pub const ROOT_RTOL_MEANS: f64 = 1e-6;
+pub(crate) const ROOT_RTOL_MEANS: f64 = 1e-6;
 /// Relative root tolerance when event times are reported.
-pub const ROOT_RTOL_EVENTS: f64 = 4.0 * f64::EPSILON;
+pub(crate) const ROOT_RTOL_EVENTS: f64 = 4.0 * f64::EPSILON;
 
 /// What one spring does during a period.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -175,7 +175,7 @@ pub fn mean_normal(s: f64) -> f64 {
 
 /// `<B>` of a jumping spring from its contact half-angle `phi = arccos(-s)` in
 /// `[0, pi]` (the contact lasts `2 phi` per period): `(2 phi sin^2(phi/2) - S(phi))/pi`.
-pub fn mean_normal_at_angle(phi: f64) -> f64 {
+pub(crate) fn mean_normal_at_angle(phi: f64) -> f64 {
     let h = (0.5 * phi).sin();
     (2.0 * phi * h * h - s_fn(phi)) / PI
 }
@@ -185,7 +185,7 @@ pub fn mean_normal_at_angle(phi: f64) -> f64 {
 /// contact half-angle `phi = pi/2 + beta`, `<B> = (s phi + cos beta)/pi`, and near
 /// the edge of contact (`phi < 2`) the cancellation-free
 /// `(phi (1 + s) - S(phi))/pi` with `1 + s = cos^2 beta / (1 - s)`.
-pub fn mean_normal_sin_cos(beta: f64, sin_beta: f64, cos_beta: f64) -> f64 {
+pub(crate) fn mean_normal_sin_cos(beta: f64, sin_beta: f64, cos_beta: f64) -> f64 {
     let phi = FRAC_PI_2 + beta;
     if phi < 2.0 {
         let one_plus_s = if sin_beta < 0.0 { cos_beta * cos_beta / (1.0 - sin_beta) } else { 1.0 + sin_beta };
@@ -197,7 +197,7 @@ pub fn mean_normal_sin_cos(beta: f64, sin_beta: f64, cos_beta: f64) -> f64 {
 
 /// Velocity-dependent constants shared by all springs of a contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Velocity {
+pub(crate) struct Velocity {
     /// `vbar` (eq. 3), `< 1`.
     pub vbar: f64,
     /// `w = 1 - vbar`.
@@ -219,7 +219,7 @@ impl Velocity {
 
     /// Deficit of the stick-first spring whose contact starts at phase
     /// `theta = arccos s` (`beta = pi/2 - theta`, `|beta| < alpha`; means only).
-    pub fn stick_first_deficit(&self, theta: f64) -> f64 {
+    pub(crate) fn stick_first_deficit(&self, theta: f64) -> f64 {
         stick_phase(Start::Contact { theta }, self, ROOT_RTOL_MEANS).deficit
     }
 }
@@ -258,7 +258,7 @@ fn deficit_2pi(beta: f64, w: f64, len: f64) -> f64 {
 /// The contact phase `theta = arccos s` of a jumping spring, `|s| < 1`, from
 /// `s` and `1 - s`: `2 arcsin(sqrt((1 - s)/2))` for `s > 1/2` (no rounding of
 /// `s` near 1 enters), `arccos s` elsewhere (well conditioned there).
-pub fn contact_phase(s: f64, one_minus_s: f64) -> f64 {
+pub(crate) fn contact_phase(s: f64, one_minus_s: f64) -> f64 {
     if s > 0.5 {
         2.0 * (0.5 * one_minus_s).sqrt().asin()
     } else {

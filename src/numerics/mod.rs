@@ -1,7 +1,7 @@
 //! Numerics: bracketed root finding, Gauss-Jacobi rules, cancellation-free
 //! elementary functions.
-pub mod decimal;
+pub(crate) mod decimal;
 pub(crate) mod par;
-pub mod quad;
-pub mod root;
-pub mod special;
+pub(crate) mod quad;
+pub(crate) mod root;
+pub(crate) mod special;

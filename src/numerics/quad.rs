@@ -15,7 +15,7 @@ use std::rc::Rc;
 
 /// Nodes (ascending) and weights on `[-1, 1]` for the weight `(1 + x)^beta`.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Rule {
+pub(crate) struct Rule {
     /// Nodes, ascending.
     pub nodes: Vec<f64>,
     /// Weights (positive, summing to `mu0`).
@@ -23,7 +23,7 @@ pub struct Rule {
 }
 
 /// Compute the `m`-point rule for weight `(1 + x)^beta`, `beta > -1`, `m >= 1`.
-pub fn gauss_jacobi(m: usize, beta: f64) -> Rule {
+pub(crate) fn gauss_jacobi(m: usize, beta: f64) -> Rule {
     assert!(m >= 1 && beta > -1.0);
     let mut j = DMatrix::<f64>::zeros(m, m);
     for k in 0..m {
@@ -51,7 +51,7 @@ thread_local! {
 }
 
 /// The cached rule of order `m` for weight `(1 + x)^beta`.
-pub fn rule(m: usize, beta: f64) -> Rc<Rule> {
+pub(crate) fn rule(m: usize, beta: f64) -> Rc<Rule> {
     CACHE.with(|c| c.borrow_mut().entry((m, beta.to_bits())).or_insert_with(|| Rc::new(gauss_jacobi(m, beta))).clone())
 }
 

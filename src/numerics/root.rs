@@ -11,7 +11,7 @@ use std::cell::Cell;
 
 /// Result of one bracketed root search.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Root {
+pub(crate) struct Root {
     /// The root.
     pub x: f64,
     /// Number of function evaluations spent (the two bracket ends included).
@@ -42,7 +42,7 @@ impl roots::Convergency<f64> for Tolerance {
 /// `rtol` is the relative bracket width at which the search stops. If rounding has
 /// removed the sign change (a collapsed bracket), the end with the smaller `|f|`
 /// is returned without iterating.
-pub fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, rtol: f64) -> Root {
+pub(crate) fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, rtol: f64) -> Root {
     let count = Cell::new(0u32);
     let g = |x: f64| {
         count.set(count.get() + 1);
@@ -105,7 +105,7 @@ fn collapsed(lo: f64, flo: f64, hi: f64, fhi: f64) -> Option<f64> {
 /// (`roots::find_root_newton_raphson`), which stops once a step is below
 /// `rtol * |x|` (the last step then squares the error). If Newton fails or leaves
 /// the bracket, [`bracketed`] takes over on `[lo, hi]`.
-pub fn newton(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, hi: f64, guess: f64, rtol: f64) -> Root {
+pub(crate) fn newton(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, hi: f64, guess: f64, rtol: f64) -> Root {
     if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
         // An empty bracket (both ends the same point to rounding): that point is the root.
         return Root { x: lo.min(hi), evaluations: 0 };

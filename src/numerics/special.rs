@@ -66,11 +66,11 @@ const ASIN_COEF: [f64; 9] = {
 
 /// Below this `s` [`asin_small`] uses its series: the first omitted term is
 /// below `0.1^20 / 20`, relative.
-pub const ASIN_SERIES_LIMIT: f64 = 0.1;
+pub(crate) const ASIN_SERIES_LIMIT: f64 = 0.1;
 
 /// `asin s` for `0 <= s < ASIN_SERIES_LIMIT` by its Taylor series (cheaper than
 /// the library call, to the last bit), `s.asin()` above.
-pub fn asin_small(s: f64) -> f64 {
+pub(crate) fn asin_small(s: f64) -> f64 {
     if s < ASIN_SERIES_LIMIT {
         let y = s * s;
         s + s * y * ASIN_COEF.iter().rev().fold(0.0, |acc, &c| acc * y + c)
@@ -80,7 +80,7 @@ pub fn asin_small(s: f64) -> f64 {
 }
 
 /// `S(x) = x - sin x` with full relative accuracy, odd in `x`, about `x^3/6` near 0.
-pub fn x_minus_sin(x: f64) -> f64 {
+pub(crate) fn x_minus_sin(x: f64) -> f64 {
     if x.abs() < SERIES_LIMIT {
         x * x * x * horner(&S_COEF, x * x)
     } else {
@@ -90,7 +90,7 @@ pub fn x_minus_sin(x: f64) -> f64 {
 
 /// `C(x) = x^2/2 - (1 - cos x)` with full relative accuracy, even, about `x^4/24` near 0.
 /// It is the antiderivative of [`x_minus_sin`] that vanishes at 0.
-pub fn half_sq_minus_versin(x: f64) -> f64 {
+pub(crate) fn half_sq_minus_versin(x: f64) -> f64 {
     if x.abs() < SERIES_LIMIT {
         let y = x * x;
         y * y * horner(&C_COEF, y)
@@ -120,7 +120,7 @@ const W_COEF: [f64; 16] = {
 /// relative accuracy for `0 <= x <= pi/2` (about `x^5/20` near 0, where the
 /// direct formula loses everything): the Taylor series, whose largest term at
 /// `x = pi/2` is about 4 times the value.
-pub fn versin_sq_integral(x: f64) -> f64 {
+pub(crate) fn versin_sq_integral(x: f64) -> f64 {
     let y = x * x;
     y * y * x * horner(&W_COEF, y)
 }
@@ -146,7 +146,7 @@ fn two_sum(x: f64, y: f64) -> (f64, f64) {
 /// Written as `d / (1 + a c)` with `c = sqrt(1 - v^2)` and
 /// `d = 1 - a^2 (1 - v^2) = 1 - a^2 + (a v)^2`, whose three terms are summed
 /// exactly in double-double arithmetic: the cancellation is then harmless.
-pub fn one_minus_a_cos_asin(a: f64, v: f64) -> f64 {
+pub(crate) fn one_minus_a_cos_asin(a: f64, v: f64) -> f64 {
     let c = ((1.0 - v) * (1.0 + v)).sqrt();
     let (r, re) = two_prod(a, a);
     let (p, pe) = two_prod(a, v);

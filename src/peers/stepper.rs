@@ -63,21 +63,12 @@ impl Kahan {
 /// (the springs are independent), so the only synchronisation is the final sum.
 const CHUNK: usize = 1024;
 
-/// Run the scheme for springs with positions `s[i]` and weights `weight[i]`.
-///
-/// `steps_per_period >= 1`, `periods >= 2`. Cost: `periods * steps_per_period * s.len()`
-/// updates; `cos` is tabulated once per step; chunks of springs run in parallel (rayon).
-pub fn run(s: &[f64], weight: &[f64], vbar: f64, steps_per_period: usize, periods: usize) -> SteppedMeans {
-    assert_eq!(s.len(), weight.len());
-    run_with(s.len(), &|i| (s[i], weight[i]), vbar, steps_per_period, periods)
-}
-
 /// The seed's update of one spring's tangential force over one step: it grows
 /// by the drive's increment `df` (`kx v0 dt`; `vbar h` in units of
 /// `mu0 kz du`) and is capped by the Coulomb bound `b` (`mu0` times the normal
 /// force); without contact (`b <= 0`) it is 0. The one place the scheme lives.
 #[inline]
-pub fn update(f: f64, b: f64, df: f64) -> f64 {
+pub(crate) fn update(f: f64, b: f64, df: f64) -> f64 {
     if b > 0.0 {
         (f + df).min(b)
     } else {
@@ -89,7 +80,7 @@ pub fn update(f: f64, b: f64, df: f64) -> f64 {
 /// (N/m), friction coefficient `mu0`, sliding velocity `v0` (m/s), angular
 /// frequency `omega` (1/s), mean indentation `u0` and amplitude `du` (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PhysicalSpring {
+pub(crate) struct PhysicalSpring {
     /// Tangential stiffness.
     pub kx: f64,
     /// Normal stiffness.
@@ -109,7 +100,7 @@ pub struct PhysicalSpring {
 /// `mu/mu0` of one spring by the seed's scheme in physical units (no
 /// nondimensionalisation: it checks the seed's claim that the result depends
 /// only on `vbar` and `du/u0`), `m` steps per period, the second of two periods.
-pub fn physical_mu_ratio(p: &PhysicalSpring, m: usize) -> f64 {
+pub(crate) fn physical_mu_ratio(p: &PhysicalSpring, m: usize) -> f64 {
     let PhysicalSpring { kx, kz, mu0, v0, omega, u0, du } = *p;
     let m = m.max(1);
     let dt = TAU / omega / m as f64;
@@ -134,7 +125,7 @@ const COS_BLOCK: usize = 4096;
 /// [`run`] for `count` springs given by `spring(i) = (s_i, weight_i)`, generated
 /// a chunk at a time: memory is bounded by a few chunks per thread, whatever
 /// `count` and `steps_per_period` are.
-pub fn run_with(
+pub(crate) fn run_with(
     count: usize,
     spring: &(dyn Fn(usize) -> (f64, f64) + Sync),
     vbar: f64,
@@ -195,17 +186,11 @@ pub fn run_with(
     }
 }
 
-/// `mu_macro/mu0` of a flat punch by time stepping.
-pub fn flat_mu_ratio(vbar: f64, amp: f64, steps_per_period: usize) -> SteppedMeans {
-    // In units of kz u0 the bound is (1 - amp cos tau)_+ = amp (s - cos tau)_+.
-    run(&[crate::flat::spring_s(amp)], &[1.0], vbar, steps_per_period, 2)
-}
-
 /// `mu_macro/mu0` of any contact by time stepping, over two periods: its
 /// foundation on the uniform grid of [`crate::contact::grid`] (`st.springs`
 /// springs at the midpoints of the part that ever touches; one for the flat
 /// punch). Returns the means and the number of springs stepped.
-pub fn contact_mu_ratio(
+pub(crate) fn contact_mu_ratio(
     contact: &dyn crate::contact::Contact,
     vbar: f64,
     amp: f64,

@@ -5,6 +5,12 @@ use serde_json::Value;
 
 pub mod quad;
 
+/// A shape as the command line names it, tabulated files read with the
+/// library's capped reader.
+pub fn shape(spec: &str) -> fricosc::Result<fricosc::Shape> {
+    fricosc::Shape::parse_with(spec, &|p| fricosc::io::read_capped(p, fricosc::io::MAX_FILE_BYTES))
+}
+
 /// One case of `data/reference-values.json` (a copy of `shared/reference-values.json`).
 pub struct Case {
     pub shape: String,
