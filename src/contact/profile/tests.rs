@@ -1,6 +1,7 @@
 //! Unit tests of the tabulated profiles' internals: the MDR transform (closed
 //! form per interval, summed hierarchically) against Hertz, Love, a direct sum,
 //! a quadrature in the angle and 40-digit values; the table reader.
+use super::transform::*;
 use super::*;
 use proptest::prelude::*;
 use std::f64::consts::PI;

@@ -1,0 +1,178 @@
+//! Convergence studies: the same table at several resolutions, observed orders.
+
+use super::*;
+
+/// Errors at or below this are rounding, not discretisation: no order is fitted to them.
+const ROUNDING_ERROR: f64 = 64.0 * f64::EPSILON;
+
+/// One row of a convergence study: its values at each resolution.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SeriesRow {
+    /// Dimensionless velocity.
+    pub vbar: f64,
+    /// Amplitude.
+    pub amp: f64,
+    /// The point's regime.
+    pub regime: RowRegime,
+    /// The exact value.
+    pub exact: f64,
+    /// The values, one per resolution (in increasing resolution).
+    pub values: Vec<f64>,
+    /// `value - exact`, one per resolution.
+    pub errors: Vec<f64>,
+    /// The observed order `p`: least-squares slope of `-ln|error|` against
+    /// `ln(resolution)` over the resolutions whose error is above rounding
+    /// (absent with fewer than two).
+    pub order: Option<f64>,
+    /// The error constant `C` of `|error| = C resolution^-p` from the same fit.
+    pub constant: Option<f64>,
+    /// Richardson extrapolation of the last two values with the observed order.
+    pub richardson: Option<f64>,
+    /// `richardson - exact`.
+    pub richardson_error: Option<f64>,
+    /// The resolution at which the fit reaches the target error (with `target`).
+    pub needed_resolution: Option<f64>,
+}
+
+/// The orders observed in one regime.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct RegimeOrder {
+    /// The regime.
+    pub regime: RowRegime,
+    /// Rows with an observed order.
+    pub n: usize,
+    /// Their median order.
+    pub median_order: f64,
+    /// The smallest and largest.
+    pub min_order: f64,
+    /// The largest.
+    pub max_order: f64,
+}
+
+/// A convergence study: one table at several resolutions (e.g. steps per period).
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Convergence {
+    /// Shape name.
+    pub shape: String,
+    /// The resolutions, increasing.
+    pub resolutions: Vec<f64>,
+    /// The target error, if asked.
+    pub target: Option<f64>,
+    /// Every row present in all tables (matched by `(vbar, amp)`).
+    pub rows: Vec<SeriesRow>,
+    /// Median, smallest and largest order per regime.
+    pub by_regime: Vec<RegimeOrder>,
+}
+
+/// Least squares of `y = a + b x`: `(a, b)`.
+fn line_fit(points: &[(f64, f64)]) -> Option<(f64, f64)> {
+    let n = points.len() as f64;
+    if points.len() < 2 {
+        return None;
+    }
+    let (sx, sy) = points.iter().fold((0.0, 0.0), |(a, b), &(x, y)| (a + x, b + y));
+    let (mx, my) = (sx / n, sy / n);
+    let sxx: f64 = points.iter().map(|&(x, _)| (x - mx) * (x - mx)).sum();
+    let sxy: f64 = points.iter().map(|&(x, y)| (x - mx) * (y - my)).sum();
+    (sxx > 0.0).then(|| (my - sxy / sxx * mx, sxy / sxx))
+}
+
+/// The observed order `p` and constant `C` of `|error| = C resolution^-p`: the
+/// least-squares line through `(ln resolution, ln |error|)` over the errors
+/// above rounding (none with fewer than two).
+pub fn observed_order(resolutions: &[f64], errors: &[f64]) -> (Option<f64>, Option<f64>) {
+    let points: Vec<(f64, f64)> = resolutions
+        .iter()
+        .zip(errors)
+        .filter(|(_, e)| e.abs() > ROUNDING_ERROR)
+        .map(|(r, e)| (r.ln(), e.abs().ln()))
+        .collect();
+    let fit = line_fit(&points);
+    (fit.map(|(_, b)| -b), fit.map(|(a, _)| a.exp()))
+}
+
+/// Compare `tables` (rows `(vbar, amp, mu_ratio)`) at `resolutions` (one each,
+/// positive and distinct) with the exact values: per row the observed order,
+/// error constant, Richardson value and (with `target`) the resolution needed;
+/// per regime the median order. Rows are matched by their `(vbar, amp)`; a row
+/// missing from one table is an error.
+pub fn convergence(
+    shape: &Shape,
+    resolutions: &[f64],
+    tables: &[Vec<(f64, f64, f64)>],
+    at_rest: AtRest,
+    target: Option<f64>,
+) -> Result<Convergence> {
+    if resolutions.len() != tables.len() || resolutions.len() < 2 {
+        return Err(Error::param("resolutions", resolutions.len() as f64, "a series needs two tables or more"));
+    }
+    if let Some(t) = target {
+        if !(t.is_finite() && t > 0.0) {
+            return Err(Error::param("target", t, "must be finite and > 0"));
+        }
+    }
+    let mut order: Vec<usize> = (0..resolutions.len()).collect();
+    order.sort_by(|&i, &j| resolutions[i].total_cmp(&resolutions[j]));
+    let res: Vec<f64> = order.iter().map(|&i| resolutions[i]).collect();
+    if res.iter().any(|r| !(r.is_finite() && *r > 0.0)) || res.windows(2).any(|w| w[0] == w[1]) {
+        return Err(Error::param("resolutions", res[0], "must be finite, > 0 and distinct"));
+    }
+    let first = &tables[order[0]];
+    let mut rows = vec![];
+    for &(vbar, amp, _) in first {
+        let mut values = vec![];
+        for &k in &order {
+            let found = tables[k].iter().find(|r| r.0 == vbar && r.1 == amp).ok_or_else(|| Error::Parse {
+                context: format!("the table at resolution {}", resolutions[k]),
+                reason: format!("it lacks the row vbar = {vbar:?}, amp = {amp:?}"),
+            })?;
+            values.push(found.2);
+        }
+        let exact = exact_value(shape, vbar, amp, at_rest)?;
+        let errors: Vec<f64> = values.iter().map(|v| v - exact).collect();
+        let (p, constant) = observed_order(&res, &errors);
+        let n = values.len();
+        let ratio = res[n - 1] / res[n - 2];
+        let richardson =
+            p.filter(|p| *p > 0.0).map(|p| values[n - 1] + (values[n - 1] - values[n - 2]) / (ratio.powf(p) - 1.0));
+        let needed = match (target, p, constant) {
+            (Some(t), Some(p), Some(c)) if p > 0.0 => Some((c / t).powf(1.0 / p)),
+            _ => None,
+        };
+        rows.push(SeriesRow {
+            vbar,
+            amp,
+            regime: RowRegime::of(vbar, amp),
+            exact,
+            values,
+            errors,
+            order: p,
+            constant,
+            richardson,
+            richardson_error: richardson.map(|r| r - exact),
+            needed_resolution: needed,
+        });
+    }
+    let mut regimes: Vec<RowRegime> = rows.iter().map(|r| r.regime).collect();
+    regimes.sort();
+    regimes.dedup();
+    let by_regime = regimes
+        .into_iter()
+        .filter_map(|g| {
+            let mut ps: Vec<f64> = rows.iter().filter(|r| r.regime == g).filter_map(|r| r.order).collect();
+            ps.sort_by(f64::total_cmp);
+            let n = ps.len();
+            (n > 0).then(|| RegimeOrder {
+                regime: g,
+                n,
+                median_order: if n % 2 == 1 { ps[n / 2] } else { 0.5 * (ps[n / 2 - 1] + ps[n / 2]) },
+                min_order: ps[0],
+                max_order: ps[n - 1],
+            })
+        })
+        .collect();
+    Ok(Convergence { shape: shape.name().to_string(), resolutions: res, target, rows, by_regime })
+}
