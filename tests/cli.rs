@@ -331,7 +331,7 @@ fn help_texts_and_stepping_only_options() {
     let help = String::from_utf8(fricosc(&["--help"], None).stdout).unwrap();
     let line = |cmd: &str| help.lines().find(|l| l.trim_start().starts_with(cmd)).unwrap_or("").to_string();
     assert!(line("batch").contains("JSON array"), "{help}");
-    assert!(line("validate").contains("Compare a table") && !line("validate").contains("JSON array of"), "{help}");
+    assert!(line("validate").contains("Compare another code") && !line("validate").contains("JSON array of"), "{help}");
     let table = String::from_utf8(fricosc(&["table", "--help"], None).stdout).unwrap();
     assert!(table.contains("start:stop:count"));
     assert!(!table.contains("fricosc::"), "no code links in help");

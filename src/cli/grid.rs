@@ -10,83 +10,87 @@ pub const MAX_LIST: u128 = MAX_ROWS as u128;
 
 /// Parse one finite number; `what` names it in the error.
 pub fn parse_number(what: &str, text: &str) -> Result<f64> {
+    number(text).map_err(|reason| Error::Parse { context: what.into(), reason })
+}
+
+/// One finite number (`-0` is 0), or why not: the value parser of every
+/// numeric option.
+pub fn number(text: &str) -> std::result::Result<f64, String> {
     let t = text.trim();
-    let x: f64 =
-        t.parse().map_err(|_| Error::Parse { context: what.into(), reason: format!("'{t}' is not a number") })?;
+    let x: f64 = t.parse().map_err(|_| format!("'{t}' is not a number"))?;
     if !x.is_finite() {
-        return Err(Error::Parse { context: what.into(), reason: format!("'{t}' is not finite") });
+        return Err(format!("'{t}' is not finite"));
     }
     // -0.0 is 0 (it would print back as -0.0 in vbar and reduction).
     Ok(x + 0.0)
 }
 
+/// [`values`]; `what` names the list in the error.
+pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
+    values(text).map_err(|reason| Error::Parse { context: what.into(), reason })
+}
+
 /// A comma list `a,b,c` or an inclusive range `start:stop:count` (`count >= 1`,
-/// `stop >= start`; `count = 1` gives `start`). Values are
+/// `stop >= start`; `count = 1` gives `start`), or why not. Values are
 /// `start + (stop - start) k / (count - 1)` rounded to 15 significant digits (so
 /// `0:1.2:13` gives 0.1, 0.2, ... rather than 0.09999999999999999), the last one
-/// `stop` exactly; outputs print the value actually used.
-pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
+/// `stop` exactly; outputs print the value actually used. At most [`MAX_ROWS`] values.
+pub fn values(text: &str) -> std::result::Result<Vec<f64>, String> {
     let t = text.trim();
     if t.is_empty() {
-        return Err(Error::Parse { context: what.into(), reason: "empty value list".into() });
+        return Err("empty value list".into());
     }
     let parts: Vec<&str> = t.split(':').collect();
     match parts.len() {
-        1 => t.split(',').map(|p| parse_number(what, p)).collect(),
-        3 => {
-            let start = parse_number(what, parts[0])?;
-            let stop = parse_number(what, parts[1])?;
-            let c = parts[2].trim();
-            let count: u128 = c.parse().map_err(|_| Error::Parse {
-                context: what.into(),
-                reason: format!("range count '{c}' is not a whole number"),
-            })?;
-            if count == 0 {
-                return Err(Error::Parse { context: what.into(), reason: "range count must be >= 1".into() });
+        1 => {
+            let n = t.split(',').count();
+            if n as u128 > MAX_LIST {
+                return Err(format!("list of {n} values: more than the limit of {MAX_LIST}"));
             }
-            if count > MAX_LIST {
-                return Err(Error::TooLarge { what: format!("{what} range count"), count, limit: MAX_LIST });
-            }
-            if stop < start {
-                return Err(Error::Parse {
-                    context: what.into(),
-                    reason: format!("range stop {stop:?} is below start {start:?}"),
-                });
-            }
-            let n = count as usize;
-            if n == 1 {
-                return Ok(vec![start]);
-            }
-            let span = stop - start;
-            let last = (n - 1) as f64;
-            let at = |k: usize| {
-                let t = k as f64 / last;
-                // stop - start overflows for ranges across most of f64 (-1e308:1e308).
-                if span.is_finite() {
-                    start + span * t
-                } else {
-                    start * (1.0 - t) + stop * t
-                }
-            };
-            let mut out: Vec<f64> = (0..n).map(|k| if k + 1 == n { stop } else { at(k) }).collect();
-            // Remove the binary noise of k * step (0.30000000000000004 -> 0.3), where it is noise.
-            crate::numerics::decimal::tidy(&mut out, start, stop);
-            if let Some(w) = out.windows(2).find(|w| w[1] <= w[0]) {
-                return Err(Error::Parse {
-                    context: what.into(),
-                    reason: format!(
-                        "the range {start:?}:{stop:?} holds fewer than {n} distinct double values ({:?} repeats)",
-                        w[1]
-                    ),
-                });
-            }
-            Ok(out)
+            t.split(',').map(number).collect()
         }
-        _ => Err(Error::Parse {
-            context: what.into(),
-            reason: format!("'{t}' is neither a comma list nor start:stop:count"),
-        }),
+        3 => range(number(parts[0])?, number(parts[1])?, parts[2].trim()),
+        _ => Err(format!("'{t}' is neither a comma list nor start:stop:count")),
     }
+}
+
+/// The range `start:stop:count` of [`values`].
+fn range(start: f64, stop: f64, count: &str) -> std::result::Result<Vec<f64>, String> {
+    let count: u128 = count.parse().map_err(|_| format!("range count '{count}' is not a whole number"))?;
+    if count == 0 {
+        return Err("range count must be >= 1".into());
+    }
+    if count > MAX_LIST {
+        return Err(format!("range count: {count} is more than the limit of {MAX_LIST}"));
+    }
+    if stop < start {
+        return Err(format!("range stop {stop:?} is below start {start:?}"));
+    }
+    let n = count as usize;
+    if n == 1 {
+        return Ok(vec![start]);
+    }
+    let span = stop - start;
+    let last = (n - 1) as f64;
+    let at = |k: usize| {
+        let t = k as f64 / last;
+        // stop - start overflows for ranges across most of f64 (-1e308:1e308).
+        if span.is_finite() {
+            start + span * t
+        } else {
+            start * (1.0 - t) + stop * t
+        }
+    };
+    let mut out: Vec<f64> = (0..n).map(|k| if k + 1 == n { stop } else { at(k) }).collect();
+    // Remove the binary noise of k * step (0.30000000000000004 -> 0.3), where it is noise.
+    crate::numerics::decimal::tidy(&mut out, start, stop);
+    if let Some(w) = out.windows(2).find(|w| w[1] <= w[0]) {
+        return Err(format!(
+            "the range {start:?}:{stop:?} holds fewer than {n} distinct double values ({:?} repeats)",
+            w[1]
+        ));
+    }
+    Ok(out)
 }
 
 #[cfg(test)]

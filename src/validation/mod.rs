@@ -434,4 +434,3 @@ fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64
     out.extend(finding(FindingKind::AtRestConvention, mismatched, hint));
     Ok(out)
 }
-

@@ -7,7 +7,21 @@ use crate::cli::error::{Error, Result};
 use crate::stepper::Stepping;
 use std::io::{self, BufRead, Write};
 
-pub fn run(file: Option<String>, format: Option<String>, stepping: Option<Stepping>) -> Result<()> {
+#[derive(clap::Args)]
+pub struct BatchArgs {
+    /// Input file; stdin when absent or '-'.
+    pub file: Option<String>,
+    /// Input and output format: json (an array), jsonl (one object per line, streamed) or csv
+    /// (streamed); default: by the file's extension (.jsonl, .ndjson, .csv), else json.
+    #[arg(long)]
+    pub format: Option<String>,
+    #[command(flatten)]
+    pub method: super::MethodArgs,
+}
+
+pub fn run(a: BatchArgs) -> Result<()> {
+    let stepping: Option<Stepping> = a.method.stepping()?;
+    let (file, format) = (a.file, a.format);
     let path = file.clone().unwrap_or_else(|| "-".into());
     match Format::choose(format.as_deref(), &path)? {
         Format::Json => {

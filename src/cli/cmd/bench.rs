@@ -3,9 +3,21 @@
 use super::{check_out_dir, emit};
 use crate::cli::error::{Error, Result};
 use crate::cli::export::{export_bytes, Format};
+use clap::Args;
 
-/// Run the benchmark and write its JSON, CSV, SVG and PNG into `out`.
-pub fn run(out: &str, quick: bool) -> Result<()> {
+#[derive(Args)]
+pub struct BenchArgs {
+    /// Output directory (created if missing).
+    #[arg(long)]
+    pub out: String,
+    /// A few seconds, for CI.
+    #[arg(long)]
+    pub quick: bool,
+}
+
+/// Run the benchmark and write its JSON, CSV, SVG and PNG into `--out`.
+pub fn run(a: BenchArgs) -> Result<()> {
+    let (out, quick) = (a.out.as_str(), a.quick);
     check_out_dir(out)?;
     let dir = std::path::Path::new(out);
     std::fs::create_dir_all(dir).map_err(|e| Error::write(out, e))?;

@@ -3,10 +3,18 @@
 use super::emit;
 use crate::cli::error::Result;
 use crate::cli::export::{export, Format};
+use clap::Args;
+
+#[derive(Args)]
+pub struct ClaimsArgs {
+    /// markdown (default), json or csv.
+    #[arg(long, default_value = "markdown")]
+    pub format: String,
+}
 
 /// Print the claims as Markdown, JSON or CSV.
-pub fn run(format: &str) -> Result<()> {
-    let format = Format::parse(format, &[Format::Markdown, Format::Json, Format::Csv])?;
+pub fn run(a: ClaimsArgs) -> Result<()> {
+    let format = Format::parse(&a.format, &[Format::Markdown, Format::Json, Format::Csv])?;
     let claims = crate::cli::claims::check();
     let text = match format {
         Format::Markdown => crate::cli::claims::markdown(&claims),

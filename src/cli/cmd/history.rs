@@ -1,37 +1,66 @@
 //! `fricosc history`: exact force histories (the seed's Fig. 2).
 
-use super::{emit_bytes, vbar_of, Velocity};
-use crate::cli::error::Result;
+use super::{emit_bytes, list, nonneg, List, MethodArg, VelocityPoint, DEFAULT_STEPPING};
+use crate::cli::error::{Error, Result};
 use crate::cli::export::{export_bytes, Format};
-use crate::cli::grid::{parse_number, parse_values};
+use clap::Args;
 
-pub fn run(
-    shape: &str,
-    velocity: &Velocity,
-    amp: &str,
-    (periods, samples, springs): (usize, usize, usize),
-    spring_at: Option<&str>,
-    format: &str,
-    stepping: Option<usize>,
-) -> Result<()> {
-    let chosen = match spring_at {
-        Some(t) => parse_values("--spring-at", t)?,
-        None => vec![],
+#[derive(Args)]
+pub struct HistoryArgs {
+    /// Shape: flat, a power law, flat-tip:E or a tabulated profile.
+    #[arg(long, default_value = "flat")]
+    pub shape: String,
+    #[command(flatten)]
+    pub velocity: VelocityPoint,
+    /// Amplitude du/u0.
+    #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
+    pub amp: f64,
+    /// Periods to sample.
+    #[arg(long, default_value_t = 1)]
+    pub periods: usize,
+    /// Uniform samples over all periods (event times are added).
+    #[arg(long, default_value_t = 400)]
+    pub samples: usize,
+    /// Springs summed for curved shapes.
+    #[arg(long, default_value_t = 4000)]
+    pub springs: usize,
+    /// Curved shapes: report these springs too (positions x/x_c, comma list; JSON only).
+    #[arg(long, allow_hyphen_values = true, value_parser = list)]
+    pub spring_at: Option<List>,
+    /// json, csv, svg or png (the seed's Fig. 2, 300 dpi).
+    #[arg(long, default_value = "json")]
+    pub format: String,
+    /// exact (default) or stepping: the seed's time-stepping scheme (flat punch), one row per
+    /// step, the same columns (for comparing with validate --history).
+    #[arg(long, value_enum, default_value = "exact")]
+    pub method: MethodArg,
+    /// Time steps per period with --method stepping (default 1000).
+    #[arg(long, allow_hyphen_values = true)]
+    pub steps_per_period: Option<usize>,
+}
+
+pub fn run(a: HistoryArgs) -> Result<()> {
+    let stepping = match (a.method, a.steps_per_period) {
+        (MethodArg::Stepping, m) => Some(m.unwrap_or(DEFAULT_STEPPING)),
+        (_, Some(_)) => {
+            return Err(Error::Parse {
+                context: "--steps-per-period".into(),
+                reason: "applies only with --method stepping".into(),
+            })
+        }
+        (_, None) => None,
     };
-    let shape = crate::cli::input::parse_shape(shape)?;
-    let amp = parse_number("--amp", amp)?;
-    let vbar = match (&velocity.vbar, &velocity.vhat) {
-        (Some(v), _) => parse_number("--vbar", v)?,
-        (None, Some(h)) => vbar_of(parse_number("--vhat", h)?, amp)?,
-        (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
-    };
-    let format = Format::parse(format, &[Format::Json, Format::Csv, Format::Svg, Format::Png])?;
+    let chosen = a.spring_at.map(|l| l.0).unwrap_or_default();
+    let shape = crate::cli::input::parse_shape(&a.shape)?;
+    let amp = a.amp;
+    let vbar = a.velocity.vbar(amp)?;
+    let format = Format::parse(&a.format, &[Format::Json, Format::Csv, Format::Svg, Format::Png])?;
     let h = match stepping {
         None => {
             let opts = crate::history::HistoryOptions::default()
-                .with_periods(periods)
-                .with_samples(samples)
-                .with_springs(springs)
+                .with_periods(a.periods)
+                .with_samples(a.samples)
+                .with_springs(a.springs)
                 .with_spring_at(chosen);
             crate::history::history(&shape, vbar, amp, &opts)?
         }
@@ -43,7 +72,7 @@ pub fn run(
                 }
                 .into());
             }
-            crate::history::stepped_history(vbar, amp, periods, m)?
+            crate::history::stepped_history(vbar, amp, a.periods, m)?
         }
     };
     let mut bytes = export_bytes(&h, format)?;

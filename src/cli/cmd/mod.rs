@@ -1,12 +1,11 @@
-//! The subcommands, one file each, and what they share: the common options,
-//! the one checked path to stdout, bounded input, and the outcome that `main`
-//! turns into an exit code.
+//! The subcommands, one file each, and what they share: the common options
+//! (typed by clap's value parsers), the one checked path to stdout, bounded
+//! input, and the outcome that `main` turns into an exit code.
 
 use crate::cli::error::{Error, Result};
-use crate::cli::grid::parse_number;
 use crate::shape::check_tol;
 use crate::stepper::Stepping;
-use clap::Args;
+use clap::{Args, Subcommand};
 use std::io::{self, Write};
 
 pub mod batch;
@@ -27,25 +26,150 @@ pub mod validate;
 pub enum Outcome {
     /// Success (exit 0).
     Done,
-    /// A negative answer: `validate` beyond `--max-error`, a failed `stress` check (exit 1).
+    /// A negative answer: `validate` with findings or beyond `--max-error`, a
+    /// failed `stress` check, a stale suite (exit 1).
     Negative,
 }
 
-/// The velocity, as vbar (eq. 3) or vhat (eq. 15, vbar = vhat / amp).
-#[derive(Args)]
-#[group(required = true, multiple = false)]
-pub struct Velocity {
-    /// Dimensionless velocity vbar = (kx/kz) v0 / (mu0 omega du) (eq. 3); for table and plot a comma list
-    /// or start:stop:count.
-    #[arg(long, allow_hyphen_values = true)]
-    pub vbar: Option<String>,
-    /// Velocity vhat = (kx/kz) v0 / (mu0 omega u0) (eq. 15), vbar = vhat / amp; for table and plot a comma
-    /// list or start:stop:count.
-    #[arg(long, allow_hyphen_values = true)]
-    pub vhat: Option<String>,
+/// The subcommands.
+#[derive(Subcommand)]
+pub enum Command {
+    /// One point, with regime and events: JSON.
+    Point(point::PointArgs),
+    /// A grid of amplitudes x velocities: JSON or CSV.
+    Table(table::TableArgs),
+    /// Draw mu/mu0 against vbar or vhat, one curve per amplitude, as SVG or PNG.
+    Plot(plot::PlotArgs),
+    /// Compare another code's table (vbar, amp, mu_ratio; CSV or JSON), force history or convergence
+    /// series with the exact values. Exit 1 on a finding or an error above --max-error.
+    Validate(validate::ValidateArgs),
+    /// The reference suite: canonical cases with error bounds, a manifest and a README (--out),
+    /// or verify a copy of it (--check; exit 1 when a file differs).
+    Suite(suite::SuiteArgs),
+    /// Work-precision benchmark: exact solver vs time stepping; writes JSON, CSV, SVG and PNG to DIR.
+    Bench(bench::BenchArgs),
+    /// Stress test: many random and edge points; exit 1 if any check fails.
+    Stress(stress::StressArgs),
+    /// Every quantitative claim of the seed, checked against the exact solver.
+    Claims(claims::ClaimsArgs),
+    /// Normal and tangential force over time (the seed's Fig. 2), exact: JSON, CSV, SVG or PNG.
+    History(history::HistoryArgs),
+    /// The seed's Figs. 3, 4, 5 (+ inset), 7, 8: exact curves and the seed's approximations, as JSON, CSV, SVG
+    /// and PNG.
+    Figures(figures::FiguresArgs),
+    /// Physical scenes (JSON, SI units): mu, forces and velocities in physical units.
+    Scene(scene::SceneArgs),
+    /// Rows of {shape, vbar, amp, ...} (a JSON array, JSON Lines or CSV) from FILE or stdin; the same rows with
+    /// mu_ratio and reduction added.
+    Batch(batch::BatchArgs),
 }
 
-// `--method`: the command-line face of `crate::shape::Method`.
+impl Command {
+    /// Run the command.
+    pub fn run(self) -> Result<Outcome> {
+        let done = |r: Result<()>| r.map(|()| Outcome::Done);
+        match self {
+            Command::Point(a) => done(point::run(a)),
+            Command::Table(a) => done(table::run(a)),
+            Command::Plot(a) => done(plot::run(a)),
+            Command::Validate(a) => validate::run(a),
+            Command::Suite(a) => suite::run(a),
+            Command::Bench(a) => done(bench::run(a)),
+            Command::Stress(a) => stress::run(a),
+            Command::Claims(a) => done(claims::run(a)),
+            Command::History(a) => done(history::run(a)),
+            Command::Figures(a) => done(figures::run(a)),
+            Command::Scene(a) => done(scene::run(a)),
+            Command::Batch(a) => done(batch::run(a)),
+        }
+    }
+}
+
+/// clap's value parser of a number: finite (`-0` is 0).
+pub fn number(text: &str) -> std::result::Result<f64, String> {
+    crate::cli::grid::number(text)
+}
+
+/// clap's value parser of a number `>= 0`.
+pub fn nonneg(text: &str) -> std::result::Result<f64, String> {
+    let x = number(text)?;
+    if x < 0.0 {
+        return Err(format!("{x:?} must be >= 0"));
+    }
+    Ok(x)
+}
+
+/// clap's value parser of a number `> 0`.
+pub fn positive(text: &str) -> std::result::Result<f64, String> {
+    let x = number(text)?;
+    if x <= 0.0 {
+        return Err(format!("{x:?} must be > 0"));
+    }
+    Ok(x)
+}
+
+/// clap's value parser of a quadrature tolerance: finite, in `(0, 1)`.
+pub fn tolerance(text: &str) -> std::result::Result<f64, String> {
+    check_tol(number(text)?).map_err(|e| e.to_string())
+}
+
+/// A list of values: a comma list or `start:stop:count` ([`crate::cli::grid::values`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct List(pub Vec<f64>);
+
+/// clap's value parser of a [`List`].
+pub fn list(text: &str) -> std::result::Result<List, String> {
+    crate::cli::grid::values(text).map(List)
+}
+
+/// The velocity of one point, as vbar (eq. 3) or vhat (eq. 15, vbar = vhat / amp).
+#[derive(Args)]
+#[group(required = true, multiple = false)]
+pub struct VelocityPoint {
+    /// Dimensionless velocity vbar = (kx/kz) v0 / (mu0 omega du) (eq. 3).
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    pub vbar: Option<f64>,
+    /// Velocity vhat = (kx/kz) v0 / (mu0 omega u0) (eq. 15), vbar = vhat / amp.
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    pub vhat: Option<f64>,
+}
+
+impl VelocityPoint {
+    /// `vbar` at amplitude `amp`.
+    pub fn vbar(&self, amp: f64) -> Result<f64> {
+        match (self.vbar, self.vhat) {
+            (Some(v), _) => Ok(v),
+            (None, Some(h)) => vbar_of(h, amp),
+            (None, None) => Err(Error::Parse { context: "velocity".into(), reason: "give --vbar or --vhat".into() }),
+        }
+    }
+}
+
+/// The velocities of a table or plot: lists of vbar (eq. 3) or vhat (eq. 15).
+#[derive(Args)]
+#[group(required = true, multiple = false)]
+pub struct VelocityList {
+    /// Dimensionless velocities vbar = (kx/kz) v0 / (mu0 omega du) (eq. 3): a comma list or start:stop:count.
+    #[arg(long, allow_hyphen_values = true, value_parser = list)]
+    pub vbar: Option<List>,
+    /// Velocities vhat = (kx/kz) v0 / (mu0 omega u0) (eq. 15), vbar = vhat / amp: a comma list or
+    /// start:stop:count.
+    #[arg(long, allow_hyphen_values = true, value_parser = list)]
+    pub vhat: Option<List>,
+}
+
+impl VelocityList {
+    /// The values and whether they are `vhat`.
+    pub fn values(&self) -> (&[f64], bool) {
+        match (&self.vbar, &self.vhat) {
+            (Some(v), _) => (&v.0, false),
+            (None, Some(h)) => (&h.0, true),
+            (None, None) => (&[], false),
+        }
+    }
+}
+
+// `--method`: the command-line face of the exact solver and the stepping peer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum MethodArg {
     /// The event-driven exact solver.
@@ -94,25 +218,23 @@ impl MethodArgs {
     }
 }
 
-/// Options shared by `point` and `table`.
+/// The shape, method and tolerance shared by `point` and `table`.
 #[derive(Args)]
 pub struct Common {
-    /// Indenter shape: flat, parabolic, cone, power:N, profile:FILE@U0, gx:FILE@U0.
+    /// Indenter shape: flat, parabolic, cone, power:N, flat-tip:E, profile:FILE@U0, gx:FILE@U0.
     #[arg(long, default_value = "flat")]
     pub shape: String,
     #[command(flatten)]
-    pub velocity: Velocity,
-    #[command(flatten)]
     pub method: MethodArgs,
-    /// Relative quadrature tolerance for MDR shapes (default: as accurate as f64 allows).
-    #[arg(long, allow_hyphen_values = true)]
-    pub tol: Option<String>,
+    /// Relative quadrature tolerance for curved shapes, in (0, 1) (default: as accurate as f64 allows, 4e-15).
+    #[arg(long, allow_hyphen_values = true, value_parser = tolerance)]
+    pub tol: Option<f64>,
 }
 
-pub fn tol_of(t: &Option<String>) -> Result<f64> {
-    match t {
-        Some(t) => Ok(check_tol(parse_number("--tol", t)?)?),
-        None => Ok(crate::DEFAULT_TOL),
+impl Common {
+    /// The evaluation options.
+    pub fn options(&self) -> crate::Options {
+        crate::Options::default().with_tol(self.tol.unwrap_or(crate::DEFAULT_TOL))
     }
 }
 

@@ -1,8 +1,7 @@
 //! `fricosc plot`: the user's own curves in the style of the seed's figures.
 
-use super::{drawing_kind, emit, write_drawing, Velocity};
+use super::{drawing_kind, emit, list, write_drawing, List, VelocityList};
 use crate::cli::error::Result;
-use crate::cli::grid::parse_values;
 use clap::Args;
 
 #[derive(Args)]
@@ -11,10 +10,10 @@ pub struct PlotArgs {
     #[arg(long, default_value = "flat")]
     pub shape: String,
     #[command(flatten)]
-    pub velocity: Velocity,
+    pub velocity: VelocityList,
     /// Amplitudes du/u0, one curve each (at most 12): a comma list or start:stop:count.
-    #[arg(long, allow_hyphen_values = true)]
-    pub amp: String,
+    #[arg(long, allow_hyphen_values = true, value_parser = list)]
+    pub amp: List,
     /// Write the drawing to this file, SVG or PNG (300 dpi) by its extension (default: SVG on stdout).
     #[arg(long)]
     pub out: Option<String>,
@@ -25,13 +24,8 @@ pub fn run(a: PlotArgs) -> Result<()> {
         drawing_kind("--out", path)?;
     }
     let shape = crate::cli::input::parse_shape(&a.shape)?;
-    let amps = parse_values("--amp", &a.amp)?;
-    let (xs, vhat) = match (&a.velocity.vbar, &a.velocity.vhat) {
-        (Some(v), _) => (parse_values("--vbar", v)?, false),
-        (None, Some(h)) => (parse_values("--vhat", h)?, true),
-        (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
-    };
-    let fig = crate::cli::figures::user(&shape, &amps, &xs, vhat)?;
+    let (xs, vhat) = a.velocity.values();
+    let fig = crate::cli::figures::user(&shape, &a.amp.0, xs, vhat)?;
     let svg = crate::cli::figures::chart(&fig).svg();
     match &a.out {
         Some(path) => write_drawing("--out", path, &svg),

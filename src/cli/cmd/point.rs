@@ -1,8 +1,7 @@
 //! `fricosc point`: one point with its regime, events and bands (JSON).
 
-use super::{io_err, tol_of, vbar_of, Common};
+use super::{io_err, nonneg, Common, VelocityPoint};
 use crate::cli::error::{Error, Result};
-use crate::cli::grid::parse_number;
 use crate::shape::Shape;
 use clap::Args;
 use std::io::{self, Write};
@@ -11,32 +10,29 @@ use std::io::{self, Write};
 pub struct PointArgs {
     #[command(flatten)]
     pub common: Common,
+    #[command(flatten)]
+    pub velocity: VelocityPoint,
     /// Amplitude du/u0 (>= 0).
-    #[arg(long, allow_hyphen_values = true)]
-    pub amp: String,
+    #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
+    pub amp: f64,
 }
 
-fn exact_point(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<serde_json::Value> {
-    serde_json::to_value(shape.point(vbar, amp, &crate::Options::default().with_tol(tol))?)
+fn exact_point(shape: &Shape, vbar: f64, amp: f64, opts: &crate::Options) -> Result<serde_json::Value> {
+    serde_json::to_value(shape.point(vbar, amp, opts)?)
         .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
 }
 
 pub fn run(a: PointArgs) -> Result<()> {
     let shape = crate::cli::input::parse_shape(&a.common.shape)?;
-    let amp = parse_number("--amp", &a.amp)?;
-    let vbar = match (&a.common.velocity.vbar, &a.common.velocity.vhat) {
-        (Some(v), _) => parse_number("--vbar", v)?,
-        (None, Some(h)) => vbar_of(parse_number("--vhat", h)?, amp)?,
-        (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
-    };
-    let tol = tol_of(&a.common.tol)?;
+    let amp = a.amp;
+    let vbar = a.velocity.vbar(amp)?;
     let body = match a.common.method.stepping()? {
         Some(st) => {
             let e = crate::stepper::evaluate(&shape, vbar, amp, st)?;
             serde_json::json!({"vbar": vbar, "amp": amp, "mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction,
                 "method": "stepping", "steps": e.steps, "springs": e.springs, "period_change": e.period_change})
         }
-        None => exact_point(&shape, vbar, amp, tol)?,
+        None => exact_point(&shape, vbar, amp, &a.common.options())?,
     };
     let mut obj = serde_json::Map::new();
     obj.insert("shape".into(), shape.name().into());

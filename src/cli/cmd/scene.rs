@@ -6,7 +6,24 @@ use crate::cli::output::Format;
 use rayon::prelude::*;
 use std::io::{IsTerminal, Write};
 
-pub fn run(files: Vec<String>, schema: bool, format: Format, plot: Option<String>) -> Result<()> {
+#[derive(clap::Args)]
+pub struct SceneArgs {
+    /// Scene files (run in parallel).
+    pub files: Vec<String>,
+    /// Print the JSON Schema of the scene file instead.
+    #[arg(long)]
+    pub schema: bool,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "json")]
+    pub format: Format,
+    /// Also draw mu_macro against the velocity, one curve per amplitude (the seed's Fig. 9
+    /// layout), to this file: SVG or PNG by its extension.
+    #[arg(long)]
+    pub plot: Option<String>,
+}
+
+pub fn run(a: SceneArgs) -> Result<()> {
+    let SceneArgs { files, schema, format, plot } = a;
     if schema {
         return emit(&format!("{}\n", crate::cli::scene::schema()));
     }

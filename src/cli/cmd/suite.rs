@@ -2,11 +2,22 @@
 
 use super::{check_out_dir, emit, Outcome};
 use crate::cli::error::Result;
+use clap::Args;
+
+#[derive(Args)]
+pub struct SuiteArgs {
+    /// Write the suite into this directory (created if missing).
+    #[arg(long)]
+    pub out: Option<String>,
+    /// Check the suite in this directory against the current solver.
+    #[arg(long)]
+    pub check: Option<String>,
+}
 
 /// `--out DIR` writes the suite; `--check DIR` compares it with the current
 /// solver ([`Outcome::Negative`] when a file differs or is missing).
-pub fn run(out: Option<String>, check: Option<String>) -> Result<Outcome> {
-    match (out, check) {
+pub fn run(a: SuiteArgs) -> Result<Outcome> {
+    match (a.out, a.check) {
         (Some(dir), None) => {
             check_out_dir(&dir)?;
             let files = crate::cli::suite::write(std::path::Path::new(&dir))?;

@@ -1,8 +1,7 @@
 //! `fricosc table`: a grid of amplitudes x velocities (JSON or CSV).
 
-use super::{io_err, tol_of, vbar_of, Common};
+use super::{io_err, list, vbar_of, Common, List, VelocityList};
 use crate::cli::error::{Error, Result};
-use crate::cli::grid::parse_values;
 use crate::cli::output::{Format, TableWriter};
 use clap::Args;
 use rayon::prelude::*;
@@ -12,9 +11,11 @@ use std::io;
 pub struct TableArgs {
     #[command(flatten)]
     pub common: Common,
+    #[command(flatten)]
+    pub velocity: VelocityList,
     /// Amplitudes du/u0: a comma list or start:stop:count.
-    #[arg(long, allow_hyphen_values = true)]
-    pub amp: String,
+    #[arg(long, allow_hyphen_values = true, value_parser = list)]
+    pub amp: List,
     /// Output format.
     #[arg(long, value_enum, default_value = "json")]
     pub format: Format,
@@ -22,13 +23,9 @@ pub struct TableArgs {
 
 pub fn run(a: TableArgs) -> Result<()> {
     let shape = crate::cli::input::parse_shape(&a.common.shape)?;
-    let opts = crate::Options::default().with_tol(tol_of(&a.common.tol)?);
-    let amps = parse_values("--amp", &a.amp)?;
-    let (vels, is_vhat) = match (&a.common.velocity.vbar, &a.common.velocity.vhat) {
-        (Some(v), _) => (parse_values("--vbar", v)?, false),
-        (None, Some(h)) => (parse_values("--vhat", h)?, true),
-        (None, None) => unreachable!("clap requires one of --vbar, --vhat"),
-    };
+    let opts = a.common.options();
+    let amps = &a.amp.0;
+    let (vels, is_vhat) = a.velocity.values();
     let total = amps.len() as u128 * vels.len() as u128;
     if total > crate::cli::grid::MAX_LIST {
         return Err(Error::TooLarge {
@@ -38,9 +35,9 @@ pub fn run(a: TableArgs) -> Result<()> {
         });
     }
     // Validate every input before the first byte is written.
-    for &amp in &amps {
+    for &amp in amps {
         crate::error::check_nonneg("amp", amp)?;
-        for &v in &vels {
+        for &v in vels {
             let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
             crate::error::check_nonneg(if is_vhat { "vhat" } else { "vbar" }, vbar)?;
         }

@@ -1,35 +1,83 @@
 //! `fricosc validate`: another code's table against the exact values, with
 //! errors by regime and amplitude and findings that point at bugs.
 
-use super::{io_err, read_input, Outcome};
+use super::{io_err, nonneg, positive, read_input, Outcome};
 use crate::cli::error::{Error, Result};
 use crate::cli::grid::parse_number;
 use crate::shape::Shape;
 use crate::validation::{AtRest, Convergence, HistoryValidation, Validation};
 use std::io::{self, IsTerminal, Write};
 
-/// The options of `validate` (see `main.rs` for their help).
+/// The options of `validate`.
+#[derive(clap::Args)]
 pub struct ValidateArgs {
+    /// Shape of the table's contact, where the table names none (a JSON 'shape' field or a
+    /// CSV 'shape' column decides; giving a different one is an error). Default: flat.
+    #[arg(long)]
     pub shape: Option<String>,
+    /// Table file (JSON or CSV; columns vbar or vhat, amp, mu_ratio or mu); stdin when '-'.
+    /// With --series: several, each with its resolution (run@1000.csv, or run.csv@1000).
+    #[arg(required = true)]
     pub files: Vec<String>,
+    /// A convergence study: the same table at several resolutions (e.g. steps per period);
+    /// reports the observed order per row and regime, the error constant, the Richardson value
+    /// and the resolution needed for --target.
+    #[arg(long)]
     pub series: bool,
-    pub target: Option<String>,
+    /// With --series: the target error for the needed resolution.
+    #[arg(long, allow_hyphen_values = true, value_parser = positive, requires = "series")]
+    pub target: Option<f64>,
+    /// With --series: draw the errors against the resolution into this file (SVG or PNG by its extension).
+    #[arg(long, requires = "series")]
     pub plot: Option<String>,
-    pub history: Option<HistoryArgs>,
-    pub max_error: Option<String>,
+    #[command(flatten)]
+    pub history: HistoryArgs,
+    /// Largest acceptable |mu_ratio - exact| (exit 1 beyond it).
+    #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
+    pub max_error: Option<f64>,
+    /// What a vbar = 0 row is compared with: 'sliding' (the limit vbar -> 0+, mu_static) or
+    /// 'relaxed' (a stepper started from relaxed springs at exactly zero velocity: 0).
+    #[arg(long, default_value = "sliding")]
     pub at_rest: String,
-    pub mu0: Option<String>,
-    pub tolerance: String,
+    /// Coulomb coefficient, for a table that gives 'mu' (mu_ratio = mu / mu0), or a history in
+    /// your units (tangential / (mu0 F0)).
+    #[arg(long, allow_hyphen_values = true, value_parser = positive)]
+    pub mu0: Option<f64>,
+    /// How far a value may leave [0, 1], differ from 1 above vbar = 1, or decrease in vbar
+    /// before it is reported as a finding.
+    #[arg(long, default_value = "1e-9", allow_hyphen_values = true, value_parser = nonneg)]
+    pub tolerance: f64,
+    /// summary (a short report; the default on a terminal), json (the default otherwise) or csv
+    /// (one line per row).
+    #[arg(long)]
     pub format: Option<String>,
 }
 
 /// The options of `validate --history`.
+#[derive(clap::Args)]
 pub struct HistoryArgs {
-    pub vbar: Option<String>,
-    pub vhat: Option<String>,
-    pub amp: Option<String>,
-    pub omega: Option<String>,
-    pub kz_u0: Option<String>,
+    /// The file is a force history (CSV: tau or t, tangential, optionally normal; forces in
+    /// units of kz u0 and mu0 kz u0) at --vbar (or --vhat) and --amp: errors over the last period,
+    /// periodicity, and the stick/slip/contact events with timing errors.
+    #[arg(long = "history", requires = "amp")]
+    pub on: bool,
+    /// With --history: the velocity vbar (eq. 3).
+    #[arg(long, allow_hyphen_values = true, value_parser = nonneg, requires = "on", conflicts_with = "vhat")]
+    pub vbar: Option<f64>,
+    /// With --history: the velocity vhat (eq. 15), instead of --vbar.
+    #[arg(long, allow_hyphen_values = true, value_parser = nonneg, requires = "on")]
+    pub vhat: Option<f64>,
+    /// With --history: the amplitude du/u0.
+    #[arg(long, allow_hyphen_values = true, value_parser = nonneg, requires = "on")]
+    pub amp: Option<f64>,
+    /// With --history and a time column t: the angular frequency (tau = omega t); without it
+    /// the period and phase are found from the normal force's maxima (at tau = pi).
+    #[arg(long, allow_hyphen_values = true, value_parser = positive, requires = "on")]
+    pub omega: Option<f64>,
+    /// With --history: forces in your units, where the static normal force kz u0 is this value
+    /// (normal / kz_u0; tangential / (mu0 kz_u0) with --mu0). Default: already normalised.
+    #[arg(long, allow_hyphen_values = true, value_parser = positive, requires = "on")]
+    pub kz_u0: Option<f64>,
 }
 
 /// Where the shape came from.
@@ -52,10 +100,7 @@ struct Report<'a> {
 
 /// Prints the comparison; [`Outcome::Negative`] when `--max-error` is exceeded.
 pub fn run(a: ValidateArgs) -> Result<Outcome> {
-    let max_error = match &a.max_error {
-        Some(t) => Some(crate::error::check_nonneg("max-error", parse_number("--max-error", t)?)?),
-        None => None,
-    };
+    let max_error = a.max_error;
     let at_rest = match a.at_rest.as_str() {
         "sliding" => AtRest::Sliding,
         "relaxed" => AtRest::Relaxed,
@@ -66,8 +111,7 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
             })
         }
     };
-    let mu0 = a.mu0.as_deref().map(|m| parse_number("--mu0", m)).transpose()?;
-    let tolerance = crate::error::check_nonneg("tolerance", parse_number("--tolerance", &a.tolerance)?)?;
+    let (mu0, tolerance) = (a.mu0, a.tolerance);
     let format = match a.format.as_deref() {
         Some(f @ ("summary" | "json" | "csv")) => f.to_string(),
         Some(other) => {
@@ -80,13 +124,14 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
         None if io::stdout().is_terminal() => "summary".into(),
         None => "json".into(),
     };
+    let h = &a.history;
     if a.series {
-        if let Some(h) = &a.history {
+        if h.on {
             return run_history_series(&a, h, mu0, tolerance, &format);
         }
         return run_series(&a, at_rest, mu0, &format);
     }
-    if let Some(h) = &a.history {
+    if h.on {
         return run_history(&a, h, mu0, tolerance, &format, max_error);
     }
     if a.files.len() != 1 || a.target.is_some() || a.plot.is_some() {
@@ -165,7 +210,7 @@ struct SeriesReport<'a> {
 }
 
 fn run_series(a: &ValidateArgs, at_rest: AtRest, mu0: Option<f64>, format: &str) -> Result<Outcome> {
-    let target = a.target.as_deref().map(|t| parse_number("--target", t)).transpose()?;
+    let target = a.target;
     if let Some(path) = &a.plot {
         super::drawing_kind("--plot", path)?;
     }
@@ -221,16 +266,13 @@ fn history_of(
         Some(spec) => crate::cli::input::parse_shape(spec)?,
         None => Shape::flat(),
     };
-    let amp = parse_number(
-        "--amp",
-        h.amp.as_deref().ok_or_else(|| Error::Parse { context: "--history".into(), reason: "needs --amp".into() })?,
-    )?;
-    let vbar = match (&h.vbar, &h.vhat) {
-        (Some(v), None) => parse_number("--vbar", v)?,
-        (None, Some(v)) => super::vbar_of(parse_number("--vhat", v)?, amp)?,
+    let amp = h.amp.unwrap_or(0.0);
+    let vbar = match (h.vbar, h.vhat) {
+        (Some(v), None) => v,
+        (None, Some(v)) => super::vbar_of(v, amp)?,
         _ => return Err(Error::Parse { context: "--history".into(), reason: "needs one of --vbar and --vhat".into() }),
     };
-    let omega = h.omega.as_deref().map(|w| parse_number("--omega", w)).transpose()?;
+    let omega = h.omega;
     let (text, source) = read_input(Some(file.to_string()))?;
     let err = |reason: String| Error::Parse { context: source.clone(), reason };
     let mut rd = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
@@ -263,7 +305,7 @@ fn history_of(
         }
     }
     // Forces in the user's units: normal / (kz u0), tangential / (mu0 kz u0).
-    let unit = h.kz_u0.as_deref().map(|u| parse_number("--kz-u0", u)).transpose()?.unwrap_or(1.0);
+    let unit = h.kz_u0.unwrap_or(1.0);
     let mu0 = mu0.unwrap_or(1.0);
     for (name, x) in [("kz-u0", unit), ("mu0", mu0)] {
         if !(x.is_finite() && x > 0.0) {

@@ -266,7 +266,15 @@ impl Foundation {
     /// close singularities: one `near.0` (or the Jacobian's) above the top and
     /// one `near.1` below the bottom. Cuts at `top + d 2^k` and `bottom - d 2^k`
     /// keep every piece at least its own width away from both.
-    pub(super) fn band(&self, top: f64, bottom: f64, kind: Top, stick: bool, near: (f64, f64), scale: (f64, f64)) -> Sums {
+    pub(super) fn band(
+        &self,
+        top: f64,
+        bottom: f64,
+        kind: Top,
+        stick: bool,
+        near: (f64, f64),
+        scale: (f64, f64),
+    ) -> Sums {
         let mut total = Sums::default();
         // An empty band, or one whose half-width underflows to 0 (vbar = 5e-324
         // makes a band [0, 5e-324]): its share is below anything representable.

@@ -43,12 +43,12 @@
 mod foundation;
 mod normal;
 
-use foundation::{Foundation, Sums, Top};
-pub(crate) use normal::foundation_force;
-use normal::total_normal;
 use crate::ratio::Ratio;
 use crate::shape::DEFAULT_TOL;
 use crate::spring::{Spring, Velocity};
+use foundation::{Foundation, Sums, Top};
+pub(crate) use normal::foundation_force;
+use normal::total_normal;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// The regime of a band of springs.

@@ -25,8 +25,8 @@
 use crate::error::{Error, Result};
 mod transform;
 
-use transform::{mdr_transform_knots, normal_force, Pchip};
 use crate::ratio::Ratio;
+use transform::{mdr_transform_knots, normal_force, Pchip};
 
 /// The two orders of the tabulated quadrature per interval: the higher gives the
 /// value, their difference the error estimate.
