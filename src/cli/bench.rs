@@ -153,15 +153,92 @@ fn time_per_call(k: usize, sample_s: f64, mut f: impl FnMut() -> f64) -> f64 {
     best
 }
 
+/// What the runs of one case collect: the measured points and the failures.
+struct Collector<'a> {
+    case: &'a str,
+    reference: f64,
+    points: &'a mut Vec<Point>,
+    failures: &'a mut Vec<String>,
+}
+
+impl Collector<'_> {
+    /// Record one run's value and time; its error if it gave a finite value.
+    fn record(&mut self, method: &str, setting: String, value: crate::Result<f64>, time_s: f64) -> Option<f64> {
+        let name = self.case;
+        match value {
+            Ok(m) if m.is_finite() => {
+                let error = (m - self.reference).abs();
+                self.points.push(Point { case: name.into(), method: method.into(), setting, error, time_s });
+                Some(error)
+            }
+            Ok(m) => {
+                self.failures.push(format!("{name} {method} {setting}: non-finite result {m}"));
+                None
+            }
+            Err(e) => {
+                self.failures.push(format!("{name} {method} {setting}: {e}"));
+                None
+            }
+        }
+    }
+}
+
+/// Timing repetitions and the shortest time sampled per repetition.
+#[derive(Clone, Copy)]
+struct Timing {
+    k: usize,
+    sample: f64,
+}
+
+/// The exact solver at several tolerances (the flat punch has no tolerance to
+/// set): `(error, time)` of the last (most accurate) one.
+fn exact_runs(c: &mut Collector, shape: &Shape, vbar: f64, amp: f64, tm: Timing) -> Option<(f64, f64)> {
+    let tols: &[f64] =
+        if shape.is_flat() { &[crate::DEFAULT_TOL] } else { &[1e-4, 1e-6, 1e-8, 1e-11, crate::DEFAULT_TOL] };
+    let mut best = None;
+    for &tol in tols {
+        let opts = crate::Options::default().with_tol(tol);
+        let value = shape.evaluate_with(vbar, amp, &opts).map(|e| e.ratio.mu_ratio);
+        let t = time_per_call(tm.k, tm.sample, || {
+            shape.evaluate_with(vbar, amp, &opts).map_or(f64::NAN, |e| e.ratio.mu_ratio)
+        });
+        if let Some(err) = c.record("exact", format!("tol={tol:e}"), value, t) {
+            best = Some((err, t));
+        }
+    }
+    best
+}
+
+/// Time stepping at several resolutions: `(error, time)` of the most accurate run.
+fn stepping_runs(c: &mut Collector, shape: &Shape, vbar: f64, amp: f64, tm: Timing, quick: bool) -> Option<(f64, f64)> {
+    let steps: Vec<(usize, usize)> = match (shape.is_flat(), quick) {
+        (true, true) => vec![(100, 1), (1000, 1), (10_000, 1)],
+        (true, false) => vec![(100, 1), (1000, 1), (10_000, 1), (100_000, 1), (1_000_000, 1), (10_000_000, 1)],
+        (false, true) => vec![(50, 50), (100, 100), (200, 200)],
+        (false, false) => vec![(100, 100), (300, 300), (1000, 1000), (3000, 3000), (10_000, 10_000)],
+    };
+    let mut best: Option<(f64, f64)> = None;
+    for (m, n) in steps {
+        let st = Stepping { steps_per_period: m, springs: n };
+        let value = crate::stepper::evaluate(shape, vbar, amp, st).map(|e| e.ratio.mu_ratio);
+        let t = time_per_call(tm.k.min(3), tm.sample, || {
+            crate::stepper::evaluate(shape, vbar, amp, st).map_or(f64::NAN, |e| e.ratio.mu_ratio)
+        });
+        if let Some(err) = c.record("stepping", format!("M={m},N={n}"), value, t) {
+            if best.is_none_or(|(e, _)| err < e) {
+                best = Some((err, t));
+            }
+        }
+    }
+    best
+}
+
 /// Run the benchmark; `quick` finishes in seconds (for CI).
 pub fn run(quick: bool) -> Report {
-    let (k, sample) = if quick { (3, 2e-4) } else { (7, 5e-3) };
+    let tm = if quick { Timing { k: 3, sample: 2e-4 } } else { Timing { k: 7, sample: 5e-3 } };
     let specs =
         [("flat amp<=1", "flat", 0.5, 0.5), ("flat amp>1", "flat", 0.5, 1.5), ("parabolic", "parabolic", 0.3, 0.4)];
-    let mut cases = vec![];
-    let mut points = vec![];
-    let mut failures = vec![];
-    let mut ratios = vec![];
+    let (mut cases, mut points, mut failures, mut ratios) = (vec![], vec![], vec![], vec![]);
     for (name, shape_name, vbar, amp) in specs {
         let Some(reference) = reference(shape_name, vbar, amp) else {
             failures.push(format!("{name}: no reference value"));
@@ -169,74 +246,16 @@ pub fn run(quick: bool) -> Report {
         };
         let refv: f64 = reference.parse().unwrap_or(f64::NAN);
         cases.push(Case { name: name.into(), shape: shape_name.into(), vbar, amp, reference: reference.clone() });
-        let shape = match crate::cli::input::parse_shape(shape_name) {
+        let shape = match Shape::parse(shape_name) {
             Ok(s) => s,
             Err(e) => {
                 failures.push(format!("{name}: {e}"));
                 continue;
             }
         };
-        let mut record = |method: &str, setting: String, value: crate::cli::error::Result<f64>, time_s: f64| match value
-        {
-            Ok(m) if m.is_finite() => {
-                points.push(Point {
-                    case: name.into(),
-                    method: method.into(),
-                    setting,
-                    error: (m - refv).abs(),
-                    time_s,
-                });
-                Some((m - refv).abs())
-            }
-            Ok(m) => {
-                failures.push(format!("{name} {method} {setting}: non-finite result {m}"));
-                None
-            }
-            Err(e) => {
-                failures.push(format!("{name} {method} {setting}: {e}"));
-                None
-            }
-        };
-        // Exact solver at several tolerances (the flat punch has no tolerance to set).
-        let tols: &[f64] =
-            if shape == Shape::flat() { &[crate::DEFAULT_TOL] } else { &[1e-4, 1e-6, 1e-8, 1e-11, crate::DEFAULT_TOL] };
-        let mut exact_best = None;
-        for &tol in tols {
-            let value = shape
-                .evaluate_with(vbar, amp, &crate::Options::default().with_tol(tol))
-                .map(|e| e.ratio.mu_ratio)
-                .map_err(crate::cli::error::Error::from);
-            let t = time_per_call(k, sample, || {
-                shape
-                    .evaluate_with(vbar, amp, &crate::Options::default().with_tol(tol))
-                    .map_or(f64::NAN, |e| e.ratio.mu_ratio)
-            });
-            if let Some(err) = record("exact", format!("tol={tol:e}"), value, t) {
-                exact_best = Some((err, t));
-            }
-        }
-        // Time stepping at several resolutions.
-        let steps: Vec<(usize, usize)> = match (shape == Shape::flat(), quick) {
-            (true, true) => vec![(100, 1), (1000, 1), (10_000, 1)],
-            (true, false) => vec![(100, 1), (1000, 1), (10_000, 1), (100_000, 1), (1_000_000, 1), (10_000_000, 1)],
-            (false, true) => vec![(50, 50), (100, 100), (200, 200)],
-            (false, false) => vec![(100, 100), (300, 300), (1000, 1000), (3000, 3000), (10_000, 10_000)],
-        };
-        let mut stepping_best: Option<(f64, f64)> = None;
-        for (m, n) in steps {
-            let st = Stepping { steps_per_period: m, springs: n };
-            let value = crate::stepper::evaluate(&shape, vbar, amp, st)
-                .map(|e| e.ratio.mu_ratio)
-                .map_err(crate::cli::error::Error::from);
-            let t = time_per_call(k.min(3), sample, || {
-                crate::stepper::evaluate(&shape, vbar, amp, st).map_or(f64::NAN, |e| e.ratio.mu_ratio)
-            });
-            if let Some(err) = record("stepping", format!("M={m},N={n}"), value, t) {
-                if stepping_best.is_none_or(|(e, _)| err < e) {
-                    stepping_best = Some((err, t));
-                }
-            }
-        }
+        let mut c = Collector { case: name, reference: refv, points: &mut points, failures: &mut failures };
+        let exact_best = exact_runs(&mut c, &shape, vbar, amp, tm);
+        let stepping_best = stepping_runs(&mut c, &shape, vbar, amp, tm, quick);
         if let (Some((ee, et)), Some((se, st))) = (exact_best, stepping_best) {
             if ee <= se {
                 ratios.push(Ratio {

@@ -437,23 +437,41 @@ pub fn distinct(chart: &Chart, min_delta_e: f64) -> Result<(), String> {
     Ok(())
 }
 
+/// Where everything of a chart goes: the plot area and the legend.
+struct Layout {
+    left: f64,
+    top: f64,
+    /// Plot width and height.
+    pw: f64,
+    ph: f64,
+    /// Height of the whole drawing.
+    height: f64,
+    /// Room below the plot for tick labels and the x label.
+    axes_bottom: f64,
+    /// The legend below the plot (else to its right).
+    below: bool,
+}
+
+/// Legend line height and the width of a style sample.
+const KEY_LINE: f64 = FONT * 1.3;
+const KEY_SAMPLE: f64 = 14.0;
+
 impl Chart {
-    /// The chart as an SVG document.
-    pub fn svg(&self) -> String {
-        // The legend: headings, style samples, then the series' own entries.
+    /// The legend: headings, style samples, then the series' own entries.
+    fn legend(&self) -> Vec<Key> {
         let mut key = self.key.clone();
         key.extend(self.series.iter().filter(|s| s.legend).map(|s| Key::Entry(s.style, s.label.clone())));
-        let line = FONT * 1.3;
-        let sample = 14.0;
+        key
+    }
+
+    fn layout(&self, key: &[Key], yt: &[(f64, String)]) -> Layout {
         let key_w = key
             .iter()
             .map(|k| match k {
                 Key::Heading(t) => text_width(t, FONT),
-                Key::Entry(_, t) => sample + 3.0 + text_width(t, FONT),
+                Key::Entry(_, t) => KEY_SAMPLE + 3.0 + text_width(t, FONT),
             })
             .fold(0.0, f64::max);
-        let xt = axis_ticks(&self.x);
-        let yt = axis_ticks(&self.y);
         let ytw = yt.iter().map(|(_, l)| text_width(l, TICK_FONT)).fold(0.0, f64::max);
         let left = 3.0 + FONT + 6.0 + 1.1 * ytw + 3.0;
         let axes_bottom = 3.0 + TICK_FONT + 3.0 + FONT + 4.0;
@@ -461,12 +479,18 @@ impl Chart {
         // A narrow legend goes to the right of the plot, a wide one below it.
         let below = key_w > 0.3 * WIDTH;
         let right = if key.is_empty() || below { 8.0 } else { key_w + 14.0 };
-        let key_h = key.len() as f64 * line + 4.0;
+        let key_h = key.len() as f64 * KEY_LINE + 4.0;
         let bottom = if below { axes_bottom + key_h } else { axes_bottom };
         let height = if below { HEIGHT + key_h } else { HEIGHT.max(top + key_h + axes_bottom) };
-        let (pw, ph) = (WIDTH - left - right, height - top - bottom);
-        let px = |x: f64| left + pw * self.x.frac(x);
-        let py = |y: f64| top + ph * (1.0 - self.y.frac(y));
+        Layout { left, top, pw: WIDTH - left - right, ph: height - top - bottom, height, axes_bottom, below }
+    }
+
+    /// The chart as an SVG document.
+    pub fn svg(&self) -> String {
+        let key = self.legend();
+        let (xt, yt) = (axis_ticks(&self.x), axis_ticks(&self.y));
+        let l = self.layout(&key, &yt);
+        let (left, top, pw, ph, height) = (l.left, l.top, l.pw, l.ph, l.height);
         let mut o = String::new();
         let _ = write!(
             o,
@@ -478,43 +502,51 @@ impl Chart {
             o,
             r#"<clipPath id="plot"><rect x="{left:.2}" y="{top:.2}" width="{pw:.2}" height="{ph:.2}"/></clipPath>"#
         );
-        // Ticks and tick labels.
+        self.axes_svg(&mut o, &l, &xt, &yt);
+        self.series_svg(&mut o, &l);
+        let _ = write!(
+            o,
+            r#"<rect x="{left:.2}" y="{top:.2}" width="{pw:.2}" height="{ph:.2}" fill="none" stroke="black" stroke-width="0.6"/>"#
+        );
+        legend_svg(&mut o, &l, &key);
+        o += "</svg>\n";
+        o
+    }
+
+    fn px(&self, l: &Layout, x: f64) -> f64 {
+        l.left + l.pw * self.x.frac(x)
+    }
+
+    fn py(&self, l: &Layout, y: f64) -> f64 {
+        l.top + l.ph * (1.0 - self.y.frac(y))
+    }
+
+    /// Ticks, tick labels and axis labels.
+    fn axes_svg(&self, o: &mut String, l: &Layout, xt: &[(f64, String)], yt: &[(f64, String)]) {
+        let (left, top, pw, ph) = (l.left, l.top, l.pw, l.ph);
         let _ = write!(o, r#"<g stroke="black" stroke-width="0.5">"#);
-        for (v, _) in &xt {
-            let x = px(*v);
-            let _ = write!(o, r#"<path d="M{x:.2},{:.2} v2.5"/>"#, top + ph);
+        for (v, _) in xt {
+            let _ = write!(o, r#"<path d="M{:.2},{:.2} v2.5"/>"#, self.px(l, *v), top + ph);
         }
-        for (v, _) in &yt {
-            let y = py(*v);
-            let _ = write!(o, r#"<path d="M{left:.2},{y:.2} h-2.5"/>"#);
+        for (v, _) in yt {
+            let _ = write!(o, r#"<path d="M{left:.2},{:.2} h-2.5"/>"#, self.py(l, *v));
         }
-        o += "</g>";
+        *o += "</g>";
         let _ = write!(o, r#"<g font-size="{TICK_FONT}" fill="black">"#);
-        for (v, l) in &xt {
-            let _ = write!(
-                o,
-                r#"<text x="{:.2}" y="{:.2}" text-anchor="middle">{}</text>"#,
-                px(*v),
-                top + ph + 3.0 + TICK_FONT,
-                markup(l, TICK_FONT)
-            );
+        for (v, t) in xt {
+            let (x, y) = (self.px(l, *v), top + ph + 3.0 + TICK_FONT);
+            let _ = write!(o, r#"<text x="{x:.2}" y="{y:.2}" text-anchor="middle">{}</text>"#, markup(t, TICK_FONT));
         }
-        for (v, l) in &yt {
-            let _ = write!(
-                o,
-                r#"<text x="{:.2}" y="{:.2}" text-anchor="end">{}</text>"#,
-                left - 3.5,
-                py(*v) + TICK_FONT * 0.35,
-                markup(l, TICK_FONT)
-            );
+        for (v, t) in yt {
+            let (x, y) = (left - 3.5, self.py(l, *v) + TICK_FONT * 0.35);
+            let _ = write!(o, r#"<text x="{x:.2}" y="{y:.2}" text-anchor="end">{}</text>"#, markup(t, TICK_FONT));
         }
-        o += "</g>";
-        // Axis labels.
+        *o += "</g>";
         let _ = write!(
             o,
             r#"<text x="{:.2}" y="{:.2}" font-size="{FONT}" text-anchor="middle" class="x-label">{}</text>"#,
             left + pw / 2.0,
-            top + ph + axes_bottom - 4.0,
+            top + ph + l.axes_bottom - 4.0,
             markup(&self.x.label, FONT)
         );
         let (lx, ly) = (3.0 + FONT * 0.8, top + ph / 2.0);
@@ -523,19 +555,23 @@ impl Chart {
             r#"<text x="{lx:.2}" y="{ly:.2}" font-size="{FONT}" text-anchor="middle" transform="rotate(-90 {lx:.2} {ly:.2})" class="y-label">{}</text>"#,
             markup(&self.y.label, FONT)
         );
-        // Reference lines, series (clipped), frame.
+    }
+
+    /// Reference lines and series, clipped to the plot.
+    fn series_svg(&self, o: &mut String, l: &Layout) {
+        let (left, top, pw, ph) = (l.left, l.top, l.pw, l.ph);
         let _ = write!(o, r#"<g clip-path="url(#plot)">"#);
         for r in &self.rules {
             let d = if r.horizontal {
-                format!("M{left:.2},{:.2} h{pw:.2}", py(r.at))
+                format!("M{left:.2},{:.2} h{pw:.2}", self.py(l, r.at))
             } else {
-                format!("M{:.2},{top:.2} v{ph:.2}", px(r.at))
+                format!("M{:.2},{top:.2} v{ph:.2}", self.px(l, r.at))
             };
             let _ = write!(o, r##"<path d="{d}" stroke="#999999" stroke-width="0.5" fill="none"/>"##);
         }
         let inside = |x: f64, y: f64| {
             let ok = x.is_finite() && y.is_finite() && (!self.x.log || x > 0.0) && (!self.y.log || y > 0.0);
-            ok.then(|| (px(x), py(y)))
+            ok.then(|| (self.px(l, x), self.py(l, y)))
         };
         for s in &self.series {
             let _ = write!(o, r#"<g data-series="{}">"#, esc(&plain(&s.label)));
@@ -545,49 +581,42 @@ impl Chart {
             if let Some(m) = s.style.marker {
                 for &(x, y) in &s.points {
                     if let Some((x, y)) = inside(x, y) {
-                        marker(&mut o, m, x, y, s.style.color);
+                        marker(o, m, x, y, s.style.color);
                     }
                 }
             }
-            o += "</g>";
+            *o += "</g>";
         }
-        o += "</g>";
-        let _ = write!(
-            o,
-            r#"<rect x="{left:.2}" y="{top:.2}" width="{pw:.2}" height="{ph:.2}" fill="none" stroke="black" stroke-width="0.6"/>"#
-        );
-        // Legend.
-        if !key.is_empty() {
-            let (x0, y0) = if below { (left, top + ph + axes_bottom) } else { (left + pw + 8.0, top) };
-            let _ = write!(o, r#"<g font-size="{FONT}" class="legend">"#);
-            for (i, k) in key.iter().enumerate() {
-                let y = y0 + line * (i as f64 + 0.75);
-                match k {
-                    Key::Heading(t) => {
-                        let _ = write!(o, r#"<text x="{x0:.2}" y="{:.2}">{}</text>"#, y + FONT * 0.35, markup(t, FONT));
-                    }
-                    Key::Entry(st, t) => {
-                        if st.dash.is_some() {
-                            let _ = write!(o, r#"<path d="M{x0:.2},{y:.2} h{sample}" {}/>"#, stroke(st));
-                        }
-                        if let Some(m) = st.marker {
-                            marker(&mut o, m, x0 + sample / 2.0, y, st.color);
-                        }
-                        let _ = write!(
-                            o,
-                            r#"<text x="{:.2}" y="{:.2}">{}</text>"#,
-                            x0 + sample + 3.0,
-                            y + FONT * 0.35,
-                            markup(t, FONT)
-                        );
-                    }
-                }
-            }
-            o += "</g>";
-        }
-        o += "</svg>\n";
-        o
+        *o += "</g>";
     }
+}
+
+/// The legend, right of the plot or below it.
+fn legend_svg(o: &mut String, l: &Layout, key: &[Key]) {
+    if key.is_empty() {
+        return;
+    }
+    let (x0, y0) = if l.below { (l.left, l.top + l.ph + l.axes_bottom) } else { (l.left + l.pw + 8.0, l.top) };
+    let _ = write!(o, r#"<g font-size="{FONT}" class="legend">"#);
+    for (i, k) in key.iter().enumerate() {
+        let y = y0 + KEY_LINE * (i as f64 + 0.75);
+        match k {
+            Key::Heading(t) => {
+                let _ = write!(o, r#"<text x="{x0:.2}" y="{:.2}">{}</text>"#, y + FONT * 0.35, markup(t, FONT));
+            }
+            Key::Entry(st, t) => {
+                if st.dash.is_some() {
+                    let _ = write!(o, r#"<path d="M{x0:.2},{y:.2} h{KEY_SAMPLE}" {}/>"#, stroke(st));
+                }
+                if let Some(m) = st.marker {
+                    marker(o, m, x0 + KEY_SAMPLE / 2.0, y, st.color);
+                }
+                let (x, yt) = (x0 + KEY_SAMPLE + 3.0, y + FONT * 0.35);
+                let _ = write!(o, r#"<text x="{x:.2}" y="{yt:.2}">{}</text>"#, markup(t, FONT));
+            }
+        }
+    }
+    *o += "</g>";
 }
 
 /// The font PNGs are drawn with, built in.
