@@ -327,33 +327,25 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
         lo * (2.0 + (ratio_t - 2.0) * lo / (2.0 * alpha))
     };
     if vbar < TAIL_FORM_VBAR {
-        let f = |e: f64| 2.0 * (0.5 * e).sin() * (q + 0.5 * e).sin() - vbar * (x_max - e);
-        let df = |e: f64| (q + e).sin() + vbar;
+        let fdf = |e: f64| (2.0 * (0.5 * e).sin() * (q + 0.5 * e).sin() - vbar * (x_max - e), (q + e).sin() + vbar);
         let e_hi = (x_max - lo).max(0.0);
-        let r = root::newton(f, df, 0.0, e_hi, (x_max - guess).clamp(0.0, e_hi), rtol);
+        let r = root::newton(fdf, 0.0, e_hi, (x_max - guess).clamp(0.0, e_hi), rtol);
         let length = x_max - r.x;
         let deficit = (deficit_2pi(beta, w, length) / TAU).max(0.0);
         return StickSolution { length, tail: r.x, deficit, evaluations: r.evaluations };
     }
     let s_beta = s_fn(beta);
-    // f and f' at the same x share one sin_cos (the derivative is asked right after f).
-    let cached_cos = std::cell::Cell::new((f64::NAN, 0.0));
-    let f = |x: f64| {
+    // f and f' at the same x share one sin_cos.
+    let fdf = |x: f64| {
         let y = beta - x;
         if y.abs() < 2.0 {
-            cached_cos.set((x, y.cos()));
-            s_fn(y) - s_beta + w * x
+            (s_fn(y) - s_beta + w * x, y.cos() - vbar)
         } else {
             let (sn, cs) = y.sin_cos();
-            cached_cos.set((x, cs));
-            (y - sn) - s_beta + w * x
+            ((y - sn) - s_beta + w * x, cs - vbar)
         }
     };
-    let df = |x: f64| {
-        let (cx, cs) = cached_cos.get();
-        (if cx == x { cs } else { (beta - x).cos() }) - vbar
-    };
-    let r = root::newton(f, df, lo, x_max, guess, rtol);
+    let r = root::newton(fdf, lo, x_max, guess, rtol);
     // The deficit is a mean of a non-negative gap; rounding must not flip it.
     let deficit = (deficit_2pi(beta, w, r.x) / TAU).max(0.0);
     StickSolution { length: r.x, tail: x_max - r.x, deficit, evaluations: r.evaluations }

@@ -1,5 +1,7 @@
 //! Gauss-Jacobi rules by Golub-Welsch (eigenvalues of the Jacobi matrix, nalgebra),
-//! cached per thread.
+//! cached per thread: at most [`MAX_CACHED`] rules, the least recently used
+//! evicted (a batch of many power-law exponents would otherwise keep a rule per
+//! exponent and order for ever).
 //!
 //! The rule of order `m` integrates `int_{-1}^{1} (1 + x)^beta p(x) dx` exactly for
 //! polynomials `p` of degree `< 2m` (`beta = 0`: Gauss-Legendre). The Jacobi
@@ -46,13 +48,49 @@ pub(crate) fn gauss_jacobi(m: usize, beta: f64) -> Rule {
     Rule { nodes: pairs.iter().map(|p| p.0).collect(), weights: pairs.iter().map(|p| p.1).collect() }
 }
 
+/// Most rules one thread keeps: every order of a power law's three weights
+/// (Legendre, and two Jacobi exponents: 9 orders each) for a few dozen exponents.
+pub(crate) const MAX_CACHED: usize = 512;
+
+/// The rules of one thread, each with the tick of its last use.
+#[derive(Default)]
+struct Cache {
+    rules: HashMap<(usize, u64), (Rc<Rule>, u64)>,
+    tick: u64,
+}
+
 thread_local! {
-    static CACHE: RefCell<HashMap<(usize, u64), Rc<Rule>>> = RefCell::new(HashMap::new());
+    static CACHE: RefCell<Cache> = RefCell::new(Cache::default());
 }
 
 /// The cached rule of order `m` for weight `(1 + x)^beta`.
 pub(crate) fn rule(m: usize, beta: f64) -> Rc<Rule> {
-    CACHE.with(|c| c.borrow_mut().entry((m, beta.to_bits())).or_insert_with(|| Rc::new(gauss_jacobi(m, beta))).clone())
+    CACHE.with(|c| {
+        let mut c = c.borrow_mut();
+        c.tick += 1;
+        let tick = c.tick;
+        let key = (m, beta.to_bits());
+        if let Some(entry) = c.rules.get_mut(&key) {
+            entry.1 = tick;
+            return entry.0.clone();
+        }
+        if c.rules.len() >= MAX_CACHED {
+            // Evict the least recently used (a scan, on a miss only: the miss
+            // itself costs an eigenproblem).
+            if let Some(&old) = c.rules.iter().min_by_key(|(_, v)| v.1).map(|(k, _)| k) {
+                c.rules.remove(&old);
+            }
+        }
+        let r = Rc::new(gauss_jacobi(m, beta));
+        c.rules.insert(key, (r.clone(), tick));
+        r
+    })
+}
+
+/// Rules held by this thread's cache.
+#[cfg(test)]
+fn cached() -> usize {
+    CACHE.with(|c| c.borrow().rules.len())
 }
 
 #[cfg(test)]
@@ -67,6 +105,17 @@ mod tests {
             let exact = if p % 2 == 1 { 0.0 } else { 2.0 / (p as f64 + 1.0) };
             assert!((q - exact).abs() < 1e-14, "x^{p}: {q} vs {exact}");
         }
+    }
+
+    #[test]
+    fn the_cache_stays_bounded_and_keeps_what_is_used() {
+        let legendre = rule(8, 0.0);
+        for k in 0..(2 * MAX_CACHED) {
+            let _ = rule(2, -0.5 + k as f64 * 1e-6);
+            // The rule in use is touched on every round and never evicted.
+            assert!(Rc::ptr_eq(&rule(8, 0.0), &legendre));
+        }
+        assert!(cached() <= MAX_CACHED, "{}", cached());
     }
 
     #[test]

@@ -101,26 +101,38 @@ fn collapsed(lo: f64, flo: f64, hi: f64, fhi: f64) -> Option<f64> {
     }
 }
 
-/// Root of `f` (derivative `df`) in `[lo, hi]` by Newton's method from `guess`
-/// (`roots::find_root_newton_raphson`), which stops once a step is below
-/// `rtol * |x|` (the last step then squares the error). If Newton fails or leaves
-/// the bracket, [`bracketed`] takes over on `[lo, hi]`.
-pub(crate) fn newton(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, hi: f64, guess: f64, rtol: f64) -> Root {
+/// Root in `[lo, hi]` by Newton's method from `guess`
+/// (`roots::find_root_newton_raphson`), where `fdf(x) = (f(x), f'(x))` shares
+/// its work between the two (one `sin_cos`, say): the crate asks for `f` and
+/// `f'` separately at the same `x`, and the pair is cached here, out of the
+/// caller's sight. Newton stops once a step is below `rtol * |x|` (the last step
+/// then squares the error). If it fails or leaves the bracket, [`bracketed`]
+/// takes over on `[lo, hi]`.
+pub(crate) fn newton(fdf: impl Fn(f64) -> (f64, f64), lo: f64, hi: f64, guess: f64, rtol: f64) -> Root {
     if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
         // An empty bracket (both ends the same point to rounding): that point is the root.
         return Root { x: lo.min(hi), evaluations: 0 };
     }
     let count = Cell::new(0u32);
-    let g = |x: f64| {
+    let last = Cell::new((f64::NAN, 0.0, 0.0));
+    let eval = |x: f64| {
+        let (lx, fx, dfx) = last.get();
+        if lx == x {
+            return (fx, dfx);
+        }
         count.set(count.get() + 1);
-        f(x)
+        let (fx, dfx) = fdf(x);
+        last.set((x, fx, dfx));
+        (fx, dfx)
     };
+    let f = |x: f64| eval(x).0;
+    let df = |x: f64| eval(x).1;
     let mut tol = Tolerance { rtol, max_iter: 12 };
     let start = guess.clamp(lo, hi);
-    match roots::find_root_newton_raphson(start, &g, &df, &mut tol) {
+    match roots::find_root_newton_raphson(start, &f, &df, &mut tol) {
         Ok(x) if x >= lo && x <= hi => Root { x, evaluations: count.get() },
         _ => {
-            let mut r = bracketed(f, lo, hi, rtol);
+            let mut r = bracketed(|x| fdf(x).0, lo, hi, rtol);
             r.evaluations += count.get();
             r
         }
@@ -159,7 +171,7 @@ mod newton_tests {
 
     #[test]
     fn newton_converges_quadratically_from_a_close_guess() {
-        let r = newton(|x| x * x - 2.0, |x| 2.0 * x, 0.0, 2.0, 1.4, 1e-10);
+        let r = newton(|x| (x * x - 2.0, 2.0 * x), 0.0, 2.0, 1.4, 1e-10);
         assert!((r.x - std::f64::consts::SQRT_2).abs() < 4e-16);
         assert!(r.evaluations <= 5, "{}", r.evaluations);
     }
@@ -167,7 +179,7 @@ mod newton_tests {
     #[test]
     fn newton_leaving_the_bracket_falls_back_to_regula_falsi() {
         // From 0.1 the first Newton step of x^2 - 2 jumps to 10.05, outside [0, 2].
-        let r = newton(|x| x * x - 2.0, |x| 2.0 * x, 0.0, 2.0, 0.1, 1e-14);
+        let r = newton(|x| (x * x - 2.0, 2.0 * x), 0.0, 2.0, 0.1, 1e-14);
         assert!((r.x - std::f64::consts::SQRT_2).abs() < 1e-14);
     }
 }
@@ -178,7 +190,7 @@ mod empty_bracket_tests {
 
     #[test]
     fn an_inverted_or_empty_bracket_returns_without_panicking() {
-        let r = newton(|x| x, |_| 1.0, 2.2e-16, 0.0, 1.0, 1e-10);
+        let r = newton(|x| (x, 1.0), 2.2e-16, 0.0, 1.0, 1e-10);
         assert_eq!((r.x, r.evaluations), (0.0, 0));
         assert_eq!(bracketed(|x| x, 1.0, 1.0, 1e-10).x, 1.0);
     }
