@@ -70,11 +70,13 @@ pub type Result<T> = std::result::Result<T, Error>;
 
 impl Error {
     /// Shorthand for [`Error::InvalidParameter`].
+    #[must_use]
     pub fn param(name: &'static str, value: f64, reason: &str) -> Self {
         Error::InvalidParameter { name, value, reason: reason.into() }
     }
 
     /// True for an internal error (a bug to report, not bad input).
+    #[must_use]
     pub fn is_internal(&self) -> bool {
         matches!(self, Error::Internal { .. })
     }

@@ -11,6 +11,10 @@ pub const MAX_FILE_BYTES: u64 = 64 << 20;
 /// read (so `/dev/zero` or an endless pipe stops at the limit): an error of
 /// kind [`io::ErrorKind::FileTooLarge`] beyond it, [`io::ErrorKind::InvalidData`]
 /// for text that is not UTF-8. A UTF-8 byte-order mark is dropped.
+///
+/// # Errors
+/// The reader's errors; [`io::ErrorKind::FileTooLarge`] beyond `limit`;
+/// [`io::ErrorKind::InvalidData`] for text that is not UTF-8.
 pub fn read_text(reader: impl Read, limit: u64) -> io::Result<String> {
     let mut buf = Vec::new();
     let n = reader.take(limit.saturating_add(1)).read_to_end(&mut buf)?;
@@ -27,6 +31,9 @@ pub fn read_text(reader: impl Read, limit: u64) -> io::Result<String> {
 
 /// [`read_text`] of the file at `path`. A regular file larger than `limit` is
 /// refused before it is read.
+///
+/// # Errors
+/// As [`read_text`], and the errors of opening the file.
 pub fn read_capped(path: &str, limit: u64) -> io::Result<String> {
     let file = std::fs::File::open(path)?;
     if let Ok(m) = file.metadata() {

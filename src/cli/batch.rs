@@ -245,7 +245,7 @@ fn check_chunk<'a>(
 /// Check and evaluate every row of `text` (a JSON array); `source` names the input in errors.
 ///
 /// The rows' starts are found in one cheap serial pass ([`scan::row_starts`]);
-/// then, a chunk at a time, the rows are checked by [`check_chunk`], and the
+/// then, a chunk at a time, the rows are checked by `check_chunk`, and the
 /// first row at fault (the lowest index, as a serial reading would find) reported.
 pub fn run<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Result<Batch<'a>> {
     let parse_err = |reason: String| Error::Parse { context: source.into(), reason };

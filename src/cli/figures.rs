@@ -1,6 +1,6 @@
 //! `fricosc figures`: the seed's Figs. 3, 4, 5 (with its inset), 7 and 8, exact,
 //! with the seed's approximations on each (dashed), as JSON, CSV and SVG.
-//! Every exact point is the solver's value ([`crate::shape::evaluate`]).
+//! Every exact point is the solver's value ([`crate::Shape::evaluate`]).
 
 use crate::cli::error::{Error, Result};
 use crate::cli::plot::{self, Axis, Chart, Dash, Key, Rule, Series, Style};

@@ -58,6 +58,7 @@ pub(crate) fn spring_s(amp: f64) -> f64 {
 
 /// Mean normal force of the flat punch over a period, units `kz u0`: 1 without
 /// contact loss, `amp <B>(1/amp)` (eq. 20) with it.
+#[must_use]
 pub fn mean_normal(amp: f64) -> f64 {
     if amp <= 1.0 {
         1.0
@@ -92,6 +93,10 @@ fn ratio_of(sp: &Spring, amp: f64) -> Result<Ratio> {
 /// let r = fricosc::flat::ratio(0.5, 0.5).unwrap();
 /// assert!((r.mu_ratio - 0.8992738983331656556).abs() < 1e-15);
 /// ```
+///
+/// # Errors
+/// [`crate::Error::InvalidParameter`] for a negative or non-finite input;
+/// [`crate::Error::Internal`] for a bug.
 pub fn ratio(vbar: f64, amp: f64) -> Result<Ratio> {
     check_nonneg("vbar", vbar)?;
     check_nonneg("amp", amp)?;
@@ -99,6 +104,7 @@ pub fn ratio(vbar: f64, amp: f64) -> Result<Ratio> {
 }
 
 /// `mu_static/mu0` of a flat punch: the minimum normal force over the mean, `(1 - amp)_+`.
+#[must_use]
 pub fn mu_static_ratio(amp: f64) -> f64 {
     (1.0 - amp).max(0.0)
 }
@@ -107,6 +113,9 @@ pub fn mu_static_ratio(amp: f64) -> f64 {
 ///
 /// `mu_ratio` is the value of [`ratio`] (one value per input, whatever the
 /// command); the events come from a second solve at the event tolerance.
+///
+/// # Errors
+/// As [`ratio`].
 pub fn point(vbar: f64, amp: f64) -> Result<FlatPoint> {
     let ratio = ratio(vbar, amp)?;
     let sp = spring(vbar, amp, Precision::Events);

@@ -258,6 +258,10 @@ fn foundation_samples(
 /// [`history`]: the same columns as the exact history, so that a stepper's
 /// output can be checked against it (`validate --history`). The spring starts
 /// sliding (on its bound), as the peer does.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] for bad inputs or `amp = 0`, [`Error::TooLarge`]
+/// beyond [`MAX_SAMPLES`] rows.
 pub fn stepped_history(vbar: f64, amp: f64, periods: usize, steps_per_period: usize) -> Result<History> {
     check_nonneg("vbar", vbar)?;
     check_nonneg("amp", amp)?;

@@ -29,17 +29,29 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
 
     /// `mu_macro/mu0` with its error estimate; `vbar`, `amp` finite and `>= 0`,
     /// `tol` the relative quadrature tolerance.
+    ///
+    /// # Errors
+    /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
+    /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
     fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation>;
 
     /// Everything the solver reports about one point (checked inputs). By
     /// default the evaluation alone; the flat punch adds its events, power laws
     /// their bands.
+    ///
+    /// # Errors
+    /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
+    /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
     fn point(&self, vbar: f64, amp: f64, tol: f64) -> Result<Point> {
         Ok(Point::Other { vbar, amp, evaluation: self.evaluate(vbar, amp, tol)? })
     }
 
     /// `mu_static/mu0`, the limit `vbar -> 0+` (the minimum normal force over
     /// its mean, seed section 4). By default the solver at `vbar = 0`.
+    ///
+    /// # Errors
+    /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
+    /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
     fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
         Ok(self.evaluate(0.0, amp, tol)?.ratio.mu_ratio)
     }
@@ -52,6 +64,10 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
 
     /// `z_max` with `G(z_max) = 1 + amp`: no spring beyond it ever touches (an
     /// error if the contact cannot reach that far, e.g. a table too short).
+    ///
+    /// # Errors
+    /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
+    /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
     fn reach(&self, amp: f64) -> Result<f64>;
 
     /// Static normal force at indentation `depth u0`,
@@ -64,6 +80,10 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     /// `(1/pi) int_0^pi F(1 - amp cos tau) dtau` by Gauss-Legendre, on the part
     /// of the period in contact, graded at both ends (where `F` vanishes like a
     /// power of the depth); contacts with a closed form override it.
+    ///
+    /// # Errors
+    /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
+    /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
     fn mean_normal(&self, amp: f64) -> Result<f64> {
         crate::error::check_nonneg("amp", amp)?;
         let start = if amp > 1.0 { (1.0 / amp).acos() } else { 0.0 };

@@ -105,16 +105,19 @@ const REGISTRY: &[(&str, Parser)] = &[
 
 impl Shape {
     /// The flat cylindrical punch (one spring; seed section 2).
+    #[must_use]
     pub fn flat() -> Shape {
         Shape::from_contact(Arc::new(FlatPunch))
     }
 
     /// The paraboloid (Hertz; MDR profile `g ~ x^2`).
+    #[must_use]
     pub fn parabolic() -> Shape {
         Shape::from_contact(Arc::new(PowerLaw { n: 2.0 }))
     }
 
     /// The cone (MDR profile `g ~ |x|`).
+    #[must_use]
     pub fn cone() -> Shape {
         Shape::from_contact(Arc::new(PowerLaw { n: 1.0 }))
     }
@@ -179,16 +182,19 @@ impl Shape {
     }
 
     /// The canonical name, as it parses back (`parabolic`, `power:2.5`).
+    #[must_use]
     pub fn name(&self) -> &str {
         &self.name
     }
 
     /// The shape's contact.
+    #[must_use]
     pub fn contact(&self) -> &dyn Contact {
         self.contact.as_ref()
     }
 
     /// True for the flat punch (one spring represents the contact exactly).
+    #[must_use]
     pub fn is_flat(&self) -> bool {
         self.contact.single_spring()
     }
@@ -277,6 +283,7 @@ pub enum Point {
 
 impl Point {
     /// `mu_macro/mu0` and the reduction.
+    #[must_use]
     pub fn ratio(&self) -> Ratio {
         match self {
             Point::Flat(p) => p.ratio,

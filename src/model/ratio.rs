@@ -64,18 +64,30 @@ impl Ratio {
     }
 
     /// From the reduction (the friction lost, over the friction without oscillation).
+    ///
+    /// # Errors
+    /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
+    /// than rounding (or the given slack): a bug, never an answer.
     pub fn from_reduction(reduction: f64, context: &str) -> Result<Self> {
         Self::from_reduction_within(reduction, ROUNDING_SLACK, context)
     }
 
     /// As [`Ratio::from_reduction`] for a value with an error estimate `slack`
     /// that may put it outside `[0, 1]` (a finite non-negative number).
+    ///
+    /// # Errors
+    /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
+    /// than rounding (or the given slack): a bug, never an answer.
     pub fn from_reduction_within(reduction: f64, slack: f64, context: &str) -> Result<Self> {
         let reduction = unit_interval("reduction", reduction, slack, context)?;
         Ok(Ratio { mu_ratio: 1.0 - reduction, reduction })
     }
 
     /// From `mu_macro/mu0` itself (where it is the small one of the two).
+    ///
+    /// # Errors
+    /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
+    /// than rounding (or the given slack): a bug, never an answer.
     pub fn from_mu(mu_ratio: f64, context: &str) -> Result<Self> {
         let mu_ratio = unit_interval("mu_ratio", mu_ratio, ROUNDING_SLACK, context)?;
         Ok(Ratio { mu_ratio, reduction: 1.0 - mu_ratio })
@@ -84,11 +96,19 @@ impl Ratio {
     /// From the mean stick deficit and the mean normal force of the same contact:
     /// the reduction is their quotient. Both must be finite and `>= 0`; a contact
     /// without normal force (never touching) has no reduction.
+    ///
+    /// # Errors
+    /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
+    /// than rounding (or the given slack): a bug, never an answer.
     pub fn from_deficit(deficit: f64, mean_normal: f64, context: &str) -> Result<Self> {
         Self::from_deficit_within(deficit, mean_normal, ROUNDING_SLACK, context)
     }
 
     /// As [`Ratio::from_deficit`] with an error estimate `slack` of the quotient.
+    ///
+    /// # Errors
+    /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
+    /// than rounding (or the given slack): a bug, never an answer.
     pub fn from_deficit_within(deficit: f64, mean_normal: f64, slack: f64, context: &str) -> Result<Self> {
         if !(deficit.is_finite() && mean_normal.is_finite() && deficit >= 0.0 && mean_normal >= 0.0) {
             return Err(Error::Internal {

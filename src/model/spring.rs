@@ -20,7 +20,7 @@
 //! Writing `x = tau - tau_s` and `sin y = y - S(y)`, the gap between the bound and
 //! the stick line is
 //! `H(x) = B(tau_s + x) - B(tau_s) - vbar x = S(beta - x) - S(beta) + w x`,
-//! with `S(y) = y - sin y` ([`crate::special::x_minus_sin`]). The stick ends at the
+//! with `S(y) = y - sin y` (`special::x_minus_sin`). The stick ends at the
 //! root `L` of `H` on `(alpha + beta, x_max)`, where `H` decreases from its
 //! maximum; `x_max = 2 pi` for a tangent start and `pi + 2 beta` (the loss of
 //! contact) for a start at contact, where `H(x_max) = -2 pi vbar` resp.
@@ -32,7 +32,7 @@
 //! with `C(y) = y^2/2 - (1 - cos y)`, `C' = S`. Every term is of the order of
 //! the result (about `alpha^4` near `vbar = 1`), so `D` keeps full relative
 //! accuracy, and `dD/dL = H(L) = 0`: an error `e` in `L` changes `D` by `O(e^2)`,
-//! so the means need `L` only to about 1e-8 relative ([`ROOT_RTOL_MEANS`]).
+//! so the means need `L` only to about 1e-8 relative (`ROOT_RTOL_MEANS` (1e-6)).
 //!
 //! Mean tangential force `<F> = <B> - D`, and `mu_macro/mu0 = <F>/<B>`.
 
@@ -43,7 +43,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 /// How precisely a spring's stick phase is solved.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Precision {
-    /// Enough for the means to full accuracy ([`ROOT_RTOL_MEANS`]).
+    /// Enough for the means to full accuracy (`ROOT_RTOL_MEANS` (1e-6)).
     Means,
     /// Event times to full double precision ([`ROOT_RTOL_EVENTS`]).
     Events,
@@ -163,6 +163,7 @@ pub struct Spring {
 /// and `<B> = (s phi + sin phi)/pi = (sin phi - phi cos phi)/pi`, written as
 /// `(2 phi sin^2(phi/2) - S(phi))/pi` to keep full relative accuracy where it
 /// vanishes like `(1 + s)^(3/2)` at the edge of contact.
+#[must_use]
 pub fn mean_normal(s: f64) -> f64 {
     if s >= 1.0 {
         s
@@ -353,17 +354,19 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
 
 impl Spring {
     /// Steady state of a spring with `s = u0/du` at velocity `vbar`, computing
-    /// stick times to [`ROOT_RTOL_MEANS`] (enough for means to full accuracy).
+    /// stick times to `ROOT_RTOL_MEANS` (1e-6) (enough for means to full accuracy).
     ///
     /// `vbar = 0` is the limit `vbar -> 0+`: exactly at zero velocity the
     /// tangential force is not determined by the oscillation (it depends on the
     /// initial state), and the limit is the value every time stepper converges to.
     /// Inputs must be finite with `vbar >= 0` (checked by the public APIs above this).
+    #[must_use]
     pub fn new(s: f64, vbar: f64) -> Self {
         Self::solve(s, 1.0 - s, vbar, ROOT_RTOL_MEANS)
     }
 
     /// As [`Spring::new`], with event times to full double precision.
+    #[must_use]
     pub fn with_events(s: f64, vbar: f64) -> Self {
         Self::solve(s, 1.0 - s, vbar, ROOT_RTOL_EVENTS)
     }
@@ -435,6 +438,7 @@ impl Spring {
     /// of non-negative terms. A jumping spring that slips first adds the slip
     /// from contact to the stick, `d = delta - theta` long (the same form), and
     /// the stick's own `F(tau_s) L`; its final slip lasts `e - delta - theta`.
+    #[must_use]
     pub fn mean_tangential(&self) -> f64 {
         // Integral of B over the `y` before the loss of contact (or after the contact).
         let edge = |y: f64| {
@@ -455,6 +459,7 @@ impl Spring {
 
     /// Phase at which the stick ends, wrapped to `[0, 2 pi)`, from the tail
     /// (full relative accuracy near 0, absolute `ulp(2 pi)` near `2 pi`).
+    #[must_use]
     pub fn slip_phase(&self) -> Option<f64> {
         let st = self.stick?;
         let t = if self.regime == Regime::JumpingStickFirst {
@@ -474,6 +479,7 @@ impl Spring {
     /// Solve with [`Spring::with_events`] for event times to full precision.
     /// Forces are those of the stick line (equal to the bound at both ends):
     /// `F(tau_s)` and `F(tau_s) + vbar L`, sums of non-negative terms.
+    #[must_use]
     pub fn events(&self) -> Vec<Event> {
         let mut ev = Vec::with_capacity(4);
         if matches!(self.regime, Regime::NeverInContact) {

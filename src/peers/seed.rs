@@ -12,18 +12,21 @@ fn bracket(vbar: f64) -> f64 {
 
 /// Residual `cos tau2 - (sqrt(1 - v^2) + v (tau2 - arcsin v))` of eq. 8 as printed
 /// (its '+' sign has no root after `tau1 = arcsin v`).
+#[must_use]
 pub fn eq8_printed_residual(vbar: f64, tau2: f64) -> f64 {
     tau2.cos() - ((1.0 - vbar * vbar).sqrt() + vbar * (tau2 - vbar.asin()))
 }
 
 /// Residual `cos tau2 - (sqrt(1 - v^2) - v (tau2 - arcsin v))` of eq. 8 with the
 /// sign corrected: zero at the stick's end.
+#[must_use]
 pub fn eq8_corrected_residual(vbar: f64, tau2: f64) -> f64 {
     tau2.cos() - ((1.0 - vbar * vbar).sqrt() - vbar * (tau2 - vbar.asin()))
 }
 
 /// Eq. 11 (empirical fit, no contact loss): `1 - amp [3/4 (v-1)^2 + 1/4 (v-1)^4]`;
 /// 1 for `vbar >= 1` (the seed: no reduction beyond the critical velocity).
+#[must_use]
 pub fn eq11(vbar: f64, amp: f64) -> f64 {
     if vbar >= 1.0 {
         1.0
@@ -33,22 +36,26 @@ pub fn eq11(vbar: f64, amp: f64) -> f64 {
 }
 
 /// Eq. 12 (low-velocity asymptote): `1 + amp (-1 + pi v - 4/3 sqrt(pi) v^(3/2) + v^2/2)`.
+#[must_use]
 pub fn eq12(vbar: f64, amp: f64) -> f64 {
     1.0 + amp * (-1.0 + PI * vbar - 4.0 / 3.0 * PI.sqrt() * vbar.powf(1.5) + 0.5 * vbar * vbar)
 }
 
 /// Eq. 16: eq. 11 in `vhat = vbar amp` (eq. 15).
+#[must_use]
 pub fn eq16(vhat: f64, amp: f64) -> f64 {
     eq11(vhat / amp, amp)
 }
 
 /// Eq. 17 (rough approximation for jumping): eq. 11 at `amp = 1`.
+#[must_use]
 pub fn eq17(vbar: f64) -> f64 {
     eq11(vbar, 1.0)
 }
 
 /// Small-velocity slope `mu/(mu0 vbar)` for `amp > 1`, eq. 21 corrected:
 /// `(pi - th)^2 / (s (pi - th) + sin th)`, `s = 1/amp`, `th = arccos s`.
+#[must_use]
 pub fn eq21_slope(amp: f64) -> f64 {
     let s = 1.0 / amp;
     let th = s.acos();
@@ -57,6 +64,7 @@ pub fn eq21_slope(amp: f64) -> f64 {
 
 /// Eq. 21 as printed: `(1 - th/pi)^2 / (s (1 - th/pi + (1/pi)(amp) sqrt(1 - s^2)))`
 /// -- smaller than the exact slope by exactly `pi`.
+#[must_use]
 pub fn eq21_slope_printed(amp: f64) -> f64 {
     let s = 1.0 / amp;
     let th = s.acos();
@@ -69,6 +77,7 @@ pub const EQ22_PRINTED: f64 = PI / 4.0;
 pub const EQ22_CORRECTED: f64 = PI * PI / 4.0;
 
 /// Eq. 27 (universal form): `1 - (1 - mu_static)[3/4 (v-1)^2 + 1/4 (v-1)^4]`.
+#[must_use]
 pub fn eq27(vbar: f64, mu_static: f64) -> f64 {
     if vbar >= 1.0 {
         1.0
@@ -78,6 +87,7 @@ pub fn eq27(vbar: f64, mu_static: f64) -> f64 {
 }
 
 /// Eq. 28 (simpler form): `1 - (1 - mu_static)(1 - v)^2.4`.
+#[must_use]
 pub fn eq28(vbar: f64, mu_static: f64) -> f64 {
     if vbar >= 1.0 {
         1.0

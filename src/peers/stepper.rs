@@ -34,6 +34,7 @@ pub struct SteppedMeans {
 
 impl SteppedMeans {
     /// `mu_macro / mu0 = <F> / <B>` (1 when nothing touches).
+    #[must_use]
     pub fn mu_ratio(&self) -> f64 {
         if self.normal > 0.0 {
             self.tangential / self.normal
@@ -217,11 +218,14 @@ pub struct Stepping {
 pub const MAX_STEPPING: usize = 100_000_000;
 /// Largest `M * N` (spring updates per period) accepted: two periods of 10^11
 /// updates take about four minutes on two cores (0.6 ns per update measured);
-/// memory stays at a few MB whatever `M` and `N` ([`crate::stepper::run_with`]).
+/// memory stays at a few MB whatever `M` and `N` (`run_with`).
 pub const MAX_STEPPING_WORK: u128 = 100_000_000_000;
 
 impl Stepping {
     /// Check the resolution and the shape before any work (and any output).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a resolution out of its range.
     pub fn check(&self, shape: &Shape) -> Result<()> {
         for (name, v) in [("steps-per-period", self.steps_per_period), ("springs", self.springs)] {
             if v == 0 || v > MAX_STEPPING {

@@ -290,6 +290,7 @@ pub const MAX_MU0: f64 = 10.0;
 /// `- 21/(32768x^4) + 399/(262144x^5) + 869/(4194304x^6) + ...)`, whose
 /// truncation is below 4e-17 relative from `x = 85` on (checked with mpmath),
 /// so that exponents up to 1e6 stay finite and exact.
+#[must_use]
 pub fn kappa(n: f64) -> f64 {
     let x = 0.5 * n;
     if x < 85.0 {

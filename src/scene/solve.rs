@@ -263,6 +263,7 @@ fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
 }
 
 /// Number of rows of a scene (velocities times amplitudes, for progress reporting), if it parses.
+#[must_use]
 pub fn velocity_count(s: &Scene) -> usize {
     let v = match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
         (Some(v), _) => v.len(),
@@ -283,6 +284,10 @@ pub fn velocity_count(s: &Scene) -> usize {
 /// supplied by `read`: the core reads no files), calling `progress(k)` after
 /// each chunk of `k` velocities. Every amplitude and velocity is checked, and
 /// the size limits enforced, before any is computed.
+///
+/// # Errors
+/// [`Error::Parse`] naming the field for a value out of its range,
+/// [`Error::File`] when the reader fails, [`Error::TooLarge`] beyond the limits.
 pub fn solve_with(
     s: &Scene,
     source: &str,

@@ -66,6 +66,10 @@ pub struct HistoryValidation {
 /// the phase (`is_tau`), else `omega t`, else (without `omega`) the period and
 /// phase found from the normal force's maxima, where `tau = pi`
 /// (`N ~ 1 - amp cos tau`): the mean spacing of the first and last maxima.
+///
+/// # Errors
+/// [`Error::Parse`] when the time column is not increasing or the period cannot
+/// be found.
 pub fn phases(t: &[f64], is_tau: bool, omega: Option<f64>, normal: Option<&[f64]>) -> Result<Vec<f64>> {
     if is_tau {
         return Ok(t.to_vec());
@@ -114,7 +118,7 @@ fn drift(taus: &[f64], f: &[f64], from: f64, to: f64) -> Option<f64> {
 }
 
 /// Springs of the reference tangential force of a curved contact's history
-/// (the midpoint grid of [`crate::contact::grid`]; second order in the spacing).
+/// (the midpoint grid of the contact's grid; second order in the spacing).
 pub const HISTORY_REFERENCE_SPRINGS: usize = 20_000;
 
 /// Compare a force history (phases `taus`, nondecreasing; the tangential force
@@ -126,6 +130,10 @@ pub const HISTORY_REFERENCE_SPRINGS: usize = 20_000;
 /// [`HISTORY_REFERENCE_SPRINGS`] springs, and events are not compared (the
 /// total has none). `tolerance` decides "on the bound", "no contact" and
 /// "periodic" (relative to the peak normal force).
+///
+/// # Errors
+/// [`Error::Parse`] for columns of different lengths, too few samples or no whole
+/// period; the solver's errors for bad `(vbar, amp)`.
 pub fn compare_history(
     shape: &Shape,
     vbar: f64,

@@ -63,6 +63,7 @@ pub enum RowRegime {
 
 impl RowRegime {
     /// The regime of `(vbar, amp)` (both finite and `>= 0`).
+    #[must_use]
     pub fn of(vbar: f64, amp: f64) -> RowRegime {
         if vbar == 0.0 {
             return RowRegime::AtRest;
@@ -228,6 +229,10 @@ pub struct Validation {
 /// or `vhat` (eq. 15) if `vhat` (then `vbar = vhat / amp`); `friction` is
 /// `mu_ratio`, or `mu` if `mu` (then `mu_ratio = mu / mu0`, and `mu0` is
 /// required; refused otherwise, where the values are already ratios).
+///
+/// # Errors
+/// [`Error::Parse`] naming the row for a bad value, columns of different lengths,
+/// or `mu` without `mu0`.
 pub fn rows_from_columns(
     velocity: &[f64],
     amp: &[f64],
@@ -262,6 +267,9 @@ pub fn rows_from_columns(
 }
 
 /// The exact value of row `(vbar, amp)` under `at_rest`.
+///
+/// # Errors
+/// The solver's errors for a bad `(vbar, amp)`.
 pub fn exact_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest) -> Result<f64> {
     if vbar == 0.0 && at_rest == AtRest::Relaxed {
         return Ok(0.0);
@@ -272,6 +280,9 @@ pub fn exact_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest) -> Resul
 /// Compare `rows` of `(vbar, amp, mu_ratio)` with the exact solver for `shape`;
 /// `tolerance` (`>= 0`) is how far a value may be from a bound (0, 1) or from
 /// monotonicity before it is a finding.
+///
+/// # Errors
+/// [`Error::Parse`] naming the row for a bad value; the solver's errors.
 pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], at_rest: AtRest, tolerance: f64) -> Result<Validation> {
     crate::error::check_nonneg("tolerance", tolerance)?;
     if rows.is_empty() {

@@ -83,6 +83,7 @@ fn line_fit(points: &[(f64, f64)]) -> Option<(f64, f64)> {
 /// The observed order `p` and constant `C` of `|error| = C resolution^-p`: the
 /// least-squares line through `(ln resolution, ln |error|)` over the errors
 /// above rounding (none with fewer than two).
+#[must_use]
 pub fn observed_order(resolutions: &[f64], errors: &[f64]) -> (Option<f64>, Option<f64>) {
     let points: Vec<(f64, f64)> = resolutions
         .iter()
@@ -99,6 +100,10 @@ pub fn observed_order(resolutions: &[f64], errors: &[f64]) -> (Option<f64>, Opti
 /// error constant, Richardson value and (with `target`) the resolution needed;
 /// per regime the median order. Rows are matched by their `(vbar, amp)`; a row
 /// missing from one table is an error.
+///
+/// # Errors
+/// [`Error::Parse`] for fewer than two tables, bad resolutions or a row missing
+/// from a table; the solver's errors.
 pub fn convergence(
     shape: &Shape,
     resolutions: &[f64],

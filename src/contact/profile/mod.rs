@@ -8,7 +8,7 @@
 //! quadratics, cubic on each interval. For `profile:`, `g` is computed at the table's radii by the MDR
 //! transform `g(x) = x int_0^x f'(r)/sqrt(x^2 - r^2) dr = x int_0^(pi/2) f'(x sin t) dt`
 //! of the interpolated `f` (in closed form per interval, summed over the
-//! intervals hierarchically in `O(n log n)`: [`mdr_transform_knots`]), and
+//! intervals hierarchically in `O(n log n)`: `transform::mdr_transform_knots`), and
 //! interpolated again. The error interpolation adds is estimated by
 //! computing `mu` a second time on the table with every other point removed:
 //! PCHIP converges like `h^3`, so the difference overestimates the error of the
@@ -33,7 +33,7 @@ use transform::{mdr_transform_knots, normal_force, Pchip};
 const PASS_ORDERS: (usize, usize) = (16, 32);
 
 /// Most rows of a tabulated profile: the MDR transform is `O(n log n)`
-/// ([`mdr_transform_knots`]); 1,000,000 rows take about 30 s on two cores.
+/// (`transform::mdr_transform_knots`); 1,000,000 rows take about 30 s on two cores.
 pub const MAX_TABLE_ROWS: usize = 1_000_000;
 
 /// Parse the text of a two-column table (`r,f` or `x,g`): comma, semicolon or
@@ -130,8 +130,12 @@ pub struct Table {
 }
 
 impl Table {
-    /// Parse and transform a table's text ([`parse_table`]; `path` names it in
+    /// Parse and transform a table's text (`parse_table`; `path` names it in
     /// messages): `profile` (true: `f(r)`, MDR-transformed) or `g(x)`.
+    ///
+    /// # Errors
+    /// [`Error::Parse`] naming the line for malformed text, too few rows or values
+    /// out of order; [`Error::TooLarge`] beyond [`MAX_TABLE_ROWS`].
     pub fn parse(text: &str, path: &str, profile: bool) -> Result<Table> {
         let (x, v) = parse_table(text, path)?;
         Self::from_checked(x, v, profile, path)
@@ -149,6 +153,9 @@ impl Table {
     /// let t = Table::from_columns(r, f, true, "paraboloid").unwrap().at(1e-4).unwrap();
     /// assert!((t.contact_radius - 1e-2).abs() < 1e-12); // g = x^2/R: x_c = sqrt(R u0)
     /// ```
+    ///
+    /// # Errors
+    /// As [`Table::parse`], naming the row.
     pub fn from_columns(x: Vec<f64>, v: Vec<f64>, profile: bool, name: &str) -> Result<Table> {
         let (x, v) = check_columns(x, v, name, &|i| format!("row {i}"))?;
         Self::from_checked(x, v, profile, name)
@@ -208,11 +215,16 @@ impl Table {
     }
 
     /// The largest `g` of the (transformed) table, in its length unit.
+    #[must_use]
     pub fn max_g(&self) -> f64 {
         self.scale.1
     }
 
     /// The contact at mean indentation `u0` (the table's length unit).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for `u0` not finite and `> 0`; [`Error::Parse`]
+    /// when the table does not reach `u0` or does not resolve the contact.
     pub fn at(&self, u0: f64) -> Result<Tabulated> {
         if !(u0.is_finite() && u0 > 0.0) {
             return Err(Error::param("U0", u0, "the mean indentation must be finite and > 0"));
@@ -293,6 +305,7 @@ impl Tabulated {
     }
 
     /// The name outputs give the shape.
+    #[must_use]
     pub fn name(&self) -> &str {
         &self.name
     }
