@@ -80,3 +80,8 @@ pub(crate) use numerics::{quad, root, special};
 #[cfg(feature = "cli")]
 #[doc(hidden)]
 pub mod cli;
+
+/// README.md's Rust examples, run as doctests (`cargo test --doc`).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

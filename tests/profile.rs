@@ -1,6 +1,6 @@
 //! Tabulated shapes against the power laws they sample, bad tables, tables at
 //! the edges of f64. (The MDR transform itself is unit-tested beside it:
-//! `src/contact/profile_tests.rs`.)
+//! `src/contact/profile/tests.rs`.)
 mod common;
 
 use std::path::PathBuf;
