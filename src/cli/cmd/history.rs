@@ -1,6 +1,6 @@
 //! `fricosc history`: exact force histories (the seed's Fig. 2).
 
-use super::{emit_bytes, list, nonneg, List, MethodArg, VelocityPoint, DEFAULT_STEPPING};
+use super::{emit_bytes, list, number, List, MethodArg, VelocityPoint, DEFAULT_STEPPING};
 use crate::cli::error::{Error, Result};
 use crate::cli::export::{export_bytes, Format};
 use clap::Args;
@@ -13,7 +13,7 @@ pub struct HistoryArgs {
     #[command(flatten)]
     pub velocity: VelocityPoint,
     /// Amplitude du/u0.
-    #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
     pub amp: f64,
     /// Periods to sample.
     #[arg(long, default_value_t = 1)]

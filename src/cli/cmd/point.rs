@@ -1,6 +1,6 @@
 //! `fricosc point`: one point with its regime, events and bands (JSON).
 
-use super::{io_err, nonneg, Common, VelocityPoint};
+use super::{io_err, number, Common, VelocityPoint};
 use crate::cli::error::{Error, Result};
 use crate::shape::Shape;
 use clap::Args;
@@ -13,7 +13,7 @@ pub struct PointArgs {
     #[command(flatten)]
     pub velocity: VelocityPoint,
     /// Amplitude du/u0 (>= 0).
-    #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
     pub amp: f64,
 }
 

@@ -1,7 +1,7 @@
 //! `fricosc validate`: another code's table against the exact values, with
 //! errors by regime and amplitude and findings that point at bugs.
 
-use super::{io_err, nonneg, positive, read_input, Outcome};
+use super::{io_err, nonneg, number, positive, read_input, Outcome};
 use crate::cli::error::{Error, Result};
 use crate::cli::grid::parse_number;
 use crate::shape::Shape;
@@ -62,13 +62,13 @@ pub struct HistoryArgs {
     #[arg(long = "history", requires = "amp")]
     pub on: bool,
     /// With --history: the velocity vbar (eq. 3).
-    #[arg(long, allow_hyphen_values = true, value_parser = nonneg, requires = "on", conflicts_with = "vhat")]
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "on", conflicts_with = "vhat")]
     pub vbar: Option<f64>,
     /// With --history: the velocity vhat (eq. 15), instead of --vbar.
-    #[arg(long, allow_hyphen_values = true, value_parser = nonneg, requires = "on")]
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "on")]
     pub vhat: Option<f64>,
     /// With --history: the amplitude du/u0.
-    #[arg(long, allow_hyphen_values = true, value_parser = nonneg, requires = "on")]
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "on")]
     pub amp: Option<f64>,
     /// With --history and a time column t: the angular frequency (tau = omega t); without it
     /// the period and phase are found from the normal force's maxima (at tau = pi).
