@@ -12,7 +12,7 @@
 //! disk, a closed stderr) is dropped, and the exit code still tells.
 
 use clap::Parser;
-use fricosc::cli::cmd::{emit, Command, Outcome};
+use fricosc::cli::cmd::{emit, say, Command, Outcome};
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -26,12 +26,6 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
-}
-
-/// One line on stderr, or nothing if stderr cannot take it.
-fn say(line: &str) {
-    let mut e = std::io::stderr().lock();
-    let _ = writeln!(e, "{line}").and_then(|()| e.flush());
 }
 
 /// clap's own outcome: help and version on stdout (through the checked path),

@@ -101,9 +101,24 @@ struct Shapes {
     last: Option<(String, u32)>,
 }
 
+/// Most distinct shapes a streamed batch keeps parsed between chunks: beyond
+/// it the cache is emptied at the next chunk (a chunk's rows refer to shapes
+/// by index, so only between chunks), so that memory stays bounded whatever
+/// the number of distinct shape strings.
+pub const MAX_CACHED_SHAPES: usize = 4096;
+
 impl Shapes {
     fn new(stepping: Option<Stepping>) -> Shapes {
         Shapes { index: HashMap::new(), list: vec![], stepping, last: None }
+    }
+
+    /// A new chunk of a streamed batch begins: the rows of the last one are done.
+    fn new_chunk(&mut self) {
+        if self.list.len() > MAX_CACHED_SHAPES {
+            self.index.clear();
+            self.list.clear();
+            self.last = None;
+        }
     }
 
     /// The index of the shape `spec`, parsed (and checked for the method) the first time.
@@ -400,7 +415,14 @@ fn line_chunk(
             break;
         }
         *line += 1;
+        // A UTF-8 byte-order mark (spreadsheets write one) is not part of the first line.
+        if *line == 1 && buf[start..].starts_with(b"\xEF\xBB\xBF") {
+            buf.drain(start..start + 3);
+        }
         let mut end = buf.len();
+        if end == start {
+            continue;
+        }
         if buf[end - 1] == b'\n' {
             end -= 1;
             if end > start && buf[end - 1] == b'\r' {
@@ -445,11 +467,12 @@ fn stream_lines(
         reason: format!("line {}: {reason}", numbers[j]),
     };
     let werr = |e: io::Error| Error::write("stdout", e);
-    let mut total = 0u64;
+    let (mut total, mut again) = (0u64, 0u64);
     for pass in [1, 2] {
         let mut input = open()?;
         let mut line = 0u64;
         loop {
+            shapes.new_chunk();
             line_chunk(&mut *input, source, &mut line, &mut buf, &mut spans, &mut numbers)?;
             if spans.is_empty() {
                 break;
@@ -462,6 +485,10 @@ fn stream_lines(
                     return Err(too_many(source, total));
                 }
                 continue;
+            }
+            again += checked.len() as u64;
+            if again > total {
+                return Err(changed(source, total, again));
             }
             let jobs: Vec<Job> = checked.iter().map(|(_, j)| *j).collect();
             let results = shapes.evaluate_all(&jobs, source, &|i| format!("line {}", numbers[i]))?;
@@ -483,8 +510,19 @@ fn stream_lines(
             }
         }
     }
+    if again != total {
+        return Err(changed(source, total, again));
+    }
     out.flush().map_err(werr)?;
     Ok(total)
+}
+
+/// The input's second reading differs from the first (the file was changed).
+fn changed(source: &str, checked: u64, again: u64) -> Error {
+    Error::Parse {
+        context: source.into(),
+        reason: format!("the input changed while it was read: {checked} rows were checked, {again} came back"),
+    }
 }
 
 /// CSV: records read and checked one at a time, evaluated in parallel chunks.
@@ -503,13 +541,18 @@ fn stream_csv(
         if n > MAX_STREAM_ROWS {
             return Err(too_many(source, n));
         }
+        if n % CHUNK as u64 == 0 {
+            shapes.new_chunk();
+        }
     }
     // Pass 2: compute chunks in parallel, write them in order.
     let werr = |e: io::Error| Error::write("stdout", e);
     let mut rows = Csv::new(open()?, source)?;
     rows.header(out).map_err(werr)?;
     let (mut jobs, mut lines) = (Vec::with_capacity(CHUNK), Vec::with_capacity(CHUNK));
+    let mut again = 0u64;
     loop {
+        shapes.new_chunk();
         jobs.clear();
         lines.clear();
         while jobs.len() < CHUNK {
@@ -520,11 +563,27 @@ fn stream_csv(
         if jobs.is_empty() {
             break;
         }
+        again += jobs.len() as u64;
+        if again > n {
+            return Err(changed(source, n, again));
+        }
         let results = shapes.evaluate_all(&jobs, source, &|i| format!("line {}", lines[i]))?;
         rows.write_kept(out, &results).map_err(werr)?;
     }
+    if again != n {
+        return Err(changed(source, n, again));
+    }
     out.flush().map_err(werr)?;
     Ok(n)
+}
+
+/// A CSV writer's error as the I/O error it wraps, with its kind (a closed
+/// pipe stays a closed pipe, which ends the program quietly).
+pub fn io_of(e: csv::Error) -> io::Error {
+    match e.into_kind() {
+        csv::ErrorKind::Io(e) => e,
+        other => io::Error::other(format!("{other:?}")),
+    }
 }
 
 /// CSV rows.
@@ -571,7 +630,7 @@ impl Csv {
             h.push_field(b"reduction");
         }
         let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(&mut *out);
-        w.write_byte_record(&h)?;
+        w.write_byte_record(&h).map_err(io_of)?;
         w.flush()
     }
 
@@ -634,7 +693,7 @@ impl Csv {
                 rec.push_field(buf.format_finite(r.mu_ratio).as_bytes());
                 rec.push_field(buf.format_finite(r.reduction).as_bytes());
             }
-            w.write_byte_record(&rec)?;
+            w.write_byte_record(&rec).map_err(io_of)?;
         }
         w.flush()?;
         drop(w);

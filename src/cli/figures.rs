@@ -226,7 +226,7 @@ pub fn build() -> Result<Vec<Figure>> {
     // Figs. 7 and 8: paraboloid, with eq. 27.
     let mut c = vec![];
     for &a in &small {
-        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::DEFAULT_TOL);
+        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::DEFAULT_TOL)?;
         c.push(exact(&parabolic, a, &vb, false)?);
         if a > 0.0 {
             c.push(approx("eq. 27", Some(a), &vb, |v| seed::eq27(v, ms)));
@@ -235,7 +235,7 @@ pub fn build() -> Result<Vec<Figure>> {
     figs.push(figure("fig7", "Fig. 7: parabolic indenter, exact and eq. 27", XAxis::Vbar, [0.0, 1.2, 0.0, 1.05], c));
     let mut c = vec![];
     for &a in small.iter().chain(&jumping) {
-        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::DEFAULT_TOL);
+        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::DEFAULT_TOL)?;
         c.push(exact(&parabolic, a, &vh, true)?);
         if a > 0.0 {
             c.push(approx("eq. 27", Some(a), &vh, |x| seed::eq27(x / a, ms)));
@@ -275,6 +275,12 @@ pub fn user(shape: &Shape, amps: &[f64], xs: &[f64], vhat: bool) -> Result<Figur
     }
     for &x in xs {
         crate::error::check_nonneg(what, x)?;
+    }
+    // vbar = vhat / amp must be a number at every amplitude (the message names both).
+    if let (true, Some(&top)) = (vhat, xs.iter().max_by(|a, b| a.total_cmp(b))) {
+        for &a in amps.iter().filter(|&&a| a > 0.0) {
+            crate::vbar_from_vhat(top, a)?;
+        }
     }
     let mut xs = xs.to_vec();
     xs.sort_by(f64::total_cmp);
@@ -417,18 +423,16 @@ impl crate::cli::export::Report for Figure {
 }
 
 /// Write every figure as `name.json`, `name.csv`, `name.svg` and `name.png` into `dir`.
-pub fn write_all(dir: &std::path::Path) -> Result<Vec<String>> {
-    let werr = |e: std::io::Error| Error::write(&dir.display().to_string(), e);
-    std::fs::create_dir_all(dir).map_err(werr)?;
+pub fn write_all(out: &crate::cli::outdir::OutDir) -> Result<Vec<String>> {
     let mut names = vec![];
     for f in build()? {
         use crate::cli::export::{export, Format};
         for (ext, format) in [("json", Format::Json), ("csv", Format::Csv), ("svg", Format::Svg)] {
-            std::fs::write(dir.join(format!("{}.{ext}", f.name)), export(&f, format)?).map_err(werr)?;
+            out.write(&format!("{}.{ext}", f.name), export(&f, format)?.as_bytes())?;
         }
         let png =
             plot::png(&chart(&f).svg()).map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") })?;
-        std::fs::write(dir.join(format!("{}.png", f.name)), png).map_err(werr)?;
+        out.write(&format!("{}.png", f.name), &png)?;
         names.push(f.name);
     }
     Ok(names)

@@ -58,7 +58,7 @@ pub fn family_chart(results: &[(String, SceneResult)]) -> crate::cli::plot::Char
     let (mut vmin, mut vmax, mut mumax) = (f64::INFINITY, 0.0f64, 0.0f64);
     let mut positive_min = f64::INFINITY;
     for (_, r) in results {
-        for x in &r.rows {
+        for x in r.rows.iter() {
             vmin = vmin.min(x.velocity_m_per_s);
             vmax = vmax.max(x.velocity_m_per_s);
             if x.velocity_m_per_s > 0.0 {
@@ -151,7 +151,7 @@ impl crate::cli::export::Report for SceneResult {
                     n(x.mu_ratio),
                     n(x.mean_friction_force_n),
                     n(x.mean_normal_force_n),
-                    x.regime.to_string(),
+                    x.regime.name().to_string(),
                 ]
             })
             .collect()

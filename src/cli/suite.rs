@@ -217,17 +217,12 @@ should agree to its own discretisation error; `error_bound` is far below that. `
     )
 }
 
-/// Write the suite into `dir`.
-pub fn write(dir: &Path) -> Result<Vec<String>> {
+/// Write the suite into the folder `out`.
+pub fn write(out: &crate::cli::outdir::OutDir) -> Result<Vec<String>> {
     let files = files()?;
-    let werr = |p: &Path, e: std::io::Error| Error::write(&p.display().to_string(), e);
     let mut written = vec![];
     let mut put = |rel: &str, text: &str| -> Result<()> {
-        let p = dir.join(rel);
-        if let Some(parent) = p.parent() {
-            std::fs::create_dir_all(parent).map_err(|e| werr(parent, e))?;
-        }
-        std::fs::write(&p, text).map_err(|e| werr(&p, e))?;
+        out.write(rel, text.as_bytes())?;
         written.push(rel.to_string());
         Ok(())
     };
@@ -242,6 +237,15 @@ pub fn write(dir: &Path) -> Result<Vec<String>> {
 /// Compare the suite in `dir` with the one computed now: the files that differ
 /// or are missing (empty: the suite is current).
 pub fn check(dir: &Path) -> Result<Vec<String>> {
+    let name = dir.display().to_string();
+    if name.trim().is_empty() {
+        return Err(Error::Parse { context: "--check".into(), reason: "the suite's folder is empty".into() });
+    }
+    match std::fs::metadata(dir) {
+        Ok(m) if m.is_dir() => {}
+        Ok(_) => return Err(Error::Parse { context: "--check".into(), reason: format!("'{name}' is not a folder") }),
+        Err(e) => return Err(Error::read(&name, e)),
+    }
     let files = files()?;
     let mut expected: Vec<(String, String)> = files.iter().map(|f| (f.path.clone(), f.text.clone())).collect();
     expected.push(("manifest.json".into(), manifest(&files)?));
@@ -249,9 +253,16 @@ pub fn check(dir: &Path) -> Result<Vec<String>> {
     let mut bad = vec![];
     for (rel, text) in expected {
         let p = dir.join(&rel);
-        match std::fs::read_to_string(&p) {
-            Ok(found) if found == text => {}
-            Ok(_) => bad.push(format!("{rel} differs")),
+        // Only regular files are read (a link to /dev/zero or a FIFO is a
+        // difference, not a read), and no more of each than the expected size.
+        match std::fs::symlink_metadata(&p) {
+            Ok(m) if !m.is_file() => bad.push(format!("{rel} is not a regular file")),
+            Ok(m) if m.len() != text.len() as u64 => bad.push(format!("{rel} differs")),
+            Ok(_) => match crate::io::read_capped(&p.display().to_string(), text.len() as u64) {
+                Ok(found) if found == text => {}
+                Ok(_) => bad.push(format!("{rel} differs")),
+                Err(e) => return Err(Error::read(&p.display().to_string(), e)),
+            },
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => bad.push(format!("{rel} is missing")),
             Err(e) => return Err(Error::read(&p.display().to_string(), e)),
         }

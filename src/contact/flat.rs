@@ -150,3 +150,25 @@ pub fn point(vbar: f64, amp: f64) -> Result<FlatPoint> {
         root_evaluations: sp.root_evaluations,
     })
 }
+
+/// The normal and tangential force of the flat punch's spring `sp` (solved at
+/// `vbar`, `amp`) at phase `tau`, in units of `kz u0` and `mu0 kz u0`: the bound
+/// `(1 - amp cos tau)_+`, and in the stick the line from the stick's start force
+/// (`1 - amp sqrt(1 - vbar^2)` cancellation-free after a tangent start, 0 after
+/// a start at contact) at rate `amp vbar`. Written in these units, not as
+/// `amp` times the spring's own (units `kz du`), so that no `s = 1/amp`
+/// overflows at tiny amplitudes; `amp = 0` is sliding at the constant bound 1.
+pub(crate) fn forces_at(sp: &Spring, amp: f64, tau: f64) -> (f64, f64) {
+    let b = (1.0 - amp * tau.cos()).max(0.0);
+    if b == 0.0 || amp == 0.0 {
+        return (b, b);
+    }
+    if let Some(st) = sp.stick {
+        let x = (tau - st.start).rem_euclid(std::f64::consts::TAU);
+        if x < st.length {
+            let start = if sp.regime == Regime::JumpingStickFirst { 0.0 } else { one_minus_a_cos_asin(amp, sp.vbar) };
+            return (b, (start + amp * sp.vbar * x).min(b));
+        }
+    }
+    (b, b)
+}

@@ -164,8 +164,26 @@ fn check_history(shape: &Shape, vbar: f64, amp: f64, o: &HistoryOptions) -> Resu
     too_large("history chosen-spring values (rows x --spring-at positions)", values, MAX_SAMPLES as u128)?;
     let work = rows * if shape.is_flat() { 1 } else { o.springs as u128 };
     too_large("history spring evaluations (rows x springs)", work, MAX_SPRING_WORK)?;
+    if !shape.is_flat() && amp > 0.0 {
+        // The springs' s = (1 - G)/amp, and the largest force, must be numbers.
+        if amp < MIN_CURVED_AMP {
+            return Err(Error::param("amp", amp, "a curved shape's history needs amp >= 1e-300 (or amp = 0)"));
+        }
+        let c = shape.contact();
+        if !(c.static_force(1.0 + amp).is_finite() && c.reach(amp)?.is_finite()) {
+            return Err(Error::param(
+                "amp",
+                amp,
+                &format!("the normal force of {} at this amplitude overflows double precision", shape.name()),
+            ));
+        }
+    }
     Ok(rows)
 }
+
+/// Smallest nonzero amplitude of a curved shape's history: below it the
+/// springs' coordinate `s = (1 - G)/amp` overflows.
+pub const MIN_CURVED_AMP: f64 = 1e-300;
 
 /// The force history of `shape` at `(vbar, amp)`: `opts.periods` periods with
 /// `opts.samples` uniform samples, plus the flat punch's events.
@@ -186,6 +204,20 @@ pub fn history(shape: &Shape, vbar: f64, amp: f64, opts: &HistoryOptions) -> Res
         let units = "normal: E* x_c u0; tangential: mu0 E* x_c u0 (x_c: contact radius at u0)".to_string();
         (units, foundation_samples(shape.contact(), vbar, amp, opts, &taus)?)
     };
+    // Every force is a number: never NaN or inf as an answer.
+    let finite = |s: &Sample| {
+        s.tau.is_finite()
+            && s.normal.is_finite()
+            && s.tangential.is_finite()
+            && s.springs.iter().flatten().all(|x| x.is_finite())
+    };
+    if let Some(s) = out.iter().find(|s| !finite(s)) {
+        return Err(Error::param(
+            "amp",
+            amp,
+            &format!("the forces of {} overflow double precision at tau = {:?}", shape.name(), s.tau),
+        ));
+    }
     Ok(History { shape: shape.name().into(), vbar, amp, units, spring_positions: opts.spring_at.clone(), samples: out })
 }
 
@@ -198,14 +230,9 @@ fn flat_samples(vbar: f64, amp: f64, periods: usize, mut taus: Vec<(f64, Option<
         }
     }
     taus.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let scale = if amp > 0.0 { amp } else { 1.0 };
     taus.iter()
         .map(|&(tau, event)| {
-            let (normal, tangential) = if amp > 0.0 {
-                ((sp.s - tau.cos()).max(0.0) * scale, spring_force(&sp, tau) * scale)
-            } else {
-                (1.0, 1.0)
-            };
+            let (normal, tangential) = crate::flat::forces_at(&sp, amp, tau);
             Sample { tau, normal, tangential, event, springs: vec![] }
         })
         .collect()
@@ -281,17 +308,18 @@ pub fn stepped_history(vbar: f64, amp: f64, periods: usize, steps_per_period: us
     if amp == 0.0 {
         return Err(Error::param("amp", amp, "a stepped history needs an oscillation (amp > 0)"));
     }
-    let s = crate::flat::spring_s(amp);
+    // The seed's scheme in units of kz u0 (the bound (1 - amp cos tau)_+, the
+    // drive amp vbar h a step), so that no 1/amp overflows at tiny amplitudes.
     let h = TAU / steps_per_period as f64;
-    let mut f = (s - 1.0).max(0.0);
+    let mut f = (1.0 - amp).max(0.0);
     let mut samples = Vec::with_capacity(rows as usize);
     for k in 0..rows as usize {
         let tau = h * k as f64;
-        let b = (s - tau.cos()).max(0.0);
+        let b = (1.0 - amp * tau.cos()).max(0.0);
         if k > 0 {
-            f = crate::stepper::update(f, b, vbar * h);
+            f = crate::stepper::update(f, b, amp * vbar * h);
         }
-        samples.push(Sample { tau, normal: b * amp, tangential: f * amp, event: None, springs: vec![] });
+        samples.push(Sample { tau, normal: b, tangential: f, event: None, springs: vec![] });
     }
     Ok(History {
         shape: "flat".into(),

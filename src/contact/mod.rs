@@ -223,7 +223,7 @@ impl Contact for PowerLaw {
         Ok(Point::Power(mdr::point(self.n, vbar, amp, &crate::shape::Options::default().with_tol(tol))?))
     }
     fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
-        Ok(mdr::mu_static_ratio(self.n, amp, tol))
+        mdr::mu_static_ratio(self.n, amp, tol)
     }
     fn equivalent_profile(&self, z: f64) -> f64 {
         z.powf(self.n)

@@ -37,7 +37,7 @@
 //! Mean tangential force `<F> = <B> - D`, and `mu_macro/mu0 = <F>/<B>`.
 
 use crate::root;
-use crate::special::{half_sq_minus_versin as c_fn, x_minus_sin as s_fn};
+use crate::special::{half_sq_minus_versin as c_fn, nonneg, x_minus_sin as s_fn};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// How precisely a spring's stick phase is solved.
@@ -332,7 +332,7 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
         let e_hi = (x_max - lo).max(0.0);
         let r = root::newton(fdf, 0.0, e_hi, (x_max - guess).clamp(0.0, e_hi), rtol);
         let length = x_max - r.x;
-        let deficit = (deficit_2pi(beta, w, length) / TAU).max(0.0);
+        let deficit = nonneg(deficit_2pi(beta, w, length) / TAU);
         return StickSolution { length, tail: r.x, deficit, evaluations: r.evaluations };
     }
     let s_beta = s_fn(beta);
@@ -348,7 +348,7 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
     };
     let r = root::newton(fdf, lo, x_max, guess, rtol);
     // The deficit is a mean of a non-negative gap; rounding must not flip it.
-    let deficit = (deficit_2pi(beta, w, r.x) / TAU).max(0.0);
+    let deficit = nonneg(deficit_2pi(beta, w, r.x) / TAU);
     StickSolution { length: r.x, tail: x_max - r.x, deficit, evaluations: r.evaluations }
 }
 
@@ -448,8 +448,8 @@ impl Spring {
         match (self.regime, self.stick) {
             (Regime::JumpingStickFirst, Some(st)) => (0.5 * self.vbar * st.length * st.length + edge(st.tail)) / TAU,
             (Regime::JumpingSlipFirst, Some(st)) => {
-                let before = edge((st.start - self.theta).max(0.0));
-                let after = edge((st.tail - st.start - self.theta).max(0.0));
+                let before = edge(nonneg(st.start - self.theta));
+                let after = edge(nonneg(st.tail - st.start - self.theta));
                 let stick = st.length * (st.start_force + 0.5 * self.vbar * st.length);
                 (before + stick + after) / TAU
             }

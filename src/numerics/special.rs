@@ -79,6 +79,17 @@ pub(crate) fn asin_small(s: f64) -> f64 {
     }
 }
 
+/// `x`, with a negative value (rounding of a mean that is mathematically
+/// `>= 0`) put to 0: unlike `x.max(0.0)`, a NaN stays NaN, for the checks
+/// downstream ([`crate::ratio::Ratio`]) to refuse.
+pub(crate) fn nonneg(x: f64) -> f64 {
+    if x < 0.0 {
+        0.0
+    } else {
+        x
+    }
+}
+
 /// `S(x) = x - sin x` with full relative accuracy, odd in `x`, about `x^3/6` near 0.
 pub(crate) fn x_minus_sin(x: f64) -> f64 {
     if x.abs() < SERIES_LIMIT {

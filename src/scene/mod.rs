@@ -216,8 +216,8 @@ pub struct Sweep {
     pub log: bool,
 }
 
-/// One velocity's answer.
-#[derive(Debug, Clone)]
+/// One velocity's answer (made on demand from [`Rows`]).
+#[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Row {
     /// Sliding velocity (m/s).
@@ -235,7 +235,82 @@ pub struct Row {
     /// Mean normal force (N).
     pub mean_normal_force_n: f64,
     /// `sliding` at or above the critical velocity, else `stick_slip`.
-    pub regime: String,
+    pub regime: RowRegime,
+}
+
+/// What the contact does at one velocity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum RowRegime {
+    /// At or above the critical velocity: no spring sticks, `mu = mu0`.
+    Sliding,
+    /// Below it: the springs stick and slip.
+    StickSlip,
+}
+
+impl RowRegime {
+    /// The name outputs print.
+    pub fn name(self) -> &'static str {
+        match self {
+            RowRegime::Sliding => "sliding",
+            RowRegime::StickSlip => "stick_slip",
+        }
+    }
+}
+
+/// The rows of an answer, kept compact (16 bytes a row: the velocity and
+/// `mu/mu0`); every other column is derived when a [`Row`] is made, so that a
+/// scene of 10^6 rows holds 16 MB, and serialised as the list of rows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rows {
+    velocity: Vec<f64>,
+    mu_ratio: Vec<f64>,
+    /// The critical velocity (m/s), `du/u0`, `mu0`, and the mean normal force (N).
+    v_crit: f64,
+    amp: f64,
+    mu0: f64,
+    normal: f64,
+}
+
+impl Rows {
+    /// Row `i`.
+    pub fn get(&self, i: usize) -> Option<Row> {
+        let (v0, mu) = (*self.velocity.get(i)?, self.mu_ratio[i]);
+        let vbar = v0 / self.v_crit;
+        Some(Row {
+            velocity_m_per_s: v0,
+            vbar,
+            vhat: vbar * self.amp,
+            mu_macro: mu * self.mu0,
+            mu_ratio: mu,
+            mean_friction_force_n: mu * self.mu0 * self.normal,
+            mean_normal_force_n: self.normal,
+            regime: if vbar >= 1.0 { RowRegime::Sliding } else { RowRegime::StickSlip },
+        })
+    }
+
+    /// Every row, in the order of the velocities.
+    pub fn iter(&self) -> impl Iterator<Item = Row> + '_ {
+        (0..self.velocity.len()).filter_map(|i| self.get(i))
+    }
+
+    /// The number of rows.
+    pub fn len(&self) -> usize {
+        self.velocity.len()
+    }
+
+    /// True without rows.
+    pub fn is_empty(&self) -> bool {
+        self.velocity.is_empty()
+    }
+}
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for Rows {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.collect_seq(self.iter())
+    }
 }
 
 /// A scene's answer.
@@ -276,7 +351,7 @@ pub struct SceneResult {
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Vec::is_empty"))]
     pub warnings: Vec<String>,
     /// One row per velocity.
-    pub rows: Vec<Row>,
+    pub rows: Rows,
 }
 
 /// Largest accepted local coefficient of friction.

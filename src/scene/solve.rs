@@ -374,26 +374,19 @@ fn solve_amplitude(
             ),
         });
     }
-    let row = |v0: f64| -> Result<Row> {
-        let vbar = v0 / v_crit;
-        // At or above the critical velocity no spring is computed.
-        let mu = if vbar >= 1.0 { 1.0 } else { shape.evaluate(vbar, amp)?.ratio.mu_ratio };
-        Ok(Row {
-            velocity_m_per_s: v0,
-            vbar,
-            vhat: vbar * amp,
-            mu_macro: mu * c.mu0,
-            mu_ratio: mu,
-            mean_friction_force_n: mu * c.mu0 * fbar,
-            mean_normal_force_n: fbar,
-            regime: if vbar >= 1.0 { "sliding" } else { "stick_slip" }.into(),
-        })
-    };
-    let mut rows = Vec::with_capacity(c.velocities.len());
+    let mut mu_ratio = Vec::with_capacity(c.velocities.len());
     for chunk in c.velocities.chunks(1024) {
-        rows.extend(crate::numerics::par::map(chunk, |&v| row(v)).into_iter().collect::<Result<Vec<_>>>()?);
+        let mus = crate::numerics::par::map(chunk, |&v0| -> Result<f64> {
+            let vbar = v0 / v_crit;
+            // At or above the critical velocity no spring is computed.
+            Ok(if vbar >= 1.0 { 1.0 } else { shape.evaluate(vbar, amp)?.ratio.mu_ratio })
+        });
+        for m in mus {
+            mu_ratio.push(m?);
+        }
         progress(chunk.len() as u64);
     }
+    let rows = Rows { velocity: c.velocities.clone(), mu_ratio, v_crit, amp, mu0: c.mu0, normal: fbar };
     // Every number of the answer must be finite: an overflow names its field.
     let scalars = [
         ("e_star_pa", c.e_star),

@@ -117,6 +117,9 @@ fn drift(taus: &[f64], f: &[f64], from: f64, to: f64) -> Option<f64> {
     worst
 }
 
+/// Fewest samples the last period of a history must hold to be compared.
+pub const MIN_LAST_SAMPLES: usize = 4;
+
 /// Springs of the reference tangential force of a curved contact's history
 /// (the midpoint grid of the contact's grid; second order in the spacing).
 pub const HISTORY_REFERENCE_SPRINGS: usize = 20_000;
@@ -183,14 +186,14 @@ pub fn compare_history(
     };
     let exact_normal = |t: f64| {
         if flat {
-            (sp.s - t.cos()).max(0.0) * amp
+            crate::flat::forces_at(&sp, amp, t).0
         } else {
             shape.contact().static_force(1.0 - amp * t.cos())
         }
     };
     let exact_tangential = |t: f64| {
         if flat {
-            crate::history::spring_force(&sp, t) * amp
+            crate::flat::forces_at(&sp, amp, t).1
         } else {
             2.0 * amp * dz * springs.iter().map(|s| crate::history::spring_force(s, t)).sum::<f64>()
         }
@@ -198,13 +201,21 @@ pub fn compare_history(
     let end = taus[n - 1];
     let start = end - TAU;
     let last: Vec<usize> = (0..n).filter(|&i| taus[i] > start + 1e-12 * TAU).collect();
-    let (mut max_abs, mut sq) = (0.0f64, 0.0);
+    if last.len() < MIN_LAST_SAMPLES {
+        return Err(Error::Parse {
+            context: "history".into(),
+            reason: format!(
+                "{} samples in the last period (from tau = {start:?} to {end:?}): at least {MIN_LAST_SAMPLES} are needed",
+                last.len()
+            ),
+        });
+    }
+    let mut max_abs = 0.0f64;
     let mut sample_errors = Vec::with_capacity(last.len());
     let exact_last: Vec<f64> = crate::numerics::par::map(&last, |&i| exact_tangential(taus[i]));
     for (&i, &x) in last.iter().zip(&exact_last) {
         let e = tangential[i] - x;
         max_abs = max_abs.max(e.abs());
-        sq += e * e;
         sample_errors.push((taus[i], e));
     }
     let peak =
@@ -272,7 +283,7 @@ pub fn compare_history(
         periods,
         samples: last.len(),
         max_abs_error: max_abs,
-        rms_error: (sq / last.len().max(1) as f64).sqrt(),
+        rms_error: super::rms(sample_errors.iter().map(|s| s.1)),
         sample_errors,
         period_drift,
         previous_drift,

@@ -117,25 +117,35 @@ pub struct Summary {
     pub worst_row: usize,
 }
 
+/// Root mean square of `errors`, scaled by the largest (as `hypot` does), so
+/// that errors of 1e200 or 1e308 give their rms, not an overflow to `inf`.
+pub(crate) fn rms(errors: impl Iterator<Item = f64> + Clone) -> f64 {
+    let (mut n, mut top) = (0usize, 0.0f64);
+    for e in errors.clone() {
+        n += 1;
+        // A NaN stays visible (f64::max would drop it).
+        top = if e.is_nan() || top.is_nan() { f64::NAN } else { top.max(e.abs()) };
+    }
+    if n == 0 || top == 0.0 || !top.is_finite() {
+        return if n == 0 { 0.0 } else { top };
+    }
+    let sq: f64 = errors.map(|e| (e / top) * (e / top)).sum();
+    top * (sq / n as f64).sqrt()
+}
+
 impl Summary {
-    fn of<'a>(rows: impl Iterator<Item = &'a Row>) -> Option<Summary> {
-        let (mut n, mut sq, mut max_abs, mut max_rel, mut worst) = (0usize, 0.0, -1.0f64, 0.0f64, 0usize);
+    fn of<'a>(rows: impl Iterator<Item = &'a Row> + Clone) -> Option<Summary> {
+        let rms_error = rms(rows.clone().map(|r| r.error));
+        let (mut n, mut max_abs, mut max_rel, mut worst) = (0usize, -1.0f64, 0.0f64, 0usize);
         for r in rows {
             n += 1;
-            sq += r.error * r.error;
             if r.error.abs() > max_abs {
                 max_abs = r.error.abs();
                 worst = r.row;
             }
             max_rel = max_rel.max(r.relative_error.map_or(0.0, f64::abs));
         }
-        (n > 0).then(|| Summary {
-            n,
-            max_abs_error: max_abs,
-            rms_error: (sq / n as f64).sqrt(),
-            max_rel_error: max_rel,
-            worst_row: worst,
-        })
+        (n > 0).then(|| Summary { n, max_abs_error: max_abs, rms_error, max_rel_error: max_rel, worst_row: worst })
     }
 }
 

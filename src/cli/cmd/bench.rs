@@ -1,6 +1,6 @@
 //! `fricosc bench`: the work-precision benchmark.
 
-use super::{check_out_dir, emit};
+use super::emit;
 use crate::cli::error::{Error, Result};
 use crate::cli::export::{export_bytes, Format};
 use clap::Args;
@@ -18,16 +18,13 @@ pub struct BenchArgs {
 /// Run the benchmark and write its JSON, CSV, SVG and PNG into `--out`.
 pub fn run(a: BenchArgs) -> Result<()> {
     let (out, quick) = (a.out.as_str(), a.quick);
-    check_out_dir(out)?;
-    let dir = std::path::Path::new(out);
-    std::fs::create_dir_all(dir).map_err(|e| Error::write(out, e))?;
+    let dir = crate::cli::outdir::OutDir::open("--out", out)?;
     let mut report = crate::cli::bench::run(quick);
     if !quick {
-        report.instructions = instruction_counts(dir)?;
+        report.instructions = instruction_counts()?;
     }
     for (ext, format) in [("json", Format::Json), ("csv", Format::Csv), ("svg", Format::Svg), ("png", Format::Png)] {
-        std::fs::write(dir.join(format!("work-precision.{ext}")), export_bytes(&report, format)?)
-            .map_err(|e| Error::write(out, e))?;
+        dir.write(&format!("work-precision.{ext}"), &export_bytes(&report, format)?)?;
     }
     let mut o = String::new();
     for r in &report.ratios {
@@ -70,7 +67,16 @@ fn callgrind(args: &[&str]) -> Option<f64> {
 /// start-up is not counted), over the rows' difference. Rayon runs one thread
 /// (`RAYON_NUM_THREADS=1`): idle worker threads spin, and their instructions
 /// would count as work.
-fn instruction_counts(dir: &std::path::Path) -> Result<Vec<crate::cli::bench::InstructionCount>> {
+fn instruction_counts() -> Result<Vec<crate::cli::bench::InstructionCount>> {
+    // The workloads' input files go in a scratch folder of our own, removed after.
+    let scratch = std::env::temp_dir().join(format!("fricosc-bench-{}", std::process::id()));
+    std::fs::create_dir(&scratch).map_err(|e| Error::write(&scratch.display().to_string(), e))?;
+    let counts = instruction_counts_in(&scratch);
+    let _ = std::fs::remove_dir_all(&scratch);
+    counts
+}
+
+fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::cli::bench::InstructionCount>> {
     // A fixed pseudo-random row set: vbar in [0, 1.2], amp in [0, 3].
     let mut seed = 0x9E3779B97F4A7C15u64;
     let mut rand = || {

@@ -1,6 +1,6 @@
 //! `fricosc figures`: the seed's figures, exact, with its approximations.
 
-use super::{check_out_dir, emit};
+use super::emit;
 use crate::cli::error::Result;
 use clap::Args;
 
@@ -14,7 +14,7 @@ pub struct FiguresArgs {
 /// Write every figure into `--out`.
 pub fn run(a: FiguresArgs) -> Result<()> {
     let out = a.out.as_str();
-    check_out_dir(out)?;
-    let names = crate::cli::figures::write_all(std::path::Path::new(out))?;
+    let dir = crate::cli::outdir::OutDir::open("--out", out)?;
+    let names = crate::cli::figures::write_all(&dir)?;
     emit(&format!("wrote {} figures to {out}: {}\n", names.len(), names.join(", ")))
 }

@@ -55,6 +55,19 @@ pub fn run(a: HistoryArgs) -> Result<()> {
     let amp = a.amp;
     let vbar = a.velocity.vbar(amp)?;
     let format = Format::parse(&a.format, &[Format::Json, Format::Csv, Format::Svg, Format::Png])?;
+    // A drawing holds at most as many points as a plot (checked before any work).
+    let drawn = match stepping {
+        Some(m) => a.periods as u128 * m as u128 + 1,
+        None => a.samples as u128 + 1,
+    };
+    let limit = crate::cli::figures::MAX_POINTS as u128;
+    if matches!(format, Format::Svg | Format::Png) && drawn > limit {
+        return Err(Error::TooLarge {
+            what: "samples of a history drawn as SVG or PNG (use csv or json for more)".into(),
+            count: drawn,
+            limit,
+        });
+    }
     let h = match stepping {
         None => {
             let opts = crate::history::HistoryOptions::default()

@@ -242,6 +242,20 @@ pub fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
     Ok(crate::vbar_from_vhat(vhat, amp)?)
 }
 
+/// `text` with its control characters escaped (`\u{1b}` for an escape), so
+/// that the bytes of an input quoted in a message never reach a terminal raw.
+pub fn escape_controls(text: &str) -> String {
+    text.chars().map(|c| if c.is_control() { c.escape_default().to_string() } else { c.to_string() }).collect()
+}
+
+/// One line on stderr (control characters escaped), or nothing if stderr
+/// cannot take it (a full disk, a closed stderr): a message never panics and
+/// never costs the answer.
+pub fn say(line: &str) {
+    let mut e = io::stderr().lock();
+    let _ = writeln!(e, "{}", escape_controls(line)).and_then(|()| e.flush());
+}
+
 pub fn io_err(e: io::Error) -> Error {
     Error::write("stdout", e)
 }
@@ -280,7 +294,7 @@ pub fn drawing_kind(option: &str, path: &str) -> Result<bool> {
 pub fn write_drawing(option: &str, path: &str, svg: &str) -> Result<()> {
     if drawing_kind(option, path)? {
         let png = png_of(svg)?;
-        std::fs::write(path, png).map_err(|e| Error::write(path, e))
+        crate::cli::outdir::write_atomic(std::path::Path::new(path), &png)
     } else {
         write_file(option, path, svg)
     }
@@ -290,17 +304,6 @@ pub fn read_input(file: Option<String>) -> Result<(String, String)> {
     let path = file.unwrap_or_else(|| "-".into());
     let text = crate::cli::input::read_capped(&path, crate::cli::input::MAX_TABLE_BYTES)?;
     Ok((text, if path == "-" { "stdin".into() } else { path }))
-}
-
-/// An output directory must be named: `--out ""` would write into the current one.
-pub fn check_out_dir(out: &str) -> Result<()> {
-    if out.trim().is_empty() {
-        return Err(Error::Parse { context: "--out".into(), reason: "the output directory is empty".into() });
-    }
-    if std::path::Path::new(out).exists() && !std::path::Path::new(out).is_dir() {
-        return Err(Error::Parse { context: "--out".into(), reason: format!("'{out}' exists and is not a directory") });
-    }
-    Ok(())
 }
 
 /// JSON text of a result; our own types always serialise, so a failure is internal.
@@ -314,5 +317,5 @@ pub fn write_file(option: &str, path: &str, text: &str) -> Result<()> {
     if path.trim().is_empty() {
         return Err(Error::Parse { context: option.into(), reason: "the file name is empty".into() });
     }
-    std::fs::write(path, text).map_err(|e| Error::write(path, e))
+    crate::cli::outdir::write_atomic(std::path::Path::new(path), text.as_bytes())
 }

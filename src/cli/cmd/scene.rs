@@ -4,7 +4,7 @@ use super::emit;
 use crate::cli::error::{Error, Result};
 use crate::cli::output::Format;
 use rayon::prelude::*;
-use std::io::{IsTerminal, Write};
+use std::io::{self, IsTerminal, Write};
 
 #[derive(clap::Args)]
 pub struct SceneArgs {
@@ -62,7 +62,7 @@ pub fn run(a: SceneArgs) -> Result<()> {
     }
     for (f, r) in &labelled {
         for w in &r.warnings {
-            eprintln!("warning: {f}: {w}");
+            super::say(&format!("warning: {f}: {w}"));
         }
     }
     if let Some(path) = &plot {
@@ -72,22 +72,27 @@ pub fn run(a: SceneArgs) -> Result<()> {
     let results: Vec<&crate::scene::SceneResult> = labelled.iter().map(|(_, r)| r).collect();
     // One shape of output whatever the number of files: a JSON list, and CSV in
     // long form (one header; each row with its scene and the scene's results).
-    let text = match format {
-        Format::Csv => scenes_csv(&labelled)?,
-        Format::Json => serde_json::to_string_pretty(&results)
-            .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?,
-    };
-    emit(&format!("{}\n", text.trim_end()))
+    // Everything is computed; now it is written as it is formatted (a row's
+    // text is never held whole).
+    let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
+    match format {
+        Format::Csv => scenes_csv(&mut out, &labelled).map_err(super::io_err)?,
+        Format::Json => {
+            serde_json::to_writer_pretty(&mut out, &results).map_err(|e| super::io_err(e.into()))?;
+            out.write_all(b"\n").map_err(super::io_err)?;
+        }
+    }
+    out.flush().map_err(super::io_err)
 }
 
 /// Every scene's rows in one CSV table: the scene (its name, or its file), the
 /// scene-level results repeated on each row (one amplitude of a family each),
 /// then the row's own columns.
-fn scenes_csv(results: &[(String, crate::scene::SceneResult)]) -> Result<String> {
+fn scenes_csv(out: &mut dyn Write, results: &[(String, crate::scene::SceneResult)]) -> io::Result<()> {
     use crate::cli::export::Report;
     let n = crate::cli::output::num;
-    let fail = |e: csv::Error| Error::Internal { what: format!("writing CSV: {e}") };
-    let mut w = csv::Writer::from_writer(vec![]);
+    let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(out);
+    let fail = crate::cli::batch::io_of;
     let scene_cols = ["scene", "u0_m", "du_m", "amp", "contact_radius_m", "critical_velocity_m_per_s", "mu_static"];
     let mut header: Vec<String> = scene_cols.map(String::from).to_vec();
     if let Some((_, r)) = results.first() {
@@ -104,12 +109,21 @@ fn scenes_csv(results: &[(String, crate::scene::SceneResult)]) -> Result<String>
             n(r.critical_velocity_m_per_s),
             n(r.mu_static),
         ];
-        for row in r.rows() {
-            w.write_record(scene.iter().cloned().chain(row)).map_err(fail)?;
+        for x in r.rows.iter() {
+            let row = [
+                n(x.velocity_m_per_s),
+                n(x.vbar),
+                n(x.vhat),
+                n(x.mu_macro),
+                n(x.mu_ratio),
+                n(x.mean_friction_force_n),
+                n(x.mean_normal_force_n),
+                x.regime.name().to_string(),
+            ];
+            w.write_record(scene.iter().chain(&row)).map_err(fail)?;
         }
     }
-    let bytes = w.into_inner().map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })?;
-    String::from_utf8(bytes).map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })
+    w.flush()
 }
 
 /// A percentage on a terminal's stderr, rewritten in place (whole percents

@@ -1,6 +1,6 @@
 //! `fricosc suite`: write the reference suite, or check a copy of it.
 
-use super::{check_out_dir, emit, Outcome};
+use super::{emit, Outcome};
 use crate::cli::error::Result;
 use clap::Args;
 
@@ -19,8 +19,8 @@ pub struct SuiteArgs {
 pub fn run(a: SuiteArgs) -> Result<Outcome> {
     match (a.out, a.check) {
         (Some(dir), None) => {
-            check_out_dir(&dir)?;
-            let files = crate::cli::suite::write(std::path::Path::new(&dir))?;
+            let out = crate::cli::outdir::OutDir::open("--out", &dir)?;
+            let files = crate::cli::suite::write(&out)?;
             emit(&format!(
                 "wrote the reference suite (version {}) to {dir}: {} files\n",
                 crate::cli::suite::SUITE_VERSION,

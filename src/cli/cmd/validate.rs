@@ -194,12 +194,22 @@ fn file_and_resolution(arg: &str) -> Result<(String, f64)> {
         reason: "a series file needs its resolution: run@1000.csv or run.csv@1000".into(),
     };
     let (head, tail) = arg.rsplit_once('@').ok_or_else(bad)?;
+    let checked = |n: f64| {
+        if n.is_finite() && n > 0.0 {
+            Ok(n)
+        } else {
+            Err(Error::Parse {
+                context: arg.into(),
+                reason: format!("the resolution {n:?} must be a finite number > 0"),
+            })
+        }
+    };
     if let Ok(n) = tail.trim().parse::<f64>() {
-        return Ok((head.to_string(), n));
+        return Ok((head.to_string(), checked(n)?));
     }
     let digits: String = tail.chars().take_while(|c| c.is_ascii_digit() || *c == '.' || *c == 'e').collect();
     let n = digits.trim_end_matches('.').parse::<f64>().map_err(|_| bad())?;
-    Ok((arg.to_string(), n))
+    Ok((arg.to_string(), checked(n)?))
 }
 
 #[derive(serde::Serialize)]

@@ -263,7 +263,7 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     // 1 - reduction, which is only absolutely accurate (4e-16 at amp >= 1);
     // the reduction, above 0.5 there, is then 1 - mu to rounding.
     let ratio = if vbar == 0.0 && ratio.mu_ratio < 0.5 {
-        let mu = mu_static_ratio(n, amp, tol);
+        let mu = mu_static_ratio(n, amp, tol)?;
         Ratio { mu_ratio: mu, reduction: 1.0 - mu }
     } else {
         ratio
@@ -313,16 +313,21 @@ pub(crate) fn mean_normal_force(n: f64, amp: f64, tol: f64) -> crate::Result<Opt
 /// loses `D(0) = 1`, so what remains is the minimum normal force over its mean,
 /// `int_0^{z1} (1 - amp - z^n) dz / N = (n/(n+1)) (1 - amp)_+^(1 + 1/n) / N`
 /// (the seed's section 4). `tests/mdr.rs` checks it against `power_law` at `vbar = 0`.
-pub(crate) fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> f64 {
+///
+/// A failed or non-finite mean normal force is an error, never a value.
+pub(crate) fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> crate::Result<f64> {
     if amp == 0.0 {
-        return 1.0;
+        return Ok(1.0);
     }
     if amp >= 1.0 {
-        return 0.0;
+        return Ok(0.0);
     }
     // Both sides of the foundation: the minimum force is twice one side's.
-    let nn = mean_normal_force(n, amp, tol).ok().flatten().unwrap_or(f64::NAN);
-    (2.0 * foundation_force(n, 1.0 - amp) / nn).min(1.0)
+    let nn = mean_normal_force(n, amp, tol)?.ok_or_else(|| crate::Error::Internal {
+        what: format!("mean normal force of power:{n} at amp {amp} overflows"),
+    })?;
+    let mu = 2.0 * foundation_force(n, 1.0 - amp) / nn;
+    Ok(Ratio::from_mu(mu, "static friction of a power-law contact")?.mu_ratio)
 }
 
 /// [`power_law`] with the bands and the static limit.
@@ -346,7 +351,7 @@ pub fn point(n: f64, vbar: f64, amp: f64, opts: &crate::Options) -> crate::Resul
     let mut result = solve(n, vbar, amp, tol, Report::Bands)?;
     result.ratio = plain.ratio;
     result.error_estimate = plain.error_estimate;
-    let mu_static_ratio = mu_static_ratio(n, amp, tol);
+    let mu_static_ratio = mu_static_ratio(n, amp, tol)?;
     Ok(MdrPoint { vbar, amp, result, mu_static_ratio })
 }
 
