@@ -541,7 +541,7 @@ fn stream_csv(
         if n > MAX_STREAM_ROWS {
             return Err(too_many(source, n));
         }
-        if n % CHUNK as u64 == 0 {
+        if n.is_multiple_of(CHUNK as u64) {
             shapes.new_chunk();
         }
     }

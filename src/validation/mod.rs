@@ -145,7 +145,7 @@ impl Summary {
             }
             max_rel = max_rel.max(r.relative_error.map_or(0.0, f64::abs));
         }
-        (n > 0).then(|| Summary { n, max_abs_error: max_abs, rms_error, max_rel_error: max_rel, worst_row: worst })
+        (n > 0).then_some(Summary { n, max_abs_error: max_abs, rms_error, max_rel_error: max_rel, worst_row: worst })
     }
 }
 
