@@ -85,7 +85,7 @@ fn negative_zero_empty_out_and_history_springs() {
     for args in [["bench", "--out", ""], ["figures", "--out", ""]] {
         let out = bin().args(args).output().unwrap();
         assert_eq!(out.status.code(), Some(2));
-        assert!(String::from_utf8_lossy(&out.stderr).contains("output directory is empty"));
+        assert!(String::from_utf8_lossy(&out.stderr).contains("output folder is empty"));
     }
     let out = bin()
         .args(["history", "--shape", "parabolic", "--vbar", "0.3", "--amp", "0.5", "--springs", "2000000"])
@@ -331,7 +331,7 @@ fn nothing_on_stdout_when_the_exit_code_is_2() {
     let file = dir.join("afile");
     std::fs::write(&file, "x").unwrap();
     let out = bin().args(["figures", "--out", file.to_str().unwrap()]).output().unwrap();
-    assert!(String::from_utf8_lossy(&out.stderr).contains("exists and is not a directory"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("exists and is not a folder"));
 }
 
 /// A profile one row past the documented limit is refused as it is read, before
