@@ -21,7 +21,9 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 /// Run `cmd` with `stdin` bytes; its output and peak resident memory (KiB), by
-/// `wait4`'s resource usage of the child itself.
+/// `wait4`'s resource usage of the child itself (std's `wait` gives no usage,
+/// so the child is reaped here).
+#[allow(clippy::zombie_processes)]
 fn run_measured(cmd: &mut Command, stdin: &[u8]) -> (Output, i64) {
     let mut child = cmd.stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
     let mut input = child.stdin.take().unwrap();
