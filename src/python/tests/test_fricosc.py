@@ -188,11 +188,76 @@ def test_shape_classes_equal_their_strings(tmp_path: pathlib.Path) -> None:
         (lambda: fricosc.history("flat", 0.1, 0.5, samples=0), ValueError, "invalid samples = 0"),
         (lambda: fricosc.history("flat", 0.1, 0.5, samples=1.5), TypeError, "samples must be an integer"),  # type: ignore[arg-type]
         (lambda: fricosc.history("parabolic", 0.1, 0.5, springs=2_000_000), ValueError, "more than the limit"),
+        # Real numeric dtypes only: strings, bytes, booleans, complex, masked arrays and a string tol are refused.
+        (lambda: fricosc.mu_ratio("flat", ["0.3"], 0.5), TypeError, "vbar must be a real number"),
+        (lambda: fricosc.mu_ratio("flat", np.array([b"0.3"]), 0.5), TypeError, "vbar must be a real number"),
+        (lambda: fricosc.mu_ratio("flat", True, 0.5), TypeError, "vbar must be a real number"),
+        (lambda: fricosc.mu_ratio("flat", np.array([True, False]), 0.5), TypeError, "dtype bool"),
+        (lambda: fricosc.mu_ratio("flat", np.array([0.3 + 1j]), 0.5), TypeError, "dtype complex128"),
+        (lambda: fricosc.mu_ratio("flat", np.ma.masked_array([0.3, 0.4], mask=np.array([False, True])), 0.5), TypeError, "masked"),
+        (lambda: fricosc.mu_ratio("flat", 0.3, 0.5, tol="1e-3"), TypeError, "tol must be a real number"),  # type: ignore[arg-type]
+        (lambda: fricosc.point("flat", 0.3 + 0j, 0.5), TypeError, "vbar must be a real number"),  # type: ignore[arg-type]
+        # Files are read with the command line's cap, counted as they are read.
+        (lambda: fricosc.mu_ratio("profile:/dev/zero@1", 0.3, 0.5), fricosc.InputError, "more than the limit"),
+        (lambda: fricosc.scene("/dev/zero"), fricosc.InputError, "more than the limit"),
     ],
 )
 def test_bad_input(call: Callable[[], object], error: type, message: str) -> None:
     with pytest.raises(error, match=message):
         call()
+
+
+def _child(code: str) -> "subprocess.Popen[bytes]":
+    import sys
+
+    return subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+
+
+def test_memory_is_the_output_array() -> None:
+    """10^7 flat points: the peak memory of a fresh interpreter is its inputs
+    and the output (8 bytes an element each), not ~107 bytes an element."""
+    import resource
+    import sys
+
+    code = (
+        "import numpy as np, fricosc, resource\n"
+        "v = np.linspace(0.0, 1.2, 10_000_000)\n"
+        "base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
+        "out = fricosc.mu_ratio('flat', v, 0.5)\n"
+        "peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
+        "print(peak - base)\n"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    grown_kib = int(r.stdout.strip())
+    # The output is 80 MB; before, the call added 1.07 GB.
+    assert grown_kib < 160_000, f"mu_ratio over 10^7 points grew the peak by {grown_kib} KiB"
+    del resource
+
+
+def test_ctrl_c_interrupts_a_long_call() -> None:
+    """SIGINT during a long evaluation raises KeyboardInterrupt between chunks,
+    well before the call would end (2 * 10^6 parabolic points: about 10 s)."""
+    import signal
+    import time
+
+    p = _child(
+        "import numpy as np, fricosc, sys\n"
+        "print('ready', flush=True)\n"
+        "try:\n"
+        "    fricosc.mu_ratio('parabolic', np.linspace(0.01, 0.99, 2_000_000), 0.7)\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted', flush=True)\n"
+        "    sys.exit(3)\n"
+    )
+    assert p.stdout is not None
+    assert p.stdout.readline().strip() == b"ready"
+    time.sleep(0.5)
+    t0 = time.monotonic()
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=30)
+    waited = time.monotonic() - t0
+    assert p.returncode == 3 and b"interrupted" in out, (p.returncode, out)
+    assert waited < 1.0, f"KeyboardInterrupt after {waited:.2f} s"
 
 
 def test_messages_are_the_command_lines() -> None:
