@@ -10,8 +10,13 @@ stick line over their phases (not closed forms). The inputs are the f64 values
 the test passes, taken exactly.
 
 Run: python3 data/scripts/flat_events.py > data/flat-events.json   (needs mpmath)
+     python3 data/scripts/flat_events.py --near-one > data/flat-near-one.json
+The second: mu_macro/mu0 on a log grid of vbar 1e-16..1e-2 at amp = 1, just
+below it (1 - amp = 1e-12 .. 1e-2) and above it, where mu is small and must keep its
+relative accuracy.
 """
 import json
+import sys
 from mpmath import mp, mpf, asin, acos, cos, pi, quad, nstr
 
 mp.dps = 50
@@ -64,6 +69,17 @@ def state(vbar, amp):
     events.sort(key=lambda e: e[1])
     return mu, events
 
+
+if "--near-one" in sys.argv:
+    cases = []
+    vbars = [10.0 ** -k for k in range(16, 1, -1)] + [3e-16, 3e-13, 3e-9, 3e-5]
+    amps = [1.0] + [1.0 - 10.0 ** -k for k in (12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2)] + [1.0 + 10.0 ** -k for k in (12, 8, 4)]
+    for amp in amps:
+        for vbar in sorted(vbars):
+            mu, _ = state(vbar, amp)
+            cases.append({"vbar": vbar, "amp": amp, "mu_ratio": nstr(mu, 40), "reduction": nstr(1 - mu, 40)})
+    print(json.dumps({"source": "data/scripts/flat_events.py --near-one (mpmath, 50 digits)", "cases": cases}, indent=1))
+    sys.exit(0)
 
 cases = []
 vbars = [1e-15, 1.719072201858571e-16, 1e-13, 1e-12, 1e-10, 1e-8, 1e-6, 1e-4, 1e-3, 1e-2, 0.1, 0.5]

@@ -41,7 +41,9 @@ pub(crate) fn spring(vbar: f64, amp: f64, precision: Precision) -> Spring {
     let s = spring_s(amp);
     // 1 - s = (amp - 1)/amp without cancellation (only used where |s| < 1).
     let one_minus_s = if amp > 0.0 { (amp - 1.0) / amp } else { -s };
-    Spring::with_complement(s, one_minus_s, vbar, precision)
+    // The sign of s - sqrt(1 - vbar^2) from amp and vbar themselves (exact inputs).
+    let margin = (amp > 1.0 && vbar < 1.0).then(|| one_minus_a_cos_asin(amp, vbar));
+    Spring::with_complement(s, one_minus_s, vbar, precision, margin)
 }
 
 /// `s = u0/du = 1/amp` of the flat punch's spring; `f64::MAX` where `1/amp`
@@ -72,7 +74,15 @@ pub fn mean_normal(amp: f64) -> f64 {
 fn ratio_of(sp: &Spring, amp: f64) -> Result<Ratio> {
     let context = "flat punch";
     if amp <= 1.0 {
-        Ratio::from_reduction(amp * sp.deficit, context)
+        let reduction = amp * sp.deficit;
+        // Where mu is the small one (amp near 1, vbar near 0), from its own
+        // integral: amp <F> = (1 - amp sqrt(1 - vbar^2)) + amp (<F> - F(tau_s)),
+        // both cancellation-free (the difference 1 - reduction would keep only
+        // the absolute accuracy of 1).
+        match sp.tangent_excess() {
+            Some(x) if reduction > 0.5 => Ratio::from_mu(one_minus_a_cos_asin(amp, sp.vbar) + amp * x, context),
+            _ => Ratio::from_reduction(reduction, context),
+        }
     } else if matches!(sp.regime, Regime::JumpingStickFirst | Regime::JumpingSlipFirst) {
         // The smaller of the two from its own integral (full relative accuracy:
         // mu -> 0 as vbar -> 0, the reduction as vbar -> 1), the other its complement.

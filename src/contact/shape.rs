@@ -293,14 +293,20 @@ impl Point {
     }
 }
 
-/// Absolute error estimate of the flat punch's `mu_ratio`: one of `mu_ratio`
-/// and the reduction is computed directly with relative error at most
-/// [`crate::ratio::ROUNDING_PER_TERM`] eps (measured: 3.3 eps,
-/// `tests/flat_events.rs`), the other as its complement, which adds half an ulp
-/// of 1; so `eps (16 max(mu, reduction) + 1/2)` bounds either. (Where `mu_ratio`
-/// is the small one of a jumping punch its relative error is 16 eps itself.)
+/// Absolute error estimate of the flat punch's `mu_ratio`: the smaller of
+/// `mu_ratio` and the reduction is computed directly with relative error at
+/// most [`crate::ratio::ROUNDING_PER_TERM`] eps (measured: 3.3 eps,
+/// `tests/flat_events.rs`), the other as its complement. So where `mu_ratio` is
+/// the small one its error is `16 eps mu_ratio` (relative, down to the smallest
+/// subnormals, whose own spacing is added), else `eps (16 reduction + 1/2)`
+/// (the complement adds half an ulp of 1).
 pub(crate) fn flat_error_estimate(r: &Ratio) -> f64 {
-    f64::EPSILON * (crate::ratio::ROUNDING_PER_TERM * r.mu_ratio.max(r.reduction) + 0.5)
+    let per_term = crate::ratio::ROUNDING_PER_TERM;
+    if r.mu_ratio < 0.5 {
+        f64::EPSILON * per_term * r.mu_ratio + per_term * f64::from_bits(1)
+    } else {
+        f64::EPSILON * (per_term * r.reduction + 0.5)
+    }
 }
 
 /// Check a tolerance: finite, `> 0` and `< 1`.

@@ -362,24 +362,33 @@ impl Spring {
     /// Inputs must be finite with `vbar >= 0` (checked by the public APIs above this).
     #[must_use]
     pub fn new(s: f64, vbar: f64) -> Self {
-        Self::solve(s, 1.0 - s, vbar, ROOT_RTOL_MEANS)
+        Self::solve(s, 1.0 - s, vbar, ROOT_RTOL_MEANS, None)
     }
 
     /// As [`Spring::new`], with event times to full double precision.
     #[must_use]
     pub fn with_events(s: f64, vbar: f64) -> Self {
-        Self::solve(s, 1.0 - s, vbar, ROOT_RTOL_EVENTS)
+        Self::solve(s, 1.0 - s, vbar, ROOT_RTOL_EVENTS, None)
     }
 
     /// As [`Spring::new`] (or [`Spring::with_events`]) for a spring given by
     /// `s` and `one_minus_s = 1 - s` computed without cancellation by the caller
     /// (the flat punch: `(amp - 1)/amp`), so that the contact phase `arccos s`
-    /// keeps its relative accuracy as `s -> 1-`.
-    pub(crate) fn with_complement(s: f64, one_minus_s: f64, vbar: f64, precision: Precision) -> Self {
-        Self::solve(s, one_minus_s, vbar, precision.rtol())
+    /// keeps its relative accuracy as `s -> 1-`. `margin`, if given, has the
+    /// sign of `s - sqrt(1 - vbar^2)`, computed by the caller from its exact
+    /// inputs (the flat punch: `1 - amp sqrt(1 - vbar^2)`), which decides a
+    /// jumping spring's start where `s` itself is too rounded to.
+    pub(crate) fn with_complement(
+        s: f64,
+        one_minus_s: f64,
+        vbar: f64,
+        precision: Precision,
+        margin: Option<f64>,
+    ) -> Self {
+        Self::solve(s, one_minus_s, vbar, precision.rtol(), margin)
     }
 
-    fn solve(s: f64, one_minus_s: f64, vbar: f64, rtol: f64) -> Self {
+    fn solve(s: f64, one_minus_s: f64, vbar: f64, rtol: f64, margin: Option<f64>) -> Self {
         let mean_normal = mean_normal(s);
         let theta = if s < 1.0 && s > -1.0 { contact_phase(s, one_minus_s) } else { 0.0 };
         let mut out = Spring {
@@ -401,11 +410,19 @@ impl Spring {
         }
         let vel = Velocity::new(vbar);
         let c = vel.alpha.sin();
+        // |s| against c = sqrt(1 - vbar^2) by the sign of s^2 - c^2 =
+        // vbar^2 - (1 - s)(1 + s) (error-free products), free of the rounding
+        // of c: a spring at the switch must not land on the wrong side, where
+        // its start force would be a negative rounding error.
+        let beyond_c = || match margin {
+            Some(m) => m >= 0.0,
+            None => crate::special::square_margin(vbar, one_minus_s, s) >= 0.0,
+        };
         let (start, regime) = if s >= 1.0 {
             (Start::Tangent, Regime::PermanentStickSlip)
-        } else if s >= c {
+        } else if s > 0.0 && beyond_c() {
             (Start::Tangent, Regime::JumpingSlipFirst)
-        } else if s > -c {
+        } else if s > 0.0 || !beyond_c() {
             (Start::Contact { theta }, Regime::JumpingStickFirst)
         } else {
             out.regime = Regime::JumpingSlip;
@@ -455,6 +472,28 @@ impl Spring {
             }
             _ => self.mean_normal - self.deficit,
         }
+    }
+
+    /// For a spring in permanent contact (`s >= 1`, a tangent start): the mean
+    /// tangential force above the stick's start force, `<F> - F(tau_s)`, units
+    /// `mu0 kz du`, with full relative accuracy where `<F>` is small (`vbar -> 0`
+    /// with `s -> 1`, where `<B> - D` cancels).
+    ///
+    /// The stick from `tau_s = arcsin vbar` contributes `F(tau_s) L + vbar L^2/2`;
+    /// the slip over the tail `e = 2 pi - L`, `int (s - cos tau)`, is
+    /// `s e - vbar + sin(tau_s - e) = F(tau_s) e + c S(e) - 2 vbar sin^2(e/2)`
+    /// (`c = sqrt(1 - vbar^2)`). So `2 pi (<F> - F(tau_s)) = vbar L^2/2 + c S(e) -
+    /// 2 vbar sin^2(e/2)`: positive terms but the last, which is below `e^2/L^2`
+    /// of the first.
+    pub(crate) fn tangent_excess(&self) -> Option<f64> {
+        let st = self.stick?;
+        if self.regime != Regime::PermanentStickSlip {
+            return None;
+        }
+        let (v, l, e) = (self.vbar, st.length, st.tail);
+        let c = (1.0 - v * v).sqrt();
+        let h = (0.5 * e).sin();
+        Some((0.5 * v * l * l + c * s_fn(e) - 2.0 * v * h * h) / TAU)
     }
 
     /// Phase at which the stick ends, wrapped to `[0, 2 pi)`, from the tail

@@ -157,7 +157,22 @@ fn two_sum(x: f64, y: f64) -> (f64, f64) {
 /// Written as `d / (1 + a c)` with `c = sqrt(1 - v^2)` and
 /// `d = 1 - a^2 (1 - v^2) = 1 - a^2 + (a v)^2`, whose three terms are summed
 /// exactly in double-double arithmetic: the cancellation is then harmless.
+/// `v^2 - a (1 + s)`, the sign of `s^2 - (1 - v^2)` when `a = 1 - s`, with
+/// error-free products and sums: exact to a few ulps of the terms' rounding
+/// (the inputs are taken as exact).
+pub(crate) fn square_margin(v: f64, a: f64, s: f64) -> f64 {
+    let (b, be) = two_sum(1.0, s);
+    let (q, qe) = two_prod(v, v);
+    let (p, pe) = two_prod(a, b);
+    let (h, l) = two_sum(q, -p);
+    h + (l + qe - pe - a * be)
+}
+
 pub(crate) fn one_minus_a_cos_asin(a: f64, v: f64) -> f64 {
+    if v == 0.0 {
+        // 1 - a, rounded once (exact for a in [1/2, 2]).
+        return 1.0 - a;
+    }
     let c = ((1.0 - v) * (1.0 + v)).sqrt();
     let (r, re) = two_prod(a, a);
     let (p, pe) = two_prod(a, v);
