@@ -41,3 +41,16 @@ fn flat_cases_match_to_1e_14() {
     }
     assert_eq!(n, 12);
 }
+
+/// The tests' exact error of a double against decimal text: below an ulp too.
+#[test]
+fn the_exact_error_helper_measures_below_an_ulp() {
+    assert_eq!(common::exact_error(0.5, "0.5"), 0.0);
+    // 0.1 is 0.1000000000000000055511151231257827... as a double.
+    let e = common::exact_error(0.1, "0.1");
+    assert!((e / 5.551115123125783e-18 - 1.0).abs() < 1e-12, "{e:e}");
+    let e = common::exact_error(1e-20, "1.0000000000000001e-20");
+    assert!(e > 0.0 && e < 1e-35, "{e:e}");
+    assert!((common::exact_error(0.3, "0.30000000000000004") / 5.1102230246251565e-17 - 1.0).abs() < 1e-12);
+    assert!((common::exact_error(2.0, "1.5") - 0.5).abs() < 1e-16);
+}

@@ -83,6 +83,16 @@ impl Ratio {
         Ok(Ratio { mu_ratio: 1.0 - reduction, reduction })
     }
 
+    /// As [`Ratio::from_mu`] for a value with an error estimate `slack`.
+    ///
+    /// # Errors
+    /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
+    /// than rounding or the given slack.
+    pub fn from_mu_within(mu_ratio: f64, slack: f64, context: &str) -> Result<Self> {
+        let mu_ratio = unit_interval("mu_ratio", mu_ratio, slack, context)?;
+        Ok(Ratio { mu_ratio, reduction: 1.0 - mu_ratio })
+    }
+
     /// From `mu_macro/mu0` itself (where it is the small one of the two).
     ///
     /// # Errors

@@ -148,6 +148,9 @@ pub struct Spring {
     pub mean_normal: f64,
     /// Period mean of the friction lost to sticking, `<B> - <F>`, units `mu0 kz du`.
     pub deficit: f64,
+    /// The sum of the magnitudes of the terms `deficit` is computed from: its
+    /// rounding is a few ulps of this (more than of `deficit` where the stick is long).
+    pub(crate) deficit_magnitude: f64,
     /// Contact phase `theta = arccos s` of a jumping spring (`|s| < 1`; 0 otherwise):
     /// contact lasts from `theta` to `2 pi - theta` (eq. 18).
     pub theta: f64,
@@ -218,10 +221,19 @@ impl Velocity {
         Velocity { vbar, w, alpha, delta: vbar.asin(), tangent_guess: tangent_length_guess(alpha, vbar) }
     }
 
-    /// Deficit of the stick-first spring whose contact starts at phase
-    /// `theta = arccos s` (`beta = pi/2 - theta`, `|beta| < alpha`; means only).
-    pub(crate) fn stick_first_deficit(&self, theta: f64) -> f64 {
-        stick_phase(Start::Contact { theta }, self, ROOT_RTOL_MEANS).deficit
+    /// The means of the stick-first spring whose contact starts at phase
+    /// `theta = arccos s` (`beta = pi/2 - theta`, `|beta| < alpha`), given
+    /// `sin theta` and `cos theta = s`: the deficit `D`, the mean tangential
+    /// force `<F>` with full relative accuracy where it is small (as
+    /// [`Spring::mean_tangential`]: `(vbar L^2/2 + s S(e) + 2 sin(theta)
+    /// sin^2(e/2))/2pi`), and the magnitude of the terms `D` is summed from (its
+    /// rounding is a few ulps of that, not of `D`). Units `mu0 kz du`.
+    pub(crate) fn stick_first_means(&self, theta: f64, sin_theta: f64, cos_theta: f64) -> StickMeans {
+        let sol = stick_phase(Start::Contact { theta }, self, ROOT_RTOL_MEANS);
+        let (l, e) = (sol.length, sol.tail);
+        let h = (0.5 * e).sin();
+        let tangential = (0.5 * self.vbar * l * l + cos_theta * s_fn(e) + 2.0 * sin_theta * h * h) / TAU;
+        StickMeans { deficit: sol.deficit, tangential, magnitude: sol.magnitude }
     }
 }
 
@@ -243,7 +255,18 @@ struct StickSolution {
     length: f64,
     tail: f64,
     deficit: f64,
+    /// The sum of the magnitudes of the deficit's terms, over `2 pi` (the deficit's
+    /// rounding is a few ulps of this).
+    magnitude: f64,
     evaluations: u32,
+}
+
+/// The means of a stick-first spring ([`Velocity::stick_first_means`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct StickMeans {
+    pub(crate) deficit: f64,
+    pub(crate) tangential: f64,
+    pub(crate) magnitude: f64,
 }
 
 /// Below this `vbar` the stick end is solved in the tail `e = x_max - L`
@@ -251,9 +274,11 @@ struct StickSolution {
 /// as `vbar -> 1` but whose root loses `1e-16 / sqrt(vbar)` to rounding.
 const TAIL_FORM_VBAR: f64 = 0.5;
 
-/// `2 pi` times the deficit of a stick of length `len` starting at `beta`.
-fn deficit_2pi(beta: f64, w: f64, len: f64) -> f64 {
-    c_fn(beta) - c_fn(beta - len) - s_fn(beta) * len + 0.5 * w * len * len
+/// `2 pi` times the deficit of a stick of length `len` starting at `beta`, and
+/// the sum of its terms' magnitudes (the bound of its rounding, in ulps).
+fn deficit_2pi(beta: f64, w: f64, len: f64) -> (f64, f64) {
+    let terms = [c_fn(beta), -c_fn(beta - len), -s_fn(beta) * len, 0.5 * w * len * len];
+    (terms.iter().sum(), terms.iter().map(|t| t.abs()).sum())
 }
 
 /// The contact phase `theta = arccos s` of a jumping spring, `|s| < 1`, from
@@ -332,8 +357,9 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
         let e_hi = (x_max - lo).max(0.0);
         let r = root::newton(fdf, 0.0, e_hi, (x_max - guess).clamp(0.0, e_hi), rtol);
         let length = x_max - r.x;
-        let deficit = nonneg(deficit_2pi(beta, w, length) / TAU);
-        return StickSolution { length, tail: r.x, deficit, evaluations: r.evaluations };
+        let (d, m) = deficit_2pi(beta, w, length);
+        let (deficit, magnitude) = (nonneg(d / TAU), m / TAU);
+        return StickSolution { length, tail: r.x, deficit, magnitude, evaluations: r.evaluations };
     }
     let s_beta = s_fn(beta);
     // f and f' at the same x share one sin_cos.
@@ -348,8 +374,9 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
     };
     let r = root::newton(fdf, lo, x_max, guess, rtol);
     // The deficit is a mean of a non-negative gap; rounding must not flip it.
-    let deficit = nonneg(deficit_2pi(beta, w, r.x) / TAU);
-    StickSolution { length: r.x, tail: x_max - r.x, deficit, evaluations: r.evaluations }
+    let (d, m) = deficit_2pi(beta, w, r.x);
+    let (deficit, magnitude) = (nonneg(d / TAU), m / TAU);
+    StickSolution { length: r.x, tail: x_max - r.x, deficit, magnitude, evaluations: r.evaluations }
 }
 
 impl Spring {
@@ -397,6 +424,7 @@ impl Spring {
             regime: Regime::NeverInContact,
             mean_normal,
             deficit: 0.0,
+            deficit_magnitude: 0.0,
             theta,
             stick: None,
             root_evaluations: 0,
@@ -439,6 +467,7 @@ impl Spring {
         };
         out.regime = regime;
         out.deficit = sol.deficit;
+        out.deficit_magnitude = sol.magnitude;
         out.stick = Some(Stick { beta, start: tau_s, length: sol.length, tail: sol.tail, start_force });
         out.root_evaluations = sol.evaluations;
         out

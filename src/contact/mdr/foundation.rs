@@ -27,31 +27,46 @@ const PREDICT_SAFETY: f64 = 100.0;
 const Y_PRODUCT_FORM: f64 = 0.5;
 /// A singularity of the stick-first means closer to a band end than this
 /// fraction of the band's width is graded.
-const GRADE_RATIO: f64 = 0.0625;
+const GRADE_RATIO: f64 = 0.25;
 /// The Jacobian's branch point is graded until this fraction of the width.
 const JACOBIAN_GRADE_RATIO: f64 = 0.25;
 /// Most pieces one band is split into (half from each end).
 const MAX_PIECES: usize = 100;
 
-/// Integrals `(int amp <B> dz, int amp D dz)` with error estimates and node count.
+/// The three means integrated over the foundation, in this order: the normal
+/// force `int amp <B> dz`, the deficit `int amp D dz` and the tangential force
+/// `int amp <F> dz` (each computed from its own cancellation-free formula, so
+/// that the smaller of `D` and `<F>` keeps its relative accuracy).
+pub(super) const MEANS: usize = 3;
+/// Index of the normal force, the deficit and the tangential force in [`Sums`].
+pub(super) const NORMAL: usize = 0;
+pub(super) const DEFICIT: usize = 1;
+pub(super) const TANGENTIAL: usize = 2;
+
+/// The integrals of the [`MEANS`] with their truncation estimates, the
+/// integral of the deficit's rounding magnitude (its terms' sizes: the
+/// deficit's rounding is a few ulps of it), and the node count.
 #[derive(Debug, Clone, Copy, Default)]
 pub(super) struct Sums {
-    pub(super) normal: f64,
-    pub(super) deficit: f64,
-    pub(super) err_normal: f64,
-    pub(super) err_deficit: f64,
+    pub(super) value: [f64; MEANS],
+    pub(super) error: [f64; MEANS],
+    pub(super) deficit_magnitude: f64,
     pub(super) nodes: usize,
 }
 
 impl std::ops::AddAssign for Sums {
     fn add_assign(&mut self, o: Sums) {
-        self.normal += o.normal;
-        self.deficit += o.deficit;
-        self.err_normal += o.err_normal;
-        self.err_deficit += o.err_deficit;
+        for k in 0..MEANS {
+            self.value[k] += o.value[k];
+            self.error[k] += o.error[k];
+        }
+        self.deficit_magnitude += o.deficit_magnitude;
         self.nodes += o.nodes;
     }
 }
+
+/// One pass's sums: the [`MEANS`] and the deficit's magnitude.
+type Pass = ([f64; MEANS], f64);
 
 /// How the Jacobian behaves at the top of a piece.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -170,11 +185,11 @@ impl Foundation {
     /// Newton from the neighbouring node's stick length was tried: it costs 10 %
     /// more instructions than the fitted guess, the nodes of a low order being
     /// far apart.)
-    pub(super) fn pass(&self, top: f64, bottom: f64, kind: Top, stick: bool, m: usize) -> (f64, f64) {
+    pub(super) fn pass(&self, top: f64, bottom: f64, kind: Top, stick: bool, m: usize) -> Pass {
         let e = self.weight_exponent(kind);
         let r = quad::rule(m, e);
         let h = 0.5 * (bottom - top);
-        let (mut sn, mut sd) = (0.0, 0.0);
+        let (mut sum, mut mag) = ([0.0; MEANS], 0.0);
         for (&x, &w) in r.nodes.iter().zip(&r.weights) {
             // x = -1 at the top.
             let d = h * (1.0 + x);
@@ -182,37 +197,41 @@ impl Foundation {
             let beta = FRAC_PI_2 - u;
             let (su, cu) = u.sin_cos();
             let jac = w * self.jacobian(u, su, cu, d, kind);
-            // sin(beta) = cos(u), cos(beta) = sin(u).
+            // sin(beta) = cos(u), cos(beta) = sin(u); the contact phase is u.
             let b = mean_normal_sin_cos(beta, cu, su);
-            let dd = match (stick, &self.vel) {
-                (true, Some(vel)) => vel.stick_first_deficit(u),
-                _ => 0.0,
+            let (dd, tt, mm) = match (stick, &self.vel) {
+                (true, Some(vel)) => {
+                    let m = vel.stick_first_means(u, su, cu);
+                    (m.deficit, m.tangential, m.magnitude)
+                }
+                _ => (0.0, b, 0.0),
             };
-            sn += jac * b;
-            sd += jac * dd;
+            sum[NORMAL] += jac * b;
+            sum[DEFICIT] += jac * dd;
+            sum[TANGENTIAL] += jac * tt;
+            mag += jac.abs() * mm;
         }
         let width = if e == 0.0 { h } else { h.powf(e + 1.0) };
         let scale = if self.amp > 1.0 { width } else { self.amp * width };
-        (scale * sn, scale * sd)
+        (sum.map(|x| scale * x), scale.abs() * mag)
     }
 
-    /// One piece at increasing orders, until the predicted error is within the
-    /// tolerance relative to the piece plus `scale` (the band's sums so far).
-    pub(super) fn piece(&self, top: f64, bottom: f64, kind: Top, stick: bool, scale: (f64, f64)) -> Sums {
+    /// One piece at increasing orders, until the predicted error of every mean
+    /// is within the tolerance relative to the piece plus `scale` (the band's
+    /// sums so far).
+    pub(super) fn piece(&self, top: f64, bottom: f64, kind: Top, stick: bool, scale: [f64; MEANS]) -> Sums {
         let mut m = if self.tol >= LOOSE_TOL { 2 } else { MIN_ORDER };
         let q0 = self.pass(top, bottom, kind, stick, m);
         let q1 = self.pass(top, bottom, kind, stick, 2 * m);
         let mut nodes = 3 * m;
-        let (mut prev_d, mut cur) = (((q1.0 - q0.0).abs(), (q1.1 - q0.1).abs()), q1);
-        let within = |en: f64, ed: f64, q: (f64, f64)| {
-            en <= self.tol * (q.0.abs() + scale.0) && ed <= self.tol * (q.1.abs() + scale.1)
-        };
+        let diff = |a: &Pass, b: &Pass| std::array::from_fn::<f64, MEANS, _>(|k| (a.0[k] - b.0[k]).abs());
+        let (mut prev_d, mut cur) = (diff(&q1, &q0), q1);
         // At least three orders: two that agree by accident prove nothing.
         loop {
             m *= 2;
             let next = self.pass(top, bottom, kind, stick, 2 * m);
             nodes += 2 * m;
-            let d = ((next.0 - cur.0).abs(), (next.1 - cur.1).abs());
+            let d = diff(&next, &cur);
             // Geometric convergence e_k = C r^k: the error of `next` is d^3 / d_prev^2
             // (times a safety factor 100), once the orders are asymptotic.
             let predict = |dc: f64, dp: f64| {
@@ -226,20 +245,13 @@ impl Foundation {
                     dc
                 }
             };
-            let (en, ed) = (predict(d.0, prev_d.0), predict(d.1, prev_d.1));
+            let err: [f64; MEANS] = std::array::from_fn(|k| predict(d[k], prev_d[k]));
             cur = next;
-            if within(en, ed, cur) {
-                return Sums { normal: cur.0, deficit: cur.1, err_normal: en, err_deficit: ed, nodes };
-            }
-            if 2 * m >= MAX_ORDER {
+            let within = (0..MEANS).all(|k| err[k] <= self.tol * (cur.0[k].abs() + scale[k]));
+            if within || 2 * m >= MAX_ORDER {
                 // Not converged: report the plain last difference, not a prediction.
-                return Sums {
-                    normal: cur.0,
-                    deficit: cur.1,
-                    err_normal: d.0.max(en),
-                    err_deficit: d.1.max(ed),
-                    nodes,
-                };
+                let error = if within { err } else { std::array::from_fn(|k| d[k].max(err[k])) };
+                return Sums { value: cur.0, error, deficit_magnitude: cur.1, nodes };
             }
             prev_d = d;
         }
@@ -273,7 +285,7 @@ impl Foundation {
         kind: Top,
         stick: bool,
         near: (f64, f64),
-        scale: (f64, f64),
+        scale: [f64; MEANS],
     ) -> Sums {
         let mut total = Sums::default();
         // An empty band, or one whose half-width underflows to 0 (vbar = 5e-324
@@ -311,7 +323,8 @@ impl Foundation {
         pieces.sort_by(|a, b| (b.1 - b.0).total_cmp(&(a.1 - a.0)));
         for (a, b) in pieces {
             let k = if a == top { kind } else { Top::Regular };
-            let pc = self.piece(a, b, k, stick, (scale.0 + total.normal.abs(), scale.1 + total.deficit.abs()));
+            let sc = std::array::from_fn(|i| scale[i] + total.value[i].abs());
+            let pc = self.piece(a, b, k, stick, sc);
             total += pc;
         }
         total

@@ -44,9 +44,11 @@ mod foundation;
 mod normal;
 
 use crate::ratio::Ratio;
+use crate::ratio::ROUNDING_PER_TERM;
 use crate::shape::DEFAULT_TOL;
+use crate::special::one_minus_a_cos_asin;
 use crate::spring::{Spring, Velocity};
-use foundation::{Foundation, Sums, Top};
+use foundation::{Foundation, Sums, Top, DEFICIT, MEANS, NORMAL, TANGENTIAL};
 pub(crate) use normal::foundation_force;
 use normal::total_normal;
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -102,6 +104,36 @@ pub struct MdrResult {
     pub bands: Vec<Band>,
     /// Springs (quadrature nodes) evaluated in all.
     pub nodes: usize,
+}
+
+/// The permanent-contact band `0 <= z <= z1 = (1 - amp)^(1/n)` (`amp < 1`), in
+/// closed form: every spring there has the same deficit `D(vbar)` and the same
+/// stick excess `X = <F> - F(tau_s)` ([`Spring::tangent_excess`]), so
+/// `N = z1 - z1^(n+1)/(n+1)`, `D = amp D(vbar) z1` and, since each spring's
+/// `amp <F> = (1 - z^n - amp sqrt(1 - vbar^2)) + amp X`,
+/// `T = z1 ((1 - amp sqrt(1 - vbar^2)) - (1 - amp)/(n + 1) + amp X)`, every
+/// part cancellation-free (`z1^n = 1 - amp`).
+struct Permanent {
+    sums: Sums,
+    /// `D(vbar)` of one spring in permanent contact (0 at `vbar >= 1`).
+    deficit_per_spring: f64,
+    /// The magnitude of that deficit's terms, times the band's `amp z1`.
+    deficit_magnitude: f64,
+}
+
+fn permanent_band(n: f64, vbar: f64, amp: f64, z1: f64) -> Permanent {
+    let normal = z1 - z1 * z1.powf(n) / (n + 1.0);
+    let mut sums = Sums { value: [normal, 0.0, normal], ..Default::default() };
+    if vbar >= 1.0 {
+        return Permanent { sums, deficit_per_spring: 0.0, deficit_magnitude: 0.0 };
+    }
+    let sp = Spring::new(f64::MAX, vbar);
+    let x = sp.tangent_excess().unwrap_or(0.0);
+    sums.value[DEFICIT] = sp.deficit * (amp * z1);
+    if z1 > 0.0 {
+        sums.value[TANGENTIAL] = z1 * (one_minus_a_cos_asin(amp, vbar) - (1.0 - amp) / (n + 1.0) + amp * x);
+    }
+    Permanent { sums, deficit_per_spring: sp.deficit, deficit_magnitude: sp.deficit_magnitude * (amp * z1) }
 }
 
 /// `mu_macro/mu0` of the power-law profile `g = z^n` at `(vbar, amp)`.
@@ -176,15 +208,13 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     let contact = Foundation::new(n, amp, vel, tol);
     let (u_star, top_kind) = (contact.u_star, contact.top_kind());
     let top_of = |u: f64| if u == u_star { top_kind } else { Top::Regular };
-    let d_perm = vel.map_or(0.0, |_| Spring::new(f64::MAX, vbar).deficit);
     let z_of_s = |s: f64| (1.0 - amp * s).clamp(0.0, 1.0 + amp).powf(1.0 / n);
     // Band edges from u: y(u) is cancellation-free where 1 - amp sqrt(1 - vbar^2) is not.
     let z_scale = if big { amp.powf(1.0 / n) } else { 1.0 };
     let z_of_u = |u: f64| z_scale * contact.y(u).max(0.0).powf(1.0 / n);
 
-    // Permanent contact (amp < 1): int_0^{z1} amp s dz = z1 - z1^(n+1)/(n+1).
     let z1 = z_of_s(1.0);
-    let perm = Sums { normal: z1 - z1 * z1.powf(n) / (n + 1.0), deficit: d_perm * (amp * z1), ..Default::default() };
+    let perm = permanent_band(n, vbar, amp, z1);
     // The stick-first band is u in [u_sf, pi/2 + alpha], u_sf = max(u_alpha, u*);
     // slip first is [u*, u_sf]; slip only [pi/2 + alpha, pi].
     let u_sf = u_alpha.max(u_star);
@@ -198,50 +228,96 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     // vbar = 0 they are the mean normal force itself (everything sticks):
     // analytic, nothing to grade for.
     let near = if vbar == 0.0 { (inf, inf) } else { (u_sf, u_alpha) };
-    let scale0 = (perm.normal, perm.deficit);
-    let stick_first = contact.band(u_sf, u_low, top_of(u_sf), vel.is_some(), near, scale0);
-    let scale1 = (scale0.0 + stick_first.normal, scale0.1 + stick_first.deficit);
+    let stick_first = contact.band(u_sf, u_low, top_of(u_sf), vel.is_some(), near, perm.sums.value);
+    let plus = |a: [f64; MEANS], b: &Sums| std::array::from_fn(|k| a[k] + b.value[k]);
+    // Slip first: its deficit is D(vbar) per spring, in closed form.
+    let d_perm = perm.deficit_per_spring;
+    // The band's width in z: for amp < 1 from z1 = y(0)^(1/n) to y(u_sf)^(1/n),
+    // as z1 ((1 + dy/y(0))^(1/n) - 1) with dy = y(u_sf) - y(0) = 2 amp
+    // sin^2(u_sf/2): the plain difference of the two powers would keep only
+    // their absolute accuracy, and the band is as thin as vbar^2 near vbar = 0.
+    // (For amp > 1, in the scaled units of the integrals: y/amp from 0.)
+    let slip_first_width = if big {
+        contact.y(u_sf).max(0.0).powf(1.0 / n)
+    } else if z1 == 0.0 {
+        z_of_u(u_sf)
+    } else {
+        let h = (0.5 * u_sf).sin();
+        let (dy, y0) = (2.0 * amp * h * h, 1.0 - amp);
+        z1 * ((dy / y0).ln_1p() / n).exp_m1()
+    };
+    let slip_first_deficit = if big { d_perm * slip_first_width } else { amp * d_perm * slip_first_width };
+    let slip_bands = |scale: [f64; MEANS]| {
+        let mut first = contact.band(u_star, u_sf, top_of(u_star), false, (inf, inf), scale);
+        first.value[DEFICIT] = slip_first_deficit;
+        first.value[TANGENTIAL] = first.value[NORMAL] - slip_first_deficit;
+        let only = contact.band(u_low, PI, top_of(u_low), false, (inf, inf), plus(scale, &first));
+        (first, only)
+    };
     // Without the band report, a closed-form total normal force (cone, paraboloid)
-    // makes the normal force of the two slip bands unnecessary: only the stick
-    // band needs springs solved.
+    // makes the normal force of the two slip bands unnecessary where the
+    // reduction is the small one: only the stick band needs springs solved.
     let closed = if bands { None } else { total_normal(n, amp) };
-    // Slip first: its deficit is D(vbar) per spring.
-    let mut slip_first = match closed {
-        Some(_) => Sums::default(),
-        None => contact.band(u_star, u_sf, top_of(u_star), false, (inf, inf), scale1),
+    let scale1 = plus(perm.sums.value, &stick_first);
+    let (mut slip_first, mut slip_only) = match closed {
+        Some(_) => {
+            let mut first = Sums::default();
+            first.value[DEFICIT] = slip_first_deficit;
+            (first, Sums::default())
+        }
+        None => slip_bands(scale1),
     };
-    slip_first.deficit =
-        if big { d_perm * contact.y(u_sf).max(0.0).powf(1.0 / n) } else { amp * d_perm * (z_of_u(u_sf) - z1) };
-    let scale2 = (scale1.0 + slip_first.normal, scale1.1 + slip_first.deficit);
-    let slip_only = match closed {
-        Some(_) => Sums::default(),
-        None => contact.band(u_low, PI, top_of(u_low), false, (inf, inf), scale2),
+    let sum = |parts: [&Sums; 4]| {
+        let mut total = Sums::default();
+        for p in parts {
+            total += *p;
+        }
+        if let Some(nc) = closed {
+            // The closed form replaces the quadrature of the normal force (and its error).
+            total.value[NORMAL] = nc;
+            total.error[NORMAL] = 0.0;
+        }
+        total
     };
-
-    let first_kind = if vel.is_some() { BandKind::SlipFirst } else { BandKind::SlipOnly };
+    let mut total = sum([&perm.sums, &slip_first, &stick_first, &slip_only]);
+    let (nn, dd) = (total.value[NORMAL], total.value[DEFICIT]);
+    let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
+    // Where mu is the small one (vbar -> 0 with amp near or above 1), it comes
+    // from the tangential force's own integral: 1 - dd/nn would keep only the
+    // absolute accuracy of dd, whose terms are far larger than mu.
+    let small_mu = vel.is_some() && reduction > 0.5;
+    if small_mu && closed.is_some() {
+        (slip_first, slip_only) = slip_bands(scale1);
+        total = sum([&perm.sums, &slip_first, &stick_first, &slip_only]);
+    }
+    let eps = f64::EPSILON;
+    let (ratio, error_estimate) = if small_mu {
+        let tt = total.value[TANGENTIAL];
+        let mu = tt / nn;
+        let truncation = crate::ratio::quotient_error(nn, tt, total.error[NORMAL], total.error[TANGENTIAL]);
+        // Each spring's <F> is a sum of non-negative terms (16 eps each); the
+        // slip-first band's is <B> - D, rounding with their size.
+        let cancel = 4.0 * eps * (slip_first.value[NORMAL] + slip_first.value[DEFICIT]) / nn;
+        let rounding = eps * 2.0 * (ROUNDING_PER_TERM + (total.nodes as f64).sqrt()) * mu + cancel;
+        let estimate = truncation + rounding;
+        (Ratio::from_mu_within(mu, estimate, "power-law contact")?, estimate)
+    } else {
+        // Truncation (the pieces' estimates, propagated through dd/nn) plus
+        // rounding: of the sums, and of each spring's deficit (a few ulps of
+        // its terms, which exceed it where the stick is long).
+        let rounding = crate::ratio::rounding_estimate(reduction, total.nodes)
+            + 4.0 * eps * (total.deficit_magnitude + perm.deficit_magnitude) / nn;
+        let truncation = crate::ratio::quotient_error(nn, dd, total.error[NORMAL], total.error[DEFICIT]);
+        let estimate = truncation + rounding;
+        (Ratio::from_deficit_within(dd, nn, estimate, "power-law contact")?, estimate)
+    };
+    let tangential = nn - dd;
     let parts = [
-        (BandKind::PermanentContact, [0.0, z1], perm),
-        (first_kind, [z1, z_of_u(u_sf)], slip_first),
+        (BandKind::PermanentContact, [0.0, z1], perm.sums),
+        (if vel.is_some() { BandKind::SlipFirst } else { BandKind::SlipOnly }, [z1, z_of_u(u_sf)], slip_first),
         (BandKind::StickFirst, [z_of_u(u_sf), z_of_u(u_low)], stick_first),
         (BandKind::SlipOnly, [z_of_u(u_low), (1.0 + amp).powf(1.0 / n)], slip_only),
     ];
-    let mut total = Sums::default();
-    for p in &parts {
-        total += p.2;
-    }
-    if let Some(nc) = closed {
-        // The closed form replaces the quadrature of the normal force (and its error).
-        total.normal = nc;
-        total.err_normal = 0.0;
-    }
-    let (nn, dd) = (total.normal, total.deficit);
-    // Truncation (the pieces' estimates, propagated through dd/nn) plus rounding.
-    let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
-    let rounding = crate::ratio::rounding_estimate(reduction, total.nodes);
-    let truncation = crate::ratio::quotient_error(nn, dd, total.err_normal, total.err_deficit);
-    let error_estimate = truncation + rounding;
-    let ratio = Ratio::from_deficit_within(dd, nn, error_estimate, "power-law contact")?;
-    let tangential = nn - dd;
     let band_list = if bands {
         parts
             .iter()
@@ -249,8 +325,8 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
             .map(|&(kind, x_range, s)| Band {
                 kind,
                 x_range,
-                normal_share: if nn > 0.0 { s.normal / nn } else { 0.0 },
-                tangential_share: if tangential > 0.0 { (s.normal - s.deficit) / tangential } else { 0.0 },
+                normal_share: if nn > 0.0 { s.value[NORMAL] / nn } else { 0.0 },
+                tangential_share: if tangential > 0.0 { s.value[TANGENTIAL] / tangential } else { 0.0 },
                 nodes: s.nodes,
             })
             .collect()
@@ -258,16 +334,6 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
         vec![]
     };
     let mean_normal = Some(2.0 * unscale(nn)).filter(|x| x.is_finite());
-    // At vbar = 0 a small mu_ratio comes from its closed form (the minimum
-    // normal force over the mean: exactly 0 when the body jumps) instead of
-    // 1 - reduction, which is only absolutely accurate (4e-16 at amp >= 1);
-    // the reduction, above 0.5 there, is then 1 - mu to rounding.
-    let ratio = if vbar == 0.0 && ratio.mu_ratio < 0.5 {
-        let mu = mu_static_ratio(n, amp, tol)?;
-        Ratio { mu_ratio: mu, reduction: 1.0 - mu }
-    } else {
-        ratio
-    };
     Ok(MdrResult { ratio, error_estimate, mean_normal, bands: band_list, nodes: total.nodes })
 }
 
@@ -374,7 +440,7 @@ mod tests {
                     let z1 = (1.0 - a).max(0.0).powf(1.0 / n);
                     let perm = z1 - z1 * z1.powf(n) / (n + 1.0);
                     let inf = f64::INFINITY;
-                    let jumping = c.band(u_star, PI, top, false, (inf, inf), (perm, 0.0)).normal;
+                    let jumping = c.band(u_star, PI, top, false, (inf, inf), [perm, 0.0, perm]).value[NORMAL];
                     // amp > 1: scaled by amp^(1 + 1/n), as total_normal.
                     perm + jumping
                 };

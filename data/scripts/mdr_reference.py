@@ -1,0 +1,163 @@
+"""Independent 40-digit values of mu_macro/mu0 for MDR power-law contacts
+g = |z|^n (the paraboloid n = 2, the cone n = 1, ...), for the tests of the
+solver's values and of its error estimate (issue "Trust, round three").
+
+Independent of fricosc's formulas: every spring's steady state is built from
+the seed's description (the bound B = s - cos t while in contact; the stick
+starts where the bound's slope falls to vbar, or at the contact with zero
+force; its end is the root of the plain gap B(t0 + x) - F0 - vbar x, found by a
+bracketing solver in 60-digit arithmetic), and the period means are the
+elementary integrals of B and of the stick line over those phases. The foundation
+is integrated over z = x/x_c with tanh-sinh quadrature between the regime edges
+s(z) = (1 - z^n)/amp = 1, +-sqrt(1 - vbar^2), -1, at two working precisions;
+the two agree to the digits written (checked here, the difference printed).
+
+Run: python3 data/scripts/mdr_reference.py > data/mdr-reference.json   (needs mpmath;
+about ten minutes)
+     python3 data/scripts/mdr_reference.py --sphere > data/sphere-reference.json
+The second: the exact sphere of radius 1 (MDR profile (x/2) ln((1 + x)/(1 - x)))
+at a mean indentation of 1e-6, at sampled rows of the suite's tabulated sphere.
+"""
+import json
+import sys
+from mpmath import mp, mpf, asin, acos, cos, sin, sqrt, pi, quad, nstr
+
+
+def root(f, a, b):
+    """The sign change of f in [a, b] (f(a) > 0 > f(b)): Illinois regula falsi
+    to the working precision, bisection steps where it stalls."""
+    fa, fb = f(a), f(b)
+    assert fa > 0 > fb, (a, b, fa, fb)
+    tol = abs(b) * mpf(10) ** (-mp.dps + 3)
+    side = 0
+    for _ in range(2000):
+        if b - a <= tol:
+            break
+        m = (a * fb - b * fa) / (fb - fa)
+        if not (a < m < b) or side == 3:
+            m, side = (a + b) / 2, 0
+        fm = f(m)
+        if fm == 0:
+            return m
+        if fm > 0:
+            a, fa = m, fm
+            if side < 0:
+                fb /= 2
+            side = side - 1 if side < 0 else -1
+        else:
+            b, fb = m, fm
+            if side > 0:
+                fa /= 2
+            side = side + 1 if side > 0 else 1
+        if abs(side) >= 3:
+            side = 3
+    return (a + b) / 2
+
+
+def spring(s, v):
+    """(<B>, <F>) of one spring, units kz du, at velocity v < 1 (exact inputs)."""
+    if s <= -1:
+        return mpf(0), mpf(0)
+    c = sqrt(1 - v * v)
+    theta = acos(s) if s < 1 else None  # contact from theta to 2 pi - theta
+    if s >= 1:
+        normal = s
+    else:
+        normal = (s * (pi - theta) + sin(theta)) / pi
+    if s <= -c:  # never sticks
+        return normal, normal
+    B_int = lambda a, b: s * (b - a) - (sin(b) - sin(a))  # integral of s - cos t
+    delta = asin(v)
+    if s >= c:  # tangent start
+        t0, f0 = delta, s - c
+        xmax = 2 * pi if s >= 1 else 2 * pi - theta - delta
+    else:  # stick from the moment of contact
+        t0, f0 = theta, mpf(0)
+        xmax = 2 * pi - 2 * theta
+    gap = lambda x: s - cos(t0 + x) - f0 - v * x
+    lo = max(pi - t0 - delta, mpf(0))  # the gap's maximum, where the bound's slope is v again
+    if gap(lo) <= 0:  # vbar -> 1 or a stick of zero length: the root is at the maximum
+        L = lo
+    else:
+        L = root(gap, lo, xmax)
+    t1 = t0 + L
+    stick = f0 * L + v * L * L / 2
+    if s >= 1:
+        slip = B_int(t1, t0 + 2 * pi)
+    else:
+        slip = B_int(t1, 2 * pi - theta)
+        if s >= c:
+            slip += B_int(theta, t0)
+    return normal, (stick + slip) / (2 * pi)
+
+
+def mu_profile(G, Ginv, vbar, amp):
+    """mu of the foundation with profile G (G(1) = 1, increasing; Ginv its
+    inverse) at the working precision."""
+    v, a = mpf(vbar), mpf(amp)
+    if a == 0 or v >= 1:
+        return mpf(1)
+    c = sqrt(1 - v * v)
+    zmax = Ginv(1 + a)
+    z_of = lambda s: Ginv(1 - a * s) if 1 - a * s > 0 else mpf(0)
+    cuts = sorted({mpf(0), zmax} | {z_of(s) for s in (1, c, -c, -1) if 0 < 1 - a * s < 1 + a})
+    tot_n, tot_t = mpf(0), mpf(0)
+    for p, q in zip(cuts, cuts[1:]):
+        if q <= p:
+            continue
+        tot_n += quad(lambda z: a * spring((1 - G(z)) / a, v)[0], [p, q])
+        tot_t += quad(lambda z: a * spring((1 - G(z)) / a, v)[1], [p, q])
+    return tot_t / tot_n
+
+
+def mu(n, vbar, amp, dps):
+    mp.dps = dps
+    n = mpf(n)
+    return mu_profile(lambda z: z ** n, lambda y: y ** (1 / n), vbar, amp)
+
+
+def sphere(u0, vbar, amp, dps):
+    """The true sphere of radius 1 at mean indentation u0: MDR profile
+    g(x) = (x/2) ln((1 + x)/(1 - x)), normalised G(z) = g(x_c z)/u0."""
+    mp.dps = dps
+    from mpmath import log, findroot
+    u0 = mpf(u0)
+    g = lambda x: x / 2 * log((1 + x) / (1 - x))
+    inv = lambda y: findroot(lambda x: g(x) - y, sqrt(y), tol=mpf(10) ** (-dps + 5))
+    xc = inv(u0)
+    return mu_profile(lambda z: g(xc * z) / u0, lambda y: inv(y * u0) / xc, vbar, amp)
+
+
+if "--sphere" in sys.argv:
+    # Sampled rows of the suite's tabulated sphere (data/profiles/sphere.csv @ 1e-6).
+    cases = []
+    for amp in (0.2, 0.8, 1.0, 1.5, 3.0):
+        for vbar in (0.01, 0.3, 0.9):
+            lo, hi = sphere(1e-6, vbar, amp, 30), sphere(1e-6, vbar, amp, 40)
+            print(f"sphere vbar={vbar} amp={amp}: {nstr(hi, 25)} (differ by {nstr(abs(hi - lo) / hi, 3)})", file=sys.stderr)
+            cases.append({"vbar": vbar, "amp": amp, "mu_ratio": nstr(hi, 30), "reduction": nstr(1 - hi, 30)})
+    print(json.dumps({"source": "data/scripts/mdr_reference.py --sphere (mpmath, the exact sphere of radius 1 at u0 = 1e-6)", "cases": cases}, indent=1))
+    sys.exit(0)
+
+points = []
+for n in (1.0, 2.0):
+    for amp in (0.999, 1.0, 1.001, 1.5):
+        for vbar in (1e-6, 1e-4, 1e-3, 0.003, 0.01, 0.1, 0.3):
+            points.append((n, vbar, amp))
+for n in (1.0, 2.0, 3.0):
+    for amp in (0.3, 0.8, 2.0, 5.0):
+        for vbar in (0.2, 0.6, 0.95, 0.999):
+            points.append((n, vbar, amp))
+
+cases = []
+worst = mpf(0)
+for n, vbar, amp in points:
+    lo = mu(n, vbar, amp, 45)
+    hi = mu(n, vbar, amp, 60)
+    mp.dps = 60
+    diff = abs(hi - lo) / hi
+    worst = max(worst, diff)
+    print(f"n={n} vbar={vbar} amp={amp}: {nstr(hi, 25)} (two precisions differ by {nstr(diff, 3)})", file=sys.stderr)
+    cases.append({"n": n, "vbar": vbar, "amp": amp, "mu_ratio": nstr(hi, 40), "reduction": nstr(1 - hi, 40)})
+print(f"largest relative difference of the two precisions: {nstr(worst, 3)}", file=sys.stderr)
+print(json.dumps({"source": "data/scripts/mdr_reference.py (mpmath, tanh-sinh at 45 and 60 digits)", "cases": cases}, indent=1))
