@@ -10,56 +10,11 @@
 //! (up to the reference's own accuracy).
 mod common;
 
+use common::spring_ref::{deficit, mean_b};
 use common::tol;
 use fricosc::mdr::power_law;
 use fricosc::DEFAULT_TOL;
-use std::f64::consts::{PI, TAU};
-
-/// Mean normal force of a spring, eq. 20 form: `(s (pi - th) + sin th)/pi`.
-fn mean_b(s: f64) -> f64 {
-    if s >= 1.0 {
-        s
-    } else if s <= -1.0 {
-        0.0
-    } else {
-        let th = s.acos();
-        (s * (PI - th) + th.sin()) / PI
-    }
-}
-
-/// Period-mean stick deficit of a spring, from the seed's construction.
-fn deficit(s: f64, v: f64) -> f64 {
-    if v >= 1.0 || s <= -1.0 {
-        return 0.0;
-    }
-    let delta = v.asin();
-    let c = (1.0 - v * v).sqrt();
-    let (t0, f0, x_max) = if s >= c {
-        let x_max = if s >= 1.0 { TAU } else { TAU - s.acos() - delta };
-        (delta, s - c, x_max)
-    } else if s > -c {
-        let th = s.acos();
-        (th, 0.0, TAU - 2.0 * th)
-    } else {
-        return 0.0;
-    };
-    let gap = |x: f64| (s - (t0 + x).cos()) - f0 - v * x;
-    // The gap peaks where the bound's slope is vbar again (t0 + x = pi - delta).
-    let (mut lo, mut hi) = ((PI - delta - t0).max(0.0), x_max);
-    if gap(lo) <= 0.0 {
-        return 0.0;
-    }
-    for _ in 0..64 {
-        let mid = 0.5 * (lo + hi);
-        if gap(mid) > 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    let l = 0.5 * (lo + hi);
-    ((s - f0) * l - ((t0 + l).sin() - t0.sin()) - 0.5 * v * l * l) / TAU
-}
+use std::f64::consts::PI;
 
 /// Tanh-sinh over [a, b] at step h: `(int f, int g)` for a pair of integrands.
 fn tanh_sinh(a: f64, b: f64, h: f64, f: &dyn Fn(f64) -> (f64, f64)) -> (f64, f64) {

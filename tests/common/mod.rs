@@ -4,6 +4,7 @@
 use serde_json::Value;
 
 pub mod quad;
+pub mod spring_ref;
 
 /// `|got - exact|` for a reference given as decimal text, exact beyond f64: the
 /// text is split into its nearest double `x` and the remainder `exact - x`
