@@ -65,8 +65,9 @@ mod peers;
 pub mod scene;
 pub mod validation;
 
+pub use contact::regime::ContactRegime;
 pub use contact::shape::{Evaluation, Options, Point, Reader, Shape, DEFAULT_TOL, MAX_EXPONENT, MIN_EXPONENT};
-pub use contact::{flat, flat_tip, history, mdr, profile, Contact, FlatPunch, PowerLaw};
+pub use contact::{flat, flat_tip, history, mdr, profile, regime, Contact, FlatPunch, PowerLaw};
 pub use error::{Error, Result};
 pub use model::ratio::Ratio;
 pub use model::{spring, vbar_from_vhat};

@@ -225,9 +225,9 @@ fn validate_exit_codes_0_within_1_exceeded_2_bad_input() {
     let ok = fricosc(&["validate", "-", "--max-error", "0"], Some(std::str::from_utf8(&exact.stdout).unwrap()));
     assert_eq!(ok.status.code(), Some(0), "{}", String::from_utf8_lossy(&ok.stderr));
     for (stdin, frag) in [
-        ("vbar,amp\n0.1,0.5\n", "lacks column 'mu_ratio'"),
-        ("[{\"vbar\":0.1,\"mu_ratio\":0.5}]", "missing field 'amp'"),
-        ("[{\"vbar\":0.1,\"amp\":0.5}]", "missing field 'mu_ratio' (or 'mu')"),
+        ("vbar,amp\n0.1,0.5\n", "no column 'mu_ratio' (or 'mu'): a table needs vbar (or vhat), amp and mu_ratio"),
+        ("[{\"vbar\":0.1,\"mu_ratio\":0.5}]", "no column 'amp'; this table (JSON array of rows) has vbar, mu_ratio"),
+        ("[{\"vbar\":0.1,\"amp\":0.5}]", "no column 'mu_ratio' (or 'mu')"),
         ("", "empty input"),
     ] {
         let bad = fricosc(&["validate", "-"], Some(stdin));

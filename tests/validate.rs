@@ -4,7 +4,8 @@
 //! punch), with the start and the number of periods as parameters, so that the
 //! bugs of a user's stepper can be planted in it.
 use fricosc::history::HistoryOptions;
-use fricosc::validation::{compare, AtRest, FindingKind, RowRegime};
+use fricosc::validation::{compare, AtRest, Check, FindingKind, HistoryData, HistoryValidation, TimeAxis};
+use fricosc::ContactRegime;
 use fricosc::Shape;
 use std::process::Command;
 
@@ -34,8 +35,19 @@ fn table(mu: impl Fn(f64, f64) -> f64) -> Vec<(f64, f64, f64)> {
     AMP.iter().flat_map(|&a| VBAR.iter().map(move |&v| (v, a))).map(|(v, a)| (v, a, mu(v, a))).collect()
 }
 
+/// A history on the seed's phase axis against the exact one (tolerance 1e-9).
+fn compare_history(shape: &Shape, v: f64, a: f64, t: &[f64], f: &[f64], n: Option<&[f64]>) -> HistoryValidation {
+    let data = HistoryData { time: TimeAxis::Phase(t), tangential: f, normal: n };
+    fricosc::validation::compare_history(shape, v, a, &data, 1e-9).unwrap()
+}
+
 fn kinds(rows: &[(f64, f64, f64)], at_rest: AtRest) -> Vec<FindingKind> {
-    compare(&Shape::flat(), rows, at_rest, 1e-9).unwrap().findings.iter().map(|f| f.kind).collect()
+    compare(&Shape::flat(), rows, &Check::default().with_at_rest(at_rest))
+        .unwrap()
+        .findings
+        .iter()
+        .map(|f| f.kind)
+        .collect()
 }
 
 /// The derivation of the two conventions at vbar = 0: a relaxed start stays at
@@ -56,19 +68,19 @@ fn the_two_starts_at_zero_velocity() {
 #[test]
 fn a_correct_table_has_no_findings() {
     let rows = table(|v, a| stepper(v, a, 20_000, 60, false));
-    let v = compare(&Shape::flat(), &rows, AtRest::Sliding, 1e-9).unwrap();
+    let v = compare(&Shape::flat(), &rows, &Check::default().with_at_rest(AtRest::Sliding)).unwrap();
     assert!(v.findings.is_empty(), "{:?}", v.findings);
     assert!(v.max_abs_error < 2e-3, "{}", v.max_abs_error);
     // Every regime appears, each with its rows.
-    let regimes: Vec<RowRegime> = v.by_regime.iter().map(|g| g.regime).collect();
+    let regimes: Vec<ContactRegime> = v.by_regime.iter().map(|g| g.regime).collect();
     assert_eq!(
         regimes,
         [
-            RowRegime::AtRest,
-            RowRegime::NoStick,
-            RowRegime::PermanentContact,
-            RowRegime::JumpingSlipFirst,
-            RowRegime::JumpingStickFirst
+            ContactRegime::AtRest,
+            ContactRegime::Sliding,
+            ContactRegime::PermanentContact,
+            ContactRegime::JumpingSlipFirst,
+            ContactRegime::JumpingStickFirst
         ]
     );
     assert_eq!(v.by_amp.iter().map(|g| g.summary.n).sum::<usize>(), rows.len());
@@ -90,7 +102,7 @@ fn a_relaxed_start_is_named_and_accepted_with_its_convention() {
     let rows = table(|v, a| stepper(v, a, 20_000, 60, v == 0.0));
     let k = kinds(&rows, AtRest::Sliding);
     assert_eq!(k, [FindingKind::AtRestConvention], "{k:?}");
-    let relaxed = compare(&Shape::flat(), &rows, AtRest::Relaxed, 1e-9).unwrap();
+    let relaxed = compare(&Shape::flat(), &rows, &Check::default().with_at_rest(AtRest::Relaxed)).unwrap();
     assert!(relaxed.findings.is_empty(), "{:?}", relaxed.findings);
     assert!(relaxed.rows.iter().filter(|r| r.vbar == 0.0).all(|r| r.error == 0.0));
 }
@@ -100,7 +112,7 @@ fn a_relaxed_start_is_named_and_accepted_with_its_convention() {
 #[test]
 fn too_few_periods_are_named() {
     let rows = table(|v, a| if v == 0.0 { stepper(0.0, a, 20_000, 60, false) } else { stepper(v, a, 20_000, 3, true) });
-    let v = compare(&Shape::flat(), &rows, AtRest::Sliding, 1e-9).unwrap();
+    let v = compare(&Shape::flat(), &rows, &Check::default().with_at_rest(AtRest::Sliding)).unwrap();
     let steady = v.findings.iter().find(|f| f.kind == FindingKind::NotSteady).expect("not_steady finding");
     // The flagged rows are the low-velocity ones.
     assert!(steady.rows.iter().all(|&i| rows[i].0 > 0.0 && rows[i].0 < 0.3), "{steady:?}");
@@ -118,7 +130,7 @@ fn a_decrease_in_velocity_is_named() {
             m
         }
     });
-    let v = compare(&Shape::flat(), &rows, AtRest::Sliding, 1e-9).unwrap();
+    let v = compare(&Shape::flat(), &rows, &Check::default().with_at_rest(AtRest::Sliding)).unwrap();
     let f = v.findings.iter().find(|f| f.kind == FindingKind::NotMonotone).expect("not_monotone finding");
     assert_eq!(f.rows, [VBAR.len() + 4], "{f:?}");
 }
@@ -161,14 +173,16 @@ fn the_command_reads_shapes_velocities_and_formats() {
     let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert!(doc["max_abs_error"].as_f64().unwrap() < 1e-15, "{doc}");
     assert_eq!(doc["ignored_columns"], serde_json::json!(["code"]));
-    assert_eq!(doc["rows"][0]["regime"], "jumping_stick_first");
+    // The paraboloid's springs all lose contact at amp 1.5: its regime says so.
+    assert_eq!(doc["rows"][0]["regime"], "jumping");
+    assert_eq!(doc["rows"][0]["jumping_share"], 1.0);
     let no_mu0 = fricosc_cmd(&["validate", "-"], &csv);
     assert!(String::from_utf8_lossy(&no_mu0.stderr).contains("mu0 is needed"));
     // CSV output: one line per row plus the header; the summary names findings.
     let csv_out = fricosc_cmd(&["validate", "-", "--mu0", "0.4", "--format", "csv"], &csv);
     let text = String::from_utf8(csv_out.stdout).unwrap();
     assert_eq!(text.lines().count(), 2);
-    assert!(text.starts_with("row,vbar,amp,mu_ratio,exact,error,relative_error,regime\n"));
+    assert!(text.starts_with("row,vbar,amp,mu_ratio,exact,error,relative_error,regime,jumping_share\n"), "{text}");
     let bad = "vbar,amp,mu_ratio\n0.5,0.5,1.2\n1.1,0.5,1.2\n";
     let summary = fricosc_cmd(&["validate", "-", "--format", "summary"], bad);
     let text = String::from_utf8(summary.stdout).unwrap();
@@ -271,7 +285,7 @@ fn history_events_of_the_peer_are_within_one_step() {
                 h.samples.iter().map(|s| s.tangential).collect(),
                 h.samples.iter().map(|s| s.normal).collect(),
             );
-            let r = fricosc::validation::compare_history(&Shape::flat(), v, a, &t, &f, Some(&n), 1e-9).unwrap();
+            let r = compare_history(&Shape::flat(), v, a, &t, &f, Some(&n));
             let step = std::f64::consts::TAU / m as f64;
             let kinds: Vec<_> = r.exact_events.iter().map(|e| e.kind).collect();
             for k in &kinds {
@@ -309,7 +323,7 @@ fn history_bugs_are_named() {
             ft.push(f * a);
             nn.push(b * a);
         }
-        fricosc::validation::compare_history(&Shape::flat(), v, a, &t, &ft, Some(&nn), 1e-9).unwrap()
+        compare_history(&Shape::flat(), v, a, &t, &ft, Some(&nn))
     };
     let short = run(3, 1.0, true);
     assert_eq!(short.periodic, Some(false), "{short:?}");
@@ -370,7 +384,7 @@ fn a_missed_stick_end_is_named() {
         ft.push(f * a);
         nn.push(b * a);
     }
-    let r = fricosc::validation::compare_history(&Shape::flat(), v, a, &t, &ft, Some(&nn), 1e-9).unwrap();
+    let r = compare_history(&Shape::flat(), v, a, &t, &ft, Some(&nn));
     assert!(r.above_bound_count > 100 && !r.above_bound.is_empty(), "{}", r.above_bound_count);
     // The exact history never is above its bound.
     let exact =
@@ -381,12 +395,12 @@ fn a_missed_stick_end_is_named() {
         exact.samples.iter().map(|s| s.tangential).collect(),
         exact.samples.iter().map(|s| s.normal).collect(),
     );
-    let r = fricosc::validation::compare_history(&Shape::flat(), v, a, &t, &f, Some(&n), 1e-9).unwrap();
+    let r = compare_history(&Shape::flat(), v, a, &t, &f, Some(&n));
     assert_eq!(r.above_bound_count, 0);
     assert!(r.max_abs_error < 1e-15, "{}", r.max_abs_error);
 }
 
-/// Forces in newtons: --kz-u0 and --mu0 normalise them.
+/// Forces in newtons: --static-force (and its alias --kz-u0) and --mu0 normalise them.
 #[test]
 fn history_forces_in_physical_units() {
     let h = fricosc::history::stepped_history(0.3, 0.5, 2, 800).unwrap();
@@ -427,7 +441,7 @@ fn curved_histories_are_compared_with_the_reference_grid() {
         let t: Vec<f64> = h.samples.iter().map(|s| s.tau).collect();
         let f: Vec<f64> = h.samples.iter().map(|s| s.tangential).collect();
         let n: Vec<f64> = h.samples.iter().map(|s| s.normal).collect();
-        fricosc::validation::compare_history(&shape, 0.3, 1.3, &t, &f, Some(&n), 1e-9).unwrap()
+        compare_history(&shape, 0.3, 1.3, &t, &f, Some(&n))
     };
     let same = cols(fricosc::validation::HISTORY_REFERENCE_SPRINGS);
     assert!(same.max_abs_error < 1e-13, "{}", same.max_abs_error);

@@ -12,6 +12,11 @@ pub trait Report: serde::Serialize {
     fn columns(&self) -> Vec<String>;
     /// Rows of the tabular form, as text (numbers in round-trip precision).
     fn rows(&self) -> Vec<Vec<String>>;
+    /// A line above the CSV table (written as a `#` comment: numpy reads past
+    /// it, pandas with `comment="#"`, `fricosc validate` always), e.g. units.
+    fn comment(&self) -> Option<String> {
+        None
+    }
     /// The report drawn as SVG, where it has a drawing.
     fn svg(&self) -> Option<Result<String>> {
         None
@@ -73,10 +78,16 @@ pub fn export(report: &impl Report, format: Format) -> Result<String> {
     match format {
         Format::Json => serde_json::to_string_pretty(report)
             .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") }),
-        Format::Csv => Ok(crate::cli::output::csv_table(
-            &report.columns().iter().map(String::as_str).collect::<Vec<_>>(),
-            report.rows(),
-        )),
+        Format::Csv => {
+            let table = crate::cli::output::csv_table(
+                &report.columns().iter().map(String::as_str).collect::<Vec<_>>(),
+                report.rows(),
+            );
+            Ok(match report.comment() {
+                Some(c) => format!("# {}\n{table}", crate::cli::cmd::escape_controls(&c)),
+                None => table,
+            })
+        }
         Format::Markdown => {
             let cell = |s: &str| s.replace('|', "/");
             let cols = report.columns();

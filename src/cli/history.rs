@@ -9,6 +9,13 @@ impl crate::cli::export::Report for History {
         ["tau", "normal", "tangential", "event"].map(String::from).to_vec()
     }
 
+    fn comment(&self) -> Option<String> {
+        Some(format!(
+            "fricosc history of {} at vbar {}, du/u0 {}: tau = omega t with the indentation u0 - du cos(tau); {}",
+            self.shape, self.vbar, self.amp, self.units
+        ))
+    }
+
     fn rows(&self) -> Vec<Vec<String>> {
         let n = crate::cli::output::num;
         self.samples
@@ -42,11 +49,7 @@ impl crate::cli::export::Report for History {
             },
         ];
         let tmax = self.samples.last().map_or(1.0, |x| x.tau);
-        let unit = if self.units.contains("E*") {
-            "force / (μ_{0} E* x_{c} u_{z0})"
-        } else {
-            "force / (μ_{0} k_{z} u_{z0})"
-        };
+        let unit = "force / (μ_{0} F_{0})";
         Some(Ok(Chart {
             title: format!("{}: forces at vbar = {}, du/u0 = {} ({})", self.shape, self.vbar, self.amp, self.units),
             x: Axis::linear("phase ωt (rad)", (0.0, tmax)),

@@ -21,5 +21,6 @@ pub mod scan;
 pub mod scene;
 pub mod stress;
 pub mod suite;
+pub mod tables;
 pub mod twopass;
 pub mod validate;

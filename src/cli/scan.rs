@@ -457,8 +457,78 @@ pub fn line_row<'a, const N: usize>(line: &'a str, names: &[&str; N]) -> Scan<Ro
     Ok(r)
 }
 
+/// The offset of the first non-whitespace byte at or after `i`.
+pub fn skip_ws(text: &str, i: usize) -> usize {
+    ws(text.as_bytes(), i)
+}
+
+/// The end of the JSON value starting at `text[i..]` (after whitespace).
+pub fn value_end(text: &str, i: usize) -> Scan<usize> {
+    value(text.as_bytes(), ws(text.as_bytes(), i), 0)
+}
+
+/// Call `each(key, value_start..value_end)` for every member of the object at
+/// `text[i..]` (`{` there), in order, keys decoded; returns the object's end.
+pub fn each_member<'a>(
+    text: &'a str,
+    i: usize,
+    each: &mut dyn FnMut(Cow<'a, str>, (usize, usize)) -> Scan<()>,
+) -> Scan<usize> {
+    let b = text.as_bytes();
+    if b.get(i) != Some(&b'{') {
+        return Err(ScanError::new(i, "expected an object"));
+    }
+    object(b, i, 1, &mut |key, escaped, span| {
+        let at = key.as_ptr() as usize - b.as_ptr() as usize;
+        each(key_text(text, key, escaped, at)?, span)
+    })
+}
+
+/// An object's member: its key (decoded) and its value's span.
+pub type Member<'a> = (Cow<'a, str>, (usize, usize));
+
+/// The members of the object at `text[i..]`, in order (duplicate keys refused).
+pub fn members(text: &str, i: usize) -> Scan<Vec<Member<'_>>> {
+    let mut out: Vec<Member> = vec![];
+    each_member(text, i, &mut |k, span| {
+        if out.iter().any(|(x, _)| *x == k) {
+            return Err(ScanError { at: span.0, what: format!("duplicate key '{k}'"), malformed: false });
+        }
+        out.push((k, span));
+        Ok(())
+    })?;
+    Ok(out)
+}
+
+/// Call `each(value_start..value_end)` for every element of the array at
+/// `text[i..]` (`[` there), in order; returns the array's end.
+pub fn each_element(text: &str, i: usize, each: &mut dyn FnMut((usize, usize)) -> Scan<()>) -> Scan<usize> {
+    let b = text.as_bytes();
+    if b.get(i) != Some(&b'[') {
+        return Err(ScanError::new(i, "expected an array"));
+    }
+    let mut j = ws(b, i + 1);
+    if b.get(j) == Some(&b']') {
+        return Ok(j + 1);
+    }
+    loop {
+        let end = value(b, j, 1)?;
+        each((j, end))?;
+        j = ws(b, end);
+        match b.get(j) {
+            Some(b',') => j = ws(b, j + 1),
+            Some(b']') => return Ok(j + 1),
+            None => return Err(ScanError::new(j, "EOF while parsing a list")),
+            Some(_) => return Err(ScanError::new(j, "expected `,` or `]`")),
+        }
+    }
+}
+
 /// A finite number from a raw JSON value.
 pub fn number_of(raw: &str, name: &str) -> Result<f64, String> {
+    if raw == "null" {
+        return Err(format!("'{name}' is null (pandas writes NaN and missing values as null)"));
+    }
     if !raw.starts_with(|c: char| c == '-' || c.is_ascii_digit()) {
         return Err(format!("'{name}' must be a number"));
     }

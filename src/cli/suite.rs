@@ -28,7 +28,7 @@ use sha2::{Digest, Sha256};
 use std::path::Path;
 
 /// The suite's version: changed whenever a case is added or a file's form changes.
-pub const SUITE_VERSION: u32 = 3;
+pub const SUITE_VERSION: u32 = 4;
 
 /// Velocities of the tables: every regime, and close to the critical velocity.
 const VBAR: [f64; 17] = [0.0, 0.01, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 0.99, 0.999, 1.0, 1.1];
@@ -144,12 +144,11 @@ pub fn files() -> Result<Vec<SuiteFile>> {
                 .and_then(|k| k.as_str().map(str::to_string))
                 .unwrap_or_default()
         };
-        let rows: Vec<Vec<String>> =
-            h.samples.iter().map(|s| vec![num(s.tau), num(s.normal), num(s.tangential), event(s.event)]).collect();
         let stem = format!("histories/flat-vbar{}-amp{}", num(v), num(a));
         out.push(SuiteFile {
             path: format!("{stem}.csv"),
-            text: csv(&["tau", "normal", "tangential", "event"], &rows)?,
+            // Exactly what the command writes (with its units line).
+            text: crate::cli::export::export(&h, crate::cli::export::Format::Csv)?,
             command: format!(
                 "fricosc history --shape flat --vbar {} --amp {} --samples {HISTORY_SAMPLES} --format csv",
                 num(v),
@@ -178,7 +177,7 @@ pub fn manifest(files: &[SuiteFile]) -> Result<String> {
         .iter()
         .map(|f| {
             serde_json::json!({
-                "path": f.path, "sha256": sha256(&f.text), "rows": f.text.lines().count().saturating_sub(1),
+                "path": f.path, "sha256": sha256(&f.text), "rows": f.text.lines().filter(|l| !l.starts_with('#')).count().saturating_sub(1),
                 "command": f.command,
             })
         })
@@ -206,8 +205,8 @@ Friction 2017): the exact values of fricosc {} with an error bound on each.\n\n\
   (a stepper started from relaxed springs gives 0 there instead).\n\
 - `limits.csv`: `vbar -> 0+`, `vbar -> 1` (`1 - 1e-3`, `1 - 1e-6`) and `amp = 1`.\n\
 - `histories/flat-*.csv`: normal and tangential force of the flat punch over one period (phase\n\
-  `tau = omega t`, forces in units of `kz u0` and `mu0 kz u0`), with every event's phase among the\n\
-  samples; `*-events.csv`: the exact events (contact, loss of contact, stick, slip).\n\
+  `tau = omega t`, forces in units of `kz u0` and `mu0 kz u0`, stated on a first `#` line), with\n\
+  every event's phase among the samples; `*-events.csv`: the exact events (contact, loss of contact, stick, slip).\n\
 - `manifest.json`: the command that reproduces each file's values, its rows and its SHA-256.\n\n\
 How to use it: run your code at the same inputs and compare, e.g. with `fricosc validate\n\
 your-table.csv` (errors by regime and amplitude, findings with hints). A converged time stepper\n\

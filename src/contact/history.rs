@@ -2,11 +2,15 @@
 //! Fig. 2), exact, sampled from the closed-form phases with every event time
 //! included as a sample (`fricosc history`, the Python package's `history()`).
 //!
-//! Flat punch: forces in units of `kz u0` (normal) and `mu0 kz u0` (tangential).
-//! Every other contact: totals in units of `E* x_c u0` (and `mu0 E* x_c u0`);
-//! the normal total is exact ([`crate::contact::Contact::static_force`] at each
-//! phase's depth, both sides of the foundation), the tangential total sums the exact forces of `springs` springs at the midpoints
-//! of a uniform grid (second order in the spacing away from the phase switches).
+//! Forces in units of the static force `F0`, the normal force at the mean
+//! indentation `u0` without oscillation (normal `/ F0`, tangential
+//! `/ (mu0 F0)`): `kz u0` for the flat punch, Hertz's `(4/3) E* R^(1/2) u0^(3/2)`
+//! for the paraboloid, [`crate::contact::Contact::static_force`] at depth 1 in
+//! general. For a curved contact the normal total is exact (the static force at
+//! each phase's depth), the tangential total sums the exact forces of `springs`
+//! springs at the midpoints of a uniform grid (second order in the spacing away
+//! from the phase switches); chosen springs are reported per unit length of the
+//! foundation, in units of `E* u0` (and `mu0 E* u0`).
 
 use crate::error::{check_nonneg, Error, Result};
 use crate::shape::Shape;
@@ -181,6 +185,9 @@ fn check_history(shape: &Shape, vbar: f64, amp: f64, o: &HistoryOptions) -> Resu
     Ok(rows)
 }
 
+/// The units of every history's forces (module docs).
+pub const UNITS: &str = "normal: F0 (the static normal force at depth u0); tangential: mu0 F0";
+
 /// Smallest nonzero amplitude of a curved shape's history: below it the
 /// springs' coordinate `s = (1 - G)/amp` overflows.
 pub const MIN_CURVED_AMP: f64 = 1e-300;
@@ -198,10 +205,10 @@ pub fn history(shape: &Shape, vbar: f64, amp: f64, opts: &HistoryOptions) -> Res
     let mut taus: Vec<(f64, Option<EventKind>)> =
         (0..=samples).map(|j| (total * j as f64 / samples as f64, None)).collect();
     let (units, out) = if shape.is_flat() {
-        ("normal: kz u0; tangential: mu0 kz u0".to_string(), flat_samples(vbar, amp, opts.periods, taus))
+        (UNITS.to_string(), flat_samples(vbar, amp, opts.periods, taus))
     } else {
         taus.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let units = "normal: E* x_c u0; tangential: mu0 E* x_c u0 (x_c: contact radius at u0)".to_string();
+        let units = format!("{UNITS}; chosen springs per unit length: E* u0 and mu0 E* u0");
         (units, foundation_samples(shape.contact(), vbar, amp, opts, &taus)?)
     };
     // Every force is a number: never NaN or inf as an answer.
@@ -261,13 +268,17 @@ fn foundation_samples(
             (g, (amp > 0.0).then(|| Spring::with_events((1.0 - g) / amp, vbar)))
         })
         .collect();
+    // Both sides of the foundation, in units of F0 = F(1).
+    let f0 = c.static_force(1.0);
     Ok(taus
         .iter()
         .map(|&(tau, _)| {
-            // Both sides of the foundation.
-            let normal = c.static_force(1.0 - amp * tau.cos());
-            let tangential =
-                if amp > 0.0 { 2.0 * amp * dz * sp.iter().map(|s| spring_force(s, tau)).sum::<f64>() } else { normal };
+            let normal = c.static_force(1.0 - amp * tau.cos()) / f0;
+            let tangential = if amp > 0.0 {
+                2.0 * amp * dz / f0 * sp.iter().map(|s| spring_force(s, tau)).sum::<f64>()
+            } else {
+                normal
+            };
             let springs = picked
                 .iter()
                 .map(|(g, sp)| {
@@ -325,7 +336,7 @@ pub fn stepped_history(vbar: f64, amp: f64, periods: usize, steps_per_period: us
         shape: "flat".into(),
         vbar,
         amp,
-        units: "normal: kz u0; tangential: mu0 kz u0 (time stepping)".into(),
+        units: format!("{UNITS} (time stepping)"),
         spring_positions: vec![],
         samples,
     })

@@ -19,6 +19,7 @@ pub mod flat_tip;
 pub mod history;
 pub mod mdr;
 pub mod profile;
+pub mod regime;
 pub mod shape;
 
 /// A contact geometry: `mu_macro/mu0` as a function of `vbar` (eq. 3) and

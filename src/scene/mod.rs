@@ -234,29 +234,10 @@ pub struct Row {
     pub mean_friction_force_n: f64,
     /// Mean normal force (N).
     pub mean_normal_force_n: f64,
-    /// `sliding` at or above the critical velocity, else `stick_slip`.
-    pub regime: RowRegime,
-}
-
-/// What the contact does at one velocity.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
-pub enum RowRegime {
-    /// At or above the critical velocity: no spring sticks, `mu = mu0`.
-    Sliding,
-    /// Below it: the springs stick and slip.
-    StickSlip,
-}
-
-impl RowRegime {
-    /// The name outputs print.
-    pub fn name(self) -> &'static str {
-        match self {
-            RowRegime::Sliding => "sliding",
-            RowRegime::StickSlip => "stick_slip",
-        }
-    }
+    /// What the springs do ([`crate::regime`]: `sliding` at or above the
+    /// critical velocity; below it `permanent_contact`, `jumping_slip_first` or
+    /// `jumping_stick_first` for the flat punch, `mixed` or `jumping` for a curved contact).
+    pub regime: crate::ContactRegime,
 }
 
 /// The rows of an answer, kept compact (16 bytes a row: the velocity and
@@ -271,6 +252,8 @@ pub struct Rows {
     amp: f64,
     mu0: f64,
     normal: f64,
+    /// The flat punch (its regime depends on the velocity).
+    flat: bool,
 }
 
 impl Rows {
@@ -286,7 +269,7 @@ impl Rows {
             mu_ratio: mu,
             mean_friction_force_n: mu * self.mu0 * self.normal,
             mean_normal_force_n: self.normal,
-            regime: if vbar >= 1.0 { RowRegime::Sliding } else { RowRegime::StickSlip },
+            regime: crate::regime::regime_of(self.flat, vbar, self.amp),
         })
     }
 

@@ -386,7 +386,8 @@ fn solve_amplitude(
         }
         progress(chunk.len() as u64);
     }
-    let rows = Rows { velocity: c.velocities.clone(), mu_ratio, v_crit, amp, mu0: c.mu0, normal: fbar };
+    let rows =
+        Rows { velocity: c.velocities.clone(), mu_ratio, v_crit, amp, mu0: c.mu0, normal: fbar, flat: shape.is_flat() };
     // Every number of the answer must be finite: an overflow names its field.
     let scalars = [
         ("e_star_pa", c.e_star),

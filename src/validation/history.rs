@@ -1,7 +1,113 @@
-//! Force histories against the exact steady state: errors over the last
+//! Force histories against the exact steady state: the time origin and the
+//! period found from the normal force, errors of both forces over the last
 //! period, periodicity, and the events found from the force against its bound.
+//!
+//! # Units and phase
+//! Forces are in units of the static force `F0`, the normal force at the mean
+//! indentation `u0` without oscillation (`kz u0` for the flat punch, Hertz's
+//! `(4/3) E* R^(1/2) u0^(3/2)` for the paraboloid; [`crate::Contact::static_force`]
+//! at depth 1 in general): normal `/ F0`, tangential `/ (mu0 F0)`. The seed's
+//! phase is `tau = omega t` with the indentation `u0 - du cos tau` (the
+//! shallowest point at `tau = 0`). A file written with another convention
+//! (`u0 + du cos(omega t)`, a sine, a time origin elsewhere) differs by a
+//! constant offset, which the normal force reveals ([`TimeOrigin`]): where the
+//! file has a normal column, its phase is aligned to the seed's before
+//! anything is compared.
 
 use super::*;
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+
+/// The time column of a history.
+#[derive(Debug, Clone, Copy)]
+pub enum TimeAxis<'a> {
+    /// The phase `omega t` itself (radians).
+    Phase(&'a [f64]),
+    /// Times, with the angular frequency `omega` (`tau = omega t`) or without
+    /// it (then the period is found from the normal force).
+    Time {
+        /// The times.
+        t: &'a [f64],
+        /// The angular frequency, in radians per unit of `t`.
+        omega: Option<f64>,
+    },
+}
+
+/// A force history as a file gives it: forces in units of `F0` (module docs).
+#[derive(Debug, Clone, Copy)]
+pub struct HistoryData<'a> {
+    /// The time column.
+    pub time: TimeAxis<'a>,
+    /// Tangential force, units `mu0 F0`.
+    pub tangential: &'a [f64],
+    /// Normal force, units `F0`, if the file has it.
+    pub normal: Option<&'a [f64]>,
+}
+
+/// How the seed's phase of each sample was found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum OriginSource {
+    /// No normal column: the file's phase is taken as the seed's.
+    Assumed,
+    /// From the normal force's first harmonic over the last period.
+    NormalForce,
+}
+
+/// The file's phase against the seed's: `tau_seed = tau_file + offset`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct TimeOrigin {
+    /// How it was found.
+    pub source: OriginSource,
+    /// The offset added to the file's phase, in `(-pi, pi]` (0 when assumed).
+    pub offset: f64,
+    /// The offset in sample spacings of the last period.
+    pub offset_samples: f64,
+    /// The oscillation the file follows, where the offset is a multiple of
+    /// `pi/2` within one sample spacing (it is then taken exactly):
+    /// `u0 - du cos(omega t)` (the seed's), `u0 + du cos(omega t)`,
+    /// `u0 + du sin(omega t)` or `u0 - du sin(omega t)`.
+    pub convention: Option<&'static str>,
+    /// The angular frequency found from the normal force (radians per unit of
+    /// the file's `t`), where none was given.
+    pub omega: Option<f64>,
+}
+
+/// The file's normal force against the exact one over the last period (after aligning).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct NormalComparison {
+    /// Largest `|normal - exact|` (units `F0`).
+    pub max_abs_error: f64,
+    /// Root mean square of the same.
+    pub rms_error: f64,
+    /// The file's mean normal force over the period divided by the exact mean
+    /// (the same quadrature on the same samples): 1 when the units agree.
+    pub mean_ratio: f64,
+}
+
+/// One sample of the last period.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct HistorySample {
+    /// Index of the sample in the file (0-based, header not counted).
+    pub index: usize,
+    /// The seed's phase of the sample (the file's, aligned), in `[0, 2 pi)`.
+    pub tau: f64,
+    /// The exact tangential force (units `mu0 F0`).
+    pub exact: f64,
+    /// The file's.
+    pub yours: f64,
+    /// `yours - exact`.
+    pub error: f64,
+    /// The exact normal force (units `F0`).
+    pub normal_exact: f64,
+    /// The file's, if given.
+    pub normal_yours: Option<f64>,
+    /// `normal_yours - normal_exact`.
+    pub normal_error: Option<f64>,
+}
 
 /// An event found in a user's history, matched to the exact one of its kind.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -9,7 +115,7 @@ use super::*;
 pub struct FoundEvent {
     /// What happened.
     pub kind: crate::spring::EventKind,
-    /// Its phase in the user's history, in `[0, 2 pi)`.
+    /// Its phase in the user's history (aligned), in `[0, 2 pi)`.
     pub tau: f64,
     /// The exact event's phase (absent if the exact solution has none of this kind).
     pub exact_tau: Option<f64>,
@@ -17,7 +123,7 @@ pub struct FoundEvent {
     pub timing_error: Option<f64>,
 }
 
-/// A user's force history against the exact steady state (the flat punch).
+/// A user's force history against the exact steady state.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct HistoryValidation {
@@ -29,16 +135,19 @@ pub struct HistoryValidation {
     pub vbar: f64,
     /// Amplitude.
     pub amp: f64,
-    /// Whole periods in the history.
+    /// The file's phase against the seed's.
+    pub time_origin: TimeOrigin,
+    /// Whole periods in the history (counted from its span, one sample's
+    /// spacing of slack).
     pub periods: usize,
     /// Samples in the last period (compared).
     pub samples: usize,
-    /// Largest `|tangential - exact|` over the last period (units `mu0 kz u0`).
+    /// Largest `|tangential - exact|` over the last period (units `mu0 F0`).
     pub max_abs_error: f64,
     /// Root mean square of the same.
     pub rms_error: f64,
-    /// `(tau, tangential - exact)` at every sample of the last period.
-    pub sample_errors: Vec<(f64, f64)>,
+    /// The normal force against the exact one, if the file gives it.
+    pub normal: Option<NormalComparison>,
     /// Largest change of the tangential force from the previous period to the
     /// last at the same phase (linear interpolation), if there are two periods.
     pub period_drift: Option<f64>,
@@ -50,46 +159,154 @@ pub struct HistoryValidation {
     /// drift's decay between the last periods (absent if it does not decay).
     pub periods_needed: Option<f64>,
     /// The events found in the last period (stick, slip, contact, loss of
-    /// contact: from the force against its Coulomb bound), with their timing errors.
+    /// contact: from the force against its Coulomb bound), with their timing
+    /// errors (the flat punch; a curved contact's total has none).
     pub events: Vec<FoundEvent>,
-    /// Samples (phases, at most 5) of the last period where the tangential force
-    /// exceeds the Coulomb bound `mu0 N` (beyond the tolerance): the switch from
-    /// stick to slip (eq. 8) is missed there.
+    /// Samples (seed's phases, at most 5) of the last period where the
+    /// tangential force exceeds the Coulomb bound `mu0 N` (beyond the tolerance).
     pub above_bound: Vec<f64>,
     /// How many such samples.
     pub above_bound_count: usize,
     /// The exact events of the period.
     pub exact_events: Vec<crate::spring::Event>,
+    /// What looks wrong, with hints (empty: nothing found).
+    pub findings: Vec<Finding>,
+    /// Every sample of the last period.
+    pub last_period: Vec<HistorySample>,
 }
 
-/// Phases of a history's samples from its time column `t`: `t` itself if it is
-/// the phase (`is_tau`), else `omega t`, else (without `omega`) the period and
-/// phase found from the normal force's maxima, where `tau = pi`
-/// (`N ~ 1 - amp cos tau`): the mean spacing of the first and last maxima.
+/// Forces in a file's units into those of [`HistoryData`]: the tangential
+/// force divided by `mu0 F0`, the normal force by `F0` (`static_force`, the
+/// normal force at depth `u0` without oscillation, in the file's units).
 ///
 /// # Errors
-/// [`Error::Parse`] when the time column is not increasing or the period cannot
-/// be found.
-pub fn phases(t: &[f64], is_tau: bool, omega: Option<f64>, normal: Option<&[f64]>) -> Result<Vec<f64>> {
-    if is_tau {
-        return Ok(t.to_vec());
-    }
-    if let Some(w) = omega {
-        if !(w.is_finite() && w > 0.0) {
-            return Err(Error::param("omega", w, "must be finite and > 0"));
+/// [`Error::InvalidParameter`] unless `static_force` and `mu0` are finite and `> 0`.
+pub fn to_static_units(tangential: &mut [f64], normal: Option<&mut [f64]>, static_force: f64, mu0: f64) -> Result<()> {
+    for (name, x) in [("static-force", static_force), ("mu0", mu0)] {
+        if !(x.is_finite() && x > 0.0) {
+            return Err(Error::param(name, x, "must be finite and > 0"));
         }
-        return Ok(t.iter().map(|x| w * x).collect());
     }
+    tangential.iter_mut().for_each(|x| *x /= mu0 * static_force);
+    if let Some(n) = normal {
+        n.iter_mut().for_each(|x| *x /= static_force);
+    }
+    Ok(())
+}
+
+/// Fewest samples the last period of a history must hold to be compared.
+pub const MIN_LAST_SAMPLES: usize = 4;
+
+/// Springs of the reference tangential force of a curved contact's history
+/// (the midpoint grid of the contact's grid; second order in the spacing).
+pub const HISTORY_REFERENCE_SPRINGS: usize = 20_000;
+
+/// How far the file's mean normal force may be from the exact mean (relative)
+/// before it is a [`FindingKind::NormalScale`] finding. Both means use the
+/// same quadrature on the same samples, so a stepper's own error in it is its
+/// spring grid's (1e-5 with 250 springs on the paraboloid); wrong units are off
+/// by tens of percent.
+pub const NORMAL_MEAN_TOLERANCE: f64 = 1e-3;
+
+/// How far (relative to the peak) the aligned normal force may differ from
+/// the exact one before it is a [`FindingKind::NormalShape`] finding.
+pub const NORMAL_SHAPE_TOLERANCE: f64 = 1e-2;
+
+/// How close (in sample spacings) a time origin must be to a multiple of
+/// `pi/2` to be taken as that convention exactly.
+const SNAP_SAMPLES: f64 = 0.01;
+
+/// The period of a history (in units of `t`) from its normal force: the mean
+/// spacing of its crossings of the mid-level `(min + max)/2` in the same
+/// direction (interpolated linearly), upward and downward ones pooled.
+fn period_from_normal(t: &[f64], n: &[f64]) -> Result<f64> {
     let bad = |reason: &str| Error::Parse { context: "history".into(), reason: reason.into() };
-    let n = normal.ok_or_else(|| bad("a time column t needs omega, or a normal column to find the period from"))?;
-    let peaks: Vec<f64> =
-        (1..n.len().saturating_sub(1)).filter(|&i| n[i] > n[i - 1] && n[i] >= n[i + 1]).map(|i| t[i]).collect();
-    if peaks.len() < 2 {
-        return Err(bad("fewer than two maxima of the normal force: give omega"));
+    let (lo, hi) = n.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
+    if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
+        return Err(bad("the normal force is constant: the period cannot be found from it (give omega)"));
     }
-    let period = (peaks[peaks.len() - 1] - peaks[0]) / (peaks.len() - 1) as f64;
-    let w = std::f64::consts::TAU / period;
-    Ok(t.iter().map(|x| std::f64::consts::PI + w * (x - peaks[0])).collect())
+    let mid = lo + 0.5 * (hi - lo);
+    let (mut up, mut down) = (vec![], vec![]);
+    for i in 1..n.len() {
+        let (a, b) = (n[i - 1] - mid, n[i] - mid);
+        if (a < 0.0) != (b < 0.0) {
+            let at = t[i - 1] + (t[i] - t[i - 1]) * a / (a - b);
+            if a < 0.0 { &mut up } else { &mut down }.push(at);
+        }
+    }
+    let (mut span, mut count) = (0.0, 0usize);
+    for c in [&up, &down] {
+        if c.len() >= 2 {
+            span += c[c.len() - 1] - c[0];
+            count += c.len() - 1;
+        }
+    }
+    if count == 0 || span.is_nan() || span <= 0.0 {
+        return Err(bad(
+            "the normal force crosses its mid-level fewer than twice in the same direction: the history is \
+             shorter than about one period (give omega, or more periods)",
+        ));
+    }
+    Ok(span / count as f64)
+}
+
+/// `(int y cos tau, int y sin tau)` over one period by the periodic trapezoid
+/// rule on samples `(tau_i, y_i)` spanning less than a period (the last
+/// interval wraps round from the last sample to the first plus `2 pi`).
+fn first_harmonic(taus: &[f64], y: &[f64]) -> (f64, f64) {
+    let (mut c, mut s) = (0.0, 0.0);
+    let n = taus.len();
+    for i in 0..n {
+        let j = (i + 1) % n;
+        let width = if j == 0 { taus[0] + TAU - taus[n - 1] } else { taus[j] - taus[i] };
+        let (si, ci) = taus[i].sin_cos();
+        let (sj, cj) = taus[j].sin_cos();
+        c += 0.5 * width * (y[i] * ci + y[j] * cj);
+        s += 0.5 * width * (y[i] * si + y[j] * sj);
+    }
+    (c, s)
+}
+
+/// The periodic trapezoid mean of `y` over one period (as [`first_harmonic`]).
+fn periodic_mean(taus: &[f64], y: &[f64]) -> f64 {
+    let n = taus.len();
+    let mut sum = 0.0;
+    for i in 0..n {
+        let j = (i + 1) % n;
+        let width = if j == 0 { taus[0] + TAU - taus[n - 1] } else { taus[j] - taus[i] };
+        sum += 0.5 * width * (y[i] + y[j]);
+    }
+    sum / TAU
+}
+
+/// The offset `d` with `N_file(tau) = N(tau + d)`: every exact normal force is a
+/// decreasing function of `cos tau`, so its first harmonic is `A cos tau` with
+/// `A < 0` and no sine part; shifted by `d` it becomes
+/// `A cos d cos tau - A sin d sin tau`, whence `d = atan2(b, -a)` from the file's
+/// cosine and sine coefficients `a`, `b`. Snapped to a multiple of `pi/2`
+/// within `snap` (the conventions of [`TimeOrigin::convention`]; 0: never).
+/// `None` if the normal force has no first harmonic (it does not oscillate).
+fn origin_offset(taus: &[f64], normal: &[f64], snap: f64) -> Option<(f64, Option<&'static str>)> {
+    let (a, b) = first_harmonic(taus, normal);
+    let peak = normal.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let size = a.hypot(b);
+    if size.is_nan() || size <= 1e-9 * peak {
+        return None;
+    }
+    let d = b.atan2(-a);
+    let conventions = [
+        (0.0, "u0 - du cos(omega t)"),
+        (FRAC_PI_2, "u0 + du sin(omega t)"),
+        (PI, "u0 + du cos(omega t)"),
+        (-FRAC_PI_2, "u0 - du sin(omega t)"),
+        (-PI, "u0 + du cos(omega t)"),
+    ];
+    for (at, name) in conventions {
+        if (d - at).abs() <= snap {
+            return Some((if at == -PI { PI } else { at }, Some(name)));
+        }
+    }
+    Some((d, None))
 }
 
 /// Largest `|F(tau) - F(tau - 2 pi)|` over samples in `[from, to]`, the earlier
@@ -109,7 +326,7 @@ fn drift(taus: &[f64], f: &[f64], from: f64, to: f64) -> Option<f64> {
     let mut worst: Option<f64> = None;
     for (i, &t) in taus.iter().enumerate() {
         if t > from && t <= to {
-            if let Some(prev) = at(t - std::f64::consts::TAU) {
+            if let Some(prev) = at(t - TAU) {
                 worst = Some(worst.unwrap_or(0.0).max((f[i] - prev).abs()));
             }
         }
@@ -117,22 +334,98 @@ fn drift(taus: &[f64], f: &[f64], from: f64, to: f64) -> Option<f64> {
     worst
 }
 
-/// Fewest samples the last period of a history must hold to be compared.
-pub const MIN_LAST_SAMPLES: usize = 4;
+/// Check the columns: equal lengths, finite values, time not decreasing.
+fn check_columns(time: &[f64], data: &HistoryData) -> Result<()> {
+    let n = time.len();
+    if data.tangential.len() != n || data.normal.is_some_and(|x| x.len() != n) {
+        return Err(Error::Parse { context: "history".into(), reason: "the columns differ in length".into() });
+    }
+    for i in 0..n {
+        let bad = |what: &str| Error::Parse { context: format!("history sample {i}"), reason: what.into() };
+        if !time[i].is_finite() || !data.tangential[i].is_finite() || data.normal.is_some_and(|x| !x[i].is_finite()) {
+            return Err(bad("values must be finite"));
+        }
+        if i > 0 && time[i] < time[i - 1] {
+            return Err(bad("the phase (time) must not decrease"));
+        }
+    }
+    Ok(())
+}
 
-/// Springs of the reference tangential force of a curved contact's history
-/// (the midpoint grid of the contact's grid; second order in the spacing).
-pub const HISTORY_REFERENCE_SPRINGS: usize = 20_000;
+/// The file's phases and, without `omega`, the angular frequency found.
+fn file_phases(data: &HistoryData) -> Result<(Vec<f64>, Option<f64>)> {
+    match data.time {
+        TimeAxis::Phase(t) => Ok((t.to_vec(), None)),
+        TimeAxis::Time { t, omega: Some(w) } => {
+            if !(w.is_finite() && w > 0.0) {
+                return Err(Error::param("omega", w, "must be finite and > 0"));
+            }
+            Ok((t.iter().map(|x| w * x).collect(), None))
+        }
+        TimeAxis::Time { t, omega: None } => {
+            let n = data.normal.ok_or_else(|| Error::Parse {
+                context: "history".into(),
+                reason: "a time column t needs omega, or a normal column to find the period from".into(),
+            })?;
+            let w = TAU / period_from_normal(t, n)?;
+            let t0 = t.first().copied().unwrap_or(0.0);
+            Ok((t.iter().map(|x| w * (x - t0)).collect(), Some(w)))
+        }
+    }
+}
 
-/// Compare a force history (phases `taus`, nondecreasing; the tangential force
-/// in units of `mu0 kz u0` for the flat punch, `mu0 E* x_c u0` for other
-/// shapes; the normal force in units of `kz u0` or `E* x_c u0` if known, else
-/// the exact one is used for the Coulomb bound) with the steady state of
-/// `shape` at `(vbar, amp)`: exact for the flat punch; for other shapes the
-/// normal force is exact and the tangential force the sum over
-/// [`HISTORY_REFERENCE_SPRINGS`] springs, and events are not compared (the
-/// total has none). `tolerance` decides "on the bound", "no contact" and
-/// "periodic" (relative to the peak normal force).
+/// The exact forces of `shape` at `(vbar, amp)` in units of `F0` (module docs):
+/// the flat punch's in closed form; a curved contact's normal force from the
+/// static force at each depth, its tangential force summed over
+/// [`HISTORY_REFERENCE_SPRINGS`] springs.
+struct Exact {
+    flat: bool,
+    amp: f64,
+    spring: Spring,
+    springs: Vec<Spring>,
+    /// `2 amp dz / F(1)`: a spring's force (units `mu0 E* du` a unit length) to `mu0 F0`.
+    scale: f64,
+    f0: f64,
+}
+
+impl Exact {
+    fn new(shape: &Shape, vbar: f64, amp: f64) -> Result<Exact> {
+        let flat = shape.is_flat();
+        let spring = crate::flat::spring(vbar, amp, crate::spring::Precision::Events);
+        if flat {
+            return Ok(Exact { flat, amp, spring, springs: vec![], scale: 1.0, f0: 1.0 });
+        }
+        let f0 = shape.contact().static_force(1.0);
+        let (dz, s_of) = crate::contact::grid(shape.contact(), amp, HISTORY_REFERENCE_SPRINGS)?;
+        let springs = (0..HISTORY_REFERENCE_SPRINGS).map(|i| Spring::with_events(s_of(i), vbar)).collect();
+        Ok(Exact { flat, amp, spring, springs, scale: 2.0 * amp * dz / f0, f0 })
+    }
+
+    fn normal(&self, shape: &Shape, tau: f64) -> f64 {
+        if self.flat {
+            crate::flat::forces_at(&self.spring, self.amp, tau).0
+        } else {
+            shape.contact().static_force(1.0 - self.amp * tau.cos()) / self.f0
+        }
+    }
+
+    fn tangential(&self, tau: f64) -> f64 {
+        if self.flat {
+            crate::flat::forces_at(&self.spring, self.amp, tau).1
+        } else {
+            self.scale * self.springs.iter().map(|s| crate::history::spring_force(s, tau)).sum::<f64>()
+        }
+    }
+}
+
+/// Compare a force history ([`HistoryData`], forces in units of `F0`, module
+/// docs) with the steady state of `shape` at `(vbar, amp)`: exact for the flat
+/// punch; for other shapes the normal force is exact and the tangential force
+/// the sum over [`HISTORY_REFERENCE_SPRINGS`] springs, and events are not
+/// compared (the total has none). With a normal column the period (without
+/// `omega`) and the time origin come from it ([`TimeOrigin`]). `tolerance`
+/// decides "on the bound", "no contact" and "periodic" (relative to the peak
+/// normal force).
 ///
 /// # Errors
 /// [`Error::Parse`] for columns of different lengths, too few samples or no whole
@@ -141,63 +434,32 @@ pub fn compare_history(
     shape: &Shape,
     vbar: f64,
     amp: f64,
-    taus: &[f64],
-    tangential: &[f64],
-    normal: Option<&[f64]>,
+    data: &HistoryData,
     tolerance: f64,
 ) -> Result<HistoryValidation> {
-    use crate::spring::EventKind;
-    use std::f64::consts::TAU;
     crate::error::check_nonneg("vbar", vbar)?;
     crate::error::check_nonneg("amp", amp)?;
     crate::error::check_nonneg("tolerance", tolerance)?;
     if amp == 0.0 {
         return Err(Error::param("amp", amp, "a history without oscillation has no period"));
     }
+    let raw_time = match data.time {
+        TimeAxis::Phase(t) | TimeAxis::Time { t, .. } => t,
+    };
+    check_columns(raw_time, data)?;
+    let (taus, found_omega) = file_phases(data)?;
     let n = taus.len();
-    if tangential.len() != n || normal.is_some_and(|x| x.len() != n) {
-        return Err(Error::Parse { context: "history".into(), reason: "the columns differ in length".into() });
-    }
-    for i in 0..n {
-        let bad = |what: &str| Error::Parse { context: format!("history sample {i}"), reason: what.into() };
-        if !taus[i].is_finite() || !tangential[i].is_finite() || normal.is_some_and(|x| !x[i].is_finite()) {
-            return Err(bad("values must be finite"));
-        }
-        if i > 0 && taus[i] < taus[i - 1] {
-            return Err(bad("the phase (time) must not decrease"));
-        }
-    }
+    // Periods from the span, with one sample's spacing of slack: a run of two
+    // periods recorded from one step past a period's start spans 2 pi - h.
+    let spacing_all = taus.windows(2).map(|w| w[1] - w[0]).fold(0.0f64, f64::max).min(PI);
     let span = if n > 1 { taus[n - 1] - taus[0] } else { 0.0 };
-    let periods = (span / TAU + 1e-9).floor() as usize;
+    let periods = ((span + spacing_all) / TAU * (1.0 + 1e-9)).floor() as usize;
     if periods < 1 {
         return Err(Error::Parse {
             context: "history".into(),
             reason: format!("it spans {:.3} periods: at least one whole period is needed", span / TAU),
         });
     }
-    let flat = shape.is_flat();
-    let sp = crate::flat::spring(vbar, amp, crate::spring::Precision::Events);
-    // Curved contacts: the reference springs, and the static force at each depth.
-    let (dz, springs) = if flat {
-        (0.0, vec![])
-    } else {
-        let (dz, s_of) = crate::contact::grid(shape.contact(), amp, HISTORY_REFERENCE_SPRINGS)?;
-        (dz, (0..HISTORY_REFERENCE_SPRINGS).map(|i| Spring::with_events(s_of(i), vbar)).collect())
-    };
-    let exact_normal = |t: f64| {
-        if flat {
-            crate::flat::forces_at(&sp, amp, t).0
-        } else {
-            shape.contact().static_force(1.0 - amp * t.cos())
-        }
-    };
-    let exact_tangential = |t: f64| {
-        if flat {
-            crate::flat::forces_at(&sp, amp, t).1
-        } else {
-            2.0 * amp * dz * springs.iter().map(|s| crate::history::spring_force(s, t)).sum::<f64>()
-        }
-    };
     let end = taus[n - 1];
     let start = end - TAU;
     let last: Vec<usize> = (0..n).filter(|&i| taus[i] > start + 1e-12 * TAU).collect();
@@ -210,18 +472,57 @@ pub fn compare_history(
             ),
         });
     }
-    let mut max_abs = 0.0f64;
-    let mut sample_errors = Vec::with_capacity(last.len());
-    let exact_last: Vec<f64> = crate::numerics::par::map(&last, |&i| exact_tangential(taus[i]));
-    for (&i, &x) in last.iter().zip(&exact_last) {
-        let e = tangential[i] - x;
-        max_abs = max_abs.max(e.abs());
-        sample_errors.push((taus[i], e));
+    let last_taus: Vec<f64> = last.iter().map(|&i| taus[i]).collect();
+    let spacing = last_taus.windows(2).map(|w| w[1] - w[0]).fold(0.0f64, f64::max);
+    let user_normal: Option<Vec<f64>> = data.normal.map(|x| last.iter().map(|&i| x[i]).collect());
+    // A convention is recognised on the file's own time axis only (a found
+    // frequency counts time from the first sample), to a hundredth of a sample:
+    // the first harmonic finds the offset to rounding where the normal force
+    // is smooth, and to a small fraction of a sample where it has kinks.
+    let snap = if found_omega.is_some() { 0.0 } else { SNAP_SAMPLES * spacing };
+    let (offset, convention, source) = match &user_normal {
+        Some(nl) => match origin_offset(&last_taus, nl, snap) {
+            Some((d, c)) => (d, c, OriginSource::NormalForce),
+            None => (0.0, None, OriginSource::Assumed),
+        },
+        None => (0.0, None, OriginSource::Assumed),
+    };
+    let time_origin = TimeOrigin {
+        source,
+        offset,
+        offset_samples: if spacing > 0.0 { offset / spacing } else { 0.0 },
+        convention,
+        omega: found_omega,
+    };
+    let exact = Exact::new(shape, vbar, amp)?;
+    let seed_tau = |i: usize| taus[i] + offset;
+    let exact_t: Vec<f64> = crate::numerics::par::map(&last, |&i| exact.tangential(seed_tau(i)));
+    let exact_n: Vec<f64> = last.iter().map(|&i| exact.normal(shape, seed_tau(i))).collect();
+    let mut samples = Vec::with_capacity(last.len());
+    for (k, &i) in last.iter().enumerate() {
+        let yours_n = data.normal.map(|x| x[i]);
+        samples.push(HistorySample {
+            index: i,
+            tau: seed_tau(i).rem_euclid(TAU),
+            exact: exact_t[k],
+            yours: data.tangential[i],
+            error: data.tangential[i] - exact_t[k],
+            normal_exact: exact_n[k],
+            normal_yours: yours_n,
+            normal_error: yours_n.map(|y| y - exact_n[k]),
+        });
     }
-    let peak =
-        (0..n).map(|i| normal.map_or(exact_normal(taus[i]), |x| x[i])).fold(0.0f64, f64::max).max(f64::MIN_POSITIVE);
-    let period_drift = (periods >= 2).then(|| drift(taus, tangential, start, end)).flatten();
-    let previous_drift = (periods >= 3).then(|| drift(taus, tangential, start - TAU, start)).flatten();
+    let max_abs = samples.iter().fold(0.0f64, |m, s| m.max(s.error.abs()));
+    let normal = user_normal.as_ref().map(|nl| NormalComparison {
+        max_abs_error: samples.iter().filter_map(|s| s.normal_error).fold(0.0f64, |m, e| m.max(e.abs())),
+        rms_error: super::rms(samples.iter().filter_map(|s| s.normal_error)),
+        mean_ratio: periodic_mean(&last_taus, nl) / periodic_mean(&last_taus, &exact_n),
+    });
+    // The bound at each sample: the file's normal force where given.
+    let bound = |i: usize| data.normal.map_or_else(|| exact.normal(shape, seed_tau(i)), |x| x[i]);
+    let peak = (0..n).map(bound).fold(0.0f64, f64::max).max(f64::MIN_POSITIVE);
+    let period_drift = (periods >= 2).then(|| drift(&taus, data.tangential, start, end)).flatten();
+    let previous_drift = (periods >= 3).then(|| drift(&taus, data.tangential, start - TAU, start)).flatten();
     let bar = tolerance * peak;
     let periodic = period_drift.map(|d| d <= bar);
     let periods_needed = match (period_drift, previous_drift) {
@@ -229,9 +530,55 @@ pub fn compare_history(
         (Some(d), Some(p)) if d < p && d > 0.0 => Some(((bar / d).ln() / (d / p).ln()).ceil()),
         _ => None,
     };
-    // States along the last period: 0 no contact, 1 on the bound (slip), 2 below (stick).
+    let exact_events = if exact.flat { crate::flat::point(vbar, amp)?.events } else { vec![] };
+    let above: Vec<usize> = last.iter().copied().filter(|&i| data.tangential[i] > bound(i) + bar).collect();
+    let events = if exact.flat {
+        find_events(&last, &taus, offset, data.tangential, &bound, bar, &exact_events)
+    } else {
+        vec![]
+    };
+    let units = "normal: F0 (the static normal force at depth u0); tangential: mu0 F0".to_string();
+    let mut v = HistoryValidation {
+        shape: shape.name().to_string(),
+        units,
+        vbar,
+        amp,
+        time_origin,
+        periods,
+        samples: last.len(),
+        max_abs_error: max_abs,
+        rms_error: super::rms(samples.iter().map(|s| s.error)),
+        normal,
+        period_drift,
+        previous_drift,
+        periodic,
+        periods_needed,
+        events,
+        above_bound_count: above.len(),
+        above_bound: above.iter().take(FINDING_ROWS).map(|&i| seed_tau(i).rem_euclid(TAU)).collect(),
+        exact_events,
+        findings: vec![],
+        last_period: samples,
+    };
+    v.findings = history_findings(&v, &above, tolerance);
+    Ok(v)
+}
+
+/// The events between consecutive samples of the last period: the state (0 no
+/// contact, 1 on the bound, 2 below it) changes; each matched to the nearest
+/// exact event of its kind.
+fn find_events(
+    last: &[usize],
+    taus: &[f64],
+    offset: f64,
+    tangential: &[f64],
+    bound: &dyn Fn(usize) -> f64,
+    bar: f64,
+    exact_events: &[crate::spring::Event],
+) -> Vec<FoundEvent> {
+    use crate::spring::EventKind;
     let state = |i: usize| {
-        let b = normal.map_or(exact_normal(taus[i]), |x| x[i]);
+        let b = bound(i);
         if b <= bar {
             0
         } else if (tangential[i] - b).abs() <= bar {
@@ -240,15 +587,9 @@ pub fn compare_history(
             2
         }
     };
-    let exact_events = if flat { crate::flat::point(vbar, amp)?.events } else { vec![] };
-    let above: Vec<f64> = last
-        .iter()
-        .filter(|&&i| tangential[i] > normal.map_or(exact_normal(taus[i]), |x| x[i]) + bar)
-        .map(|&i| taus[i].rem_euclid(TAU))
-        .collect();
     let mut found = vec![];
     let mut prev = last.first().map(|&i| state(i));
-    for &i in last.iter().skip(1).filter(|_| flat) {
+    for &i in last.iter().skip(1) {
         let s = state(i);
         let kinds: &[EventKind] = match (prev, s) {
             (Some(0), 1) => &[EventKind::Contact],
@@ -259,39 +600,91 @@ pub fn compare_history(
             _ => &[],
         };
         // The event lies between the two samples: their midpoint.
-        let tau = (0.5 * (taus[i - 1] + taus[i])).rem_euclid(TAU);
+        let tau = (0.5 * (taus[i - 1] + taus[i]) + offset).rem_euclid(TAU);
         for &kind in kinds {
             let exact = exact_events
                 .iter()
                 .filter(|e| e.kind == kind)
-                .map(|e| {
-                    let d = (tau - e.tau + 0.5 * TAU).rem_euclid(TAU) - 0.5 * TAU;
-                    (e.tau, d)
-                })
+                .map(|e| (e.tau, (tau - e.tau + 0.5 * TAU).rem_euclid(TAU) - 0.5 * TAU))
                 .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()));
             found.push(FoundEvent { kind, tau, exact_tau: exact.map(|x| x.0), timing_error: exact.map(|x| x.1) });
         }
         prev = Some(s);
     }
-    let units =
-        if flat { "normal: kz u0; tangential: mu0 kz u0" } else { "normal: E* x_c u0; tangential: mu0 E* x_c u0" };
-    Ok(HistoryValidation {
-        shape: shape.name().to_string(),
-        units: units.into(),
-        vbar,
-        amp,
-        periods,
-        samples: last.len(),
-        max_abs_error: max_abs,
-        rms_error: super::rms(sample_errors.iter().map(|s| s.1)),
-        sample_errors,
-        period_drift,
-        previous_drift,
-        periodic,
-        periods_needed,
-        events: found,
-        above_bound_count: above.len(),
-        above_bound: above.into_iter().take(FINDING_ROWS).collect(),
-        exact_events,
-    })
+    found
+}
+
+fn history_findings(v: &HistoryValidation, above: &[usize], tolerance: f64) -> Vec<Finding> {
+    let mut out = vec![];
+    let e = |x: f64| format!("{x:.3e}");
+    if let Some(nc) = &v.normal {
+        let peak = v.last_period.iter().filter_map(|s| s.normal_yours).fold(0.0f64, f64::max);
+        if (nc.mean_ratio - 1.0).abs() > NORMAL_MEAN_TOLERANCE || !nc.mean_ratio.is_finite() {
+            out.push(general(
+                FindingKind::NormalScale,
+                format!(
+                    "the normal column's mean over the last period is {} times the exact mean: the forces are \
+                     not in units of the static force F0 (give --static-force: the normal force at depth u0 \
+                     without oscillation, in the file's units: kz u0 for the flat punch, (4/3) E* R^1/2 u0^3/2 \
+                     for the paraboloid), or the amplitude or shape differ",
+                    nc.mean_ratio
+                ),
+            ));
+        } else if nc.max_abs_error > NORMAL_SHAPE_TOLERANCE * peak {
+            out.push(general(
+                FindingKind::NormalShape,
+                format!(
+                    "the normal column differs from the exact normal force by up to {} of its peak (after \
+                     aligning the time origin): check the amplitude (--amp), the shape and the time axis (omega)",
+                    e(nc.max_abs_error / peak.max(f64::MIN_POSITIVE))
+                ),
+            ));
+        }
+    }
+    if v.periodic == Some(false) {
+        let more = v
+            .periods_needed
+            .map_or("the drift does not decay from period to period: check the start".to_string(), |k| {
+                format!("about {k} more periods would bring it below the tolerance")
+            });
+        out.push(general(
+            FindingKind::NotPeriodic,
+            format!(
+                "the last period differs from the one before by up to {} (tolerance {tolerance:e} of the peak): \
+                 not yet in steady state; {more}",
+                e(v.period_drift.unwrap_or(f64::NAN))
+            ),
+        ));
+    }
+    out.extend(finding(
+        FindingKind::AboveBound,
+        above.to_vec(),
+        "the tangential force exceeds mu0 times the normal force at these samples: the switch from stick to \
+         slip is missed (check the stick end, eq. 8, and its sign)",
+    ));
+    let found: Vec<_> = v.events.iter().map(|f| f.kind).collect();
+    let missing: Vec<String> = v
+        .exact_events
+        .iter()
+        .filter(|x| !found.contains(&x.kind))
+        .map(|x| format!("{} at tau = {:.6}", event_name(x.kind), x.tau))
+        .collect();
+    if !missing.is_empty() {
+        out.push(general(
+            FindingKind::MissingEvent,
+            format!("the exact {} have no counterpart in the history", missing.join(", ")),
+        ));
+    }
+    out
+}
+
+/// An event kind's name (as JSON writes it).
+pub(crate) fn event_name(k: crate::spring::EventKind) -> &'static str {
+    use crate::spring::EventKind;
+    match k {
+        EventKind::Contact => "contact",
+        EventKind::Stick => "stick",
+        EventKind::Slip => "slip",
+        EventKind::LossOfContact => "loss_of_contact",
+    }
 }

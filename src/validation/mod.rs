@@ -19,17 +19,29 @@
 //! at; they are computed from the table alone (values outside `[0, 1]`, not 1
 //! above the critical velocity, decreasing in `vbar`) or from its errors (errors
 //! growing towards `vbar -> 0`, the signature of a run too short for the steady
-//! state; a `vbar = 0` value that matches the other start).
+//! state; a `vbar = 0` value that matches the other start; `vbar = 0` values as
+//! far off as the rows that stick and slip, although nothing moves there, the
+//! signature of the averaging window, the normalisation or the start; errors
+//! ten times those of the built-in stepping peer at the same resolution). A
+//! finding means something is wrong: the command line exits 1 on any.
 
 mod history;
 mod series;
 
-pub use history::{compare_history, phases, FoundEvent, HistoryValidation, HISTORY_REFERENCE_SPRINGS};
-pub use series::{convergence, observed_order, Convergence, RegimeOrder, SeriesRow};
+pub use history::{
+    compare_history, to_static_units, FoundEvent, HistoryData, HistorySample, HistoryValidation, NormalComparison,
+    OriginSource, TimeAxis, TimeOrigin, HISTORY_REFERENCE_SPRINGS, MIN_LAST_SAMPLES, NORMAL_MEAN_TOLERANCE,
+    NORMAL_SHAPE_TOLERANCE,
+};
+pub use series::{
+    convergence, observed_order, Convergence, Needed, RegimeOrder, RowStatus, SeriesRow, MAX_EXTRAPOLATION, MIN_ORDER,
+};
 
 use crate::error::{Error, Result};
+use crate::regime::ContactRegime;
 use crate::shape::Shape;
-use crate::spring::{Regime, Spring};
+use crate::spring::Spring;
+use crate::stepper::Stepping;
 
 /// The start a `vbar = 0` row is compared with (module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -43,39 +55,41 @@ pub enum AtRest {
     Relaxed,
 }
 
-/// The regime of a point, from the spring at the contact's centre (for the flat
-/// punch, the whole contact): how the tests of other codes usually split.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
-pub enum RowRegime {
-    /// `vbar = 0`: compared with the [`AtRest`] convention.
-    AtRest,
-    /// No spring ever sticks: `vbar >= 1` or `amp = 0` (`mu = mu0`).
-    NoStick,
-    /// `amp <= 1`: the centre never loses contact.
-    PermanentContact,
-    /// `amp > 1`, the centre slips first after contact, then sticks.
-    JumpingSlipFirst,
-    /// `amp > 1`, the centre sticks from the moment of contact.
-    JumpingStickFirst,
+/// What a check compares and how strictly.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct Check {
+    /// What a `vbar = 0` row is compared with.
+    pub at_rest: AtRest,
+    /// How far a value may be from a bound (0, 1) or from monotonicity before
+    /// it is a finding (`>= 0`).
+    pub tolerance: f64,
+    /// Run the built-in stepping peer at this resolution on every row and set
+    /// its error beside the table's ([`FindingKind::WorseThanPeer`]).
+    pub peer: Option<Stepping>,
 }
 
-impl RowRegime {
-    /// The regime of `(vbar, amp)` (both finite and `>= 0`).
+impl Default for Check {
+    fn default() -> Self {
+        Check { at_rest: AtRest::Sliding, tolerance: 1e-9, peer: None }
+    }
+}
+
+impl Check {
+    /// With this `vbar = 0` convention.
     #[must_use]
-    pub fn of(vbar: f64, amp: f64) -> RowRegime {
-        if vbar == 0.0 {
-            return RowRegime::AtRest;
-        }
-        if vbar >= 1.0 || amp == 0.0 {
-            return RowRegime::NoStick;
-        }
-        match Spring::new(crate::flat::spring_s(amp), vbar).regime {
-            Regime::JumpingStickFirst => RowRegime::JumpingStickFirst,
-            Regime::JumpingSlipFirst | Regime::JumpingSlip => RowRegime::JumpingSlipFirst,
-            _ => RowRegime::PermanentContact,
-        }
+    pub fn with_at_rest(self, at_rest: AtRest) -> Self {
+        Check { at_rest, ..self }
+    }
+    /// With this tolerance of the value checks.
+    #[must_use]
+    pub fn with_tolerance(self, tolerance: f64) -> Self {
+        Check { tolerance, ..self }
+    }
+    /// With the stepping peer at this resolution.
+    #[must_use]
+    pub fn with_peer(self, peer: Option<Stepping>) -> Self {
+        Check { peer, ..self }
     }
 }
 
@@ -97,8 +111,13 @@ pub struct Row {
     pub error: f64,
     /// `error / exact` (absent where the exact value is 0).
     pub relative_error: Option<f64>,
-    /// The point's regime.
-    pub regime: RowRegime,
+    /// What the contact's springs do there ([`crate::regime`]).
+    pub regime: ContactRegime,
+    /// The share of the mean normal force carried by springs that lose contact
+    /// ([`crate::regime::jumping_share`]).
+    pub jumping_share: f64,
+    /// The stepping peer's error at the same point and resolution (with a peer).
+    pub peer_error: Option<f64>,
 }
 
 /// Errors of a group of rows.
@@ -154,7 +173,9 @@ impl Summary {
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct RegimeSummary {
     /// The regime.
-    pub regime: RowRegime,
+    pub regime: ContactRegime,
+    /// The smallest and largest share of the load on springs that lose contact.
+    pub jumping_share: [f64; 2],
     /// Its rows' errors.
     #[cfg_attr(feature = "serde", serde(flatten))]
     pub summary: Summary,
@@ -188,6 +209,28 @@ pub enum FindingKind {
     NotSteady,
     /// A `vbar = 0` value that matches the other [`AtRest`] convention.
     AtRestConvention,
+    /// `vbar = 0` values off by as much as the rows that stick and slip.
+    StaticLimit,
+    /// Errors ten times those of the stepping peer at the same resolution.
+    WorseThanPeer,
+    /// A convergence study's rows whose errors do not decrease at an order of
+    /// at least [`MIN_ORDER`].
+    NotConverging,
+    /// A convergence study's rows whose errors do not depend on the resolution.
+    ResolutionIndependent,
+    /// Rows whose Richardson value is further from the exact one than the
+    /// finest run (a caution, not a finding).
+    RichardsonUntrustworthy,
+    /// A history's normal force whose mean disagrees with the exact one.
+    NormalScale,
+    /// A history's normal force that differs in shape from the exact one.
+    NormalShape,
+    /// A history not yet periodic.
+    NotPeriodic,
+    /// A history's tangential force above its Coulomb bound.
+    AboveBound,
+    /// An exact event without counterpart in a history.
+    MissingEvent,
 }
 
 /// Something wrong with the table, and where.
@@ -196,7 +239,7 @@ pub enum FindingKind {
 pub struct Finding {
     /// What.
     pub kind: FindingKind,
-    /// How many rows show it.
+    /// How many rows (or samples) show it; 0 for a finding about the whole input.
     pub count: usize,
     /// The first few of them (input indices).
     pub rows: Vec<usize>,
@@ -225,14 +268,30 @@ pub struct Validation {
     pub rms_error: f64,
     /// The row with the largest `|error|`.
     pub worst: Row,
-    /// Errors per regime, in the order of [`RowRegime`].
+    /// Errors per regime, in the order of [`ContactRegime`].
     pub by_regime: Vec<RegimeSummary>,
     /// Errors per amplitude, in increasing amplitude.
     pub by_amp: Vec<AmpSummary>,
     /// What looks wrong, with hints (empty: nothing found).
     pub findings: Vec<Finding>,
+    /// The stepping peer's errors, with a peer.
+    pub peer: Option<PeerSummary>,
     /// Every row.
     pub rows: Vec<Row>,
+}
+
+/// The stepping peer's errors on the same rows.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct PeerSummary {
+    /// Its time steps per period.
+    pub steps_per_period: usize,
+    /// Its springs (the flat punch has one).
+    pub springs: usize,
+    /// Its largest `|error|`.
+    pub max_abs_error: f64,
+    /// Its root mean square error.
+    pub rms_error: f64,
 }
 
 /// `(vbar, amp, mu_ratio)` rows from a table's columns: `velocity` is `vbar`,
@@ -287,14 +346,13 @@ pub fn exact_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest) -> Resul
     Ok(shape.evaluate(vbar, amp)?.ratio.mu_ratio)
 }
 
-/// Compare `rows` of `(vbar, amp, mu_ratio)` with the exact solver for `shape`;
-/// `tolerance` (`>= 0`) is how far a value may be from a bound (0, 1) or from
-/// monotonicity before it is a finding.
-///
-/// # Errors
-/// [`Error::Parse`] naming the row for a bad value; the solver's errors.
-pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], at_rest: AtRest, tolerance: f64) -> Result<Validation> {
-    crate::error::check_nonneg("tolerance", tolerance)?;
+/// Most stepping-peer work of one check: rows x steps per period x springs
+/// (the stepping peer's own bound on one point, [`crate::stepper::MAX_STEPPING_WORK`]).
+pub const MAX_PEER_WORK: u128 = crate::stepper::MAX_STEPPING_WORK;
+
+/// Check the rows (finite, `vbar, amp >= 0`), the tolerance and the peer's work.
+fn check_rows(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result<()> {
+    crate::error::check_nonneg("tolerance", check.tolerance)?;
     if rows.is_empty() {
         return Err(Error::param("rows", 0.0, "the table has no rows (nothing to validate)"));
     }
@@ -309,32 +367,97 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], at_rest: AtRest, toleran
             });
         }
     }
+    if let Some(st) = check.peer {
+        st.check(shape)?;
+        let springs = if shape.is_flat() { 1 } else { st.springs };
+        let work = rows.len() as u128 * st.steps_per_period as u128 * springs as u128;
+        if work > MAX_PEER_WORK {
+            return Err(Error::TooLarge {
+                what: "stepping-peer work (rows x steps per period x springs)".into(),
+                count: work,
+                limit: MAX_PEER_WORK,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The stepping peer's value at a row, by the same `vbar = 0` convention
+/// (a relaxed start stays at 0 in any stepper).
+fn peer_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest, st: Stepping) -> Result<f64> {
+    if vbar == 0.0 && at_rest == AtRest::Relaxed {
+        return Ok(0.0);
+    }
+    Ok(crate::stepper::evaluate(shape, vbar, amp, st)?.ratio.mu_ratio)
+}
+
+/// Compare `rows` of `(vbar, amp, mu_ratio)` with the exact solver for `shape`,
+/// under `check` (the `vbar = 0` convention, the tolerance of the findings, and
+/// optionally the stepping peer).
+///
+/// # Errors
+/// [`Error::Parse`] naming the row for a bad value; [`Error::TooLarge`] for a
+/// peer beyond [`MAX_PEER_WORK`]; the solver's errors.
+pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result<Validation> {
+    check_rows(shape, rows, check)?;
+    let (at_rest, tolerance) = (check.at_rest, check.tolerance);
     let exact: Vec<Result<f64>> = crate::numerics::par::map(rows, |&(v, a, _)| exact_value(shape, v, a, at_rest));
+    let peer: Option<Vec<f64>> = match check.peer {
+        Some(st) => Some(
+            crate::numerics::par::map(rows, |&(v, a, _)| peer_value(shape, v, a, at_rest, st))
+                .into_iter()
+                .collect::<Result<Vec<f64>>>()?,
+        ),
+        None => None,
+    };
+    let mut amps: Vec<f64> = rows.iter().map(|r| r.1).collect();
+    amps.sort_by(f64::total_cmp);
+    amps.dedup();
+    let shares: Vec<f64> =
+        amps.iter().map(|&a| crate::regime::jumping_share(shape, a)).collect::<Result<Vec<f64>>>()?;
+    let share_of = |a: f64| shares[amps.partition_point(|&x| x < a)];
     let mut out = Vec::with_capacity(rows.len());
     for (i, (&(vbar, amp, mu_ratio), e)) in rows.iter().zip(exact).enumerate() {
         let exact = e?;
         let error = mu_ratio - exact;
-        let relative_error = (exact != 0.0).then(|| error / exact);
-        out.push(Row { row: i, vbar, amp, mu_ratio, exact, error, relative_error, regime: RowRegime::of(vbar, amp) });
+        let peer_error = peer.as_ref().map(|p| p[i] - exact);
+        out.push(Row {
+            row: i,
+            vbar,
+            amp,
+            mu_ratio,
+            exact,
+            error,
+            relative_error: (exact != 0.0).then(|| error / exact),
+            regime: crate::regime::regime(shape, vbar, amp)?,
+            jumping_share: share_of(amp),
+            peer_error,
+        });
     }
     let all = Summary::of(out.iter()).ok_or_else(|| Error::Internal { what: "no rows to summarise".into() })?;
-    let mut regimes: Vec<RowRegime> = out.iter().map(|r| r.regime).collect();
+    let mut regimes: Vec<ContactRegime> = out.iter().map(|r| r.regime).collect();
     regimes.sort();
     regimes.dedup();
     let by_regime = regimes
         .into_iter()
         .filter_map(|g| {
-            Summary::of(out.iter().filter(|r| r.regime == g)).map(|summary| RegimeSummary { regime: g, summary })
+            let group = || out.iter().filter(move |r| r.regime == g);
+            let lo = group().map(|r| r.jumping_share).fold(f64::INFINITY, f64::min);
+            let hi = group().map(|r| r.jumping_share).fold(f64::NEG_INFINITY, f64::max);
+            Summary::of(group()).map(|summary| RegimeSummary { regime: g, jumping_share: [lo, hi], summary })
         })
         .collect();
-    let mut amps: Vec<f64> = out.iter().map(|r| r.amp).collect();
-    amps.sort_by(f64::total_cmp);
-    amps.dedup();
     let by_amp = amps
         .iter()
         .filter_map(|&a| Summary::of(out.iter().filter(|r| r.amp == a)).map(|summary| AmpSummary { amp: a, summary }))
         .collect();
     let findings = findings(shape, &out, &amps, at_rest, tolerance)?;
+    let peer = check.peer.map(|st| PeerSummary {
+        steps_per_period: st.steps_per_period,
+        springs: if shape.is_flat() { 1 } else { st.springs },
+        max_abs_error: out.iter().filter_map(|r| r.peer_error).fold(0.0f64, |m, e| m.max(e.abs())),
+        rms_error: rms(out.iter().filter_map(|r| r.peer_error)),
+    });
     Ok(Validation {
         shape: shape.name().to_string(),
         at_rest,
@@ -346,11 +469,17 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], at_rest: AtRest, toleran
         by_regime,
         by_amp,
         findings,
+        peer,
         rows: out,
     })
 }
 
-fn finding(kind: FindingKind, rows: Vec<usize>, hint: &str) -> Option<Finding> {
+/// A finding about the whole input (no rows: `count` 0).
+pub(crate) fn general(kind: FindingKind, hint: String) -> Finding {
+    Finding { kind, count: 0, rows: vec![], hint }
+}
+
+pub(crate) fn finding(kind: FindingKind, rows: Vec<usize>, hint: &str) -> Option<Finding> {
     (!rows.is_empty()).then(|| Finding {
         kind,
         count: rows.len(),
@@ -452,6 +581,81 @@ fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64
              start: compare with --at-rest sliding"
         }
     };
-    out.extend(finding(FindingKind::AtRestConvention, mismatched, hint));
+    out.extend(finding(FindingKind::AtRestConvention, mismatched.clone(), hint));
+    out.extend(finding(
+        FindingKind::StaticLimit,
+        static_limit(rows, amps, at_rest, tol, &mismatched),
+        "at vbar = 0 nothing sticks or slips (mu/mu0 is the closed form N_min/N_mean: 1 - amp for the flat \
+         punch up to amp = 1), so a stepper gets these rows far more accurately than the rows at sliding \
+         velocities, yet they are as far off: the error is in what every row shares: the averaging (over whole \
+         periods?), the normalisation by the mean normal force, or the start",
+    ));
+    out.extend(finding(
+        FindingKind::WorseThanPeer,
+        worse_than_peer(rows, amps, tol),
+        "errors ten times (or more) those of fricosc's stepping peer (the seed's scheme) at the same resolution: \
+         not the discretisation but a bug (see the peer_error column)",
+    ));
     Ok(out)
+}
+
+/// A `vbar = 0` row's error is a finding when it exceeds this share of the
+/// median error of the same amplitude's rows at `0 < vbar < 1`: a stepper's
+/// error there is the spring grid's alone (none for the flat punch), which
+/// enters every other row too, on top of the stick-slip's.
+const STATIC_SHARE: f64 = 0.25;
+
+/// [`FindingKind::StaticLimit`]: `vbar = 0` rows (compared with the sliding
+/// limit, and not already explained by the other convention) off by more than
+/// [`STATIC_SHARE`] of the median error at the same amplitude's sliding
+/// velocities below 1 (or by more than the tolerance, where there are none).
+fn static_limit(rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64, explained: &[usize]) -> Vec<usize> {
+    if at_rest != AtRest::Sliding {
+        return vec![];
+    }
+    let mut out = vec![];
+    for &a in amps {
+        let mut moving: Vec<f64> =
+            rows.iter().filter(|r| r.amp == a && r.vbar > 0.0 && r.vbar < 1.0).map(|r| r.error.abs()).collect();
+        moving.sort_by(f64::total_cmp);
+        let bar = match moving.len() {
+            0 => tol,
+            n => (STATIC_SHARE * moving[n / 2]).max(tol),
+        };
+        out.extend(
+            rows.iter()
+                .filter(|r| r.amp == a && r.vbar == 0.0 && r.error.abs() > bar && !explained.contains(&r.row))
+                .map(|r| r.row),
+        );
+    }
+    out.sort_unstable();
+    out
+}
+
+/// How many times the peer's error a row's error may be before it is a
+/// [`FindingKind::WorseThanPeer`] finding.
+const PEER_FACTOR: f64 = 10.0;
+
+/// [`FindingKind::WorseThanPeer`]: rows whose error exceeds [`PEER_FACTOR`]
+/// times the peer's there or (where the peer happens to be near a zero of its
+/// error) the median of the peer's errors at the same amplitude.
+fn worse_than_peer(rows: &[Row], amps: &[f64], tol: f64) -> Vec<usize> {
+    let mut out = vec![];
+    for &a in amps {
+        let mut peer: Vec<f64> =
+            rows.iter().filter(|r| r.amp == a).filter_map(|r| r.peer_error.map(f64::abs)).collect();
+        if peer.is_empty() {
+            continue;
+        }
+        peer.sort_by(f64::total_cmp);
+        let median = peer[peer.len() / 2];
+        out.extend(
+            rows.iter()
+                .filter(|r| r.amp == a)
+                .filter(|r| r.peer_error.is_some_and(|p| r.error.abs() > (PEER_FACTOR * p.abs().max(median)).max(tol)))
+                .map(|r| r.row),
+        );
+    }
+    out.sort_unstable();
+    out
 }

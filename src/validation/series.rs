@@ -1,4 +1,15 @@
-//! Convergence studies: the same table at several resolutions, observed orders.
+//! Convergence studies: the same table at several resolutions, observed
+//! orders, and findings for rows that do not converge.
+//!
+//! # Row status
+//! Each row's errors (above rounding) are classed: `exact` (all at rounding),
+//! `resolution_independent` (over a range of resolutions of at least
+//! [`STAGNANT_RANGE`], the finest run's error is within a factor 2 of the
+//! coarsest's: the error is in the model, not the step), `not_converging`
+//! (the observed order is below [`MIN_ORDER`], or the finest error is not below
+//! the coarsest), else `converging`. The needed resolution is given only for
+//! converging rows, and only up to [`MAX_EXTRAPOLATION`] times the finest
+//! resolution (`unreachable` otherwise).
 
 use super::*;
 
@@ -13,8 +24,12 @@ pub struct SeriesRow {
     pub vbar: f64,
     /// Amplitude.
     pub amp: f64,
-    /// The point's regime.
-    pub regime: RowRegime,
+    /// What the contact's springs do there ([`crate::regime`]).
+    pub regime: ContactRegime,
+    /// The share of the mean normal force carried by springs that lose contact.
+    pub jumping_share: f64,
+    /// How its errors behave (module docs).
+    pub status: RowStatus,
     /// The exact value.
     pub exact: f64,
     /// The values, one per resolution (in increasing resolution).
@@ -32,15 +47,60 @@ pub struct SeriesRow {
     /// `richardson - exact`.
     pub richardson_error: Option<f64>,
     /// The resolution at which the fit reaches the target error (with `target`).
-    pub needed_resolution: Option<f64>,
+    pub needed_resolution: Option<Needed>,
 }
+
+/// How a row's errors behave over the series (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum RowStatus {
+    /// Every error at rounding.
+    Exact,
+    /// Errors decreasing at an order of at least [`MIN_ORDER`].
+    Converging,
+    /// Errors not decreasing, or at an order below [`MIN_ORDER`].
+    NotConverging,
+    /// Errors the same at every resolution.
+    ResolutionIndependent,
+}
+
+/// The resolution a row needs for the target error.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Needed {
+    /// This resolution (from the row's fit).
+    Resolution(f64),
+    /// The row does not converge, or the fit asks for more than
+    /// [`MAX_EXTRAPOLATION`] times the finest resolution.
+    Unreachable,
+}
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for Needed {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        match self {
+            Needed::Resolution(r) => s.serialize_f64(*r),
+            Needed::Unreachable => s.serialize_str("unreachable"),
+        }
+    }
+}
+
+/// Smallest observed order of a converging row.
+pub const MIN_ORDER: f64 = 0.5;
+
+/// Largest extrapolation of a needed resolution beyond the finest run.
+pub const MAX_EXTRAPOLATION: f64 = 1e6;
+
+/// Smallest ratio of finest to coarsest resolution over which a row's error
+/// can be called independent of the resolution.
+pub const STAGNANT_RANGE: f64 = 4.0;
 
 /// The orders observed in one regime.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct RegimeOrder {
     /// The regime.
-    pub regime: RowRegime,
+    pub regime: ContactRegime,
     /// Rows with an observed order.
     pub n: usize,
     /// Their median order.
@@ -65,6 +125,31 @@ pub struct Convergence {
     pub rows: Vec<SeriesRow>,
     /// Median, smallest and largest order per regime.
     pub by_regime: Vec<RegimeOrder>,
+    /// What looks wrong (the rows that do not converge, and the finest
+    /// table's own findings), with hints; row numbers are the rows' indices in
+    /// this study.
+    pub findings: Vec<Finding>,
+    /// What to be careful with (rows whose Richardson value is worse than the
+    /// finest run); not findings.
+    pub cautions: Vec<Finding>,
+}
+
+/// The status of a row with errors `errors` at increasing `res` and observed order `p`.
+fn status(res: &[f64], errors: &[f64], p: Option<f64>) -> RowStatus {
+    let above: Vec<(f64, f64)> =
+        res.iter().zip(errors).filter(|(_, e)| e.abs() > ROUNDING_ERROR).map(|(r, e)| (*r, e.abs())).collect();
+    if above.is_empty() {
+        return RowStatus::Exact;
+    }
+    let (coarse, fine) = (errors[0].abs(), errors[errors.len() - 1].abs());
+    let range = res[res.len() - 1] / res[0];
+    if range >= STAGNANT_RANGE && coarse > ROUNDING_ERROR && fine >= 0.5 * coarse && fine <= 2.0 * coarse {
+        return RowStatus::ResolutionIndependent;
+    }
+    if fine >= coarse || p.is_none_or(|p| p < MIN_ORDER) {
+        return RowStatus::NotConverging;
+    }
+    RowStatus::Converging
 }
 
 /// Least squares of `y = a + b x`: `(a, b)`.
@@ -108,9 +193,10 @@ pub fn convergence(
     shape: &Shape,
     resolutions: &[f64],
     tables: &[Vec<(f64, f64, f64)>],
-    at_rest: AtRest,
+    check: &Check,
     target: Option<f64>,
 ) -> Result<Convergence> {
+    let at_rest = check.at_rest;
     if resolutions.len() != tables.len() || resolutions.len() < 2 {
         return Err(Error::param("resolutions", resolutions.len() as f64, "a series needs two tables or more"));
     }
@@ -143,14 +229,25 @@ pub fn convergence(
         let ratio = res[n - 1] / res[n - 2];
         let richardson =
             p.filter(|p| *p > 0.0).map(|p| values[n - 1] + (values[n - 1] - values[n - 2]) / (ratio.powf(p) - 1.0));
-        let needed = match (target, p, constant) {
-            (Some(t), Some(p), Some(c)) if p > 0.0 => Some((c / t).powf(1.0 / p)),
-            _ => None,
-        };
+        let status = status(&res, &errors, p);
+        let needed = target.map(|t| match (p, constant) {
+            (Some(p), Some(c)) if status == RowStatus::Converging => {
+                let m = (c / t).powf(1.0 / p);
+                if m.is_finite() && m <= MAX_EXTRAPOLATION * res[n - 1] {
+                    Needed::Resolution(m)
+                } else {
+                    Needed::Unreachable
+                }
+            }
+            _ if status == RowStatus::Exact => Needed::Resolution(res[0]),
+            _ => Needed::Unreachable,
+        });
         rows.push(SeriesRow {
             vbar,
             amp,
-            regime: RowRegime::of(vbar, amp),
+            regime: crate::regime::regime(shape, vbar, amp)?,
+            jumping_share: crate::regime::jumping_share(shape, amp)?,
+            status,
             exact,
             values,
             errors,
@@ -161,7 +258,7 @@ pub fn convergence(
             needed_resolution: needed,
         });
     }
-    let mut regimes: Vec<RowRegime> = rows.iter().map(|r| r.regime).collect();
+    let mut regimes: Vec<ContactRegime> = rows.iter().map(|r| r.regime).collect();
     regimes.sort();
     regimes.dedup();
     let by_regime = regimes
@@ -179,5 +276,44 @@ pub fn convergence(
             })
         })
         .collect();
-    Ok(Convergence { shape: shape.name().to_string(), resolutions: res, target, rows, by_regime })
+    let finest: Vec<(f64, f64, f64)> = rows.iter().map(|r| (r.vbar, r.amp, r.values[r.values.len() - 1])).collect();
+    let mut findings = compare(shape, &finest, &check.with_peer(None))?.findings;
+    findings.extend(series_findings(&rows));
+    let richardson: Vec<usize> = rows
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| {
+            r.richardson_error.is_some_and(|e| e.abs() > r.errors[r.errors.len() - 1].abs() && e.abs() > ROUNDING_ERROR)
+        })
+        .map(|(i, _)| i)
+        .collect();
+    let cautions = finding(
+        FindingKind::RichardsonUntrustworthy,
+        richardson,
+        "the Richardson value of these rows is further from the exact one than the finest run: their errors do \
+         not follow one order (e.g. first order and erratic where a stick starts at the onset of contact); use \
+         the finest value",
+    )
+    .into_iter()
+    .collect();
+    Ok(Convergence { shape: shape.name().to_string(), resolutions: res, target, rows, by_regime, findings, cautions })
+}
+
+/// The findings of a study's rows: not converging, resolution-independent.
+fn series_findings(rows: &[SeriesRow]) -> Vec<Finding> {
+    let with = |st: RowStatus| rows.iter().enumerate().filter(|(_, r)| r.status == st).map(|(i, _)| i).collect();
+    let mut out = vec![];
+    out.extend(finding(
+        FindingKind::ResolutionIndependent,
+        with(RowStatus::ResolutionIndependent),
+        "the error of these rows is the same at every resolution: it comes from the model, not the step (the \
+         averaging window, the springs included, the normalisation, a formula), and refining will not remove it",
+    ));
+    out.extend(finding(
+        FindingKind::NotConverging,
+        with(RowStatus::NotConverging),
+        "the error of these rows does not decrease with the resolution at an order of 0.5 or more: check that \
+         every spring that touches during the period is included and that the run reaches the steady state",
+    ));
+    out
 }

@@ -3,9 +3,9 @@
 
 use super::{io_err, nonneg, number, positive, read_input, Outcome};
 use crate::cli::error::{Error, Result};
-use crate::cli::grid::parse_number;
 use crate::shape::Shape;
-use crate::validation::{AtRest, Convergence, HistoryValidation, Validation};
+use crate::stepper::Stepping;
+use crate::validation::{AtRest, Check, Convergence, HistoryData, HistoryValidation, TimeAxis, Validation};
 use std::io::{self, IsTerminal, Write};
 
 /// The options of `validate`.
@@ -27,7 +27,7 @@ pub struct ValidateArgs {
     /// With --series: the target error for the needed resolution.
     #[arg(long, allow_hyphen_values = true, value_parser = positive, requires = "series")]
     pub target: Option<f64>,
-    /// With --series: draw the errors against the resolution into this file (SVG or PNG by its extension).
+    /// With --series: draw the errors against the resolution into this file (.svg or .png).
     #[arg(long, requires = "series")]
     pub plot: Option<String>,
     #[command(flatten)]
@@ -35,6 +35,16 @@ pub struct ValidateArgs {
     /// Largest acceptable |mu_ratio - exact| (exit 1 beyond it).
     #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
     pub max_error: Option<f64>,
+    /// Exit 0 whatever the findings and errors (the report is printed all the same).
+    #[arg(long)]
+    pub report_only: bool,
+    /// Run fricosc's stepping peer (the seed's scheme) at M steps per period on every row
+    /// and set its error beside yours (findings where yours is ten times its).
+    #[arg(long, value_name = "M", value_parser = clap::value_parser!(u64).range(1..=100_000_000), conflicts_with_all = ["series", "on"])]
+    pub peer: Option<u64>,
+    /// With --peer and a curved shape: the peer's springs (default: M).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=100_000_000), requires = "peer")]
+    pub peer_springs: Option<u64>,
     /// What a vbar = 0 row is compared with: 'sliding' (the limit vbar -> 0+, mu_static) or
     /// 'relaxed' (a stepper started from relaxed springs at exactly zero velocity: 0).
     #[arg(long, default_value = "sliding")]
@@ -47,8 +57,8 @@ pub struct ValidateArgs {
     /// before it is reported as a finding.
     #[arg(long, default_value = "1e-9", allow_hyphen_values = true, value_parser = nonneg)]
     pub tolerance: f64,
-    /// summary (a short report; the default on a terminal), json (the default otherwise) or csv
-    /// (one line per row).
+    /// summary (a short report; the default on a terminal), json (compact; the default
+    /// otherwise) or csv (one line per row; with --history one per sample of the last period).
     #[arg(long)]
     pub format: Option<String>,
 }
@@ -56,9 +66,10 @@ pub struct ValidateArgs {
 /// The options of `validate --history`.
 #[derive(clap::Args)]
 pub struct HistoryArgs {
-    /// The file is a force history (CSV: tau or t, tangential, optionally normal; forces in
-    /// units of kz u0 and mu0 kz u0) at --vbar (or --vhat) and --amp: errors over the last period,
-    /// periodicity, and the stick/slip/contact events with timing errors.
+    /// The file is a force history (columns tau or t, tangential, optionally normal; forces in
+    /// units of the static force F0 and mu0 F0, or yours with --static-force and --mu0) at --vbar
+    /// (or --vhat) and --amp: the time origin from the normal force, errors of both forces over the
+    /// last period, periodicity, and the stick/slip/contact events with timing errors.
     #[arg(long = "history", requires = "amp")]
     pub on: bool,
     /// With --history: the velocity vbar (eq. 3).
@@ -71,13 +82,15 @@ pub struct HistoryArgs {
     #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "on")]
     pub amp: Option<f64>,
     /// With --history and a time column t: the angular frequency (tau = omega t); without it
-    /// the period and phase are found from the normal force's maxima (at tau = pi).
+    /// the period is found from the normal force.
     #[arg(long, allow_hyphen_values = true, value_parser = positive, requires = "on")]
     pub omega: Option<f64>,
-    /// With --history: forces in your units, where the static normal force kz u0 is this value
-    /// (normal / kz_u0; tangential / (mu0 kz_u0) with --mu0). Default: already normalised.
-    #[arg(long, allow_hyphen_values = true, value_parser = positive, requires = "on")]
-    pub kz_u0: Option<f64>,
+    /// With --history: forces in your units, where F0, the normal force at the mean
+    /// indentation u0 without oscillation, is this value (normal / F0; tangential / (mu0 F0)
+    /// with --mu0): kz u0 for the flat punch, (4/3) E* R^1/2 u0^3/2 for the paraboloid (Hertz).
+    /// Default: already normalised.
+    #[arg(long, visible_alias = "kz-u0", allow_hyphen_values = true, value_parser = positive, requires = "on")]
+    pub static_force: Option<f64>,
 }
 
 /// Where the shape came from.
@@ -94,11 +107,38 @@ struct Report<'a> {
     #[serde(flatten)]
     validation: &'a Validation,
     shape_source: ShapeSource,
+    format: &'a str,
     #[serde(skip_serializing_if = "<[String]>::is_empty")]
     ignored_columns: &'a [String],
 }
 
-/// Prints the comparison; [`Outcome::Negative`] when `--max-error` is exceeded.
+/// Compact JSON (one line) of a report, newline-terminated.
+fn compact<T: serde::Serialize>(value: &T) -> Result<String> {
+    serde_json::to_string(value)
+        .map(|s| s + "\n")
+        .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
+}
+
+/// Write a report to stdout.
+fn print(body: &str) -> Result<()> {
+    let mut out = io::BufWriter::new(io::stdout().lock());
+    out.write_all(body.as_bytes()).map_err(io_err)?;
+    out.flush().map_err(io_err)
+}
+
+/// The exit: [`Outcome::Negative`] on findings or an error beyond `--max-error`,
+/// unless `--report-only`.
+fn outcome(a: &ValidateArgs, findings: bool, max_abs_error: f64) -> Outcome {
+    // A NaN error is beyond any bound.
+    let beyond = a.max_error.is_some_and(|e| max_abs_error.is_nan() || max_abs_error > e);
+    if !a.report_only && (findings || beyond) {
+        Outcome::Negative
+    } else {
+        Outcome::Done
+    }
+}
+
+/// Prints the comparison; [`Outcome::Negative`] on findings or beyond `--max-error`.
 pub fn run(a: ValidateArgs) -> Result<Outcome> {
     let max_error = a.max_error;
     let at_rest = match a.at_rest.as_str() {
@@ -125,14 +165,15 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
         None => "json".into(),
     };
     let h = &a.history;
+    let check = Check::default().with_at_rest(at_rest).with_tolerance(tolerance);
     if a.series {
         if h.on {
             return run_history_series(&a, h, mu0, tolerance, &format);
         }
-        return run_series(&a, at_rest, mu0, &format);
+        return run_series(&a, &check, mu0, &format);
     }
     if h.on {
-        return run_history(&a, h, mu0, tolerance, &format, max_error);
+        return run_history(&a, h, mu0, tolerance, &format);
     }
     if a.files.len() != 1 || a.target.is_some() || a.plot.is_some() {
         return Err(Error::Parse {
@@ -145,17 +186,17 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
     drop(text);
     let (shape, shape_source) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
     let rows = crate::cli::validate::normalise(&table, mu0, &source)?;
-    let v = crate::validation::compare(&shape, &rows, at_rest, tolerance)?;
-    let report = Report { validation: &v, shape_source, ignored_columns: &table.ignored_columns };
+    let peer = a.peer.map(|m| Stepping { steps_per_period: m as usize, springs: a.peer_springs.unwrap_or(m) as usize });
+    let v = crate::validation::compare(&shape, &rows, &check.with_peer(peer))?;
+    let report =
+        Report { validation: &v, shape_source, format: &table.format, ignored_columns: &table.ignored_columns };
     let body = match format.as_str() {
-        "json" => super::to_json(&report)? + "\n",
+        "json" => compact(&report)?,
         "csv" => crate::cli::validate::rows_csv(&v)?,
-        _ => crate::cli::validate::summary(&v, &report_source(&report), &table.ignored_columns),
+        _ => crate::cli::validate::summary(&v, &report_source(&report), &table),
     };
-    let mut out = io::BufWriter::new(io::stdout().lock());
-    out.write_all(body.as_bytes()).map_err(io_err)?;
-    out.flush().map_err(io_err)?;
-    Ok(if max_error.is_none_or(|e| v.max_abs_error <= e) { Outcome::Done } else { Outcome::Negative })
+    print(&body)?;
+    Ok(outcome(&a, !v.findings.is_empty(), max_error.map_or(0.0, |_| v.max_abs_error)))
 }
 
 fn report_source(r: &Report) -> String {
@@ -219,7 +260,7 @@ struct SeriesReport<'a> {
     shape_source: ShapeSource,
 }
 
-fn run_series(a: &ValidateArgs, at_rest: AtRest, mu0: Option<f64>, format: &str) -> Result<Outcome> {
+fn run_series(a: &ValidateArgs, check: &Check, mu0: Option<f64>, format: &str) -> Result<Outcome> {
     let target = a.target;
     if let Some(path) = &a.plot {
         super::drawing_kind("--plot", path)?;
@@ -248,30 +289,29 @@ fn run_series(a: &ValidateArgs, at_rest: AtRest, mu0: Option<f64>, format: &str)
         resolutions.push(n);
     }
     let (shape, shape_source) = chosen.ok_or_else(|| Error::Internal { what: "an empty series".into() })?;
-    let c = crate::validation::convergence(&shape, &resolutions, &tables, at_rest, target)?;
+    let c = crate::validation::convergence(&shape, &resolutions, &tables, check, target)?;
     if let Some(path) = &a.plot {
         let svg = crate::cli::validate::series_svg(&c)?;
         super::write_drawing("--plot", path, &svg)?;
     }
     let body = match format {
-        "json" => super::to_json(&SeriesReport { convergence: &c, shape_source })? + "\n",
+        "json" => compact(&SeriesReport { convergence: &c, shape_source })?,
         "csv" => crate::cli::validate::series_csv(&c)?,
         _ => crate::cli::validate::series_summary(&c),
     };
-    let mut out = io::BufWriter::new(io::stdout().lock());
-    out.write_all(body.as_bytes()).map_err(io_err)?;
-    out.flush().map_err(io_err)?;
-    Ok(Outcome::Done)
+    print(&body)?;
+    let worst = c.rows.iter().filter_map(|r| r.errors.last()).fold(0.0f64, |m, e| m.max(e.abs()));
+    Ok(outcome(a, !c.findings.is_empty(), if a.max_error.is_some() { worst } else { 0.0 }))
 }
 
-/// Read and compare one history file.
+/// Read and compare one history file; also how it was read.
 fn history_of(
     a: &ValidateArgs,
     h: &HistoryArgs,
     file: &str,
     mu0: Option<f64>,
     tolerance: f64,
-) -> Result<HistoryValidation> {
+) -> Result<(HistoryValidation, String)> {
     let shape = match &a.shape {
         Some(spec) => crate::cli::input::parse_shape(spec)?,
         None => Shape::flat(),
@@ -282,78 +322,39 @@ fn history_of(
         (None, Some(v)) => super::vbar_of(v, amp)?,
         _ => return Err(Error::Parse { context: "--history".into(), reason: "needs one of --vbar and --vhat".into() }),
     };
-    let omega = h.omega;
     let (text, source) = read_input(Some(file.to_string()))?;
-    let err = |reason: String| Error::Parse { context: source.clone(), reason };
-    let mut rd = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
-    let header: Vec<String> =
-        rd.headers().map_err(|e| err(format!("CSV header: {e}")))?.iter().map(str::to_string).collect();
-    let col = |name: &str| header.iter().position(|h| h == name);
-    let (time, is_tau) = match (col("tau"), col("t")) {
-        (Some(c), None) => (c, true),
-        (None, Some(c)) => (c, false),
-        (Some(_), Some(_)) => return Err(err("both 'tau' and 't' given: one time column only".into())),
-        (None, None) => return Err(err("CSV header lacks column 'tau' (or 't')".into())),
-    };
-    let tangential = col("tangential").ok_or_else(|| err("CSV header lacks column 'tangential'".into()))?;
-    let normal_col = col("normal");
-    let (mut t, mut ft, mut fnorm) = (vec![], vec![], vec![]);
-    for (i, rec) in rd.records().enumerate() {
-        let rec = rec.map_err(|e| err(format!("row {i}: {e}")))?;
-        let get = |c: usize, name: &str| parse_number(&format!("{source}: row {i}: {name}"), rec.get(c).unwrap_or(""));
-        t.push(get(time, "time")?);
-        ft.push(get(tangential, "tangential")?);
-        if let Some(c) = normal_col {
-            fnorm.push(get(c, "normal")?);
-        }
-        if t.len() > crate::cli::grid::MAX_ROWS {
-            return Err(Error::TooLarge {
-                what: format!("rows of {source}"),
-                count: t.len() as u128,
-                limit: crate::cli::grid::MAX_ROWS as u128,
-            });
-        }
+    let c = crate::cli::validate::read_history(&text, &source, h.static_force.unwrap_or(1.0), mu0.unwrap_or(1.0))?;
+    drop(text);
+    let time = if c.is_tau { TimeAxis::Phase(&c.time) } else { TimeAxis::Time { t: &c.time, omega: h.omega } };
+    if c.is_tau && h.omega.is_some() {
+        return Err(Error::Parse {
+            context: source,
+            reason: "--omega is given, but the time column is the phase tau".into(),
+        });
     }
-    // Forces in the user's units: normal / (kz u0), tangential / (mu0 kz u0).
-    let unit = h.kz_u0.unwrap_or(1.0);
-    let mu0 = mu0.unwrap_or(1.0);
-    for (name, x) in [("kz-u0", unit), ("mu0", mu0)] {
-        if !(x.is_finite() && x > 0.0) {
-            return Err(Error::param(name, x, "must be finite and > 0"));
-        }
-    }
-    fnorm.iter_mut().for_each(|x| *x /= unit);
-    ft.iter_mut().for_each(|x| *x /= mu0 * unit);
-    let normal = normal_col.map(|_| fnorm.as_slice());
-    let taus = crate::validation::phases(&t, is_tau, omega, normal)
-        .map_err(|e| Error::Parse { context: source.clone(), reason: e.to_string() })?;
-    Ok(crate::validation::compare_history(&shape, vbar, amp, &taus, &ft, normal, tolerance)?)
+    let data = HistoryData { time, tangential: &c.tangential, normal: c.normal.as_deref() };
+    let v = crate::validation::compare_history(&shape, vbar, amp, &data, tolerance).map_err(|e| match e {
+        crate::Error::Parse { context, reason } => Error::Parse { context: format!("{source}: {context}"), reason },
+        e => Error::Core(e),
+    })?;
+    Ok((v, c.format))
 }
 
-fn run_history(
-    a: &ValidateArgs,
-    h: &HistoryArgs,
-    mu0: Option<f64>,
-    tolerance: f64,
-    format: &str,
-    max_error: Option<f64>,
-) -> Result<Outcome> {
+fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f64, format: &str) -> Result<Outcome> {
     if a.files.len() != 1 {
         return Err(Error::Parse {
             context: "--history".into(),
             reason: "takes one file (several with --series)".into(),
         });
     }
-    let v = history_of(a, h, &a.files[0], mu0, tolerance)?;
+    let (v, read_as) = history_of(a, h, &a.files[0], mu0, tolerance)?;
     let body = match format {
-        "json" => super::to_json(&v)? + "\n",
-        "csv" => crate::cli::validate::events_csv(&v)?,
-        _ => crate::cli::validate::history_summary(&v),
+        "json" => compact(&v)?,
+        "csv" => crate::cli::validate::history_csv(&v)?,
+        _ => crate::cli::validate::history_summary(&v, &read_as),
     };
-    let mut out = io::BufWriter::new(io::stdout().lock());
-    out.write_all(body.as_bytes()).map_err(io_err)?;
-    out.flush().map_err(io_err)?;
-    Ok(if max_error.is_none_or(|e| v.max_abs_error <= e) { Outcome::Done } else { Outcome::Negative })
+    print(&body)?;
+    Ok(outcome(a, !v.findings.is_empty(), v.max_abs_error))
 }
 
 /// The convergence of a series of histories: per resolution the largest error
@@ -366,6 +367,8 @@ struct HistorySeries {
     constant: Option<f64>,
     /// Per event kind: the timing errors (one per resolution) and their order.
     events: Vec<EventSeries>,
+    /// The findings of the finest history.
+    findings: Vec<crate::validation::Finding>,
 }
 
 #[derive(serde::Serialize)]
@@ -388,7 +391,7 @@ fn run_history_series(
     let mut runs = vec![];
     for arg in &a.files {
         let (file, n) = file_and_resolution(arg)?;
-        runs.push((n, history_of(a, h, &file, mu0, tolerance)?));
+        runs.push((n, history_of(a, h, &file, mu0, tolerance)?.0));
     }
     runs.sort_by(|x, y| x.0.total_cmp(&y.0));
     let resolutions: Vec<f64> = runs.iter().map(|r| r.0).collect();
@@ -403,11 +406,15 @@ fn run_history_series(
                 runs.iter().map(|r| r.1.events.iter().find(|e| e.kind == k).and_then(|e| e.timing_error)).collect();
             let (res, errs): (Vec<f64>, Vec<f64>) =
                 resolutions.iter().zip(&timing_errors).filter_map(|(r, e)| e.map(|e| (*r, e))).unzip();
-            let name = serde_json::to_value(k).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default();
-            EventSeries { kind: name, timing_errors, order: crate::validation::observed_order(&res, &errs).0 }
+            EventSeries {
+                kind: crate::cli::validate::json_name(k),
+                timing_errors,
+                order: crate::validation::observed_order(&res, &errs).0,
+            }
         })
         .collect();
-    let report = HistorySeries { resolutions, max_abs_errors, order, constant, events };
+    let findings = runs.last().map(|r| r.1.findings.clone()).unwrap_or_default();
+    let report = HistorySeries { resolutions, max_abs_errors, order, constant, events, findings };
     let body = match format {
         "csv" => {
             let mut t = String::from("resolution,max_abs_error\n");
@@ -416,7 +423,7 @@ fn run_history_series(
             }
             t
         }
-        "json" => super::to_json(&report)? + "\n",
+        "json" => compact(&report)?,
         _ => {
             let o = |p: Option<f64>| p.map_or("-".into(), |p| format!("{p:.2}"));
             let mut t = format!(
@@ -431,11 +438,15 @@ fn run_history_series(
             for ev in &report.events {
                 t += &format!("  event {:<16} timing order {}\n", ev.kind, o(ev.order));
             }
-            t
+            t + &crate::cli::validate::findings_text(
+                "Findings of the finest history",
+                &report.findings,
+                "none",
+                "sample",
+            )
         }
     };
-    let mut out = io::BufWriter::new(io::stdout().lock());
-    out.write_all(body.as_bytes()).map_err(io_err)?;
-    out.flush().map_err(io_err)?;
-    Ok(Outcome::Done)
+    print(&body)?;
+    let worst = report.max_abs_errors.last().copied().unwrap_or(0.0);
+    Ok(outcome(a, !report.findings.is_empty(), worst))
 }

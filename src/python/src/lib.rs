@@ -12,7 +12,10 @@
 use fricosc::error::check_nonneg;
 use fricosc::history::{history as core_history, HistoryOptions, Sample};
 use fricosc::profile::Table;
-use fricosc::validation::{compare, compare_history, phases, rows_from_columns, AtRest};
+use fricosc::stepper::Stepping;
+use fricosc::validation::{
+    compare, compare_history, convergence, rows_from_columns, to_static_units, AtRest, Check, HistoryData, TimeAxis,
+};
 use fricosc::{Error, Options, Shape};
 use numpy::{IntoPyArray, PyArray3, PyArrayDyn, PyArrayMethods, PyReadonlyArray1, PyReadonlyArrayDyn};
 use pyo3::create_exception;
@@ -247,7 +250,7 @@ fn history<'py>(
 /// A table's comparison with the exact values (`fricosc validate`'s report) as a
 /// dict: columns as [`rows_from_columns`] reads them.
 #[pyfunction]
-#[pyo3(signature = (shape, velocity, amp, friction, vhat, mu, mu0, at_rest, tolerance))]
+#[pyo3(signature = (shape, velocity, amp, friction, vhat, mu, mu0, at_rest, tolerance, peer, peer_springs))]
 #[allow(clippy::too_many_arguments)]
 fn validate<'py>(
     py: Python<'py>,
@@ -260,23 +263,68 @@ fn validate<'py>(
     mu0: Option<f64>,
     at_rest: &str,
     tolerance: f64,
+    peer: Option<usize>,
+    peer_springs: Option<usize>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let at_rest = match at_rest {
-        "sliding" => AtRest::Sliding,
-        "relaxed" => AtRest::Relaxed,
-        other => return Err(InputError::new_err(format!("at_rest: '{other}' is neither 'sliding' nor 'relaxed'"))),
-    };
-    let (v, a, m) = (velocity.as_array().to_vec(), amp.as_array().to_vec(), friction.as_array().to_vec());
-    let rows = rows_from_columns(&v, &a, &m, vhat, mu, mu0).map_err(to_py)?;
+    let check = Check::default()
+        .with_at_rest(at_rest_of(at_rest)?)
+        .with_tolerance(tolerance)
+        .with_peer(peer.map(|m| Stepping { steps_per_period: m, springs: peer_springs.unwrap_or(m) }));
+    let rows = table_rows(&velocity, &amp, &friction, vhat, mu, mu0)?;
     let shape = &shape.inner;
-    let result = py.detach(|| compare(shape, &rows, at_rest, tolerance)).map_err(to_py)?;
+    let result = py.detach(|| compare(shape, &rows, &check)).map_err(to_py)?;
+    pythonize::pythonize(py, &result).map_err(serialise_err)
+}
+
+fn at_rest_of(at_rest: &str) -> PyResult<AtRest> {
+    match at_rest {
+        "sliding" => Ok(AtRest::Sliding),
+        "relaxed" => Ok(AtRest::Relaxed),
+        other => Err(InputError::new_err(format!("at_rest: '{other}' is neither 'sliding' nor 'relaxed'"))),
+    }
+}
+
+/// `(vbar, amp, mu_ratio)` rows of a table's columns ([`rows_from_columns`]).
+fn table_rows(
+    velocity: &PyReadonlyArray1<'_, f64>,
+    amp: &PyReadonlyArray1<'_, f64>,
+    friction: &PyReadonlyArray1<'_, f64>,
+    vhat: bool,
+    mu: bool,
+    mu0: Option<f64>,
+) -> PyResult<Vec<(f64, f64, f64)>> {
+    let (v, a, m) = (velocity.as_array().to_vec(), amp.as_array().to_vec(), friction.as_array().to_vec());
+    rows_from_columns(&v, &a, &m, vhat, mu, mu0).map_err(to_py)
+}
+
+/// A convergence study (`fricosc validate --series`'s report) as a dict: one
+/// table of columns per resolution.
+#[pyfunction]
+#[pyo3(signature = (shape, resolutions, tables, vhat, mu, mu0, at_rest, tolerance, target))]
+#[allow(clippy::too_many_arguments)]
+fn validate_series<'py>(
+    py: Python<'py>,
+    shape: &CoreShape,
+    resolutions: Vec<f64>,
+    tables: Vec<(PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>)>,
+    vhat: bool,
+    mu: bool,
+    mu0: Option<f64>,
+    at_rest: &str,
+    tolerance: f64,
+    target: Option<f64>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let check = Check::default().with_at_rest(at_rest_of(at_rest)?).with_tolerance(tolerance);
+    let rows = tables.iter().map(|(v, a, m)| table_rows(v, a, m, vhat, mu, mu0)).collect::<PyResult<Vec<_>>>()?;
+    let shape = &shape.inner;
+    let result = py.detach(|| convergence(shape, &resolutions, &rows, &check, target)).map_err(to_py)?;
     pythonize::pythonize(py, &result).map_err(serialise_err)
 }
 
 /// A force history against the exact one (`fricosc validate --history`'s
 /// report) as a dict.
 #[pyfunction]
-#[pyo3(signature = (shape, time, is_tau, tangential, normal, v, a, vhat, omega, tolerance))]
+#[pyo3(signature = (shape, time, is_tau, tangential, normal, v, a, vhat, omega, tolerance, static_force, mu0))]
 #[allow(clippy::too_many_arguments)]
 fn validate_history<'py>(
     py: Python<'py>,
@@ -290,14 +338,18 @@ fn validate_history<'py>(
     vhat: bool,
     omega: Option<f64>,
     tolerance: f64,
+    static_force: f64,
+    mu0: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
     let (v, a) = velocity(v, a, vhat).map_err(to_py)?;
     let t = time.as_array().to_vec();
-    let f = tangential.as_array().to_vec();
-    let n: Option<Vec<f64>> = normal.map(|x| x.as_array().to_vec());
-    let taus = phases(&t, is_tau, omega, n.as_deref()).map_err(to_py)?;
+    let mut f = tangential.as_array().to_vec();
+    let mut n: Option<Vec<f64>> = normal.map(|x| x.as_array().to_vec());
+    to_static_units(&mut f, n.as_deref_mut(), static_force, mu0).map_err(to_py)?;
+    let time = if is_tau { TimeAxis::Phase(&t) } else { TimeAxis::Time { t: &t, omega } };
+    let data = HistoryData { time, tangential: &f, normal: n.as_deref() };
     let shape = &shape.inner;
-    let result = py.detach(|| compare_history(shape, v, a, &taus, &f, n.as_deref(), tolerance)).map_err(to_py)?;
+    let result = py.detach(|| compare_history(shape, v, a, &data, tolerance)).map_err(to_py)?;
     pythonize::pythonize(py, &result).map_err(serialise_err)
 }
 
@@ -343,6 +395,7 @@ fn _fricosc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(validate, m)?)?;
     m.add_function(wrap_pyfunction!(scene, m)?)?;
     m.add_function(wrap_pyfunction!(validate_history, m)?)?;
+    m.add_function(wrap_pyfunction!(validate_series, m)?)?;
     m.add_function(wrap_pyfunction!(default_tol, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

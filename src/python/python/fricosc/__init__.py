@@ -39,6 +39,7 @@ from ._api import (
     scene,
     validate,
     validate_history,
+    validate_series,
 )
 
 __all__ = [
@@ -54,6 +55,7 @@ __all__ = [
     "history",
     "validate",
     "validate_history",
+    "validate_series",
     "scene",
     "InputError",
     "InternalError",

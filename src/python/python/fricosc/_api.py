@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -281,6 +281,46 @@ def history(
     return result
 
 
+def _table_columns(table: Any, mu0: Optional[float]) -> Tuple[List[str], bool, bool]:
+    """The columns of a table (a mapping), checked: names, vhat?, mu?"""
+    try:
+        columns = [str(c) for c in table.keys()]
+    except AttributeError:
+        raise TypeError(f"a table is a mapping of columns (a dict of arrays, a DataFrame), not {type(table).__name__}") from None
+    for pair in (("vbar", "vhat"), ("mu_ratio", "mu")):
+        if pair[0] in columns and pair[1] in columns:
+            raise ValueError(f"both '{pair[0]}' and '{pair[1]}' given: one only")
+        if pair[0] not in columns and pair[1] not in columns:
+            raise ValueError(
+                f"the table lacks column '{pair[0]}' (or '{pair[1]}'): it needs vbar (or vhat), amp and mu_ratio "
+                f"(or mu); it has {', '.join(columns)}"
+            )
+    if "amp" not in columns:
+        raise ValueError(f"the table lacks column 'amp'; it has {', '.join(columns)}")
+    return columns, "vhat" in columns, "mu" in columns
+
+
+def _table_arrays(
+    table: Any, is_vhat: bool, is_mu: bool
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    def column(name: str) -> npt.NDArray[np.float64]:
+        return _column(_floats(table[name], name), name)
+
+    return column("vhat" if is_vhat else "vbar"), column("amp"), column("mu" if is_mu else "mu_ratio")
+
+
+def _table_shape(tables: List[Any], shape: Optional[ShapeLike]) -> Tuple[ShapeLike, str]:
+    """The shape the tables name (one), else ``shape=``, else the flat punch; and where it came from."""
+    named = sorted({str(s) for t in tables if "shape" in t for s in np.asarray(t["shape"]).reshape(-1).tolist()})
+    if len(named) > 1:
+        raise ValueError(f"the table names more than one shape ({', '.join(repr(s) for s in named)}): validate one shape at a time")
+    if named and shape is not None and Shape(named[0]).name != (shape if isinstance(shape, Shape) else Shape(shape)).name:
+        raise ValueError(f"the table is for shape '{named[0]}', shape= says '{shape if isinstance(shape, str) else shape.name}'")
+    if named:
+        return named[0], "file"
+    return (shape, "option") if shape is not None else ("flat", "default")
+
+
 def validate(
     table: Any,
     shape: Optional[ShapeLike] = None,
@@ -288,59 +328,95 @@ def validate(
     at_rest: str = "sliding",
     mu0: Optional[float] = None,
     tolerance: float = 1e-9,
+    peer: Optional[int] = None,
+    peer_springs: Optional[int] = None,
 ) -> Dict[str, Any]:
     """Compare another code's table with the exact values, as ``fricosc validate``
     does: the same JSON report as a dict (per-row errors and regimes, errors by
-    regime and by amplitude, findings with hints).
+    regime and by amplitude, findings with hints; a finding means something is
+    wrong).
 
     ``table`` is a mapping of columns (a dict of arrays, a pandas DataFrame):
     ``vbar`` or ``vhat``, ``amp``, ``mu_ratio`` or ``mu`` (then ``mu0`` is
     required), and optionally ``shape`` (one value for the whole table; ``shape=``
     only where the table names none, an error where they disagree; the flat
     punch by default). ``at_rest``: ``"sliding"`` or ``"relaxed"`` (what a
-    ``vbar = 0`` row is compared with).
+    ``vbar = 0`` row is compared with). ``peer=M``: run fricosc's stepping peer
+    at ``M`` steps per period (and ``peer_springs`` springs, default ``M``) on
+    every row and set its error beside yours (``peer_error``).
 
     >>> r = validate({"vbar": [0.2, 1.1], "amp": [0.5, 0.5], "mu_ratio": [0.7145, 1.2]})
     >>> r["max_abs_error"] > 0.19, [f["kind"] for f in r["findings"]]
     (True, ['above_one', 'not_one_above_critical'])
     """
-    try:
-        columns = list(table.keys())
-    except AttributeError:
-        raise TypeError(f"a table is a mapping of columns (a dict of arrays, a DataFrame), not {type(table).__name__}") from None
-
-    def has(name: str) -> bool:
-        return name in columns
-
-    def column(name: str) -> npt.NDArray[np.float64]:
-        return _column(_floats(table[name], name), name)
-
-    for pair in (("vbar", "vhat"), ("mu_ratio", "mu")):
-        if has(pair[0]) and has(pair[1]):
-            raise ValueError(f"both '{pair[0]}' and '{pair[1]}' given: one only")
-        if not has(pair[0]) and not has(pair[1]):
-            raise ValueError(f"the table lacks column '{pair[0]}' (or '{pair[1]}')")
-    if not has("amp"):
-        raise ValueError("the table lacks column 'amp'")
-    named = sorted({str(s) for s in np.asarray(table["shape"]).reshape(-1).tolist()}) if has("shape") else []
-    if len(named) > 1:
-        raise ValueError(f"the table names more than one shape ({', '.join(repr(s) for s in named)}): validate one shape at a time")
-    if named and shape is not None and Shape(named[0]).name != (shape if isinstance(shape, Shape) else Shape(shape)).name:
-        raise ValueError(f"the table is for shape '{named[0]}', shape= says '{shape if isinstance(shape, str) else shape.name}'")
-    chosen: ShapeLike = named[0] if named else (shape if shape is not None else "flat")
-    is_vhat, is_mu = has("vhat"), has("mu")
+    _, is_vhat, is_mu = _table_columns(table, mu0)
+    chosen, source = _table_shape([table], shape)
     result: Dict[str, Any] = _fricosc.validate(
         _core(chosen),
-        column("vhat" if is_vhat else "vbar"),
-        column("amp"),
-        column("mu" if is_mu else "mu_ratio"),
+        *_table_arrays(table, is_vhat, is_mu),
         is_vhat,
         is_mu,
         None if mu0 is None else float(mu0),
         at_rest,
         float(tolerance),
+        None if peer is None else _count(peer, "peer"),
+        None if peer_springs is None else _count(peer_springs, "peer_springs"),
     )
-    result["shape_source"] = "file" if named else ("option" if shape is not None else "default")
+    result["shape_source"] = source
+    return result
+
+
+def _count(x: Any, what: str) -> int:
+    if isinstance(x, bool) or not isinstance(x, (int, np.integer)) or not 1 <= int(x) <= 100_000_000:
+        raise ValueError(f"{what} must be a whole number from 1 to 1e8, not {x!r}")
+    return int(x)
+
+
+def validate_series(
+    tables: Mapping[float, Any],
+    shape: Optional[ShapeLike] = None,
+    *,
+    at_rest: str = "sliding",
+    mu0: Optional[float] = None,
+    tolerance: float = 1e-9,
+    target: Optional[float] = None,
+) -> Dict[str, Any]:
+    """A convergence study, as ``fricosc validate --series`` does: ``tables``
+    maps each resolution (e.g. steps per period) to the table computed at it
+    (each a mapping of columns, as :func:`validate` takes). Per row: the
+    observed order, error constant, Richardson value, status (``converging``,
+    ``not_converging``, ``resolution_independent``, ``exact``) and, with
+    ``target``, the resolution needed (or ``"unreachable"``); per regime the
+    median order; findings (rows that do not converge, errors that do not depend
+    on the resolution, the finest table's own findings) and cautions.
+
+    >>> exact = float(mu_ratio("flat", 0.5, 0.5))
+    >>> t = {m: {"vbar": [0.5], "amp": [0.5], "mu_ratio": [exact + 1 / m ** 2]} for m in (100, 200, 400)}
+    >>> r = validate_series(t)
+    >>> round(r["rows"][0]["order"], 1), r["rows"][0]["status"]
+    (2.0, 'converging')
+    """
+    try:
+        items = sorted((float(k), v) for k, v in tables.items())
+    except (AttributeError, TypeError, ValueError):
+        raise TypeError("tables is a mapping from each resolution (a number) to its table") from None
+    flags = [_table_columns(t, mu0)[1:] for _, t in items]
+    if len(set(flags)) > 1:
+        raise ValueError("the tables differ in their columns (vbar or vhat, mu_ratio or mu)")
+    is_vhat, is_mu = flags[0] if flags else (False, False)
+    chosen, source = _table_shape([t for _, t in items], shape)
+    result: Dict[str, Any] = _fricosc.validate_series(
+        _core(chosen),
+        [r for r, _ in items],
+        [_table_arrays(t, is_vhat, is_mu) for _, t in items],
+        is_vhat,
+        is_mu,
+        None if mu0 is None else float(mu0),
+        at_rest,
+        float(tolerance),
+        None if target is None else float(target),
+    )
+    result["shape_source"] = source
     return result
 
 
@@ -377,19 +453,26 @@ def validate_history(
     shape: ShapeLike = "flat",
     vhat: Optional[float] = None,
     omega: Optional[float] = None,
+    static_force: Optional[float] = None,
+    mu0: Optional[float] = None,
     tolerance: float = 1e-9,
 ) -> Dict[str, Any]:
     """Compare a force history with the steady state of ``shape`` (exact for the
     flat punch; for curved shapes the normal force exact and the tangential one
     summed over 20,000 springs, without events), as
-    ``fricosc validate --history`` does: errors over the last period, whether it
-    is periodic yet (and how many more periods it needs), and the stick, slip
-    and contact events found from the force against its Coulomb bound, each
-    with its timing error.
+    ``fricosc validate --history`` does: the time origin found from the normal
+    force (the seed writes the indentation ``u0 - du cos(omega t)``; a file
+    written otherwise is aligned, and the offset reported), errors of both
+    forces over the last period, whether it is periodic yet (and how many more
+    periods it needs), the stick, slip and contact events found from the force
+    against its Coulomb bound, each with its timing error, and findings.
 
     ``history`` is a mapping of columns: ``tau`` (the phase omega t) or ``t``
-    (with ``omega``, or found from the normal force's maxima), ``tangential``
-    (units mu0 kz u0) and optionally ``normal`` (units kz u0).
+    (with ``omega``, or the period found from the normal force), ``tangential``
+    and optionally ``normal``: forces in units of ``mu0 F0`` and ``F0``, where
+    ``F0`` is the normal force at depth u0 without oscillation (``kz u0`` for
+    the flat punch, Hertz's ``(4/3) E* R^1/2 u0^3/2`` for the paraboloid), or
+    in yours with ``static_force`` (``F0`` in them) and ``mu0``.
 
     >>> h = history("flat", 0.3, 1.5, periods=2, samples=2000)
     >>> r = validate_history({"tau": h["tau"], "tangential": h["tangential"]}, 0.3, 1.5)
@@ -420,5 +503,7 @@ def validate_history(
         is_vhat,
         None if omega is None else float(omega),
         float(tolerance),
+        1.0 if static_force is None else _scalar(static_force, "static_force"),
+        1.0 if mu0 is None else _scalar(mu0, "mu0"),
     )
     return result

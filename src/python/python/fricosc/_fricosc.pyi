@@ -1,11 +1,11 @@
 """Type stub of the Rust extension (src/python/src/lib.rs)."""
 
-from typing import Any, Dict, List, Optional, final
+from typing import Any, Dict, List, Optional, Tuple, final
 
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "history", "validate", "scene", "validate_history", "default_tol", "__version__"]
+__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "__version__"]
 __version__: str
 
 class InputError(ValueError): ...
@@ -46,6 +46,19 @@ def validate(
     mu0: Optional[float],
     at_rest: str,
     tolerance: float,
+    peer: Optional[int],
+    peer_springs: Optional[int],
+) -> Dict[str, Any]: ...
+def validate_series(
+    shape: CoreShape,
+    resolutions: List[float],
+    tables: List[Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]],
+    vhat: bool,
+    mu: bool,
+    mu0: Optional[float],
+    at_rest: str,
+    tolerance: float,
+    target: Optional[float],
 ) -> Dict[str, Any]: ...
 def scene(text: Optional[str], source: str) -> List[Dict[str, Any]]: ...
 def validate_history(
@@ -59,5 +72,7 @@ def validate_history(
     vhat: bool,
     omega: Optional[float],
     tolerance: float,
+    static_force: float,
+    mu0: float,
 ) -> Dict[str, Any]: ...
 def default_tol() -> float: ...

@@ -1,0 +1,554 @@
+//! Reading the tables people write, for `validate` (tables and histories) and
+//! `plot --overlay`: named columns, from
+//! - CSV as spreadsheets, pandas and numpy write it: a header line, or numpy's
+//!   commented header (`np.savetxt(..., header="vbar,amp,mu_ratio")` writes
+//!   `# vbar,amp,mu_ratio`: the last comment line before the data names the
+//!   columns when the first line is numbers); the delimiter found from the
+//!   header (`,`, `;`, tab, else whitespace, numpy's default); other `#` lines
+//!   are comments;
+//! - JSON as fricosc writes it (`{"shape": ..., "rows": [...]}`) and as pandas
+//!   does, in every orient that names the columns: `records` (an array of row
+//!   objects), `columns` (pandas' default: `{column: {index: value}}`),
+//!   `index` (`{index: {column: value}}`), `split` (`columns` and `data`) and
+//!   `table` (`schema` and `data`); the `values` orient (no names) is refused
+//!   with the orient to use;
+//! - JSON Lines (one row object a line, pandas' `lines=True`).
+//!
+//! JSON is read by [`crate::cli::scan`] (no value trees: a column is a vector
+//! of numbers, 8 bytes a row). Every refusal names the file, the row and what
+//! was expected.
+
+use crate::cli::error::{Error, Result};
+use crate::cli::scan::{self, ScanError};
+use std::borrow::Cow;
+
+/// What a wanted column holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// Finite numbers.
+    Number,
+    /// Text (a shape name): only its distinct values are kept.
+    Label,
+}
+
+/// The wanted columns of a table as read.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Columns {
+    /// How the file was read (for messages): e.g. "CSV (';')", "pandas 'columns' JSON".
+    pub format: String,
+    /// Every column of the file, in its order.
+    pub names: Vec<String>,
+    /// Per wanted column: its numbers, if present (and a number column).
+    pub numbers: Vec<Option<Vec<f64>>>,
+    /// Per wanted column: its distinct values, if present (and a label column).
+    pub labels: Vec<Option<Vec<String>>>,
+    /// Rows read.
+    pub rows: usize,
+}
+
+impl Columns {
+    fn new(format: &str, wanted: usize) -> Columns {
+        Columns {
+            format: format.into(),
+            names: vec![],
+            numbers: vec![None; wanted],
+            labels: vec![None; wanted],
+            rows: 0,
+        }
+    }
+
+    /// True if wanted column `k` is present.
+    pub fn has(&self, k: usize) -> bool {
+        self.numbers[k].is_some() || self.labels[k].is_some()
+    }
+}
+
+/// The wanted columns of `text` (`source` names it in errors; `max_rows` caps the rows).
+pub fn read_columns(text: &str, source: &str, wanted: &[(&str, Kind)], max_rows: usize) -> Result<Columns> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let err = |reason: String| Error::Parse { context: source.into(), reason };
+    let mut cols = match text.trim_start().chars().next() {
+        None => return Err(err("empty input".into())),
+        Some('[' | '{') => Json { text, wanted, max_rows, source }.read()?,
+        Some(_) => read_csv(text, source, wanted, max_rows)?,
+    };
+    if cols.rows == 0 {
+        return Err(err(format!("the table has no rows ({}; nothing to compare)", cols.format)));
+    }
+    for (k, (name, _)) in wanted.iter().enumerate() {
+        if let Some(v) = &cols.numbers[k] {
+            if v.len() != cols.rows {
+                return Err(err(format!("column '{name}' has {} values for {} rows", v.len(), cols.rows)));
+            }
+        }
+    }
+    cols.names.dedup();
+    Ok(cols)
+}
+
+fn too_many(source: &str, limit: usize) -> Error {
+    Error::TooLarge { what: format!("rows of {source}"), count: limit as u128 + 1, limit: limit as u128 }
+}
+
+/// Add one raw cell to wanted column `k`.
+fn push(cols: &mut Columns, k: usize, kind: Kind, value: Cell) -> std::result::Result<(), String> {
+    match (kind, value) {
+        (Kind::Number, Cell::Number(x)) => cols.numbers[k].get_or_insert_with(Vec::new).push(x),
+        (Kind::Label, Cell::Text(s)) => {
+            let l = cols.labels[k].get_or_insert_with(Vec::new);
+            if !l.iter().any(|x| *x == s) {
+                l.push(s.into_owned());
+            }
+        }
+        _ => return Err("internal: a cell of the wrong kind".into()),
+    }
+    Ok(())
+}
+
+enum Cell<'a> {
+    Number(f64),
+    Text(Cow<'a, str>),
+}
+
+// ----------------------------------------------------------------------------- CSV
+
+/// The delimiter of a header line: the most frequent of `,`, `;` and tab
+/// outside quotes; none (whitespace-separated) if it has none of them.
+fn sniff(line: &str) -> Option<u8> {
+    let (mut quoted, mut counts) = (false, [0usize; 3]);
+    for b in line.bytes() {
+        match b {
+            b'"' => quoted = !quoted,
+            b',' if !quoted => counts[0] += 1,
+            b';' if !quoted => counts[1] += 1,
+            b'\t' if !quoted => counts[2] += 1,
+            _ => {}
+        }
+    }
+    let (k, &n) = counts.iter().enumerate().max_by_key(|&(k, n)| (*n, std::cmp::Reverse(k)))?;
+    (n > 0).then_some([b',', b';', b'\t'][k])
+}
+
+/// The fields of one line with `delimiter` (quotes as CSV has them), or split on whitespace.
+fn fields(line: &str, delimiter: Option<u8>) -> std::result::Result<Vec<String>, String> {
+    match delimiter {
+        None => Ok(line.split_whitespace().map(str::to_string).collect()),
+        Some(d) => {
+            let mut rd = csv::ReaderBuilder::new()
+                .delimiter(d)
+                .has_headers(false)
+                .trim(csv::Trim::All)
+                .from_reader(line.as_bytes());
+            match rd.records().next() {
+                Some(Ok(r)) => Ok(r.iter().map(str::to_string).collect()),
+                Some(Err(e)) => Err(e.to_string()),
+                None => Ok(vec![]),
+            }
+        }
+    }
+}
+
+fn delimiter_name(d: Option<u8>) -> &'static str {
+    match d {
+        Some(b',') => "','",
+        Some(b';') => "';'",
+        Some(b'\t') => "tab",
+        _ => "whitespace",
+    }
+}
+
+fn read_csv(text: &str, source: &str, wanted: &[(&str, Kind)], max_rows: usize) -> Result<Columns> {
+    let err = |reason: String| Error::Parse { context: source.into(), reason };
+    // The first line that is neither blank nor a comment, and the last comment before it.
+    let (mut offset, mut last_comment, mut first) = (0usize, None::<&str>, None::<(&str, usize)>);
+    for line in text.split_inclusive('\n') {
+        let t = line.trim();
+        if t.starts_with('#') {
+            last_comment = Some(t.trim_start_matches('#').trim());
+        } else if !t.is_empty() {
+            first = Some((t, offset));
+            break;
+        }
+        offset += line.len();
+    }
+    let (first, first_at) = first.ok_or_else(|| err("the table has no rows (only comments or blank lines)".into()))?;
+    let numeric = |line: &str, d: Option<u8>| {
+        fields(line, d).is_ok_and(|f| !f.is_empty() && f.iter().all(|x| crate::cli::grid::number(x).is_ok()))
+    };
+    // numpy's header is a comment above rows of numbers.
+    let (header_line, data_at) = match last_comment {
+        Some(c) if numeric(first, sniff(first)) && !c.is_empty() => (c, first_at),
+        _ if numeric(first, sniff(first)) => {
+            let names: Vec<&str> = wanted.iter().map(|w| w.0).collect();
+            return Err(err(format!(
+                "no header line: the first line is numbers; name the columns ({}) in a first line, or as numpy \
+                 writes them: np.savetxt(file, rows, header='{}', delimiter=',')",
+                names.join(", "),
+                names.join(",")
+            )));
+        }
+        _ => (first, first_at + text[first_at..].find('\n').map_or(text.len() - first_at, |n| n + 1)),
+    };
+    let delimiter = sniff(header_line);
+    let header = fields(header_line, delimiter).map_err(|e| err(format!("CSV header: {e}")))?;
+    for (k, h) in header.iter().enumerate() {
+        if header[..k].contains(h) {
+            return Err(err(format!("the header has column '{h}' twice")));
+        }
+    }
+    let mut cols = Columns::new(&format!("CSV ({} delimited)", delimiter_name(delimiter)), wanted.len());
+    cols.names = header.clone();
+    let at: Vec<Option<usize>> = wanted.iter().map(|(w, _)| header.iter().position(|h| h == w)).collect();
+    let body = &text[data_at.min(text.len())..];
+    let mut each = |i: usize, rec: &[&str]| -> Result<()> {
+        if rec.len() != header.len() {
+            return Err(err(format!(
+                "row {i}: {} fields, the header has {} ({}; read as {} delimited)",
+                rec.len(),
+                header.len(),
+                header.join(", "),
+                delimiter_name(delimiter)
+            )));
+        }
+        for (k, (name, kind)) in wanted.iter().enumerate() {
+            let Some(c) = at[k] else { continue };
+            let cell = match kind {
+                Kind::Number => Cell::Number(crate::cli::grid::number(rec[c]).map_err(|e| {
+                    let hint = if rec[c].contains(',') && delimiter != Some(b',') {
+                        " (decimal commas are not read: write numbers with '.')"
+                    } else {
+                        ""
+                    };
+                    err(format!("row {i}: {name}: {e}{hint}"))
+                })?),
+                Kind::Label => Cell::Text(Cow::Borrowed(rec[c])),
+            };
+            push(&mut cols, k, *kind, cell).map_err(|e| Error::Internal { what: e })?;
+        }
+        cols.rows += 1;
+        if cols.rows > max_rows {
+            return Err(too_many(source, max_rows));
+        }
+        Ok(())
+    };
+    match delimiter {
+        None => {
+            let lines = body.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#'));
+            for (i, line) in lines.enumerate() {
+                each(i, &line.split_whitespace().collect::<Vec<_>>())?;
+            }
+        }
+        Some(d) => {
+            let mut rd = csv::ReaderBuilder::new()
+                .delimiter(d)
+                .has_headers(false)
+                .flexible(true)
+                .comment(Some(b'#'))
+                .trim(csv::Trim::All)
+                .from_reader(body.as_bytes());
+            for (i, rec) in rd.records().enumerate() {
+                let rec = rec.map_err(|e| err(format!("row {i}: {e}")))?;
+                each(i, &rec.iter().collect::<Vec<_>>())?;
+            }
+        }
+    }
+    Ok(cols)
+}
+
+// ---------------------------------------------------------------------------- JSON
+
+struct Json<'a, 'w> {
+    text: &'a str,
+    wanted: &'w [(&'w str, Kind)],
+    max_rows: usize,
+    source: &'a str,
+}
+
+const ORIENTS: &str = "a JSON table is an array of row objects, an object with a 'rows' array (as fricosc writes \
+                       it), JSON Lines, or pandas' to_json in an orient that names the columns: 'columns' (the \
+                       default), 'records', 'index', 'split' or 'table'";
+
+impl<'a> Json<'a, '_> {
+    fn err(&self, reason: String) -> Error {
+        Error::Parse { context: self.source.into(), reason }
+    }
+
+    fn scan_err(&self, e: ScanError) -> Error {
+        self.err(e.describe(self.text))
+    }
+
+    fn cell(&self, raw: &'a str, name: &str, kind: Kind) -> std::result::Result<Cell<'a>, String> {
+        Ok(match kind {
+            Kind::Number => Cell::Number(scan::number_of(raw, name)?),
+            Kind::Label => Cell::Text(scan::string_of(raw, name)?),
+        })
+    }
+
+    fn read(&self) -> Result<Columns> {
+        let t = self.text;
+        let start = scan::skip_ws(t, 0);
+        let end = scan::value_end(t, start).map_err(|e| self.scan_err(e))?;
+        if scan::skip_ws(t, end) < t.len() {
+            return self.lines();
+        }
+        if t.as_bytes()[start] == b'[' {
+            return self.array(start, "JSON array of rows");
+        }
+        let top = scan::members(t, start).map_err(|e| self.scan_err(e))?;
+        let key = |k: &str| top.iter().find(|(x, _)| x == k).map(|(_, span)| *span);
+        let is_object = |span: (usize, usize)| t.as_bytes()[span.0] == b'{';
+        let is_wanted = |k: &str| self.wanted.iter().any(|(w, _)| *w == k);
+        if let Some(rows) = key("rows") {
+            let mut cols = self.array(rows.0, "fricosc JSON ('rows')")?;
+            if let (Some(span), Some(k)) = (key("shape"), self.wanted.iter().position(|(w, _)| *w == "shape")) {
+                let s = scan::string_of(&t[span.0..span.1], "shape").map_err(|e| self.err(e))?;
+                push(&mut cols, k, Kind::Label, Cell::Text(s)).map_err(|e| Error::Internal { what: e })?;
+            }
+            return Ok(cols);
+        }
+        if let (Some(columns), Some(data)) = (key("columns"), key("data")) {
+            return self.split(columns, data);
+        }
+        if let (Some(_), Some(data)) = (key("schema"), key("data")) {
+            return self.array(data.0, "pandas 'table' JSON");
+        }
+        if !top.is_empty() && top.iter().all(|(_, span)| is_object(*span)) {
+            if top.iter().any(|(k, _)| is_wanted(k)) {
+                return self.columns(&top);
+            }
+            return self.index(&top);
+        }
+        let keys: Vec<&str> = top.iter().map(|(k, _)| k.as_ref()).take(8).collect();
+        Err(self.err(format!("{ORIENTS}; this object has the keys {}", keys.join(", "))))
+    }
+
+    /// Rows from one row object (its wanted fields; `k` its index).
+    fn record(&self, cols: &mut Columns, k: usize, fields: &[Option<&'a str>]) -> std::result::Result<(), String> {
+        for (j, (name, kind)) in self.wanted.iter().enumerate() {
+            match fields[j] {
+                Some(raw) => {
+                    if k > 0 && !cols.has(j) {
+                        return Err(format!("field '{name}' is not in the rows before"));
+                    }
+                    let c = self.cell(raw, name, *kind)?;
+                    push(cols, j, *kind, c)?;
+                }
+                None if cols.has(j) => return Err(format!("missing field '{name}'")),
+                None => {}
+            }
+        }
+        cols.rows += 1;
+        Ok(())
+    }
+
+    /// [`Error::TooLarge`] once `rows` reach the cap (checked before each row).
+    fn full(&self, rows: usize) -> Option<Error> {
+        (rows >= self.max_rows).then(|| too_many(self.source, self.max_rows))
+    }
+
+    /// The keys of the object at `i` (the column names of a row object).
+    fn keys(&self, i: usize) -> Vec<String> {
+        scan::members(self.text, i).map(|m| m.into_iter().map(|(k, _)| k.into_owned()).collect()).unwrap_or_default()
+    }
+
+    /// The wanted fields of the row object at `span`.
+    fn fields(&self, span: (usize, usize)) -> std::result::Result<Vec<Option<&'a str>>, String> {
+        let t = self.text;
+        let mut fields = vec![None; self.wanted.len()];
+        let mut seen: Vec<Cow<str>> = vec![];
+        scan::each_member(t, span.0, &mut |k, (vs, ve)| {
+            if seen.contains(&k) {
+                return Err(ScanError { at: vs, what: format!("duplicate key '{k}'"), malformed: false });
+            }
+            if let Some(j) = self.wanted.iter().position(|(w, _)| *w == k) {
+                fields[j] = Some(&t[vs..ve]);
+            }
+            seen.push(k);
+            Ok(())
+        })
+        .map_err(|e| e.describe(t))?;
+        Ok(fields)
+    }
+
+    /// An array of row objects at `text[start..end]`.
+    fn array(&self, start: usize, format: &str) -> Result<Columns> {
+        let t = self.text;
+        let mut cols = Columns::new(format, self.wanted.len());
+        let mut k = 0usize;
+        let mut failure: Option<Error> = None;
+        let stop = |at: usize| ScanError { at, what: String::new(), malformed: false };
+        scan::each_element(t, start, &mut |span| {
+            if let Some(e) = self.full(cols.rows) {
+                failure = Some(e);
+                return Err(stop(span.0));
+            }
+            let result = match t.as_bytes()[span.0] {
+                b'{' => {
+                    if k == 0 {
+                        cols.names = self.keys(span.0);
+                    }
+                    self.fields(span).and_then(|f| self.record(&mut cols, k, &f))
+                }
+                b'[' => Err("an array of arrays has no column names (pandas' orient 'values'): write \
+                             to_json(orient='records') or orient='split'"
+                    .into()),
+                _ => Err("expected a row object".into()),
+            };
+            if let Err(e) = result {
+                failure = Some(self.err(format!("row {k}: {e}")));
+                return Err(stop(span.0));
+            }
+            k += 1;
+            Ok(())
+        })
+        .map_err(|e| failure.take().unwrap_or_else(|| self.scan_err(e)))?;
+        Ok(cols)
+    }
+
+    /// JSON Lines: one row object a line (blank lines skipped).
+    fn lines(&self) -> Result<Columns> {
+        let mut cols = Columns::new("JSON Lines", self.wanted.len());
+        let mut k = 0usize;
+        for (n, line) in self.text.lines().enumerate() {
+            if line.trim().is_empty() {
+                continue;
+            }
+            let at = |e: String| self.err(format!("line {}: {e}", n + 1));
+            let i = scan::skip_ws(line, 0);
+            let end = scan::value_end(line, i).map_err(|e| at(e.describe(line)))?;
+            if scan::skip_ws(line, end) < line.len() {
+                return Err(at("one row object a line (JSON Lines): trailing characters".into()));
+            }
+            if line.as_bytes()[i] != b'{' {
+                return Err(at("expected a row object (JSON Lines: one object a line)".into()));
+            }
+            if let Some(e) = self.full(cols.rows) {
+                return Err(e);
+            }
+            let sub = Json { text: line, wanted: self.wanted, max_rows: self.max_rows, source: self.source };
+            if k == 0 {
+                cols.names = sub.keys(i);
+            }
+            let f = sub.fields((i, end)).map_err(at)?;
+            sub.record(&mut cols, k, &f).map_err(at)?;
+            k += 1;
+        }
+        Ok(cols)
+    }
+
+    /// pandas' `columns` orient: `{column: {index: value}}`, every column with
+    /// the same index labels in the same order.
+    fn columns(&self, top: &[(Cow<str>, (usize, usize))]) -> Result<Columns> {
+        let t = self.text;
+        let mut cols = Columns::new("pandas 'columns' JSON", self.wanted.len());
+        cols.names = top.iter().map(|(k, _)| k.to_string()).collect();
+        let mut index: Option<Vec<String>> = None;
+        for (j, (name, kind)) in self.wanted.iter().enumerate() {
+            let Some((_, span)) = top.iter().find(|(k, _)| k == name) else { continue };
+            let mut labels: Vec<String> = vec![];
+            let mut failure: Option<Error> = None;
+            let mut n = 0usize;
+            scan::each_member(t, span.0, &mut |label, (vs, ve)| {
+                let stop = ScanError { at: vs, what: String::new(), malformed: false };
+                if let Some(e) = self.full(n) {
+                    failure = Some(e);
+                    return Err(stop);
+                }
+                let r = self.cell(&t[vs..ve], name, *kind).and_then(|c| push(&mut cols, j, *kind, c));
+                if let Err(e) = r {
+                    failure = Some(self.err(format!("column '{name}', index '{label}': {e}")));
+                    return Err(stop);
+                }
+                if index.is_none() {
+                    labels.push(label.into_owned());
+                } else if index.as_ref().and_then(|x| x.get(n)).is_none_or(|x| *x != label) {
+                    failure =
+                        Some(self.err(format!("column '{name}': its index labels differ from the columns before")));
+                    return Err(stop);
+                }
+                n += 1;
+                Ok(())
+            })
+            .map_err(|e| failure.take().unwrap_or_else(|| self.scan_err(e)))?;
+            match &index {
+                None => index = Some(labels),
+                Some(x) if x.len() != n => {
+                    return Err(self.err(format!("column '{name}' has {n} values, the columns before {}", x.len())))
+                }
+                Some(_) => {}
+            }
+        }
+        cols.rows = index.map_or(0, |x| x.len());
+        Ok(cols)
+    }
+
+    /// pandas' `index` orient: `{index: {column: value}}`.
+    fn index(&self, top: &[(Cow<str>, (usize, usize))]) -> Result<Columns> {
+        let mut cols = Columns::new("pandas 'index' JSON", self.wanted.len());
+        if let Some((_, span)) = top.first() {
+            cols.names = self.keys(span.0);
+        }
+        for (k, (label, span)) in top.iter().enumerate() {
+            if let Some(e) = self.full(cols.rows) {
+                return Err(e);
+            }
+            let at = |e: String| self.err(format!("index '{label}': {e}"));
+            let f = self.fields(*span).map_err(at)?;
+            self.record(&mut cols, k, &f).map_err(at)?;
+        }
+        if self.wanted.iter().enumerate().all(|(j, _)| !cols.has(j)) {
+            let names: Vec<&str> = top.iter().map(|(k, _)| k.as_ref()).take(8).collect();
+            return Err(self.err(format!(
+                "{ORIENTS}; this object's keys ({}) are neither wanted columns nor index labels of rows that have them",
+                names.join(", ")
+            )));
+        }
+        Ok(cols)
+    }
+
+    /// pandas' `split` orient: `{"columns": [...], "index": [...], "data": [[...], ...]}`.
+    fn split(&self, columns: (usize, usize), data: (usize, usize)) -> Result<Columns> {
+        let t = self.text;
+        let mut cols = Columns::new("pandas 'split' JSON", self.wanted.len());
+        let mut names = vec![];
+        scan::each_element(t, columns.0, &mut |(vs, ve)| {
+            let s =
+                scan::string_of(&t[vs..ve], "columns").map_err(|e| ScanError { at: vs, what: e, malformed: false })?;
+            names.push(s.into_owned());
+            Ok(())
+        })
+        .map_err(|e| self.scan_err(e))?;
+        cols.names = names.clone();
+        let at: Vec<Option<usize>> = self.wanted.iter().map(|(w, _)| names.iter().position(|n| n == w)).collect();
+        let mut k = 0usize;
+        let mut failure: Option<Error> = None;
+        scan::each_element(t, data.0, &mut |row| {
+            if let Some(e) = self.full(cols.rows) {
+                failure = Some(e);
+                return Err(ScanError { at: row.0, what: String::new(), malformed: false });
+            }
+            let mut cells: Vec<(usize, usize)> = vec![];
+            scan::each_element(t, row.0, &mut |span| {
+                cells.push(span);
+                Ok(())
+            })?;
+            let mut fields = vec![None; self.wanted.len()];
+            for (j, c) in at.iter().enumerate() {
+                fields[j] = c.and_then(|c| cells.get(c)).map(|&(vs, ve)| &t[vs..ve]);
+            }
+            let r = if cells.len() != names.len() {
+                Err(format!("{} values, the columns are {}", cells.len(), names.len()))
+            } else {
+                self.record(&mut cols, k, &fields)
+            };
+            if let Err(e) = r {
+                failure = Some(self.err(format!("row {k}: {e}")));
+                return Err(ScanError { at: row.0, what: String::new(), malformed: false });
+            }
+            k += 1;
+            Ok(())
+        })
+        .map_err(|e| failure.take().unwrap_or_else(|| self.scan_err(e)))?;
+        Ok(cols)
+    }
+}
