@@ -111,3 +111,60 @@ fn histories_work_for_every_contact() {
         }
     }
 }
+
+/// The share of the load on springs that lose contact, against closed forms
+/// derived here: the cone (`G(z) = z`, `F(d) = d^2`) has the mean normal force
+/// `1 + amp^2/2` and the permanent springs `z < 1 - amp` carry
+/// `2 int_0^{1-amp} (1 - z) dz = 1 - amp^2`; the paraboloid (`G = z^2`,
+/// `F(d) = (4/3) d^(3/2)`) has `P = 2 (z_p - z_p^3/3)`, `z_p = sqrt(1 - amp)`,
+/// and its mean normal force by an independent Gauss-Legendre rule (smooth for
+/// `amp < 1`). The flat punch: 0 up to `amp = 1`, 1 beyond; every curved
+/// contact: 1 from `amp = 1` on.
+#[test]
+fn jumping_share_matches_closed_forms() {
+    use fricosc::regime::jumping_share;
+    let (x, w) = common::quad::gauss_legendre(64);
+    for a in [1e-6, 0.01, 0.3, 0.5, 0.9, 0.999] {
+        let cone = 1.0 - (1.0 - a * a) / (1.0 + 0.5 * a * a);
+        let got = jumping_share(&Shape::cone(), a).unwrap();
+        assert!((got - cone).abs() <= 4e-15, "cone {a}: {got} vs {cone}");
+        let mean: f64 = x
+            .iter()
+            .zip(&w)
+            .map(|(&t, &wt)| {
+                let tau = 0.5 * std::f64::consts::PI * (t + 1.0);
+                0.5 * wt * (4.0 / 3.0) * (1.0 - a * tau.cos()).powf(1.5)
+            })
+            .sum();
+        let zp = (1.0 - a).sqrt();
+        let para = 1.0 - 2.0 * (zp - zp * zp * zp / 3.0) / mean;
+        let got = jumping_share(&Shape::parabolic(), a).unwrap();
+        assert!((got - para).abs() <= 1e-13 * para.max(1e-3), "parabolic {a}: {got} vs {para}");
+    }
+    for (a, flat, curved) in [(0.0, 0.0, 0.0), (0.5, 0.0, 0.156), (1.0, 0.0, 1.0), (1.5, 1.0, 1.0)] {
+        assert_eq!(jumping_share(&Shape::flat(), a).unwrap(), flat);
+        let c = jumping_share(&Shape::parabolic(), a).unwrap();
+        assert!((c - curved).abs() < 1e-3, "{a}: {c}");
+    }
+}
+
+/// One classification for every output: the flat punch by its spring's regime
+/// (permanent contact up to amp = 1, slip-first or stick-first beyond, split at
+/// `1/amp = sqrt(1 - vbar^2)`), a curved contact mixed below amp = 1 and
+/// jumping from it on; at rest at vbar = 0, sliding from vbar = 1 or at amp = 0.
+#[test]
+fn regimes_of_points() {
+    use fricosc::regime::regime;
+    use fricosc::ContactRegime as R;
+    let (flat, para) = (Shape::flat(), Shape::parabolic());
+    assert_eq!(regime(&flat, 0.0, 0.5).unwrap(), R::AtRest);
+    assert_eq!(regime(&flat, 1.0, 0.5).unwrap(), R::Sliding);
+    assert_eq!(regime(&flat, 0.5, 0.0).unwrap(), R::Sliding);
+    assert_eq!(regime(&flat, 0.5, 1.0).unwrap(), R::PermanentContact);
+    // 1/amp against sqrt(1 - 0.6^2) = 0.8: amp 1.2 slips first, 1.3 sticks first.
+    assert_eq!(regime(&flat, 0.6, 1.2).unwrap(), R::JumpingSlipFirst);
+    assert_eq!(regime(&flat, 0.6, 1.3).unwrap(), R::JumpingStickFirst);
+    assert_eq!(regime(&para, 0.6, 0.999).unwrap(), R::Mixed);
+    assert_eq!(regime(&para, 0.6, 1.0).unwrap(), R::Jumping);
+    assert!(regime(&para, -0.1, 0.5).is_err() && regime(&para, 0.1, f64::NAN).is_err());
+}

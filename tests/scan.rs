@@ -2,9 +2,12 @@
 //! JSON-like arrays, valid and broken, it accepts exactly what `serde_json`
 //! accepts (an array of raw values whose objects have no duplicate keys) and
 //! picks the same raw rows and fields.
-use fricosc::cli::rows::{pick, raw_array};
+#[path = "common/rows.rs"]
+mod rows;
+
 use fricosc::cli::scan::array_rows;
 use proptest::prelude::*;
+use rows::{pick, raw_array};
 
 const NAMES: [&str; 3] = ["shape", "vbar", "amp"];
 

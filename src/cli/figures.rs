@@ -310,6 +310,41 @@ pub fn user(shape: &Shape, amps: &[f64], xs: &[f64], vhat: bool) -> Result<Figur
     Ok(f)
 }
 
+/// Most points of a `plot --overlay` file.
+pub const MAX_OVERLAY: usize = 100_000;
+
+/// Add another code's points `(vbar, amp, mu_ratio)` to a `plot` figure, one
+/// marker curve per amplitude (`kind` `yours`): drawn in the colour of the
+/// plot's curve of that amplitude, grey where the plot has none.
+///
+/// # Errors
+/// [`Error::TooLarge`] beyond [`MAX_OVERLAY`] points.
+pub fn overlay(f: &mut Figure, rows: &[(f64, f64, f64)], name: &str) -> Result<()> {
+    if rows.len() > MAX_OVERLAY {
+        return Err(Error::TooLarge {
+            what: "points of --overlay".into(),
+            count: rows.len() as u128,
+            limit: MAX_OVERLAY as u128,
+        });
+    }
+    let mut amps: Vec<f64> = rows.iter().map(|r| r.1).collect();
+    amps.sort_by(f64::total_cmp);
+    amps.dedup();
+    let vhat = f.x == XAxis::Vhat;
+    for a in amps {
+        let points =
+            rows.iter().filter(|r| r.1 == a).map(|&(v, amp, mu)| [if vhat { v * amp } else { v }, mu]).collect();
+        f.curves.push(Curve {
+            label: format!("{name}, du/u0 = {a}"),
+            kind: "yours".into(),
+            equation: None,
+            amp: Some(a),
+            points,
+        });
+    }
+    Ok(())
+}
+
 /// The house style for a family of curves over amplitudes, with approximations.
 ///
 /// Every distinct amplitude gets one colour (black for `du/u0 = 0`, viridis in
@@ -318,13 +353,17 @@ pub fn user(shape: &Shape, amps: &[f64], xs: &[f64], vhat: bool) -> Result<Figur
 /// approximation dotted, a third dash-dotted. Curves without an amplitude get
 /// the Okabe-Ito colours and their own legend entries.
 pub fn chart(f: &Figure) -> Chart {
-    let mut amps: Vec<f64> = f.curves.iter().filter_map(|c| c.amp).collect();
+    // The family is the amplitudes of the solver's curves; overlaid points of
+    // other amplitudes are grey.
+    let mut amps: Vec<f64> = f.curves.iter().filter(|c| c.kind != "yours").filter_map(|c| c.amp).collect();
     amps.sort_by(f64::total_cmp);
     amps.dedup();
     let nonzero: Vec<f64> = amps.iter().copied().filter(|a| *a != 0.0).collect();
+    let other = plot::Rgb(0x99, 0x99, 0x99);
     let color = |a: f64| match nonzero.iter().position(|x| *x == a) {
         Some(i) => plot::family_color(i, nonzero.len()),
-        None => plot::BLACK,
+        None if a == 0.0 && amps.contains(&0.0) => plot::BLACK,
+        None => other,
     };
     let bold = |a: f64| if f.bold_critical && a == 1.0 { 2.0 } else { 1.0 };
     // The approximations' equations in order of appearance: dash patterns.
@@ -346,6 +385,9 @@ pub fn chart(f: &Figure) -> Chart {
     let mut series = vec![];
     for c in &f.curves {
         let (style, legend) = match c.amp {
+            Some(a) if c.kind == "yours" => {
+                (Style { color: color(a), dash: None, width: 1.0, marker: Some(plot::Marker::Circle) }, false)
+            }
             Some(a) => (Style::dashed(color(a), dash(c)).width(if c.kind == "exact" { bold(a) } else { 1.0 }), false),
             None => {
                 let s = Style::dashed(plot::OKABE_ITO[loners % plot::OKABE_ITO.len()], dash(c));
@@ -372,9 +414,16 @@ pub fn chart(f: &Figure) -> Chart {
             .copied()
             .filter(|e| f.curves.iter().any(|c| c.amp.is_some() && c.equation.as_deref() == Some(*e)))
             .collect();
-        if !family_eqs.is_empty() {
+        let yours = f.curves.iter().any(|c| c.kind == "yours");
+        if !family_eqs.is_empty() || yours {
             key.push(Key::Heading(String::new()));
             key.push(Key::Entry(Style::line(grey), "exact".into()));
+        }
+        if yours {
+            let dots = Style { color: grey, dash: None, width: 1.0, marker: Some(plot::Marker::Circle) };
+            key.push(Key::Entry(dots, "yours".into()));
+        }
+        if !family_eqs.is_empty() {
             for e in family_eqs {
                 let d = dash(f.curves.iter().find(|c| c.equation.as_deref() == Some(e)).expect("listed above"));
                 key.push(Key::Entry(Style::dashed(grey, d), e.to_string()));

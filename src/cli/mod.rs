@@ -16,7 +16,6 @@ pub mod input;
 pub mod outdir;
 pub mod output;
 pub mod plot;
-pub mod rows;
 pub mod scan;
 pub mod scene;
 pub mod stress;

@@ -352,11 +352,28 @@ fn axis_ticks(a: &Axis) -> Vec<(f64, String)> {
     if a.log {
         let (lo, hi) = (a.range.0.log10(), a.range.1.log10());
         let (k0, k1) = ((lo - 1e-9).ceil() as i64, (hi + 1e-9).floor() as i64);
-        let every = ((k1 - k0) / 6 + 1).max(1);
-        (k0..=k1)
-            .filter(|k| (k - k0) % every == 0)
-            .map(|k| (10f64.powi(k as i32), format!("10^{{{}}}", k.to_string().replace('-', "\u{2212}"))))
-            .collect()
+        let power = |k: i64| format!("10^{{{}}}", k.to_string().replace('-', "\u{2212}"));
+        if k1 - k0 >= 2 {
+            let every = ((k1 - k0) / 6 + 1).max(1);
+            return (k0..=k1).filter(|k| (k - k0) % every == 0).map(|k| (10f64.powi(k as i32), power(k))).collect();
+        }
+        // Less than two decades: 1, 2 and 5 times the powers of ten in range.
+        let (lo, hi) = a.range;
+        let mut out = vec![];
+        for k in (k0 - 1)..=(k1 + 1) {
+            for m in [1.0, 2.0, 5.0] {
+                let v = m * 10f64.powi(k as i32);
+                if v >= lo * (1.0 - 1e-9) && v <= hi * (1.0 + 1e-9) {
+                    let label = match (m == 1.0, (-3..5).contains(&k)) {
+                        (_, true) => crate::cli::output::num(v).trim_end_matches(".0").to_string(),
+                        (true, false) => power(k),
+                        (false, false) => format!("{m}·{}", power(k)),
+                    };
+                    out.push((v, label));
+                }
+            }
+        }
+        out
     } else {
         let t = ticks(a.range.0, a.range.1);
         let step = if t.len() > 1 { t[1] - t[0] } else { 1.0 };
@@ -549,11 +566,13 @@ impl Chart {
             top + ph + l.axes_bottom - 4.0,
             markup(&self.x.label, FONT)
         );
+        // A label longer than the plot is tall is set smaller, never clipped.
+        let size = FONT.min(FONT * ph / text_width(&self.y.label, FONT).max(1e-9));
         let (lx, ly) = (3.0 + FONT * 0.8, top + ph / 2.0);
         let _ = write!(
             o,
-            r#"<text x="{lx:.2}" y="{ly:.2}" font-size="{FONT}" text-anchor="middle" transform="rotate(-90 {lx:.2} {ly:.2})" class="y-label">{}</text>"#,
-            markup(&self.y.label, FONT)
+            r#"<text x="{lx:.2}" y="{ly:.2}" font-size="{size:.2}" text-anchor="middle" transform="rotate(-90 {lx:.2} {ly:.2})" class="y-label">{}</text>"#,
+            markup(&self.y.label, size)
         );
     }
 
@@ -653,6 +672,37 @@ pub fn parse_size(svg: &str) -> Result<(f64, f64), String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A log axis over less than two decades has 1-2-5 ticks (the series plot's
+    /// 250 to 8000 had one label); over more, powers of ten.
+    #[test]
+    fn log_axes_have_ticks_over_short_ranges() {
+        let labels = |lo: f64, hi: f64| -> Vec<String> {
+            axis_ticks(&Axis::log("x", (lo, hi))).into_iter().map(|t| t.1).collect()
+        };
+        assert_eq!(labels(250.0 / 1.2, 8000.0 * 1.2), ["500", "1000", "2000", "5000"]);
+        assert_eq!(labels(1e-9, 1e-2), ["10^{−9}", "10^{−7}", "10^{−5}", "10^{−3}"]);
+        assert_eq!(labels(2e-7, 3e-6), ["2·10^{−7}", "5·10^{−7}", "10^{−6}", "2·10^{−6}"]);
+    }
+
+    /// A y label longer than the plot is tall is set smaller to fit, not clipped.
+    #[test]
+    fn long_y_labels_fit() {
+        let label = "a very long label ".repeat(8);
+        let chart = Chart {
+            title: "t".into(),
+            x: Axis::linear("x", (0.0, 1.0)),
+            y: Axis::linear(&label, (0.0, 1.0)),
+            series: vec![],
+            key: vec![],
+            rules: vec![],
+        };
+        let svg = chart.svg();
+        let at = svg.find("class=\"y-label\"").unwrap();
+        let size: f64 = svg[..at].rsplit("font-size=\"").next().unwrap().split('"').next().unwrap().parse().unwrap();
+        let l = chart.layout(&[], &axis_ticks(&chart.y));
+        assert!(size < FONT && text_width(&label, size) <= l.ph + 0.01, "{size}");
+    }
 
     #[test]
     fn ticks_are_round() {

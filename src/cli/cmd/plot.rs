@@ -17,6 +17,14 @@ pub struct PlotArgs {
     /// Write the drawing to this file, SVG or PNG (300 dpi) by its extension (default: SVG on stdout).
     #[arg(long)]
     pub out: Option<String>,
+    /// Draw your own points over the curves: a table as `validate` reads it (vbar or vhat,
+    /// amp, mu_ratio or mu), markers in the colour of their amplitude's curve (grey if the
+    /// plot has none). At most 10^5 points.
+    #[arg(long, value_name = "FILE")]
+    pub overlay: Option<String>,
+    /// With --overlay and a column mu: the Coulomb coefficient (mu_ratio = mu / mu0).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::positive, requires = "overlay")]
+    pub mu0: Option<f64>,
 }
 
 pub fn run(a: PlotArgs) -> Result<()> {
@@ -25,7 +33,22 @@ pub fn run(a: PlotArgs) -> Result<()> {
     }
     let shape = crate::cli::input::parse_shape(&a.shape)?;
     let (xs, vhat) = a.velocity.values();
-    let fig = crate::cli::figures::user(&shape, &a.amp.0, xs, vhat)?;
+    let mut fig = crate::cli::figures::user(&shape, &a.amp.0, xs, vhat)?;
+    if let Some(file) = &a.overlay {
+        let (text, source) = super::read_input(Some(file.clone()))?;
+        let table = crate::cli::validate::read_table(&text, &source)?;
+        if let Some(named) = &table.shape {
+            if crate::cli::input::parse_shape(named)?.name() != shape.name() {
+                return Err(crate::cli::error::Error::Parse {
+                    context: source,
+                    reason: format!("its points are for shape '{named}', the plot is for '{}'", shape.name()),
+                });
+            }
+        }
+        let rows = crate::cli::validate::normalise(&table, a.mu0, &source)?;
+        let name = std::path::Path::new(&source).file_name().map_or(source.clone(), |n| n.to_string_lossy().into());
+        crate::cli::figures::overlay(&mut fig, &rows, &name)?;
+    }
     let svg = crate::cli::figures::chart(&fig).svg();
     match &a.out {
         Some(path) => write_drawing("--out", path, &svg),

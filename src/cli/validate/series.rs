@@ -167,7 +167,7 @@ pub fn series_svg(c: &Convergence) -> Result<String> {
     Ok(Chart {
         title: format!("{}: error against resolution", c.shape),
         x: Axis::log("resolution (e.g. steps per period)", (x0 / 1.2, x1 * 1.2)),
-        y: Axis::log("|μ/μ_{0} − exact| (geometric mean per regime)", (ylo / 3.0, yhi * 3.0)),
+        y: Axis::log("|μ/μ_{0} − exact| (geometric mean)", (ylo / 3.0, yhi * 3.0)),
         series,
         key: vec![],
         rules: vec![],

@@ -410,3 +410,59 @@ def test_validate_history_is_the_command_lines() -> None:
     assert [e["kind"] for e in timed["events"]] == [e["kind"] for e in got["events"]]
     with pytest.raises(ValueError, match="one time column"):
         fricosc.validate_history({"tangential": [0.0]}, 0.3, 1.5)
+
+
+USER = ROOT / "data" / "user-stepper"
+
+
+def test_user_stepper_files_are_what_the_script_writes(tmp_path: pathlib.Path) -> None:
+    """data/user-stepper/ is the output of examples/user_stepper.py (its numbers
+    to 1e-12: numpy's cosine may differ in the last bits between machines)."""
+    import sys
+
+    script = ROOT / "src" / "python" / "examples" / "user_stepper.py"
+    subprocess.run([sys.executable, str(script), "--out", str(tmp_path)], check=True, capture_output=True)
+    for committed in sorted(USER.iterdir()):
+        fresh = tmp_path / committed.name
+        if committed.suffix == ".json":
+            a, b = json.loads(committed.read_text()), json.loads(fresh.read_text())
+            assert a.keys() == b.keys()
+            for k in a:
+                assert np.allclose(list(a[k].values()), list(b[k].values()), rtol=1e-12, atol=0), committed.name
+        else:
+            x = np.loadtxt(committed, delimiter=",", comments="#", skiprows=0 if committed.read_text().startswith("#") else 1)
+            y = np.loadtxt(fresh, delimiter=",", comments="#", skiprows=0 if fresh.read_text().startswith("#") else 1)
+            assert np.allclose(x, y, rtol=1e-12, atol=1e-300), committed.name
+
+
+def test_validate_series_is_the_command_lines() -> None:
+    """The cut-off springs' series through Python (tables read by numpy) and
+    through `fricosc validate --series`: the same report, the same findings."""
+    files = [USER / f"parabolic-cutoff@{m}.csv" for m in (250, 500, 1000)]
+    expected = json.loads(cli("validate", "--series", "--shape", "parabolic", "--target", "1e-6", "--format", "json",
+                              *map(str, files), status=1))
+    tables = {}
+    for m, f in zip((250, 500, 1000), files):
+        d = np.loadtxt(f, delimiter=",")
+        tables[m] = {"vbar": d[:, 0], "amp": d[:, 1], "mu_ratio": d[:, 2]}
+    got = fricosc.validate_series(tables, "parabolic", target=1e-6)
+    assert json.loads(json.dumps(got)) == expected
+    assert "resolution_independent" in [f["kind"] for f in got["findings"]]
+    with pytest.raises(TypeError, match="mapping from each resolution"):
+        fricosc.validate_series([1, 2])  # type: ignore[arg-type]
+
+
+def test_validate_history_in_your_units_is_the_command_lines() -> None:
+    """The numpy stepper's history in newtons (written u0 + du cos(omega t)):
+    static_force and mu0 as --static-force and --mu0; the offset pi found."""
+    omega = 2 * np.pi * 20e3
+    path = USER / "history-flat.csv"
+    expected = json.loads(cli("validate", "--history", str(path), "--vbar", "0.3", "--amp", "1.5", "--static-force", "2",
+                              "--mu0", "0.3", "--omega", repr(omega), "--format", "json"))
+    d = np.loadtxt(path, delimiter=",", skiprows=1)
+    got = fricosc.validate_history({"t": d[:, 0], "normal": d[:, 1], "tangential": d[:, 2]}, 0.3, 1.5, omega=omega,
+                                   static_force=2.0, mu0=0.3)
+    assert json.loads(json.dumps(got)) == expected
+    assert got["time_origin"]["offset"] == np.pi
+    with pytest.raises(ValueError, match="static-force"):
+        fricosc.validate_history({"t": d[:, 0], "tangential": d[:, 2]}, 0.3, 1.5, omega=omega, static_force=-1.0)

@@ -4,15 +4,18 @@
 //! accept the same inputs and pick the same rows and fields.
 use libfuzzer_sys::fuzz_target;
 
+#[path = "../../common/rows.rs"]
+mod rows;
+
 const NAMES: [&str; 3] = ["shape", "vbar", "amp"];
 
 type Rows = Option<Vec<(String, Vec<Option<String>>)>>;
 
 fn by_serde(text: &str) -> Rows {
-    let rows = fricosc::cli::rows::raw_array(text).ok()?;
+    let rows = rows::raw_array(text).ok()?;
     rows.iter()
         .map(|r| {
-            let p = fricosc::cli::rows::pick(r, &NAMES).ok()?;
+            let p = rows::pick(r, &NAMES).ok()?;
             Some((r.get().to_string(), p.0.iter().map(|v| v.map(|v| v.get().to_string())).collect()))
         })
         .collect()

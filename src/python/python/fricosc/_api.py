@@ -373,7 +373,7 @@ def _count(x: Any, what: str) -> int:
 
 
 def validate_series(
-    tables: Mapping[float, Any],
+    tables: Mapping[Any, Any],
     shape: Optional[ShapeLike] = None,
     *,
     at_rest: str = "sliding",

@@ -1,7 +1,9 @@
-//! Reading rows of JSON input without building value trees: each row stays as
-//! its raw text (`serde_json::value::RawValue`, borrowed from the input), and
-//! only the fields a command needs are picked out. Duplicate keys in a row are
-//! refused (a row with two `vbar`s is ambiguous). Used by `batch` and `validate`.
+//! The tests' oracle of the JSON row scanner (`fricosc::cli::scan`): rows of a
+//! JSON array read by `serde_json` (each row's raw text borrowed from the
+//! input, only the wanted fields picked out, duplicate keys refused), the way
+//! the command line read them before it had its own one-pass scanner.
+//! `tests/scan.rs` and the fuzz target `batch_json` compare the two.
+#![allow(dead_code)]
 
 use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, Visitor};
 use serde_json::value::RawValue;
@@ -33,16 +35,6 @@ pub fn raw_array(text: &str) -> Result<Vec<&RawValue>, String> {
         Some(_) => return Err("expected a JSON array of objects".into()),
     }
     serde_json::from_str(text).map_err(|e| format!("malformed JSON: {e}"))
-}
-
-/// A finite number from a raw JSON value ([`crate::cli::scan::number_of`]).
-pub fn number(raw: &RawValue, name: &str) -> Result<f64, String> {
-    crate::cli::scan::number_of(raw.get(), name)
-}
-
-/// A string from a raw JSON value, escapes resolved ([`crate::cli::scan::string_of`]).
-pub fn string<'a>(raw: &'a RawValue, name: &str) -> Result<Cow<'a, str>, String> {
-    crate::cli::scan::string_of(raw.get(), name)
 }
 
 struct Pick<'n>(&'n [&'n str]);
@@ -95,23 +87,5 @@ impl<'de> serde::Deserialize<'de> for Key<'de> {
             }
         }
         d.deserialize_str(V)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn picks_fields_refuses_duplicates_and_keeps_raw_text() {
-        let rows = raw_array(r#"[{"a": 1, "b": "x\"y", "c": [1, 2]}, {"a": 1, "a": 2}, 3]"#).unwrap();
-        let p = pick(rows[0], &["c", "b", "z"]).unwrap();
-        assert_eq!(p.0[0].unwrap().get(), "[1, 2]");
-        assert_eq!(string(p.0[1].unwrap(), "b").unwrap(), "x\"y");
-        assert!(p.0[2].is_none());
-        assert_eq!(pick(rows[1], &["a"]).err().unwrap(), "duplicate key 'a'");
-        assert_eq!(pick(rows[2], &["a"]).err().unwrap(), "expected an object");
-        assert_eq!(number(p.0[0].unwrap(), "c").err().unwrap(), "'c' must be a number");
-        assert!(raw_array("{}").is_err() && raw_array(" ").is_err() && raw_array("[1,").is_err());
     }
 }
