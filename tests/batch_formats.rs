@@ -2,22 +2,13 @@
 //! streamed in two passes). The same rows give bit-identical results in every
 //! format; other fields and columns are kept; a bad row anywhere leaves stdout
 //! empty; stdin's spool file is removed.
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
+#[path = "common/cli.rs"]
+mod cli;
+
+use std::process::Output;
 
 fn fricosc(args: &[&str], stdin: &str) -> (Output, u32) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_fricosc"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let id = child.id();
-    let mut input = child.stdin.take().unwrap();
-    input.write_all(stdin.as_bytes()).unwrap();
-    drop(input);
-    (child.wait_with_output().unwrap(), id)
+    cli::run_with_id(args, Some(stdin))
 }
 
 fn ok(args: &[&str], stdin: &str) -> String {

@@ -1,23 +1,13 @@
 //! The command-line interface: each subcommand, and bad input.
 // Reference values keep all their published digits on purpose.
 #![allow(clippy::excessive_precision)]
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
+#[path = "common/cli.rs"]
+mod cli;
+
+use std::process::Output;
 
 fn fricosc(args: &[&str], stdin: Option<&str>) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_fricosc"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let mut input = child.stdin.take().unwrap();
-    if let Some(s) = stdin {
-        input.write_all(s.as_bytes()).unwrap();
-    }
-    drop(input);
-    child.wait_with_output().unwrap()
+    cli::run(args, stdin)
 }
 
 fn json(out: &Output) -> serde_json::Value {

@@ -4,8 +4,11 @@
 //! with the problem it must name: a phase-shifted history, forces in newtons
 //! of a curved shape, a numpy header, a pandas JSON, a non-converging series
 //! (springs cut off at the mean contact radius), a mean over 0.95 of a period.
+#[path = "common/cli.rs"]
+mod cli;
+
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn file(name: &str) -> String {
     let p: PathBuf = [env!("CARGO_MANIFEST_DIR"), "data", "user-stepper", name].iter().collect();
@@ -13,22 +16,7 @@ fn file(name: &str) -> String {
 }
 
 fn run(args: &[&str], stdin: Option<&str>) -> Output {
-    use std::io::Write;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_fricosc"))
-        .args(args)
-        .stdin(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    let input = stdin.unwrap_or("").to_string();
-    let mut pipe = child.stdin.take().unwrap();
-    let writer = std::thread::spawn(move || {
-        let _ = pipe.write_all(input.as_bytes());
-    });
-    let out = child.wait_with_output().unwrap();
-    writer.join().unwrap();
-    out
+    cli::run(args, stdin)
 }
 
 /// The JSON report of a run that exits with `code`.

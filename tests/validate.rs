@@ -3,6 +3,9 @@
 //! The stepper here is the seed's scheme written out for one spring (the flat
 //! punch), with the start and the number of periods as parameters, so that the
 //! bugs of a user's stepper can be planted in it.
+#[path = "common/cli.rs"]
+mod cli;
+
 use fricosc::history::HistoryOptions;
 use fricosc::validation::{compare, AtRest, Check, FindingKind, HistoryData, HistoryValidation, TimeAxis};
 use fricosc::ContactRegime;
@@ -136,16 +139,7 @@ fn a_decrease_in_velocity_is_named() {
 }
 
 fn fricosc_cmd(args: &[&str], stdin: &str) -> std::process::Output {
-    use std::io::Write;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_fricosc"))
-        .args(args)
-        .stdin(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    child.stdin.take().unwrap().write_all(stdin.as_bytes()).unwrap();
-    child.wait_with_output().unwrap()
+    cli::run(args, Some(stdin))
 }
 
 /// The command line: the shape from the file (JSON field, CSV column), a

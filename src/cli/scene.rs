@@ -139,21 +139,21 @@ impl crate::cli::export::Report for SceneResult {
     }
 
     fn rows(&self) -> Vec<Vec<String>> {
-        let n = crate::cli::output::num;
-        self.rows
-            .iter()
-            .map(|x| {
-                vec![
-                    n(x.velocity_m_per_s),
-                    n(x.vbar),
-                    n(x.vhat),
-                    n(x.mu_macro),
-                    n(x.mu_ratio),
-                    n(x.mean_friction_force_n),
-                    n(x.mean_normal_force_n),
-                    x.regime.name().to_string(),
-                ]
-            })
-            .collect()
+        self.rows.iter().map(|x| row_cells(&x).to_vec()).collect()
     }
+}
+
+/// One scene row as text, in the order of the report's columns.
+pub fn row_cells(x: &crate::scene::Row) -> [String; 8] {
+    let n = crate::cli::output::num;
+    [
+        n(x.velocity_m_per_s),
+        n(x.vbar),
+        n(x.vhat),
+        n(x.mu_macro),
+        n(x.mu_ratio),
+        n(x.mean_friction_force_n),
+        n(x.mean_normal_force_n),
+        x.regime.name().to_string(),
+    ]
 }

@@ -110,17 +110,7 @@ fn scenes_csv(out: &mut dyn Write, results: &[(String, crate::scene::SceneResult
             n(r.mu_static),
         ];
         for x in r.rows.iter() {
-            let row = [
-                n(x.velocity_m_per_s),
-                n(x.vbar),
-                n(x.vhat),
-                n(x.mu_macro),
-                n(x.mu_ratio),
-                n(x.mean_friction_force_n),
-                n(x.mean_normal_force_n),
-                x.regime.name().to_string(),
-            ];
-            w.write_record(scene.iter().chain(&row)).map_err(fail)?;
+            w.write_record(scene.iter().chain(&crate::cli::scene::row_cells(&x))).map_err(fail)?;
         }
     }
     w.flush()
