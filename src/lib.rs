@@ -67,10 +67,10 @@ pub mod validation;
 
 pub use contact::regime::ContactRegime;
 pub use contact::shape::{Evaluation, Options, Point, Reader, Shape, DEFAULT_TOL, MAX_EXPONENT, MIN_EXPONENT};
-pub use contact::{flat, flat_tip, history, mdr, profile, regime, Contact, FlatPunch, PowerLaw};
+pub use contact::{combined, flat, flat_tip, history, mdr, profile, regime, Contact, FlatPunch, PowerLaw};
 pub use error::{Error, Result};
 pub use model::ratio::Ratio;
-pub use model::{spring, vbar_from_vhat};
+pub use model::{spring, stop, vbar_from_vhat};
 pub use peers::{seed, stepper};
 
 // Crate-internal short paths.

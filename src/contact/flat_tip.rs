@@ -207,4 +207,9 @@ impl Contact for FlatTip {
         let ratio = Ratio::from_deficit_within(dd, nn, estimate, "flat-tip contact")?;
         Ok(Evaluation { ratio, error_estimate: estimate, interpolation_error: None })
     }
+
+    /// The edge of the flat, where `G` starts like a square root.
+    fn breakpoints(&self) -> Vec<f64> {
+        vec![self.flat_ratio]
+    }
 }

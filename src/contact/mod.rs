@@ -14,6 +14,7 @@ use crate::error::Result;
 use crate::shape::{Evaluation, Point};
 use std::f64::consts::PI;
 
+pub mod combined;
 pub mod flat;
 pub mod flat_tip;
 pub mod history;
@@ -103,6 +104,13 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     /// time-stepping peer and histories then use one spring.
     fn single_spring(&self) -> bool {
         false
+    }
+
+    /// Where the equivalent profile `G` is not smooth (`z` values in
+    /// `(0, reach)`): the combined-oscillation quadrature cuts its bands there
+    /// ([`combined`]). By default none.
+    fn breakpoints(&self) -> Vec<f64> {
+        vec![]
     }
 }
 
@@ -264,6 +272,11 @@ impl Contact for profile::Tabulated {
     }
     fn mean_normal(&self, amp: f64) -> Result<f64> {
         profile::mean_normal(self, amp)
+    }
+
+    /// The table's knots.
+    fn breakpoints(&self) -> Vec<f64> {
+        profile::knots(self)
     }
 }
 

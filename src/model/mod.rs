@@ -1,6 +1,7 @@
 //! The model: checked results ([`ratio::Ratio`]) and one spring ([`spring`]).
 pub mod ratio;
 pub mod spring;
+pub mod stop;
 
 use crate::error::{Error, Result};
 

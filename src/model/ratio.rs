@@ -103,6 +103,29 @@ impl Ratio {
         Ok(Ratio { mu_ratio, reduction: 1.0 - mu_ratio })
     }
 
+    /// Under oscillation in the sliding direction `mu_macro/mu0` may be
+    /// negative (the oscillation pushes the body forward): `mu_ratio` in
+    /// `[-1, 1]` and `reduction` in `[0, 2]` (each from its own integral), up to
+    /// `slack`, rounded onto them.
+    ///
+    /// # Errors
+    /// [`Error::Internal`] for a value that is not finite or outside its range
+    /// by more than rounding (or the slack): a bug, never an answer.
+    pub fn signed(mu_ratio: f64, reduction: f64, slack: f64, context: &str) -> Result<Self> {
+        let slack = slack.max(ROUNDING_SLACK);
+        let within = |name: &str, x: f64, lo: f64, hi: f64| {
+            if x.is_finite() && (lo - slack..=hi + slack).contains(&x) {
+                Ok(x.clamp(lo, hi))
+            } else {
+                Err(Error::Internal { what: format!("{name} = {x:?} is not in [{lo}, {hi}] ({context})") })
+            }
+        };
+        Ok(Ratio {
+            mu_ratio: within("mu_ratio", mu_ratio, -1.0, 1.0)?,
+            reduction: within("reduction", reduction, 0.0, 2.0)?,
+        })
+    }
+
     /// From the mean stick deficit and the mean normal force of the same contact:
     /// the reduction is their quotient. Both must be finite and `>= 0`; a contact
     /// without normal force (never touching) has no reduction.

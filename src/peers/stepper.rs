@@ -278,3 +278,101 @@ pub fn evaluate(shape: &Shape, vbar: f64, amp: f64, st: Stepping) -> Result<Step
         period_change: run.period_change,
     })
 }
+
+/// The stop operator's update over one step, the scheme for oscillation in
+/// the sliding direction: the force moves with the body by `dx` and is held in
+/// `[-b, b]` (a slip either way); out of contact (`b <= 0`) it is 0.
+#[inline]
+pub(crate) fn update_two_way(f: f64, b: f64, dx: f64) -> f64 {
+    if b > 0.0 {
+        (f + dx).clamp(-b, b)
+    } else {
+        0.0
+    }
+}
+
+/// Periods the oscillation peer runs by default: from a sliding start every
+/// spring slips forward within the first period, which fixes its state.
+pub const OSCILLATION_PERIODS: usize = 3;
+
+/// `mu_macro/mu0` under oscillation in the sliding direction
+/// ([`crate::combined`]) by time stepping: `st.springs` springs at the
+/// midpoints of `0 <= z < reach(amp)` (one for the flat punch), each with the
+/// bound `(1 - G(z) - amp cos tau)_+`, all moved by the body's
+/// `X(tau) = vhat tau + T sin(tau + phase)` step by step
+/// ([`update_two_way`]), started sliding (`f = B` at `tau = 0`); the means of
+/// the last of `periods` periods (rectangle rule on the periodic state).
+///
+/// # Errors
+/// [`Error::InvalidParameter`] for bad inputs or resolutions beyond the limits;
+/// [`Error::Internal`] for a non-finite result.
+pub fn evaluate_oscillation(
+    shape: &Shape,
+    o: &crate::combined::Oscillation,
+    st: Stepping,
+    periods: usize,
+) -> Result<SteppingEvaluation> {
+    let o = crate::combined::Oscillation::new(o.vhat, o.amp, o.tangential_amp, o.phase)?;
+    st.check(shape)?;
+    if periods == 0 || periods > 1000 {
+        return Err(Error::param("periods", periods as f64, "must be between 1 and 1000"));
+    }
+    let c = shape.contact();
+    let count = if c.single_spring() { 1 } else { st.springs.max(1) };
+    let levels: Vec<f64> = if c.single_spring() {
+        vec![1.0]
+    } else {
+        let dz = c.reach(o.amp)? / count as f64;
+        (0..count).map(|i| 1.0 - c.equivalent_profile((i as f64 + 0.5) * dz)).collect()
+    };
+    let m = st.steps_per_period;
+    let h = TAU / m as f64;
+    let x_step = |k: usize| {
+        // X(tau_k) - X(tau_{k-1}), without cancellation.
+        let (a, b) = (h * (k - 1) as f64, h * k as f64);
+        o.vhat * h + 2.0 * o.tangential_amp * (0.5 * (a + b) + o.phase).cos() * (0.5 * h).sin()
+    };
+    let chunk_sums = |start: usize| -> [f64; 4] {
+        let cs = &levels[start..(start + CHUNK).min(count)];
+        let mut f: Vec<f64> = cs.iter().map(|&ci| (ci - o.amp).max(0.0)).collect();
+        let mut out = [0.0; 4];
+        for p in 0..periods {
+            let (mut ft, mut fnn) = (Kahan::default(), Kahan::default());
+            for k in 1..=m {
+                let tau = h * k as f64;
+                let (ct, dx) = (tau.cos(), x_step(k));
+                let (mut s_t, mut s_n) = (0.0, 0.0);
+                for (fi, &ci) in f.iter_mut().zip(cs) {
+                    let b = ci - o.amp * ct;
+                    *fi = update_two_way(*fi, b, dx);
+                    s_t += *fi;
+                    s_n += b.max(0.0);
+                }
+                ft.add(s_t);
+                fnn.add(s_n);
+            }
+            // The last period in out[2..], the one before in out[..2].
+            if p + 1 == periods {
+                (out[2], out[3]) = (ft.sum, fnn.sum);
+            } else if p + 2 == periods {
+                (out[0], out[1]) = (ft.sum, fnn.sum);
+            }
+        }
+        out
+    };
+    let starts: Vec<usize> = (0..count).step_by(CHUNK).collect();
+    let sums = crate::numerics::par::map(&starts, |&s| chunk_sums(s))
+        .into_iter()
+        .fold([0.0; 4], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]]);
+    let mu = |t: f64, n: f64| if n > 0.0 { t / n } else { 1.0 };
+    let last = mu(sums[2], sums[3]);
+    if !last.is_finite() {
+        return Err(Error::Internal { what: format!("time stepping gave mu_ratio = {last:?}") });
+    }
+    Ok(SteppingEvaluation {
+        ratio: Ratio { mu_ratio: last, reduction: 1.0 - last },
+        steps: (periods * m) as u64,
+        springs: count,
+        period_change: if periods >= 2 { (last - mu(sums[0], sums[1])).abs() } else { f64::NAN },
+    })
+}

@@ -344,6 +344,11 @@ pub(crate) fn mean_normal(t: &Tabulated, amp: f64) -> Result<f64> {
 
 /// `G(z)` of a tabulated contact (the cubic interpolant; the end cubics
 /// extrapolate beyond the table).
+/// The knots of `G` (in `z`).
+pub(crate) fn knots(t: &Tabulated) -> Vec<f64> {
+    t.g.knots().to_vec()
+}
+
 pub(crate) fn equivalent_profile(t: &Tabulated, z: f64) -> f64 {
     t.g.eval(z).0
 }

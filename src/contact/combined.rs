@@ -1,0 +1,370 @@
+//! Friction under oscillation in the sliding direction, alone or with the
+//! normal oscillation and a phase between them (`shared/MODEL-oscillation.md`),
+//! for every contact: the flat punch is one spring ([`crate::stop`]); a curved
+//! contact is its MDR foundation, each spring with its own bound
+//! `(1 - G(z) - amp cos tau)_+` and the same body motion.
+//!
+//! # Bands
+//! A spring's steady state changes its sequence of phases (stick, forward
+//! and backward slips, contact) only at isolated `z`: where it starts or stops
+//! to lose contact (`G = 1 - amp`, closed form), where `G` itself is not smooth
+//! ([`crate::Contact::breakpoints`]), and where an event appears or disappears
+//! (a tangency of the force and its bound, found by bisection on the
+//! sequence of phases between `z` samples). Between those edges the means
+//! are smooth in `z` and vanish or turn like a square root at the edges, so each
+//! band is integrated by Gauss-Legendre in `theta`, `z = a + (b - a)(1 - cos
+//! theta)/2`, with the order doubled from 8 until two orders agree to the
+//! tolerance; the error estimate is the sum of the last differences (the
+//! higher order's error is far below it once the rule converges) and rounding.
+//!
+//! # Units
+//! `mu_macro/mu0 = 2 int <f> dz / <N>` with `<N>` the contact's mean normal
+//! force ([`crate::Contact::mean_normal`], units `E* x_c u0`) and `<f>` per unit
+//! length in `mu0 E* u0`; the reduction `2 int <B - f> dz / <N>` on its own.
+
+use crate::error::{check_nonneg, Error, Result};
+use crate::ratio::Ratio;
+use crate::shape::Shape;
+use crate::stop::{solve, Bound, Drive, StopKind, StopSpring};
+
+/// The oscillation and the sliding: `vhat` (eq. 15), the normal amplitude
+/// `amp = du/u0`, the tangential amplitude `T = dx/l` (pre-slip lengths
+/// `l = mu0 u0 kz/kx`) and its phase against the normal oscillation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Oscillation {
+    /// `v0 / (omega l)`.
+    pub vhat: f64,
+    /// `du / u0`.
+    pub amp: f64,
+    /// `dx / l`.
+    pub tangential_amp: f64,
+    /// Radians: the body's position is `vhat tau + T sin(tau + phase)`, the
+    /// indentation `u0 - du cos tau`.
+    pub phase: f64,
+}
+
+impl Oscillation {
+    /// Checked: `vhat`, `amp`, `tangential_amp` finite and `>= 0`, `phase` finite.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming the bad input.
+    pub fn new(vhat: f64, amp: f64, tangential_amp: f64, phase: f64) -> Result<Oscillation> {
+        check_nonneg("vhat", vhat)?;
+        check_nonneg("amp", amp)?;
+        check_nonneg("tangential-amp", tangential_amp)?;
+        if !phase.is_finite() {
+            return Err(Error::param("phase", phase, "must be finite"));
+        }
+        // Beyond this the phase's rounding (ulp of the phase, times T) is the answer's scale.
+        if tangential_amp > MAX_TANGENTIAL_AMP || vhat > MAX_TANGENTIAL_AMP {
+            return Err(Error::param(
+                if vhat > MAX_TANGENTIAL_AMP { "vhat" } else { "tangential-amp" },
+                tangential_amp.max(vhat),
+                "must be <= 1e6 pre-slip lengths (beyond it the rigid-body law holds to 1e-12)",
+            ));
+        }
+        Ok(Oscillation { vhat, amp, tangential_amp, phase: phase.rem_euclid(std::f64::consts::TAU) })
+    }
+
+    fn drive(&self) -> Drive {
+        Drive { vhat: self.vhat, t: self.tangential_amp, phase: self.phase }
+    }
+}
+
+/// Largest tangential amplitude and velocity accepted (pre-slip lengths).
+pub const MAX_TANGENTIAL_AMP: f64 = 1e6;
+
+/// One band of a curved contact's springs.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct CombinedBand {
+    /// Extent in `z = x/x_c`.
+    pub from: f64,
+    /// End.
+    pub to: f64,
+    /// What its springs do: the contact and the phases of one period, e.g.
+    /// `permanent: stick, forward`.
+    pub regime: String,
+    /// Its share of `<f>` (of the total; negative where it pushes).
+    pub share: f64,
+    /// Springs evaluated (Gauss nodes of the last order).
+    pub nodes: usize,
+}
+
+/// The answer for one point.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Combined {
+    /// `mu_macro/mu0` (in `[-1, 1]`) and the reduction `1 - mu/mu0` (in `[0, 2]`),
+    /// each from its own integral.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub ratio: Ratio,
+    /// Bound on `|error|` of both.
+    pub error_estimate: f64,
+    /// The flat punch's spring: its phases over one period.
+    pub spring: Option<SpringReport>,
+    /// A curved contact's bands.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Vec::is_empty"))]
+    pub bands: Vec<CombinedBand>,
+}
+
+/// One spring's steady state for a report.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SpringReport {
+    /// `permanent`, `jumping` or `never`.
+    pub contact: crate::stop::Contact,
+    /// The phases, in order from the start of the window.
+    pub phases: Vec<crate::stop::StopPhase>,
+    /// The events of one period: where a phase ends (phase in `[0, 2 pi)`).
+    pub events: Vec<StopEvent>,
+}
+
+/// A change of phase.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct StopEvent {
+    /// What starts: `stick`, `forward` (slip), `backward` (slip), `contact`, `loss_of_contact`.
+    pub kind: &'static str,
+    /// Where, in `[0, 2 pi)`.
+    pub tau: f64,
+    /// The normal force (the bound) there, units `kz u0`.
+    pub normal: f64,
+    /// The tangential force there, units `mu0 kz u0`.
+    pub tangential: f64,
+}
+
+fn kind_name(k: StopKind) -> &'static str {
+    match k {
+        StopKind::Stick => "stick",
+        StopKind::Forward => "forward",
+        StopKind::Backward => "backward",
+    }
+}
+
+/// What a spring does, as a band's name: its contact and phases.
+fn signature(s: &StopSpring) -> (crate::stop::Contact, Vec<StopKind>) {
+    let mut kinds: Vec<StopKind> = s.phases.iter().filter(|p| p.end > p.start).map(|p| p.kind).collect();
+    kinds.dedup();
+    (s.contact, kinds)
+}
+
+fn signature_name(sig: &(crate::stop::Contact, Vec<StopKind>)) -> String {
+    let contact = match sig.0 {
+        crate::stop::Contact::Never => "never",
+        crate::stop::Contact::Permanent => "permanent",
+        crate::stop::Contact::Jumping => "jumping",
+    };
+    let phases: Vec<&str> = sig.1.iter().map(|&k| kind_name(k)).collect();
+    format!("{contact}: {}", phases.join(", "))
+}
+
+/// The flat punch's spring for a report: phases and events.
+fn report(s: &StopSpring, b: Bound) -> SpringReport {
+    use std::f64::consts::TAU;
+    let mut events = vec![];
+    if s.contact == crate::stop::Contact::Jumping {
+        events.push(StopEvent { kind: "contact", tau: s.window.0.rem_euclid(TAU), normal: 0.0, tangential: 0.0 });
+    }
+    let wrap = match (s.contact, s.phases.first(), s.phases.last()) {
+        // Always in contact: the period's first phase starts where its last ends.
+        (crate::stop::Contact::Permanent, Some(first), Some(last)) if first.kind != last.kind => Some((last, first)),
+        _ => None,
+    };
+    for (p, q) in s.phases.iter().zip(s.phases.iter().skip(1)).chain(wrap) {
+        if p.kind == q.kind {
+            continue;
+        }
+        let bound = b.c - b.amp * p.end.cos();
+        let f = match q.kind {
+            StopKind::Stick => q.force,
+            StopKind::Forward => bound,
+            StopKind::Backward => -bound,
+        };
+        events.push(StopEvent {
+            kind: kind_name(q.kind),
+            tau: p.end.rem_euclid(TAU),
+            normal: bound.max(0.0),
+            tangential: f,
+        });
+    }
+    if s.contact == crate::stop::Contact::Jumping {
+        events.push(StopEvent {
+            kind: "loss_of_contact",
+            tau: s.window.1.rem_euclid(TAU),
+            normal: 0.0,
+            tangential: 0.0,
+        });
+    }
+    // At one instant (a spring touching only at tau = 0) the loss comes first.
+    events.sort_by(|x, y| {
+        x.tau.total_cmp(&y.tau).then((y.kind == "loss_of_contact").cmp(&(x.kind == "loss_of_contact")))
+    });
+    SpringReport { contact: s.contact, phases: s.phases.clone(), events }
+}
+
+/// Rounding of one spring's means, in eps of the largest term (the phases'
+/// integrals are closed forms of a few terms each).
+const SPRING_ROUNDING: f64 = 32.0;
+
+/// The scale of a spring's phase integrals (for its rounding): the bound's
+/// and the drive's swings over the period.
+fn spring_scale(b: Bound, d: Drive) -> f64 {
+    (b.c.abs() + b.amp + d.t + d.vhat * std::f64::consts::TAU).max(f64::MIN_POSITIVE)
+}
+
+/// `mu_macro/mu0` of `shape` under the oscillation `o`, to the relative
+/// quadrature tolerance `tol` (curved shapes). `T = 0` is the seed's problem:
+/// its solver's answer (`vbar = vhat/amp`; no oscillation at all: 1).
+///
+/// # Errors
+/// The solver's errors for bad inputs; [`Error::Internal`] for a result out of range.
+pub fn evaluate(shape: &Shape, o: &Oscillation, tol: f64) -> Result<Combined> {
+    let o = Oscillation::new(o.vhat, o.amp, o.tangential_amp, o.phase)?;
+    if o.tangential_amp == 0.0 {
+        if o.amp == 0.0 {
+            return Ok(Combined {
+                ratio: Ratio { mu_ratio: 1.0, reduction: 0.0 },
+                error_estimate: 0.0,
+                spring: None,
+                bands: vec![],
+            });
+        }
+        let e = shape.contact().evaluate(crate::vbar_from_vhat(o.vhat, o.amp)?, o.amp, tol)?;
+        return Ok(Combined { ratio: e.ratio, error_estimate: e.error_estimate, spring: None, bands: vec![] });
+    }
+    let d = o.drive();
+    if shape.contact().single_spring() {
+        let b = Bound { c: 1.0, amp: o.amp };
+        let s = solve(b, d);
+        let nb = s.mean_bound;
+        let est = SPRING_ROUNDING * f64::EPSILON * spring_scale(b, d) / nb;
+        let ratio = Ratio::signed(s.mean_force / nb, s.mean_deficit / nb, est, "flat punch, combined oscillation")?;
+        return Ok(Combined { ratio, error_estimate: est, spring: Some(report(&s, b)), bands: vec![] });
+    }
+    if crate::stop::always_forward(o.amp, d) {
+        // Every spring slips forward whenever it touches: f = B (skip the bands).
+        return Ok(Combined {
+            ratio: Ratio { mu_ratio: 1.0, reduction: 0.0 },
+            error_estimate: 0.0,
+            spring: None,
+            bands: vec![],
+        });
+    }
+    curved(shape.contact(), &o, tol)
+}
+
+/// Largest Gauss-Legendre order of a band.
+const MAX_ORDER: usize = 1024;
+
+/// Samples of the phase sequence per band before bisecting for its changes.
+const SCAN: usize = 32;
+
+fn curved(c: &dyn crate::Contact, o: &Oscillation, tol: f64) -> Result<Combined> {
+    check_nonneg("tol", tol)?;
+    let d = o.drive();
+    let zmax = c.reach(o.amp)?;
+    let spring = |z: f64| {
+        let b = Bound { c: 1.0 - c.equivalent_profile(z), amp: o.amp };
+        (solve(b, d), b)
+    };
+    // Edges: the ends, where contact starts to be lost, where G has kinks, and
+    // where the phase sequence changes (found by bisection between samples).
+    let mut cuts = vec![0.0, zmax];
+    if o.amp > 0.0 && o.amp < 1.0 {
+        let level = 1.0 - o.amp;
+        cuts.push(
+            crate::numerics::root::bracketed(|z| c.equivalent_profile(z) - level, 0.0, 1.0, 4.0 * f64::EPSILON).x,
+        );
+    }
+    cuts.extend(c.breakpoints().into_iter().filter(|&z| z > 0.0 && z < zmax));
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let mut edges = vec![];
+    for w in cuts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let zs: Vec<f64> = (0..=SCAN).map(|k| a + (b - a) * k as f64 / SCAN as f64).collect();
+        // Just inside the ends: the ends themselves may sit on a threshold.
+        let inside = |z: f64| z.clamp(a + (b - a) * 1e-12, b - (b - a) * 1e-12);
+        let sigs: Vec<_> = zs.iter().map(|&z| signature(&spring(inside(z)).0)).collect();
+        edges.push(a);
+        for k in 0..SCAN {
+            changes(&spring, inside(zs[k]), &sigs[k], inside(zs[k + 1]), &sigs[k + 1], &mut edges);
+        }
+    }
+    edges.push(zmax);
+    edges.sort_by(f64::total_cmp);
+    edges.dedup();
+    let normal = c.mean_normal(o.amp)?;
+    let mut bands = vec![];
+    let (mut sum_f, mut sum_d, mut est, mut scale) = (0.0, 0.0, 0.0, 0.0f64);
+    for w in edges.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        if b <= a {
+            continue;
+        }
+        let rule = |n: usize| -> (f64, f64, f64) {
+            let r = crate::numerics::quad::rule(n, 0.0);
+            let (mut f, mut dd, mut mag) = (0.0, 0.0, 0.0);
+            for (&x, &wt) in r.nodes.iter().zip(&r.weights) {
+                // theta in (0, pi): z = a + (b - a)(1 - cos theta)/2, dz = (b - a)/2 sin theta.
+                let th = 0.5 * std::f64::consts::PI * (x + 1.0);
+                let (st, ct) = th.sin_cos();
+                let z = a + (b - a) * 0.5 * (1.0 - ct);
+                let jac = wt * 0.5 * std::f64::consts::PI * 0.5 * (b - a) * st;
+                let (s, bd) = spring(z);
+                f += jac * s.mean_force;
+                dd += jac * s.mean_deficit;
+                mag += jac * spring_scale(bd, d);
+            }
+            (f, dd, mag)
+        };
+        let mut n = 8;
+        let mut prev = rule(n);
+        let (mut cur, mut diff);
+        loop {
+            n *= 2;
+            cur = rule(n);
+            diff = (cur.0 - prev.0).abs().max((cur.1 - prev.1).abs());
+            if diff <= 0.25 * tol * normal || n >= MAX_ORDER {
+                break;
+            }
+            prev = cur;
+        }
+        sum_f += cur.0;
+        sum_d += cur.1;
+        est += diff;
+        scale += cur.2;
+        let mid = spring(0.5 * (a + b)).0;
+        bands.push(CombinedBand { from: a, to: b, regime: signature_name(&signature(&mid)), share: cur.0, nodes: n });
+    }
+    // Both sides of the foundation.
+    let (mu, red) = (2.0 * sum_f / normal, 2.0 * sum_d / normal);
+    let rounding = SPRING_ROUNDING * f64::EPSILON * 2.0 * scale / normal;
+    let error_estimate = 2.0 * est / normal + rounding;
+    for band in &mut bands {
+        band.share = if sum_f != 0.0 { band.share / sum_f } else { 0.0 };
+    }
+    let ratio = Ratio::signed(mu, red, error_estimate, &c.name())?;
+    Ok(Combined { ratio, error_estimate, spring: None, bands })
+}
+
+type Sig = (crate::stop::Contact, Vec<StopKind>);
+
+/// Every change of the phase sequence between `a` (sequence `sa`) and `b`,
+/// by bisection to rounding (both halves, so that a band between two samples
+/// of the same sequence at the ends is still found if the midpoint falls in it).
+fn changes(spring: &dyn Fn(f64) -> (StopSpring, Bound), a: f64, sa: &Sig, b: f64, sb: &Sig, out: &mut Vec<f64>) {
+    if sa == sb {
+        return;
+    }
+    let m = 0.5 * (a + b);
+    if m <= a || m >= b || b - a <= 4.0 * f64::EPSILON * b.abs() {
+        out.push(m);
+        return;
+    }
+    let sm = signature(&spring(m).0);
+    changes(spring, a, sa, m, &sm, out);
+    changes(spring, m, &sm, b, sb, out);
+}
