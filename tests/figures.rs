@@ -10,8 +10,23 @@ use fricosc::Shape;
 fn exact_curves_equal_the_solver_and_every_figure_is_there() {
     let figs = build().unwrap();
     let names: Vec<&str> = figs.iter().map(|f| f.name.as_str()).collect();
-    assert_eq!(names, ["fig3", "fig3-inset", "fig4", "fig5", "fig5-inset", "fig7", "fig8"]);
-    for f in &figs {
+    assert_eq!(
+        names,
+        [
+            "fig3",
+            "fig3-inset",
+            "fig4",
+            "fig5",
+            "fig5-inset",
+            "fig7",
+            "fig8",
+            "tangential-flat",
+            "tangential-parabolic",
+            "combined-phase",
+            "combined-regimes"
+        ]
+    );
+    for f in figs.iter().filter(|f| f.name.starts_with("fig")) {
         let shape =
             if f.name.starts_with("fig7") || f.name.starts_with("fig8") { Shape::parabolic() } else { Shape::flat() };
         for c in f.curves.iter().filter(|c| c.kind == "exact") {
@@ -26,6 +41,55 @@ fn exact_curves_equal_the_solver_and_every_figure_is_there() {
     let inset = figs.iter().find(|f| f.name == "fig5-inset").unwrap();
     for (e, c) in inset.curves[0].points.iter().zip(&inset.curves[1].points).skip(1) {
         assert!((e[1] / c[1] - 1.0).abs() < 1e-6, "amp {}: {} vs {}", e[0], e[1], c[1]);
+    }
+}
+
+/// The figures beyond the seed: their exact points are the solver's
+/// ([`fricosc::combined::evaluate`]), the regime map's tiles are the spring's
+/// regimes, and its sign-change line lies where `mu` is 0.
+#[test]
+fn oscillation_figures_are_the_solvers_values() {
+    use fricosc::cli::figures::{COMBINED, MAP_T};
+    use fricosc::combined::{evaluate, Oscillation};
+    let mu = |shape: &Shape, vhat: f64, amp: f64, t: f64, p: f64| {
+        evaluate(shape, &Oscillation::new(vhat, amp, t, p).unwrap(), fricosc::DEFAULT_TOL).unwrap()
+    };
+    let figs = build().unwrap();
+    for f in &figs {
+        let shape = if f.name.ends_with("parabolic") { Shape::parabolic() } else { Shape::flat() };
+        for c in f.curves.iter().filter(|c| c.kind == "exact" && !f.name.starts_with("fig")) {
+            let t = c.amp.unwrap();
+            assert_eq!(f.family, "tangential_amp", "{}", f.name);
+            for p in c.points.iter().step_by(5) {
+                let want = match f.x {
+                    XAxis::SlidingRatio => mu(&shape, p[0] * t, 0.0, t, 0.0),
+                    XAxis::Phase => mu(&shape, COMBINED.0, COMBINED.1, t, p[0]),
+                    x => panic!("{}: axis {x:?}", f.name),
+                };
+                assert_eq!(p[1], want.ratio.mu_ratio, "{} {}", f.name, c.label);
+            }
+        }
+    }
+    // The rigid-body law is what the largest T approaches.
+    let flat = figs.iter().find(|f| f.name == "tangential-flat").unwrap();
+    let (big, law) = (&flat.curves[5], flat.curves.last().unwrap());
+    for (e, l) in big.points.iter().zip(&law.points).filter(|(e, _)| e[0] < 0.9) {
+        assert!((e[1] - l[1]).abs() < 0.02, "x {}: {} against {}", e[0], e[1], l[1]);
+    }
+    let map = figs.iter().find(|f| f.name == "combined-regimes").unwrap();
+    for c in &map.curves {
+        for p in c.points.iter().step_by(37) {
+            let r = mu(&Shape::flat(), COMBINED.0, p[1], MAP_T, p[0]);
+            if c.kind == "sign change" {
+                assert!(r.ratio.mu_ratio.abs() < 1e-9, "mu {} at {p:?}", r.ratio.mu_ratio);
+                continue;
+            }
+            let s = r.spring.unwrap();
+            let jumping = s.contact == fricosc::stop::Contact::Jumping;
+            let both = s.phases.iter().any(|q| q.kind == fricosc::stop::StopKind::Backward && q.end > q.start);
+            assert_eq!(c.label.starts_with("jumping"), jumping, "{} at {p:?}", c.label);
+            assert_eq!(c.label.ends_with("both ways"), both, "{} at {p:?}", c.label);
+        }
     }
 }
 
@@ -60,6 +124,8 @@ fn approximations_are_drawn_where_the_seed_uses_them() {
             "fig4" | "fig8" => &[0.0, 0.2, 0.4, 0.6, 0.8, 1.0, 1.2, 1.4, 1.6, 1.8, 2.0],
             "fig5" => &[1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 2.0],
             "fig3-inset" => &[1.0],
+            "tangential-flat" | "tangential-parabolic" => &fricosc::cli::figures::TANGENTIAL_AMPS,
+            "combined-phase" => &fricosc::cli::figures::COMBINED_TS,
             _ => &[],
         };
         assert_eq!(amps("exact"), expected, "{}", f.name);
@@ -100,6 +166,8 @@ fn every_drawing_parses_tells_curves_apart_and_renders() {
             XAxis::Vbar => "v\u{304}",
             XAxis::Vhat => "v\u{302}",
             XAxis::Amp => "Δu",
+            XAxis::SlidingRatio => "ω Δx",
+            XAxis::Phase => "φ",
         };
         let text: String = svg.split("<text").skip(1).map(|t| t.split("</text>").next().unwrap()).collect();
         assert!(text.contains(symbol) && text.contains("μ"), "{}: axis symbols", f.name);
@@ -118,7 +186,9 @@ fn every_drawing_parses_tells_curves_apart_and_renders() {
             }
         }
         // Coordinates carry fractions of a point (no whole-pixel steps).
-        assert!(svg.contains(".") && svg.split(" L").nth(5).is_some_and(|s| s.contains('.')), "{}", f.name);
+        // (A map has markers, no curves: their positions.)
+        let sixth = svg.split(" L").nth(5).or_else(|| svg.split(" x=\"").nth(5));
+        assert!(svg.contains(".") && sixth.is_some_and(|s| s.contains('.')), "{}", f.name);
         // The PNG: 300 dpi of the drawing's size in pt.
         let png = plot::png(&svg).unwrap();
         assert_eq!(&png[1..4], b"PNG");

@@ -43,7 +43,10 @@ pub const MAX_LINE: usize = 1 << 20;
 const CHUNK: usize = 1 << 16;
 
 /// The fields a row is read for.
-const NAMES: [&str; 5] = ["shape", "vbar", "amp", "mu_ratio", "reduction"];
+const NAMES: [&str; FIELDS] = ["shape", "vbar", "amp", "mu_ratio", "reduction", "vhat", "tangential_amp", "phase"];
+
+/// How many fields a row is read for.
+const FIELDS: usize = 8;
 
 /// The input (and output) format of a batch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -90,6 +93,47 @@ struct Job {
     replace: bool,
     vbar: f64,
     amp: f64,
+    /// Oscillation in the sliding direction: `(vhat, T, phase)`.
+    tangential: Option<(f64, f64, f64)>,
+}
+
+/// A row's inputs, by name (`None` where absent), into a checked job: the
+/// velocity as `vbar` or `vhat` (one of them; `vbar = vhat/amp`), and with
+/// `tangential_amp` (which needs `vhat`) an optional `phase`.
+fn inputs(
+    shapes: &Shapes,
+    shape: u32,
+    get: &dyn Fn(&'static str) -> std::result::Result<Option<f64>, String>,
+    replace: bool,
+) -> std::result::Result<Job, String> {
+    let amp = get("amp")?.ok_or("missing field 'amp'")?;
+    let (vbar, vhat) = (get("vbar")?, get("vhat")?);
+    let (t, phase) = (get("tangential_amp")?, get("phase")?);
+    let err = |e: crate::Error| e.to_string();
+    if phase.is_some() && t.is_none() {
+        return Err("'phase' needs 'tangential_amp'".into());
+    }
+    let vbar = match (vbar, vhat, t) {
+        (Some(_), Some(_), _) => return Err("give one of 'vbar' and 'vhat', not both".into()),
+        (Some(_), None, Some(_)) => {
+            return Err("'tangential_amp' needs the velocity as 'vhat' (vbar = vhat/amp is undefined at amp 0)".into())
+        }
+        (None, None, _) => return Err("missing field 'vbar' (or 'vhat')".into()),
+        (Some(v), None, None) => v,
+        (None, Some(h), None) => {
+            check_nonneg("vhat", h).map_err(err)?;
+            check_nonneg("amp", amp).map_err(err)?;
+            crate::vbar_from_vhat(h, amp).map_err(err)?
+        }
+        (None, Some(h), Some(_)) => h,
+    };
+    let mut job = shapes.check(shape, vbar, amp, replace).map_err(|e| e.to_string())?;
+    if let (Some(vhat), Some(t)) = (vhat, t) {
+        let phase = phase.unwrap_or(0.0);
+        crate::combined::Oscillation::new(vhat, amp, t, phase).map_err(err)?;
+        job.tangential = Some((vhat, t, phase));
+    }
+    Ok(job)
 }
 
 /// The shapes of a batch, each distinct string parsed (and checked) once.
@@ -154,17 +198,19 @@ impl Shapes {
         if !self.list[shape as usize].is_flat() {
             self.list[shape as usize].contact().reach(amp)?;
         }
-        Ok(Job { shape, replace, vbar, amp })
-    }
-
-    /// Check a row's inputs: shape, numbers, reach.
-    fn job(&mut self, spec: &str, vbar: f64, amp: f64, replace: bool) -> Result<Job> {
-        let k = self.id(spec)?;
-        self.check(k, vbar, amp, replace)
+        Ok(Job { shape, replace, vbar, amp, tangential: None })
     }
 
     fn evaluate(&self, j: &Job) -> crate::Result<Ratio> {
         let shape = &self.list[j.shape as usize];
+        if let Some((vhat, t, phase)) = j.tangential {
+            let o = crate::combined::Oscillation { vhat, amp: j.amp, tangential_amp: t, phase };
+            return match self.stepping {
+                Some(st) => crate::stepper::evaluate_oscillation(shape, &o, st, crate::stepper::OSCILLATION_PERIODS)
+                    .map(|e| e.ratio),
+                None => crate::combined::evaluate(shape, &o, crate::DEFAULT_TOL).map(|e| e.ratio),
+            };
+        }
         match self.stepping {
             Some(st) => crate::stepper::evaluate(shape, j.vbar, j.amp, st).map(|e| e.ratio),
             None => shape.evaluate(j.vbar, j.amp).map(|e| e.ratio),
@@ -188,16 +234,17 @@ impl Shapes {
 }
 
 /// The shape string of one JSON row (its raw fields).
-fn json_spec<'a>(f: &[Option<&'a str>; 5]) -> std::result::Result<std::borrow::Cow<'a, str>, String> {
+fn json_spec<'a>(f: &[Option<&'a str>; FIELDS]) -> std::result::Result<std::borrow::Cow<'a, str>, String> {
     string_of(f[0].ok_or("missing field 'shape'")?, "shape")
 }
 
 /// The inputs of one JSON row whose shape has index `shape`.
-fn json_numbers(shapes: &Shapes, shape: u32, f: &[Option<&str>; 5]) -> std::result::Result<Job, String> {
-    let field = |k: usize| f[k].ok_or_else(|| format!("missing field '{}'", NAMES[k]));
-    let vbar = number_of(field(1)?, "vbar")?;
-    let amp = number_of(field(2)?, "amp")?;
-    shapes.check(shape, vbar, amp, f[3].is_some() || f[4].is_some()).map_err(|e| e.to_string())
+fn json_numbers(shapes: &Shapes, shape: u32, f: &[Option<&str>; FIELDS]) -> std::result::Result<Job, String> {
+    let get = |name: &'static str| -> std::result::Result<Option<f64>, String> {
+        let k = NAMES.iter().position(|&n| n == name).unwrap_or(0);
+        f[k].map(|raw| number_of(raw, name)).transpose()
+    };
+    inputs(shapes, shape, &get, f[3].is_some() || f[4].is_some())
 }
 
 /// An evaluated JSON array, borrowing its rows from the input text.
@@ -211,7 +258,7 @@ pub struct Batch<'a> {
 const CHUNK_BYTES: usize = 32 << 20;
 
 /// A row of a chunk as scanned: its fields, or why it is malformed.
-type Scanned<'a> = std::result::Result<scan::Row<'a, 5>, String>;
+type Scanned<'a> = std::result::Result<scan::Row<'a, FIELDS>, String>;
 
 /// Check one chunk of `n` rows: each scanned in parallel (`scan_row(j)`), their
 /// shapes looked up serially (each distinct string parsed once), their numbers
@@ -590,8 +637,9 @@ pub fn io_of(e: csv::Error) -> io::Error {
 struct Csv {
     reader: csv::Reader<Box<dyn BufRead>>,
     source: String,
-    /// Columns of shape, vbar, amp; of mu_ratio and reduction where present.
-    cols: [usize; 3],
+    /// Columns of shape and amp; of vbar, vhat, tangential_amp and phase where present.
+    cols: [usize; 2],
+    optional: [(&'static str, Option<usize>); 4],
     results: Option<(usize, usize)>,
     header: csv::ByteRecord,
     record: csv::ByteRecord,
@@ -610,14 +658,18 @@ impl Csv {
                 return Err(bad(format!("the header repeats the column '{}'", String::from_utf8_lossy(h))));
             }
         }
-        let cols = [col("shape")?, col("vbar")?, col("amp")?];
+        let cols = [col("shape")?, col("amp")?];
+        let optional = ["vbar", "vhat", "tangential_amp", "phase"].map(|n| (n, find(n)));
+        if optional[0].1.is_none() && optional[1].1.is_none() {
+            return Err(bad("the header has no column 'vbar' (or 'vhat')".into()));
+        }
         let results = match (find("mu_ratio"), find("reduction")) {
             (Some(m), Some(r)) => Some((m, r)),
             (None, None) => None,
             _ => return Err(bad("the header has only one of 'mu_ratio', 'reduction'".into())),
         };
         let record = csv::ByteRecord::new();
-        Ok(Csv { reader, source: source.into(), cols, results, header, record, kept: vec![] })
+        Ok(Csv { reader, source: source.into(), cols, optional, results, header, record, kept: vec![] })
     }
 }
 
@@ -656,19 +708,29 @@ impl Csv {
         if self.record.as_slice().len() > MAX_LINE {
             return Err(bad(format!("a record of more than {MAX_LINE} bytes")));
         }
-        let text = |k: usize, name: &str| {
-            std::str::from_utf8(&self.record[self.cols[k]]).map_err(|_| bad(format!("'{name}' is not UTF-8")))
+        let text = |col: usize, name: &str| {
+            std::str::from_utf8(&self.record[col]).map_err(|_| format!("'{name}' is not UTF-8"))
         };
-        let number = |k: usize, name: &str| -> Result<f64> {
-            let t = text(k, name)?.trim();
+        // A column's number; an empty cell of an optional column is absent.
+        let get = |name: &'static str| -> std::result::Result<Option<f64>, String> {
+            let col = if name == "amp" {
+                Some(self.cols[1])
+            } else {
+                self.optional.iter().find(|(n, _)| *n == name).and_then(|(_, c)| *c)
+            };
+            let Some(col) = col else { return Ok(None) };
+            let t = text(col, name)?.trim();
+            if t.is_empty() && name != "amp" {
+                return Ok(None);
+            }
             match t.parse::<f64>() {
-                Ok(x) if x.is_finite() => Ok(x + 0.0),
-                _ => Err(bad(format!("'{name}' is not a finite number: '{t}'"))),
+                Ok(x) if x.is_finite() => Ok(Some(x + 0.0)),
+                _ => Err(format!("'{name}' is not a finite number: '{t}'")),
             }
         };
-        let spec = text(0, "shape")?.trim();
-        let (vbar, amp) = (number(1, "vbar")?, number(2, "amp")?);
-        let job = shapes.job(spec, vbar, amp, self.results.is_some()).map_err(|e| bad(e.to_string()))?;
+        let spec = text(self.cols[0], "shape").map_err(bad)?.trim();
+        let k = shapes.id(spec).map_err(|e| bad(e.to_string()))?;
+        let job = inputs(shapes, k, &get, self.results.is_some()).map_err(bad)?;
         if keep {
             self.kept.push(self.record.clone());
         }

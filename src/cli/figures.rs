@@ -17,7 +17,8 @@ pub struct Curve {
     pub kind: String,
     /// The seed's equation an approximation evaluates (`eq. 11`, ...).
     pub equation: Option<String>,
-    /// Amplitude `du/u0`, where the curve has one.
+    /// The family's parameter, where the curve has one: `du/u0`, or `dx/l` where
+    /// the figure's `family` is `tangential_amp`.
     pub amp: Option<f64>,
     /// `(x, y)` points.
     pub points: Vec<[f64; 2]>,
@@ -33,6 +34,10 @@ pub enum XAxis {
     Vhat,
     /// The amplitude `du/u0`.
     Amp,
+    /// `vhat/T = v0/(omega dx)`: sliding over the tangential oscillation's velocity amplitude.
+    SlidingRatio,
+    /// The phase of the tangential oscillation against the normal one (radians).
+    Phase,
 }
 
 /// One figure.
@@ -52,6 +57,8 @@ pub struct Figure {
     pub range: [f64; 4],
     /// Draw the critical amplitude `du/u0 = 1` bold (where the seed does).
     pub bold_critical: bool,
+    /// What the curves' `amp` is: `amp` (`du/u0`) or `tangential_amp` (`dx/l`).
+    pub family: String,
     /// Curves.
     pub curves: Vec<Curve>,
 }
@@ -64,12 +71,16 @@ pub const VHAT_LABEL: &str = "normalized velocity v\u{302} (eq. 15)";
 pub const MU_LABEL: &str = "friction coefficient μ_{macro}/μ_{0}";
 /// Legend heading of an amplitude family.
 pub const AMP_LABEL: &str = "Δu_{z}/u_{z0}";
+/// Legend heading of a tangential-amplitude family (pre-slip lengths `l`).
+pub const T_LABEL: &str = "Δx/l";
 
 fn figure(name: &str, title: &str, x: XAxis, range: [f64; 4], curves: Vec<Curve>) -> Figure {
     let x_label = match x {
         XAxis::Vbar => VBAR_LABEL,
         XAxis::Vhat => VHAT_LABEL,
         XAxis::Amp => "oscillation amplitude Δu_{z}/u_{z0}",
+        XAxis::SlidingRatio => "sliding over oscillation velocity v_{0}/(ω Δx)",
+        XAxis::Phase => "phase φ of the tangential oscillation (rad)",
     };
     Figure {
         name: name.into(),
@@ -79,6 +90,7 @@ fn figure(name: &str, title: &str, x: XAxis, range: [f64; 4], curves: Vec<Curve>
         y_label: MU_LABEL.into(),
         range,
         bold_critical: false,
+        family: "amp".into(),
         curves,
     }
 }
@@ -242,7 +254,180 @@ pub fn build() -> Result<Vec<Figure>> {
         }
     }
     figs.push(against_vhat("fig8", "Fig. 8: parabolic indenter against v\u{302}, exact and eq. 27", c));
+    figs.extend(oscillation_figures()?);
     Ok(figs)
+}
+
+/// The tangential amplitudes of the pure-tangential figures.
+pub const TANGENTIAL_AMPS: [f64; 6] = [0.5, 1.0, 2.0, 5.0, 20.0, 100.0];
+/// The combined-oscillation figures' sliding velocity `vhat` and normal amplitude.
+pub const COMBINED: (f64, f64) = (0.3, 1.5);
+/// The tangential amplitudes of the phase figure.
+pub const COMBINED_TS: [f64; 4] = [0.5, 1.0, 2.0, 3.0];
+/// The tangential amplitude of the regime map.
+pub const MAP_T: f64 = 2.0;
+
+/// `mu_macro/mu0` under oscillation (the solver's value).
+fn combined_mu(shape: &Shape, vhat: f64, amp: f64, t: f64, phase: f64) -> Result<f64> {
+    let o = crate::combined::Oscillation::new(vhat, amp, t, phase)?;
+    Ok(crate::combined::evaluate(shape, &o, crate::DEFAULT_TOL)?.ratio.mu_ratio)
+}
+
+/// The figures beyond the seed (`shared/MODEL-oscillation.md`): pure
+/// tangential oscillation against `vhat/T` with the rigid-body law (flat punch
+/// and paraboloid), combined oscillation against the phase, and the flat
+/// punch's regime map over phase and normal amplitude.
+fn oscillation_figures() -> Result<Vec<Figure>> {
+    let mut figs = vec![];
+    let xs = grid(0.0, 1.2, 121);
+    for (shape, name, what) in
+        [(Shape::flat(), "tangential-flat", "flat punch"), (Shape::parabolic(), "tangential-parabolic", "paraboloid")]
+    {
+        let mut c = vec![];
+        for &t in &TANGENTIAL_AMPS {
+            let points =
+                xs.iter().map(|&x| Ok([x, combined_mu(&shape, x * t, 0.0, t, 0.0)?])).collect::<Result<Vec<_>>>()?;
+            c.push(Curve {
+                label: format!("exact, T = {t}"),
+                kind: "exact".into(),
+                equation: None,
+                amp: Some(t),
+                points,
+            });
+        }
+        c.push(approx("rigid body, (2/π) arcsin", None, &xs, |x| 2.0 / std::f64::consts::PI * x.min(1.0).asin()));
+        let mut f = figure(
+            name,
+            &format!(
+                "Oscillation in the sliding direction, {what}: exact for Δx/l = 0.5 to 100, and the rigid-body law \
+                 (2/π) arcsin(v0/(ω Δx)) they tend to"
+            ),
+            XAxis::SlidingRatio,
+            [0.0, 1.2, 0.0, 1.05],
+            c,
+        );
+        f.family = "tangential_amp".into();
+        figs.push(f);
+    }
+    // Against the phase: the friction turns negative (the ratchet).
+    let (vhat, amp) = COMBINED;
+    let phases = grid(0.0, std::f64::consts::TAU, 181);
+    let mut c = vec![];
+    for &t in &COMBINED_TS {
+        let points = phases
+            .iter()
+            .map(|&p| Ok([p, combined_mu(&Shape::flat(), vhat, amp, t, p)?]))
+            .collect::<Result<Vec<_>>>()?;
+        c.push(Curve { label: format!("exact, T = {t}"), kind: "exact".into(), equation: None, amp: Some(t), points });
+    }
+    let mut f = figure(
+        "combined-phase",
+        &format!(
+            "Normal and tangential oscillation, flat punch: friction against the phase at v\u{302} = {vhat}, \
+             Δu/u0 = {amp}; below 0 the oscillations push the punch forward"
+        ),
+        XAxis::Phase,
+        [0.0, std::f64::consts::TAU, -1.05, 1.05],
+        c,
+    );
+    f.family = "tangential_amp".into();
+    figs.push(f);
+    figs.push(regime_map()?);
+    Ok(figs)
+}
+
+/// The flat punch's regimes over phase and normal amplitude at `vhat` of
+/// [`COMBINED`] and `T` = [`MAP_T`]: one marker per grid point, coloured by
+/// whether the contact is kept and which way the spring slips, and the line
+/// where `mu_macro` changes sign.
+fn regime_map() -> Result<Figure> {
+    use crate::stop::{Contact, StopKind};
+    let (vhat, t) = (COMBINED.0, MAP_T);
+    let classes = [
+        "contact kept, slips forward",
+        "contact kept, slips both ways",
+        "jumping, slips forward",
+        "jumping, slips both ways",
+    ];
+    let mut points: Vec<Vec<[f64; 2]>> = vec![vec![]; classes.len()];
+    let phases = grid(0.0, std::f64::consts::TAU, 61);
+    let amps = grid(0.0, 3.0, 41);
+    let mu = |amp: f64, p: f64| -> Result<(f64, usize)> {
+        let o = crate::combined::Oscillation::new(vhat, amp, t, p)?;
+        let r = crate::combined::evaluate(&Shape::flat(), &o, crate::DEFAULT_TOL)?;
+        let class = r.spring.map_or(0, |s| {
+            let both = s.phases.iter().any(|q| q.kind == StopKind::Backward && q.end > q.start);
+            usize::from(both) + if s.contact == Contact::Jumping { 2 } else { 0 }
+        });
+        Ok((r.ratio.mu_ratio, class))
+    };
+    for &p in &phases {
+        for &a in &amps {
+            let (_, k) = mu(a, p)?;
+            points[k].push([p, a]);
+        }
+    }
+    // mu = 0: sign changes along the amplitude and along the phase, refined by bisection.
+    let mut zero = vec![];
+    let sign_changes = |xs: &[f64], f: &dyn Fn(f64) -> Result<f64>| -> Result<Vec<f64>> {
+        let mut out = vec![];
+        for w in xs.windows(2) {
+            let (mut lo, mut hi) = (w[0], w[1]);
+            let neg = f(lo)? < 0.0;
+            if (f(hi)? < 0.0) == neg {
+                continue;
+            }
+            for _ in 0..40 {
+                let m = 0.5 * (lo + hi);
+                if (f(m)? < 0.0) == neg {
+                    lo = m;
+                } else {
+                    hi = m;
+                }
+            }
+            out.push(0.5 * (lo + hi));
+        }
+        Ok(out)
+    };
+    for &p in &grid(0.0, std::f64::consts::TAU, 361) {
+        zero.extend(sign_changes(&grid(0.0, 3.0, 61), &|a| Ok(mu(a, p)?.0))?.into_iter().map(|a| [p, a]));
+    }
+    for &a in &grid(0.0, 3.0, 241) {
+        zero.extend(
+            sign_changes(&grid(0.0, std::f64::consts::TAU, 121), &|p| Ok(mu(a, p)?.0))?.into_iter().map(|p| [p, a]),
+        );
+    }
+    let mut curves: Vec<Curve> = classes
+        .iter()
+        .zip(points)
+        .filter(|(_, pts)| !pts.is_empty())
+        .map(|(name, pts)| Curve {
+            label: (*name).into(),
+            kind: "regime".into(),
+            equation: None,
+            amp: None,
+            points: pts,
+        })
+        .collect();
+    curves.push(Curve {
+        label: "μ_{macro} = 0 (< 0 on the side of φ = 1)".into(),
+        kind: "sign change".into(),
+        equation: None,
+        amp: None,
+        points: zero,
+    });
+    let mut f = figure(
+        "combined-regimes",
+        &format!(
+            "Normal and tangential oscillation, flat punch: regimes over phase and normal amplitude at \
+             v\u{302} = {vhat}, Δx/l = {t}, and where the friction changes sign"
+        ),
+        XAxis::Phase,
+        [0.0, std::f64::consts::TAU, 0.0, 3.0],
+        curves,
+    );
+    f.y_label = "oscillation amplitude Δu_{z}/u_{z0}".into();
+    Ok(f)
 }
 
 /// At most this many amplitudes in one [`user`] figure (so that neighbouring
@@ -255,6 +440,24 @@ pub const MAX_POINTS: usize = 100_000;
 /// `shape` at each amplitude over the velocities `xs` (`vbar`, or `vhat` where
 /// `vhat` is set), in the style of the seed's figures.
 pub fn user(shape: &Shape, amps: &[f64], xs: &[f64], vhat: bool) -> Result<Figure> {
+    user_with(shape, amps, xs, vhat, None)
+}
+
+/// [`user`], under an oscillation in the sliding direction `(T, phase)` where
+/// given (velocities `vhat` then; the axis reaches down to -1 where `mu` does).
+pub fn user_with(
+    shape: &Shape,
+    amps: &[f64],
+    xs: &[f64],
+    vhat: bool,
+    tangential: Option<(f64, f64)>,
+) -> Result<Figure> {
+    if tangential.is_some() && !vhat {
+        return Err(Error::Parse {
+            context: "--tangential-amp".into(),
+            reason: "give the velocities as --vhat (vbar = vhat/amp is undefined without normal oscillation)".into(),
+        });
+    }
     if amps.len() > MAX_CURVES {
         return Err(Error::TooLarge {
             what: "amplitudes in one plot".into(),
@@ -302,10 +505,30 @@ pub fn user(shape: &Shape, amps: &[f64], xs: &[f64], vhat: bool) -> Result<Figur
             seen.push(**a);
             new
         })
-        .map(|&a| exact(shape, a, &xs, vhat))
+        .map(|&a| match tangential {
+            None => exact(shape, a, &xs, vhat),
+            Some((t, p)) => {
+                let points =
+                    xs.iter().map(|&x| Ok([x, combined_mu(shape, x, a, t, p)?])).collect::<Result<Vec<_>>>()?;
+                Ok(Curve {
+                    label: format!("exact, du/u0 = {a}"),
+                    kind: "exact".into(),
+                    equation: None,
+                    amp: Some(a),
+                    points,
+                })
+            }
+        })
         .collect::<Result<Vec<_>>>()?;
     let (x, title) = if vhat { (XAxis::Vhat, "vhat") } else { (XAxis::Vbar, "vbar") };
-    let mut f = figure("plot", &format!("{}: mu/mu0 against {title}", shape.name()), x, [lo, hi, 0.0, 1.05], curves);
+    let negative = curves.iter().flat_map(|c| &c.points).any(|p| p[1] < 0.0);
+    let title = match tangential {
+        None => format!("{}: mu/mu0 against {title}", shape.name()),
+        Some((t, p)) => {
+            format!("{}: mu/mu0 against {title}, tangential oscillation dx/l = {t}, phase {p}", shape.name())
+        }
+    };
+    let mut f = figure("plot", &title, x, [lo, hi, if negative { -1.05 } else { 0.0 }, 1.05], curves);
     f.bold_critical = amps.len() > 1 && amps.contains(&1.0);
     Ok(f)
 }
@@ -390,8 +613,18 @@ pub fn chart(f: &Figure) -> Chart {
             }
             Some(a) => (Style::dashed(color(a), dash(c)).width(if c.kind == "exact" { bold(a) } else { 1.0 }), false),
             None => {
-                let s = Style::dashed(plot::OKABE_ITO[loners % plot::OKABE_ITO.len()], dash(c));
-                loners += 1;
+                let color = plot::OKABE_ITO[loners % plot::OKABE_ITO.len()];
+                // A map's tiles in the light colours (Okabe-Ito after black).
+                let tile = plot::OKABE_ITO[(loners + 1) % plot::OKABE_ITO.len()];
+                let s = match c.kind.as_str() {
+                    // A map: markers only.
+                    "regime" => Style { color: tile, dash: None, width: 1.0, marker: Some(plot::Marker::Square) },
+                    "sign change" => {
+                        Style { color: plot::BLACK, dash: None, width: 1.0, marker: Some(plot::Marker::Dot) }
+                    }
+                    _ => Style::dashed(color, dash(c)),
+                };
+                loners += usize::from(c.kind != "sign change");
                 (s, true)
             }
         };
@@ -404,7 +637,7 @@ pub fn chart(f: &Figure) -> Chart {
     }
     let mut key = vec![];
     if !amps.is_empty() {
-        key.push(Key::Heading(AMP_LABEL.into()));
+        key.push(Key::Heading(if f.family == "amp" { AMP_LABEL } else { T_LABEL }.into()));
         for &a in &amps {
             key.push(Key::Entry(Style::line(color(a)).width(bold(a)), crate::cli::output::num(a)));
         }
@@ -442,9 +675,10 @@ pub fn chart(f: &Figure) -> Chart {
 }
 
 impl crate::cli::export::Report for Figure {
-    /// Long format: `curve,kind,equation,amp,x,y`.
+    /// Long format: `curve,kind,equation,amp,x,y` (`tangential_amp` for the
+    /// figures whose family is the tangential amplitude).
     fn columns(&self) -> Vec<String> {
-        ["curve", "kind", "equation", "amp", "x", "y"].map(String::from).to_vec()
+        ["curve", "kind", "equation", self.family.as_str(), "x", "y"].map(String::from).to_vec()
     }
 
     fn rows(&self) -> Vec<Vec<String>> {

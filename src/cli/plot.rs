@@ -133,6 +133,8 @@ pub enum Marker {
     Triangle,
     /// A filled diamond.
     Diamond,
+    /// A small dot (dense point sets that read as a line).
+    Dot,
 }
 
 /// How a series is drawn.
@@ -436,6 +438,7 @@ fn marker(out: &mut String, m: Marker, x: f64, y: f64, color: Rgb) {
             y + 1.3 * r,
             x - 1.3 * r
         ),
+        Marker::Dot => write!(out, r#"<circle cx="{x:.2}" cy="{y:.2}" r="0.55" fill="{c}"/>"#),
     };
 }
 

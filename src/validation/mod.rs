@@ -26,7 +26,10 @@
 //! finding means something is wrong: the command line exits 1 on any.
 
 mod history;
+mod oscillation;
 mod series;
+
+pub use oscillation::{compare_oscillation, OscillationRegime, OscillationRow, OscillationValidation};
 
 pub use history::{
     compare_history, to_static_units, FoundEvent, HistoryData, HistorySample, HistoryValidation, NormalComparison,
@@ -154,15 +157,20 @@ pub(crate) fn rms(errors: impl Iterator<Item = f64> + Clone) -> f64 {
 
 impl Summary {
     fn of<'a>(rows: impl Iterator<Item = &'a Row> + Clone) -> Option<Summary> {
-        let rms_error = rms(rows.clone().map(|r| r.error));
+        Summary::of_errors(rows.map(|r| (r.row, r.error, r.relative_error)))
+    }
+
+    /// The summary of `(row, error, relative error)` triples.
+    pub(crate) fn of_errors(errors: impl Iterator<Item = (usize, f64, Option<f64>)> + Clone) -> Option<Summary> {
+        let rms_error = rms(errors.clone().map(|r| r.1));
         let (mut n, mut max_abs, mut max_rel, mut worst) = (0usize, -1.0f64, 0.0f64, 0usize);
-        for r in rows {
+        for (row, error, rel) in errors {
             n += 1;
-            if r.error.abs() > max_abs {
-                max_abs = r.error.abs();
-                worst = r.row;
+            if error.abs() > max_abs {
+                max_abs = error.abs();
+                worst = row;
             }
-            max_rel = max_rel.max(r.relative_error.map_or(0.0, f64::abs));
+            max_rel = max_rel.max(rel.map_or(0.0, f64::abs));
         }
         (n > 0).then_some(Summary { n, max_abs_error: max_abs, rms_error, max_rel_error: max_rel, worst_row: worst })
     }
@@ -231,6 +239,9 @@ pub enum FindingKind {
     AboveBound,
     /// An exact event without counterpart in a history.
     MissingEvent,
+    /// Values below -1 (under oscillation in the sliding direction, where
+    /// negative values are allowed).
+    BelowMinusOne,
 }
 
 /// Something wrong with the table, and where.

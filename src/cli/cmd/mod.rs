@@ -169,6 +169,63 @@ impl VelocityList {
     }
 }
 
+/// Oscillation in the sliding direction for one point (`fricosc::combined`).
+#[derive(Args)]
+pub struct TangentialPoint {
+    /// Amplitude of an oscillation in the sliding direction, dx/l in pre-slip lengths l = mu0 u0 kz/kx
+    /// (>= 0, at most 1e6; 0 is the seed's problem, bit for bit). Needs the velocity as --vhat.
+    #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
+    pub tangential_amp: Option<f64>,
+    /// Its phase against the normal oscillation, radians (default 0): the body moves as
+    /// vhat tau + T sin(tau + phase) while the indentation is u0 - du cos tau.
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "tangential_amp")]
+    pub phase: Option<f64>,
+}
+
+impl TangentialPoint {
+    /// The oscillation at `vhat` and `amp`, if a tangential amplitude was given.
+    pub fn oscillation(&self, velocity: &VelocityPoint, amp: f64) -> Result<Option<crate::combined::Oscillation>> {
+        let Some(t) = self.tangential_amp else { return Ok(None) };
+        let vhat = vhat_for_tangential(velocity.vbar.is_some(), velocity.vhat)?;
+        Ok(Some(crate::combined::Oscillation::new(vhat, amp, t, self.phase.unwrap_or(0.0))?))
+    }
+}
+
+/// `--tangential-amp` needs `--vhat`: `vbar = vhat/amp` is not defined without normal oscillation.
+fn vhat_for_tangential(has_vbar: bool, vhat: Option<f64>) -> Result<f64> {
+    match (has_vbar, vhat) {
+        (false, Some(v)) => Ok(v),
+        _ => Err(Error::Parse {
+            context: "--tangential-amp".into(),
+            reason: "give the velocity as --vhat (vbar = vhat/amp is undefined without normal oscillation)".into(),
+        }),
+    }
+}
+
+/// Oscillation in the sliding direction for a table: lists swept like `--amp`.
+#[derive(Args)]
+pub struct TangentialList {
+    /// Amplitudes of an oscillation in the sliding direction, dx/l in pre-slip lengths
+    /// l = mu0 u0 kz/kx (each >= 0, at most 1e6): a comma list or start:stop:count. Needs --vhat;
+    /// adds the columns tangential_amp and phase.
+    #[arg(long, allow_hyphen_values = true, value_parser = list)]
+    pub tangential_amp: Option<List>,
+    /// Phases against the normal oscillation, radians (default 0): a comma list or start:stop:count.
+    #[arg(long, allow_hyphen_values = true, value_parser = list, requires = "tangential_amp")]
+    pub phase: Option<List>,
+}
+
+impl TangentialList {
+    /// `(tangential amplitudes, phases)` if given; checks that the velocities are `vhat`.
+    pub fn values(&self, is_vhat: bool) -> Result<Option<(Vec<f64>, Vec<f64>)>> {
+        let Some(t) = &self.tangential_amp else { return Ok(None) };
+        if !is_vhat {
+            vhat_for_tangential(true, None)?;
+        }
+        Ok(Some((t.0.clone(), self.phase.as_ref().map_or(vec![0.0], |p| p.0.clone()))))
+    }
+}
+
 // `--method`: the command-line face of the exact solver and the stepping peer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum MethodArg {

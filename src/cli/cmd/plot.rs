@@ -22,6 +22,13 @@ pub struct PlotArgs {
     /// plot has none). At most 10^5 points.
     #[arg(long, value_name = "FILE")]
     pub overlay: Option<String>,
+    /// Amplitude of an oscillation in the sliding direction, dx/l in pre-slip lengths (>= 0, at most 1e6;
+    /// needs --vhat): the curves are the combined oscillation's.
+    #[arg(long, allow_hyphen_values = true, value_parser = super::nonneg)]
+    pub tangential_amp: Option<f64>,
+    /// Its phase against the normal oscillation, radians (default 0).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number, requires = "tangential_amp")]
+    pub phase: Option<f64>,
     /// With --overlay and a column mu: the Coulomb coefficient (mu_ratio = mu / mu0).
     #[arg(long, allow_hyphen_values = true, value_parser = super::positive, requires = "overlay")]
     pub mu0: Option<f64>,
@@ -33,7 +40,8 @@ pub fn run(a: PlotArgs) -> Result<()> {
     }
     let shape = crate::cli::input::parse_shape(&a.shape)?;
     let (xs, vhat) = a.velocity.values();
-    let mut fig = crate::cli::figures::user(&shape, &a.amp.0, xs, vhat)?;
+    let tangential = a.tangential_amp.map(|t| (t, a.phase.unwrap_or(0.0)));
+    let mut fig = crate::cli::figures::user_with(&shape, &a.amp.0, xs, vhat, tangential)?;
     if let Some(file) = &a.overlay {
         let (text, source) = super::read_input(Some(file.clone()))?;
         let table = crate::cli::validate::read_table(&text, &source)?;

@@ -1,6 +1,6 @@
 //! `fricosc point`: one point with its regime, events and bands (JSON).
 
-use super::{io_err, number, Common, VelocityPoint};
+use super::{io_err, number, Common, TangentialPoint, VelocityPoint};
 use crate::cli::error::{Error, Result};
 use crate::shape::Shape;
 use clap::Args;
@@ -15,6 +15,27 @@ pub struct PointArgs {
     /// Amplitude du/u0 (>= 0).
     #[arg(long, allow_hyphen_values = true, value_parser = number)]
     pub amp: f64,
+    #[command(flatten)]
+    pub tangential: TangentialPoint,
+}
+
+/// A point under oscillation in the sliding direction: the inputs, the answer
+/// and the flat punch's spring (phases and events) or a curved contact's bands.
+fn combined_point(shape: &Shape, o: &crate::combined::Oscillation, common: &Common) -> Result<serde_json::Value> {
+    let mut v = serde_json::json!({"vhat": o.vhat, "amp": o.amp, "tangential_amp": o.tangential_amp, "phase": o.phase});
+    let body = match common.method.stepping()? {
+        Some(st) => {
+            let e = crate::stepper::evaluate_oscillation(shape, o, st, crate::stepper::OSCILLATION_PERIODS)?;
+            serde_json::json!({"mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction, "method": "stepping",
+                "steps": e.steps, "springs": e.springs, "period_change": e.period_change})
+        }
+        None => serde_json::to_value(crate::combined::evaluate(shape, o, common.options().tol)?)
+            .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?,
+    };
+    if let (serde_json::Value::Object(m), serde_json::Value::Object(b)) = (&mut v, body) {
+        m.extend(b);
+    }
+    Ok(v)
 }
 
 fn exact_point(shape: &Shape, vbar: f64, amp: f64, opts: &crate::Options) -> Result<serde_json::Value> {
@@ -25,14 +46,10 @@ fn exact_point(shape: &Shape, vbar: f64, amp: f64, opts: &crate::Options) -> Res
 pub fn run(a: PointArgs) -> Result<()> {
     let shape = crate::cli::input::parse_shape(&a.common.shape)?;
     let amp = a.amp;
-    let vbar = a.velocity.vbar(amp)?;
-    let body = match a.common.method.stepping()? {
-        Some(st) => {
-            let e = crate::stepper::evaluate(&shape, vbar, amp, st)?;
-            serde_json::json!({"vbar": vbar, "amp": amp, "mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction,
-                "method": "stepping", "steps": e.steps, "springs": e.springs, "period_change": e.period_change})
-        }
-        None => exact_point(&shape, vbar, amp, &a.common.options())?,
+    let body = if let Some(o) = a.tangential.oscillation(&a.velocity, amp)? {
+        combined_point(&shape, &o, &a.common)?
+    } else {
+        normal_point(&shape, &a, amp)?
     };
     let mut obj = serde_json::Map::new();
     obj.insert("shape".into(), shape.name().into());
@@ -43,4 +60,17 @@ pub fn run(a: PointArgs) -> Result<()> {
     let mut out = io::stdout().lock();
     serde_json::to_writer_pretty(&mut out, &json).map_err(|e| io_err(e.into()))?;
     writeln!(out).map_err(io_err)
+}
+
+/// The seed's problem: the solver's point, or the stepping peer's.
+fn normal_point(shape: &Shape, a: &PointArgs, amp: f64) -> Result<serde_json::Value> {
+    let vbar = a.velocity.vbar(amp)?;
+    Ok(match a.common.method.stepping()? {
+        Some(st) => {
+            let e = crate::stepper::evaluate(shape, vbar, amp, st)?;
+            serde_json::json!({"vbar": vbar, "amp": amp, "mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction,
+                "method": "stepping", "steps": e.steps, "springs": e.springs, "period_change": e.period_change})
+        }
+        None => exact_point(shape, vbar, amp, &a.common.options())?,
+    })
 }

@@ -1,6 +1,6 @@
 //! `fricosc table`: a grid of amplitudes x velocities (JSON or CSV).
 
-use super::{io_err, list, vbar_of, Common, List, VelocityList};
+use super::{io_err, list, vbar_of, Common, List, TangentialList, VelocityList};
 use crate::cli::error::{Error, Result};
 use crate::cli::output::{Format, TableWriter};
 use clap::Args;
@@ -16,9 +16,62 @@ pub struct TableArgs {
     /// Amplitudes du/u0: a comma list or start:stop:count.
     #[arg(long, allow_hyphen_values = true, value_parser = list)]
     pub amp: List,
+    #[command(flatten)]
+    pub tangential: TangentialList,
     /// Output format.
     #[arg(long, value_enum, default_value = "json")]
     pub format: Format,
+}
+
+/// A table under oscillation in the sliding direction: every (amp, T, phase,
+/// vhat), columns vhat, amp, tangential_amp, phase, mu_ratio, reduction.
+fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases: &[f64]) -> Result<()> {
+    let (vels, _) = a.velocity.values();
+    let amps = &a.amp.0;
+    let total = [amps.len(), ts.len(), phases.len(), vels.len()].iter().map(|&n| n as u128).product::<u128>();
+    if total > crate::cli::grid::MAX_LIST {
+        return Err(Error::TooLarge {
+            what: "table rows (amplitudes x tangential amplitudes x phases x velocities)".into(),
+            count: total,
+            limit: crate::cli::grid::MAX_LIST,
+        });
+    }
+    let mut points = Vec::with_capacity(total as usize);
+    for &amp in amps {
+        for &t in ts {
+            for &phase in phases {
+                for &v in vels {
+                    // Checked before any work (and the phase kept as given).
+                    crate::combined::Oscillation::new(v, amp, t, phase)?;
+                    points.push(crate::combined::Oscillation { vhat: v, amp, tangential_amp: t, phase });
+                }
+            }
+        }
+    }
+    let stepping = a.common.method.stepping()?;
+    if let Some(st) = stepping {
+        st.check(shape)?;
+    }
+    let tol = a.common.options().tol;
+    let rows: Vec<[f64; 6]> = points
+        .par_iter()
+        .map(|o| {
+            let r = match stepping {
+                Some(st) => {
+                    crate::stepper::evaluate_oscillation(shape, o, st, crate::stepper::OSCILLATION_PERIODS)?.ratio
+                }
+                None => crate::combined::evaluate(shape, o, tol)?.ratio,
+            };
+            Ok([o.vhat, o.amp, o.tangential_amp, o.phase, r.mu_ratio, r.reduction])
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "reduction"];
+    let mut w =
+        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols).map_err(io_err)?;
+    for r in &rows {
+        w.row(r).map_err(io_err)?;
+    }
+    w.finish().map_err(io_err)
 }
 
 pub fn run(a: TableArgs) -> Result<()> {
@@ -26,6 +79,9 @@ pub fn run(a: TableArgs) -> Result<()> {
     let opts = a.common.options();
     let amps = &a.amp.0;
     let (vels, is_vhat) = a.velocity.values();
+    if let Some((ts, phases)) = a.tangential.values(is_vhat)? {
+        return combined_table(&a, &shape, &ts, &phases);
+    }
     let total = amps.len() as u128 * vels.len() as u128;
     if total > crate::cli::grid::MAX_LIST {
         return Err(Error::TooLarge {

@@ -185,8 +185,34 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
     let table = crate::cli::validate::read_table(&text, &source)?;
     drop(text);
     let (shape, shape_source) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
-    let rows = crate::cli::validate::normalise(&table, mu0, &source)?;
     let peer = a.peer.map(|m| Stepping { steps_per_period: m as usize, springs: a.peer_springs.unwrap_or(m) as usize });
+    if table.tangential.is_some() {
+        let rows = crate::cli::validate::oscillation_rows(&table, mu0, &source)?;
+        let v = crate::validation::compare_oscillation(&shape, &rows, &check.with_peer(peer))?;
+        #[derive(serde::Serialize)]
+        struct OscillationReport<'a> {
+            #[serde(flatten)]
+            validation: &'a crate::validation::OscillationValidation,
+            shape_source: ShapeSource,
+            format: &'a str,
+            #[serde(skip_serializing_if = "<[String]>::is_empty")]
+            ignored_columns: &'a [String],
+        }
+        let report = OscillationReport {
+            validation: &v,
+            shape_source,
+            format: &table.format,
+            ignored_columns: &table.ignored_columns,
+        };
+        let body = match format.as_str() {
+            "json" => compact(&report)?,
+            "csv" => crate::cli::validate::oscillation_csv(&v)?,
+            _ => crate::cli::validate::oscillation_summary(&v, &source),
+        };
+        print(&body)?;
+        return Ok(outcome(&a, !v.findings.is_empty(), max_error.map_or(0.0, |_| v.summary.max_abs_error)));
+    }
+    let rows = crate::cli::validate::normalise(&table, mu0, &source)?;
     let v = crate::validation::compare(&shape, &rows, &check.with_peer(peer))?;
     let report =
         Report { validation: &v, shape_source, format: &table.format, ignored_columns: &table.ignored_columns };

@@ -47,15 +47,20 @@ pub struct RawTable {
     pub ignored_columns: Vec<String>,
     /// How the file was read ("CSV (',' delimited)", "pandas 'columns' JSON", ...).
     pub format: String,
+    /// Under oscillation in the sliding direction: `(tangential_amp, phase)`
+    /// of every row (a missing `phase` column is 0).
+    pub tangential: Option<Vec<(f64, f64)>>,
 }
 
-const TABLE_COLUMNS: [(&str, Kind); 6] = [
+const TABLE_COLUMNS: [(&str, Kind); 8] = [
     ("vbar", Kind::Number),
     ("vhat", Kind::Number),
     ("amp", Kind::Number),
     ("mu_ratio", Kind::Number),
     ("mu", Kind::Number),
     ("shape", Kind::Label),
+    ("tangential_amp", Kind::Number),
+    ("phase", Kind::Number),
 ];
 
 /// Which of two alternative columns is present (exactly one must be): the second's?
@@ -93,19 +98,125 @@ pub fn read_table(text: &str, source: &str) -> Result<RawTable> {
             shapes.iter().map(|s| format!("'{s}'")).collect::<Vec<_>>().join(", ")
         )));
     }
-    let read = [if vhat { "vhat" } else { "vbar" }, "amp", if mu { "mu" } else { "mu_ratio" }, "shape"];
+    let tangential = match (c.numbers[6].take(), c.numbers[7].take()) {
+        (None, Some(_)) => return Err(err("a column 'phase' without 'tangential_amp'".into())),
+        (None, None) => None,
+        (Some(_), _) if !vhat => {
+            return Err(err(
+                "a table with 'tangential_amp' needs its velocities as 'vhat' (vbar = vhat/amp is undefined \
+                 without normal oscillation)"
+                    .into(),
+            ))
+        }
+        (Some(t), p) => Some(t.iter().enumerate().map(|(i, &t)| (t, p.as_ref().map_or(0.0, |p| p[i]))).collect()),
+    };
+    let read = [
+        if vhat { "vhat" } else { "vbar" },
+        "amp",
+        if mu { "mu" } else { "mu_ratio" },
+        "shape",
+        "tangential_amp",
+        "phase",
+    ];
     let ignored_columns = c.names.iter().filter(|h| !read.contains(&h.as_str())).cloned().collect();
     let rows = (0..c.rows).map(|i| RawRow { velocity: velocity[i], amp: amp[i], friction: friction[i] }).collect();
-    Ok(RawTable { shape: shapes.pop(), vhat, mu, rows, ignored_columns, format: c.format })
+    Ok(RawTable { shape: shapes.pop(), vhat, mu, rows, ignored_columns, format: c.format, tangential })
 }
 
 /// `(vbar, amp, mu_ratio)` of every row ([`crate::validation::rows_from_columns`]).
 pub fn normalise(table: &RawTable, mu0: Option<f64>, source: &str) -> Result<Vec<(f64, f64, f64)>> {
+    if table.tangential.is_some() {
+        return Err(Error::Parse {
+            context: source.into(),
+            reason: "a table under oscillation in the sliding direction (column 'tangential_amp'): only a \
+                     single table's validate compares it"
+                .into(),
+        });
+    }
     let v: Vec<f64> = table.rows.iter().map(|r| r.velocity).collect();
     let a: Vec<f64> = table.rows.iter().map(|r| r.amp).collect();
     let m: Vec<f64> = table.rows.iter().map(|r| r.friction).collect();
     rows_from_columns(&v, &a, &m, table.vhat, table.mu, mu0)
         .map_err(|e| Error::Parse { context: source.into(), reason: e.to_string() })
+}
+
+/// `[vhat, amp, tangential_amp, phase, mu_ratio]` of a table under
+/// oscillation in the sliding direction (`mu / mu0` where the column is `mu`).
+pub fn oscillation_rows(table: &RawTable, mu0: Option<f64>, source: &str) -> Result<Vec<[f64; 5]>> {
+    let bad = |reason: &str| Error::Parse { context: source.into(), reason: reason.into() };
+    let tangential = table.tangential.as_ref().ok_or_else(|| bad("no column 'tangential_amp'"))?;
+    let scale = match (table.mu, mu0) {
+        (true, Some(m)) => m,
+        (true, None) => return Err(bad("the column 'mu' needs --mu0 (mu_ratio = mu / mu0)")),
+        (false, Some(_)) => return Err(bad("--mu0 applies to a column 'mu'; this table has 'mu_ratio'")),
+        (false, None) => 1.0,
+    };
+    Ok(table.rows.iter().zip(tangential).map(|(r, &(t, p))| [r.velocity, r.amp, t, p, r.friction / scale]).collect())
+}
+
+/// The summary of an oscillation table's comparison.
+pub fn oscillation_summary(v: &crate::validation::OscillationValidation, source: &str) -> String {
+    use std::fmt::Write;
+    let s = &v.summary;
+    let mut out = format!(
+        "{source}: {} rows of {} under oscillation in the sliding direction\n\
+         largest error {:.3e} (row {}), rms {:.3e}, largest relative {:.3e}\n",
+        s.n, v.shape, s.max_abs_error, s.worst_row, s.rms_error, s.max_rel_error
+    );
+    if let Some(p) = &v.peer {
+        let _ = writeln!(
+            out,
+            "stepping peer ({} steps a period, {} springs): largest error {:.3e}, rms {:.3e}",
+            p.steps_per_period, p.springs, p.max_abs_error, p.rms_error
+        );
+    }
+    out.push_str("by regime:\n");
+    for r in &v.by_regime {
+        let _ = writeln!(
+            out,
+            "  {:>5} rows  largest {:.3e}  rms {:.3e}  {}",
+            r.summary.n, r.summary.max_abs_error, r.summary.rms_error, r.regime
+        );
+    }
+    if v.findings.is_empty() {
+        out.push_str("findings: none\n");
+    }
+    for f in &v.findings {
+        let _ = writeln!(out, "finding: {} ({} rows, first {:?}): {}", json_name(f.kind), f.count, f.rows, f.hint);
+    }
+    out
+}
+
+/// Every compared row of an oscillation table as CSV.
+pub fn oscillation_csv(v: &crate::validation::OscillationValidation) -> Result<String> {
+    let n = crate::cli::output::num;
+    let mut header: Vec<String> =
+        ["row", "vhat", "amp", "tangential_amp", "phase", "mu_ratio", "exact", "error", "relative_error", "regime"]
+            .map(String::from)
+            .to_vec();
+    if v.peer.is_some() {
+        header.push("peer_error".into());
+    }
+    let mut records = vec![header];
+    for r in &v.rows {
+        let mut rec = vec![
+            r.row.to_string(),
+            n(r.vhat),
+            n(r.amp),
+            n(r.tangential_amp),
+            n(r.phase),
+            n(r.mu_ratio),
+            n(r.exact),
+            n(r.error),
+            r.relative_error.map_or(String::new(), n),
+            r.regime.clone(),
+        ];
+        if let Some(p) = r.peer_error {
+            rec.push(n(p));
+        }
+        records.push(rec);
+    }
+    csv_text(&records)
 }
 
 /// A name as JSON writes it.

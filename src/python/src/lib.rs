@@ -139,29 +139,41 @@ fn evaluate<'py>(
     for (i, (&vi, &ai)) in v.iter().zip(a.iter()).enumerate() {
         velocity(vi, ai, vhat).map_err(|e| at_index(e, i))?;
     }
-    let out = PyArrayDyn::<f64>::zeros(py, v.shape(), false);
     let shape = &shape.inner;
-    let (mut vs, mut as_) = (v.iter(), a.iter());
-    let total = v.len();
+    let mut inputs = v.iter().zip(a.iter()).map(|(&x, &y)| [x, y]);
+    chunked(py, v.shape(), &mut inputs, &|&[x, y]: &[f64; 2]| {
+        let (vbar, amp) = velocity(x, y, vhat)?;
+        let r = shape.evaluate_with(vbar, amp, &opts)?.ratio;
+        Ok(if reduction { r.reduction } else { r.mu_ratio })
+    })
+}
+
+/// Evaluate `one` at every element of `inputs` (an array of shape `dims`, read
+/// a chunk at a time) into a new array: chunks timed to about
+/// [`CHUNK_SECONDS`], in parallel from [`PARALLEL_THRESHOLD`] elements, with
+/// the GIL released and Ctrl-C checked between them.
+fn chunked<'py, const N: usize>(
+    py: Python<'py>,
+    dims: &[usize],
+    inputs: &mut dyn Iterator<Item = [f64; N]>,
+    one: &(dyn Fn(&[f64; N]) -> fricosc::Result<f64> + Sync),
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let out = PyArrayDyn::<f64>::zeros(py, dims, false);
+    let total: usize = dims.iter().product();
     let mut done = 0;
     let mut chunk = FIRST_CHUNK;
     let mut buf = Vec::with_capacity(chunk.min(total));
     while done < total {
         let n = chunk.min(total - done);
         let t0 = std::time::Instant::now();
-        let pairs: Vec<(f64, f64)> = vs.by_ref().zip(as_.by_ref()).take(n).map(|(&x, &y)| (x, y)).collect();
-        let one = |&(x, y): &(f64, f64)| -> fricosc::Result<f64> {
-            let (vbar, amp) = velocity(x, y, vhat)?;
-            let r = shape.evaluate_with(vbar, amp, &opts)?.ratio;
-            Ok(if reduction { r.reduction } else { r.mu_ratio })
-        };
+        let items: Vec<[f64; N]> = (&mut *inputs).take(n).collect();
         buf.clear();
         py.detach(|| {
             if n >= PARALLEL_THRESHOLD {
                 use rayon::prelude::*;
-                pairs.par_iter().map(one).collect_into_vec(&mut buf);
+                items.par_iter().map(one).collect_into_vec(&mut buf);
             } else {
-                buf.extend(pairs.iter().map(one));
+                buf.extend(items.iter().map(one));
             }
         });
         {
@@ -181,6 +193,76 @@ fn evaluate<'py>(
         }
     }
     Ok(out)
+}
+
+/// `mu_ratio` (or the reduction) under oscillation in the sliding direction
+/// ([`fricosc::combined`]) at every element of the broadcast arrays `vhat`,
+/// `amp`, `t` (tangential amplitude), `phase`; checked first, as [`evaluate`].
+#[pyfunction]
+#[pyo3(signature = (shape, vhat, amp, t, phase, tol, reduction))]
+#[allow(clippy::too_many_arguments)]
+fn evaluate_oscillation<'py>(
+    py: Python<'py>,
+    shape: &CoreShape,
+    vhat: PyReadonlyArrayDyn<'py, f64>,
+    amp: PyReadonlyArrayDyn<'py, f64>,
+    t: PyReadonlyArrayDyn<'py, f64>,
+    phase: PyReadonlyArrayDyn<'py, f64>,
+    tol: f64,
+    reduction: bool,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let arrays = [vhat.as_array(), amp.as_array(), t.as_array(), phase.as_array()];
+    if arrays.iter().any(|x| x.shape() != arrays[0].shape()) {
+        return Err(InputError::new_err("vhat, amp, tangential_amp and phase differ in shape".to_string()));
+    }
+    Options::default().with_tol(tol).check().map_err(to_py)?;
+    let each = || {
+        arrays[0]
+            .iter()
+            .zip(arrays[1].iter())
+            .zip(arrays[2].iter())
+            .zip(arrays[3].iter())
+            .map(|(((&v, &a), &t), &p)| [v, a, t, p])
+    };
+    for (i, [v, a, t, p]) in each().enumerate() {
+        fricosc::combined::Oscillation::new(v, a, t, p).map_err(|e| at_index(e, i))?;
+    }
+    let shape = &shape.inner;
+    chunked(py, arrays[0].shape(), &mut each(), &|&[v, a, t, p]: &[f64; 4]| {
+        let o = fricosc::combined::Oscillation::new(v, a, t, p)?;
+        let r = fricosc::combined::evaluate(shape, &o, tol)?.ratio;
+        Ok(if reduction { r.reduction } else { r.mu_ratio })
+    })
+}
+
+/// One point under oscillation in the sliding direction, as `fricosc point
+/// --tangential-amp` reports it: a dict.
+#[pyfunction]
+#[pyo3(signature = (shape, vhat, amp, t, phase, tol))]
+fn point_oscillation<'py>(
+    py: Python<'py>,
+    shape: &CoreShape,
+    vhat: f64,
+    amp: f64,
+    t: f64,
+    phase: f64,
+    tol: f64,
+) -> PyResult<Bound<'py, PyAny>> {
+    #[derive(serde::Serialize)]
+    struct Named<'a> {
+        shape: &'a str,
+        vhat: f64,
+        amp: f64,
+        tangential_amp: f64,
+        phase: f64,
+        #[serde(flatten)]
+        point: fricosc::combined::Combined,
+    }
+    Options::default().with_tol(tol).check().map_err(to_py)?;
+    let o = fricosc::combined::Oscillation::new(vhat, amp, t, phase).map_err(to_py)?;
+    let p = fricosc::combined::evaluate(&shape.inner, &o, tol).map_err(to_py)?;
+    let named = Named { shape: shape.inner.name(), vhat, amp, tangential_amp: t, phase: o.phase, point: p };
+    pythonize::pythonize(py, &named).map_err(serialise_err)
 }
 
 /// One point as `fricosc point` reports it: a dict.
@@ -391,6 +473,8 @@ fn _fricosc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("InternalError", m.py().get_type::<InternalError>())?;
     m.add_function(wrap_pyfunction!(evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(point, m)?)?;
+    m.add_function(wrap_pyfunction!(evaluate_oscillation, m)?)?;
+    m.add_function(wrap_pyfunction!(point_oscillation, m)?)?;
     m.add_function(wrap_pyfunction!(history, m)?)?;
     m.add_function(wrap_pyfunction!(validate, m)?)?;
     m.add_function(wrap_pyfunction!(scene, m)?)?;

@@ -466,3 +466,48 @@ def test_validate_history_in_your_units_is_the_command_lines() -> None:
     assert got["time_origin"]["offset"] == np.pi
     with pytest.raises(ValueError, match="static-force"):
         fricosc.validate_history({"t": d[:, 0], "tangential": d[:, 2]}, 0.3, 1.5, omega=omega, static_force=-1.0)
+
+
+def test_oscillation_in_the_sliding_direction_is_the_command_lines() -> None:
+    """``tangential_amp`` and ``phase``: the table's values bit for bit, the
+    point's JSON, the 40-digit references, and T = 0 as the seed's problem."""
+    text = cli(
+        "table", "--shape", "parabolic", "--vhat", "0.1,0.6", "--amp", "0,1.5",
+        "--tangential-amp", "0.5,3", "--phase", "0,2", "--format", "csv",
+    )
+    rows = csv_rows(text)
+    assert len(rows) == 16
+    v, a, t, p = (np.array([float(r[k]) for r in rows]) for k in ("vhat", "amp", "tangential_amp", "phase"))
+    got = fricosc.mu_ratio("parabolic", vhat=v, amp=a, tangential_amp=t, phase=p)
+    assert got.tolist() == [float(r["mu_ratio"]) for r in rows]
+    red = fricosc.reduction("parabolic", vhat=v, amp=a, tangential_amp=t, phase=p)
+    assert red.tolist() == [float(r["reduction"]) for r in rows]
+    assert min(got) < 0 and max(red) > 1  # the ratchet, allowed
+    point = json.loads(cli("point", "--vhat", "0.6", "--amp", "2", "--tangential-amp", "3", "--phase", "1"))
+    assert fricosc.point("flat", vhat=0.6, amp=2.0, tangential_amp=3.0, phase=1.0) == point
+    reference = json.loads((ROOT / "data" / "combined-reference.json").read_text())
+    for case in reference["cases"]:
+        mu = fricosc.mu_ratio(
+            "flat", vhat=case["vhat"], amp=case["amp"], tangential_amp=case["tangential_amp"], phase=case["phase"]
+        )
+        assert abs(Decimal(mu) - Decimal(case["mu_ratio"])) < Decimal("1e-14"), case
+    # No tangential oscillation: the seed's problem, bit for bit.
+    assert fricosc.mu_ratio("cone", vhat=0.3, amp=0.7, tangential_amp=0.0, phase=2.0) == fricosc.mu_ratio(
+        "cone", vhat=0.3, amp=0.7
+    )
+
+
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (lambda: fricosc.mu_ratio("flat", 0.3, 0.5, tangential_amp=1.0), "tangential_amp needs the velocity as vhat"),
+        (lambda: fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, phase=1.0), "phase needs tangential_amp"),
+        (lambda: fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, tangential_amp=math.nan), "tangential-amp"),
+        (lambda: fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, tangential_amp=-1.0), "tangential-amp"),
+        (lambda: fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, tangential_amp=1.0, phase=math.inf), "phase"),
+        (lambda: fricosc.point("flat", vhat=0.3, amp=0.5, tangential_amp=2e6), "1e6"),
+    ],
+)
+def test_bad_oscillation_input(call: Callable[[], object], message: str) -> None:
+    with pytest.raises((TypeError, fricosc.InputError), match=message):
+        call()

@@ -143,6 +143,8 @@ def _evaluate(
     vhat: Optional[npt.ArrayLike],
     tol: Optional[float],
     reduction: bool,
+    tangential_amp: Optional[npt.ArrayLike] = None,
+    phase: Optional[npt.ArrayLike] = None,
 ) -> FloatOrArray:
     """``mu_ratio`` (or the reduction) over the broadcast inputs. The broadcast
     views are read in place and the result written into one new array: the
@@ -151,10 +153,24 @@ def _evaluate(
     if amp is None:
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
-    v_arr, a_arr = np.broadcast_arrays(_floats(v, "vhat" if is_vhat else "vbar"), _floats(amp, "amp"))
-    shape_out = v_arr.shape
+    if phase is not None and tangential_amp is None:
+        raise TypeError("phase needs tangential_amp")
+    if tangential_amp is not None and not is_vhat:
+        raise TypeError("tangential_amp needs the velocity as vhat (vbar = vhat / amp is undefined at amp 0)")
     try:
-        out = _fricosc.evaluate(core, v_arr, a_arr, is_vhat, _tol(tol), reduction)
+        if tangential_amp is not None:
+            arrays = np.broadcast_arrays(
+                _floats(v, "vhat"),
+                _floats(amp, "amp"),
+                _floats(tangential_amp, "tangential_amp"),
+                _floats(0.0 if phase is None else phase, "phase"),
+            )
+            shape_out = arrays[0].shape
+            out = _fricosc.evaluate_oscillation(core, *arrays, _tol(tol), reduction)
+        else:
+            v_arr, a_arr = np.broadcast_arrays(_floats(v, "vhat" if is_vhat else "vbar"), _floats(amp, "amp"))
+            shape_out = v_arr.shape
+            out = _fricosc.evaluate(core, v_arr, a_arr, is_vhat, _tol(tol), reduction)
     except (InputError, InternalError) as e:
         if len(e.args) == 2 and isinstance(e.args[1], int):
             message, index = e.args
@@ -173,6 +189,8 @@ def mu_ratio(
     *,
     vhat: Optional[npt.ArrayLike] = None,
     tol: Optional[float] = None,
+    tangential_amp: Optional[npt.ArrayLike] = None,
+    phase: Optional[npt.ArrayLike] = None,
 ) -> FloatOrArray:
     """``mu_macro / mu0`` of ``shape`` at velocity ``vbar`` (or ``vhat``) and amplitude ``amp``.
 
@@ -183,10 +201,18 @@ def mu_ratio(
     :data:`DEFAULT_TOL`). Arrays of 256 elements or more are evaluated on every
     core with the GIL released.
 
+    With ``tangential_amp`` (``dx/l``, pre-slip lengths ``l = mu0 u0 kz/kx``)
+    the body also oscillates in the sliding direction, ``phase`` radians
+    (default 0) against the normal oscillation (``vhat`` then; all four
+    broadcast); the result lies in ``[-1, 1]``: below 0 the oscillations push
+    the body forward. ``tangential_amp = 0`` is the seed's problem, bit for bit.
+
     >>> mu_ratio("flat", [0.0, 0.5, 1.0], 0.5).tolist()
     [0.5, 0.8992738983331656, 1.0]
+    >>> mu_ratio("flat", vhat=0.6, amp=2.0, tangential_amp=3.0, phase=1.0)
+    -0.9271222646980091
     """
-    return _evaluate(shape, vbar, amp, vhat, tol, False)
+    return _evaluate(shape, vbar, amp, vhat, tol, False, tangential_amp, phase)
 
 
 def reduction(
@@ -196,15 +222,17 @@ def reduction(
     *,
     vhat: Optional[npt.ArrayLike] = None,
     tol: Optional[float] = None,
+    tangential_amp: Optional[npt.ArrayLike] = None,
+    phase: Optional[npt.ArrayLike] = None,
 ) -> FloatOrArray:
     """``1 - mu_macro / mu0``, computed with its own relative accuracy (not as a
-    difference): the friction that the oscillation removes. Arguments as in
-    :func:`mu_ratio`.
+    difference): the friction that the oscillation removes (up to 2 under
+    oscillation in the sliding direction). Arguments as in :func:`mu_ratio`.
 
     >>> reduction("flat", 1 - 1e-6, 0.5)  # 1 - mu_ratio would keep 3 digits
     3.580986935971103e-13
     """
-    return _evaluate(shape, vbar, amp, vhat, tol, True)
+    return _evaluate(shape, vbar, amp, vhat, tol, True, tangential_amp, phase)
 
 
 def point(
@@ -214,18 +242,39 @@ def point(
     *,
     vhat: Optional[float] = None,
     tol: Optional[float] = None,
+    tangential_amp: Optional[float] = None,
+    phase: Optional[float] = None,
 ) -> Dict[str, Any]:
     """Everything the solver reports at one point, as ``fricosc point`` prints it:
     the regime and events of the flat punch, the bands of a power law, the
-    error estimates.
+    error estimates. With ``tangential_amp`` (and ``phase``, ``vhat``) as
+    ``fricosc point --tangential-amp``: the spring's phases and events of one
+    period (flat punch) or the bands.
 
     >>> p = point("flat", 0.3, 0.5)
     >>> p["regime"], p["mu_ratio"], [e["kind"] for e in p["events"]]
     ('permanent_stick_slip', 0.7896790737003745, ['stick', 'slip'])
+    >>> q = point("flat", vhat=0.6, amp=2.0, tangential_amp=3.0, phase=1.0)
+    >>> q["spring"]["regime"], [e["kind"] for e in q["spring"]["events"]]
+    ('jumping: stick, backward, stick, forward', ['contact', 'backward', 'stick', 'forward', 'loss_of_contact'])
     """
     if amp is None:
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
+    if phase is not None and tangential_amp is None:
+        raise TypeError("phase needs tangential_amp")
+    if tangential_amp is not None:
+        if not is_vhat:
+            raise TypeError("tangential_amp needs the velocity as vhat (vbar = vhat / amp is undefined at amp 0)")
+        osc: Dict[str, Any] = _fricosc.point_oscillation(
+            _core(shape),
+            _scalar(v, "vhat"),
+            _scalar(amp, "amp"),
+            _scalar(tangential_amp, "tangential_amp"),
+            _scalar(0.0 if phase is None else phase, "phase"),
+            _tol(tol),
+        )
+        return osc
     result: Dict[str, Any] = _fricosc.point(_core(shape), _scalar(v, "vbar"), _scalar(amp, "amp"), is_vhat, _tol(tol))
     return result
 

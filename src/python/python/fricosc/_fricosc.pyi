@@ -26,6 +26,18 @@ def evaluate(
     shape: CoreShape, v: npt.NDArray[np.float64], a: npt.NDArray[np.float64], vhat: bool, tol: float, reduction: bool
 ) -> npt.NDArray[np.float64]: ...
 def point(shape: CoreShape, v: float, a: float, vhat: bool, tol: float) -> Dict[str, Any]: ...
+def evaluate_oscillation(
+    shape: CoreShape,
+    vhat: npt.NDArray[np.float64],
+    amp: npt.NDArray[np.float64],
+    t: npt.NDArray[np.float64],
+    phase: npt.NDArray[np.float64],
+    tol: float,
+    reduction: bool,
+) -> npt.NDArray[np.float64]: ...
+def point_oscillation(
+    shape: CoreShape, vhat: float, amp: float, t: float, phase: float, tol: float
+) -> Dict[str, Any]: ...
 def history(
     shape: CoreShape,
     v: float,

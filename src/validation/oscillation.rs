@@ -1,0 +1,202 @@
+//! Validation of a table under oscillation in the sliding direction
+//! ([`crate::combined`]): rows `(vhat, amp, tangential_amp, phase, mu_ratio)`
+//! compared with the exact solver, errors per regime (the flat punch's
+//! spring, or a curved contact's band sequence), and findings: values outside
+//! `[-1, 1]` (negative values are allowed here: the oscillation may push the
+//! body forward), and errors ten times the stepping peer's.
+
+use super::{finding, FindingKind, Summary, MAX_PEER_WORK};
+use crate::combined::{evaluate, Oscillation};
+use crate::error::{Error, Result};
+use crate::shape::Shape;
+
+/// One compared row.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct OscillationRow {
+    /// Input index.
+    pub row: usize,
+    /// `vhat` (eq. 15).
+    pub vhat: f64,
+    /// `du/u0`.
+    pub amp: f64,
+    /// `dx/l`.
+    pub tangential_amp: f64,
+    /// Radians, as given.
+    pub phase: f64,
+    /// The table's value.
+    pub mu_ratio: f64,
+    /// The exact value.
+    pub exact: f64,
+    /// `mu_ratio - exact`.
+    pub error: f64,
+    /// `error / |exact|` where `exact != 0`.
+    pub relative_error: Option<f64>,
+    /// The flat punch's spring regime (`jumping: stick, backward, ...`), or a
+    /// curved contact's bands joined by ` | `.
+    pub regime: String,
+    /// With a peer: the stepping peer's error on the same row.
+    pub peer_error: Option<f64>,
+}
+
+/// The errors of one regime.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct OscillationRegime {
+    /// The regime ([`OscillationRow::regime`]).
+    pub regime: String,
+    /// Its rows' errors.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub summary: Summary,
+}
+
+/// The comparison of a whole table.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct OscillationValidation {
+    /// Shape name.
+    pub shape: String,
+    /// Tolerance of the range checks.
+    pub tolerance: f64,
+    /// All rows' errors.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub summary: Summary,
+    /// Errors per regime (in order of first appearance).
+    pub by_regime: Vec<OscillationRegime>,
+    /// What looks wrong (empty: nothing found).
+    pub findings: Vec<super::Finding>,
+    /// The stepping peer's resolution and errors, with a peer.
+    pub peer: Option<super::PeerSummary>,
+    /// Every row.
+    pub rows: Vec<OscillationRow>,
+}
+
+/// Compare `rows` of `[vhat, amp, tangential_amp, phase, mu_ratio]` with the
+/// exact values of `shape` (at [`crate::DEFAULT_TOL`]); `check.peer` runs the
+/// stepping peer ([`crate::stepper::evaluate_oscillation`], three periods) on
+/// every row too. `check.at_rest` does not apply (a `vhat = 0` row is the limit
+/// `vhat -> 0+`).
+///
+/// # Errors
+/// [`Error::Parse`] naming the first bad row (inputs out of range, a value
+/// that is not finite), [`Error::TooLarge`] for a peer beyond
+/// [`MAX_PEER_WORK`], the solver's errors.
+pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<OscillationValidation> {
+    crate::error::check_nonneg("tolerance", check.tolerance)?;
+    if rows.is_empty() {
+        return Err(Error::param("rows", 0.0, "the table has no rows (nothing to validate)"));
+    }
+    let mut oscillations = Vec::with_capacity(rows.len());
+    for (i, r) in rows.iter().enumerate() {
+        let at = |reason: String| Error::Parse { context: format!("row {i}"), reason };
+        oscillations.push(Oscillation::new(r[0], r[1], r[2], r[3]).map_err(|e| at(e.to_string()))?);
+        if !r[4].is_finite() {
+            return Err(at(format!("mu_ratio = {:?} is not finite", r[4])));
+        }
+    }
+    if let Some(st) = check.peer {
+        st.check(shape)?;
+        let springs = if shape.is_flat() { 1 } else { st.springs };
+        let work = rows.len() as u128 * st.steps_per_period as u128 * springs as u128;
+        if work > MAX_PEER_WORK {
+            return Err(Error::TooLarge {
+                what: "stepping-peer work (rows x steps per period x springs)".into(),
+                count: work,
+                limit: MAX_PEER_WORK,
+            });
+        }
+    }
+    let exact = crate::numerics::par::map(&oscillations, |o| evaluate(shape, o, crate::DEFAULT_TOL));
+    let peer: Option<Vec<f64>> = match check.peer {
+        Some(st) => Some(
+            crate::numerics::par::map(&oscillations, |o| {
+                crate::stepper::evaluate_oscillation(shape, o, st, crate::stepper::OSCILLATION_PERIODS)
+                    .map(|e| e.ratio.mu_ratio)
+            })
+            .into_iter()
+            .collect::<Result<Vec<f64>>>()?,
+        ),
+        None => None,
+    };
+    let mut out = Vec::with_capacity(rows.len());
+    for (i, (r, e)) in rows.iter().zip(exact).enumerate() {
+        let e = e?;
+        let x = e.ratio.mu_ratio;
+        let regime = match &e.spring {
+            Some(s) => s.regime.clone(),
+            None if r[2] == 0.0 => "no tangential oscillation (the seed's problem)".into(),
+            None if e.bands.is_empty() => "slides forward all the time".into(),
+            None => e.bands.iter().map(|b| b.regime.as_str()).collect::<Vec<_>>().join(" | "),
+        };
+        out.push(OscillationRow {
+            row: i,
+            vhat: r[0],
+            amp: r[1],
+            tangential_amp: r[2],
+            phase: r[3],
+            mu_ratio: r[4],
+            exact: x,
+            error: r[4] - x,
+            relative_error: (x != 0.0).then(|| (r[4] - x) / x.abs()),
+            regime,
+            peer_error: peer.as_ref().map(|p| p[i] - x),
+        });
+    }
+    let errors = |rows: &[&OscillationRow]| {
+        Summary::of_errors(rows.iter().map(|r| (r.row, r.error, r.relative_error)).collect::<Vec<_>>().into_iter())
+    };
+    let all: Vec<&OscillationRow> = out.iter().collect();
+    let summary = errors(&all).ok_or_else(|| Error::Internal { what: "no rows to summarise".into() })?;
+    let mut names: Vec<&str> = vec![];
+    for r in &out {
+        if !names.contains(&r.regime.as_str()) {
+            names.push(&r.regime);
+        }
+    }
+    let by_regime = names
+        .iter()
+        .filter_map(|&n| {
+            let rows: Vec<&OscillationRow> = out.iter().filter(|r| r.regime == n).collect();
+            errors(&rows).map(|summary| OscillationRegime { regime: n.to_string(), summary })
+        })
+        .collect();
+    let tol = check.tolerance;
+    let pick = |f: &dyn Fn(&OscillationRow) -> bool| out.iter().filter(|r| f(r)).map(|r| r.row).collect::<Vec<_>>();
+    let mut findings = vec![];
+    findings.extend(finding(
+        FindingKind::AboveOne,
+        pick(&|r| r.mu_ratio > 1.0 + tol),
+        "values above 1: check the normalisation by the mean normal force (mu0 times the period-averaged \
+         normal force)",
+    ));
+    findings.extend(finding(
+        FindingKind::BelowMinusOne,
+        pick(&|r| r.mu_ratio < -1.0 - tol),
+        "values below -1: the tangential force never exceeds mu0 times the normal force in either direction; \
+         check the sign convention and the normalisation",
+    ));
+    let peer_summary = check.peer.zip(peer.as_ref()).map(|(st, p)| {
+        let errs: Vec<f64> = p.iter().zip(&out).map(|(v, r)| v - r.exact).collect();
+        super::PeerSummary {
+            steps_per_period: st.steps_per_period,
+            springs: if shape.is_flat() { 1 } else { st.springs },
+            max_abs_error: errs.iter().fold(0.0f64, |m, e| m.max(e.abs())),
+            rms_error: super::rms(errs.iter().copied()),
+        }
+    });
+    findings.extend(finding(
+        FindingKind::WorseThanPeer,
+        pick(&|r| r.peer_error.is_some_and(|p| r.error.abs() > 10.0 * p.abs() && r.error.abs() > tol)),
+        "errors ten times (or more) those of fricosc's stepping peer at the same resolution: not the \
+         discretisation but a bug (see the peer_error column)",
+    ));
+    Ok(OscillationValidation {
+        shape: shape.name().to_string(),
+        tolerance: tol,
+        summary,
+        by_regime,
+        findings,
+        peer: peer_summary,
+        rows: out,
+    })
+}
