@@ -20,6 +20,8 @@ emit data/point-flat.json $B point --shape flat --vbar 0.3 --amp 1.5
 emit data/point-parabolic.json $B point --shape parabolic --vbar 0.6 --amp 1
 emit data/stepped-flat.csv $B table --shape flat --amp 0.5,1.5 --vbar 0.1:0.9:3 --method stepping --steps-per-period 1000 --format csv
 emit data/stepped-flat-validation.json $B validate --shape flat data/stepped-flat.csv --max-error 1e-3
+emit data/point-combined-flat.json $B point --shape flat --vhat 0.3 --amp 1.5 --tangential-amp 2 --phase 1.2
+emit data/table-combined.csv $B table --shape parabolic --vhat 0.3 --amp 0.5,1.5 --tangential-amp 2 --phase 0,1.2,3.1416,4.2 --format csv
 emit data/point-sphere.json $B point --shape profile:data/profiles/sphere.csv@1e-6 --vbar 0.3 --amp 0.4
 emit data/claims.md $B claims
 emit data/scene-steel-sphere-fig9.out.json $B scene data/scenes/steel-sphere-fig9.json

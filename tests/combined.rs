@@ -417,3 +417,37 @@ fn tabulated_and_flat_tip_contacts_are_supported() {
         r.ratio.mu_ratio
     );
 }
+
+/// Without normal oscillation friction is never negative (the ratchet needs
+/// the normal oscillation): a grid over decades of `vhat` and `T`.
+#[test]
+fn pure_tangential_oscillation_never_pushes() {
+    for shape in [Shape::flat(), Shape::parabolic()] {
+        for i in 0..=20 {
+            for j in 0..=20 {
+                let vhat = 1e-4 * 10f64.powf(5.7 * i as f64 / 20.0);
+                let t = 1e-3 * 10f64.powf(7.0 * j as f64 / 20.0);
+                let r = evaluate(&shape, &osc(0.0, vhat, t, 0.4), DEFAULT_TOL).unwrap();
+                assert!(r.ratio.mu_ratio > 0.0, "{} vhat {vhat} T {t}: {:?}", shape.name(), r.ratio);
+            }
+        }
+    }
+}
+
+/// A vanishing tangential amplitude (`T = 1e-300`, through the bands, not the
+/// seed's path) gives the seed's answer within both estimates: the bands'
+/// own normal force and friction force are the seed solver's, for every shape
+/// and amplitude up to 1e6.
+#[test]
+fn vanishing_tangential_amplitude_is_the_seeds_answer_through_the_bands() {
+    for spec in ["parabolic", "cone", "power:3.7", "power:0.5", "flat-tip:0.5"] {
+        let shape = common::shape(spec).unwrap();
+        for (vbar, amp) in [(0.3, 0.5), (0.05, 0.999), (0.6, 2.0), (0.3, 1e3), (0.3, 1e6)] {
+            let c = evaluate(&shape, &osc(amp, vbar * amp, 1e-300, 0.0), DEFAULT_TOL).unwrap();
+            let s = shape.evaluate(vbar, amp).unwrap();
+            let e = (c.ratio.mu_ratio - s.ratio.mu_ratio).abs();
+            assert!(e <= c.error_estimate + s.error_estimate, "{spec} vbar {vbar} amp {amp}: {e:e}");
+            assert!(e <= 1e-13, "{spec} vbar {vbar} amp {amp}: {e:e}");
+        }
+    }
+}

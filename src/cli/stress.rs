@@ -1,7 +1,11 @@
 //! `fricosc stress`: many points, random and on every edge, checked for what
 //! must always hold: no panic, finite results, `0 <= mu_ratio <= 1`,
 //! `reduction >= 0` and `= 1 - mu_ratio` to rounding, and `mu_ratio`
-//! nondecreasing in `vbar` along lines of constant amplitude.
+//! nondecreasing in `vbar` along lines of constant amplitude. Under
+//! oscillation in the sliding direction ([`run_oscillation`]): `-1 <= mu_ratio
+//! <= 1`, `0 <= reduction <= 2`, their sum 1 within the error estimates, the
+//! same value a period of the phase later, and continuity in every parameter
+//! (a relative step of 1e-12 moves the value by at most 1e-5).
 
 use crate::shape::Shape;
 use rayon::prelude::*;
@@ -31,6 +35,8 @@ pub struct StressReport {
     pub failure_count: usize,
     /// The first failures (up to 20), described.
     pub failures: Vec<String>,
+    /// Points under oscillation in the sliding direction ([`run_oscillation`]).
+    pub oscillation_points: usize,
     /// Wall time, seconds.
     pub time_s: f64,
 }
@@ -122,14 +128,93 @@ pub fn run(points: usize, seed: u64, shapes: &[Shape]) -> StressReport {
             out
         })
         .collect();
+    // A tenth as many points under oscillation in the sliding direction (a
+    // curved one costs about 30 of the seed's).
+    let (oscillation_points, more) = run_oscillation(points.div_ceil(10), seed, shapes);
+    let failures: Vec<String> = failures.into_iter().chain(more).collect();
     StressReport {
         points: jobs.len() * LINE,
         lines: jobs.len(),
         shapes: shapes.iter().map(|s| s.name().to_string()).collect(),
         failure_count: failures.len(),
         failures: failures.into_iter().take(20).collect(),
+        oscillation_points,
         time_s: t0.elapsed().as_secs_f64(),
     }
+}
+
+/// Edge values of the tangential amplitude `T`: tiny, `1 -+` rounding (where
+/// backward slip starts for the flat punch), the largest accepted.
+pub const EDGE_T: [f64; 6] = [5e-324, 1e-300, 1.0 - f64::EPSILON, 1.0, 1.0 + f64::EPSILON, 1e6];
+
+/// About `points` random and edge points under oscillation in the sliding
+/// direction over `shapes`: how many were run, and the failures described.
+pub fn run_oscillation(points: usize, seed: u64, shapes: &[Shape]) -> (usize, Vec<String>) {
+    use crate::combined::{evaluate, Oscillation};
+    let per_shape = points.div_ceil(shapes.len().max(1));
+    let jobs: Vec<(usize, u64)> = (0..shapes.len()).flat_map(|s| (0..per_shape as u64).map(move |k| (s, k))).collect();
+    let failures = jobs
+        .par_iter()
+        .flat_map_iter(|&(si, k)| {
+            let shape = &shapes[si];
+            let mut rng = Rng(!seed ^ k.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ ((si as u64) << 48));
+            let amp = match rng.next() % 4 {
+                0 => rng.pick(&[0.0, 5e-324, 1.0 - 1e-15, 1.0, 1.0 + 1e-15, 1e6]),
+                1 => 1.0 + (rng.unit() - 0.5) * 10f64.powf(-12.0 * rng.unit()),
+                _ => 3.0 * rng.unit(),
+            };
+            let t = match rng.next() % 4 {
+                0 => rng.pick(&EDGE_T),
+                1 => 10f64.powf(-6.0 + 9.0 * rng.unit()),
+                _ => 4.0 * rng.unit(),
+            };
+            let vhat = match rng.next() % 4 {
+                0 => rng.pick(&[0.0, 5e-324, 1e-12, t, 1e6]),
+                1 => (t * (1.0 + (rng.unit() - 0.5) * 10f64.powf(-12.0 * rng.unit()))).min(1e6),
+                _ => 2.0 * rng.unit(),
+            };
+            let phase = match rng.next() % 3 {
+                0 => rng.pick(&[0.0, -1e-300, std::f64::consts::FRAC_PI_2, std::f64::consts::PI, -0.0]),
+                _ => std::f64::consts::TAU * rng.unit(),
+            };
+            let here = format!("{} vhat={vhat:e} amp={amp:e} T={t:e} phase={phase:e}", shape.name());
+            let eval = |v: f64, a: f64, tt: f64, p: f64| {
+                std::panic::catch_unwind(|| {
+                    Oscillation::new(v, a, tt, p).and_then(|o| evaluate(shape, &o, crate::DEFAULT_TOL))
+                })
+            };
+            let mut out = vec![];
+            let base = match eval(vhat, amp, t, phase) {
+                Err(_) => return vec![format!("{here}: panicked")],
+                Ok(Err(e)) => return vec![format!("{here}: error {e}")],
+                Ok(Ok(e)) => e,
+            };
+            let (m, r, est) = (base.ratio.mu_ratio, base.ratio.reduction, base.error_estimate);
+            if !m.is_finite() || !r.is_finite() || !(-1.0..=1.0).contains(&m) || !(0.0..=2.0).contains(&r) {
+                out.push(format!("{here}: out of range mu {m} reduction {r}"));
+            } else if (m + r - 1.0).abs() > 2.0 * est + 4.0 * f64::EPSILON {
+                out.push(format!("{here}: mu {m} + reduction {r} != 1 (estimate {est:e})"));
+            }
+            // The same a period later, and continuous in every parameter.
+            let step = 1e-12;
+            for (what, v, a, tt, p, bound) in [
+                ("phase + 2 pi", vhat, amp, t, phase + std::f64::consts::TAU, 1e-9),
+                ("vhat", vhat * (1.0 + step), amp, t, phase, 1e-5),
+                ("amp", vhat, amp * (1.0 + step), t, phase, 1e-5),
+                ("T", vhat, amp, t * (1.0 + step), phase, 1e-5),
+                ("phase", vhat, amp, t, phase + step, 1e-5),
+            ] {
+                if let Ok(Ok(e)) = eval(v, a, tt, p) {
+                    let d = (e.ratio.mu_ratio - m).abs();
+                    if d > bound + 2.0 * (est + e.error_estimate) {
+                        out.push(format!("{here}: {what} moved mu by {d:e} ({m} -> {})", e.ratio.mu_ratio));
+                    }
+                }
+            }
+            out
+        })
+        .collect();
+    (jobs.len(), failures)
 }
 
 /// The shapes of the stress run: flat, parabolic, cone and two other power laws.

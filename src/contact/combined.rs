@@ -18,9 +18,10 @@
 //! higher order's error is far below it once the rule converges) and rounding.
 //!
 //! # Units
-//! `mu_macro/mu0 = 2 int <f> dz / <N>` with `<N>` the contact's mean normal
-//! force ([`crate::Contact::mean_normal`], units `E* x_c u0`) and `<f>` per unit
-//! length in `mu0 E* u0`; the reduction `2 int <B - f> dz / <N>` on its own.
+//! `mu_macro/mu0 = int <f> dz / int <B> dz` over the foundation (`<f>`, `<B>`
+//! per unit length in `mu0 E* u0`), the normal force from the same quadrature
+//! as the friction force (it equals [`crate::Contact::mean_normal`] to the
+//! tolerance, tested); the reduction `int <B - f> dz / int <B> dz` on its own.
 
 use crate::error::{check_nonneg, Error, Result};
 use crate::ratio::Ratio;
@@ -301,17 +302,20 @@ fn curved(c: &dyn crate::Contact, o: &Oscillation, tol: f64) -> Result<Combined>
     edges.push(zmax);
     edges.sort_by(f64::total_cmp);
     edges.dedup();
-    let normal = c.mean_normal(o.amp)?;
+    // The scale of the convergence test; the answer's normal force is the
+    // quadrature's own integral of the springs' mean bounds, so that `mu` and
+    // the reduction share one normalisation (they add up to 1 to rounding).
+    let scale_normal = c.mean_normal(o.amp)?;
     let mut bands = vec![];
-    let (mut sum_f, mut sum_d, mut est, mut scale) = (0.0, 0.0, 0.0, 0.0f64);
+    let (mut sum_f, mut sum_d, mut sum_b, mut est, mut scale) = (0.0, 0.0, 0.0, 0.0, 0.0f64);
     for w in edges.windows(2) {
         let (a, b) = (w[0], w[1]);
         if b <= a {
             continue;
         }
-        let rule = |n: usize| -> (f64, f64, f64) {
+        let rule = |n: usize| -> (f64, f64, f64, f64) {
             let r = crate::numerics::quad::rule(n, 0.0);
-            let (mut f, mut dd, mut mag) = (0.0, 0.0, 0.0);
+            let (mut f, mut dd, mut bb, mut mag) = (0.0, 0.0, 0.0, 0.0);
             for (&x, &wt) in r.nodes.iter().zip(&r.weights) {
                 // theta in (0, pi): z = a + (b - a)(1 - cos theta)/2, dz = (b - a)/2 sin theta.
                 let th = 0.5 * std::f64::consts::PI * (x + 1.0);
@@ -321,9 +325,10 @@ fn curved(c: &dyn crate::Contact, o: &Oscillation, tol: f64) -> Result<Combined>
                 let (s, bd) = spring(z);
                 f += jac * s.mean_force;
                 dd += jac * s.mean_deficit;
+                bb += jac * s.mean_bound;
                 mag += jac * spring_scale(bd, d);
             }
-            (f, dd, mag)
+            (f, dd, bb, mag)
         };
         let mut n = 8;
         let mut prev = rule(n);
@@ -331,27 +336,33 @@ fn curved(c: &dyn crate::Contact, o: &Oscillation, tol: f64) -> Result<Combined>
         loop {
             n *= 2;
             cur = rule(n);
-            diff = (cur.0 - prev.0).abs().max((cur.1 - prev.1).abs());
+            // |d mu| <= (|dF| + |dN|)/N for |mu| <= 1 (likewise the reduction's |dD|).
+            diff = (cur.0 - prev.0).abs().max((cur.1 - prev.1).abs()) + (cur.2 - prev.2).abs();
             // Converged to the tolerance, or to the rounding of the springs'
             // means (below which the difference of two orders is noise; the
             // estimate adds that rounding on its own).
-            let noise = SPRING_ROUNDING * f64::EPSILON * cur.2;
-            if diff <= 0.25 * tol * normal || diff <= noise || n >= MAX_ORDER {
+            let noise = SPRING_ROUNDING * f64::EPSILON * cur.3;
+            if diff <= 0.25 * tol * scale_normal || diff <= noise || n >= MAX_ORDER {
                 break;
             }
             prev = cur;
         }
         sum_f += cur.0;
         sum_d += cur.1;
+        sum_b += cur.2;
         est += diff;
-        scale += cur.2;
+        scale += cur.3;
         let mid = spring(0.5 * (a + b)).0;
         bands.push(CombinedBand { from: a, to: b, regime: signature_name(&signature(&mid)), share: cur.0, nodes: n });
     }
-    // Both sides of the foundation.
-    let (mu, red) = (2.0 * sum_f / normal, 2.0 * sum_d / normal);
-    let rounding = SPRING_ROUNDING * f64::EPSILON * 2.0 * scale / normal;
-    let error_estimate = 2.0 * est / normal + rounding;
+    // Both sides of the foundation (they cancel in the quotients).
+    let normal = sum_b;
+    if normal.is_nan() || normal <= 0.0 {
+        return Err(Error::Internal { what: format!("mean normal force {normal:?} ({})", c.name()) });
+    }
+    let (mu, red) = (sum_f / normal, sum_d / normal);
+    let rounding = SPRING_ROUNDING * f64::EPSILON * scale / normal;
+    let error_estimate = est / normal + rounding;
     for band in &mut bands {
         band.share = if sum_f != 0.0 { band.share / sum_f } else { 0.0 };
     }
