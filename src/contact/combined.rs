@@ -275,33 +275,7 @@ fn curved(c: &dyn crate::Contact, o: &Oscillation, tol: f64) -> Result<Combined>
         let b = Bound { c: 1.0 - c.equivalent_profile(z), amp: o.amp };
         (solve(b, d), b)
     };
-    // Edges: the ends, where contact starts to be lost, where G has kinks, and
-    // where the phase sequence changes (found by bisection between samples).
-    let mut cuts = vec![0.0, zmax];
-    if o.amp > 0.0 && o.amp < 1.0 {
-        let level = 1.0 - o.amp;
-        cuts.push(
-            crate::numerics::root::bracketed(|z| c.equivalent_profile(z) - level, 0.0, 1.0, 4.0 * f64::EPSILON).x,
-        );
-    }
-    cuts.extend(c.breakpoints().into_iter().filter(|&z| z > 0.0 && z < zmax));
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
-    let mut edges = vec![];
-    for w in cuts.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let zs: Vec<f64> = (0..=SCAN).map(|k| a + (b - a) * k as f64 / SCAN as f64).collect();
-        // Just inside the ends: the ends themselves may sit on a threshold.
-        let inside = |z: f64| z.clamp(a + (b - a) * 1e-12, b - (b - a) * 1e-12);
-        let sigs: Vec<_> = zs.iter().map(|&z| signature(&spring(inside(z)).0)).collect();
-        edges.push(a);
-        for k in 0..SCAN {
-            changes(&spring, inside(zs[k]), &sigs[k], inside(zs[k + 1]), &sigs[k + 1], &mut edges);
-        }
-    }
-    edges.push(zmax);
-    edges.sort_by(f64::total_cmp);
-    edges.dedup();
+    let edges = band_edges(c, o.amp, zmax, &spring)?;
     // The scale of the convergence test; the answer's normal force is the
     // quadrature's own integral of the springs' mean bounds, so that `mu` and
     // the reduction share one normalisation (they add up to 1 to rounding).
@@ -371,6 +345,45 @@ fn curved(c: &dyn crate::Contact, o: &Oscillation, tol: f64) -> Result<Combined>
 }
 
 type Sig = (crate::stop::Contact, Vec<StopKind>);
+
+/// The bands' edges over `[0, zmax]`: the ends, where contact starts to be
+/// lost, where `G` has kinks, and where the phase sequence changes (found by
+/// bisection between [`SCAN`] samples of each piece).
+fn band_edges(
+    c: &dyn crate::Contact,
+    amp: f64,
+    zmax: f64,
+    spring: &dyn Fn(f64) -> (StopSpring, Bound),
+) -> Result<Vec<f64>> {
+    // Edges: the ends, where contact starts to be lost, where G has kinks, and
+    // where the phase sequence changes (found by bisection between samples).
+    let mut cuts = vec![0.0, zmax];
+    if amp > 0.0 && amp < 1.0 {
+        let level = 1.0 - amp;
+        cuts.push(
+            crate::numerics::root::bracketed(|z| c.equivalent_profile(z) - level, 0.0, 1.0, 4.0 * f64::EPSILON).x,
+        );
+    }
+    cuts.extend(c.breakpoints().into_iter().filter(|&z| z > 0.0 && z < zmax));
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let mut edges = vec![];
+    for w in cuts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let zs: Vec<f64> = (0..=SCAN).map(|k| a + (b - a) * k as f64 / SCAN as f64).collect();
+        // Just inside the ends: the ends themselves may sit on a threshold.
+        let inside = |z: f64| z.clamp(a + (b - a) * 1e-12, b - (b - a) * 1e-12);
+        let sigs: Vec<_> = zs.iter().map(|&z| signature(&spring(inside(z)).0)).collect();
+        edges.push(a);
+        for k in 0..SCAN {
+            changes(spring, inside(zs[k]), &sigs[k], inside(zs[k + 1]), &sigs[k + 1], &mut edges);
+        }
+    }
+    edges.push(zmax);
+    edges.sort_by(f64::total_cmp);
+    edges.dedup();
+    Ok(edges)
+}
 
 /// Every change of the phase sequence between `a` (sequence `sa`) and `b`,
 /// by bisection to rounding (both halves, so that a band between two samples

@@ -82,30 +82,7 @@ pub struct OscillationValidation {
 /// that is not finite), [`Error::TooLarge`] for a peer beyond
 /// [`MAX_PEER_WORK`], the solver's errors.
 pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<OscillationValidation> {
-    crate::error::check_nonneg("tolerance", check.tolerance)?;
-    if rows.is_empty() {
-        return Err(Error::param("rows", 0.0, "the table has no rows (nothing to validate)"));
-    }
-    let mut oscillations = Vec::with_capacity(rows.len());
-    for (i, r) in rows.iter().enumerate() {
-        let at = |reason: String| Error::Parse { context: format!("row {i}"), reason };
-        oscillations.push(Oscillation::new(r[0], r[1], r[2], r[3]).map_err(|e| at(e.to_string()))?);
-        if !r[4].is_finite() {
-            return Err(at(format!("mu_ratio = {:?} is not finite", r[4])));
-        }
-    }
-    if let Some(st) = check.peer {
-        st.check(shape)?;
-        let springs = if shape.is_flat() { 1 } else { st.springs };
-        let work = rows.len() as u128 * st.steps_per_period as u128 * springs as u128;
-        if work > MAX_PEER_WORK {
-            return Err(Error::TooLarge {
-                what: "stepping-peer work (rows x steps per period x springs)".into(),
-                count: work,
-                limit: MAX_PEER_WORK,
-            });
-        }
-    }
+    let oscillations = checked(shape, rows, check)?;
     let exact = crate::numerics::par::map(&oscillations, |o| evaluate(shape, o, crate::DEFAULT_TOL));
     let peer: Option<Vec<f64>> = match check.peer {
         Some(st) => Some(
@@ -199,4 +176,33 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
         peer: peer_summary,
         rows: out,
     })
+}
+
+/// Every row's oscillation, checked (the first bad row named), and the peer's work.
+fn checked(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<Vec<Oscillation>> {
+    crate::error::check_nonneg("tolerance", check.tolerance)?;
+    if rows.is_empty() {
+        return Err(Error::param("rows", 0.0, "the table has no rows (nothing to validate)"));
+    }
+    let mut oscillations = Vec::with_capacity(rows.len());
+    for (i, r) in rows.iter().enumerate() {
+        let at = |reason: String| Error::Parse { context: format!("row {i}"), reason };
+        oscillations.push(Oscillation::new(r[0], r[1], r[2], r[3]).map_err(|e| at(e.to_string()))?);
+        if !r[4].is_finite() {
+            return Err(at(format!("mu_ratio = {:?} is not finite", r[4])));
+        }
+    }
+    if let Some(st) = check.peer {
+        st.check(shape)?;
+        let springs = if shape.is_flat() { 1 } else { st.springs };
+        let work = rows.len() as u128 * st.steps_per_period as u128 * springs as u128;
+        if work > MAX_PEER_WORK {
+            return Err(Error::TooLarge {
+                what: "stepping-peer work (rows x steps per period x springs)".into(),
+                count: work,
+                limit: MAX_PEER_WORK,
+            });
+        }
+    }
+    Ok(oscillations)
 }

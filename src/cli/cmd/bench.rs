@@ -130,21 +130,49 @@ fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::cli::bench:
             command: format!("valgrind --tool=callgrind fricosc batch FILE.{ext} ({} rows minus 1 row)", pts.len()),
         });
     }
-    for (workload, shape, vbar, amp, rows) in [
-        ("table, 100 x 100 flat", "flat", "0:1.2:100", "0:3:100", 10_000usize),
-        ("table, 10 x 100 parabolic", "parabolic", "0:1.2:100", "0:3:10", 1_000),
-    ] {
-        let table = callgrind(&["table", "--shape", shape, "--vbar", vbar, "--amp", amp, "--format", "csv"]);
-        let single = callgrind(&["table", "--shape", shape, "--vbar", "0.6", "--amp", "1.5", "--format", "csv"]);
-        if let (Some(t), Some(s)) = (table, single) {
+    let seed = |shape: &'static str, vbar: &'static str, amp: &'static str| {
+        vec!["table", "--shape", shape, "--vbar", vbar, "--amp", amp, "--format", "csv"]
+    };
+    let oscillation = |shape: &'static str, vhat: &'static str, t: &'static str, phase: &'static str| {
+        vec![
+            "table",
+            "--shape",
+            shape,
+            "--vhat",
+            vhat,
+            "--amp",
+            "1.5",
+            "--tangential-amp",
+            t,
+            "--phase",
+            phase,
+            "--format",
+            "csv",
+        ]
+    };
+    let tables: [(&str, Vec<&str>, Vec<&str>, usize); 4] = [
+        ("table, 100 x 100 flat", seed("flat", "0:1.2:100", "0:3:100"), seed("flat", "0.6", "1.5"), 10_000),
+        ("table, 10 x 100 parabolic", seed("parabolic", "0:1.2:100", "0:3:10"), seed("parabolic", "0.6", "1.5"), 1_000),
+        (
+            "table, oscillation in the sliding direction, flat: 10 vhat x 10 T x 10 phases at du/u0 = 1.5",
+            oscillation("flat", "0:1.2:10", "0.1:4:10", "0:6:10"),
+            oscillation("flat", "0.6", "2", "1"),
+            1_000,
+        ),
+        (
+            "table, oscillation in the sliding direction, parabolic: 5 vhat x 5 T x 4 phases at du/u0 = 1.5",
+            oscillation("parabolic", "0:1.2:5", "0.1:4:5", "0:6:4"),
+            oscillation("parabolic", "0.6", "2", "1"),
+            100,
+        ),
+    ];
+    for (workload, args, single, rows) in tables {
+        if let (Some(t), Some(s)) = (callgrind(&args), callgrind(&single)) {
             out.push(crate::cli::bench::InstructionCount {
                 workload: workload.into(),
                 rows,
                 instructions_per_row: (t - s) / (rows - 1) as f64,
-                command: format!(
-                    "valgrind --tool=callgrind fricosc table --shape {shape} --vbar {vbar} --amp {amp} --format csv \
-                     (minus 1 point)"
-                ),
+                command: format!("valgrind --tool=callgrind fricosc {} (minus 1 point)", args.join(" ")),
             });
         }
     }

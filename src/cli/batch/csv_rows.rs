@@ -1,0 +1,200 @@
+//! `batch` in CSV: records read and checked one at a time, evaluated in
+//! parallel chunks; every column kept, `mu_ratio,reduction` appended or filled.
+
+use super::{changed, inputs, too_many, Job, Shapes, CHUNK, MAX_LINE, MAX_STREAM_ROWS};
+use crate::cli::error::{Error, Result};
+use crate::ratio::Ratio;
+use crate::stepper::Stepping;
+use std::io::{self, BufRead, Write};
+
+/// CSV: records read and checked one at a time, evaluated in parallel chunks.
+pub(super) fn stream_csv(
+    open: &dyn Fn() -> Result<Box<dyn BufRead>>,
+    source: &str,
+    stepping: Option<Stepping>,
+    out: &mut dyn Write,
+) -> Result<u64> {
+    let mut shapes = Shapes::new(stepping);
+    // Pass 1: check every row.
+    let mut rows = Csv::new(open()?, source)?;
+    let mut n = 0u64;
+    while rows.next(&mut shapes, false)?.is_some() {
+        n += 1;
+        if n > MAX_STREAM_ROWS {
+            return Err(too_many(source, n));
+        }
+        if n.is_multiple_of(CHUNK as u64) {
+            shapes.new_chunk();
+        }
+    }
+    // Pass 2: compute chunks in parallel, write them in order.
+    let werr = |e: io::Error| Error::write("stdout", e);
+    let mut rows = Csv::new(open()?, source)?;
+    rows.header(out).map_err(werr)?;
+    let (mut jobs, mut lines) = (Vec::with_capacity(CHUNK), Vec::with_capacity(CHUNK));
+    let mut again = 0u64;
+    loop {
+        shapes.new_chunk();
+        jobs.clear();
+        lines.clear();
+        while jobs.len() < CHUNK {
+            let Some((line, job)) = rows.next(&mut shapes, true)? else { break };
+            jobs.push(job);
+            lines.push(line);
+        }
+        if jobs.is_empty() {
+            break;
+        }
+        again += jobs.len() as u64;
+        if again > n {
+            return Err(changed(source, n, again));
+        }
+        let results = shapes.evaluate_all(&jobs, source, &|i| format!("line {}", lines[i]))?;
+        rows.write_kept(out, &results).map_err(werr)?;
+    }
+    if again != n {
+        return Err(changed(source, n, again));
+    }
+    out.flush().map_err(werr)?;
+    Ok(n)
+}
+
+/// A CSV writer's error as the I/O error it wraps, with its kind (a closed
+/// pipe stays a closed pipe, which ends the program quietly).
+pub fn io_of(e: csv::Error) -> io::Error {
+    match e.into_kind() {
+        csv::ErrorKind::Io(e) => e,
+        other => io::Error::other(format!("{other:?}")),
+    }
+}
+
+/// CSV rows.
+struct Csv {
+    reader: csv::Reader<Box<dyn BufRead>>,
+    source: String,
+    /// Columns of shape and amp; of vbar, vhat, tangential_amp and phase where present.
+    cols: [usize; 2],
+    optional: [(&'static str, Option<usize>); 4],
+    results: Option<(usize, usize)>,
+    header: csv::ByteRecord,
+    record: csv::ByteRecord,
+    kept: Vec<csv::ByteRecord>,
+}
+
+impl Csv {
+    fn new(input: Box<dyn BufRead>, source: &str) -> Result<Csv> {
+        let bad = |reason: String| Error::Parse { context: source.into(), reason };
+        let mut reader = csv::ReaderBuilder::new().has_headers(true).from_reader(input);
+        let header = reader.byte_headers().map_err(|e| bad(format!("header: {e}")))?.clone();
+        let find = |name: &str| header.iter().position(|h| h.trim_ascii() == name.as_bytes());
+        let col = |name: &str| find(name).ok_or_else(|| bad(format!("the header has no column '{name}'")));
+        for (i, h) in header.iter().enumerate() {
+            if header.iter().take(i).any(|g| g == h) {
+                return Err(bad(format!("the header repeats the column '{}'", String::from_utf8_lossy(h))));
+            }
+        }
+        let cols = [col("shape")?, col("amp")?];
+        let optional = ["vbar", "vhat", "tangential_amp", "phase"].map(|n| (n, find(n)));
+        if optional[0].1.is_none() && optional[1].1.is_none() {
+            return Err(bad("the header has no column 'vbar' (or 'vhat')".into()));
+        }
+        let results = match (find("mu_ratio"), find("reduction")) {
+            (Some(m), Some(r)) => Some((m, r)),
+            (None, None) => None,
+            _ => return Err(bad("the header has only one of 'mu_ratio', 'reduction'".into())),
+        };
+        let record = csv::ByteRecord::new();
+        Ok(Csv { reader, source: source.into(), cols, optional, results, header, record, kept: vec![] })
+    }
+}
+
+impl Csv {
+    /// Write the output's header: the input's, with the result columns appended where it has none.
+    fn header(&mut self, out: &mut dyn Write) -> io::Result<()> {
+        let mut h = self.header.clone();
+        if self.results.is_none() {
+            h.push_field(b"mu_ratio");
+            h.push_field(b"reduction");
+        }
+        let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(&mut *out);
+        w.write_byte_record(&h).map_err(io_of)?;
+        w.flush()
+    }
+
+    /// The next record's line number and job; `None` at the end. With `keep`,
+    /// the record is kept to be written by [`Csv::write_kept`].
+    fn next(&mut self, shapes: &mut Shapes, keep: bool) -> Result<Option<(u64, Job)>> {
+        let more = self.reader.read_byte_record(&mut self.record).map_err(|e| {
+            let reason = match e.kind() {
+                csv::ErrorKind::UnequalLengths { pos, expected_len, len } => format!(
+                    "line {}: {len} fields where the header has {expected_len}",
+                    pos.as_ref().map_or(self.reader.position().line(), |p| p.line())
+                ),
+                _ => format!("line {}: {e}", self.reader.position().line()),
+            };
+            Error::Parse { context: self.source.clone(), reason }
+        })?;
+        if !more {
+            return Ok(None);
+        }
+        let line = self.record.position().map_or(0, |p| p.line());
+        let bad =
+            |reason: String| Error::Parse { context: self.source.clone(), reason: format!("line {line}: {reason}") };
+        if self.record.as_slice().len() > MAX_LINE {
+            return Err(bad(format!("a record of more than {MAX_LINE} bytes")));
+        }
+        let text = |col: usize, name: &str| {
+            std::str::from_utf8(&self.record[col]).map_err(|_| format!("'{name}' is not UTF-8"))
+        };
+        // A column's number; an empty cell of an optional column is absent.
+        let get = |name: &'static str| -> std::result::Result<Option<f64>, String> {
+            let col = if name == "amp" {
+                Some(self.cols[1])
+            } else {
+                self.optional.iter().find(|(n, _)| *n == name).and_then(|(_, c)| *c)
+            };
+            let Some(col) = col else { return Ok(None) };
+            let t = text(col, name)?.trim();
+            if t.is_empty() && name != "amp" {
+                return Ok(None);
+            }
+            match t.parse::<f64>() {
+                Ok(x) if x.is_finite() => Ok(Some(x + 0.0)),
+                _ => Err(format!("'{name}' is not a finite number: '{t}'")),
+            }
+        };
+        let spec = text(self.cols[0], "shape").map_err(bad)?.trim();
+        let k = shapes.id(spec).map_err(|e| bad(e.to_string()))?;
+        let job = inputs(shapes, k, &get, self.results.is_some()).map_err(bad)?;
+        if keep {
+            self.kept.push(self.record.clone());
+        }
+        Ok(Some((line, job)))
+    }
+
+    /// Write the kept records with their results (in order), and forget them.
+    fn write_kept(&mut self, out: &mut dyn Write, results: &[Ratio]) -> io::Result<()> {
+        let mut buf = ryu::Buffer::new();
+        let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(&mut *out);
+        let mut rec = csv::ByteRecord::new();
+        for (row, r) in self.kept.iter().zip(results) {
+            rec.clear();
+            for (i, f) in row.iter().enumerate() {
+                match self.results {
+                    Some((m, _)) if i == m => rec.push_field(buf.format_finite(r.mu_ratio).as_bytes()),
+                    Some((_, d)) if i == d => rec.push_field(buf.format_finite(r.reduction).as_bytes()),
+                    _ => rec.push_field(f),
+                }
+            }
+            if self.results.is_none() {
+                rec.push_field(buf.format_finite(r.mu_ratio).as_bytes());
+                rec.push_field(buf.format_finite(r.reduction).as_bytes());
+            }
+            w.write_byte_record(&rec).map_err(io_of)?;
+        }
+        w.flush()?;
+        drop(w);
+        self.kept.clear();
+        Ok(())
+    }
+}
