@@ -13,6 +13,7 @@
 mod common;
 
 use common::exact_error;
+use common::quad::tanh_sinh;
 use fricosc::combined::{evaluate, Oscillation};
 use fricosc::stepper::{evaluate_oscillation, Stepping};
 use fricosc::stop::{solve, Bound, Drive, StopKind};
@@ -218,28 +219,6 @@ fn without_normal_oscillation_there_is_no_reduction_once_vhat_reaches_t() {
         let below = evaluate(&shape, &osc(0.0, 0.5 * (1.0 - 1e-9), 0.5, 0.0), DEFAULT_TOL).unwrap();
         assert!(below.ratio.reduction > 0.0 && below.ratio.reduction < 1e-6, "{}: {:?}", shape.name(), below.ratio);
     }
-}
-
-/// The tanh-sinh rule of `tests/mdr_independent.rs` over `[a, b]` at step `h`.
-fn tanh_sinh(a: f64, b: f64, h: f64, f: &dyn Fn(f64) -> (f64, f64)) -> (f64, f64) {
-    let half = 0.5 * (b - a);
-    let (mut sf, mut sg) = (0.0, 0.0);
-    let kmax = (3.5 / h) as i64;
-    for k in -kmax..=kmax {
-        let t = k as f64 * h;
-        let u = 0.5 * PI * t.sinh();
-        let cu = u.cosh();
-        let w = half * 0.5 * PI * t.cosh() / (cu * cu);
-        let d = (b - a) / (1.0 + (2.0 * u.abs()).exp());
-        let x = if t < 0.0 { a + d } else { b - d };
-        if d <= 0.0 || w == 0.0 {
-            continue;
-        }
-        let (p, q) = f(x);
-        sf += w * p;
-        sg += w * q;
-    }
-    (h * sf, h * sg)
 }
 
 /// The phase kinds a spring goes through and how it touches.

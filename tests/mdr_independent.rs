@@ -10,34 +10,11 @@
 //! (up to the reference's own accuracy).
 mod common;
 
+use common::quad::tanh_sinh;
 use common::spring_ref::{deficit, mean_b};
 use common::tol;
 use fricosc::mdr::power_law;
 use fricosc::DEFAULT_TOL;
-use std::f64::consts::PI;
-
-/// Tanh-sinh over [a, b] at step h: `(int f, int g)` for a pair of integrands.
-fn tanh_sinh(a: f64, b: f64, h: f64, f: &dyn Fn(f64) -> (f64, f64)) -> (f64, f64) {
-    let half = 0.5 * (b - a);
-    let (mut sf, mut sg) = (0.0, 0.0);
-    let kmax = (3.5 / h) as i64;
-    for k in -kmax..=kmax {
-        let t = k as f64 * h;
-        let u = 0.5 * PI * t.sinh();
-        let cu = u.cosh();
-        let w = half * 0.5 * PI * t.cosh() / (cu * cu);
-        // Distance to the nearer end without rounding: (b - a) / (1 + e^{2|u|}).
-        let d = (b - a) / (1.0 + (2.0 * u.abs()).exp());
-        let x = if t < 0.0 { a + d } else { b - d };
-        if d <= 0.0 || w == 0.0 {
-            continue;
-        }
-        let (p, q) = f(x);
-        sf += w * p;
-        sg += w * q;
-    }
-    (h * sf, h * sg)
-}
 
 /// `(mu_ratio, accuracy)` of the power law `g = z^n` by the reference.
 fn reference(n: f64, v: f64, amp: f64) -> (f64, f64) {

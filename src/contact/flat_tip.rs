@@ -147,6 +147,12 @@ impl Contact for FlatTip {
             let ratio = Ratio { mu_ratio: 1.0, reduction: 0.0 };
             return Ok(Evaluation { ratio, error_estimate: 0.0, interpolation_error: None });
         }
+        if vbar == 0.0 && amp >= 1.0 {
+            // Every spring loses contact and sticks from contact to loss: none
+            // slides (exactly 0, not 1 minus a rounded reduction).
+            let ratio = Ratio { mu_ratio: 0.0, reduction: 1.0 };
+            return Ok(Evaluation { ratio, error_estimate: 0.0, interpolation_error: None });
+        }
         if amp < crate::contact::AMP_LINEAR {
             let at = self.evaluate(vbar, crate::contact::AMP_LINEAR, tol)?;
             let k = amp / crate::contact::AMP_LINEAR;

@@ -55,6 +55,12 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
     /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
     fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
+        if amp >= 1.0 {
+            // Every spring loses contact (G >= 0 puts every level at or below 1
+            // <= amp) and sticks from contact to loss: exactly 0.
+            crate::error::check_nonneg("amp", amp)?;
+            return Ok(0.0);
+        }
         Ok(self.evaluate(0.0, amp, tol)?.ratio.mu_ratio)
     }
 

@@ -1,0 +1,166 @@
+//! What the reports print beside `mu_ratio` — the mean normal force, the static
+//! friction, the flat punch's mean tangential force, a power law's band edges
+//! and shares, the contacts' names — each against a value computed without the
+//! solver (closed forms, 25-digit mpmath values, the test's own spring and
+//! quadrature). These are the survivors of the mutation run (`tests/README.md`):
+//! mutants of these fields changed what `point` prints and no test saw it.
+mod common;
+
+use common::quad::tanh_sinh;
+use common::spring_ref::{deficit, mean_b};
+use fricosc::{Options, Shape};
+use std::f64::consts::PI;
+
+fn point_json(shape: &Shape, vbar: f64, amp: f64) -> serde_json::Value {
+    serde_json::to_value(shape.point(vbar, amp, &Options::default()).unwrap()).unwrap()
+}
+
+#[test]
+fn contacts_are_named_as_the_command_line_names_them() {
+    for (spec, name) in [
+        ("flat", "flat"),
+        ("parabolic", "parabolic"),
+        ("power:2", "parabolic"),
+        ("cone", "cone"),
+        ("power:3", "power:3.0"),
+    ] {
+        assert_eq!(common::shape(spec).unwrap().contact().name(), name, "{spec}");
+    }
+}
+
+/// `(1/pi) int_0^pi (1 - amp cos tau)_+ dtau = 1 + (x - atan x)/pi` with
+/// `x = sqrt(amp^2 - 1)` beyond `amp = 1` (`acos(1/amp) = atan x`, which keeps
+/// its digits where `1/amp` would lose them); 1 below.
+fn flat_mean_normal(amp: f64) -> f64 {
+    if amp <= 1.0 {
+        1.0
+    } else {
+        let x = ((amp - 1.0) * (amp + 1.0)).sqrt();
+        1.0 + (x - x.atan()) / PI
+    }
+}
+
+#[test]
+fn the_flat_punchs_mean_normal_force_and_its_report() {
+    for amp in [0.0, 0.3, 1.0, 1.0 + 1e-9, 1.5, 3.0, 1e3, 1e10] {
+        let want = flat_mean_normal(amp);
+        let got = fricosc::flat::mean_normal(amp);
+        assert!((got / want - 1.0).abs() <= 4e-16 * amp.max(1.0).log2().max(1.0), "amp {amp}: {got} against {want}");
+        // Both sides of the foundation in the contact's units.
+        let c = Shape::flat().contact().mean_normal(amp).unwrap();
+        assert!((c / (2.0 * want) - 1.0).abs() <= 4e-15, "amp {amp}: {c}");
+    }
+    // The point's report: the mean normal force, the mean tangential force
+    // (mu times it) and the static friction (the minimum over the mean, (1 - amp)_+).
+    for (vbar, amp) in [(0.3, 0.5), (0.3, 1.5), (0.8, 2.5)] {
+        let p = point_json(&Shape::flat(), vbar, amp);
+        let n = p["mean_normal"].as_f64().unwrap();
+        assert!((n / flat_mean_normal(amp) - 1.0).abs() <= 1e-15, "{p}");
+        let t = p["mean_tangential"].as_f64().unwrap();
+        assert!((t - p["mu_ratio"].as_f64().unwrap() * n).abs() <= 1e-15, "{p}");
+        assert_eq!(p["mu_static_ratio"].as_f64().unwrap(), (1.0 - amp).max(0.0), "{p}");
+    }
+}
+
+/// Mean normal forces of power laws (both sides of the foundation, units
+/// `E* x_c u0`): `(2n/(n+1))/pi int (1 - amp cos tau)_+^(1 + 1/n) dtau` in
+/// 40-digit mpmath, rounded to 22 digits.
+const POWER_NORMAL: [(f64, f64, f64); 6] = [
+    (2.0, 0.5, 1.396_615_174_212_026_952_9),
+    (2.0, 2.0, 2.436_185_533_533_771_139_3),
+    (1.0, 0.5, 1.125),
+    (1.0, 1.5, 2.089_915_902_860_269_021_0),
+    (3.7, 0.5, 1.608_971_025_609_234_384_1),
+    (3.7, 2.0, 2.376_359_348_144_179_574_9),
+];
+
+#[test]
+fn power_law_mean_normal_forces_against_mpmath() {
+    for (n, amp, want) in POWER_NORMAL {
+        let shape = common::shape(&format!("power:{n}")).unwrap();
+        let got = shape.contact().mean_normal(amp).unwrap();
+        assert!((got / want - 1.0).abs() <= 1e-14, "n {n} amp {amp}: {got} against {want}");
+        // The point's report, through its bands (scaled back beyond amp = 1).
+        let p = point_json(&shape, 0.4, amp);
+        let reported = p["mean_normal"].as_f64().unwrap();
+        assert!((reported / want - 1.0).abs() <= 1e-13, "n {n} amp {amp}: reported {reported}");
+    }
+    // The trait's generic phase average (flat-tip:0 is the sphere's paraboloid).
+    let tip = common::shape("flat-tip:0").unwrap();
+    for (n, amp, want) in POWER_NORMAL.iter().filter(|c| c.0 == 2.0) {
+        let got = tip.contact().mean_normal(*amp).unwrap();
+        assert!((got / want - 1.0).abs() <= 1e-13, "flat-tip:0 ({n}) amp {amp}: {got} against {want}");
+    }
+}
+
+/// Static friction is the limit of vanishing velocity: the solver at
+/// `vbar = 1e-10` (its bands, not the closed form of `vbar = 0`) is within
+/// `1e-8` of the reported `mu_static_ratio`, for every shape; the flat punch's
+/// is `(1 - amp)_+`, and every contact that jumps has none.
+#[test]
+fn static_friction_is_the_small_velocity_limit() {
+    for spec in ["flat", "parabolic", "cone", "power:3.7", "flat-tip:0.5"] {
+        let shape = common::shape(spec).unwrap();
+        for amp in [0.2, 0.6, 0.95, 1.0, 1.7] {
+            let ms = shape.contact().mu_static(amp, fricosc::DEFAULT_TOL).unwrap();
+            let near = shape.evaluate(1e-10, amp).unwrap().ratio.mu_ratio;
+            assert!((near - ms).abs() <= 1e-8, "{spec} amp {amp}: mu_static {ms}, mu(1e-10) {near}");
+            if amp >= 1.0 {
+                assert_eq!(ms, 0.0, "{spec} amp {amp}");
+            } else {
+                assert!(ms > 0.0, "{spec} amp {amp}: {ms}");
+            }
+            // Reported by the flat punch's and the power laws' points.
+            if let Some(reported) = point_json(&shape, 0.3, amp)["mu_static_ratio"].as_f64() {
+                assert_eq!(reported, ms, "{spec} amp {amp}");
+            } else {
+                assert!(spec.starts_with("flat-tip"), "{spec} reports no static friction");
+            }
+        }
+    }
+    assert_eq!(Shape::flat().contact().mu_static(0.25, 1e-6).unwrap(), 0.75);
+}
+
+/// A power law's bands: their edges are the regime thresholds in closed form
+/// (`s = (1 - z^n)/amp` at 1, `+-sqrt(1 - vbar^2)` and -1), and each band's
+/// normal and tangential shares are its integrals over the total, computed here
+/// by tanh-sinh with the test's own spring.
+#[test]
+fn power_law_bands_have_the_thresholds_and_shares() {
+    for (n, vbar, amp) in [(2.0, 0.6, 1.0), (2.0, 0.3, 0.5), (1.0, 0.5, 2.0), (3.7, 0.2, 1.5)] {
+        let p = point_json(&common::shape(&format!("power:{n}")).unwrap(), vbar, amp);
+        let c = (1.0 - vbar * vbar).sqrt();
+        // Where s crosses each threshold, within the contact (z >= 0).
+        let mut want: Vec<f64> =
+            [1.0, c, -c, -1.0].iter().map(|&s| 1.0 - amp * s).filter(|&d| d > 0.0).map(|d| d.powf(1.0 / n)).collect();
+        want.insert(0, 0.0);
+        want.dedup();
+        let bands = p["bands"].as_array().unwrap();
+        let mut edges: Vec<f64> = bands.iter().map(|b| b["x_range"][0].as_f64().unwrap()).collect();
+        edges.push(bands.last().unwrap()["x_range"][1].as_f64().unwrap());
+        assert_eq!(edges.len(), want.len(), "n {n} vbar {vbar} amp {amp}: {edges:?} against {want:?}");
+        for (e, w) in edges.iter().zip(&want) {
+            assert!((e - w).abs() <= 1e-15 * w.max(1.0), "n {n} vbar {vbar} amp {amp}: edge {e} against {w}");
+        }
+        // Shares: the spring at z has s = (1 - z^n)/amp, normal amp <B>(s), friction amp (<B> - D).
+        let spring = |z: f64| {
+            let s = (1.0 - z.powf(n)) / amp;
+            (mean_b(s), mean_b(s) - deficit(s, vbar))
+        };
+        let per_band: Vec<(f64, f64)> = edges.windows(2).map(|w| tanh_sinh(w[0], w[1], 1.0 / 64.0, &spring)).collect();
+        let (tn, tt) = per_band.iter().fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
+        for (b, (bn, bt)) in bands.iter().zip(&per_band) {
+            let (sn, st) = (b["normal_share"].as_f64().unwrap(), b["tangential_share"].as_f64().unwrap());
+            assert!(
+                (sn - bn / tn).abs() <= 1e-10,
+                "n {n} vbar {vbar} amp {amp}: normal share {sn} against {}",
+                bn / tn
+            );
+            assert!(
+                (st - bt / tt).abs() <= 1e-10,
+                "n {n} vbar {vbar} amp {amp}: tangential share {st} against {}",
+                bt / tt
+            );
+        }
+    }
+}
