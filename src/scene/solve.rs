@@ -80,7 +80,43 @@ fn check(s: &Scene, source: &str, read: crate::Reader) -> Result<Checked> {
     let f_hz = pos("oscillation.frequency_hz", s.oscillation.frequency_hz)?;
     let omega = field(source, "oscillation.frequency_hz", f_hz, (2.0 * PI * f_hz).is_finite(), "overflows 2 pi f")?
         * (2.0 * PI);
-    let geometry = match &s.indenter {
+    let geometry = geometry(s, source, read)?;
+    let velocities = match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
+        (Some(v), None) => {
+            if v.is_empty() || v.len() > MAX_VELOCITIES {
+                return Err(Error::Parse {
+                    context: format!("{source}: velocity.values_m_per_s"),
+                    reason: "needs 1 to 10^6 values".into(),
+                });
+            }
+            v.iter()
+                .enumerate()
+                .map(|(i, &x)| {
+                    field(source, &format!("velocity.values_m_per_s[{i}]"), x, x >= 0.0, "must be finite and >= 0")
+                })
+                .collect::<Result<Vec<_>>>()?
+        }
+        (None, Some(sw)) => sweep(
+            source,
+            ("velocity.sweep.start_m_per_s", "velocity.sweep.stop_m_per_s", "velocity.sweep.count"),
+            (sw.start_m_per_s, sw.stop_m_per_s, sw.count, sw.log),
+            MAX_VELOCITIES,
+            true,
+        )?,
+        _ => {
+            return Err(Error::Parse {
+                context: format!("{source}: velocity"),
+                reason: "give exactly one of values_m_per_s, sweep".into(),
+            })
+        }
+    };
+    Ok(Checked { e_star, g_star, mu0, omega, geometry, velocities })
+}
+
+/// The indenter's geometry in the solver's terms, checked.
+fn geometry(s: &Scene, source: &str, read: crate::Reader) -> Result<Geometry> {
+    let pos = |p: &str, v: f64| field(source, p, v, v > 0.0, "must be finite and > 0");
+    Ok(match &s.indenter {
         Indenter::FlatPunch { radius_m } => Geometry::Flat { radius: pos("indenter.flat_punch.radius_m", *radius_m)? },
         Indenter::Sphere { radius_m } => {
             Geometry::Power { n: 2.0, kc: 1.0 / pos("indenter.sphere.radius_m", *radius_m)? }
@@ -119,37 +155,7 @@ fn check(s: &Scene, source: &str, read: crate::Reader) -> Result<Checked> {
             let table = crate::profile::Table::parse(&text, &path, true)?;
             Geometry::Profile { path, table }
         }
-    };
-    let velocities = match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
-        (Some(v), None) => {
-            if v.is_empty() || v.len() > MAX_VELOCITIES {
-                return Err(Error::Parse {
-                    context: format!("{source}: velocity.values_m_per_s"),
-                    reason: "needs 1 to 10^6 values".into(),
-                });
-            }
-            v.iter()
-                .enumerate()
-                .map(|(i, &x)| {
-                    field(source, &format!("velocity.values_m_per_s[{i}]"), x, x >= 0.0, "must be finite and >= 0")
-                })
-                .collect::<Result<Vec<_>>>()?
-        }
-        (None, Some(sw)) => sweep(
-            source,
-            ("velocity.sweep.start_m_per_s", "velocity.sweep.stop_m_per_s", "velocity.sweep.count"),
-            (sw.start_m_per_s, sw.stop_m_per_s, sw.count, sw.log),
-            MAX_VELOCITIES,
-            true,
-        )?,
-        _ => {
-            return Err(Error::Parse {
-                context: format!("{source}: velocity"),
-                reason: "give exactly one of values_m_per_s, sweep".into(),
-            })
-        }
-    };
-    Ok(Checked { e_star, g_star, mu0, omega, geometry, velocities })
+    })
 }
 
 /// `count` values from `start` to `stop` (inclusive; `names` are the three
@@ -316,52 +322,14 @@ fn solve_amplitude(
     progress: &(dyn Fn(u64) + Sync),
 ) -> Result<SceneResult> {
     let amp_of = |u0: f64| -> Result<f64> { Ok(amplitude.at(u0)) };
-    let l = &s.loading;
-    let (u0, note) = match (l.mean_indentation_m, l.mean_normal_force_n) {
-        (Some(u), None) => {
-            (field(source, "loading.mean_indentation_m", u, u > 0.0, "must be finite and > 0")?, String::new())
-        }
-        (None, Some(f)) => {
-            let f = field(source, "loading.mean_normal_force_n", f, f > 0.0, "must be finite and > 0")?;
-            (
-                solve_load(c, f, &amp_of, source)?,
-                "load control: u_z0 solved so that the period-averaged normal force equals \
-              mean_normal_force_n; with contact loss this differs from the static force-indentation relation"
-                    .into(),
-            )
-        }
-        _ => {
-            return Err(Error::Parse {
-                context: format!("{source}: loading"),
-                reason: "give exactly one of mean_indentation_m, mean_normal_force_n".into(),
-            })
-        }
-    };
+    let (u0, note) = mean_indentation(s, c, &amp_of, source)?;
     let (shape, _) = c.geometry.at(u0)?;
     let du = amp_of(u0)?;
     let amp = du / u0;
     let (xc, kz, fbar) = contact(c, u0, du)?;
     let ratio = c.g_star / c.e_star;
     let v_crit = c.mu0 * c.omega * du / ratio;
-    let mut warnings = vec![];
-    if let Indenter::Sphere { radius_m } = s.indenter {
-        // Hertz (a paraboloid) needs a contact radius small against the sphere's.
-        if xc > radius_m {
-            return Err(Error::Parse {
-                context: format!("{source}: loading"),
-                reason: format!(
-                    "contact radius {xc:?} m exceeds the sphere radius {radius_m:?} m (mean indentation {u0:?} m): \
-                     impossible for a sphere"
-                ),
-            });
-        }
-        if xc > 0.1 * radius_m {
-            warnings.push(format!(
-                "contact radius {xc:.3e} m is more than 0.1 of the sphere radius {radius_m:.3e} m: Hertz (the \
-                 paraboloid used here) no longer applies; use a tabulated 'profile' of the sphere"
-            ));
-        }
-    }
+    let warnings = sphere_warnings(s, xc, u0, source)?;
     let mu_static = shape.mu_static(amp, &crate::Options::default())? * c.mu0;
     // eq. 3 with kx/kz = G*/E*: vbar = v0 / v_crit. The velocity scale must be an
     // ordinary number, else every vbar is 0, infinite or NaN.
@@ -440,6 +408,61 @@ fn solve_amplitude(
         warnings,
         rows,
     })
+}
+
+/// The mean indentation: given, or solved from the mean normal force (with a note saying so).
+fn mean_indentation(
+    s: &Scene,
+    c: &Checked,
+    amp_of: &dyn Fn(f64) -> Result<f64>,
+    source: &str,
+) -> Result<(f64, String)> {
+    let l = &s.loading;
+    Ok(match (l.mean_indentation_m, l.mean_normal_force_n) {
+        (Some(u), None) => {
+            (field(source, "loading.mean_indentation_m", u, u > 0.0, "must be finite and > 0")?, String::new())
+        }
+        (None, Some(f)) => {
+            let f = field(source, "loading.mean_normal_force_n", f, f > 0.0, "must be finite and > 0")?;
+            (
+                solve_load(c, f, amp_of, source)?,
+                "load control: u_z0 solved so that the period-averaged normal force equals \
+              mean_normal_force_n; with contact loss this differs from the static force-indentation relation"
+                    .into(),
+            )
+        }
+        _ => {
+            return Err(Error::Parse {
+                context: format!("{source}: loading"),
+                reason: "give exactly one of mean_indentation_m, mean_normal_force_n".into(),
+            })
+        }
+    })
+}
+
+/// A sphere's contact radius against its radius: beyond it an error, beyond a
+/// tenth of it a warning (Hertz, the paraboloid, no longer applies).
+fn sphere_warnings(s: &Scene, xc: f64, u0: f64, source: &str) -> Result<Vec<String>> {
+    let mut warnings = vec![];
+    if let Indenter::Sphere { radius_m } = s.indenter {
+        // Hertz (a paraboloid) needs a contact radius small against the sphere's.
+        if xc > radius_m {
+            return Err(Error::Parse {
+                context: format!("{source}: loading"),
+                reason: format!(
+                    "contact radius {xc:?} m exceeds the sphere radius {radius_m:?} m (mean indentation {u0:?} m): \
+                     impossible for a sphere"
+                ),
+            });
+        }
+        if xc > 0.1 * radius_m {
+            warnings.push(format!(
+                "contact radius {xc:.3e} m is more than 0.1 of the sphere radius {radius_m:.3e} m: Hertz (the \
+                 paraboloid used here) no longer applies; use a tabulated 'profile' of the sphere"
+            ));
+        }
+    }
+    Ok(warnings)
 }
 
 /// `u0` with period-averaged normal force `f` (the force grows with `u0`).

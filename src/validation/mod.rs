@@ -525,8 +525,32 @@ fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64
         "at vbar >= 1 no spring sticks and mu/mu0 = 1 exactly: check the velocity's normalisation (eq. 3: \
          vbar = (kx/kz) v0 / (mu0 omega du)) and the Coulomb bound",
     ));
-    // Decreasing in vbar at one amplitude (rows sorted by vbar; vbar = 0 rows
-    // follow the chosen convention, so a relaxed 0 is not a decrease).
+    out.extend(finding(
+        FindingKind::NotMonotone,
+        decreasing(rows, amps, tol),
+        "mu/mu0 decreases with velocity at these rows (the exact curve never does): check convergence there \
+         (time step, number of periods, springs)",
+    ));
+    out.extend(finding(
+        FindingKind::NotSteady,
+        not_steady(rows, amps, tol),
+        "errors grow towards vbar -> 0, ten times those at the same amplitude's higher velocities: the \
+         steady state takes longer to reach at low velocity (the tangential force builds up at a rate \
+         proportional to vbar); run more periods and average the last one",
+    ));
+    at_rest_findings(shape, rows, amps, at_rest, tol, &mut out)?;
+    out.extend(finding(
+        FindingKind::WorseThanPeer,
+        worse_than_peer(rows, amps, tol),
+        "errors ten times (or more) those of fricosc's stepping peer (the seed's scheme) at the same resolution: \
+         not the discretisation but a bug (see the peer_error column)",
+    ));
+    Ok(out)
+}
+
+/// Rows where `mu` decreases in `vbar` at one amplitude (rows sorted by vbar;
+/// vbar = 0 rows follow the chosen convention, so a relaxed 0 is not a decrease).
+fn decreasing(rows: &[Row], amps: &[f64], tol: f64) -> Vec<usize> {
     let mut decreasing = vec![];
     for &a in amps {
         let mut line: Vec<&Row> = rows.iter().filter(|r| r.amp == a).collect();
@@ -538,16 +562,14 @@ fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64
         }
     }
     decreasing.sort_unstable();
-    out.extend(finding(
-        FindingKind::NotMonotone,
-        decreasing,
-        "mu/mu0 decreases with velocity at these rows (the exact curve never does): check convergence there \
-         (time step, number of periods, springs)",
-    ));
-    // Errors far larger at low velocity than at the same amplitude's higher
-    // velocities (below the critical one): the transient. Compared within one
-    // amplitude, so that a scheme's larger error in the jumping regimes is not
-    // mistaken for it.
+    decreasing
+}
+
+/// Rows whose errors are far larger at low velocity than at the same
+/// amplitude's higher velocities (below the critical one): the transient.
+/// Compared within one amplitude, so that a scheme's larger error in the
+/// jumping regimes is not mistaken for it.
+fn not_steady(rows: &[Row], amps: &[f64], tol: f64) -> Vec<usize> {
     let mut slow = vec![];
     for &a in amps {
         let rest: Vec<f64> =
@@ -563,14 +585,19 @@ fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64
         );
     }
     slow.sort_unstable();
-    out.extend(finding(
-        FindingKind::NotSteady,
-        slow,
-        "errors grow towards vbar -> 0, ten times those at the same amplitude's higher velocities: the \
-         steady state takes longer to reach at low velocity (the tangential force builds up at a rate \
-         proportional to vbar); run more periods and average the last one",
-    ));
-    // vbar = 0 rows that match the other convention rather than the chosen one.
+    slow
+}
+
+/// The findings about `vbar = 0` rows: those that match the other convention
+/// rather than the chosen one, and those off by as much as the sliding rows.
+fn at_rest_findings(
+    shape: &Shape,
+    rows: &[Row],
+    amps: &[f64],
+    at_rest: AtRest,
+    tol: f64,
+    out: &mut Vec<Finding>,
+) -> Result<()> {
     let other = match at_rest {
         AtRest::Sliding => AtRest::Relaxed,
         AtRest::Relaxed => AtRest::Sliding,
@@ -601,13 +628,7 @@ fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64
          velocities, yet they are as far off: the error is in what every row shares: the averaging (over whole \
          periods?), the normalisation by the mean normal force, or the start",
     ));
-    out.extend(finding(
-        FindingKind::WorseThanPeer,
-        worse_than_peer(rows, amps, tol),
-        "errors ten times (or more) those of fricosc's stepping peer (the seed's scheme) at the same resolution: \
-         not the discretisation but a bug (see the peer_error column)",
-    ));
-    Ok(out)
+    Ok(())
 }
 
 /// A `vbar = 0` row's error is a finding when it exceeds this share of the

@@ -258,24 +258,7 @@ pub fn convergence(
             needed_resolution: needed,
         });
     }
-    let mut regimes: Vec<ContactRegime> = rows.iter().map(|r| r.regime).collect();
-    regimes.sort();
-    regimes.dedup();
-    let by_regime = regimes
-        .into_iter()
-        .filter_map(|g| {
-            let mut ps: Vec<f64> = rows.iter().filter(|r| r.regime == g).filter_map(|r| r.order).collect();
-            ps.sort_by(f64::total_cmp);
-            let n = ps.len();
-            (n > 0).then(|| RegimeOrder {
-                regime: g,
-                n,
-                median_order: if n % 2 == 1 { ps[n / 2] } else { 0.5 * (ps[n / 2 - 1] + ps[n / 2]) },
-                min_order: ps[0],
-                max_order: ps[n - 1],
-            })
-        })
-        .collect();
+    let by_regime = orders_by_regime(&rows);
     let finest: Vec<(f64, f64, f64)> = rows.iter().map(|r| (r.vbar, r.amp, r.values[r.values.len() - 1])).collect();
     let mut findings = compare(shape, &finest, &check.with_peer(None))?.findings;
     findings.extend(series_findings(&rows));
@@ -297,6 +280,28 @@ pub fn convergence(
     .into_iter()
     .collect();
     Ok(Convergence { shape: shape.name().to_string(), resolutions: res, target, rows, by_regime, findings, cautions })
+}
+
+/// The observed orders of each regime's rows.
+fn orders_by_regime(rows: &[SeriesRow]) -> Vec<RegimeOrder> {
+    let mut regimes: Vec<ContactRegime> = rows.iter().map(|r| r.regime).collect();
+    regimes.sort();
+    regimes.dedup();
+    regimes
+        .into_iter()
+        .filter_map(|g| {
+            let mut ps: Vec<f64> = rows.iter().filter(|r| r.regime == g).filter_map(|r| r.order).collect();
+            ps.sort_by(f64::total_cmp);
+            let n = ps.len();
+            (n > 0).then(|| RegimeOrder {
+                regime: g,
+                n,
+                median_order: if n % 2 == 1 { ps[n / 2] } else { 0.5 * (ps[n / 2 - 1] + ps[n / 2]) },
+                min_order: ps[0],
+                max_order: ps[n - 1],
+            })
+        })
+        .collect()
 }
 
 /// The findings of a study's rows: not converging, resolution-independent.

@@ -155,13 +155,13 @@ fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::cli::bench:
         ("table, 10 x 100 parabolic", seed("parabolic", "0:1.2:100", "0:3:10"), seed("parabolic", "0.6", "1.5"), 1_000),
         (
             "table, oscillation in the sliding direction, flat: 10 vhat x 10 T x 10 phases at du/u0 = 1.5",
-            oscillation("flat", "0:1.2:10", "0.1:4:10", "0:6:10"),
+            oscillation("flat", "0.1:1.2:10", "0.1:4:10", "0:6:10"),
             oscillation("flat", "0.6", "2", "1"),
             1_000,
         ),
         (
             "table, oscillation in the sliding direction, parabolic: 5 vhat x 5 T x 4 phases at du/u0 = 1.5",
-            oscillation("parabolic", "0:1.2:5", "0.1:4:5", "0:6:4"),
+            oscillation("parabolic", "0.1:1.2:5", "0.1:4:5", "0:6:4"),
             oscillation("parabolic", "0.6", "2", "1"),
             100,
         ),

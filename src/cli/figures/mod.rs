@@ -149,11 +149,22 @@ fn approx(eq: &str, amp: Option<f64>, xs: &[f64], f: impl Fn(f64) -> f64) -> Cur
 /// and the critical amplitude `du/u0 = 1` bold where it separates the two
 /// regimes (Figs. 4 and 8).
 pub fn build() -> Result<Vec<Figure>> {
+    let mut figs = flat_figures()?;
+    figs.extend(jumping_figures()?);
+    figs.extend(oscillation_figures()?);
+    Ok(figs)
+}
+
+/// The seed's amplitudes without jumping (Figs. 3, 4, 7, 8).
+const SMALL: [f64; 6] = [0.0, 0.2, 0.4, 0.6, 0.8, 1.0];
+/// The seed's jumping amplitudes of Figs. 4 and 8.
+const JUMPING: [f64; 5] = [1.2, 1.4, 1.6, 1.8, 2.0];
+
+/// Figs. 3 (with its inset) and 4: the flat punch.
+fn flat_figures() -> Result<Vec<Figure>> {
     let flat = Shape::flat();
-    let parabolic = Shape::parabolic();
     let vb = grid(0.0, 1.2, 241);
-    let small = [0.0, 0.2, 0.4, 0.6, 0.8, 1.0];
-    let jumping = [1.2, 1.4, 1.6, 1.8, 2.0];
+    let (small, jumping) = (SMALL, JUMPING);
     let mut figs = vec![];
 
     // Fig. 3: flat punch, no jumping, and eq. 11.
@@ -199,6 +210,16 @@ pub fn build() -> Result<Vec<Figure>> {
         c,
     ));
 
+    Ok(figs)
+}
+
+/// Fig. 5 (with its inset), Figs. 7 and 8: the flat punch jumping, the paraboloid.
+fn jumping_figures() -> Result<Vec<Figure>> {
+    let (flat, parabolic) = (Shape::flat(), Shape::parabolic());
+    let vb = grid(0.0, 1.2, 241);
+    let vh = grid(0.0, 2.0, 201);
+    let (small, jumping) = (SMALL, JUMPING);
+    let mut figs = vec![];
     // Fig. 5: jumping, and eq. 17.
     let mut c = vec![];
     for k in 0..=10 {
@@ -258,7 +279,6 @@ pub fn build() -> Result<Vec<Figure>> {
         }
     }
     figs.push(against_vhat("fig8", "Fig. 8: parabolic indenter against v\u{302}, exact and eq. 27", c));
-    figs.extend(oscillation_figures()?);
     Ok(figs)
 }
 
