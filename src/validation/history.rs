@@ -418,6 +418,59 @@ impl Exact {
     }
 }
 
+/// The whole periods a history spans (with one sample's spacing of slack: a
+/// run of two periods recorded from one step past a period's start spans
+/// `2 pi - h`), and its last period: start, end and the samples in it.
+fn last_period(taus: &[f64]) -> Result<(usize, f64, f64, Vec<usize>)> {
+    let n = taus.len();
+    let spacing_all = taus.windows(2).map(|w| w[1] - w[0]).fold(0.0f64, f64::max).min(PI);
+    let span = if n > 1 { taus[n - 1] - taus[0] } else { 0.0 };
+    let periods = ((span + spacing_all) / TAU * (1.0 + 1e-9)).floor() as usize;
+    if periods < 1 {
+        return Err(Error::Parse {
+            context: "history".into(),
+            reason: format!("it spans {:.3} periods: at least one whole period is needed", span / TAU),
+        });
+    }
+    let end = taus[n - 1];
+    let start = end - TAU;
+    let last: Vec<usize> = (0..n).filter(|&i| taus[i] > start + 1e-12 * TAU).collect();
+    if last.len() < MIN_LAST_SAMPLES {
+        return Err(Error::Parse {
+            context: "history".into(),
+            reason: format!(
+                "{} samples in the last period (from tau = {start:?} to {end:?}): at least {MIN_LAST_SAMPLES} are needed",
+                last.len()
+            ),
+        });
+    }
+    Ok((periods, start, end, last))
+}
+
+/// The time origin of a history's last period: from its normal force where
+/// given ([`TimeOrigin`]), else assumed the seed's.
+fn find_origin(last_taus: &[f64], user_normal: Option<&[f64]>, found_omega: Option<f64>, spacing: f64) -> TimeOrigin {
+    // A convention is recognised on the file's own time axis only (a found
+    // frequency counts time from the first sample), to a hundredth of a sample:
+    // the first harmonic finds the offset to rounding where the normal force
+    // is smooth, and to a small fraction of a sample where it has kinks.
+    let snap = if found_omega.is_some() { 0.0 } else { SNAP_SAMPLES * spacing };
+    let (offset, convention, source) = match user_normal {
+        Some(nl) => match origin_offset(last_taus, nl, snap) {
+            Some((d, c)) => (d, c, OriginSource::NormalForce),
+            None => (0.0, None, OriginSource::Assumed),
+        },
+        None => (0.0, None, OriginSource::Assumed),
+    };
+    TimeOrigin {
+        source,
+        offset,
+        offset_samples: if spacing > 0.0 { offset / spacing } else { 0.0 },
+        convention,
+        omega: found_omega,
+    }
+}
+
 /// Compare a force history ([`HistoryData`], forces in units of `F0`, module
 /// docs) with the steady state of `shape` at `(vbar, amp)`: exact for the flat
 /// punch; for other shapes the normal force is exact and the tangential force
@@ -449,51 +502,12 @@ pub fn compare_history(
     check_columns(raw_time, data)?;
     let (taus, found_omega) = file_phases(data)?;
     let n = taus.len();
-    // Periods from the span, with one sample's spacing of slack: a run of two
-    // periods recorded from one step past a period's start spans 2 pi - h.
-    let spacing_all = taus.windows(2).map(|w| w[1] - w[0]).fold(0.0f64, f64::max).min(PI);
-    let span = if n > 1 { taus[n - 1] - taus[0] } else { 0.0 };
-    let periods = ((span + spacing_all) / TAU * (1.0 + 1e-9)).floor() as usize;
-    if periods < 1 {
-        return Err(Error::Parse {
-            context: "history".into(),
-            reason: format!("it spans {:.3} periods: at least one whole period is needed", span / TAU),
-        });
-    }
-    let end = taus[n - 1];
-    let start = end - TAU;
-    let last: Vec<usize> = (0..n).filter(|&i| taus[i] > start + 1e-12 * TAU).collect();
-    if last.len() < MIN_LAST_SAMPLES {
-        return Err(Error::Parse {
-            context: "history".into(),
-            reason: format!(
-                "{} samples in the last period (from tau = {start:?} to {end:?}): at least {MIN_LAST_SAMPLES} are needed",
-                last.len()
-            ),
-        });
-    }
+    let (periods, start, end, last) = last_period(&taus)?;
     let last_taus: Vec<f64> = last.iter().map(|&i| taus[i]).collect();
     let spacing = last_taus.windows(2).map(|w| w[1] - w[0]).fold(0.0f64, f64::max);
     let user_normal: Option<Vec<f64>> = data.normal.map(|x| last.iter().map(|&i| x[i]).collect());
-    // A convention is recognised on the file's own time axis only (a found
-    // frequency counts time from the first sample), to a hundredth of a sample:
-    // the first harmonic finds the offset to rounding where the normal force
-    // is smooth, and to a small fraction of a sample where it has kinks.
-    let snap = if found_omega.is_some() { 0.0 } else { SNAP_SAMPLES * spacing };
-    let (offset, convention, source) = match &user_normal {
-        Some(nl) => match origin_offset(&last_taus, nl, snap) {
-            Some((d, c)) => (d, c, OriginSource::NormalForce),
-            None => (0.0, None, OriginSource::Assumed),
-        },
-        None => (0.0, None, OriginSource::Assumed),
-    };
-    let time_origin = TimeOrigin {
-        source,
-        offset,
-        offset_samples: if spacing > 0.0 { offset / spacing } else { 0.0 },
-        convention,
-        omega: found_omega,
-    };
+    let time_origin = find_origin(&last_taus, user_normal.as_deref(), found_omega, spacing);
+    let offset = time_origin.offset;
     let exact = Exact::new(shape, vbar, amp)?;
     let seed_tau = |i: usize| taus[i] + offset;
     let exact_t: Vec<f64> = crate::numerics::par::map(&last, |&i| exact.tangential(seed_tau(i)));

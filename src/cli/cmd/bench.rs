@@ -130,6 +130,13 @@ fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::cli::bench:
             command: format!("valgrind --tool=callgrind fricosc batch FILE.{ext} ({} rows minus 1 row)", pts.len()),
         });
     }
+    out.extend(table_counts());
+    Ok(out)
+}
+
+/// Instructions per row of `table` (the seed's problem and oscillation in the
+/// sliding direction), against a one-point table.
+fn table_counts() -> Vec<crate::cli::bench::InstructionCount> {
     let seed = |shape: &'static str, vbar: &'static str, amp: &'static str| {
         vec!["table", "--shape", shape, "--vbar", vbar, "--amp", amp, "--format", "csv"]
     };
@@ -166,6 +173,7 @@ fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::cli::bench:
             100,
         ),
     ];
+    let mut out = vec![];
     for (workload, args, single, rows) in tables {
         if let (Some(t), Some(s)) = (callgrind(&args), callgrind(&single)) {
             out.push(crate::cli::bench::InstructionCount {
@@ -176,5 +184,5 @@ fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::cli::bench:
             });
         }
     }
-    Ok(out)
+    out
 }

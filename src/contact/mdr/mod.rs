@@ -175,6 +175,86 @@ pub(crate) enum Report {
     Bands,
 }
 
+/// No reduction (no oscillation, or no spring sticks): `mu = mu0`, with the
+/// mean normal force of one side of the foundation (`half`) doubled (z < 0
+/// mirrors z > 0).
+fn sliding(half: Option<f64>) -> MdrResult {
+    MdrResult {
+        ratio: Ratio { mu_ratio: 1.0, reduction: 0.0 },
+        error_estimate: 0.0,
+        mean_normal: half.map(|x| 2.0 * x),
+        bands: vec![],
+        nodes: 0,
+    }
+}
+
+/// The slip-first band's width in z: for amp < 1 from z1 = y(0)^(1/n) to
+/// y(u_sf)^(1/n), as z1 ((1 + dy/y(0))^(1/n) - 1) with dy = y(u_sf) - y(0) =
+/// 2 amp sin^2(u_sf/2): the plain difference of the two powers would keep only
+/// their absolute accuracy, and the band is as thin as vbar^2 near vbar = 0.
+/// (For amp > 1, in the scaled units of the integrals: y/amp from 0.)
+/// `z_sf` is `z(u_sf)`, the plain form where `z1 = 0`.
+fn slip_first_width(contact: &Foundation, n: f64, amp: f64, z1: f64, u_sf: f64, z_sf: f64) -> f64 {
+    if amp > 1.0 {
+        contact.y(u_sf).max(0.0).powf(1.0 / n)
+    } else if z1 == 0.0 {
+        z_sf
+    } else {
+        let h = (0.5 * u_sf).sin();
+        let (dy, y0) = (2.0 * amp * h * h, 1.0 - amp);
+        z1 * ((dy / y0).ln_1p() / n).exp_m1()
+    }
+}
+
+/// The ratio and its error estimate from the totals: `mu` from the tangential
+/// force's own integral where it is the small one (`small_mu`), else from the
+/// deficit; truncation (the pieces' estimates through the quotient) plus rounding.
+fn ratio_of(
+    total: &Sums,
+    slip_first: &Sums,
+    perm_deficit_magnitude: f64,
+    small_mu: bool,
+) -> crate::Result<(Ratio, f64)> {
+    let (nn, dd) = (total.value[NORMAL], total.value[DEFICIT]);
+    let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
+    let eps = f64::EPSILON;
+    Ok(if small_mu {
+        let tt = total.value[TANGENTIAL];
+        let mu = tt / nn;
+        let truncation = crate::ratio::quotient_error(nn, tt, total.error[NORMAL], total.error[TANGENTIAL]);
+        // Each spring's <F> is a sum of non-negative terms (16 eps each); the
+        // slip-first band's is <B> - D, rounding with their size.
+        let cancel = 4.0 * eps * (slip_first.value[NORMAL] + slip_first.value[DEFICIT]) / nn;
+        let rounding = eps * 2.0 * (ROUNDING_PER_TERM + (total.nodes as f64).sqrt()) * mu + cancel;
+        let estimate = truncation + rounding;
+        (Ratio::from_mu_within(mu, estimate, "power-law contact")?, estimate)
+    } else {
+        // Truncation (the pieces' estimates, propagated through dd/nn) plus
+        // rounding: of the sums, and of each spring's deficit (a few ulps of
+        // its terms, which exceed it where the stick is long).
+        let rounding = crate::ratio::rounding_estimate(reduction, total.nodes)
+            + 4.0 * eps * (total.deficit_magnitude + perm_deficit_magnitude) / nn;
+        let truncation = crate::ratio::quotient_error(nn, dd, total.error[NORMAL], total.error[DEFICIT]);
+        let estimate = truncation + rounding;
+        (Ratio::from_deficit_within(dd, nn, estimate, "power-law contact")?, estimate)
+    })
+}
+
+/// The bands of a report: extent and shares of the non-empty ones.
+fn band_report(parts: &[(BandKind, [f64; 2], Sums)], nn: f64, tangential: f64) -> Vec<Band> {
+    parts
+        .iter()
+        .filter(|p| p.1[1] > p.1[0])
+        .map(|&(kind, x_range, s)| Band {
+            kind,
+            x_range,
+            normal_share: if nn > 0.0 { s.value[NORMAL] / nn } else { 0.0 },
+            tangential_share: if tangential > 0.0 { s.value[TANGENTIAL] / tangential } else { 0.0 },
+            nodes: s.nodes,
+        })
+        .collect()
+}
+
 /// [`power_law`] on checked inputs: `n > 0`, `vbar, amp` finite and `>= 0`,
 /// `tol` the relative quadrature tolerance. All integrals are scaled by `amp`
 /// (units `kz u0` rather than `kz du`), so that `amp -> 0` stays finite.
@@ -186,19 +266,11 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     // ratio is unaffected, and the reported normal force is scaled back.
     let big = amp > 1.0;
     let unscale = |x: f64| if big { x * amp.powf(1.0 + 1.0 / n) } else { x };
-    // Both sides of the foundation (z < 0 mirrors z > 0): twice the half-line integral.
-    let unit = |half: Option<f64>| MdrResult {
-        ratio: Ratio { mu_ratio: 1.0, reduction: 0.0 },
-        error_estimate: 0.0,
-        mean_normal: half.map(|x| 2.0 * x),
-        bands: vec![],
-        nodes: 0,
-    };
     if amp == 0.0 {
-        return Ok(unit(Some(foundation_force(n, 1.0))));
+        return Ok(sliding(Some(foundation_force(n, 1.0))));
     }
     if vbar >= 1.0 && !bands {
-        return Ok(unit(total_normal(n, amp).map(unscale).filter(|x| x.is_finite())));
+        return Ok(sliding(total_normal(n, amp).map(unscale).filter(|x| x.is_finite())));
     }
     let vel = (vbar < 1.0).then(|| Velocity::new(vbar));
     let alpha = vel.map_or(0.0, |v| v.alpha);
@@ -212,7 +284,6 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     // Band edges from u: y(u) is cancellation-free where 1 - amp sqrt(1 - vbar^2) is not.
     let z_scale = if big { amp.powf(1.0 / n) } else { 1.0 };
     let z_of_u = |u: f64| z_scale * contact.y(u).max(0.0).powf(1.0 / n);
-
     let z1 = z_of_s(1.0);
     let perm = permanent_band(n, vbar, amp, z1);
     // The stick-first band is u in [u_sf, pi/2 + alpha], u_sf = max(u_alpha, u*);
@@ -232,20 +303,7 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     let plus = |a: [f64; MEANS], b: &Sums| std::array::from_fn(|k| a[k] + b.value[k]);
     // Slip first: its deficit is D(vbar) per spring, in closed form.
     let d_perm = perm.deficit_per_spring;
-    // The band's width in z: for amp < 1 from z1 = y(0)^(1/n) to y(u_sf)^(1/n),
-    // as z1 ((1 + dy/y(0))^(1/n) - 1) with dy = y(u_sf) - y(0) = 2 amp
-    // sin^2(u_sf/2): the plain difference of the two powers would keep only
-    // their absolute accuracy, and the band is as thin as vbar^2 near vbar = 0.
-    // (For amp > 1, in the scaled units of the integrals: y/amp from 0.)
-    let slip_first_width = if big {
-        contact.y(u_sf).max(0.0).powf(1.0 / n)
-    } else if z1 == 0.0 {
-        z_of_u(u_sf)
-    } else {
-        let h = (0.5 * u_sf).sin();
-        let (dy, y0) = (2.0 * amp * h * h, 1.0 - amp);
-        z1 * ((dy / y0).ln_1p() / n).exp_m1()
-    };
+    let slip_first_width = slip_first_width(&contact, n, amp, z1, u_sf, z_of_u(u_sf));
     let slip_first_deficit = if big { d_perm * slip_first_width } else { amp * d_perm * slip_first_width };
     let slip_bands = |scale: [f64; MEANS]| {
         let mut first = contact.band(u_star, u_sf, top_of(u_star), false, (inf, inf), scale);
@@ -280,8 +338,7 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
         total
     };
     let mut total = sum([&perm.sums, &slip_first, &stick_first, &slip_only]);
-    let (nn, dd) = (total.value[NORMAL], total.value[DEFICIT]);
-    let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
+    let reduction = if total.value[NORMAL] > 0.0 { total.value[DEFICIT] / total.value[NORMAL] } else { 0.0 };
     // Where mu is the small one (vbar -> 0 with amp near or above 1), it comes
     // from the tangential force's own integral: 1 - dd/nn would keep only the
     // absolute accuracy of dd, whose terms are far larger than mu.
@@ -290,49 +347,15 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
         (slip_first, slip_only) = slip_bands(scale1);
         total = sum([&perm.sums, &slip_first, &stick_first, &slip_only]);
     }
-    let eps = f64::EPSILON;
-    let (ratio, error_estimate) = if small_mu {
-        let tt = total.value[TANGENTIAL];
-        let mu = tt / nn;
-        let truncation = crate::ratio::quotient_error(nn, tt, total.error[NORMAL], total.error[TANGENTIAL]);
-        // Each spring's <F> is a sum of non-negative terms (16 eps each); the
-        // slip-first band's is <B> - D, rounding with their size.
-        let cancel = 4.0 * eps * (slip_first.value[NORMAL] + slip_first.value[DEFICIT]) / nn;
-        let rounding = eps * 2.0 * (ROUNDING_PER_TERM + (total.nodes as f64).sqrt()) * mu + cancel;
-        let estimate = truncation + rounding;
-        (Ratio::from_mu_within(mu, estimate, "power-law contact")?, estimate)
-    } else {
-        // Truncation (the pieces' estimates, propagated through dd/nn) plus
-        // rounding: of the sums, and of each spring's deficit (a few ulps of
-        // its terms, which exceed it where the stick is long).
-        let rounding = crate::ratio::rounding_estimate(reduction, total.nodes)
-            + 4.0 * eps * (total.deficit_magnitude + perm.deficit_magnitude) / nn;
-        let truncation = crate::ratio::quotient_error(nn, dd, total.error[NORMAL], total.error[DEFICIT]);
-        let estimate = truncation + rounding;
-        (Ratio::from_deficit_within(dd, nn, estimate, "power-law contact")?, estimate)
-    };
-    let tangential = nn - dd;
+    let (ratio, error_estimate) = ratio_of(&total, &slip_first, perm.deficit_magnitude, small_mu)?;
+    let nn = total.value[NORMAL];
     let parts = [
         (BandKind::PermanentContact, [0.0, z1], perm.sums),
         (if vel.is_some() { BandKind::SlipFirst } else { BandKind::SlipOnly }, [z1, z_of_u(u_sf)], slip_first),
         (BandKind::StickFirst, [z_of_u(u_sf), z_of_u(u_low)], stick_first),
         (BandKind::SlipOnly, [z_of_u(u_low), (1.0 + amp).powf(1.0 / n)], slip_only),
     ];
-    let band_list = if bands {
-        parts
-            .iter()
-            .filter(|p| p.1[1] > p.1[0])
-            .map(|&(kind, x_range, s)| Band {
-                kind,
-                x_range,
-                normal_share: if nn > 0.0 { s.value[NORMAL] / nn } else { 0.0 },
-                tangential_share: if tangential > 0.0 { s.value[TANGENTIAL] / tangential } else { 0.0 },
-                nodes: s.nodes,
-            })
-            .collect()
-    } else {
-        vec![]
-    };
+    let band_list = if bands { band_report(&parts, nn, nn - total.value[DEFICIT]) } else { vec![] };
     let mean_normal = Some(2.0 * unscale(nn)).filter(|x| x.is_finite());
     Ok(MdrResult { ratio, error_estimate, mean_normal, bands: band_list, nodes: total.nodes })
 }
