@@ -28,6 +28,10 @@ fn contacts_are_named_as_the_command_line_names_them() {
     ] {
         assert_eq!(common::shape(spec).unwrap().contact().name(), name, "{spec}");
     }
+    assert_eq!(common::shape("flat-tip:0.5").unwrap().contact().name(), "flat-tip:0.5");
+    let table = concat!(env!("CARGO_MANIFEST_DIR"), "/data/profiles/sphere.csv");
+    let tab = common::shape(&format!("profile:{table}@1e-6")).unwrap();
+    assert_eq!(tab.contact().name(), format!("profile:{table}@1e-6"));
 }
 
 /// `(1/pi) int_0^pi (1 - amp cos tau)_+ dtau = 1 + (x - atan x)/pi` with
@@ -86,6 +90,18 @@ fn power_law_mean_normal_forces_against_mpmath() {
         let p = point_json(&shape, 0.4, amp);
         let reported = p["mean_normal"].as_f64().unwrap();
         assert!((reported / want - 1.0).abs() <= 1e-13, "n {n} amp {amp}: reported {reported}");
+    }
+    // Without oscillation: the static force, 2 n/(n + 1).
+    for n in [0.5, 1.0, 2.0, 3.7] {
+        let got = common::shape(&format!("power:{n}")).unwrap().contact().mean_normal(0.0).unwrap();
+        assert!((got / (2.0 * n / (n + 1.0)) - 1.0).abs() <= 4e-16, "n {n}: {got}");
+    }
+    // The tabulated sphere at u0 = 1e-6 of its radius is the paraboloid to O(u0/R).
+    let table = concat!(env!("CARGO_MANIFEST_DIR"), "/data/profiles/sphere.csv");
+    let tab = common::shape(&format!("profile:{table}@1e-6")).unwrap();
+    for (n, amp, want) in POWER_NORMAL.iter().filter(|c| c.0 == 2.0) {
+        let got = tab.contact().mean_normal(*amp).unwrap();
+        assert!((got / want - 1.0).abs() <= 1e-5, "tabulated sphere ({n}) amp {amp}: {got} against {want}");
     }
     // The trait's generic phase average (flat-tip:0 is the sphere's paraboloid).
     let tip = common::shape("flat-tip:0").unwrap();
