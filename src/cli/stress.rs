@@ -128,9 +128,10 @@ pub fn run(points: usize, seed: u64, shapes: &[Shape]) -> StressReport {
             out
         })
         .collect();
-    // A tenth as many points under oscillation in the sliding direction (a
-    // curved one costs about 30 of the seed's).
-    let (oscillation_points, more) = run_oscillation(points.div_ceil(10), seed, shapes);
+    // A hundredth as many points under oscillation in the sliding direction:
+    // each is evaluated six times (continuity and periodicity), and a curved
+    // one costs about ten of the seed's.
+    let (oscillation_points, more) = run_oscillation(points.div_ceil(100), seed, shapes);
     let failures: Vec<String> = failures.into_iter().chain(more).collect();
     StressReport {
         points: jobs.len() * LINE,

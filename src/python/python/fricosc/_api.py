@@ -159,14 +159,14 @@ def _evaluate(
         raise TypeError("tangential_amp needs the velocity as vhat (vbar = vhat / amp is undefined at amp 0)")
     try:
         if tangential_amp is not None:
-            arrays = np.broadcast_arrays(
+            h_arr, a_arr, t_arr, p_arr = np.broadcast_arrays(
                 _floats(v, "vhat"),
                 _floats(amp, "amp"),
                 _floats(tangential_amp, "tangential_amp"),
                 _floats(0.0 if phase is None else phase, "phase"),
             )
-            shape_out = arrays[0].shape
-            out = _fricosc.evaluate_oscillation(core, *arrays, _tol(tol), reduction)
+            shape_out = h_arr.shape
+            out = _fricosc.evaluate_oscillation(core, h_arr, a_arr, t_arr, p_arr, _tol(tol), reduction)
         else:
             v_arr, a_arr = np.broadcast_arrays(_floats(v, "vhat" if is_vhat else "vbar"), _floats(amp, "amp"))
             shape_out = v_arr.shape

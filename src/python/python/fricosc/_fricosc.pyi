@@ -5,7 +5,7 @@ from typing import Any, Dict, List, Optional, Tuple, final
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "__version__"]
+__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "point_oscillation", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "__version__"]
 __version__: str
 
 class InputError(ValueError): ...
