@@ -8,6 +8,8 @@ use fricosc::DEFAULT_TOL;
 fn a_hundred_thousand_random_and_edge_points_pass_every_check() {
     let r = run(100_000, 7, &default_shapes());
     assert!(r.points >= 100_000);
+    // Oscillation in the sliding direction too: a hundredth as many.
+    assert!(r.oscillation_points >= 1_000, "{}", r.oscillation_points);
     assert_eq!(r.failure_count, 0, "{:#?}", r.failures);
 }
 

@@ -378,10 +378,16 @@ fn check_rows(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result<
             });
         }
     }
-    if let Some(st) = check.peer {
+    check_peer_work(shape, rows.len(), check.peer)
+}
+
+/// The stepping peer's resolution and total work for `rows` rows, checked
+/// against [`MAX_PEER_WORK`] before any work.
+pub(crate) fn check_peer_work(shape: &Shape, rows: usize, peer: Option<Stepping>) -> Result<()> {
+    if let Some(st) = peer {
         st.check(shape)?;
         let springs = if shape.is_flat() { 1 } else { st.springs };
-        let work = rows.len() as u128 * st.steps_per_period as u128 * springs as u128;
+        let work = rows as u128 * st.steps_per_period as u128 * springs as u128;
         if work > MAX_PEER_WORK {
             return Err(Error::TooLarge {
                 what: "stepping-peer work (rows x steps per period x springs)".into(),

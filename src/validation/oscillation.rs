@@ -5,7 +5,7 @@
 //! `[-1, 1]` (negative values are allowed here: the oscillation may push the
 //! body forward), and errors ten times the stepping peer's.
 
-use super::{finding, FindingKind, Summary, MAX_PEER_WORK};
+use super::{finding, FindingKind, Summary};
 use crate::combined::{evaluate, Oscillation};
 use crate::error::{Error, Result};
 use crate::shape::Shape;
@@ -80,7 +80,7 @@ pub struct OscillationValidation {
 /// # Errors
 /// [`Error::Parse`] naming the first bad row (inputs out of range, a value
 /// that is not finite), [`Error::TooLarge`] for a peer beyond
-/// [`MAX_PEER_WORK`], the solver's errors.
+/// [`super::MAX_PEER_WORK`], the solver's errors.
 pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<OscillationValidation> {
     let oscillations = checked(shape, rows, check)?;
     let exact = crate::numerics::par::map(&oscillations, |o| evaluate(shape, o, crate::DEFAULT_TOL));
@@ -192,17 +192,6 @@ fn checked(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<Vec
             return Err(at(format!("mu_ratio = {:?} is not finite", r[4])));
         }
     }
-    if let Some(st) = check.peer {
-        st.check(shape)?;
-        let springs = if shape.is_flat() { 1 } else { st.springs };
-        let work = rows.len() as u128 * st.steps_per_period as u128 * springs as u128;
-        if work > MAX_PEER_WORK {
-            return Err(Error::TooLarge {
-                what: "stepping-peer work (rows x steps per period x springs)".into(),
-                count: work,
-                limit: MAX_PEER_WORK,
-            });
-        }
-    }
+    super::check_peer_work(shape, rows.len(), check.peer)?;
     Ok(oscillations)
 }

@@ -190,16 +190,10 @@ pub fn oscillation_summary(v: &crate::validation::OscillationValidation, source:
 /// Every compared row of an oscillation table as CSV.
 pub fn oscillation_csv(v: &crate::validation::OscillationValidation) -> Result<String> {
     let n = crate::cli::output::num;
-    let mut header: Vec<String> =
-        ["row", "vhat", "amp", "tangential_amp", "phase", "mu_ratio", "exact", "error", "relative_error", "regime"]
-            .map(String::from)
-            .to_vec();
-    if v.peer.is_some() {
-        header.push("peer_error".into());
-    }
-    let mut records = vec![header];
-    for r in &v.rows {
-        let mut rec = vec![
+    let header =
+        ["row", "vhat", "amp", "tangential_amp", "phase", "mu_ratio", "exact", "error", "relative_error", "regime"];
+    let rows = v.rows.iter().map(|r| {
+        let cells = vec![
             r.row.to_string(),
             n(r.vhat),
             n(r.amp),
@@ -208,13 +202,27 @@ pub fn oscillation_csv(v: &crate::validation::OscillationValidation) -> Result<S
             n(r.mu_ratio),
             n(r.exact),
             n(r.error),
-            r.relative_error.map_or(String::new(), n),
+            r.relative_error.map(n).unwrap_or_default(),
             r.regime.clone(),
         ];
-        if let Some(p) = r.peer_error {
-            rec.push(n(p));
+        (cells, r.peer_error)
+    });
+    compared_csv(&header, v.peer.is_some(), rows)
+}
+
+/// CSV of compared rows: `header`, then each row's cells, with a
+/// `peer_error` column where the comparison ran the peer.
+fn compared_csv(header: &[&str], peer: bool, rows: impl Iterator<Item = (Vec<String>, Option<f64>)>) -> Result<String> {
+    let mut head: Vec<String> = header.iter().map(|h| h.to_string()).collect();
+    if peer {
+        head.push("peer_error".into());
+    }
+    let mut records = vec![head];
+    for (mut cells, p) in rows {
+        if peer {
+            cells.push(p.map(crate::cli::output::num).unwrap_or_default());
         }
-        records.push(rec);
+        records.push(cells);
     }
     csv_text(&records)
 }
@@ -238,16 +246,9 @@ pub(crate) fn csv_text(records: &[Vec<String>]) -> Result<String> {
 /// Every compared row as CSV (one header line).
 pub fn rows_csv(v: &Validation) -> Result<String> {
     let n = crate::cli::output::num;
-    let mut header: Vec<String> =
-        ["row", "vbar", "amp", "mu_ratio", "exact", "error", "relative_error", "regime", "jumping_share"]
-            .map(String::from)
-            .to_vec();
-    if v.peer.is_some() {
-        header.push("peer_error".into());
-    }
-    let mut records = vec![header];
-    for r in &v.rows {
-        let mut rec = vec![
+    let header = ["row", "vbar", "amp", "mu_ratio", "exact", "error", "relative_error", "regime", "jumping_share"];
+    let rows = v.rows.iter().map(|r| {
+        let cells = vec![
             r.row.to_string(),
             n(r.vbar),
             n(r.amp),
@@ -258,12 +259,9 @@ pub fn rows_csv(v: &Validation) -> Result<String> {
             json_name(r.regime),
             n(r.jumping_share),
         ];
-        if v.peer.is_some() {
-            rec.push(r.peer_error.map(n).unwrap_or_default());
-        }
-        records.push(rec);
-    }
-    csv_text(&records)
+        (cells, r.peer_error)
+    });
+    compared_csv(&header, v.peer.is_some(), rows)
 }
 
 /// Words wrapped to lines of at most `width` characters, the first prefixed by
