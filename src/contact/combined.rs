@@ -375,8 +375,13 @@ fn band_edges(
         let inside = |z: f64| z.clamp(a + (b - a) * 1e-12, b - (b - a) * 1e-12);
         let sigs: Vec<_> = zs.iter().map(|&z| signature(&spring(inside(z)).0)).collect();
         edges.push(a);
+        let (mut budget, found) = (BISECTION_BUDGET, edges.len());
         for k in 0..SCAN {
-            changes(spring, inside(zs[k]), &sigs[k], inside(zs[k + 1]), &sigs[k + 1], &mut edges);
+            changes(spring, (inside(zs[k]), &sigs[k]), (inside(zs[k + 1]), &sigs[k + 1]), &mut edges, &mut budget);
+        }
+        if budget == 0 {
+            // Changes everywhere are ties of rounding, not regimes: one band.
+            edges.truncate(found);
         }
     }
     edges.push(zmax);
@@ -388,16 +393,34 @@ fn band_edges(
 /// Every change of the phase sequence between `a` (sequence `sa`) and `b`,
 /// by bisection to rounding (both halves, so that a band between two samples
 /// of the same sequence at the ends is still found if the midpoint falls in it).
-fn changes(spring: &dyn Fn(f64) -> (StopSpring, Bound), a: f64, sa: &Sig, b: f64, sb: &Sig, out: &mut Vec<f64>) {
+///
+/// Where the sequence is decided by ties of rounding at every `z` (the drive
+/// and the bound moving together, `X' = -B'` for instance, where the spring
+/// follows `-B` whichever way it is named), the bisection would branch at every
+/// level: `budget` caps its springs, and a piece that spends it is taken as
+/// one band (each sequence's means agree there, so the bands need no edges);
+/// the quadrature's own convergence check covers what a missed edge would cost.
+fn changes(
+    spring: &dyn Fn(f64) -> (StopSpring, Bound),
+    (a, sa): (f64, &Sig),
+    (b, sb): (f64, &Sig),
+    out: &mut Vec<f64>,
+    budget: &mut usize,
+) {
     if sa == sb {
         return;
     }
     let m = 0.5 * (a + b);
-    if m <= a || m >= b || b - a <= 4.0 * f64::EPSILON * b.abs() {
+    if m <= a || m >= b || b - a <= 4.0 * f64::EPSILON * b.abs() || *budget == 0 {
         out.push(m);
         return;
     }
+    *budget -= 1;
     let sm = signature(&spring(m).0);
-    changes(spring, a, sa, m, &sm, out);
-    changes(spring, m, &sm, b, sb, out);
+    changes(spring, (a, sa), (m, &sm), out, budget);
+    changes(spring, (m, &sm), (b, sb), out, budget);
 }
+
+/// Springs one piece's bisections may solve: 16 changes of the phase
+/// sequence, each to rounding.
+const BISECTION_BUDGET: usize = 16 * 64;
