@@ -118,10 +118,11 @@ fn regime_map() -> Result<Figure> {
     let mut zero = vec![];
     let sign_changes = |xs: &[f64], f: &dyn Fn(f64) -> Result<f64>| -> Result<Vec<f64>> {
         let mut out = vec![];
-        for w in xs.windows(2) {
-            let (mut lo, mut hi) = (w[0], w[1]);
-            let neg = f(lo)? < 0.0;
-            if (f(hi)? < 0.0) == neg {
+        // Each grid value once (a window's end is the next one's start).
+        let negative = xs.iter().map(|&x| Ok(f(x)? < 0.0)).collect::<Result<Vec<bool>>>()?;
+        for (w, n) in xs.windows(2).zip(negative.windows(2)) {
+            let (mut lo, mut hi, neg) = (w[0], w[1], n[0]);
+            if n[1] == neg {
                 continue;
             }
             for _ in 0..40 {
