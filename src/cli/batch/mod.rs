@@ -244,11 +244,25 @@ fn json_spec<'a>(f: &[Option<&'a str>; FIELDS]) -> std::result::Result<std::borr
 
 /// The inputs of one JSON row whose shape has index `shape`.
 fn json_numbers(shapes: &Shapes, shape: u32, f: &[Option<&str>; FIELDS]) -> std::result::Result<Job, String> {
+    let replace = f[3].is_some() || f[4].is_some();
+    // The seed's row (vbar and amp only): straight to the check.
+    if let ([_, Some(v), Some(a), ..], [None, None, None]) = (f, [f[5], f[6], f[7]]) {
+        let (vbar, amp) = (number_of(v, "vbar")?, number_of(a, "amp")?);
+        return shapes.check(shape, vbar, amp, replace).map_err(|e| e.to_string());
+    }
     let get = |name: &'static str| -> std::result::Result<Option<f64>, String> {
-        let k = NAMES.iter().position(|&n| n == name).unwrap_or(0);
+        // The field's place in NAMES (a match, not a search: once per field of every row).
+        let k = match name {
+            "vbar" => 1,
+            "amp" => 2,
+            "vhat" => 5,
+            "tangential_amp" => 6,
+            _ => 7,
+        };
+        debug_assert_eq!(NAMES[k], name);
         f[k].map(|raw| number_of(raw, name)).transpose()
     };
-    inputs(shapes, shape, &get, f[3].is_some() || f[4].is_some())
+    inputs(shapes, shape, &get, replace)
 }
 
 /// An evaluated JSON array, borrowing its rows from the input text.
