@@ -148,6 +148,12 @@ for n in (1.0, 2.0, 3.0):
     for amp in (0.3, 0.8, 2.0, 5.0):
         for vbar in (0.2, 0.6, 0.95, 0.999):
             points.append((n, vbar, amp))
+# Where amp sqrt(1 - vbar^2) = 1 the stick-first band starts at the contact
+# centre's threshold u* (within an ulp): a piece there once saw its Jacobian
+# jitter with the rounding of its nodes (fricosc missed by 1e-11).
+for n in (1.0, 2.0, 3.0):
+    for vbar, amp in ((0.8, 5 / 3), (0.6, 1.25), (0.8, 5 / 3 * (1 + 1e-9)), (0.8, 5 / 3 * (1 - 1e-9))):
+        points.append((n, vbar, amp))
 
 cases = []
 worst = mpf(0)

@@ -37,7 +37,7 @@
 //! Mean tangential force `<F> = <B> - D`, and `mu_macro/mu0 = <F>/<B>`.
 
 use crate::root;
-use crate::special::{half_sq_minus_versin as c_fn, nonneg, x_minus_sin as s_fn};
+use crate::special::{half_sq_minus_versin as c_fn, nonneg, x_minus_sin as s_fn, x_minus_sin_with};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// How precisely a spring's stick phase is solved.
@@ -58,9 +58,10 @@ impl Precision {
     }
 }
 
-/// Relative root tolerance when only mean forces are wanted. Newton stops once
-/// a step is below this (relative) and returns the next iterate, whose error is
-/// then about its square (1e-12); the deficit is stationary in the stick length,
+/// Relative root tolerance when only mean forces are wanted. Halley's method
+/// stops once a step is below this (relative) and returns the next iterate,
+/// whose error is then about its cube (1e-18, at worst Newton's square, 1e-12);
+/// the deficit is stationary in the stick length,
 /// so its relative error is of the order of that squared again.
 pub(crate) const ROOT_RTOL_MEANS: f64 = 1e-6;
 /// Relative root tolerance when event times are reported.
@@ -210,7 +211,7 @@ pub(crate) struct Velocity {
     pub alpha: f64,
     /// `delta = arcsin vbar = pi/2 - alpha`, the phase of a tangent start (eq. 4).
     pub delta: f64,
-    /// Newton start for the stick length of a tangent start.
+    /// Halley start for the stick length of a tangent start.
     tangent_guess: f64,
 }
 
@@ -300,12 +301,12 @@ fn velocity_angles(vbar: f64) -> (f64, f64) {
 }
 
 /// Relative accuracy of [`tangent_length_guess`] over `vbar` in (0, 1):
-/// measured 4.4e-3 on 999 velocities (the test below), so Newton needs 2 to 3
-/// steps from it.
+/// measured 4.4e-3 on 999 velocities (the test below), so Halley's method
+/// needs 2 steps from it at `ROOT_RTOL_MEANS`, 3 at `ROOT_RTOL_EVENTS`.
 #[cfg(test)]
 const GUESS_ACCURACY: f64 = 5e-3;
 
-/// Newton start for the stick length of a tangent start, `L(alpha)`: for
+/// Halley start for the stick length of a tangent start, `L(alpha)`: for
 /// `vbar >= 0.2` a fit of `L/alpha = 3 + 0.1 alpha^2 + 0.01 alpha^4 + 0.018 alpha^6`
 /// (exact slope `3` as `vbar -> 1`; the coefficients fitted to the solved
 /// lengths on `vbar` in [0.2, 1)), below it the small-velocity expansion
@@ -324,7 +325,7 @@ fn tangent_length_guess(alpha: f64, vbar: f64) -> f64 {
 /// `H(x) = S(beta - x) - S(beta) + w x`, and the deficit.
 ///
 /// The root lies in `[alpha + beta, x_max]`, where `H` falls from its maximum.
-/// Newton starts from [`tangent_length_guess`], scaled for a start at contact
+/// Halley's method ([`root::halley`]) starts from [`tangent_length_guess`], scaled for a start at contact
 /// by the ratio `L / (alpha + beta)`, which runs from 2 (`beta -> -alpha`, where
 /// `H ~ eps x - |s| x^2/2`) to the tangent value.
 ///
@@ -353,26 +354,26 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
         lo * (2.0 + (ratio_t - 2.0) * lo / (2.0 * alpha))
     };
     if vbar < TAIL_FORM_VBAR {
-        let fdf = |e: f64| (2.0 * (0.5 * e).sin() * (q + 0.5 * e).sin() - vbar * (x_max - e), (q + e).sin() + vbar);
+        // H, H' = sin(q + e) + vbar and H'' = cos(q + e), from two sin_cos.
+        let fdd = |e: f64| {
+            let ((s1, c1), (s2, c2)) = (libm::sincos(0.5 * e), libm::sincos(q + 0.5 * e));
+            (2.0 * s1 * s2 - vbar * (x_max - e), s2 * c1 + c2 * s1 + vbar, c2 * c1 - s2 * s1)
+        };
         let e_hi = (x_max - lo).max(0.0);
-        let r = root::newton(fdf, 0.0, e_hi, (x_max - guess).clamp(0.0, e_hi), rtol);
+        let r = root::halley(fdd, 0.0, e_hi, (x_max - guess).clamp(0.0, e_hi), rtol);
         let length = x_max - r.x;
         let (d, m) = deficit_2pi(beta, w, length);
         let (deficit, magnitude) = (nonneg(d / TAU), m / TAU);
         return StickSolution { length, tail: r.x, deficit, magnitude, evaluations: r.evaluations };
     }
     let s_beta = s_fn(beta);
-    // f and f' at the same x share one sin_cos.
-    let fdf = |x: f64| {
+    // H, H' = cos(beta - x) - vbar and H'' = sin(beta - x) share one sin_cos.
+    let fdd = |x: f64| {
         let y = beta - x;
-        if y.abs() < 2.0 {
-            (s_fn(y) - s_beta + w * x, y.cos() - vbar)
-        } else {
-            let (sn, cs) = y.sin_cos();
-            ((y - sn) - s_beta + w * x, cs - vbar)
-        }
+        let (sn, cs) = libm::sincos(y);
+        (x_minus_sin_with(y, sn) - s_beta + w * x, cs - vbar, sn)
     };
-    let r = root::newton(fdf, lo, x_max, guess, rtol);
+    let r = root::halley(fdd, lo, x_max, guess, rtol);
     // The deficit is a mean of a non-negative gap; rounding must not flip it.
     let (d, m) = deficit_2pi(beta, w, r.x);
     let (deficit, magnitude) = (nonneg(d / TAU), m / TAU);
@@ -601,11 +602,11 @@ mod tests {
         }
     }
 
-    /// The fitted Newton start: its accuracy over vbar in (0, 1), measured
+    /// The fitted Halley start: its accuracy over vbar in (0, 1), measured
     /// against the solved stick length (the data of the fit), with the bound
     /// the doc comment states.
     #[test]
-    fn the_newton_start_for_a_tangent_start_is_within_its_stated_accuracy() {
+    fn the_halley_start_for_a_tangent_start_is_within_its_stated_accuracy() {
         let mut worst = 0.0f64;
         for k in 1..1000 {
             let v = k as f64 / 1000.0;
@@ -614,7 +615,7 @@ mod tests {
             let rel = (tangent_length_guess(vel.alpha, v) / st.length - 1.0).abs();
             worst = worst.max(rel);
         }
-        eprintln!("worst relative error of the Newton start: {worst:e}");
+        eprintln!("worst relative error of the Halley start: {worst:e}");
         assert!(worst < GUESS_ACCURACY, "{worst:e}");
     }
 

@@ -99,6 +99,15 @@ pub(crate) fn x_minus_sin(x: f64) -> f64 {
     }
 }
 
+/// [`x_minus_sin`] given `sin x` (used beyond the series' range only).
+pub(crate) fn x_minus_sin_with(x: f64, sin_x: f64) -> f64 {
+    if x.abs() < SERIES_LIMIT {
+        x * x * x * horner(&S_COEF, x * x)
+    } else {
+        x - sin_x
+    }
+}
+
 /// `C(x) = x^2/2 - (1 - cos x)` with full relative accuracy, even, about `x^4/24` near 0.
 /// It is the antiderivative of [`x_minus_sin`] that vanishes at 0.
 pub(crate) fn half_sq_minus_versin(x: f64) -> f64 {

@@ -30,8 +30,16 @@ const Y_PRODUCT_FORM: f64 = 0.5;
 const GRADE_RATIO: f64 = 0.25;
 /// The Jacobian's branch point is graded until this fraction of the width.
 const JACOBIAN_GRADE_RATIO: f64 = 0.25;
-/// Most pieces one band is split into (half from each end).
+/// Most pieces one band is split into towards the stick-first means'
+/// singularities (half from each end).
 const MAX_PIECES: usize = 100;
+/// Levels of the grading towards the Jacobian's branch point: a band's top can
+/// lie within an ulp of it (where `amp sqrt(1 - vbar^2) = 1`, `u_sf = u*` up to
+/// rounding: `amp = 5/3, vbar = 0.8`), and a piece that holds the branch point
+/// within a fraction of its width converges only algebraically (there 9,028
+/// nodes and an error of ~1e-12). The distance `u_sf - u*` is at least an ulp of
+/// `u_sf`, so 2^-90 of the width reaches it.
+const JACOBIAN_LEVELS: i32 = 90;
 
 /// The three means integrated over the foundation, in this order: the normal
 /// force `int amp <B> dz`, the deficit `int amp D dz` and the tangential force
@@ -126,15 +134,20 @@ impl Foundation {
         }
     }
 
-    /// [`Contact::y`] given `sin(u)`, `cos(u)` (no further trigonometry where it
-    /// does not cancel): `amp <= 1`: `1 - cos u = sin^2 u / (1 + cos u)`;
-    /// `amp > 1` away from `u*`: `1/amp - cos u`.
-    pub(super) fn y_sc(&self, u: f64, sin_u: f64, cos_u: f64) -> f64 {
+    /// [`Foundation::y`] given `sin(u)`, `cos(u)` and `u - u*` (no further
+    /// trigonometry where it does not cancel): `amp <= 1`: `1 - cos u = sin^2 u /
+    /// (1 + cos u)`; `amp > 1` away from `u*`: `1/amp - cos u`, near it the
+    /// product form with `u - u*` as given. A node is `top + d`, rounded to an
+    /// ulp of `u`; `u - u*` must come from `(top - u*) + d` instead, or a piece
+    /// within 1e-10 of `u*` sees its Jacobian `y^gamma` jitter by 1e-6 (at
+    /// `amp sqrt(1 - vbar^2) = 1` the stick-first band starts there: amp 5/3,
+    /// vbar 0.8 took 10,000 nodes and missed by 1e-13).
+    pub(super) fn y_sc(&self, u: f64, sin_u: f64, cos_u: f64, from_star: f64) -> f64 {
         if self.amp <= 1.0 {
             let one_minus_c = if cos_u > 0.0 { sin_u * sin_u / (1.0 + cos_u) } else { 1.0 - cos_u };
             (1.0 - self.amp) + self.amp * one_minus_c
         } else if self.amp * cos_u > Y_PRODUCT_FORM {
-            self.y(u)
+            2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * from_star).sin()
         } else {
             1.0 / self.amp - cos_u
         }
@@ -153,11 +166,11 @@ impl Foundation {
 
     /// The Jacobian `|dz/du| = (amp/n) y^gamma sin(u)` (for `amp > 1` in scaled
     /// units, see `power_law`), divided by the weight of `top`; `d` is the
-    /// distance of `u` from the top of the piece.
-    pub(super) fn jacobian(&self, u: f64, sin_u: f64, cos_u: f64, d: f64, top: Top) -> f64 {
+    /// distance of `u` from the top of the piece, `from_star` that of `u` from `u*`.
+    pub(super) fn jacobian(&self, u: f64, sin_u: f64, cos_u: f64, d: f64, from_star: f64, top: Top) -> f64 {
         let k = if self.amp > 1.0 { 1.0 / self.n } else { self.amp / self.n };
         match top {
-            Top::Regular => k * self.y_pow(self.y_sc(u, sin_u, cos_u)) * sin_u,
+            Top::Regular => k * self.y_pow(self.y_sc(u, sin_u, cos_u, from_star)) * sin_u,
             Top::Centre => {
                 // Top at u*: y / d = 2 sin((u + u*)/2) sin(d/2)/d.
                 let ratio = 2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * d).sin() / d;
@@ -182,21 +195,23 @@ impl Foundation {
 
     /// Order-`m` Gauss(-Jacobi) sums `(int amp <B> dz, int amp D dz)` over
     /// `u` in `[top, bottom]` with the weight of `kind` at the top. (Starting
-    /// Newton from the neighbouring node's stick length was tried: it costs 10 %
+    /// Halley from the neighbouring node's stick length was tried: it costs 10 %
     /// more instructions than the fitted guess, the nodes of a low order being
     /// far apart.)
     pub(super) fn pass(&self, top: f64, bottom: f64, kind: Top, stick: bool, m: usize) -> Pass {
         let e = self.weight_exponent(kind);
         let r = quad::rule(m, e);
         let h = 0.5 * (bottom - top);
+        // Exact where it matters (Sterbenz: a top near u*).
+        let top_from_star = top - self.u_star;
         let (mut sum, mut mag) = ([0.0; MEANS], 0.0);
         for (&x, &w) in r.nodes.iter().zip(&r.weights) {
             // x = -1 at the top.
             let d = h * (1.0 + x);
             let u = top + d;
             let beta = FRAC_PI_2 - u;
-            let (su, cu) = u.sin_cos();
-            let jac = w * self.jacobian(u, su, cu, d, kind);
+            let (su, cu) = libm::sincos(u);
+            let jac = w * self.jacobian(u, su, cu, d, top_from_star + d, kind);
             // sin(beta) = cos(u), cos(beta) = sin(u); the contact phase is u.
             let b = mean_normal_sin_cos(beta, cu, su);
             let (dd, tt, mm) = match (stick, &self.vel) {
@@ -299,13 +314,12 @@ impl Foundation {
         let width = bottom - top;
         let floor = width * 2f64.powi(-(MAX_PIECES as i32 / 2 - 2));
         let mut cuts = vec![top, bottom];
-        // The Jacobian's branch point (y = 0, a power singularity) is graded
-        // until every piece is at least half its width away from it; the milder
-        // singularities of the stick-first means' continuation only until a
-        // sixteenth of the width (Gauss copes beyond). Gradings stay within a
-        // half resp. a sixteenth of the width from their end, so they never cross
-        // from opposite ends.
-        let jac = self.singular_distance(top, kind).max(floor);
+        // The Jacobian's branch point (y = 0, a power singularity) and the
+        // singularities of the stick-first means' continuation are graded until
+        // every piece is at least its own width away from them, up to a quarter
+        // of the band's width (Gauss copes beyond), so that the gradings from
+        // opposite ends never cross.
+        let jac = self.singular_distance(top, kind).max(width * 2f64.powi(-JACOBIAN_LEVELS));
         for (start, ratio, sign, from) in [
             (jac, JACOBIAN_GRADE_RATIO, 1.0, top),
             (near.0.max(floor), GRADE_RATIO, 1.0, top),
