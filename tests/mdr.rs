@@ -265,3 +265,37 @@ fn the_estimate_bounds_the_error_at_every_tolerance_on_a_wide_grid() {
     }
     assert!(misses.is_empty(), "{} misses:\n{}", misses.len(), misses.join("\n"));
 }
+
+/// The regime boundary `amp sqrt(1 - vbar^2) = 1`, where the stick-first band
+/// starts within an ulp of the contact centre's threshold `u*`: at every
+/// tolerance the estimate bounds the distance to the default tolerance's value,
+/// and the work stays bounded. (A node's distance from `u*` once came from `u`
+/// rounded to its ulp: the Jacobian jittered, the paraboloid at amp 5/3, vbar 0.8
+/// spent 10,436 nodes and missed the 40-digit value by 1.1e-11, twice its estimate.)
+#[test]
+fn the_stick_first_band_starting_at_the_centre_threshold() {
+    use fricosc::Options;
+    let (mut misses, mut worst_nodes) = (vec![], 0);
+    for n in [0.5, 1.0, 2.0, 3.0, 8.0] {
+        for i in 1..100 {
+            let vbar = i as f64 / 100.0;
+            let a0 = 1.0 / (1.0 - vbar * vbar).sqrt();
+            let next = |k: i64| f64::from_bits((a0.to_bits() as i64 + k) as u64);
+            for amp in [a0, next(1), next(-1), a0 * (1.0 + 1e-12), a0 * (1.0 - 1e-12)] {
+                let best = power_law(n, vbar, amp, &Options::default()).unwrap();
+                worst_nodes = worst_nodes.max(best.nodes);
+                for tol in [1e-3, 1e-7, 1e-11] {
+                    let r = power_law(n, vbar, amp, &Options::default().with_tol(tol)).unwrap();
+                    let e = (r.ratio.mu_ratio - best.ratio.mu_ratio).abs();
+                    if e > r.error_estimate + best.error_estimate {
+                        misses
+                            .push(format!("n {n} vbar {vbar} amp {amp:?} tol {tol:e}: {e:e} > {:e}", r.error_estimate));
+                    }
+                }
+            }
+        }
+    }
+    assert!(misses.is_empty(), "{} misses:\n{}", misses.len(), misses.join("\n"));
+    // Observed 1,852 (n = 0.5); the boundary once cost 10,436.
+    assert!(worst_nodes <= 4000, "{worst_nodes} nodes");
+}
