@@ -70,14 +70,21 @@ fn the_flat_punchs_mean_normal_force_and_its_report() {
 
 /// Mean normal forces of power laws (both sides of the foundation, units
 /// `E* x_c u0`): `(2n/(n+1))/pi int (1 - amp cos tau)_+^(1 + 1/n) dtau` in
-/// 40-digit mpmath, rounded to 22 digits.
-const POWER_NORMAL: [(f64, f64, f64); 6] = [
+/// 40-digit mpmath, rounded to 22 digits. The huge amplitudes: a node's `y`
+/// once came from `1/amp - cos u` with `u` rounded, `2 amp` ulps of `y` (1e-10
+/// relative at `power:3.7`, amp 1e9).
+const POWER_NORMAL: [(f64, f64, f64); 11] = [
     (2.0, 0.5, 1.396_615_174_212_026_952_9),
     (2.0, 2.0, 2.436_185_533_533_771_139_3),
     (1.0, 0.5, 1.125),
     (1.0, 1.5, 2.089_915_902_860_269_021_0),
     (3.7, 0.5, 1.608_971_025_609_234_384_1),
     (3.7, 2.0, 2.376_359_348_144_179_574_9),
+    (3.7, 1e3, 3_007.010_629_954_552_862_964),
+    (3.7, 1e6, 19_415_613.975_120_026_068_71),
+    (3.7, 1e9, 125_591_759_403.407_775_321_2),
+    (0.5, 1e6, 141_471_560_526_765_807.455_8),
+    (8.0, 1e6, 3_066_522.292_663_210_238_953),
 ];
 
 #[test]

@@ -24,7 +24,12 @@ const PREDICT_MIN_ORDER: usize = 16;
 const PREDICT_SAFETY: f64 = 100.0;
 /// Above this `amp cos u`, `1/amp - cos u` (scaled `y`) loses more than one bit
 /// to cancellation, and the product form `2 sin((u + u*)/2) sin((u - u*)/2)` is used.
+/// Beyond [`Y_PLAIN_MAX_AMP`] it is used everywhere: `cos u` of a node `u`
+/// rounded to its ulp is off by up to an ulp absolute, which is `2 amp` ulps of
+/// `y >= 1/(2 amp)` (the mean normal force of `power:3.7` at amp 1e9 was 1e-10 off).
 const Y_PRODUCT_FORM: f64 = 0.5;
+/// The largest `amp` whose plain `1/amp - cos u` keeps `y` within 4 ulps.
+const Y_PLAIN_MAX_AMP: f64 = 2.0;
 /// A singularity of the stick-first means closer to a band end than this
 /// fraction of the band's width is graded.
 const GRADE_RATIO: f64 = 0.25;
@@ -136,8 +141,8 @@ impl Foundation {
 
     /// [`Foundation::y`] given `sin(u)`, `cos(u)` and `u - u*` (no further
     /// trigonometry where it does not cancel): `amp <= 1`: `1 - cos u = sin^2 u /
-    /// (1 + cos u)`; `amp > 1` away from `u*`: `1/amp - cos u`, near it the
-    /// product form with `u - u*` as given. A node is `top + d`, rounded to an
+    /// (1 + cos u)`; `1 < amp <= 2` away from `u*`: `1/amp - cos u`; near it, and
+    /// everywhere beyond (see [`Y_PLAIN_MAX_AMP`]), the product form with `u - u*` as given. A node is `top + d`, rounded to an
     /// ulp of `u`; `u - u*` must come from `(top - u*) + d` instead, or a piece
     /// within 1e-10 of `u*` sees its Jacobian `y^gamma` jitter by 1e-6 (at
     /// `amp sqrt(1 - vbar^2) = 1` the stick-first band starts there: amp 5/3,
@@ -146,7 +151,7 @@ impl Foundation {
         if self.amp <= 1.0 {
             let one_minus_c = if cos_u > 0.0 { sin_u * sin_u / (1.0 + cos_u) } else { 1.0 - cos_u };
             (1.0 - self.amp) + self.amp * one_minus_c
-        } else if self.amp * cos_u > Y_PRODUCT_FORM {
+        } else if self.amp * cos_u > Y_PRODUCT_FORM || self.amp > Y_PLAIN_MAX_AMP {
             2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * from_star).sin()
         } else {
             1.0 / self.amp - cos_u
