@@ -173,5 +173,31 @@ mod tests {
         assert!(Ratio::from_reduction_within(1.0 + 1e-12, f64::NAN, "t").is_err());
         assert_eq!(Ratio::from_reduction(1.0 + f64::EPSILON, "t").unwrap().mu_ratio, 0.0);
         assert_eq!(Ratio::from_deficit(0.0, 0.0, "t").unwrap().mu_ratio, 1.0);
+        // Each guard on its own: 0.5/inf = 0 and -0.5/-1 = 0.5 would pass the range check.
+        assert!(Ratio::from_deficit(0.5, f64::INFINITY, "t").is_err());
+        assert!(Ratio::from_deficit(-0.5, -1.0, "t").is_err());
+        assert!(Ratio::from_deficit(f64::INFINITY, f64::INFINITY, "t").is_err());
+        assert_eq!(Ratio::from_deficit(0.5, 2.0, "t").unwrap(), Ratio { mu_ratio: 0.75, reduction: 0.25 });
+    }
+
+    #[test]
+    fn scaling_the_reduction() {
+        let r = Ratio { mu_ratio: 0.6, reduction: 0.4 }.scaled(0.25);
+        assert_eq!(r, Ratio { mu_ratio: 0.9, reduction: 0.1 });
+    }
+
+    /// Negative friction (the ratchet) is in range; beyond `[-1, 1]` and
+    /// `[0, 2]` only rounding or the slack is, rounded onto the ends.
+    #[test]
+    fn signed_ratios_keep_their_sign_within_their_ranges() {
+        let ok = |m: f64, r: f64, slack: f64| Ratio::signed(m, r, slack, "t");
+        assert_eq!(ok(-0.5, 1.5, 0.0).unwrap(), Ratio { mu_ratio: -0.5, reduction: 1.5 });
+        assert_eq!(ok(-1.0 - 1e-10, 2.0 + 1e-10, 2e-10).unwrap(), Ratio { mu_ratio: -1.0, reduction: 2.0 });
+        assert_eq!(ok(1.0 + 1e-10, -1e-10, 2e-10).unwrap(), Ratio { mu_ratio: 1.0, reduction: 0.0 });
+        for (m, r) in [(-1.0 - 1e-10, 1.0), (1.0 + 1e-10, 0.0), (0.5, 2.0 + 1e-10), (0.5, -1e-10), (f64::NAN, 0.5)] {
+            assert!(ok(m, r, 0.0).is_err(), "{m} {r}");
+        }
+        assert!(ok(0.5, 0.5, f64::NAN).is_ok(), "a NaN slack is no slack");
+        assert!(ok(0.5, f64::INFINITY, 1.0).is_err());
     }
 }

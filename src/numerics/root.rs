@@ -166,6 +166,36 @@ mod tests {
         assert!((r.x / 3e193 - 1.0).abs() < 1e-14, "{}", r.x);
     }
 
+    /// Bisection, the fallback of a failed regula falsi, on its own: to the
+    /// relative width asked for, from either sign at `lo`, and an exact zero
+    /// at a midpoint returned as it is.
+    #[test]
+    fn bisection_narrows_to_the_tolerance_from_either_side() {
+        for (sign, rtol) in [(1.0, 1e-6), (-1.0, 1e-6), (1.0, 1e-15), (-1.0, 4.0 * f64::EPSILON)] {
+            let f = |x: f64| sign * (x * x - 2.0);
+            let x = bisect(&f, 1.0, f(1.0), 3.0, rtol);
+            assert!((x - std::f64::consts::SQRT_2).abs() <= 2.0 * rtol * x, "sign {sign} rtol {rtol:e}: {x}");
+        }
+        // Far from 1: the width is relative.
+        let x = bisect(&|x: f64| x - 3e-200, 1e-200, -2e-200, 4e-200, 1e-12);
+        assert!((x / 3e-200 - 1.0).abs() <= 2e-12, "{x:e}");
+        let x = bisect(&|x: f64| x - 3e200, 1e200, -2e200, 4e200, 1e-12);
+        assert!((x / 3e200 - 1.0).abs() <= 2e-12, "{x:e}");
+        // The first midpoint is the root.
+        let evals = Cell::new(0);
+        let x = bisect(
+            &|x: f64| {
+                evals.set(evals.get() + 1);
+                x - 2.0
+            },
+            1.0,
+            -1.0,
+            3.0,
+            1e-15,
+        );
+        assert_eq!((x, evals.get()), (2.0, 1));
+    }
+
     #[test]
     fn collapsed_bracket_returns_the_better_end() {
         let r = bracketed(|x| (x - 1.0).powi(2), 1.0 + 1e-9, 3.0, 1e-15);
@@ -195,6 +225,21 @@ mod halley_tests {
         let r = halley(|x| (x * x - 2.0, 2.0 * x, 2.0), 0.0, 2.0, 0.1, 1e-14);
         assert!((r.x - std::f64::consts::SQRT_2).abs() < 1e-14);
         assert!(r.evaluations > 3, "{}", r.evaluations);
+    }
+
+    /// Evaluations are reported (`Spring::root_evaluations`): a fallback adds
+    /// the Halley steps spent to the bracketed search's own.
+    #[test]
+    fn a_fallback_counts_the_halley_steps_before_it() {
+        let f = |x: f64| x * x - 2.0;
+        let plain = bracketed(f, 0.0, 2.0, 1e-14);
+        // Leaves the bracket at the first step.
+        let out = halley(|x| (f(x), 2.0 * x, 2.0), 0.0, 2.0, 0.1, 1e-14);
+        assert_eq!(out.evaluations, 1 + plain.evaluations);
+        // A derivative 1000x too large: tiny steps, all inside, never converged.
+        let slow = halley(|x| (f(x), 2000.0 * x, 0.0), 0.0, 2.0, 1.0, 1e-14);
+        assert_eq!(slow.evaluations, HALLEY_MAX_STEPS + plain.evaluations);
+        assert!((slow.x - std::f64::consts::SQRT_2).abs() < 1e-14);
     }
 
     #[test]
