@@ -253,7 +253,7 @@ def point(
 
     >>> p = point("flat", 0.3, 0.5)
     >>> p["regime"], p["mu_ratio"], [e["kind"] for e in p["events"]]
-    ('permanent_stick_slip', 0.7896790737003745, ['stick', 'slip'])
+    ('permanent_stick_slip', 0.7896790737003746, ['stick', 'slip'])
     >>> q = point("flat", vhat=0.6, amp=2.0, tangential_amp=3.0, phase=1.0)
     >>> q["spring"]["regime"], [e["kind"] for e in q["spring"]["events"]]
     ('jumping: stick, backward, stick, forward', ['contact', 'backward', 'stick', 'forward', 'loss_of_contact'])
