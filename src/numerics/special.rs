@@ -92,11 +92,8 @@ pub(crate) fn nonneg(x: f64) -> f64 {
 
 /// `S(x) = x - sin x` with full relative accuracy, odd in `x`, about `x^3/6` near 0.
 pub(crate) fn x_minus_sin(x: f64) -> f64 {
-    if x.abs() < SERIES_LIMIT {
-        x * x * x * horner(&S_COEF, x * x)
-    } else {
-        x - x.sin()
-    }
+    // `sin x` is needed only beyond the series' range.
+    x_minus_sin_with(x, if x.abs() < SERIES_LIMIT { 0.0 } else { x.sin() })
 }
 
 /// [`x_minus_sin`] given `sin x` (used beyond the series' range only).

@@ -41,8 +41,8 @@ const MAX_PIECES: usize = 100;
 /// Levels of the grading towards the Jacobian's branch point: a band's top can
 /// lie within an ulp of it (where `amp sqrt(1 - vbar^2) = 1`, `u_sf = u*` up to
 /// rounding: `amp = 5/3, vbar = 0.8`), and a piece that holds the branch point
-/// within a fraction of its width converges only algebraically (there 9,028
-/// nodes and an error of ~1e-12). The distance `u_sf - u*` is at least an ulp of
+/// within a fraction of its width converges only algebraically (there the
+/// stick-first band took 9,028 nodes; see [`Foundation::y_sc`] for the rest). The distance `u_sf - u*` is at least an ulp of
 /// `u_sf`, so 2^-90 of the width reaches it.
 const JACOBIAN_LEVELS: i32 = 90;
 
@@ -132,7 +132,7 @@ impl Foundation {
     /// `amp > 1` scaled by `1/amp`: `cos(u*) - cos(u) = 2 sin((u + u*)/2) sin((u - u*)/2)`.
     pub(super) fn y(&self, u: f64) -> f64 {
         if self.amp > 1.0 {
-            2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * (u - self.u_star)).sin()
+            self.y_product(u, u - self.u_star)
         } else {
             let h = (0.5 * u).sin();
             (1.0 - self.amp) + 2.0 * self.amp * h * h
@@ -141,21 +141,28 @@ impl Foundation {
 
     /// [`Foundation::y`] given `sin(u)`, `cos(u)` and `u - u*` (no further
     /// trigonometry where it does not cancel): `amp <= 1`: `1 - cos u = sin^2 u /
-    /// (1 + cos u)`; `1 < amp <= 2` away from `u*`: `1/amp - cos u`; near it, and
-    /// everywhere beyond (see [`Y_PLAIN_MAX_AMP`]), the product form with `u - u*` as given. A node is `top + d`, rounded to an
-    /// ulp of `u`; `u - u*` must come from `(top - u*) + d` instead, or a piece
-    /// within 1e-10 of `u*` sees its Jacobian `y^gamma` jitter by 1e-6 (at
-    /// `amp sqrt(1 - vbar^2) = 1` the stick-first band starts there: amp 5/3,
-    /// vbar 0.8 took 10,000 nodes and missed by 1e-13).
+    /// (1 + cos u)`; `1 < amp <= 2` away from `u*`: `1/amp - cos u`; near it,
+    /// and everywhere beyond (see [`Y_PLAIN_MAX_AMP`]), the product form with
+    /// `u - u*` as given. A node is `top + d`, rounded to an ulp of `u`; `u - u*`
+    /// must come from `(top - u*) + d` instead, or a piece within 1e-10 of `u*`
+    /// sees its Jacobian `y^gamma` jitter by 1e-6 (at `amp sqrt(1 - vbar^2) = 1`
+    /// the stick-first band starts there: the paraboloid at amp 5/3, vbar 0.8
+    /// took 10,436 nodes and missed its 40-digit value by 1.1e-11, twice its estimate).
     pub(super) fn y_sc(&self, u: f64, sin_u: f64, cos_u: f64, from_star: f64) -> f64 {
         if self.amp <= 1.0 {
             let one_minus_c = if cos_u > 0.0 { sin_u * sin_u / (1.0 + cos_u) } else { 1.0 - cos_u };
             (1.0 - self.amp) + self.amp * one_minus_c
         } else if self.amp * cos_u > Y_PRODUCT_FORM || self.amp > Y_PLAIN_MAX_AMP {
-            2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * from_star).sin()
+            self.y_product(u, from_star)
         } else {
             1.0 / self.amp - cos_u
         }
+    }
+
+    /// `y` of `amp > 1` (scaled by `1/amp`) as `cos u* - cos u = 2 sin((u + u*)/2)
+    /// sin((u - u*)/2)`, with `u - u*` given by the caller.
+    fn y_product(&self, u: f64, from_star: f64) -> f64 {
+        2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * from_star).sin()
     }
 
     /// `y^gamma`, with the common exponents without `powf`.
