@@ -47,6 +47,28 @@ fn table_json_and_csv_agree() {
     }
 }
 
+/// One number prints as one text in every command: `point`'s JSON (serde_json),
+/// a table's JSON and CSV, and the grid values a table caches, including the
+/// exponent forms (`1e+20`, `1e-7`) and values printed on many rows.
+#[test]
+fn a_number_prints_alike_in_point_and_table() {
+    let p = fricosc(&["point", "--vbar", "1e-7", "--amp", "1e20"], None);
+    let text = String::from_utf8(p.stdout.clone()).unwrap();
+    let v = json(&p);
+    assert!(text.contains("\"amp\": 1e+20,") && text.contains("\"vbar\": 1e-7,"), "{text}");
+    let csv = fricosc(&["table", "--vbar", "1e-7,0.5,1e-7", "--amp", "1e20,3", "--format", "csv"], None);
+    let csv = String::from_utf8(csv.stdout).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 7, "{csv}");
+    let mu = v["mu_ratio"].to_string();
+    assert_eq!(lines[1], format!("flat,1e-7,1e+20,{mu},{}", v["reduction"]));
+    assert_eq!(lines[3], lines[1], "a cached grid value prints as the first time");
+    assert!(lines[4].starts_with("flat,1e-7,3.0,") && lines[5].starts_with("flat,0.5,3.0,"), "{csv}");
+    let j = fricosc(&["table", "--vbar", "1e-7", "--amp", "1e20"], None);
+    let j = String::from_utf8(j.stdout).unwrap();
+    assert!(j.contains(&format!("{{\"vbar\":1e-7,\"amp\":1e+20,\"mu_ratio\":{mu},")), "{j}");
+}
+
 #[test]
 fn mdr_point_reports_bands_and_table_accepts_tol() {
     let v = json(&fricosc(&["point", "--shape", "parabolic", "--vbar", "0.6", "--amp", "1"], None));

@@ -2,11 +2,12 @@
 
 use std::io::{self, Write};
 
-/// Shortest text that reads back to the same `f64` (`1e-300`, `0.1`, `1.0`),
-/// by `ryu` (the formatter `serde_json` uses too, so JSON and CSV agree).
-/// Non-finite values (never produced by the solvers) print as `null`.
+/// Shortest text that reads back to the same `f64` (`1e-300`, `0.1`, `1.0`,
+/// `1e+20`), by `zmij` (the formatter `serde_json` uses too, so `point`'s JSON,
+/// tables and batches print one value alike). Non-finite values (never produced
+/// by the solvers) print as `null`.
 pub fn num(x: f64) -> String {
-    let mut b = ryu::Buffer::new();
+    let mut b = zmij::Buffer::new();
     if x.is_finite() {
         b.format_finite(x).to_string()
     } else {
@@ -38,38 +39,52 @@ where
     String::from_utf8_lossy(&w.into_inner().unwrap_or_default()).into_owned()
 }
 
+/// Append the shortest text of `x` (as [`num`] prints it) to `line`.
+fn push_num(line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64) {
+    if x.is_finite() {
+        line.extend_from_slice(fmt.format_finite(x).as_bytes());
+    } else {
+        line.extend_from_slice(b"null");
+    }
+}
+
 /// Numbers printed recently, by their bits: a table's grid values repeat row
 /// after row (the amplitude on every row of its block, each velocity once per
-/// amplitude), and `ryu` costs ~300 instructions a number, a copy ~10. A
+/// amplitude), and formatting costs ~150 instructions a number, a copy ~10. A
 /// direct-mapped cache of [`MEMO_SLOTS`] texts; a collision only reformats.
 struct Memo {
-    slots: Vec<(u64, u8, [u8; 24])>,
+    slots: Vec<(u64, u8, [u8; MEMO_TEXT])>,
 }
 
 /// Slots of [`Memo`] (a power of two).
 const MEMO_SLOTS: usize = 256;
+/// Bytes of a slot's text: the longest shortest text of an `f64` is 24 bytes
+/// (`-2.2250738585072014e-308`).
+const MEMO_TEXT: usize = 24;
 
 impl Memo {
     fn new() -> Self {
-        Memo { slots: vec![(0, 0, [0; 24]); MEMO_SLOTS] }
+        Memo { slots: vec![(0, 0, [0; MEMO_TEXT]); MEMO_SLOTS] }
     }
 
-    /// `x` as [`num`] prints it, through the cache.
-    fn write(&mut self, out: &mut impl Write, x: f64) -> io::Result<()> {
+    /// Append `x` as [`num`] prints it to `line`, through the cache.
+    fn push(&mut self, line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64) {
         if !x.is_finite() {
-            return out.write_all(b"null");
+            return line.extend_from_slice(b"null");
         }
         let bits = x.to_bits();
         let slot = &mut self.slots[(bits.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 56) as usize % MEMO_SLOTS];
         if slot.1 == 0 || slot.0 != bits {
-            let mut b = ryu::Buffer::new();
-            let text = b.format_finite(x).as_bytes();
-            // ryu's longest text is 24 bytes; anything else is written as is.
-            let Some(dst) = slot.2.get_mut(..text.len()) else { return out.write_all(text) };
+            let text = fmt.format_finite(x).as_bytes();
+            // Anything longer than a slot (never, see MEMO_TEXT) is written as is.
+            let Some(dst) = slot.2.get_mut(..text.len()) else { return line.extend_from_slice(text) };
             dst.copy_from_slice(text);
-            *slot = (bits, text.len() as u8, slot.2);
+            (slot.0, slot.1) = (bits, text.len() as u8);
         }
-        out.write_all(&slot.2[..slot.1 as usize])
+        // A copy of the whole slot (a fixed size: no call), then cut to the text.
+        let at = line.len();
+        line.extend_from_slice(&slot.2);
+        line.truncate(at + slot.1 as usize);
     }
 }
 
@@ -87,50 +102,64 @@ pub struct TableWriter<W: Write> {
     out: W,
     format: Format,
     columns: Vec<&'static str>,
+    /// The leading columns that repeat from row to row (the grid), printed through [`Memo`].
+    grid: usize,
     rows: usize,
     /// The shape as a CSV field (quoted when it holds a comma or a quote).
     csv_shape: String,
     memo: Memo,
+    fmt: zmij::Buffer,
+    /// The row being written: one write per row.
+    line: Vec<u8>,
 }
 
 impl<W: Write> TableWriter<W> {
-    /// Start a table with a `shape` label and named numeric columns.
-    pub fn new(mut out: W, format: Format, shape: &str, columns: Vec<&'static str>) -> io::Result<Self> {
+    /// Start a table with a `shape` label and named numeric columns, of which
+    /// the first `grid` are the grid's (their values repeat, and are cached).
+    pub fn new(mut out: W, format: Format, shape: &str, columns: Vec<&'static str>, grid: usize) -> io::Result<Self> {
         match format {
             Format::Json => write!(out, "{{\"shape\":{},\"rows\":[", serde_json::to_string(shape)?)?,
             Format::Csv => writeln!(out, "shape,{}", columns.join(","))?,
         }
-        Ok(TableWriter { out, format, columns, rows: 0, csv_shape: csv_field(shape), memo: Memo::new() })
+        Ok(TableWriter {
+            out,
+            format,
+            columns,
+            grid,
+            rows: 0,
+            csv_shape: csv_field(shape),
+            memo: Memo::new(),
+            fmt: zmij::Buffer::new(),
+            line: Vec::new(),
+        })
     }
 
     /// One row (values in column order); the shape is the one given to [`TableWriter::new`].
     pub fn row(&mut self, values: &[f64]) -> io::Result<()> {
-        match self.format {
-            Format::Json => {
-                if self.rows > 0 {
-                    self.out.write_all(b",")?;
-                }
-                self.out.write_all(b"\n{")?;
-                for (i, (c, v)) in self.columns.iter().zip(values).enumerate() {
-                    if i > 0 {
-                        self.out.write_all(b",")?;
-                    }
-                    self.out.write_all(b"\"")?;
-                    self.out.write_all(c.as_bytes())?;
-                    self.out.write_all(b"\":")?;
-                    self.memo.write(&mut self.out, *v)?;
-                }
-                self.out.write_all(b"}")?;
+        let line = &mut self.line;
+        line.clear();
+        let json = self.format == Format::Json;
+        if json {
+            line.extend_from_slice(if self.rows > 0 { b",\n{" } else { b"\n{" });
+        } else {
+            line.extend_from_slice(self.csv_shape.as_bytes());
+        }
+        for (i, (c, &v)) in self.columns.iter().zip(values).enumerate() {
+            if json {
+                line.extend_from_slice(if i > 0 { b",\"" } else { b"\"" });
+                line.extend_from_slice(c.as_bytes());
+                line.extend_from_slice(b"\":");
+            } else {
+                line.push(b',');
             }
-            Format::Csv => {
-                self.out.write_all(self.csv_shape.as_bytes())?;
-                for v in values {
-                    self.out.write_all(b",")?;
-                    self.memo.write(&mut self.out, *v)?;
-                }
-                self.out.write_all(b"\n")?;
+            if i < self.grid {
+                self.memo.push(line, &mut self.fmt, v);
+            } else {
+                push_num(line, &mut self.fmt, v);
             }
         }
+        line.extend_from_slice(if json { b"}" } else { b"\n" });
+        self.out.write_all(line)?;
         self.rows += 1;
         Ok(())
     }

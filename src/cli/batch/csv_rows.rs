@@ -174,7 +174,7 @@ impl Csv {
 
     /// Write the kept records with their results (in order), and forget them.
     fn write_kept(&mut self, out: &mut dyn Write, results: &[Ratio]) -> io::Result<()> {
-        let mut buf = ryu::Buffer::new();
+        let mut buf = zmij::Buffer::new();
         let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(&mut *out);
         let mut rec = csv::ByteRecord::new();
         for (row, r) in self.kept.iter().zip(results) {

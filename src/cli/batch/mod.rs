@@ -373,7 +373,7 @@ fn write_json_row<W: Write + ?Sized>(
     row: &str,
     r: &Ratio,
     replace: bool,
-    buf: &mut ryu::Buffer,
+    buf: &mut zmij::Buffer,
 ) -> io::Result<()> {
     if replace {
         let mut map: serde_json::Map<String, serde_json::Value> =
@@ -419,11 +419,11 @@ impl Batch<'_> {
                 .chunks(4096)
                 .map(|idx| {
                     let mut buf = Vec::with_capacity(idx.len() * 128);
-                    let mut ryu = ryu::Buffer::new();
+                    let mut fmt = zmij::Buffer::new();
                     for i in idx {
                         buf.extend_from_slice(if i == 0 { b"\n" } else { b",\n" });
                         let rep = self.replace.binary_search(&i).is_ok();
-                        write_json_row(&mut buf, self.rows[i], &self.results[i], rep, &mut ryu)?;
+                        write_json_row(&mut buf, self.rows[i], &self.results[i], rep, &mut fmt)?;
                     }
                     Ok(buf)
                 })
@@ -562,9 +562,9 @@ fn stream_lines(
                 .zip(results.par_chunks(4096))
                 .map(|(rows, rs)| {
                     let mut buf = Vec::with_capacity(rows.len() * 128);
-                    let mut ryu = ryu::Buffer::new();
+                    let mut fmt = zmij::Buffer::new();
                     for ((raw, job), r) in rows.iter().zip(rs) {
-                        write_json_row(&mut buf, raw, r, job.replace, &mut ryu)?;
+                        write_json_row(&mut buf, raw, r, job.replace, &mut fmt)?;
                         buf.push(b'\n');
                     }
                     Ok(buf)

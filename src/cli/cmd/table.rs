@@ -67,7 +67,7 @@ fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases
         .collect::<Result<Vec<_>>>()?;
     let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "reduction"];
     let mut w =
-        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols).map_err(io_err)?;
+        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols, 4).map_err(io_err)?;
     for r in &rows {
         w.row(r).map_err(io_err)?;
     }
@@ -123,7 +123,9 @@ pub fn run(a: TableArgs) -> Result<()> {
         })
         .collect::<Result<Vec<_>>>()?;
     drop(pairs);
-    let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, name, cols).map_err(io_err)?;
+    let grid = cols.len() - 2;
+    let mut w =
+        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, name, cols, grid).map_err(io_err)?;
     for r in &rows {
         if is_vhat { w.row(r) } else { w.row(&r[1..]) }.map_err(io_err)?;
     }
