@@ -502,7 +502,6 @@ impl Spring {
             return out;
         }
         let vel = Velocity::new(vbar);
-        let c = vel.alpha.sin();
         // |s| against c = sqrt(1 - vbar^2) by the sign of s^2 - c^2 =
         // vbar^2 - (1 - s)(1 + s) (error-free products), free of the rounding
         // of c: a spring at the switch must not land on the wrong side, where
@@ -529,7 +528,13 @@ impl Spring {
             Start::Tangent if s < 1.0 => {
                 (vel.alpha, vel.delta, 2.0 * (0.5 * (theta + vel.delta)).sin() * (0.5 * (vel.delta - theta)).sin())
             }
-            Start::Tangent => (vel.alpha, vel.delta, s - c),
+            // In permanent contact: s - c = (s - 1) + vbar^2/(1 + c), c = sqrt(1 -
+            // vbar^2) = sqrt((1 - vbar)(1 + vbar)) (no sine, and no cancellation
+            // of 1 - c as vbar -> 0).
+            Start::Tangent => {
+                let c = (vel.w * (1.0 + vbar)).sqrt();
+                (vel.alpha, vel.delta, (s - 1.0) + vbar * vbar / (1.0 + c))
+            }
             Start::Contact { theta, .. } => (FRAC_PI_2 - theta, theta, 0.0),
         };
         out.regime = regime;
@@ -694,6 +699,34 @@ mod tests {
         }
         eprintln!("worst relative error of the Halley start: {worst:e}");
         assert!(worst < GUESS_ACCURACY, "{worst:e}");
+    }
+
+    /// The force where a spring in permanent contact starts to stick, `s -
+    /// sqrt(1 - vbar^2)`, with full relative accuracy as it vanishes (`s = 1`,
+    /// `vbar -> 0`; `1 - sin(alpha)` rounded it to 0 at vbar 1e-8), against
+    /// 40-digit values (mpmath), and the stick line's force at the slip.
+    #[test]
+    #[allow(clippy::excessive_precision)] // The references keep their 20 digits.
+    fn the_stick_start_force_in_permanent_contact_keeps_its_digits() {
+        for (s, v, exact) in [
+            (1.0, 1e-8, 5.0000000000000003342e-17),
+            (1.0, 1e-3, 5.0000012500006252086e-7),
+            (1.5, 0.3, 0.54606079858305434736),
+            (1.0000000000000002, 2e-9, 2.2404460492503130834e-16),
+        ] {
+            let sp = Spring::with_events(s, v);
+            let ev = sp.events();
+            let stick = ev.iter().find(|e| e.kind == EventKind::Stick).unwrap();
+            assert!((stick.tangential / exact - 1.0).abs() < 4e-16, "s {s} vbar {v}: {:e}", stick.tangential);
+            let slip = ev.iter().find(|e| e.kind == EventKind::Slip).unwrap();
+            let length = sp.stick.unwrap().length;
+            let line = stick.tangential + v * length;
+            assert!(
+                (slip.tangential - line).abs() <= 4e-16 * line,
+                "s {s} vbar {v}: {:e} vs {line:e}",
+                slip.tangential
+            );
+        }
     }
 
     #[test]
