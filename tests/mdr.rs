@@ -299,3 +299,35 @@ fn the_stick_first_band_starting_at_the_centre_threshold() {
     // Observed 1,852 (n = 0.5); the boundary once cost 10,436.
     assert!(worst_nodes <= 4000, "{worst_nodes} nodes");
 }
+
+/// The quadrature's cost, in nodes (deterministic, unlike time): within 2 %
+/// of what was measured when the stick-first bands got their mapped segments
+/// (2026-11-24; before them the grid took 60,064 nodes at the default
+/// tolerance, `vbar = 1e-300` 2,664 and the boundary point `amp 5/3, vbar 0.8`
+/// 1,572). A change that spends more nodes for the same bound fails here;
+/// one that spends fewer updates the figures.
+#[test]
+fn the_node_counts_stay_within_two_percent_of_the_measured() {
+    let grid_nodes = |opts: &Options| -> usize {
+        (0..10)
+            .flat_map(|a| (0..100).map(move |v| (1.2 * v as f64 / 99.0, 3.0 * a as f64 / 9.0)))
+            .map(|(vbar, amp)| power_law(2.0, vbar, amp, opts).unwrap().nodes)
+            .sum()
+    };
+    let within = |got: usize, measured: usize, what: &str| {
+        assert!(got as f64 <= 1.02 * measured as f64, "{what}: {got} nodes, measured {measured}");
+    };
+    // The parabolic table of `fricosc bench`: 10 x 100 points, amp 0 to 3, vbar 0 to 1.2.
+    within(grid_nodes(&Options::default()), 48_868, "grid at the default tolerance");
+    within(grid_nodes(&Options::default().with_tol(1e-8)), 37_794, "grid at tol 1e-8");
+    for (n, vbar, amp, measured) in [
+        (2.0, 1e-300, 0.5, 816),
+        (2.0, 0.8, 5.0 / 3.0, 452),
+        (1.0, 1e-6, 0.9, 456),
+        (3.0, 0.01, 0.2, 228),
+        (2.0, 1e-3, 1.0, 284),
+    ] {
+        let got = power_law(n, vbar, amp, &Options::default()).unwrap().nodes;
+        within(got, measured, &format!("n {n} vbar {vbar:e} amp {amp}"));
+    }
+}
