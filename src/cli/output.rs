@@ -7,12 +7,10 @@ use std::io::{self, Write};
 /// tables and batches print one value alike). Non-finite values (never produced
 /// by the solvers) print as `null`.
 pub fn num(x: f64) -> String {
-    let mut b = zmij::Buffer::new();
-    if x.is_finite() {
-        b.format_finite(x).to_string()
-    } else {
-        "null".into()
-    }
+    let mut text = Vec::with_capacity(MEMO_TEXT);
+    push_num(&mut text, &mut zmij::Buffer::new(), x);
+    // zmij writes ASCII only.
+    String::from_utf8_lossy(&text).into_owned()
 }
 
 /// One CSV field as the `csv` crate writes it (quoted only when needed), so that
@@ -39,7 +37,8 @@ where
     String::from_utf8_lossy(&w.into_inner().unwrap_or_default()).into_owned()
 }
 
-/// Append the shortest text of `x` (as [`num`] prints it) to `line`.
+/// Append the shortest text of `x` to `line` (`null` where not finite): the one
+/// place a number's text is made ([`num`], [`Memo`] and table rows use it).
 fn push_num(line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64) {
     if x.is_finite() {
         line.extend_from_slice(fmt.format_finite(x).as_bytes());
@@ -69,22 +68,22 @@ impl Memo {
 
     /// Append `x` as [`num`] prints it to `line`, through the cache.
     fn push(&mut self, line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64) {
-        if !x.is_finite() {
-            return line.extend_from_slice(b"null");
-        }
         let bits = x.to_bits();
         let slot = &mut self.slots[(bits.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 56) as usize % MEMO_SLOTS];
-        if slot.1 == 0 || slot.0 != bits {
-            let text = fmt.format_finite(x).as_bytes();
-            // Anything longer than a slot (never, see MEMO_TEXT) is written as is.
-            let Some(dst) = slot.2.get_mut(..text.len()) else { return line.extend_from_slice(text) };
+        let at = line.len();
+        if slot.1 != 0 && slot.0 == bits {
+            // A copy of the whole slot (a fixed size: no call), then cut to the text.
+            line.extend_from_slice(&slot.2);
+            line.truncate(at + slot.1 as usize);
+            return;
+        }
+        push_num(line, fmt, x);
+        let text = &line[at..];
+        // Anything longer than a slot (never, see MEMO_TEXT) is not cached.
+        if let Some(dst) = slot.2.get_mut(..text.len()) {
             dst.copy_from_slice(text);
             (slot.0, slot.1) = (bits, text.len() as u8);
         }
-        // A copy of the whole slot (a fixed size: no call), then cut to the text.
-        let at = line.len();
-        line.extend_from_slice(&slot.2);
-        line.truncate(at + slot.1 as usize);
     }
 }
 

@@ -367,9 +367,11 @@ fn tangent_length_guess(alpha: f64, vbar: f64) -> (f64, f64) {
 /// `H(x) = S(beta - x) - S(beta) + w x`, and the deficit.
 ///
 /// The root lies in `[alpha + beta, x_max]`, where `H` falls from its maximum.
-/// Halley's method ([`root::halley`]) starts from [`tangent_length_guess`], scaled for a start at contact
-/// by the ratio `L / (alpha + beta)`, which runs from 2 (`beta -> -alpha`, where
-/// `H ~ eps x - |s| x^2/2`) to the tangent value.
+/// Halley's method ([`root::halley`]) starts from [`tangent_length_guess`]
+/// after a tangent start. After a start at contact it starts, in the tail form,
+/// from the root of `H`'s quadratic model (below), and otherwise from the
+/// tangent guess scaled by the ratio `L / (alpha + beta)`, which runs from 2
+/// (`beta -> -alpha`, where `H ~ eps x - |s| x^2/2`) to the tangent value.
 ///
 /// # The tail form (`vbar <` [`TAIL_FORM_VBAR`])
 /// As `vbar -> 0` the root approaches `x_max` and the slope of `H` there falls
@@ -389,12 +391,6 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
     };
     let lo = alpha + beta;
     let (lt, tail_t) = vel.tangent_guess;
-    let guess = if start == Start::Tangent {
-        lt
-    } else {
-        let ratio_t = lt / (2.0 * alpha);
-        lo * (2.0 + (ratio_t - 2.0) * lo / (2.0 * alpha))
-    };
     if vbar < TAIL_FORM_VBAR {
         // H, H' = sin(q + e) + vbar and H'' = cos(q + e), from two sin_cos.
         let fdd = |e: f64| {
@@ -408,8 +404,8 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
             // - vbar x_max = 0 (q = theta; relative error 1e-6 at vbar 1e-3, 2e-2
             // at 0.05, 0.2 at 0.49), then one Newton step on its quartic model:
             // 2.0 evaluations a stick-first spring (99 x 99 springs, s in (-1, 1),
-            // vbar < 0.5) where the length's
-            // interpolation below (up to 9x off in the tail at vbar 1e-3) took 2.9.
+            // vbar < 0.5) where the length form's interpolation (up to 9x off in
+            // the tail at vbar 1e-3) took 2.9.
             Start::Contact { sin_theta, cos_theta, .. } => {
                 let b = sin_theta + vbar;
                 let e = 2.0 * vbar * x_max / (b + (b * b + 2.0 * cos_theta * vbar * x_max).max(0.0).sqrt());
@@ -430,6 +426,12 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
         let (deficit, magnitude) = (nonneg(d / TAU), m / TAU);
         return StickSolution { length, tail: r.x, deficit, magnitude, evaluations: r.evaluations };
     }
+    let guess = if start == Start::Tangent {
+        lt
+    } else {
+        let ratio_t = lt / (2.0 * alpha);
+        lo * (2.0 + (ratio_t - 2.0) * lo / (2.0 * alpha))
+    };
     let s_beta = s_fn(beta);
     // H, H' = cos(beta - x) - vbar and H'' = sin(beta - x) share one sin_cos.
     let fdd = |x: f64| {

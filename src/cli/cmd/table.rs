@@ -66,8 +66,10 @@ fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases
         })
         .collect::<Result<Vec<_>>>()?;
     let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "reduction"];
-    let mut w =
-        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols, 4).map_err(io_err)?;
+    // The grid's columns; the last two are the results.
+    let grid = cols.len() - 2;
+    let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols, grid)
+        .map_err(io_err)?;
     for r in &rows {
         w.row(r).map_err(io_err)?;
     }
@@ -123,6 +125,7 @@ pub fn run(a: TableArgs) -> Result<()> {
         })
         .collect::<Result<Vec<_>>>()?;
     drop(pairs);
+    // The grid's columns; the last two are the results.
     let grid = cols.len() - 2;
     let mut w =
         TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, name, cols, grid).map_err(io_err)?;

@@ -42,14 +42,16 @@ const MAX_PIECES: usize = 100;
 /// lie within an ulp of it (where `amp sqrt(1 - vbar^2) = 1`, `u_sf = u*` up to
 /// rounding: `amp = 5/3, vbar = 0.8`), and a piece that holds the branch point
 /// within a fraction of its width converges only algebraically (there the
-/// stick-first band took 9,028 nodes; see [`Foundation::y_sc`] for the rest). The distance `u_sf - u*` is at least an ulp of
-/// `u_sf`, so 2^-90 of the width reaches it.
+/// stick-first band took 9,028 nodes; see [`Foundation::y_sc`] for the rest).
+/// The distance `u_sf - u*` is at least an ulp of `u_sf`, so 2^-90 of the
+/// width reaches it.
 const JACOBIAN_LEVELS: i32 = 90;
-/// Length in `t` of one segment of a mapped band ([`Foundation::pass_mapped`]):
-/// the integrand is analytic in a strip of half-width about `pi/2` about the
-/// real `t` axis, so a segment of 2.5 is a Bernstein ellipse of `rho ~ 3.4`,
-/// about 1e-17 at order 16. (2.0, 3.0 and 4.0 cost 0.1 % to 1.3 % more on the
-/// parabolic table.)
+/// Length in `t` of one segment of a mapped band ([`Foundation::pass_mapped`]).
+/// The integrand is analytic in a strip about the real `t` axis (half-width
+/// about `pi/2` where the Jacobian's complex zeros set it), so a segment's
+/// convergence does not depend on how close the singularities lie; its length
+/// was chosen by measurement: 2.0, 3.0 and 4.0 cost 0.1 %, 1.3 % and 0.9 %
+/// more instructions on the parabolic table of `fricosc bench`.
 const SEGMENT: f64 = 2.5;
 /// A side of a mapped band whose singularity lies beyond `GRADE_RATIO` of
 /// the width is mapped as if it lay this many widths away (nearly linear there).
@@ -297,7 +299,7 @@ impl Foundation {
     /// 19,628 nodes where the graded pieces took 30,824 (the boundary point
     /// `amp = 5/3, vbar = 0.8`: 252 where it took 1,516). Bands with the
     /// Jacobian's weight at the top (`amp > 1` from `u*`) stay graded: mapped
-    /// (with the Jacobi weight in `tau`) they cost 14 % more.
+    /// too (with the Jacobi weight in `tau`) the parabolic table cost 3 % more.
     fn band_mapped(&self, top: f64, bottom: f64, ends: (f64, f64), scale: [f64; MEANS]) -> Sums {
         let (d0, d1) = ends;
         let width = bottom - top;
@@ -305,14 +307,13 @@ impl Foundation {
         let t_bottom = ((width + d0) / d1).ln();
         let k = ((t_bottom - t_top) / SEGMENT).ceil().max(1.0) as usize;
         let at = |i: usize| if i == k { t_bottom } else { t_top + (t_bottom - t_top) * i as f64 / k as f64 };
-        let m0 = if self.tol >= LOOSE_TOL { 2 } else { MIN_ORDER };
         // Middle segments first (the widest in u): their sums set the scale.
         let mut order: Vec<usize> = (0..k).collect();
         order.sort_by_key(|&i| (2 * i + 1).abs_diff(k));
         let mut total = Sums::default();
         for i in order {
             let sc = std::array::from_fn(|j| scale[j] + total.value[j].abs());
-            total += self.ladder(|m| self.pass_mapped(top, bottom, ends, (at(i), at(i + 1)), m), sc, m0);
+            total += self.ladder(|m| self.pass_mapped(top, bottom, ends, (at(i), at(i + 1)), m), sc);
         }
         total
     }
@@ -321,13 +322,13 @@ impl Foundation {
     /// is within the tolerance relative to the piece plus `scale` (the band's
     /// sums so far).
     pub(super) fn piece(&self, top: f64, bottom: f64, kind: Top, stick: bool, scale: [f64; MEANS]) -> Sums {
-        let m0 = if self.tol >= LOOSE_TOL { 2 } else { MIN_ORDER };
-        self.ladder(|m| self.pass(top, bottom, kind, stick, m), scale, m0)
+        self.ladder(|m| self.pass(top, bottom, kind, stick, m), scale)
     }
 
-    /// The order ladder of [`Foundation::piece`] over any rule family `pass(m)`.
-    fn ladder(&self, pass: impl Fn(usize) -> Pass, scale: [f64; MEANS], m0: usize) -> Sums {
-        let mut m = m0;
+    /// The order ladder of [`Foundation::piece`] over any rule family `pass(m)`,
+    /// from [`MIN_ORDER`] (2 at a tolerance of [`LOOSE_TOL`] or looser).
+    fn ladder(&self, pass: impl Fn(usize) -> Pass, scale: [f64; MEANS]) -> Sums {
+        let mut m = if self.tol >= LOOSE_TOL { 2 } else { MIN_ORDER };
         let q0 = pass(m);
         let q1 = pass(2 * m);
         let mut nodes = 3 * m;
@@ -408,8 +409,8 @@ impl Foundation {
         let width = bottom - top;
         let floor = width * 2f64.powi(-(MAX_PIECES as i32 / 2 - 2));
         // Singularities closer than these are treated as at them (as graded
-        // pieces stop there): the pieces or segments beyond hold below 1e-14
-        // of the band.
+        // pieces stop there): what lies between is at most 2^-48 of the
+        // band's width (2^-90 towards the Jacobian's branch point).
         let jac = self.singular_distance(top, kind).max(width * 2f64.powi(-JACOBIAN_LEVELS));
         let (above, below) = (jac.min(near.0.max(floor)), near.1.max(floor));
         let close = |d: f64| d < GRADE_RATIO * width;
