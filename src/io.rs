@@ -16,7 +16,14 @@ pub const MAX_FILE_BYTES: u64 = 64 << 20;
 /// The reader's errors; [`io::ErrorKind::FileTooLarge`] beyond `limit`;
 /// [`io::ErrorKind::InvalidData`] for text that is not UTF-8.
 pub fn read_text(reader: impl Read, limit: u64) -> io::Result<String> {
-    let mut buf = Vec::new();
+    read_text_sized(reader, limit, 0)
+}
+
+/// [`read_text`] into a buffer made for `size` bytes (a file's length), so
+/// that reading it neither grows nor copies the buffer.
+fn read_text_sized(reader: impl Read, limit: u64, size: u64) -> io::Result<String> {
+    // One byte more than the size, so that the end is seen without growing.
+    let mut buf = Vec::with_capacity(usize::try_from(size.min(limit).saturating_add(1)).unwrap_or(0));
     let n = reader.take(limit.saturating_add(1)).read_to_end(&mut buf)?;
     if n as u64 > limit {
         return Err(io::Error::new(
@@ -24,9 +31,10 @@ pub fn read_text(reader: impl Read, limit: u64) -> io::Result<String> {
             format!("its size is more than the limit of {limit} bytes"),
         ));
     }
-    let bytes = buf.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(&buf);
-    String::from_utf8(bytes.to_vec())
-        .map_err(|e| io::Error::new(io::ErrorKind::InvalidData, format!("not UTF-8 text ({e})")))
+    if buf.starts_with(b"\xEF\xBB\xBF") {
+        buf.drain(..3);
+    }
+    String::from_utf8(buf).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, format!("not UTF-8 text ({e})")))
 }
 
 /// [`read_text`] of the file at `path`. A regular file larger than `limit` is
@@ -36,7 +44,11 @@ pub fn read_text(reader: impl Read, limit: u64) -> io::Result<String> {
 /// As [`read_text`], and the errors of opening the file.
 pub fn read_capped(path: &str, limit: u64) -> io::Result<String> {
     let file = std::fs::File::open(path)?;
+    let mut size = 0;
     if let Ok(m) = file.metadata() {
+        if m.is_file() {
+            size = m.len();
+        }
         if m.is_file() && m.len() > limit {
             return Err(io::Error::new(
                 io::ErrorKind::FileTooLarge,
@@ -44,5 +56,5 @@ pub fn read_capped(path: &str, limit: u64) -> io::Result<String> {
             ));
         }
     }
-    read_text(file, limit)
+    read_text_sized(file, limit, size)
 }

@@ -72,6 +72,19 @@ fn ws(b: &[u8], mut i: usize) -> usize {
     i
 }
 
+/// The bytes that end a string's plain run: a quote, a backslash, a control character.
+static STRING_STOP: [bool; 256] = {
+    let mut t = [false; 256];
+    let mut c = 0;
+    while c < 0x20 {
+        t[c] = true;
+        c += 1;
+    }
+    t[b'"' as usize] = true;
+    t[b'\\' as usize] = true;
+    t
+};
+
 /// The end of the string starting at `b[i] == '"'`, and whether it has escapes.
 fn string(b: &[u8], mut i: usize) -> Scan<(usize, bool)> {
     let start = i;
@@ -79,7 +92,9 @@ fn string(b: &[u8], mut i: usize) -> Scan<(usize, bool)> {
     let mut escaped = false;
     loop {
         // The plain run: everything but a quote, a backslash or a control character.
-        i += b[i..].iter().position(|&c| c == b'"' || c == b'\\' || c < 0x20).unwrap_or(b.len() - i);
+        while i < b.len() && !STRING_STOP[b[i] as usize] {
+            i += 1;
+        }
         match b.get(i) {
             None => return Err(ScanError::new(start, "EOF while parsing a string")),
             Some(b'"') => return Ok((i + 1, escaped)),
@@ -107,7 +122,19 @@ fn string(b: &[u8], mut i: usize) -> Scan<(usize, bool)> {
     }
 }
 
+/// The end of the run of ASCII digits at `i`: eight bytes at a time while all
+/// eight are digits (a number's mantissa has up to 17), then byte by byte.
 fn digits(b: &[u8], mut i: usize) -> usize {
+    while let Some(w) = b.get(i..i + 8) {
+        let x = u64::from_le_bytes([w[0], w[1], w[2], w[3], w[4], w[5], w[6], w[7]]);
+        // Every byte is 0x30..=0x39: its high nibble is 3, and adding 6 keeps it 3.
+        const HIGH: u64 = 0xF0F0_F0F0_F0F0_F0F0;
+        const THREES: u64 = 0x3030_3030_3030_3030;
+        if x & HIGH != THREES || x.wrapping_add(0x0606_0606_0606_0606) & HIGH != THREES {
+            break;
+        }
+        i += 8;
+    }
     while i < b.len() && b[i].is_ascii_digit() {
         i += 1;
     }
@@ -199,7 +226,7 @@ fn object<'b>(
     b: &'b [u8],
     i: usize,
     depth: usize,
-    field: &mut dyn FnMut(&'b [u8], bool, (usize, usize)) -> Scan<()>,
+    field: &mut impl FnMut(&'b [u8], bool, (usize, usize)) -> Scan<()>,
 ) -> Scan<usize> {
     if depth > MAX_DEPTH {
         return Err(ScanError::new(i, "recursion limit exceeded"));
@@ -257,22 +284,39 @@ pub fn row<'a, const N: usize>(text: &'a str, i: usize, names: &[&str; N]) -> Sc
         return Err(ScanError::new(i, "expected an object"));
     }
     let mut fields = [None; N];
-    // The fast path compares raw keys (a row has a handful); a key with escapes
-    // sends the row to the slow path, which compares decoded keys.
-    let mut seen: Vec<&[u8]> = Vec::with_capacity(8);
+    // The fast path compares raw keys: a wanted key is a duplicate when its
+    // field is already set; the others (a row has a handful) are kept on the
+    // stack, and only beyond `OTHERS` in a vector. A key with escapes sends the
+    // row to the slow path, which compares decoded keys.
+    const OTHERS: usize = 8;
+    let mut others: [&[u8]; OTHERS] = [&[]; OTHERS];
+    let mut more: Vec<&[u8]> = vec![];
+    let mut n_others = 0;
     let mut escapes = false;
     let end = object(b, i, 1, &mut |key, escaped, (vs, ve)| {
         if escaped {
             escapes = true;
         } else if !escapes {
-            if seen.contains(&key) {
+            // Byte by byte: keys are short, and a call to `memcmp` costs more.
+            let wanted = names.iter().position(|n| n.len() == key.len() && n.bytes().zip(key).all(|(x, &y)| x == y));
+            let duplicate = match wanted {
+                Some(p) => fields[p].replace(&text[vs..ve]).is_some(),
+                None if n_others < OTHERS => {
+                    let d = others[..n_others].contains(&key);
+                    others[n_others] = key;
+                    n_others += 1;
+                    d
+                }
+                None => {
+                    let d = others.contains(&key) || more.contains(&key);
+                    more.push(key);
+                    d
+                }
+            };
+            if duplicate {
                 let at = key.as_ptr() as usize - b.as_ptr() as usize;
                 let k = String::from_utf8_lossy(key);
                 return Err(ScanError { at, what: format!("duplicate key '{k}'"), malformed: false });
-            }
-            seen.push(key);
-            if let Some(p) = names.iter().position(|n| n.as_bytes() == key) {
-                fields[p] = Some(&text[vs..ve]);
             }
         }
         Ok(())
@@ -324,120 +368,127 @@ pub enum RowsError {
 }
 
 /// Call `each(k, row)` for every row of a JSON array of objects, in order;
-/// returns the number of rows. (Serial; `batch` scans the rows of
-/// [`row_starts`] in parallel, with the same result.)
+/// returns the number of rows. (`batch` reads the rows with [`ArrayReader`]
+/// a chunk at a time and checks each chunk in parallel, with the same result.)
 pub fn array_rows<'a, const N: usize>(
     text: &'a str,
     names: &[&str; N],
     mut each: impl FnMut(usize, Row<'a, N>) -> Result<(), String>,
 ) -> Result<usize, RowsError> {
-    let (starts, tail) = row_starts(text);
-    for (k, &i) in starts.iter().enumerate() {
-        let (r, _) = row(text, i, names).map_err(|error| RowsError::Syntax { row: Some(k), error })?;
-        each(k, r).map_err(|reason| RowsError::Row { row: k, reason })?;
-    }
-    match tail_error(text, tail) {
-        Some(e) => Err(e),
-        None => Ok(starts.len()),
-    }
-}
-
-/// What ends the top level of a JSON array after its rows' starts were found.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Tail {
-    /// The array closed properly.
-    Closed,
-    /// A malformed top level at this offset.
-    Syntax(ScanError),
-    /// An element that is not an object starts here (row index, offset).
-    NotAnObject(usize, usize),
-}
-
-/// The end of the object starting at `b[i] == '{'`, found leniently: strings
-/// and nesting are tracked, nothing else is checked. On well-formed JSON it is
-/// the object's true end; `None` at the end of the input.
-fn lenient_end(b: &[u8], mut i: usize) -> Option<usize> {
-    let mut depth = 0usize;
-    while i < b.len() {
-        match b[i] {
-            b'"' => {
-                i += 1;
-                loop {
-                    i += b.get(i..)?.iter().position(|&c| c == b'"' || c == b'\\')?;
-                    if b[i] == b'"' {
-                        break;
-                    }
-                    i += 2;
-                }
-            }
-            b'{' | b'[' => depth += 1,
-            b'}' | b']' => {
-                depth -= 1;
-                if depth == 0 {
-                    return Some(i + 1);
-                }
-            }
-            _ => {}
+    let mut reader = ArrayReader::new(text, names);
+    let mut rows = vec![];
+    loop {
+        let first = reader.rows_read();
+        let fault = reader.chunk(1 << 12, &mut rows).err();
+        for (j, r) in rows.drain(..).enumerate() {
+            each(first + j, r).map_err(|reason| RowsError::Row { row: first + j, reason })?;
         }
-        i += 1;
+        if let Some(e) = fault {
+            return Err(e);
+        }
+        if reader.is_done() {
+            return Ok(reader.rows_read());
+        }
     }
-    None
 }
 
-/// The starts of the rows of a JSON array, found in one cheap pass that does
-/// not check the rows themselves (each is then scanned with [`row`], in
-/// parallel), and how the top level ends. Errors of the top level are reported
-/// only after every row before them has been checked, as a serial scan would.
-pub fn row_starts(text: &str) -> (Vec<usize>, Tail) {
-    let b = text.as_bytes();
-    let mut starts = vec![];
-    let mut i = ws(b, 0);
-    let syntax = |at: usize, what: &str| Tail::Syntax(ScanError::new(at, what));
-    match b.get(i) {
-        None => return (starts, syntax(i, "empty input (expected a JSON array)")),
-        Some(b'[') => {}
-        Some(_) => return (starts, syntax(i, "expected a JSON array of objects")),
+/// Where an [`ArrayReader`] is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum At {
+    /// Before the array's `[`.
+    Start,
+    /// At the next element (whitespace skipped; `]` there for an empty array).
+    Element,
+    /// The array was read to its end, or refused.
+    Done,
+}
+
+/// A JSON array of objects read strictly in one serial pass, a chunk of rows
+/// at a time: each row scanned by [`row`] as it is met (no separate pass to
+/// find the rows), then the top level's `,`, `]` and trailing whitespace.
+pub struct ArrayReader<'a, 'n, const N: usize> {
+    text: &'a str,
+    names: &'n [&'n str; N],
+    at: usize,
+    state: At,
+    rows: usize,
+}
+
+impl<'a, 'n, const N: usize> ArrayReader<'a, 'n, N> {
+    /// A reader of `text`, picking the fields `names` of each row.
+    pub fn new(text: &'a str, names: &'n [&'n str; N]) -> Self {
+        ArrayReader { text, names, at: 0, state: At::Start, rows: 0 }
     }
-    i = ws(b, i + 1);
-    if b.get(i) == Some(&b']') {
-        i += 1;
-    } else {
-        loop {
-            if b.get(i) != Some(&b'{') {
-                return (starts.clone(), Tail::NotAnObject(starts.len(), i));
-            }
-            starts.push(i);
-            let Some(end) = lenient_end(b, i) else {
-                return (starts, syntax(b.len(), "EOF while parsing a list"));
-            };
-            i = ws(b, end);
+
+    /// Rows read so far.
+    pub fn rows_read(&self) -> usize {
+        self.rows
+    }
+
+    /// True once the array was read to its end (or refused).
+    pub fn is_done(&self) -> bool {
+        self.state == At::Done
+    }
+
+    /// Read up to `n` more rows into `out` (emptied first). Fewer than `n`
+    /// only at the end of the array. On an error `out` holds the rows before
+    /// it, and the reader is done.
+    pub fn chunk(&mut self, n: usize, out: &mut Vec<Row<'a, N>>) -> Result<(), RowsError> {
+        out.clear();
+        let r = self.read(n, out);
+        if r.is_err() {
+            self.state = At::Done;
+        }
+        r
+    }
+
+    fn read(&mut self, n: usize, out: &mut Vec<Row<'a, N>>) -> Result<(), RowsError> {
+        let b = self.text.as_bytes();
+        let syntax = |at: usize, what: &str| RowsError::Syntax { row: None, error: ScanError::new(at, what) };
+        if self.state == At::Start {
+            let i = ws(b, 0);
             match b.get(i) {
-                Some(b',') => i = ws(b, i + 1),
-                Some(b']') => {
-                    i += 1;
-                    break;
-                }
-                None => return (starts, syntax(i, "EOF while parsing a list")),
-                Some(_) => return (starts, syntax(i, "expected `,` or `]`")),
+                None => return Err(syntax(i, "empty input (expected a JSON array)")),
+                Some(b'[') => {}
+                Some(_) => return Err(syntax(i, "expected a JSON array of objects")),
+            }
+            self.at = ws(b, i + 1);
+            self.state = At::Element;
+            if b.get(self.at) == Some(&b']') {
+                return self.close(self.at + 1);
             }
         }
+        while self.state == At::Element && out.len() < n {
+            let i = self.at;
+            if b.get(i) != Some(&b'{') {
+                return Err(match value(b, i, 1) {
+                    Err(error) => RowsError::Syntax { row: None, error },
+                    Ok(_) => RowsError::Row { row: self.rows, reason: "expected an object".into() },
+                });
+            }
+            let (r, end) =
+                row(self.text, i, self.names).map_err(|error| RowsError::Syntax { row: Some(self.rows), error })?;
+            out.push(r);
+            self.rows += 1;
+            let j = ws(b, end);
+            match b.get(j) {
+                Some(b',') => self.at = ws(b, j + 1),
+                Some(b']') => return self.close(j + 1),
+                None => return Err(syntax(j, "EOF while parsing a list")),
+                Some(_) => return Err(syntax(j, "expected `,` or `]`")),
+            }
+        }
+        Ok(())
     }
-    let end = ws(b, i);
-    if end < b.len() {
-        return (starts, syntax(end, "trailing characters"));
-    }
-    (starts, Tail::Closed)
-}
 
-/// The error a [`Tail`] stands for, once every row before it was found good.
-pub fn tail_error(text: &str, tail: Tail) -> Option<RowsError> {
-    match tail {
-        Tail::Closed => None,
-        Tail::Syntax(error) => Some(RowsError::Syntax { row: None, error }),
-        Tail::NotAnObject(row, at) => Some(match value(text.as_bytes(), at, 1) {
-            Err(error) => RowsError::Syntax { row: None, error },
-            Ok(_) => RowsError::Row { row, reason: "expected an object".into() },
-        }),
+    /// The array closed at `end`: only whitespace may follow.
+    fn close(&mut self, end: usize) -> Result<(), RowsError> {
+        self.state = At::Done;
+        let end = ws(self.text.as_bytes(), end);
+        if end < self.text.len() {
+            return Err(RowsError::Syntax { row: None, error: ScanError::new(end, "trailing characters") });
+        }
+        Ok(())
     }
 }
 
@@ -571,6 +622,49 @@ mod tests {
             RowsError::Syntax { row, error } => (row, error.what),
             RowsError::Row { row, reason } => (Some(row), reason),
         }
+    }
+
+    /// Rows read a chunk at a time: the same rows whatever the chunk's size,
+    /// and an error after the rows before it, with the reader then done.
+    #[test]
+    fn chunks_of_any_size_read_the_same_rows() {
+        let names = ["a"];
+        type Read = (Vec<Option<String>>, Option<(Option<usize>, String)>);
+        let all = |t: &str, n: usize| -> Read {
+            let mut r = ArrayReader::new(t, &names);
+            let (mut got, mut chunk) = (vec![], vec![]);
+            loop {
+                let e = r.chunk(n, &mut chunk).err();
+                assert!(chunk.len() <= n);
+                got.extend(chunk.iter().map(|x| x.fields[0].map(String::from)));
+                if e.is_some() || r.is_done() {
+                    assert!(r.is_done());
+                    assert_eq!(r.rows_read(), got.len());
+                    return (got, e.map(what));
+                }
+                assert_eq!(chunk.len(), n, "a short chunk only at the end");
+            }
+        };
+        for t in [
+            "[]",
+            "[{\"a\":1}]",
+            "[{\"a\":1},{\"a\":2},{},{\"a\":4}] ",
+            "[{\"a\":1},{\"a\":2},{\"a\":3} x",
+            "[{\"a\":1},{\"a\"}]",
+            "[{},{},7]",
+        ] {
+            let one = all(t, 1 << 12);
+            for n in 1..5 {
+                assert_eq!(all(t, n), one, "{t} in chunks of {n}");
+            }
+        }
+        assert_eq!(
+            all("[{\"a\":1},{\"a\":2},{},{\"a\":4}]", 3).0,
+            [Some("1".into()), Some("2".into()), None, Some("4".into())]
+        );
+        assert_eq!(all("[{\"a\":1},{\"a\"}]", 1), (vec![Some("1".into())], Some((Some(1), "expected `:`".into()))));
+        assert_eq!(all("[{},{},7]", 2), (vec![None, None], Some((Some(2), "expected an object".into()))));
+        assert_eq!(all("[{}] x", 1).1, Some((None, "trailing characters".into())));
     }
 
     #[test]

@@ -8,12 +8,16 @@
 //!   amplitude) before the first byte is written. What can still fail after
 //!   that is an internal error (exit code 3), never the input.
 //! - A JSON array is read whole (at most 10^7 rows) and each row kept as its raw
-//!   text, borrowed from the input; only `shape`, `vbar`, `amp` are read, by a
-//!   one-pass scanner ([`crate::cli::scan`]). Each row is written back as given
+//!   text, borrowed from the input; only the wanted fields are picked out, by
+//!   one strict serial pass that finds and scans the rows at once
+//!   ([`crate::cli::scan::ArrayReader`], a chunk of 65,536 rows at a time, each
+//!   chunk then checked in parallel). Each row is written back as given
 //!   (other fields keep their order and bytes) with
 //!   `"mu_ratio":..,"reduction":..` spliced in before its closing brace. A row
 //!   that already has `mu_ratio` or `reduction` has them replaced (through a
-//!   parsed map, for that row only). Memory: the input text plus 56 bytes per row.
+//!   parsed map, for that row only). Memory: the input text plus 88 bytes per
+//!   row (its text's place, its inputs, its results; up to twice that while
+//!   the lists grow by doubling) and one chunk's scanned fields (9 MiB).
 //! - JSON Lines and CSV stream in constant memory, in two passes over the
 //!   input: the first checks every row, the second computes chunks of rows in
 //!   parallel and writes them in order (the caller spools stdin to a temporary
@@ -278,23 +282,24 @@ const CHUNK_BYTES: usize = 32 << 20;
 /// A row of a chunk as scanned: its fields, or why it is malformed.
 type Scanned<'a> = std::result::Result<scan::Row<'a, FIELDS>, String>;
 
-/// Check one chunk of `n` rows: each scanned in parallel (`scan_row(j)`), their
-/// shapes looked up serially (each distinct string parsed once), their numbers
-/// checked in parallel. Returns the rows' raw text and jobs, or the first row
-/// at fault (its index in the chunk, and why), as a serial reading finds it.
-fn check_chunk<'a>(
-    n: usize,
-    scan_row: &(dyn Fn(usize) -> Scanned<'a> + Sync),
+/// Check one chunk of rows, `items`, each scanned (`row(item)`: its fields, or
+/// why it is malformed): their shapes looked up serially (each distinct string
+/// parsed once), their numbers checked in parallel. Returns the rows' raw text
+/// and jobs, or the first row at fault (its index in the chunk, and why), as a
+/// serial reading finds it.
+fn check_chunk<'a, T: Sync>(
+    items: &[T],
+    row: &(dyn Fn(&T) -> std::result::Result<&scan::Row<'a, FIELDS>, &String> + Sync),
     shapes: &mut Shapes,
 ) -> std::result::Result<Vec<(&'a str, Job)>, (usize, String)> {
-    let scanned: Vec<Scanned<'a>> = (0..n).into_par_iter().map(scan_row).collect();
     // Serially: the first malformed row, and every shape up to it.
-    let mut ids = Vec::with_capacity(n);
+    let mut ids = Vec::with_capacity(items.len());
     let mut first: Option<(usize, String)> = None;
-    for (j, r) in scanned.iter().enumerate() {
-        let id = r
-            .clone()
-            .and_then(|row| json_spec(&row.fields).and_then(|spec| shapes.id(&spec).map_err(|e| e.to_string())));
+    for (j, item) in items.iter().enumerate() {
+        let id = match row(item) {
+            Ok(r) => json_spec(&r.fields).and_then(|spec| shapes.id(&spec).map_err(|e| e.to_string())),
+            Err(e) => Err(e.clone()),
+        };
         match id {
             Ok(k) => ids.push(k),
             Err(reason) => {
@@ -305,11 +310,11 @@ fn check_chunk<'a>(
     }
     // In parallel: the numbers of the rows before it.
     let shapes = &*shapes;
-    let checked: Vec<std::result::Result<(&'a str, Job), String>> = scanned[..ids.len()]
+    let checked: Vec<std::result::Result<(&'a str, Job), String>> = items[..ids.len()]
         .par_iter()
         .zip(&ids)
-        .map(|(r, &k)| match r {
-            Ok(row) => json_numbers(shapes, k, &row.fields).map(|job| (row.raw, job)),
+        .map(|(item, &k)| match row(item) {
+            Ok(r) => json_numbers(shapes, k, &r.fields).map(|job| (r.raw, job)),
             Err(e) => Err(e.clone()),
         })
         .collect();
@@ -324,42 +329,51 @@ fn check_chunk<'a>(
 
 /// Check and evaluate every row of `text` (a JSON array); `source` names the input in errors.
 ///
-/// The rows' starts are found in one cheap serial pass ([`scan::row_starts`]);
-/// then, a chunk at a time, the rows are checked by `check_chunk`, and the
-/// first row at fault (the lowest index, as a serial reading would find) reported.
+/// The rows are read serially, a chunk at a time, by one strict pass
+/// ([`scan::ArrayReader`]); each chunk's rows are then checked by
+/// `check_chunk`, and the first fault (a row's check, or else the reader's)
+/// reported, as a serial reading finds it.
 pub fn run<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Result<Batch<'a>> {
     let parse_err = |reason: String| Error::Parse { context: source.into(), reason };
-    let (starts, tail) = scan::row_starts(text);
-    if starts.len() > MAX_ROWS {
-        return Err(Error::TooLarge {
-            what: format!("rows of batch {source}"),
-            count: starts.len() as u128,
-            limit: MAX_ROWS as u128,
-        });
-    }
+    let mut reader = scan::ArrayReader::new(text, &NAMES);
     let mut shapes = Shapes::new(stepping);
-    let mut rows = Vec::with_capacity(starts.len());
-    let mut jobs = Vec::with_capacity(starts.len());
-    for (c, chunk) in starts.chunks(CHUNK).enumerate() {
-        let scan_row = |j: usize| scan::row(text, chunk[j], &NAMES).map(|(r, _)| r).map_err(|e| e.describe(text));
-        let checked = check_chunk(chunk.len(), &scan_row, &mut shapes)
-            .map_err(|(j, reason)| parse_err(format!("row {}: {reason}", c * CHUNK + j)))?;
+    let (mut rows, mut jobs) = (vec![], vec![]);
+    let mut chunk = Vec::with_capacity(CHUNK);
+    while !reader.is_done() {
+        let first = reader.rows_read();
+        let fault = reader.chunk(CHUNK, &mut chunk).err();
+        if first + chunk.len() > MAX_ROWS {
+            // Count the rest (a strict scan, nothing kept) for the message.
+            let mut count = first + chunk.len();
+            while !reader.is_done() && reader.chunk(CHUNK, &mut chunk).is_ok() {
+                count = reader.rows_read();
+            }
+            return Err(Error::TooLarge {
+                what: format!("rows of batch {source}"),
+                count: count.max(reader.rows_read()) as u128,
+                limit: MAX_ROWS as u128,
+            });
+        }
+        let checked = check_chunk(&chunk, &|r| Ok(r), &mut shapes)
+            .map_err(|(j, reason)| parse_err(format!("row {}: {reason}", first + j)))?;
         for (raw, job) in checked {
             rows.push(raw);
             jobs.push(job);
         }
-    }
-    drop(starts);
-    match scan::tail_error(text, tail) {
-        None => {}
-        Some(RowsError::Row { row, reason }) => return Err(parse_err(format!("row {row}: {reason}"))),
-        // Nothing but whitespace before it (an empty input, not an array): the reason alone.
-        Some(RowsError::Syntax { error, .. })
-            if text.as_bytes()[..error.at.min(text.len())].iter().all(u8::is_ascii_whitespace) =>
-        {
-            return Err(parse_err(error.what))
+        match fault {
+            None => {}
+            Some(RowsError::Row { row, reason }) => return Err(parse_err(format!("row {row}: {reason}"))),
+            Some(RowsError::Syntax { row: Some(row), error }) => {
+                return Err(parse_err(format!("row {row}: {}", error.describe(text))))
+            }
+            // Nothing but whitespace before it (an empty input, not an array): the reason alone.
+            Some(RowsError::Syntax { row: None, error })
+                if text.as_bytes()[..error.at.min(text.len())].iter().all(u8::is_ascii_whitespace) =>
+            {
+                return Err(parse_err(error.what))
+            }
+            Some(RowsError::Syntax { row: None, error }) => return Err(parse_err(error.describe(text))),
         }
-        Some(RowsError::Syntax { error, .. }) => return Err(parse_err(error.describe(text))),
     }
     let results = shapes.evaluate_all(&jobs, source, &|i| format!("row {i}"))?;
     let replace = jobs.iter().enumerate().filter(|(_, j)| j.replace).map(|(i, _)| i).collect();
@@ -542,8 +556,8 @@ fn stream_lines(
             if spans.is_empty() {
                 break;
             }
-            let checked = check_chunk(spans.len(), &|j| scan_line(&buf[spans[j].0..spans[j].1]), &mut shapes)
-                .map_err(|f| fault(&numbers, f))?;
+            let scanned: Vec<Scanned> = spans.par_iter().map(|&(a, b)| scan_line(&buf[a..b])).collect();
+            let checked = check_chunk(&scanned, &|r| r.as_ref(), &mut shapes).map_err(|f| fault(&numbers, f))?;
             if pass == 1 {
                 total += checked.len() as u64;
                 if total > MAX_STREAM_ROWS {
