@@ -41,8 +41,10 @@ pub(crate) fn spring(vbar: f64, amp: f64, precision: Precision) -> Spring {
     let s = spring_s(amp);
     // 1 - s = (amp - 1)/amp without cancellation (only used where |s| < 1).
     let one_minus_s = if amp > 0.0 { (amp - 1.0) / amp } else { -s };
-    // The sign of s - sqrt(1 - vbar^2) from amp and vbar themselves (exact inputs).
-    let margin = (amp > 1.0 && vbar < 1.0).then(|| one_minus_a_cos_asin(amp, vbar));
+    // s - sqrt(1 - vbar^2) = (1 - amp sqrt(1 - vbar^2))/amp from amp and vbar
+    // themselves (exact inputs): its sign decides the regime, and it is the
+    // start force of a stick from the bound.
+    let margin = (amp > 1.0 && vbar < 1.0).then(|| one_minus_a_cos_asin(amp, vbar) / amp);
     Spring::with_complement(s, one_minus_s, vbar, precision, margin)
 }
 
@@ -65,7 +67,7 @@ pub fn mean_normal(amp: f64) -> f64 {
     if amp <= 1.0 {
         1.0
     } else {
-        amp * crate::spring::mean_normal(spring_s(amp))
+        amp * crate::spring::mean_normal_of(spring_s(amp), (amp - 1.0) / amp)
     }
 }
 

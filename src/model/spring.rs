@@ -155,6 +155,8 @@ pub struct Spring {
     /// Contact phase `theta = arccos s` of a jumping spring (`|s| < 1`; 0 otherwise):
     /// contact lasts from `theta` to `2 pi - theta` (eq. 18).
     pub theta: f64,
+    /// `sin theta = sqrt((1 - s)(1 + s))` (0 where `theta` is).
+    sin_theta: f64,
     /// The stick phase, if the spring sticks.
     pub stick: Option<Stick>,
     /// Function evaluations spent by the root finder.
@@ -169,10 +171,39 @@ pub struct Spring {
 /// vanishes like `(1 + s)^(3/2)` at the edge of contact.
 #[must_use]
 pub fn mean_normal(s: f64) -> f64 {
+    mean_normal_of(s, 1.0 - s)
+}
+
+/// [`mean_normal`] with `1 - s` given unrounded by the caller (the flat punch:
+/// `(amp - 1)/amp`), as [`Spring`] computes it.
+pub(crate) fn mean_normal_of(s: f64, one_minus_s: f64) -> f64 {
+    let (theta, sin_theta) = contact_angles(s, one_minus_s);
+    mean_normal_contact(s, theta, sin_theta)
+}
+
+/// The contact phase `theta = arccos s` and `sin theta = sqrt((1 - s)(1 + s))`
+/// (no cancellation) of a spring with `|s| < 1`; `(0, 0)` otherwise.
+fn contact_angles(s: f64, one_minus_s: f64) -> (f64, f64) {
+    if s < 1.0 && s > -1.0 {
+        (contact_phase(s, one_minus_s), (one_minus_s * (1.0 + s)).max(0.0).sqrt())
+    } else {
+        (0.0, 0.0)
+    }
+}
+
+/// `<B>(s)` from the contact phase `theta = arccos s` and `sin theta`
+/// ([`contact_angles`]). For `0 <= s < 1` the half-angle `phi = pi - theta`
+/// lies in `(pi/2, pi]`, and `<B> = (s phi + sin phi)/pi = (s (pi - theta) +
+/// sin theta)/pi`, a sum of non-negative terms (no further transcendental
+/// call); for `s < 0` the cancellation-free [`mean_normal_at_angle`] of
+/// `phi = arccos(-s)`, which vanishes at the edge of contact.
+fn mean_normal_contact(s: f64, theta: f64, sin_theta: f64) -> f64 {
     if s >= 1.0 {
         s
     } else if s <= -1.0 {
         0.0
+    } else if s >= 0.0 {
+        (s * (PI - theta) + sin_theta) / PI
     } else {
         mean_normal_at_angle((-s).acos())
     }
@@ -468,10 +499,11 @@ impl Spring {
     /// As [`Spring::new`] (or [`Spring::with_events`]) for a spring given by
     /// `s` and `one_minus_s = 1 - s` computed without cancellation by the caller
     /// (the flat punch: `(amp - 1)/amp`), so that the contact phase `arccos s`
-    /// keeps its relative accuracy as `s -> 1-`. `margin`, if given, has the
-    /// sign of `s - sqrt(1 - vbar^2)`, computed by the caller from its exact
-    /// inputs (the flat punch: `1 - amp sqrt(1 - vbar^2)`), which decides a
-    /// jumping spring's start where `s` itself is too rounded to.
+    /// keeps its relative accuracy as `s -> 1-`. `margin`, if given, is
+    /// `s - sqrt(1 - vbar^2)` computed by the caller from its exact inputs (the
+    /// flat punch: `(1 - amp sqrt(1 - vbar^2))/amp`): its sign decides a jumping
+    /// spring's start where `s` itself is too rounded to, and after a start on
+    /// the bound it is the start force.
     pub(crate) fn with_complement(
         s: f64,
         one_minus_s: f64,
@@ -483,8 +515,8 @@ impl Spring {
     }
 
     fn solve(s: f64, one_minus_s: f64, vbar: f64, rtol: f64, margin: Option<f64>) -> Self {
-        let mean_normal = mean_normal(s);
-        let theta = if s < 1.0 && s > -1.0 { contact_phase(s, one_minus_s) } else { 0.0 };
+        let (theta, sin_theta) = contact_angles(s, one_minus_s);
+        let mean_normal = mean_normal_contact(s, theta, sin_theta);
         let mut out = Spring {
             s,
             vbar,
@@ -493,6 +525,7 @@ impl Spring {
             deficit: 0.0,
             deficit_magnitude: 0.0,
             theta,
+            sin_theta,
             stick: None,
             root_evaluations: 0,
         };
@@ -508,17 +541,18 @@ impl Spring {
         // vbar^2 - (1 - s)(1 + s) (error-free products), free of the rounding
         // of c: a spring at the switch must not land on the wrong side, where
         // its start force would be a negative rounding error.
-        let beyond_c = || match margin {
-            Some(m) => m >= 0.0,
-            None => crate::special::square_margin(vbar, one_minus_s, s) >= 0.0,
+        let c = (vel.w * (1.0 + vbar)).sqrt();
+        // s - c without cancellation: the caller's, or (s^2 - c^2)/(s + c).
+        let s_minus_c = || match margin {
+            Some(m) => m,
+            None => crate::special::square_margin(vbar, one_minus_s, s) / (s + c),
         };
+        let beyond_c = || s_minus_c() >= 0.0;
         let (start, regime) = if s >= 1.0 {
             (Start::Tangent, Regime::PermanentStickSlip)
         } else if s > 0.0 && beyond_c() {
             (Start::Tangent, Regime::JumpingSlipFirst)
         } else if s > 0.0 || !beyond_c() {
-            // sin theta = sqrt((1 - s)(1 + s)) without cancellation.
-            let sin_theta = (one_minus_s * (1.0 + s)).max(0.0).sqrt();
             (Start::Contact { theta, sin_theta, cos_theta: s }, Regime::JumpingStickFirst)
         } else {
             out.regime = Regime::JumpingSlip;
@@ -526,17 +560,12 @@ impl Spring {
         };
         let sol = stick_phase(start, &vel, rtol);
         let (beta, tau_s, start_force) = match start {
-            // A jumping spring: s - c = cos theta - cos delta without cancellation.
-            Start::Tangent if s < 1.0 => {
-                (vel.alpha, vel.delta, 2.0 * (0.5 * (theta + vel.delta)).sin() * (0.5 * (vel.delta - theta)).sin())
-            }
+            // A jumping spring: s - c (above), non-negative here.
+            Start::Tangent if s < 1.0 => (vel.alpha, vel.delta, nonneg(s_minus_c())),
             // In permanent contact: s - c = (s - 1) + vbar^2/(1 + c), c = sqrt(1 -
-            // vbar^2) = sqrt((1 - vbar)(1 + vbar)) (no sine, and no cancellation
-            // of 1 - c as vbar -> 0).
-            Start::Tangent => {
-                let c = (vel.w * (1.0 + vbar)).sqrt();
-                (vel.alpha, vel.delta, (s - 1.0) + vbar * vbar / (1.0 + c))
-            }
+            // vbar^2) = sqrt((1 - vbar)(1 + vbar)) (no cancellation of 1 - c as
+            // vbar -> 0).
+            Start::Tangent => (vel.alpha, vel.delta, (s - 1.0) + vbar * vbar / (1.0 + c)),
             Start::Contact { theta, .. } => (FRAC_PI_2 - theta, theta, 0.0),
         };
         out.regime = regime;
@@ -563,7 +592,7 @@ impl Spring {
         // Integral of B over the `y` before the loss of contact (or after the contact).
         let edge = |y: f64| {
             let h = (0.5 * y).sin();
-            self.s * s_fn(y) + 2.0 * self.theta.sin() * h * h
+            self.s * s_fn(y) + 2.0 * self.sin_theta * h * h
         };
         match (self.regime, self.stick) {
             (Regime::JumpingStickFirst, Some(st)) => (0.5 * self.vbar * st.length * st.length + edge(st.tail)) / TAU,
