@@ -38,7 +38,7 @@
 
 use crate::root;
 use crate::special::{half_sq_minus_versin as c_fn, nonneg, x_minus_sin as s_fn, x_minus_sin_with};
-use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, PI, TAU};
 
 /// How precisely a spring's stick phase is solved.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -249,8 +249,8 @@ pub(crate) struct Velocity {
 impl Velocity {
     /// Constants for `0 <= vbar < 1`.
     pub fn new(vbar: f64) -> Self {
-        let (w, alpha) = velocity_angles(vbar);
-        Velocity { vbar, w, alpha, delta: vbar.asin(), tangent_guess: tangent_length_guess(alpha, vbar) }
+        let (w, alpha, delta) = velocity_angles(vbar);
+        Velocity { vbar, w, alpha, delta, tangent_guess: tangent_length_guess(alpha, vbar) }
     }
 
     /// The means of the stick-first spring whose contact starts at phase
@@ -328,11 +328,22 @@ pub(crate) fn contact_phase(s: f64, one_minus_s: f64) -> f64 {
     }
 }
 
-/// Critical velocity parameters: `(w, alpha) = (1 - vbar, arccos vbar)`, with
-/// `alpha = 2 arcsin(sqrt(w/2))` accurate as `vbar -> 1`.
-fn velocity_angles(vbar: f64) -> (f64, f64) {
+/// Critical velocity parameters `(w, alpha, delta) = (1 - vbar, arccos vbar,
+/// arcsin vbar)` from one arcsine: the smaller angle directly (`delta = arcsin
+/// vbar` for `vbar <= 1/sqrt 2`, else `alpha = 2 arcsin(sqrt(w/2))`, accurate as
+/// `vbar -> 1`), the other, at least `pi/4`, as `pi/2` minus it with `pi/2` in
+/// two parts (each within an ulp of the library's `acos` and `asin`).
+fn velocity_angles(vbar: f64) -> (f64, f64, f64) {
+    // pi/2 - FRAC_PI_2.
+    const FRAC_PI_2_LO: f64 = 6.123233995736766e-17;
     let w = 1.0 - vbar;
-    (w, 2.0 * (0.5 * w).sqrt().asin())
+    if vbar <= FRAC_1_SQRT_2 {
+        let delta = vbar.asin();
+        (w, (FRAC_PI_2 - delta) + FRAC_PI_2_LO, delta)
+    } else {
+        let alpha = 2.0 * (0.5 * w).sqrt().asin();
+        (w, alpha, (FRAC_PI_2 - alpha) + FRAC_PI_2_LO)
+    }
 }
 
 /// Relative accuracy of [`tangent_length_guess`] over `vbar` in (0, 1):
@@ -677,6 +688,24 @@ impl Spring {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The two angles from one arcsine: each within an ulp of the library's
+    /// `acos` and `asin` (each within an ulp of the truth), on both sides of
+    /// the switch at `1/sqrt 2` and at the ends (where the angle taken as `pi/2` minus
+    /// the other must still keep its relative accuracy: `delta = 1e-300`).
+    #[test]
+    fn velocity_angles_match_arccos_and_arcsin() {
+        let mut vs: Vec<f64> = (0..=2000).map(|k| k as f64 / 2000.0 * 0.999_999).collect();
+        let h = FRAC_1_SQRT_2;
+        vs.extend([0.0, 1e-300, 1e-16, h, h.next_up(), h.next_down(), 1.0 - 1e-16, 1.0f64.next_down()]);
+        for v in vs {
+            let (w, alpha, delta) = velocity_angles(v);
+            assert_eq!(w, 1.0 - v);
+            let ulps = |x: f64, y: f64| (x - y).abs() / (f64::EPSILON * y.abs()).max(f64::MIN_POSITIVE);
+            assert!(ulps(alpha, v.acos()) <= 1.0, "alpha at {v}: {alpha} vs {}", v.acos());
+            assert!(ulps(delta, v.asin()) <= 1.0, "delta at {v}: {delta} vs {}", v.asin());
+        }
+    }
 
     #[test]
     fn mean_normal_matches_the_seed_eq_20_form() {
