@@ -96,6 +96,9 @@ pub enum Format {
     Csv,
 }
 
+/// Bytes of rows a [`TableWriter`] collects before it writes them.
+const BLOCK: usize = 1 << 15;
+
 /// A row-streaming table writer: JSON `{"shape":..,"rows":[{..},..]}` or CSV.
 pub struct TableWriter<W: Write> {
     out: W,
@@ -108,7 +111,8 @@ pub struct TableWriter<W: Write> {
     csv_shape: String,
     memo: Memo,
     fmt: zmij::Buffer,
-    /// The row being written: one write per row.
+    /// Rows not yet written: written in blocks of about [`BLOCK`] bytes (one
+    /// write for hundreds of rows, large enough to bypass a `BufWriter`'s copy).
     line: Vec<u8>,
 }
 
@@ -129,14 +133,13 @@ impl<W: Write> TableWriter<W> {
             csv_shape: csv_field(shape),
             memo: Memo::new(),
             fmt: zmij::Buffer::new(),
-            line: Vec::new(),
+            line: Vec::with_capacity(BLOCK + 1024),
         })
     }
 
     /// One row (values in column order); the shape is the one given to [`TableWriter::new`].
     pub fn row(&mut self, values: &[f64]) -> io::Result<()> {
         let line = &mut self.line;
-        line.clear();
         let json = self.format == Format::Json;
         if json {
             line.extend_from_slice(if self.rows > 0 { b",\n{" } else { b"\n{" });
@@ -158,13 +161,17 @@ impl<W: Write> TableWriter<W> {
             }
         }
         line.extend_from_slice(if json { b"}" } else { b"\n" });
-        self.out.write_all(line)?;
         self.rows += 1;
+        if line.len() >= BLOCK {
+            self.out.write_all(line)?;
+            line.clear();
+        }
         Ok(())
     }
 
     /// Close the document.
     pub fn finish(mut self) -> io::Result<()> {
+        self.out.write_all(&self.line)?;
         if self.format == Format::Json {
             self.out.write_all(b"\n]}\n")?;
         }
