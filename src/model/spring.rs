@@ -691,6 +691,24 @@ impl Spring {
 mod tests {
     use super::*;
 
+    /// The contact phase and its sine are 0 where the spring is always or
+    /// never in contact (the documented value, not a NaN of `arccos`), and
+    /// `<B>` takes its limits there.
+    #[test]
+    fn contact_angles_are_zero_outside_the_jumping_range() {
+        for s in [1.0, 1.5, 1e300, -1.0, -1.5, -1e300] {
+            assert_eq!(contact_angles(s, 1.0 - s), (0.0, 0.0), "s {s}");
+            let sp = Spring::new(s, 0.5);
+            assert_eq!((sp.theta, sp.sin_theta), (0.0, 0.0), "s {s}");
+            assert_eq!(sp.mean_normal, s.max(0.0), "s {s}");
+        }
+        // Inside: theta = arccos s, sin theta = sqrt(1 - s^2).
+        for s in [-0.9, -0.5, 0.0, 0.5, 0.9] {
+            let (t, st) = contact_angles(s, 1.0 - s);
+            assert!((t - s.acos()).abs() <= 4e-16 && (st - (1.0 - s * s).sqrt()).abs() <= 4e-16, "s {s}");
+        }
+    }
+
     /// The two angles from one arcsine: each within an ulp of the library's
     /// `acos` and `asin` (each within an ulp of the truth), on both sides of
     /// the switch at `1/sqrt 2` and at the ends (where the angle taken as `pi/2` minus
