@@ -721,6 +721,42 @@ mod tests {
         }
     }
 
+    /// `<B>` near the edge of contact (`s -> -1`, where it vanishes like
+    /// `(1 + s)^(3/2)` and `s (pi - theta) + sin theta` would cancel) keeps its
+    /// relative accuracy, against 25-digit values (mpmath, the inputs exact).
+    #[test]
+    #[allow(clippy::excessive_precision)]
+    fn mean_normal_keeps_its_digits_at_the_edge_of_contact() {
+        for (s, exact) in [
+            (-0.999999999999, 3.000954805013406693445679e-19),
+            (-0.999999, 3.001054537372543020840391e-10),
+            (-0.999, 0.00000949064183020258180831046),
+            (-0.9, 0.009538398844672073013777679),
+        ] {
+            let b = mean_normal(s);
+            assert!((b / exact - 1.0).abs() < 1e-14, "s {s}: {b:e} vs {exact:e}");
+            assert_eq!(Spring::new(s, 0.5).mean_normal, b, "s {s}");
+        }
+    }
+
+    /// At `vbar >= 1` nothing sticks: a spring always in contact slips
+    /// throughout (`s >= 1`), one that loses contact jumps and slips.
+    #[test]
+    fn at_vbar_one_and_above_the_regimes_are_the_slipping_ones() {
+        for v in [1.0, 1.5, 1e10] {
+            for (s, regime) in [
+                (1.0, Regime::PermanentSlip),
+                (3.0, Regime::PermanentSlip),
+                (0.5, Regime::JumpingSlip),
+                (-0.5, Regime::JumpingSlip),
+            ] {
+                let sp = Spring::new(s, v);
+                assert_eq!(sp.regime, regime, "s {s} vbar {v}");
+                assert_eq!((sp.deficit, sp.stick), (0.0, None), "s {s} vbar {v}");
+            }
+        }
+    }
+
     /// The two angles from one arcsine: each within an ulp of the library's
     /// `acos` and `asin` (each within an ulp of the truth), on both sides of
     /// the switch at `1/sqrt 2` and at the ends (where the angle taken as `pi/2` minus
