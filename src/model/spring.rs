@@ -757,6 +757,31 @@ mod tests {
         }
     }
 
+    /// A jumping spring that slips first starts to stick on the bound with the
+    /// force `s - c` (`c = sqrt(1 - vbar^2)`), from `(s^2 - c^2)/(s + c)` with
+    /// error-free products where no caller's margin is given: full relative
+    /// accuracy against 25-digit values, down to `6e-17` at the switch. And the
+    /// stick's documented `tau_s = pi/2 - beta` in every regime that sticks.
+    #[test]
+    #[allow(clippy::excessive_precision)]
+    fn a_slip_first_stick_starts_at_s_minus_c_and_at_pi_2_minus_beta() {
+        for (s, v, exact) in [
+            (0.9, 0.5, 0.03397459621556137544073732),
+            (0.5, 0.9, 0.06411010564593269062277519),
+            (0.8660254037844387, 0.5, 6.084688135348114077840356e-17),
+            (0.99, 0.2, 0.01020410288672875410553543),
+        ] {
+            let sp = Spring::with_complement(s, 1.0 - s, v, Precision::Events, None);
+            assert_eq!(sp.regime, Regime::JumpingSlipFirst, "s {s} vbar {v}");
+            let f0 = sp.stick.unwrap().start_force;
+            assert!((f0 / exact - 1.0).abs() < 1e-15, "s {s} vbar {v}: {f0:e} vs {exact:e}");
+        }
+        for (s, v) in [(0.9, 0.5), (0.3, 0.5), (-0.3, 0.2), (2.0, 0.5), (1.0, 1e-9)] {
+            let st = Spring::new(s, v).stick.unwrap();
+            assert!((st.start - (FRAC_PI_2 - st.beta)).abs() <= 4e-16, "s {s} vbar {v}: {st:?}");
+        }
+    }
+
     /// The two angles from one arcsine: each within an ulp of the library's
     /// `acos` and `asin` (each within an ulp of the truth), on both sides of
     /// the switch at `1/sqrt 2` and at the ends (where the angle taken as `pi/2` minus
