@@ -166,7 +166,8 @@ pub struct Spring {
 /// Period mean of the Coulomb bound, `<B>(s) = <(s - cos tau)_+>`.
 ///
 /// For `|s| < 1` the contact lasts `2 phi` per period with `phi = arccos(-s)`,
-/// and `<B> = (s phi + sin phi)/pi = (sin phi - phi cos phi)/pi`, written as
+/// and `<B> = (s phi + sin phi)/pi = (sin phi - phi cos phi)/pi`: for `s >= 0`
+/// a sum of non-negative terms, for `s < 0` written as
 /// `(2 phi sin^2(phi/2) - S(phi))/pi` to keep full relative accuracy where it
 /// vanishes like `(1 + s)^(3/2)` at the edge of contact.
 #[must_use]
@@ -560,13 +561,12 @@ impl Spring {
             return out;
         }
         let vel = Velocity::new(vbar);
+        let c = (vel.w * (1.0 + vbar)).sqrt();
         // |s| against c = sqrt(1 - vbar^2) by the sign of s^2 - c^2 =
         // vbar^2 - (1 - s)(1 + s) (error-free products), free of the rounding
-        // of c: a spring at the switch must not land on the wrong side, where
-        // its start force would be a negative rounding error.
-        let c = (vel.w * (1.0 + vbar)).sqrt();
-        // s^2 - c^2 = vbar^2 - (1 - s)(1 + s) with error-free products: its sign
-        // says whether |s| >= c (for s > 0 the caller's margin s - c says it).
+        // of c (for s > 0 the caller's margin s - c, if given, says it): a
+        // spring at the switch must not land on the wrong side, where its start
+        // force would be a negative rounding error.
         let square = || crate::special::square_margin(vbar, one_minus_s, s);
         let beyond_c = || match margin {
             Some(m) => m >= 0.0,
