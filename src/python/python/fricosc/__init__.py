@@ -7,7 +7,7 @@ exact solver of the ``fricosc`` command line (the same Rust library, in process)
 
 >>> import fricosc
 >>> float(fricosc.mu_ratio("flat", 0.2, 0.5))
-0.7145191049466343
+0.7145191049466342
 
 Arrays broadcast like numpy's own functions; the result has the broadcast
 shape (a float for scalar inputs). Shapes are strings exactly as on the
