@@ -782,6 +782,26 @@ mod tests {
         }
     }
 
+    /// The mean tangential force where no stick-specific form applies: in
+    /// permanent contact `<B> - D` equals the stick's start force plus
+    /// [`Spring::tangent_excess`] (a sum of its own terms), and a spring that
+    /// never sticks has `<F> = <B>`.
+    #[test]
+    fn mean_tangential_in_permanent_contact_and_without_a_stick() {
+        for (s, v) in [(1.0, 0.3), (1.5, 0.5), (3.0, 0.9), (1.0, 1e-3)] {
+            let sp = Spring::with_events(s, v);
+            assert_eq!(sp.regime, Regime::PermanentStickSlip);
+            let by_parts = sp.stick.unwrap().start_force + sp.tangent_excess().unwrap();
+            let f = sp.mean_tangential();
+            assert!((f - by_parts).abs() <= 1e-15 * s, "s {s} vbar {v}: {f} vs {by_parts}");
+        }
+        for (s, v) in [(2.0, 1.0), (0.5, 1.5), (-0.99, 0.3), (0.9, 2.0)] {
+            let sp = Spring::new(s, v);
+            assert!(sp.stick.is_none(), "s {s} vbar {v}");
+            assert_eq!(sp.mean_tangential(), sp.mean_normal, "s {s} vbar {v}");
+        }
+    }
+
     /// The two angles from one arcsine: each within an ulp of the library's
     /// `acos` and `asin` (each within an ulp of the truth), on both sides of
     /// the switch at `1/sqrt 2` and at the ends (where the angle taken as `pi/2` minus
