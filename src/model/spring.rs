@@ -561,37 +561,38 @@ impl Spring {
             return out;
         }
         let vel = Velocity::new(vbar);
-        let c = (vel.w * (1.0 + vbar)).sqrt();
-        // |s| against c = sqrt(1 - vbar^2) by the sign of s^2 - c^2 =
-        // vbar^2 - (1 - s)(1 + s) (error-free products), free of the rounding
-        // of c (for s > 0 the caller's margin s - c, if given, says it): a
-        // spring at the switch must not land on the wrong side, where its start
-        // force would be a negative rounding error.
+        // c = sqrt(1 - vbar^2) = sqrt((1 - vbar)(1 + vbar)).
+        let c = || (vel.w * (1.0 + vbar)).sqrt();
+        // Which side of c the spring is on decides its start, free of the
+        // rounding of c (a spring at the switch must not land on the wrong side,
+        // where its start force would be a negative rounding error): for
+        // 0 < s < 1 the sign of s - c itself (the caller's margin, else
+        // (s^2 - c^2)/(s + c)), which is then the start force on the bound; for
+        // s <= 0 the sign of s^2 - c^2 = vbar^2 - (1 - s)(1 + s) (error-free
+        // products), i.e. whether |s| >= c.
         let square = || crate::special::square_margin(vbar, one_minus_s, s);
-        let beyond_c = || match margin {
-            Some(m) => m >= 0.0,
-            None => square() >= 0.0,
-        };
-        let (start, regime) = if s >= 1.0 {
-            (Start::Tangent, Regime::PermanentStickSlip)
-        } else if s > 0.0 && beyond_c() {
-            (Start::Tangent, Regime::JumpingSlipFirst)
-        } else if s > 0.0 || !beyond_c() {
-            (Start::Contact { theta, sin_theta, cos_theta: s }, Regime::JumpingStickFirst)
+        let contact = Start::Contact { theta, sin_theta, cos_theta: s };
+        let (start, regime, start_force) = if s >= 1.0 {
+            // In permanent contact: s - c = (s - 1) + vbar^2/(1 + c) (no
+            // cancellation of 1 - c as vbar -> 0).
+            (Start::Tangent, Regime::PermanentStickSlip, (s - 1.0) + vbar * vbar / (1.0 + c()))
+        } else if s > 0.0 {
+            let s_minus_c = margin.unwrap_or_else(|| square() / (s + c()));
+            if s_minus_c >= 0.0 {
+                (Start::Tangent, Regime::JumpingSlipFirst, nonneg(s_minus_c))
+            } else {
+                (contact, Regime::JumpingStickFirst, 0.0)
+            }
+        } else if square() < 0.0 {
+            (contact, Regime::JumpingStickFirst, 0.0)
         } else {
             out.regime = Regime::JumpingSlip;
             return out;
         };
         let sol = stick_phase(start, &vel, rtol);
-        let (beta, tau_s, start_force) = match start {
-            // A jumping spring (0 < s < 1, s >= c): s - c, the caller's or
-            // (s^2 - c^2)/(s + c), both without cancellation.
-            Start::Tangent if s < 1.0 => (vel.alpha, vel.delta, nonneg(margin.unwrap_or_else(|| square() / (s + c)))),
-            // In permanent contact: s - c = (s - 1) + vbar^2/(1 + c), c = sqrt(1 -
-            // vbar^2) = sqrt((1 - vbar)(1 + vbar)) (no cancellation of 1 - c as
-            // vbar -> 0).
-            Start::Tangent => (vel.alpha, vel.delta, (s - 1.0) + vbar * vbar / (1.0 + c)),
-            Start::Contact { theta, .. } => (FRAC_PI_2 - theta, theta, 0.0),
+        let (beta, tau_s) = match start {
+            Start::Tangent => (vel.alpha, vel.delta),
+            Start::Contact { theta, .. } => (FRAC_PI_2 - theta, theta),
         };
         out.regime = regime;
         out.deficit = sol.deficit;
