@@ -76,6 +76,11 @@ fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases
     w.finish().map_err(io_err)
 }
 
+/// Rows a rayon task computes in a row: enough that rayon's bookkeeping is
+/// a few instructions a row (a flat row is ~1,300), few enough that a table of
+/// slow curved rows (~70,000 each) still splits over every thread.
+const ROWS_PER_TASK: usize = 64;
+
 pub fn run(a: TableArgs) -> Result<()> {
     let shape = crate::cli::input::parse_shape(&a.common.shape)?;
     let opts = a.common.options();
@@ -112,19 +117,23 @@ pub fn run(a: TableArgs) -> Result<()> {
     // Every row is computed (in parallel, rayon) before the first byte is
     // written: an error in any row (a tabulated shape's range, an internal
     // error) leaves stdout empty. 40 bytes per row: 400 MB at the 10^7 limit.
-    let pairs: Vec<(f64, f64)> = amps.iter().flat_map(|&amp| vels.iter().map(move |&v| (amp, v))).collect();
-    let rows: Vec<[f64; 5]> = pairs
-        .par_iter()
-        .map(|&(amp, v)| {
+    // Rows are filled in place, a chunk of ROWS_PER_TASK at a time (row i is
+    // amplitude i / vels.len(), velocity i % vels.len()): no list of pairs, no
+    // collection of rayon's pieces into one vector afterwards.
+    let mut rows = vec![[0.0; 5]; total as usize];
+    rows.par_chunks_mut(ROWS_PER_TASK).enumerate().try_for_each(|(c, chunk)| {
+        for (k, row) in chunk.iter_mut().enumerate() {
+            let i = c * ROWS_PER_TASK + k;
+            let (amp, v) = (amps[i / vels.len()], vels[i % vels.len()]);
             let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
             let r = match stepping {
                 Some(st) => crate::stepper::evaluate(&shape, vbar, amp, st)?.ratio,
                 None => shape.evaluate_with(vbar, amp, &opts)?.ratio,
             };
-            Ok([v, vbar, amp, r.mu_ratio, r.reduction])
-        })
-        .collect::<Result<Vec<_>>>()?;
-    drop(pairs);
+            *row = [v, vbar, amp, r.mu_ratio, r.reduction];
+        }
+        Ok::<(), Error>(())
+    })?;
     // The grid's columns; the last two are the results.
     let grid = cols.len() - 2;
     let mut w =
