@@ -7,7 +7,7 @@ use std::io::{self, Write};
 /// tables and batches print one value alike). Non-finite values (never produced
 /// by the solvers) print as `null`.
 pub fn num(x: f64) -> String {
-    let mut text = Vec::with_capacity(MEMO_TEXT);
+    let mut text = Vec::with_capacity(TEXT);
     push_num(&mut text, &mut zmij::Buffer::new(), x);
     // zmij writes ASCII only.
     String::from_utf8_lossy(&text).into_owned()
@@ -38,52 +38,12 @@ where
 }
 
 /// Append the shortest text of `x` to `line` (`null` where not finite): the one
-/// place a number's text is made ([`num`], [`Memo`] and table rows use it).
+/// place a number's text is made ([`num`] and table rows use it).
 fn push_num(line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64) {
     if x.is_finite() {
         line.extend_from_slice(fmt.format_finite(x).as_bytes());
     } else {
         line.extend_from_slice(b"null");
-    }
-}
-
-/// Numbers printed recently, by their bits: a table's grid values repeat row
-/// after row (the amplitude on every row of its block, each velocity once per
-/// amplitude), and formatting costs ~150 instructions a number, a copy ~10. A
-/// direct-mapped cache of [`MEMO_SLOTS`] texts; a collision only reformats.
-struct Memo {
-    slots: Vec<(u64, u8, [u8; MEMO_TEXT])>,
-}
-
-/// Slots of [`Memo`] (a power of two).
-const MEMO_SLOTS: usize = 256;
-/// Bytes of a slot's text: the longest shortest text of an `f64` is 24 bytes
-/// (`-2.2250738585072014e-308`).
-const MEMO_TEXT: usize = 24;
-
-impl Memo {
-    fn new() -> Self {
-        Memo { slots: vec![(0, 0, [0; MEMO_TEXT]); MEMO_SLOTS] }
-    }
-
-    /// Append `x` as [`num`] prints it to `line`, through the cache.
-    fn push(&mut self, line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64) {
-        let bits = x.to_bits();
-        let slot = &mut self.slots[(bits.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 56) as usize % MEMO_SLOTS];
-        let at = line.len();
-        if slot.1 != 0 && slot.0 == bits {
-            // A copy of the whole slot (a fixed size: no call), then cut to the text.
-            line.extend_from_slice(&slot.2);
-            line.truncate(at + slot.1 as usize);
-            return;
-        }
-        push_num(line, fmt, x);
-        let text = &line[at..];
-        // Anything longer than a slot (never, see MEMO_TEXT) is not cached.
-        if let Some(dst) = slot.2.get_mut(..text.len()) {
-            dst.copy_from_slice(text);
-            (slot.0, slot.1) = (bits, text.len() as u8);
-        }
     }
 }
 
@@ -96,6 +56,41 @@ pub enum Format {
     Csv,
 }
 
+/// The longest shortest text of an `f64`: `-2.2250738585072014e-308`.
+const TEXT: usize = 24;
+
+/// A number's text as [`num`] makes it, in a fixed-size buffer: appended to a
+/// row as a copy of the whole buffer (a fixed size: no call), then cut.
+#[derive(Debug, Clone, Copy)]
+pub struct Text {
+    bytes: [u8; TEXT],
+    len: usize,
+}
+
+impl Text {
+    /// The text of `x`.
+    pub fn of(x: f64) -> Self {
+        let text = num(x);
+        let mut bytes = [0; TEXT];
+        // Every text fits (see TEXT); `null` for a non-finite value.
+        let len = text.len().min(TEXT);
+        bytes[..len].copy_from_slice(&text.as_bytes()[..len]);
+        Text { bytes, len }
+    }
+}
+
+/// A cell of a [`TableWriter`] row: a number, or its [`Text`] made once (a grid
+/// value that repeats row after row: the amplitude on every row of its block,
+/// each velocity once per amplitude; formatting costs ~190 instructions a
+/// number, a copy ~10).
+#[derive(Debug, Clone, Copy)]
+pub enum Cell<'a> {
+    /// A number, printed as [`num`] prints it.
+    Num(f64),
+    /// A number's text made before.
+    Text(&'a Text),
+}
+
 /// Bytes of rows a [`TableWriter`] collects before it writes them.
 const BLOCK: usize = 1 << 15;
 
@@ -104,12 +99,9 @@ pub struct TableWriter<W: Write> {
     out: W,
     format: Format,
     columns: Vec<&'static str>,
-    /// The leading columns that repeat from row to row (the grid), printed through [`Memo`].
-    grid: usize,
     rows: usize,
     /// The shape as a CSV field (quoted when it holds a comma or a quote).
     csv_shape: String,
-    memo: Memo,
     fmt: zmij::Buffer,
     /// Rows not yet written: written in blocks of about [`BLOCK`] bytes (one
     /// write for hundreds of rows, large enough to bypass a `BufWriter`'s copy).
@@ -117,9 +109,8 @@ pub struct TableWriter<W: Write> {
 }
 
 impl<W: Write> TableWriter<W> {
-    /// Start a table with a `shape` label and named numeric columns, of which
-    /// the first `grid` are the grid's (their values repeat, and are cached).
-    pub fn new(mut out: W, format: Format, shape: &str, columns: Vec<&'static str>, grid: usize) -> io::Result<Self> {
+    /// Start a table with a `shape` label and named numeric columns.
+    pub fn new(mut out: W, format: Format, shape: &str, columns: Vec<&'static str>) -> io::Result<Self> {
         match format {
             Format::Json => write!(out, "{{\"shape\":{},\"rows\":[", serde_json::to_string(shape)?)?,
             Format::Csv => writeln!(out, "shape,{}", columns.join(","))?,
@@ -128,39 +119,45 @@ impl<W: Write> TableWriter<W> {
             out,
             format,
             columns,
-            grid,
             rows: 0,
             csv_shape: csv_field(shape),
-            memo: Memo::new(),
             fmt: zmij::Buffer::new(),
             line: Vec::with_capacity(BLOCK + 1024),
         })
     }
 
-    /// One row (values in column order); the shape is the one given to [`TableWriter::new`].
-    pub fn row(&mut self, values: &[f64]) -> io::Result<()> {
-        let line = &mut self.line;
-        let json = self.format == Format::Json;
-        if json {
-            line.extend_from_slice(if self.rows > 0 { b",\n{" } else { b"\n{" });
-        } else {
-            line.extend_from_slice(self.csv_shape.as_bytes());
-        }
-        for (i, (c, &v)) in self.columns.iter().zip(values).enumerate() {
-            if json {
-                line.extend_from_slice(if i > 0 { b",\"" } else { b"\"" });
-                line.extend_from_slice(c.as_bytes());
-                line.extend_from_slice(b"\":");
-            } else {
-                line.push(b',');
+    /// One row (cells in column order); the shape is the one given to [`TableWriter::new`].
+    pub fn row(&mut self, cells: &[Cell]) -> io::Result<()> {
+        debug_assert_eq!(cells.len(), self.columns.len());
+        let (line, fmt) = (&mut self.line, &mut self.fmt);
+        let put = |line: &mut Vec<u8>, fmt: &mut zmij::Buffer, cell: &Cell| match *cell {
+            Cell::Num(x) => push_num(line, fmt, x),
+            Cell::Text(t) => {
+                let at = line.len();
+                line.extend_from_slice(&t.bytes);
+                line.truncate(at + t.len);
             }
-            if i < self.grid {
-                self.memo.push(line, &mut self.fmt, v);
-            } else {
-                push_num(line, &mut self.fmt, v);
+        };
+        match self.format {
+            Format::Csv => {
+                line.extend_from_slice(self.csv_shape.as_bytes());
+                for cell in cells {
+                    line.push(b',');
+                    put(line, fmt, cell);
+                }
+                line.push(b'\n');
+            }
+            Format::Json => {
+                line.extend_from_slice(if self.rows > 0 { b",\n{" } else { b"\n{" });
+                for (i, (c, cell)) in self.columns.iter().zip(cells).enumerate() {
+                    line.extend_from_slice(if i > 0 { b",\"" } else { b"\"" });
+                    line.extend_from_slice(c.as_bytes());
+                    line.extend_from_slice(b"\":");
+                    put(line, fmt, cell);
+                }
+                line.push(b'}');
             }
         }
-        line.extend_from_slice(if json { b"}" } else { b"\n" });
         self.rows += 1;
         if line.len() >= BLOCK {
             self.out.write_all(line)?;

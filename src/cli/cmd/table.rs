@@ -2,7 +2,7 @@
 
 use super::{io_err, list, vbar_of, Common, List, TangentialList, VelocityList};
 use crate::cli::error::{Error, Result};
-use crate::cli::output::{Format, TableWriter};
+use crate::cli::output::{Cell, Format, TableWriter, Text};
 use clap::Args;
 use rayon::prelude::*;
 use std::io;
@@ -66,12 +66,10 @@ fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases
         })
         .collect::<Result<Vec<_>>>()?;
     let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "reduction"];
-    // The grid's columns; the last two are the results.
-    let grid = cols.len() - 2;
-    let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols, grid)
-        .map_err(io_err)?;
+    let mut w =
+        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols).map_err(io_err)?;
     for r in &rows {
-        w.row(r).map_err(io_err)?;
+        w.row(&r.map(Cell::Num)).map_err(io_err)?;
     }
     w.finish().map_err(io_err)
 }
@@ -116,30 +114,37 @@ pub fn run(a: TableArgs) -> Result<()> {
     }
     // Every row is computed (in parallel, rayon) before the first byte is
     // written: an error in any row (a tabulated shape's range, an internal
-    // error) leaves stdout empty. 40 bytes per row: 400 MB at the 10^7 limit.
+    // error) leaves stdout empty. 24 bytes per row (vbar, mu_ratio, reduction):
+    // 240 MB at the 10^7 limit.
     // Rows are filled in place, a chunk of ROWS_PER_TASK at a time (row i is
     // amplitude i / vels.len(), velocity i % vels.len()): no list of pairs, no
     // collection of rayon's pieces into one vector afterwards.
-    let mut rows = vec![[0.0; 5]; total as usize];
+    let mut rows = vec![[0.0; 3]; total as usize];
     rows.par_chunks_mut(ROWS_PER_TASK).enumerate().try_for_each(|(c, chunk)| {
-        for (k, row) in chunk.iter_mut().enumerate() {
-            let i = c * ROWS_PER_TASK + k;
-            let (amp, v) = (amps[i / vels.len()], vels[i % vels.len()]);
+        let first = c * ROWS_PER_TASK;
+        let (mut a_i, mut v_i) = (first / vels.len(), first % vels.len());
+        for row in chunk {
+            let (amp, v) = (amps[a_i], vels[v_i]);
+            (a_i, v_i) = if v_i + 1 == vels.len() { (a_i + 1, 0) } else { (a_i, v_i + 1) };
             let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
             let r = match stepping {
                 Some(st) => crate::stepper::evaluate(&shape, vbar, amp, st)?.ratio,
                 None => shape.evaluate_with(vbar, amp, &opts)?.ratio,
             };
-            *row = [v, vbar, amp, r.mu_ratio, r.reduction];
+            *row = [vbar, r.mu_ratio, r.reduction];
         }
         Ok::<(), Error>(())
     })?;
-    // The grid's columns; the last two are the results.
-    let grid = cols.len() - 2;
-    let mut w =
-        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, name, cols, grid).map_err(io_err)?;
-    for r in &rows {
-        if is_vhat { w.row(r) } else { w.row(&r[1..]) }.map_err(io_err)?;
+    // The grid's values printed once each (a vhat table's vbar is a row's own).
+    let amp_texts: Vec<Text> = amps.iter().map(|&x| Text::of(x)).collect();
+    let vel_texts: Vec<Text> = vels.iter().map(|&x| Text::of(x)).collect();
+    let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, name, cols).map_err(io_err)?;
+    for (block, amp) in rows.chunks(vels.len().max(1)).zip(&amp_texts) {
+        for (r, v) in block.iter().zip(&vel_texts) {
+            let (amp, v, mu, reduction) = (Cell::Text(amp), Cell::Text(v), Cell::Num(r[1]), Cell::Num(r[2]));
+            if is_vhat { w.row(&[v, Cell::Num(r[0]), amp, mu, reduction]) } else { w.row(&[v, amp, mu, reduction]) }
+                .map_err(io_err)?;
+        }
     }
     w.finish().map_err(io_err)
 }
