@@ -284,14 +284,17 @@ type Scanned<'a> = std::result::Result<scan::Row<'a, FIELDS>, String>;
 
 /// Check one chunk of rows, `items`, each scanned (`row(item)`: its fields, or
 /// why it is malformed): their shapes looked up serially (each distinct string
-/// parsed once), their numbers checked in parallel. Returns the rows' raw text
-/// and jobs, or the first row at fault (its index in the chunk, and why), as a
+/// parsed once), their numbers checked in parallel. Appends the rows' raw text
+/// to `raws` and their jobs to `jobs` (nothing where a row is at fault), or
+/// returns the first row at fault (its index in the chunk, and why), as a
 /// serial reading finds it.
 fn check_chunk<'a, T: Sync>(
     items: &[T],
     row: &(dyn Fn(&T) -> std::result::Result<&scan::Row<'a, FIELDS>, &String> + Sync),
     shapes: &mut Shapes,
-) -> std::result::Result<Vec<(&'a str, Job)>, (usize, String)> {
+    raws: &mut Vec<&'a str>,
+    jobs: &mut Vec<Job>,
+) -> std::result::Result<(), (usize, String)> {
     // Serially: the first malformed row, and every shape up to it.
     let mut ids = Vec::with_capacity(items.len());
     let mut first: Option<(usize, String)> = None;
@@ -321,10 +324,17 @@ fn check_chunk<'a, T: Sync>(
     if let Some(j) = checked.iter().position(|x| x.is_err()) {
         first = Some((j, checked[j].clone().err().unwrap_or_default()));
     }
-    match first {
-        Some(fault) => Err(fault),
-        None => Ok(checked.into_iter().flatten().collect()),
+    if let Some(fault) = first {
+        return Err(fault);
     }
+    // Reserved for this chunk at once (no growth a row at a time).
+    raws.reserve(checked.len());
+    jobs.reserve(checked.len());
+    for (raw, job) in checked.into_iter().flatten() {
+        raws.push(raw);
+        jobs.push(job);
+    }
+    Ok(())
 }
 
 /// Check and evaluate every row of `text` (a JSON array); `source` names the input in errors.
@@ -354,12 +364,8 @@ pub fn run<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Resul
                 limit: MAX_ROWS as u128,
             });
         }
-        let checked = check_chunk(&chunk, &|r| Ok(r), &mut shapes)
+        check_chunk(&chunk, &|r| Ok(r), &mut shapes, &mut rows, &mut jobs)
             .map_err(|(j, reason)| parse_err(format!("row {}: {reason}", first + j)))?;
-        for (raw, job) in checked {
-            rows.push(raw);
-            jobs.push(job);
-        }
         match fault {
             None => {}
             Some(RowsError::Row { row, reason }) => return Err(parse_err(format!("row {row}: {reason}"))),
@@ -557,27 +563,29 @@ fn stream_lines(
                 break;
             }
             let scanned: Vec<Scanned> = spans.par_iter().map(|&(a, b)| scan_line(&buf[a..b])).collect();
-            let checked = check_chunk(&scanned, &|r| r.as_ref(), &mut shapes).map_err(|f| fault(&numbers, f))?;
+            let (mut raws, mut jobs) = (vec![], vec![]);
+            check_chunk(&scanned, &|r| r.as_ref(), &mut shapes, &mut raws, &mut jobs)
+                .map_err(|f| fault(&numbers, f))?;
             if pass == 1 {
-                total += checked.len() as u64;
+                total += jobs.len() as u64;
                 if total > MAX_STREAM_ROWS {
                     return Err(too_many(source, total));
                 }
                 continue;
             }
-            again += checked.len() as u64;
+            again += jobs.len() as u64;
             if again > total {
                 return Err(changed(source, total, again));
             }
-            let jobs: Vec<Job> = checked.iter().map(|(_, j)| *j).collect();
             let results = shapes.evaluate_all(&jobs, source, &|i| format!("line {}", numbers[i]))?;
-            let pieces: Vec<io::Result<Vec<u8>>> = checked
+            let pieces: Vec<io::Result<Vec<u8>>> = raws
                 .par_chunks(4096)
+                .zip(jobs.par_chunks(4096))
                 .zip(results.par_chunks(4096))
-                .map(|(rows, rs)| {
-                    let mut buf = Vec::with_capacity(rows.len() * 128);
+                .map(|((raws, jobs), rs)| {
+                    let mut buf = Vec::with_capacity(raws.len() * 128);
                     let mut fmt = zmij::Buffer::new();
-                    for ((raw, job), r) in rows.iter().zip(rs) {
+                    for ((raw, job), r) in raws.iter().zip(jobs).zip(rs) {
                         write_json_row(&mut buf, raw, r, job.replace, &mut fmt)?;
                         buf.push(b'\n');
                     }
