@@ -209,6 +209,34 @@ fn the_accepted_exponent_range_agrees_with_the_reference_at_its_ends() {
     }
 }
 
+/// `power_law` and `mdr::point` themselves (not only `Shape`) refuse what is
+/// outside their domain, naming the input: just outside the exponent range,
+/// a negative or non-finite velocity or amplitude, a tolerance outside (0, 1).
+#[test]
+fn the_power_law_entry_points_refuse_what_is_outside_their_domain() {
+    let ok = Options::default();
+    let (lo, hi) = (fricosc::MIN_EXPONENT, fricosc::MAX_EXPONENT);
+    let bad: [(f64, f64, f64, Options, &str); 8] = [
+        (lo * (1.0 - 1e-15), 0.3, 0.5, ok, "n"),
+        (hi * (1.0 + 1e-15), 0.3, 0.5, ok, "n"),
+        (f64::NAN, 0.3, 0.5, ok, "n"),
+        (2.0, -1e-300, 0.5, ok, "vbar"),
+        (2.0, f64::INFINITY, 0.5, ok, "vbar"),
+        (2.0, 0.3, f64::NAN, ok, "amp"),
+        (2.0, 0.3, 0.5, ok.with_tol(0.0), "tol"),
+        (2.0, 0.3, 0.5, ok.with_tol(1.0), "tol"),
+    ];
+    for (n, v, a, opts, name) in bad {
+        for e in [power_law(n, v, a, &opts).err(), fricosc::mdr::point(n, v, a, &opts).err()] {
+            let e = e.unwrap_or_else(|| panic!("n {n} vbar {v} amp {a} tol {} accepted", opts.tol));
+            assert!(matches!(e, fricosc::Error::InvalidParameter { .. }), "{e}");
+            assert!(e.to_string().contains(name), "{name}: {e}");
+        }
+    }
+    // The ends themselves are inside.
+    assert!(power_law(lo, 0.3, 0.5, &ok).is_ok() && power_law(hi, 0.3, 0.5, &ok).is_ok());
+}
+
 /// The banded report at vbar >= 1 and a huge amplitude: u* rounded above pi/2
 /// made the slip band start before the contact centre (NaN, hidden by a clamp
 /// until non-finite ratios became errors).

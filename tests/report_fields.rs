@@ -98,10 +98,23 @@ fn power_law_mean_normal_forces_against_mpmath() {
         let reported = p["mean_normal"].as_f64().unwrap();
         assert!((reported / want - 1.0).abs() <= 1e-13, "n {n} amp {amp}: reported {reported}");
     }
-    // Without oscillation: the static force, 2 n/(n + 1).
+    // Where nothing sticks (vbar >= 1), the ratio's own call reports the force
+    // from its closed form (the cone and the paraboloid; none for other exponents).
+    let opts = fricosc::Options::default();
+    for (n, amp, want) in POWER_NORMAL {
+        let got = fricosc::mdr::power_law(n, 1.5, amp, &opts).unwrap().mean_normal;
+        match got {
+            Some(got) => assert!((got / want - 1.0).abs() <= 1e-14, "n {n} amp {amp} vbar 1.5: {got} against {want}"),
+            None => assert!(n != 1.0 && n != 2.0, "n {n} amp {amp} vbar 1.5: no mean normal force"),
+        }
+    }
+    // Without oscillation: the static force, 2 n/(n + 1), from the contact and
+    // from the ratio's own call (both sides of the foundation).
     for n in [0.5, 1.0, 2.0, 3.7] {
         let got = common::shape(&format!("power:{n}")).unwrap().contact().mean_normal(0.0).unwrap();
         assert!((got / (2.0 * n / (n + 1.0)) - 1.0).abs() <= 4e-16, "n {n}: {got}");
+        let reported = fricosc::mdr::power_law(n, 0.4, 0.0, &opts).unwrap().mean_normal.unwrap();
+        assert!((reported / (2.0 * n / (n + 1.0)) - 1.0).abs() <= 4e-16, "n {n}: reported {reported}");
     }
     // The tabulated sphere at u0 = 1e-6 of its radius is the paraboloid to O(u0/R).
     let table = concat!(env!("CARGO_MANIFEST_DIR"), "/data/profiles/sphere.csv");
