@@ -119,6 +119,8 @@ pub fn run(a: TableArgs) -> Result<()> {
     // Rows are filled in place, a chunk of ROWS_PER_TASK at a time (row i is
     // amplitude i / vels.len(), velocity i % vels.len()): no list of pairs, no
     // collection of rayon's pieces into one vector afterwards.
+    opts.check()?;
+    let contact = shape.contact();
     let mut rows = vec![[0.0; 3]; total as usize];
     rows.par_chunks_mut(ROWS_PER_TASK).enumerate().try_for_each(|(c, chunk)| {
         let first = c * ROWS_PER_TASK;
@@ -129,7 +131,8 @@ pub fn run(a: TableArgs) -> Result<()> {
             let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
             let r = match stepping {
                 Some(st) => crate::stepper::evaluate(&shape, vbar, amp, st)?.ratio,
-                None => shape.evaluate_with(vbar, amp, &opts)?.ratio,
+                // Inputs and options checked above, once: the contact itself.
+                None => contact.evaluate(vbar, amp, opts.tol)?.ratio,
             };
             *row = [vbar, r.mu_ratio, r.reduction];
         }
