@@ -53,7 +53,7 @@ fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases
         st.check(shape)?;
     }
     let tol = a.common.options().tol;
-    let rows: Vec<[f64; 6]> = points
+    let rows: Vec<[f64; 2]> = points
         .par_iter()
         .map(|o| {
             let r = match stepping {
@@ -62,14 +62,26 @@ fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases
                 }
                 None => crate::combined::evaluate(shape, o, tol)?.ratio,
             };
-            Ok([o.vhat, o.amp, o.tangential_amp, o.phase, r.mu_ratio, r.reduction])
+            Ok([r.mu_ratio, r.reduction])
         })
         .collect::<Result<Vec<_>>>()?;
     let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "reduction"];
     let mut w =
         TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols).map_err(io_err)?;
-    for r in &rows {
-        w.row(&r.map(Cell::Num)).map_err(io_err)?;
+    // The grid's values printed once each, in the order the rows were made.
+    let texts = |xs: &[f64]| xs.iter().map(|&x| Text::of(x)).collect::<Vec<_>>();
+    let (amp_t, t_t, phase_t, vel_t) = (texts(amps), texts(ts), texts(phases), texts(vels));
+    let mut rows = rows.iter();
+    for amp in &amp_t {
+        for t in &t_t {
+            for phase in &phase_t {
+                for (v, r) in vel_t.iter().zip(rows.by_ref()) {
+                    let (mu, reduction) = (Cell::Num(r[0]), Cell::Num(r[1]));
+                    w.row(&[Cell::Text(v), Cell::Text(amp), Cell::Text(t), Cell::Text(phase), mu, reduction])
+                        .map_err(io_err)?;
+                }
+            }
+        }
     }
     w.finish().map_err(io_err)
 }
