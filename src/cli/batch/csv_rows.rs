@@ -78,7 +78,13 @@ struct Csv {
     results: Option<(usize, usize)>,
     header: csv::ByteRecord,
     record: csv::ByteRecord,
-    kept: Vec<csv::ByteRecord>,
+    /// Records kept for [`Csv::write_kept`], their fields one after another
+    /// (no allocation a record; the buffers are reused chunk after chunk), and
+    /// where each field ends in `kept` (every record has the header's fields).
+    kept: Vec<u8>,
+    ends: Vec<usize>,
+    /// The output rows of a chunk, written at once.
+    line: Vec<u8>,
 }
 
 impl Csv {
@@ -104,7 +110,8 @@ impl Csv {
             _ => return Err(bad("the header has only one of 'mu_ratio', 'reduction'".into())),
         };
         let record = csv::ByteRecord::new();
-        Ok(Csv { reader, source: source.into(), cols, optional, results, header, record, kept: vec![] })
+        let (kept, ends, line) = (vec![], vec![], vec![]);
+        Ok(Csv { reader, source: source.into(), cols, optional, results, header, record, kept, ends, line })
     }
 }
 
@@ -167,34 +174,88 @@ impl Csv {
         let k = shapes.id(spec).map_err(|e| bad(e.to_string()))?;
         let job = inputs(shapes, k, &get, self.results.is_some()).map_err(bad)?;
         if keep {
-            self.kept.push(self.record.clone());
+            for f in &self.record {
+                self.kept.extend_from_slice(f);
+                self.ends.push(self.kept.len());
+            }
         }
         Ok(Some((line, job)))
     }
 
     /// Write the kept records with their results (in order), and forget them.
+    /// Each field is written as the `csv` crate writes it (see [`push_field`]).
     fn write_kept(&mut self, out: &mut dyn Write, results: &[Ratio]) -> io::Result<()> {
         let mut buf = zmij::Buffer::new();
-        let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(&mut *out);
-        let mut rec = csv::ByteRecord::new();
-        for (row, r) in self.kept.iter().zip(results) {
-            rec.clear();
-            for (i, f) in row.iter().enumerate() {
+        let line = &mut self.line;
+        line.clear();
+        let mut start = 0;
+        for (row, r) in self.ends.chunks(self.header.len().max(1)).zip(results) {
+            for (i, &end) in row.iter().enumerate() {
+                let f = &self.kept[start..end];
+                start = end;
+                if i > 0 {
+                    line.push(b',');
+                }
                 match self.results {
-                    Some((m, _)) if i == m => rec.push_field(buf.format_finite(r.mu_ratio).as_bytes()),
-                    Some((_, d)) if i == d => rec.push_field(buf.format_finite(r.reduction).as_bytes()),
-                    _ => rec.push_field(f),
+                    Some((m, _)) if i == m => line.extend_from_slice(buf.format_finite(r.mu_ratio).as_bytes()),
+                    Some((_, d)) if i == d => line.extend_from_slice(buf.format_finite(r.reduction).as_bytes()),
+                    _ => push_field(line, f),
                 }
             }
             if self.results.is_none() {
-                rec.push_field(buf.format_finite(r.mu_ratio).as_bytes());
-                rec.push_field(buf.format_finite(r.reduction).as_bytes());
+                line.push(b',');
+                line.extend_from_slice(buf.format_finite(r.mu_ratio).as_bytes());
+                line.push(b',');
+                line.extend_from_slice(buf.format_finite(r.reduction).as_bytes());
             }
-            w.write_byte_record(&rec).map_err(io_of)?;
+            line.push(b'\n');
         }
-        w.flush()?;
-        drop(w);
         self.kept.clear();
-        Ok(())
+        self.ends.clear();
+        out.write_all(line)
+    }
+}
+
+/// Append one field of a record of several fields as the `csv` crate's
+/// writer does (`QuoteStyle::Necessary`, `,` and `\n`): quoted when it holds
+/// a comma, a quote, `\r` or `\n`, a quote inside doubled; an empty field as
+/// nothing. Tested against the crate's writer.
+fn push_field(line: &mut Vec<u8>, f: &[u8]) {
+    if !f.iter().any(|&b| matches!(b, b',' | b'"' | b'\r' | b'\n')) {
+        line.extend_from_slice(f);
+        return;
+    }
+    line.push(b'"');
+    for &b in f {
+        if b == b'"' {
+            line.push(b'"');
+        }
+        line.push(b);
+    }
+    line.push(b'"');
+}
+
+#[cfg(test)]
+mod tests {
+    use super::push_field;
+
+    /// Records written field by field as the `csv` crate writes them.
+    #[test]
+    fn fields_are_written_as_the_csv_crate_writes_them() {
+        let fields: [&[u8]; 12] =
+            [b"", b"a", b"1e-5", b"a,b", b"\"", b"say \"hi\"", b"x\ny", b"x\ry", b" sp ", b"#c", b"\xff\xfe", b"\t"];
+        for a in fields {
+            for b in fields {
+                let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(vec![]);
+                w.write_byte_record(&csv::ByteRecord::from(vec![a, b, b"0.5"])).unwrap();
+                let want = w.into_inner().unwrap();
+                let mut got = vec![];
+                push_field(&mut got, a);
+                got.push(b',');
+                push_field(&mut got, b);
+                got.extend_from_slice(b",0.5\n");
+                assert_eq!(got, want, "{a:?} {b:?}");
+            }
+        }
     }
 }
