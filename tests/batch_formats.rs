@@ -1,5 +1,5 @@
 //! `batch` in its three formats: a JSON array, JSON Lines and CSV (the last two
-//! streamed in two passes). The same rows give bit-identical results in every
+//! streamed in two passes, or one for an input of one chunk). The same rows give bit-identical results in every
 //! format; other fields and columns are kept; a bad row anywhere leaves stdout
 //! empty; stdin's spool file is removed.
 #[path = "common/cli.rs"]
@@ -165,4 +165,53 @@ fn the_first_bad_row_across_chunks() {
     // And a top-level fault after all rows comes last.
     let good: Vec<String> = (0..70_000).map(|i| format!(r#"{{"shape":"flat","vbar":0.{i},"amp":1}}"#)).collect();
     refused(&["batch"], &format!("[{}] x", good.join(",")), "trailing characters");
+}
+
+/// A JSON Lines or CSV batch of at most one chunk (65,536 rows) is read once
+/// and kept from its check; a longer one is read again a chunk at a time. Both
+/// give every row's results as a JSON array does (another reader), with every
+/// other column or field kept byte for byte, on each side of the chunk's size.
+#[test]
+fn streamed_batches_on_each_side_of_a_chunk() {
+    for n in [65_536usize, 65_537] {
+        let row = |i: usize| (0.1 + (i % 997) as f64 * 1e-3, (i % 31) as f64 * 0.1);
+        let json = |i: usize| {
+            let (v, a) = row(i);
+            format!("{{\"id\": {i}, \"shape\":\"flat\",\"vbar\":{v:?},\"amp\":{a:?}}}")
+        };
+        let array = ok(&["batch"], &format!("[{}]", (0..n).map(json).collect::<Vec<_>>().join(",")));
+        let want: Vec<serde_json::Value> = serde_json::from_str(&array).unwrap();
+        assert_eq!(want.len(), n);
+        let num = |x: &serde_json::Value| serde_json::to_string(x).unwrap();
+        // JSON Lines, a blank line between rows.
+        let lines = ok(&["batch", "--format", "jsonl"], &(0..n).map(|i| json(i) + "\n\n").collect::<String>());
+        let mut count = 0;
+        for ((i, l), j) in lines.lines().enumerate().zip(&want) {
+            let kept = json(i);
+            let tail = format!(",\"mu_ratio\":{},\"reduction\":{}}}", num(&j["mu_ratio"]), num(&j["reduction"]));
+            assert_eq!(l, format!("{}{tail}", &kept[..kept.len() - 1]), "line {i} of {n}");
+            count += 1;
+        }
+        assert_eq!(count, n);
+        // CSV, a quoted column first.
+        let note = |i: usize| format!("\"n{i}, \"\"q\"\"\"");
+        let csv: String = "note,shape,vbar,amp\n".to_string()
+            + &(0..n)
+                .map(|i| {
+                    let (v, a) = row(i);
+                    format!("{},flat,{v:?},{a:?}\n", note(i))
+                })
+                .collect::<String>();
+        let out = ok(&["batch", "--format", "csv"], &csv);
+        let mut got = out.lines();
+        assert_eq!(got.next(), Some("note,shape,vbar,amp,mu_ratio,reduction"));
+        let mut count = 0;
+        for ((i, c), j) in got.enumerate().zip(&want) {
+            let (v, a) = row(i);
+            let want = format!("{},flat,{v:?},{a:?},{},{}", note(i), num(&j["mu_ratio"]), num(&j["reduction"]));
+            assert_eq!(c, want, "row {i} of {n}");
+            count += 1;
+        }
+        assert_eq!(count, n);
+    }
 }

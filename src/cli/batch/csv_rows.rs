@@ -15,23 +15,37 @@ pub(super) fn stream_csv(
     out: &mut dyn Write,
 ) -> Result<u64> {
     let mut shapes = Shapes::new(stepping);
-    // Pass 1: check every row.
+    let werr = |e: io::Error| Error::write("stdout", e);
+    // Pass 1: check every row. The first chunk's rows are kept as they are
+    // checked: a batch of at most one chunk is read once, computed and written.
     let mut rows = Csv::new(open()?, source)?;
+    let (mut jobs, mut lines) = (Vec::new(), Vec::new());
     let mut n = 0u64;
-    while rows.next(&mut shapes, false)?.is_some() {
+    loop {
+        if n > 0 && n.is_multiple_of(CHUNK as u64) {
+            shapes.new_chunk();
+        }
+        let keep = n < CHUNK as u64;
+        let Some((line, job)) = rows.next(&mut shapes, keep)? else { break };
+        if keep {
+            jobs.push(job);
+            lines.push(line);
+        }
         n += 1;
         if n > MAX_STREAM_ROWS {
             return Err(too_many(source, n));
         }
-        if n.is_multiple_of(CHUNK as u64) {
-            shapes.new_chunk();
-        }
     }
-    // Pass 2: compute chunks in parallel, write them in order.
-    let werr = |e: io::Error| Error::write("stdout", e);
+    if n <= CHUNK as u64 {
+        let results = shapes.evaluate_all(&jobs, source, &|i| format!("line {}", lines[i]))?;
+        rows.header(out).map_err(werr)?;
+        rows.write_kept(out, &results).map_err(werr)?;
+        out.flush().map_err(werr)?;
+        return Ok(n);
+    }
+    // Pass 2 (more than a chunk): compute chunks in parallel, write them in order.
     let mut rows = Csv::new(open()?, source)?;
     rows.header(out).map_err(werr)?;
-    let (mut jobs, mut lines) = (Vec::with_capacity(CHUNK), Vec::with_capacity(CHUNK));
     let mut again = 0u64;
     loop {
         shapes.new_chunk();

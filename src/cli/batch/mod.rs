@@ -21,8 +21,10 @@
 //! - JSON Lines and CSV stream in constant memory, in two passes over the
 //!   input: the first checks every row, the second computes chunks of rows in
 //!   parallel and writes them in order (the caller spools stdin to a temporary
-//!   file to read it twice). JSON Lines are read a chunk at a time (65,536
-//!   lines or 32 MiB) and scanned, checked and formatted in parallel too. Blank lines of JSON Lines are skipped. CSV keeps
+//!   file to read it twice). An input of one chunk is read once: its rows are
+//!   kept from the check, then computed and written. JSON Lines are read a
+//!   chunk at a time (65,536 lines or 32 MiB; the first two at once while the
+//!   first is kept) and scanned, checked and formatted in parallel too. Blank lines of JSON Lines are skipped. CSV keeps
 //!   every column's value (fields are re-quoted only where CSV needs it) and
 //!   appends `mu_ratio,reduction`, or fills those columns where they exist.
 //! - Duplicate keys are refused. Each distinct shape string is parsed once.
@@ -457,7 +459,8 @@ impl Batch<'_> {
 }
 
 /// Stream a JSON Lines or CSV batch: `open()` gives the input (called twice:
-/// once to check every row, once to compute and write); `source` names it.
+/// once to check every row, once to compute and write; once only when the
+/// input is one chunk, computed from its check); `source` names it.
 /// Returns the number of rows.
 pub fn stream(
     format: Format,
@@ -546,19 +549,65 @@ fn stream_lines(
     out: &mut dyn Write,
 ) -> Result<u64> {
     let mut shapes = Shapes::new(stepping);
-    let (mut buf, mut spans, mut numbers) = (vec![], vec![], vec![]);
     let fault = |numbers: &[u64], (j, reason): (usize, String)| Error::Parse {
         context: source.into(),
         reason: format!("line {}: {reason}", numbers[j]),
     };
     let werr = |e: io::Error| Error::write("stdout", e);
-    let (mut total, mut again) = (0u64, 0u64);
+    // Compute a checked chunk's rows in parallel and write them in order.
+    let emit = |shapes: &Shapes, raws: &[&str], jobs: &[Job], numbers: &[u64], out: &mut dyn Write| -> Result<()> {
+        let results = shapes.evaluate_all(jobs, source, &|i| format!("line {}", numbers[i]))?;
+        let pieces: Vec<io::Result<Vec<u8>>> = raws
+            .par_chunks(4096)
+            .zip(jobs.par_chunks(4096))
+            .zip(results.par_chunks(4096))
+            .map(|((raws, jobs), rs)| {
+                let mut buf = Vec::with_capacity(raws.len() * 128);
+                let mut fmt = zmij::Buffer::new();
+                for ((raw, job), r) in raws.iter().zip(jobs).zip(rs) {
+                    write_json_row(&mut buf, raw, r, job.replace, &mut fmt)?;
+                    buf.push(b'\n');
+                }
+                Ok(buf)
+            })
+            .collect();
+        for p in pieces {
+            out.write_all(&p.map_err(werr)?).map_err(werr)?;
+        }
+        Ok(())
+    };
+    // Pass 1, its first chunk: checked and kept while the next is read. An
+    // input of one chunk is read once: computed and written from what was checked.
+    let mut input = open()?;
+    let mut line = 0u64;
+    let (mut buf, mut spans, mut numbers) = (vec![], vec![], vec![]);
+    line_chunk(&mut *input, source, &mut line, &mut buf, &mut spans, &mut numbers)?;
+    let scanned: Vec<Scanned> = spans.par_iter().map(|&(a, b)| scan_line(&buf[a..b])).collect();
+    let (mut raws, mut jobs) = (vec![], vec![]);
+    check_chunk(&scanned, &|r| r.as_ref(), &mut shapes, &mut raws, &mut jobs).map_err(|f| fault(&numbers, f))?;
+    let mut total = jobs.len() as u64;
+    let (mut buf2, mut spans2, mut numbers2) = (vec![], vec![], vec![]);
+    line_chunk(&mut *input, source, &mut line, &mut buf2, &mut spans2, &mut numbers2)?;
+    if spans2.is_empty() {
+        emit(&shapes, &raws, &jobs, &numbers, out)?;
+        out.flush().map_err(werr)?;
+        return Ok(total);
+    }
+    drop((raws, jobs, scanned));
+    (buf, spans, numbers) = (buf2, spans2, numbers2);
+    // Pass 1, the other chunks (the second already read); then pass 2: every
+    // chunk computed and written.
+    let (mut again, mut pending) = (0u64, true);
     for pass in [1, 2] {
-        let mut input = open()?;
-        let mut line = 0u64;
+        if pass == 2 {
+            input = open()?;
+            line = 0;
+        }
         loop {
             shapes.new_chunk();
-            line_chunk(&mut *input, source, &mut line, &mut buf, &mut spans, &mut numbers)?;
+            if !std::mem::take(&mut pending) {
+                line_chunk(&mut *input, source, &mut line, &mut buf, &mut spans, &mut numbers)?;
+            }
             if spans.is_empty() {
                 break;
             }
@@ -577,24 +626,7 @@ fn stream_lines(
             if again > total {
                 return Err(changed(source, total, again));
             }
-            let results = shapes.evaluate_all(&jobs, source, &|i| format!("line {}", numbers[i]))?;
-            let pieces: Vec<io::Result<Vec<u8>>> = raws
-                .par_chunks(4096)
-                .zip(jobs.par_chunks(4096))
-                .zip(results.par_chunks(4096))
-                .map(|((raws, jobs), rs)| {
-                    let mut buf = Vec::with_capacity(raws.len() * 128);
-                    let mut fmt = zmij::Buffer::new();
-                    for ((raw, job), r) in raws.iter().zip(jobs).zip(rs) {
-                        write_json_row(&mut buf, raw, r, job.replace, &mut fmt)?;
-                        buf.push(b'\n');
-                    }
-                    Ok(buf)
-                })
-                .collect();
-            for p in pieces {
-                out.write_all(&p.map_err(werr)?).map_err(werr)?;
-            }
+            emit(&shapes, &raws, &jobs, &numbers, out)?;
         }
     }
     if again != total {

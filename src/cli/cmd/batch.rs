@@ -32,7 +32,8 @@ pub fn run(a: BatchArgs) -> Result<()> {
         }
         streamed => {
             // Streaming reads its input twice (check, then compute and write),
-            // the second time exactly the bytes the first one checked.
+            // the second time exactly the bytes the first one checked; an input
+            // of one chunk (65,536 rows) once.
             let input = crate::cli::twopass::TwoPass::open(&path)?;
             let open = || input.next_pass();
             let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
