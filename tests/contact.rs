@@ -168,3 +168,69 @@ fn regimes_of_points() {
     assert_eq!(regime(&para, 0.6, 1.0).unwrap(), R::Jumping);
     assert!(regime(&para, -0.1, 0.5).is_err() && regime(&para, 0.1, f64::NAN).is_err());
 }
+
+/// A shape through the library's `Shape` API alone (what the Python package and
+/// other programs call): its name (`Debug`, equality), its checks before any
+/// work, `mu_static` against the flat punch's closed form `(1 - amp)_+`, and
+/// the flat punch's error estimate, which bounds the error against the
+/// 40-digit references and is a few ulps, not a constant.
+#[test]
+fn the_shape_api_names_checks_and_bounds() {
+    let (flat, par) = (Shape::parse("flat").unwrap(), Shape::parse("parabolic").unwrap());
+    assert_eq!(format!("{flat:?}"), "Shape(flat)");
+    assert_eq!(format!("{par:?}"), "Shape(parabolic)");
+    assert!(flat == Shape::parse("flat").unwrap() && flat != par);
+    let opts = fricosc::Options::default();
+    for amp in [0.0, 0.25, 0.4, 1.0, 1.5] {
+        assert_eq!(flat.mu_static(amp, &opts).unwrap(), (1.0 - amp).max(0.0), "amp {amp}");
+    }
+    assert_eq!(par.mu_static(1.5, &opts).unwrap(), 0.0);
+    assert_eq!(par.mu_static(0.0, &opts).unwrap(), 1.0);
+    for bad in [-1.0, f64::NAN, f64::INFINITY] {
+        assert!(flat.mu_static(bad, &opts).is_err(), "amp {bad}");
+        assert!(flat.point(bad, 0.5, &opts).is_err(), "vbar {bad}");
+        assert!(flat.point(0.5, bad, &opts).is_err(), "amp {bad}");
+    }
+    let loose = opts.with_tol(0.0);
+    assert!(flat.mu_static(0.5, &loose).is_err() && flat.point(0.5, 0.5, &loose).is_err());
+    let mut checked = 0;
+    for c in common::reference_cases().iter().filter(|c| c.shape == "flat") {
+        let e = flat.evaluate(c.vbar, c.amp).unwrap();
+        let error = common::exact_error(e.ratio.mu_ratio, &c.mu_text);
+        assert!(error <= e.error_estimate, "vbar {} amp {}: error {error:e} > {:e}", c.vbar, c.amp, e.error_estimate);
+        assert!(e.error_estimate <= 2e-15, "vbar {} amp {}: estimate {:e}", c.vbar, c.amp, e.error_estimate);
+        checked += 1;
+    }
+    assert!(checked >= 10, "{checked} flat references");
+}
+
+/// The regimes' names as outputs print them: each variant's `name` is its
+/// serde name (snake case), and they are distinct.
+#[test]
+fn regime_names_are_their_serialised_names() {
+    use fricosc::ContactRegime::*;
+    let all = [AtRest, Sliding, PermanentContact, JumpingSlipFirst, JumpingStickFirst, Mixed, Jumping];
+    let names: std::collections::BTreeSet<&str> = all.iter().map(|r| r.name()).collect();
+    assert_eq!(names.len(), all.len());
+    for r in all {
+        assert_eq!(serde_json::to_value(r).unwrap(), serde_json::Value::from(r.name()));
+        assert!(r.name().len() > 3 && r.name().chars().all(|c| c.is_ascii_lowercase() || c == '_'), "{}", r.name());
+    }
+}
+
+/// The share of the load on springs that lose contact: none for the flat punch
+/// up to `amp = 1`, all beyond; all for a curved shape from `amp = 1`; and in
+/// between, for the paraboloid, `1 - P/<N>` with `P` the permanent springs'
+/// share (here against its own quadrature's limits: in (0, 1), increasing).
+#[test]
+fn jumping_shares_at_their_limits() {
+    let (flat, par) = (Shape::parse("flat").unwrap(), Shape::parse("parabolic").unwrap());
+    for (amp, want) in [(0.0, 0.0), (0.5, 0.0), (1.0, 0.0), (1.5, 1.0)] {
+        assert_eq!(fricosc::regime::jumping_share(&flat, amp).unwrap(), want, "flat {amp}");
+    }
+    for (amp, want) in [(0.0, 0.0), (1.0, 1.0), (1.5, 1.0)] {
+        assert_eq!(fricosc::regime::jumping_share(&par, amp).unwrap(), want, "parabolic {amp}");
+    }
+    let shares: Vec<f64> = [0.1, 0.5, 0.9].iter().map(|&a| fricosc::regime::jumping_share(&par, a).unwrap()).collect();
+    assert!(shares[0] > 0.0 && shares[2] < 1.0 && shares.windows(2).all(|w| w[0] < w[1]), "{shares:?}");
+}

@@ -39,8 +39,9 @@ pub struct FlatPoint {
 /// for `amp = 0`).
 pub(crate) fn spring(vbar: f64, amp: f64, precision: Precision) -> Spring {
     let s = spring_s(amp);
-    // 1 - s = (amp - 1)/amp without cancellation (only used where |s| < 1).
-    let one_minus_s = if amp > 0.0 { (amp - 1.0) / amp } else { -s };
+    // 1 - s = (amp - 1)/amp without cancellation (only used where |s| < 1, so
+    // its -inf at amp = 0, where s stands in as f64::MAX, is never read).
+    let one_minus_s = (amp - 1.0) / amp;
     // s - sqrt(1 - vbar^2) = (1 - amp sqrt(1 - vbar^2))/amp from amp and vbar
     // themselves (exact inputs): its sign decides the regime, and it is the
     // start force of a stick from the bound.

@@ -31,3 +31,19 @@ pub fn vbar_from_vhat(vhat: f64, amp: f64) -> Result<f64> {
         Err(Error::param("amp", amp, "vhat needs amp > 0 (vbar = vhat / amp)"))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    /// `amp = 0` is refused as such (not as an overflow of `vhat / 0`), with
+    /// `vhat` zero or not.
+    #[test]
+    fn vbar_from_vhat_refuses_a_zero_amplitude_by_name() {
+        for vhat in [0.0, 0.3] {
+            let e = super::vbar_from_vhat(vhat, 0.0).unwrap_err().to_string();
+            assert!(e.contains("needs amp > 0") && !e.contains("overflows"), "{e}");
+        }
+        let e = super::vbar_from_vhat(1e300, 1e-300).unwrap_err().to_string();
+        assert!(e.contains("overflows"), "{e}");
+        assert_eq!(super::vbar_from_vhat(0.0, 5e-324).unwrap(), 0.0);
+    }
+}

@@ -29,4 +29,40 @@ mod tests {
         super::tidy(&mut v, 0.0, 1.0);
         assert_eq!(v, [0.0, 0.3, 1.0]);
     }
+
+    /// A value whose 15-digit decimal lies more than two ulps away (1/6:
+    /// 0.166666666666667 is 12 ulps off) is kept as computed; one within two
+    /// (0.1 * 3, one ulp from 0.3) is replaced.
+    #[test]
+    fn values_far_from_their_decimal_are_kept() {
+        let mut v: Vec<f64> = (0..=6).map(|k| k as f64 / 6.0).collect();
+        let before = v.clone();
+        super::tidy(&mut v, 0.0, 1.0);
+        assert_eq!(v[1], 1.0 / 6.0);
+        assert_eq!(v[3], 0.5);
+        assert_eq!(v, before);
+    }
+
+    /// A decimal that would not keep the sequence strictly increasing inside
+    /// `[start, stop]` is not taken: one equal to the value before it, one at
+    /// `stop`, one below `start`.
+    #[test]
+    fn decimals_keep_the_sequence_increasing_and_inside() {
+        // 0.1 * 3 becomes 0.3; its successor two ulps up would become 0.3 too.
+        let next = 0.3000000000000001;
+        let mut v = vec![0.0, 0.1 * 3.0, next, 1.0];
+        super::tidy(&mut v, 0.0, 1.0);
+        assert_eq!(v, [0.0, 0.3, next, 1.0]);
+        // One ulp below the end: its decimal is the end itself.
+        let below = 1.0 - f64::EPSILON / 2.0;
+        let mut v = vec![0.0, 0.5, below, 1.0];
+        super::tidy(&mut v, 0.0, 1.0);
+        assert_eq!(v, [0.0, 0.5, below, 1.0]);
+        // A start above its own decimal: the interior value's decimal lies below it.
+        let start = 0.1 * 3.0;
+        let inner = 0.3000000000000001;
+        let mut v = vec![start, inner, 1.0];
+        super::tidy(&mut v, start, 1.0);
+        assert_eq!(v, [start, inner, 1.0]);
+    }
 }
