@@ -117,7 +117,23 @@ const HALLEY_MAX_STEPS: u32 = 12;
 /// Written here rather than taken from `roots` (which has Newton but not
 /// Halley): the stick end is every spring's inner loop, and the crate's
 /// Newton spent ~100 instructions a step on its convergence callbacks.
-pub(crate) fn halley(fdd: impl Fn(f64) -> (f64, f64, f64), lo: f64, hi: f64, guess: f64, rtol: f64) -> Root {
+///
+/// `accept`, where not 0, also stops after a Halley step `d` (at most 1e-2
+/// relative) once the next iterate's predicted error is below `accept`
+/// relative: Halley's error is cubed, `e1 = K e0^3` with
+/// `K = (f''/2f')^2 - f'''/6f'` (Taylor), and `|f'''|` is at most 1 for the
+/// stick's gaps (a sine's terms and linear ones), so `|e1| <= K |d|^3` with
+/// `K = (f''/2f')^2 + 1/(6 |f'|)` to leading order. The means need the stick
+/// end only to ~1e-8 (the deficit is stationary in it): one evaluation where
+/// the start is good to ~1e-3, where the step rule took two.
+pub(crate) fn halley(
+    fdd: impl Fn(f64) -> (f64, f64, f64),
+    lo: f64,
+    hi: f64,
+    guess: f64,
+    rtol: f64,
+    accept: f64,
+) -> Root {
     if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
         // An empty bracket (both ends the same point to rounding): that point is the root.
         return Root { x: lo.min(hi), evaluations: 0 };
@@ -138,8 +154,15 @@ pub(crate) fn halley(fdd: impl Fn(f64) -> (f64, f64, f64), lo: f64, hi: f64, gue
             r.evaluations += k;
             return r;
         }
-        if (x1 - x).abs() <= rtol * x.abs().max(x1.abs()) + f64::MIN_POSITIVE {
+        let (d, scale) = ((x1 - x).abs(), x.abs().max(x1.abs()));
+        if d <= rtol * scale + f64::MIN_POSITIVE {
             return Root { x: x1, evaluations: k };
+        }
+        if accept > 0.0 && step != newton && d <= 1e-2 * scale {
+            let c = 0.5 * d2 / d1;
+            if (c * c + 1.0 / (6.0 * d1.abs())) * d * d * d <= accept * scale {
+                return Root { x: x1, evaluations: k };
+            }
         }
         x = x1;
     }
@@ -151,6 +174,30 @@ pub(crate) fn halley(fdd: impl Fn(f64) -> (f64, f64, f64), lo: f64, hi: f64, gue
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A predicted error below `accept` ends Halley's method one evaluation
+    /// early, with the next iterate within it; not after a Newton step, a step
+    /// above 1e-2, or a predicted error above `accept`.
+    #[test]
+    fn halley_accepts_a_predicted_error() {
+        // sin x - 1/2 on [0, 1] (|f'''| <= 1), root pi/6, from 1e-4 and 3e-3 off.
+        let root = std::f64::consts::FRAC_PI_6;
+        let fdd = |x: f64| (x.sin() - 0.5, x.cos(), -x.sin());
+        for (off, accept, evaluations) in [(1e-4, 1e-10, 1), (1e-4, 0.0, 2), (3e-3, 1e-10, 2), (3e-3, 1e-7, 1)] {
+            let r = halley(fdd, 0.0, 1.0, root + off, 1e-6, accept);
+            assert_eq!(r.evaluations, evaluations, "off {off} accept {accept}");
+            assert!((r.x - root).abs() <= accept.max(1e-15) * root, "off {off}: {:e}", r.x - root);
+        }
+        // Predicted errors: (f''/2f')^2 + 1/(6 f') = 0.083 + 0.19 times d^3 = 1e-12
+        // for d = 1e-4 (accepted at 1e-10, not at 1e-13).
+        assert_eq!(halley(fdd, 0.0, 1.0, root + 1e-4, 1e-6, 1e-13).evaluations, 2);
+        // A step above 1e-2 relative is not accepted, whatever the prediction
+        // (the second, ~1e-3, is).
+        assert_eq!(halley(fdd, 0.0, 1.0, root + 0.1, 1e-6, 1.0).evaluations, 2);
+        // Nor a Newton step (the correction outside [1/2, 2]: here f'' huge).
+        let newton = |x: f64| (x - 0.5, 1.0, 1e6);
+        assert_eq!(halley(newton, 0.0, 1.0, 0.5 + 1e-4, 1e-9, 1.0).evaluations, 2);
+    }
 
     #[test]
     fn finds_a_simple_root_to_the_requested_tolerance() {
@@ -211,18 +258,18 @@ mod halley_tests {
     #[test]
     fn halley_converges_cubically_from_a_close_guess() {
         // From 1.4 (error 1e-2): errors 1e-6 and 1e-19, and the third step is below 1e-10.
-        let r = halley(|x| (x * x * x - 2.0 * x, 3.0 * x * x - 2.0, 6.0 * x), 1.0, 2.0, 1.4, 1e-10);
+        let r = halley(|x| (x * x * x - 2.0 * x, 3.0 * x * x - 2.0, 6.0 * x), 1.0, 2.0, 1.4, 1e-10, 0.0);
         assert!((r.x - std::f64::consts::SQRT_2).abs() <= 2.3e-16, "{}", r.x);
         assert_eq!(r.evaluations, 3);
         // Newton (f'' = 0 given) needs a fourth.
-        let n = halley(|x| (x * x * x - 2.0 * x, 3.0 * x * x - 2.0, 0.0), 1.0, 2.0, 1.4, 1e-10);
+        let n = halley(|x| (x * x * x - 2.0 * x, 3.0 * x * x - 2.0, 0.0), 1.0, 2.0, 1.4, 1e-10, 0.0);
         assert_eq!(n.evaluations, 4);
     }
 
     #[test]
     fn halley_leaving_the_bracket_falls_back_to_regula_falsi() {
         // From 0.1 the first step of x^2 - 2 leaves [0, 2].
-        let r = halley(|x| (x * x - 2.0, 2.0 * x, 2.0), 0.0, 2.0, 0.1, 1e-14);
+        let r = halley(|x| (x * x - 2.0, 2.0 * x, 2.0), 0.0, 2.0, 0.1, 1e-14, 0.0);
         assert!((r.x - std::f64::consts::SQRT_2).abs() < 1e-14);
         assert!(r.evaluations > 3, "{}", r.evaluations);
     }
@@ -234,17 +281,17 @@ mod halley_tests {
         let f = |x: f64| x * x - 2.0;
         let plain = bracketed(f, 0.0, 2.0, 1e-14);
         // Leaves the bracket at the first step.
-        let out = halley(|x| (f(x), 2.0 * x, 2.0), 0.0, 2.0, 0.1, 1e-14);
+        let out = halley(|x| (f(x), 2.0 * x, 2.0), 0.0, 2.0, 0.1, 1e-14, 0.0);
         assert_eq!(out.evaluations, 1 + plain.evaluations);
         // A derivative 1000x too large: tiny steps, all inside, never converged.
-        let slow = halley(|x| (f(x), 2000.0 * x, 0.0), 0.0, 2.0, 1.0, 1e-14);
+        let slow = halley(|x| (f(x), 2000.0 * x, 0.0), 0.0, 2.0, 1.0, 1e-14, 0.0);
         assert_eq!(slow.evaluations, HALLEY_MAX_STEPS + plain.evaluations);
         assert!((slow.x - std::f64::consts::SQRT_2).abs() < 1e-14);
     }
 
     #[test]
     fn a_root_at_the_guess_costs_one_evaluation() {
-        assert_eq!(halley(|x| (x - 1.0, 1.0, 0.0), 0.0, 2.0, 1.0, 1e-10), Root { x: 1.0, evaluations: 1 });
+        assert_eq!(halley(|x| (x - 1.0, 1.0, 0.0), 0.0, 2.0, 1.0, 1e-10, 0.0), Root { x: 1.0, evaluations: 1 });
     }
 }
 
@@ -254,7 +301,7 @@ mod empty_bracket_tests {
 
     #[test]
     fn an_inverted_or_empty_bracket_returns_without_panicking() {
-        let r = halley(|x| (x, 1.0, 0.0), 2.2e-16, 0.0, 1.0, 1e-10);
+        let r = halley(|x| (x, 1.0, 0.0), 2.2e-16, 0.0, 1.0, 1e-10, 0.0);
         assert_eq!((r.x, r.evaluations), (0.0, 0));
         assert_eq!(bracketed(|x| x, 1.0, 1.0, 1e-10).x, 1.0);
     }
