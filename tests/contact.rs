@@ -202,6 +202,12 @@ fn the_shape_api_names_checks_and_bounds() {
         checked += 1;
     }
     assert!(checked >= 10, "{checked} flat references");
+    // At amp = 1 mu = pi vbar (1 + O(vbar)): subnormal at vbar = 1e-320, where
+    // the estimate's relative part underflows and the subnormals' spacing is the bound.
+    let vbar = 1e-320;
+    let e = flat.evaluate(vbar, 1.0).unwrap();
+    let error = (e.ratio.mu_ratio - std::f64::consts::PI * vbar).abs();
+    assert!(e.error_estimate >= f64::from_bits(1) && error <= e.error_estimate, "{e:?}");
 }
 
 /// The regimes' names as outputs print them: each variant's `name` is its
