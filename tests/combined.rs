@@ -80,7 +80,35 @@ fn flat_punch_matches_the_forty_digit_values_and_events() {
         assert!(rel <= 1e-12, "{case}: relative error {rel:e}");
         worst_rel = worst_rel.max(rel);
         let spring = r.spring.expect("the flat punch reports its spring");
+        // Each event's normal force is the bound 1 - amp cos(tau) there (0 out
+        // of contact); a slip's tangential force is +-that bound, a stick's within it.
+        let amp = num(case, "amp");
+        for ev in &spring.events {
+            let bound = (1.0 - amp * ev.tau.cos()).max(0.0);
+            // Within the rounding of tau (an ulp of up to 2 pi, times amp sin tau).
+            assert!((ev.normal - bound).abs() <= 2e-15 * (1.0 + amp), "{case}: {ev:?}");
+            match ev.kind {
+                "forward" => assert_eq!(ev.tangential, ev.normal, "{case}: {ev:?}"),
+                "backward" => assert_eq!(ev.tangential, -ev.normal, "{case}: {ev:?}"),
+                "stick" => assert!(ev.tangential.abs() <= ev.normal * (1.0 + 1e-15), "{case}: {ev:?}"),
+                _ => assert_eq!((ev.normal, ev.tangential), (0.0, 0.0), "{case}: {ev:?}"),
+            }
+        }
         let want = reference_events(case);
+        // The regime's name: the contact, then the phases the reference's events start.
+        let contact = match spring.contact {
+            fricosc::stop::Contact::Never => "never",
+            fricosc::stop::Contact::Permanent => "permanent",
+            fricosc::stop::Contact::Jumping => "jumping",
+        };
+        let (head, phases) = spring.regime.split_once(": ").unwrap_or((&spring.regime, ""));
+        assert_eq!(head, contact, "{case}: {}", spring.regime);
+        let named: std::collections::BTreeSet<&str> = phases.split(", ").filter(|k| !k.is_empty()).collect();
+        let started: std::collections::BTreeSet<&str> =
+            case["events"].as_array().unwrap().iter().map(|e| text(e, "starts")).filter(|&k| k != "none").collect();
+        if !started.is_empty() {
+            assert_eq!(named, started, "{case}: {}", spring.regime);
+        }
         let got: Vec<_> = spring.events.iter().filter(|e| e.tau >= 0.0).collect();
         // vhat = 0 (the limit vhat -> 0+): the reference scan sees no event where
         // the solver reports the limit's; compare only where the reference has them.
