@@ -66,7 +66,7 @@ fn circle_error(got: f64, exact: &str) -> f64 {
 
 #[test]
 fn flat_punch_matches_the_forty_digit_values_and_events() {
-    let (mut worst, mut worst_event, mut worst_rel) = (0.0f64, 0.0f64, 0.0f64);
+    let (mut worst, mut worst_event, mut worst_rel, mut worst_estimate) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for case in reference()["cases"].as_array().unwrap() {
         let o = osc(num(case, "amp"), num(case, "vhat"), num(case, "tangential_amp"), num(case, "phase"));
         let r = evaluate(&Shape::flat(), &o, DEFAULT_TOL).unwrap();
@@ -74,6 +74,12 @@ fn flat_punch_matches_the_forty_digit_values_and_events() {
         let e_red = exact_error(r.ratio.reduction, text(case, "reduction"));
         assert!(e_mu <= 1e-14 && e_red <= 1e-14, "{case}: mu {e_mu:e} reduction {e_red:e}");
         assert!(e_mu <= r.error_estimate && e_red <= r.error_estimate, "{case}: estimate {:e}", r.error_estimate);
+        // And it is a few eps of the period's swings over the mean normal force
+        // (the phases' integrals are closed forms of a few terms): a bound, not a constant.
+        let (amp, t, vhat) = (num(case, "amp"), num(case, "tangential_amp"), num(case, "vhat"));
+        let swings = (1.0 + amp + t + TAU * vhat) / fricosc::flat::mean_normal(amp);
+        assert!(r.error_estimate <= 16.0 * f64::EPSILON * swings, "{case}: estimate {:e}", r.error_estimate);
+        worst_estimate = worst_estimate.max(r.error_estimate);
         worst = worst.max(e_mu).max(e_red);
         // Small values keep their relative accuracy.
         let rel = e_mu / r.ratio.mu_ratio.abs();
@@ -124,7 +130,7 @@ fn flat_punch_matches_the_forty_digit_values_and_events() {
         }
     }
     // Regression bars (~10x the observed worst).
-    eprintln!("worst {worst:e} relative {worst_rel:e} events {worst_event:e}");
+    eprintln!("worst {worst:e} relative {worst_rel:e} events {worst_event:e} largest estimate {worst_estimate:e}");
     assert!(worst <= 2e-15, "worst value error {worst:e}");
     assert!(worst_rel <= 1e-13, "worst relative error {worst_rel:e}");
     assert!(worst_event <= 1e-14, "worst event error {worst_event:e}");
