@@ -337,6 +337,27 @@ fn curved_contacts_agree_with_an_independent_quadrature_within_their_estimate() 
                 r.error_estimate
             );
             if tol == DEFAULT_TOL {
+                // Each band is named after what the spring at its middle does.
+                let d = Drive { vhat: o.vhat, t: o.tangential_amp, phase: o.phase };
+                assert!(!r.bands.is_empty(), "n {n} {o:?}");
+                for band in &r.bands {
+                    let z = 0.5 * (band.from + band.to);
+                    let (contact, kinds) = sequence(Bound { c: 1.0 - z.powf(n), amp: o.amp }, d);
+                    let contact = match contact {
+                        fricosc::stop::Contact::Never => "never",
+                        fricosc::stop::Contact::Permanent => "permanent",
+                        fricosc::stop::Contact::Jumping => "jumping",
+                    };
+                    let kinds: Vec<&str> = kinds
+                        .iter()
+                        .map(|k| match k {
+                            StopKind::Stick => "stick",
+                            StopKind::Forward => "forward",
+                            StopKind::Backward => "backward",
+                        })
+                        .collect();
+                    assert_eq!(band.regime, format!("{contact}: {}", kinds.join(", ")), "n {n} {o:?}: {band:?}");
+                }
                 assert!(e <= 1e-13, "n {n} {o:?}: error {e:e}");
                 assert!(r.error_estimate <= 1e-12, "n {n} {o:?}: estimate {:e}", r.error_estimate);
             }
