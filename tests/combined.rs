@@ -340,6 +340,9 @@ fn curved_contacts_agree_with_an_independent_quadrature_within_their_estimate() 
                 // Each band is named after what the spring at its middle does.
                 let d = Drive { vhat: o.vhat, t: o.tangential_amp, phase: o.phase };
                 assert!(!r.bands.is_empty(), "n {n} {o:?}");
+                // The bands' shares of <f> add up to the whole.
+                let total: f64 = r.bands.iter().map(|b| b.share).sum();
+                assert!((total - 1.0).abs() <= 1e-12, "n {n} {o:?}: shares add up to {total}");
                 for band in &r.bands {
                     let z = 0.5 * (band.from + band.to);
                     let (contact, kinds) = sequence(Bound { c: 1.0 - z.powf(n), amp: o.amp }, d);
