@@ -33,12 +33,12 @@
 //! near 1, or `amp c` near 1) is split geometrically towards its top, so that
 //! every piece is at least its own width away from it (Gauss converges
 //! geometrically on each). `y` is always evaluated in a cancellation-free form.
-//! Each piece is integrated at orders 4, 8, 16, ...: it is accepted when the
-//! difference of the first two orders is within the relative tolerance (that
-//! difference is then the error estimate), or later when the error of the last
-//! order predicted by geometric convergence from the last three, `100 d^3/d'^2`
-//! (`d`, `d'` the last two differences, capped at `d`), is; the estimates of the
-//! pieces add up to the reported one.
+//! Each piece is integrated at orders 16, 32, ... (8, 16, ... at loose
+//! tolerances): it is accepted when the truncation error predicted from the
+//! decay of the integrand's discrete orthogonal-polynomial coefficients at the
+//! same nodes (`quad::Rule::truncation`; from the second order on, at most the
+//! difference of the last two orders) is within the relative tolerance; the
+//! estimates of the pieces add up to the reported one.
 
 mod foundation;
 mod normal;
