@@ -535,3 +535,60 @@ fn a_drive_that_moves_with_the_bound_pushes_with_full_friction() {
         assert!(r.bands.len() <= 4, "{spec}: {} bands", r.bands.len());
     }
 }
+
+/// `always_forward` against its definition, `h = X' - B' = vhat + T cos(tau +
+/// phase) - amp sin tau >= 0` for all `tau`, by a 20,000-point scan of `h`
+/// (points within 1e-6 of the boundary `vhat = min h + vhat` are skipped: the
+/// scan's own error). With it true, every spring slips forward: `mu = 1`.
+#[test]
+fn always_forward_is_where_the_drive_outruns_the_bound() {
+    let (mut checked, mut forward) = (0, 0);
+    for amp in [0.0, 0.3, 1.0, 2.5] {
+        for t in [0.0, 0.4, 1.0, 3.0] {
+            for phase in [0.0, 1.0, PI / 2.0, 4.0] {
+                let min_osc = (0..20_000)
+                    .map(|i| {
+                        let tau = TAU * i as f64 / 20_000.0;
+                        t * (tau + phase).cos() - amp * tau.sin()
+                    })
+                    .fold(f64::INFINITY, f64::min);
+                for vhat in [0.05, 0.5, 1.0, 2.0, 3.5] {
+                    if (vhat + min_osc).abs() < 1e-6 {
+                        continue;
+                    }
+                    let d = Drive { vhat, t, phase };
+                    let expect = vhat + min_osc > 0.0;
+                    assert_eq!(
+                        fricosc::stop::always_forward(amp, d),
+                        expect,
+                        "amp {amp} T {t} phase {phase} vhat {vhat}"
+                    );
+                    checked += 1;
+                    if expect {
+                        forward += 1;
+                        let s = solve(Bound { c: 1.0 + amp, amp }, d);
+                        assert!(s.phases.iter().all(|p| p.kind == StopKind::Forward), "{:?}", s.phases);
+                    }
+                }
+            }
+        }
+    }
+    // Both answers are exercised (the drives with T = 0 and vhat > amp slip throughout).
+    assert!(forward > 20 && checked - forward > 20, "{forward} of {checked}");
+}
+
+/// A spring whose level stays below the oscillation's trough (`c <= -amp`, or
+/// `c <= 0` without oscillation) never touches: no phase, no force.
+#[test]
+fn a_spring_below_the_trough_never_touches() {
+    let d = Drive { vhat: 0.3, t: 0.5, phase: 1.0 };
+    for (c, amp) in [(-2.0, 1.0), (-1.0, 1.0), (-0.5, 0.0), (0.0, 0.0)] {
+        let s = solve(Bound { c, amp }, d);
+        assert_eq!(s.contact, fricosc::stop::Contact::Never, "c {c} amp {amp}");
+        assert!(s.phases.is_empty());
+        assert_eq!((s.mean_force, s.mean_bound, s.mean_deficit), (0.0, 0.0, 0.0));
+        assert_eq!(fricosc::stop::force_at(&s, Bound { c, amp }, d, 2.0), 0.0);
+    }
+    // Just above the trough it touches, briefly.
+    assert_eq!(solve(Bound { c: -0.999, amp: 1.0 }, d).contact, fricosc::stop::Contact::Jumping);
+}

@@ -267,9 +267,7 @@ pub fn solve(b: Bound, d: Drive) -> StopSpring {
             StopKind::Stick => stick_end(b, d, tau, margins, hi, (r, psi), (r2, psi2)),
         };
         phases.push(StopPhase { kind, start: tau, end, force });
-        // B at the start: |f| on a slip, f + (B - f) in a stick (0 at the contact).
-        let b_start = if kind == StopKind::Stick { force + margins.0 } else { force.abs() };
-        let (f, dd) = phase_integrals(b, d, kind, (tau, end), force, b_start, margins.0);
+        let (f, dd) = phase_integrals(b, d, kind, (tau, end), force, margins.0);
         sum_f += f;
         sum_d += dd;
         if end >= hi {
@@ -342,25 +340,20 @@ fn first_crossing(g: &dyn Fn(f64) -> f64, lo: f64, hi: f64, z: Option<(f64, f64)
 }
 
 /// `(int f, int (B - f))` over the phase `kind` on `(a, e)`, from the force
-/// `f0`, the bound `b_start` and (in a stick) the margin `up = B - f` at its start.
-fn phase_integrals(
-    b: Bound,
-    d: Drive,
-    kind: StopKind,
-    (a, e): (f64, f64),
-    f0: f64,
-    b_start: f64,
-    up: f64,
-) -> (f64, f64) {
+/// `f0` (on a slip `+-B`) and, in a stick, the margin `up = B - f` at its start.
+fn phase_integrals(b: Bound, d: Drive, kind: StopKind, (a, e): (f64, f64), f0: f64, up: f64) -> (f64, f64) {
     let l = e - a;
     if l <= 0.0 {
         return (0.0, 0.0);
     }
-    // int B = B(a) L + int (B - B(a)).
-    let int_b = b_start * l + b.rise_integral(a, e);
+    // On a slip int B = B(a) L + int (B - B(a)), B(a) = |f0|.
+    let int_b = || f0.abs() * l + b.rise_integral(a, e);
     match kind {
-        StopKind::Forward => (int_b, 0.0),
-        StopKind::Backward => (-int_b, 2.0 * int_b),
+        StopKind::Forward => (int_b(), 0.0),
+        StopKind::Backward => {
+            let i = int_b();
+            (-i, 2.0 * i)
+        }
         // B - f = (B(a) - f0) + (B - B(a)) - (X - X(a)).
         StopKind::Stick => {
             let x = d.stick_integral(a, e);
