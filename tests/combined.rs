@@ -592,3 +592,65 @@ fn a_spring_below_the_trough_never_touches() {
     // Just above the trough it touches, briefly.
     assert_eq!(solve(Bound { c: -0.999, amp: 1.0 }, d).contact, fricosc::stop::Contact::Jumping);
 }
+
+/// The steady state of one spring obeys Coulomb's law at every instant, checked
+/// on a 4,000-point grid of the period for 832 springs (levels from below the
+/// trough to permanent contact, drives from slow to outrunning): `|f| <= B`
+/// (within 1e-12), the force continuous from phase to phase and periodic over a
+/// permanent window, forward slips only while the drive outruns the bound (`X' >=
+/// B'`), backward ones while `X' <= -B'`, and the means the grid's trapezoidal
+/// means to its accuracy. A missed event (a stick carried past `+-B`) fails the
+/// first check, a wrong slip the third, a wrong phase integral the last.
+#[test]
+fn every_spring_obeys_coulombs_law_at_every_instant() {
+    use fricosc::stop::{force_at, Contact};
+    const GRID: usize = 4000;
+    let mut cases = 0;
+    for c in [-0.5, 0.2, 0.9, 1.0, 1.7] {
+        for amp in [0.0, 0.5, 1.2] {
+            for vhat in [0.0, 0.1, 0.6, 2.0] {
+                for t in [0.0, 0.5, 1.5, 4.0] {
+                    for phase in [0.0, 1.3, PI, 5.0] {
+                        let (b, d) = (Bound { c, amp }, Drive { vhat, t, phase });
+                        let s = solve(b, d);
+                        if s.contact == Contact::Never {
+                            continue;
+                        }
+                        cases += 1;
+                        let what = format!("c {c} amp {amp} vhat {vhat} T {t} phase {phase}");
+                        let bound = |tau: f64| (c - amp * tau.cos()).max(0.0);
+                        let (lo, hi) = s.window;
+                        // |f| <= B on the window's grid, and the trapezoidal mean.
+                        let mut sum = 0.0;
+                        for i in 0..=GRID {
+                            let tau = lo + (hi - lo) * i as f64 / GRID as f64;
+                            let f = force_at(&s, b, d, tau);
+                            assert!(f.abs() <= bound(tau) + 1e-12, "{what}: f {f} beyond B {} at {tau}", bound(tau));
+                            sum += if i == 0 || i == GRID { 0.5 * f } else { f };
+                        }
+                        let mean = sum * (hi - lo) / GRID as f64 / TAU;
+                        assert!((mean - s.mean_force).abs() < 1e-5, "{what}: mean {} vs grid {mean}", s.mean_force);
+                        for w in s.phases.windows(2) {
+                            let end = force_at(&s, b, d, w[1].start - 1e-13);
+                            assert!((end - w[1].force).abs() < 1e-9, "{what}: {end} then {}", w[1].force);
+                        }
+                        if s.contact == Contact::Permanent {
+                            let (first, last) = (s.phases[0], s.phases[s.phases.len() - 1]);
+                            let end = force_at(&s, b, d, last.end - 1e-13);
+                            assert!((end - first.force).abs() < 1e-9, "{what}: not periodic: {end} vs {}", first.force);
+                        }
+                        for p in s.phases.iter().filter(|p| p.kind != StopKind::Stick) {
+                            for i in 1..20 {
+                                let tau = p.start + (p.end - p.start) * i as f64 / 20.0;
+                                let (xp, bp) = (vhat + t * (tau + phase).cos(), amp * tau.sin());
+                                let ok = if p.kind == StopKind::Forward { xp >= bp - 1e-9 } else { xp <= -bp + 1e-9 };
+                                assert!(ok, "{what}: {:?} slip at {tau} with X' {xp}, B' {bp}", p.kind);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(cases >= 800, "{cases}");
+}
