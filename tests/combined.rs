@@ -626,6 +626,13 @@ fn every_spring_obeys_coulombs_law_at_every_instant() {
                             let tau = lo + (hi - lo) * i as f64 / GRID as f64;
                             let f = force_at(&s, b, d, tau);
                             assert!(f.abs() <= bound(tau) + 1e-12, "{what}: f {f} beyond B {} at {tau}", bound(tau));
+                            if i % 97 == 1 {
+                                // Any phase is reduced to the period.
+                                for k in [-2.0, 3.0] {
+                                    let g = force_at(&s, b, d, tau + k * TAU);
+                                    assert!((g - f).abs() < 1e-9, "{what}: {g} at {tau} + {k} periods, {f} at {tau}");
+                                }
+                            }
                             sum += if i == 0 || i == GRID { 0.5 * f } else { f };
                         }
                         let mean = sum * (hi - lo) / GRID as f64 / TAU;
