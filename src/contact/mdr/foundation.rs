@@ -44,9 +44,11 @@ const JACOBIAN_LEVELS: i32 = 90;
 /// The integrand is analytic in a strip about the real `t` axis (half-width
 /// about `pi/2` where the Jacobian's complex zeros set it), so a segment's
 /// convergence does not depend on how close the singularities lie; its length
-/// was chosen by measurement: 2.0, 3.0 and 4.0 cost 0.1 %, 1.3 % and 0.9 %
-/// more instructions on the parabolic table of `fricosc bench`.
-const SEGMENT: f64 = 2.5;
+/// was chosen by measurement (callgrind, the bench's 10 x 100 grid for `n = 2`,
+/// once each order carried its own estimate): 2.0, 2.5, 3.0, 3.5, 4.0, 5.0 and
+/// 7.0 cost 55.8, 56.2, 54.7, 52.8, 50.6, 54.2 and 55.0 million instructions;
+/// 4.0 against 2.5 saves 10 %, 8 % and 2 % for `n` = 1, 3 and 0.5 too.
+const SEGMENT: f64 = 4.0;
 /// A side of a mapped band whose singularity lies beyond `GRADE_RATIO` of
 /// the width is mapped as if it lay this many widths away (nearly linear there).
 const FAR_SIDE: f64 = 64.0;
