@@ -275,8 +275,45 @@ mod tests {
         }
         let (_, est) = sum_and_estimate(&gauss_jacobi(16, 0.0), |x| 1.0 + x * (2.0 - x * x * x));
         assert!(est < 1e-15, "{est:e}");
-        // Order 8 claims no decay: the estimate is 2 sqrt(2) times the top coefficients.
         assert!(gauss_jacobi(4, 0.0).truncation(&[0.0; TAIL_ROWS]).is_none());
+    }
+
+    /// The tail rows are the orthonormal polynomials of each Jacobi weight: a
+    /// polynomial of lower degree has no coefficient there (a wrong recurrence
+    /// leaves one), and each row's `p_k` has `int w p_k^2 = 1` by the rule (exact
+    /// to degree `2m - 1`).
+    #[test]
+    fn the_tail_rows_are_the_weights_orthonormal_polynomials() {
+        for beta in [0.0, -0.5, -0.875, 0.3, 1.0] {
+            for m in [8, 16, 32] {
+                let r = gauss_jacobi(m, beta);
+                let coef = |f: &dyn Fn(f64) -> f64| -> [f64; TAIL_ROWS] {
+                    let mut c = [0.0; TAIL_ROWS];
+                    for (i, &x) in r.nodes.iter().enumerate() {
+                        for (ck, t) in c.iter_mut().zip(&r.tail[i]) {
+                            *ck += t * f(x);
+                        }
+                    }
+                    c
+                };
+                // Below the lowest degree held: 2 at order 8, 4 from 16 on.
+                let c = if m == 8 { coef(&|x| 1.0 + x) } else { coef(&|x| 1.0 + x - 3.0 * x * x * x) };
+                // Rounding: up to 5e-13 at beta = -0.875 (the weight of power:8's centre).
+                assert!(c.iter().all(|v| v.abs() < 2e-12), "beta {beta} m {m}: {c:?}");
+                // sum_i w_i p_k(x_i)^2 = 1 for every degree held (k < m).
+                for row in 0..TAIL_ROWS {
+                    let norm: f64 =
+                        r.nodes.iter().enumerate().map(|(i, _)| r.tail[i][row].powi(2) / r.weights[i]).sum();
+                    let held = tail_degrees(m)[row].is_some();
+                    assert!(
+                        if held { (norm - 1.0).abs() < 1e-12 } else { norm == 0.0 },
+                        "beta {beta} m {m} row {row}: {norm}"
+                    );
+                }
+            }
+        }
+        assert_eq!(tail_degrees(16), [4, 5, 6, 7, 12, 13, 14, 15].map(Some));
+        assert_eq!(tail_degrees(8), [Some(2), Some(3), None, None, Some(6), Some(7), None, None]);
     }
 
     #[test]
