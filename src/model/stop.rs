@@ -321,8 +321,10 @@ fn stick_end(
 /// through 0: `g` is monotone between the zeros `z` of its derivative, so the
 /// pieces between them hold one sign change at most.
 fn first_crossing(g: &dyn Fn(f64) -> f64, lo: f64, hi: f64, z: Option<(f64, f64)>, rising: bool) -> Option<f64> {
+    // The zeros are the first at or after `lo`, and `hi - lo <= 2 pi`: their
+    // next turns (`+ 2 pi`) lie at or beyond `hi`.
     let mut cuts: Vec<f64> = match z {
-        Some((a, b)) => [a, b, a + TAU, b + TAU].into_iter().filter(|&x| x > lo && x < hi).collect(),
+        Some((a, b)) => [a, b].into_iter().filter(|&x| x > lo && x < hi).collect(),
         None => vec![],
     };
     cuts.sort_by(f64::total_cmp);
