@@ -250,8 +250,9 @@ mod tests {
         (sum, r.truncation(&c).unwrap())
     }
 
-    /// The estimate bounds the error (by 68 to 1.9e5 as measured; checked within
-    /// 20 to 2e6, so that a less cautious claim fails here) on integrands with the
+    /// The estimate bounds the error (by 68 to 1.9e5 as measured, deterministic;
+    /// checked within 40 to 2e6, so that a less cautious claim, or one half as
+    /// large, fails here) on integrands with the
     /// singularities the foundation's pieces see: poles and branch points
     /// beyond an end (exact integrals in closed form), at orders 16 and 32; a
     /// polynomial of degree below the order has no coefficient in either group.
@@ -271,7 +272,7 @@ mod tests {
             let (sum, est) = sum_and_estimate(&gauss_jacobi(*m, 0.0), f);
             let err = (sum - exact).abs();
             assert!(err > 1e-14, "case {k}: the error {err:e} is rounding");
-            assert!(est >= 20.0 * err && est <= 2e6 * err, "case {k}, m {m}: error {err:e}, estimate {est:e}");
+            assert!(est >= 40.0 * err && est <= 2e6 * err, "case {k}, m {m}: error {err:e}, estimate {est:e}");
         }
         let (_, est) = sum_and_estimate(&gauss_jacobi(16, 0.0), |x| 1.0 + x * (2.0 - x * x * x));
         assert!(est < 1e-15, "{est:e}");
