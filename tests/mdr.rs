@@ -333,8 +333,9 @@ fn the_stick_first_band_starting_at_the_centre_threshold() {
 /// of what was measured when the stick-first bands got their mapped segments
 /// (2026-11-24; before them the grid took 60,064 nodes at the default
 /// tolerance, `vbar = 1e-300` 2,664 and the boundary point `amp 5/3, vbar 0.8`
-/// 1,572). A change that spends more nodes for the same bound fails here;
-/// one that spends fewer updates the figures.
+/// 1,572). A change that spends more nodes for the same bound fails here, and
+/// so does one that spends fewer: it updates the figures, or it accepts pieces
+/// more easily than the tolerance allows.
 #[test]
 fn the_node_counts_stay_within_two_percent_of_the_measured() {
     let grid_nodes = |opts: &Options| -> usize {
@@ -344,7 +345,10 @@ fn the_node_counts_stay_within_two_percent_of_the_measured() {
             .sum()
     };
     let within = |got: usize, measured: usize, what: &str| {
-        assert!(got as f64 <= 1.02 * measured as f64, "{what}: {got} nodes, measured {measured}");
+        // Both ways: fewer nodes for the same tolerance means a piece accepted
+        // more easily than the estimate allows (the threshold's arithmetic mutated).
+        let ratio = got as f64 / measured as f64;
+        assert!((0.98..=1.02).contains(&ratio), "{what}: {got} nodes, measured {measured}");
     };
     // The parabolic table of `fricosc bench`: 10 x 100 points, amp 0 to 3, vbar 0 to 1.2.
     // Measured again when the order ladder 4-8-16 gave way to one order's own
