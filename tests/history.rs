@@ -44,3 +44,73 @@ fn mdr_history_averages_to_the_exact_mu() {
     assert!((mean(&c) / mean(&cn) - flat).abs() < 1e-6);
     assert!(h.samples.iter().any(|s| s.springs[1][0] == 0.0), "the spring at 1.1 x_c loses contact");
 }
+
+/// The limit a request exceeds, with its count and limit, or `None`.
+fn too_large(shape: &Shape, amp: f64, o: &HistoryOptions) -> Option<(u128, u128)> {
+    match history(shape, 0.3, amp, o) {
+        Err(fricosc::Error::TooLarge { count, limit, .. }) => Some((count, limit)),
+        Err(e) => panic!("{e}"),
+        Ok(_) => None,
+    }
+}
+
+/// Every limit of the library's histories is checked before any work, with
+/// the counts of README's limits table computed here on their own: rows =
+/// samples + 1 (+ 4 events a period for the flat punch), chosen-spring values
+/// = rows x positions, spring evaluations = rows x springs; and the builders
+/// set what they name. (The command line's own tests go through the same
+/// checks; these read them without it.)
+#[test]
+fn every_history_limit_is_enforced_with_its_count() {
+    use fricosc::history::{MAX_SAMPLES, MAX_SPRINGS, MAX_SPRING_WORK};
+    let o = HistoryOptions::default();
+    assert_eq!(o.clone().with_periods(3).periods, 3);
+    assert_eq!(o.clone().with_springs(7).springs, 7);
+    assert_eq!(o.clone().with_samples(9).samples, 9);
+    let (flat, para) = (Shape::flat(), Shape::parabolic());
+    let max_rows = MAX_SAMPLES as u128;
+    // Springs: the limit itself is accepted (and cheap at two rows), one more is not.
+    let springs = |n: usize| o.clone().with_samples(1).with_springs(n);
+    assert_eq!(too_large(&para, 0.5, &springs(MAX_SPRINGS)), None);
+    assert_eq!(too_large(&para, 0.5, &springs(MAX_SPRINGS + 1)), Some((MAX_SPRINGS as u128 + 1, MAX_SPRINGS as u128)));
+    // Rows of the flat punch: samples + 1 + 4 periods.
+    let rows = o.clone().with_periods(3).with_samples(MAX_SAMPLES - 12).with_springs(1);
+    assert_eq!(too_large(&flat, 0.5, &rows), Some((max_rows + 1, max_rows)));
+    // Rows of a curved shape: samples + 1 (no events).
+    let rows = o.clone().with_periods(3).with_samples(MAX_SAMPLES).with_springs(1);
+    assert_eq!(too_large(&para, 0.5, &rows), Some((max_rows + 1, max_rows)));
+    // Chosen-spring values: rows x positions.
+    let chosen = o.clone().with_samples(999).with_springs(1).with_spring_at(vec![0.5; 10_001]);
+    assert_eq!(too_large(&para, 0.5, &chosen), Some((1000 * 10_001, max_rows)));
+    // Spring evaluations: rows x springs.
+    let work = o.clone().with_samples(4001).with_springs(1_000_000);
+    assert_eq!(too_large(&para, 0.5, &work), Some((4002 * 1_000_000, MAX_SPRING_WORK)));
+    assert!(MAX_SPRING_WORK < 4002 * 1_000_000 && MAX_SPRING_WORK >= 3999 * 1_000_000);
+}
+
+/// The uniform samples lie at `2 pi periods j / samples`, events between them;
+/// a curved shape's amplitude is refused below 1e-300 (its springs' `s = (1 -
+/// G)/amp` overflows) and where its normal force overflows, and accepted at 0.
+#[test]
+fn history_samples_and_the_curved_amplitudes_refused() {
+    use fricosc::history::MIN_CURVED_AMP;
+    let h = history(&Shape::flat(), 0.3, 0.5, &HistoryOptions::default().with_periods(2).with_samples(8)).unwrap();
+    let uniform: Vec<f64> = h.samples.iter().filter(|s| s.event.is_none()).map(|s| s.tau).collect();
+    assert_eq!(uniform.len(), 9);
+    for (j, tau) in uniform.iter().enumerate() {
+        assert!((tau - 4.0 * std::f64::consts::PI * j as f64 / 8.0).abs() < 1e-14, "{j}: {tau}");
+    }
+    let refused = |shape: &Shape, amp: f64| {
+        matches!(history(shape, 0.3, amp, &HistoryOptions::default()), Err(fricosc::Error::InvalidParameter { .. }))
+    };
+    let para = Shape::parabolic();
+    assert!(refused(&para, MIN_CURVED_AMP / 2.0));
+    assert!(!refused(&para, MIN_CURVED_AMP));
+    assert!(!refused(&para, 0.0));
+    // The flat punch has no such floor.
+    assert!(!refused(&Shape::flat(), MIN_CURVED_AMP / 2.0));
+    // power:0.05: the force grows as amp^(1 + 1/n) = amp^21, which overflows beyond ~1e14.
+    let steep = Shape::power(0.05).unwrap();
+    assert!(refused(&steep, 1e20));
+    assert!(!refused(&steep, 1e10));
+}
