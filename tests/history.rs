@@ -87,7 +87,8 @@ fn every_history_limit_is_enforced_with_its_count() {
     assert_eq!(too_large(&para, 0.5, &work), Some((4002 * 1_000_000, MAX_SPRING_WORK)));
 }
 
-/// The uniform samples lie at `2 pi periods j / samples`, events between them;
+/// The uniform samples lie at `2 pi periods j / samples`, events between them
+/// (each period's the same, one period on);
 /// a curved shape's amplitude is refused below 1e-300 (its springs' `s = (1 -
 /// G)/amp` overflows) and where its normal force overflows, and accepted at 0.
 #[test]
@@ -98,6 +99,13 @@ fn history_samples_and_the_curved_amplitudes_refused() {
     assert_eq!(uniform.len(), 9);
     for (j, tau) in uniform.iter().enumerate() {
         assert!((tau - 4.0 * std::f64::consts::PI * j as f64 / 8.0).abs() < 1e-14, "{j}: {tau}");
+    }
+    // The second period's events are the first's, one period on.
+    let events: Vec<f64> = h.samples.iter().filter(|s| s.event.is_some()).map(|s| s.tau).collect();
+    let half = events.len() / 2;
+    assert!(half >= 2 && events.len() == 2 * half, "{events:?}");
+    for k in 0..half {
+        assert!((events[k + half] - events[k] - std::f64::consts::TAU).abs() < 1e-13, "{events:?}");
     }
     let refused = |shape: &Shape, amp: f64| {
         matches!(history(shape, 0.3, amp, &HistoryOptions::default()), Err(fricosc::Error::InvalidParameter { .. }))
