@@ -121,3 +121,31 @@ fn history_samples_and_the_curved_amplitudes_refused() {
     assert!(refused(&steep, 1e20));
     assert!(!refused(&steep, 1e10));
 }
+
+/// A chosen spring of the paraboloid at `x` (level `1 - x^2`) is the flat punch
+/// at amplitude `amp/(1 - x^2)`, scaled by its level: its normal force is
+/// `(1 - x^2 - amp cos tau)_+`, its tangential force at most that, and the
+/// ratio of their period means the flat punch's `mu` (trapezoid rule, 20,000 samples).
+#[test]
+fn chosen_springs_are_flat_punches_at_their_level() {
+    let (vbar, amp) = (0.3, 0.6);
+    let xs = vec![0.0, 0.5, 0.8];
+    let o = HistoryOptions::default().with_samples(20_000).with_springs(50).with_spring_at(xs.clone());
+    let h = history(&Shape::parabolic(), vbar, amp, &o).unwrap();
+    assert_eq!(h.spring_positions, xs);
+    for (k, &x) in xs.iter().enumerate() {
+        let level = 1.0 - x * x;
+        let mut n = vec![];
+        let mut t = vec![];
+        for s in &h.samples {
+            let [nrm, tan] = s.springs[k];
+            let exact = (level - amp * s.tau.cos()).max(0.0);
+            assert!((nrm - exact).abs() < 1e-15, "x {x} tau {}: {nrm} vs {exact}", s.tau);
+            assert!(tan <= nrm + 1e-15 && tan >= -1e-15, "x {x}: {tan} beyond {nrm}");
+            n.push((s.tau, nrm));
+            t.push((s.tau, tan));
+        }
+        let flat = Shape::flat().evaluate(vbar, amp / level).unwrap().ratio.mu_ratio;
+        assert!((mean(&t) / mean(&n) - flat).abs() < 1e-6, "x {x}: {} vs {flat}", mean(&t) / mean(&n));
+    }
+}
