@@ -107,6 +107,7 @@ fn history_samples_and_the_curved_amplitudes_refused() {
     for k in 0..half {
         assert!((events[k + half] - events[k] - std::f64::consts::TAU).abs() < 1e-13, "{events:?}");
     }
+    assert!(h.samples.iter().all(|s| (0.0..=4.0 * std::f64::consts::PI).contains(&s.tau)));
     let refused = |shape: &Shape, amp: f64| {
         matches!(history(shape, 0.3, amp, &HistoryOptions::default()), Err(fricosc::Error::InvalidParameter { .. }))
     };
@@ -114,6 +115,14 @@ fn history_samples_and_the_curved_amplitudes_refused() {
     assert!(refused(&para, MIN_CURVED_AMP / 2.0));
     assert!(!refused(&para, MIN_CURVED_AMP));
     assert!(!refused(&para, 0.0));
+    // Without oscillation every spring slides: the tangential force is the normal one,
+    // for the contact and for a chosen spring.
+    let still = history(&para, 0.3, 0.0, &HistoryOptions::default().with_samples(4).with_spring_at(vec![0.3])).unwrap();
+    for s in &still.samples {
+        assert_eq!(s.tangential, s.normal);
+        assert_eq!(s.springs[0][1], s.springs[0][0]);
+        assert!((s.springs[0][0] - 0.91).abs() < 1e-15);
+    }
     // The flat punch has no such floor.
     assert!(!refused(&Shape::flat(), MIN_CURVED_AMP / 2.0));
     // power:0.05: the force grows as amp^(1 + 1/n) = amp^21, which overflows beyond ~1e14.
