@@ -123,10 +123,9 @@ impl Acc {
 
     /// The pass, every sum times `scale`.
     fn finish(&self, rule: &quad::Rule, scale: f64) -> Pass {
-        let truncation = (0..MEANS)
-            .map(|k| rule.truncation(&self.coef[k]).map(|e| scale.abs() * e))
-            .collect::<Option<Vec<f64>>>()
-            .map(|v| std::array::from_fn(|k| v[k]));
+        // Every mean has an estimate, or (below order 8) none has.
+        let t = self.coef.each_ref().map(|c| rule.truncation(c));
+        let truncation = t.iter().all(Option::is_some).then(|| t.map(|e| scale.abs() * e.unwrap_or(f64::INFINITY)));
         Pass { sum: self.sum.map(|x| scale * x), magnitude: scale.abs() * self.magnitude, truncation }
     }
 }
