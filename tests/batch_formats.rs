@@ -73,14 +73,14 @@ fn three_formats_give_bit_identical_results() {
         }
     }
     // Files: the format from the extension, the same answer.
-    let dir = std::env::temp_dir().join(format!("fricosc-formats-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-formats-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let (fl, fc) = (dir.join("rows.jsonl"), dir.join("rows.csv"));
     std::fs::write(&fl, &lines).unwrap();
     std::fs::write(&fc, &csv).unwrap();
     assert_eq!(ok(&["batch", fl.to_str().unwrap()], ""), ok(&["batch", "--format", "jsonl"], &lines));
     assert_eq!(ok(&["batch", fc.to_str().unwrap()], ""), out);
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

@@ -95,8 +95,9 @@ fn batch_keeps_other_fields_and_order() {
     assert!((a[0]["mu_ratio"].as_f64().unwrap() - 0.7482912652565906262288).abs() < 1e-15);
     assert_eq!(a[1]["mu_ratio"], 1.0);
     // The same from a file, and '-' for stdin.
-    let dir = std::env::temp_dir().join(format!("fricosc-cli-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-cli-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let f = dir.join("in.json");
     std::fs::write(&f, input).unwrap();
     assert_eq!(json(&fricosc(&["batch", f.to_str().unwrap()], None)), v);
@@ -201,8 +202,9 @@ fn stepping_method_for_point_table_and_batch() {
 
 #[test]
 fn validate_exit_codes_0_within_1_exceeded_2_bad_input() {
-    let dir = std::env::temp_dir().join(format!("fricosc-validate-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-validate-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let table = fricosc(
         &[
             "table",
@@ -251,7 +253,9 @@ fn validate_exit_codes_0_within_1_exceeded_2_bad_input() {
 
 #[test]
 fn quick_bench_writes_json_csv_and_svg_without_failures() {
-    let dir = std::env::temp_dir().join(format!("fricosc-bench-{}", std::process::id()));
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-bench-").tempdir().unwrap();
+    let dir = scratch.path().join("out");
     let out = fricosc(&["bench", "--quick", "--out", dir.to_str().unwrap()], None);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let report: serde_json::Value =
@@ -270,8 +274,9 @@ fn quick_bench_writes_json_csv_and_svg_without_failures() {
 
 #[test]
 fn tabulated_shapes_from_the_command_line_and_their_bad_inputs() {
-    let dir = std::env::temp_dir().join(format!("fricosc-cli-tab-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-cli-tab-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let good = dir.join("paraboloid.csv");
     let rows: String = (0..101)
         .map(|i| {
@@ -366,8 +371,9 @@ fn plot_draws_the_users_curves_and_refuses_bad_requests() {
     assert!(fricosc::cli::plot::parse_size(&svg).is_ok());
     assert_eq!(svg.matches("<g data-series=").count(), 3);
     assert!(svg.contains("v\u{304}"));
-    let dir = std::env::temp_dir().join(format!("fricosc-plot-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-plot-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let png = dir.join("p.png");
     let out = fricosc(&["plot", "--amp", "0.5", "--vhat", "0,0.5,1", "--out", png.to_str().unwrap()], None);
     assert!(out.status.success() && out.stdout.is_empty());
@@ -386,5 +392,4 @@ fn plot_draws_the_users_curves_and_refuses_bad_requests() {
         assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
         assert!(out.stdout.is_empty() && err.contains(message) && err.lines().count() == 1, "{args:?}: {err}");
     }
-    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -43,8 +43,9 @@ fn a_flat_covering_the_contact_is_the_flat_punch() {
 /// tabulated quadrature: it agrees within its own interpolation error.
 #[test]
 fn agrees_with_the_tabulated_profile_of_the_same_body() {
-    let dir = std::env::temp_dir().join(format!("fricosc-flattip-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-flattip-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     // R = 1, contact radius x_c = 0.1 at the mean indentation, E = a/x_c = 0.5:
     // g(x_c) = x_c sqrt(x_c^2 - a^2)/R = u0.
     let (r_sphere, xc, e) = (1.0f64, 0.1f64, 0.5f64);

@@ -82,8 +82,9 @@ proptest! {
 
     #[test]
     fn profile_tables_never_panic(text in "[0-9eE.,;+\\- \n#a-z]{0,120}", v in any_f64(), a in any_f64()) {
-        let dir = std::env::temp_dir().join(format!("fricosc-fuzz-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
+        // Removed when dropped, also when the test fails.
+        let scratch = tempfile::Builder::new().prefix("fricosc-fuzz-").tempdir().unwrap();
+        let dir = scratch.path().to_path_buf();
         let path = dir.join("t.csv");
         std::fs::write(&path, &text).unwrap();
         if let Ok(shape) = fricosc::cli::input::parse_shape(&format!("profile:{}@1", path.display())) {

@@ -68,8 +68,9 @@ fn endless_inputs_stop_at_the_documented_cap() {
 /// A UTF-8 byte-order mark (written by spreadsheets) is not part of a header.
 #[test]
 fn a_byte_order_mark_is_tolerated() {
-    let dir = std::env::temp_dir().join(format!("fricosc-bom-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-bom-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let path = dir.join("t.csv");
     std::fs::write(&path, "\u{feff}vbar,amp,mu_ratio\n0.5,0.5,0.8992738983331657\n").unwrap();
     let out = bin().args(["validate", path.to_str().unwrap()]).output().unwrap();
@@ -132,8 +133,9 @@ fn duplicate_keys_duplicate_columns_and_empty_tables_are_refused() {
 /// A shape with a comma is quoted in CSV output and reads back as one field.
 #[test]
 fn csv_output_is_real_csv() {
-    let dir = std::env::temp_dir().join(format!("fricosc-csv-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-csv-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let file = dir.join("a,b.csv");
     std::fs::write(&file, "r,f\n0,0\n1,0.5\n2,2\n3,4.5\n").unwrap();
     let shape = format!("profile:{}@2", file.display());
@@ -173,8 +175,9 @@ fn scene_edge_values_are_errors_naming_the_cause() {
         "oscillation": {"amplitude_m": 0.5e-6, "frequency_hz": 100.0},
         "velocity": {"values_m_per_s": [0.0, 1e-4]}
     });
-    let dir = std::env::temp_dir().join(format!("fricosc-scene-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-scene-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let run = |patch: &[(&str, serde_json::Value)]| {
         let mut s = base.clone();
         for (path, v) in patch {
@@ -244,8 +247,9 @@ fn scene_edge_values_are_errors_naming_the_cause() {
 /// Errors found after some rows were computed used to leave those rows on stdout.
 #[test]
 fn nothing_on_stdout_when_the_exit_code_is_2() {
-    let dir = std::env::temp_dir().join(format!("fricosc-late-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-late-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let gx = dir.join("sq.csv");
     let rows: String = (0..=40).map(|i| 0.05 * i as f64).map(|x| format!("{x},{}\n", x * x)).collect();
     std::fs::write(&gx, format!("x,g\n{rows}")).unwrap();
@@ -345,10 +349,10 @@ fn a_profile_past_the_row_limit_is_refused_before_the_transform() {
     for i in 0..rows {
         let _ = writeln!(text, "{i},{i}");
     }
-    let path = std::env::temp_dir().join(format!("fricosc-rows-{}.csv", std::process::id()));
+    let scratch = tempfile::Builder::new().prefix("fricosc-rows-").tempdir().unwrap();
+    let path = scratch.path().join("rows.csv");
     std::fs::write(&path, text).unwrap();
     let shape = format!("profile:{}@1", path.display());
     let out = bin().args(["point", "--shape", &shape, "--vbar", "0.3", "--amp", "0.5"]).output().unwrap();
-    let _ = std::fs::remove_file(&path);
     refused(&out, &format!("is more than the limit of {}", fricosc::profile::MAX_TABLE_ROWS));
 }

@@ -5,7 +5,7 @@
 //! version before these fixes.
 use std::io::{Read, Write};
 use std::os::unix::process::ExitStatusExt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
@@ -13,11 +13,10 @@ fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_fricosc"))
 }
 
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("fricosc-integrity-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+/// A scratch folder of the test's own, removed when the guard is dropped (also
+/// when the test fails).
+fn scratch(name: &str) -> tempfile::TempDir {
+    tempfile::Builder::new().prefix(&format!("fricosc-integrity-{name}-")).tempdir().unwrap()
 }
 
 /// Run `cmd` with `stdin` bytes; its output and peak resident memory (KiB), by
@@ -68,7 +67,8 @@ fn pipes_and_fifos_are_read_once() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert_eq!(String::from_utf8(out.stdout).unwrap().lines().count(), 3);
     // A named FIFO, written by another thread.
-    let dir = scratch("fifo");
+    let tmp = scratch("fifo");
+    let dir = tmp.path();
     let fifo = dir.join("rows.jsonl");
     let c = std::ffi::CString::new(fifo.to_str().unwrap()).unwrap();
     assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
@@ -84,7 +84,6 @@ fn pipes_and_fifos_are_read_once() {
     let mut text = String::new();
     child.stdout.take().unwrap().read_to_string(&mut text).unwrap();
     assert_eq!(text.lines().count(), 300);
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Standard input's spool has no name from the moment it exists: a run killed
@@ -156,7 +155,8 @@ fn distinct_shapes_do_not_grow_memory() {
 /// through a link, and leave no temporary files.
 #[test]
 fn output_folders_are_ours_and_links_are_not_followed() {
-    let dir = scratch("out");
+    let tmp = scratch("out");
+    let dir = tmp.path();
     let proj = dir.join("proj");
     std::fs::create_dir(&proj).unwrap();
     std::fs::write(proj.join("README.md"), "mine\n").unwrap();
@@ -210,7 +210,6 @@ fn output_folders_are_ours_and_links_are_not_followed() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stdout).contains("README.md is not a regular file"));
     assert!(t0.elapsed() < Duration::from_secs(30));
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Histories never print `null` (NaN or inf) as an answer: curved shapes at
@@ -260,7 +259,8 @@ fn histories_are_numbers_or_errors() {
 /// period is an error, not a pass with 0 samples.
 #[test]
 fn validate_never_reports_null_or_checks_nothing() {
-    let dir = scratch("validate");
+    let tmp = scratch("validate");
+    let dir = tmp.path();
     let table = dir.join("big.csv");
     std::fs::write(&table, "vbar,amp,mu_ratio\n0.3,0.5,1e200\n0.4,0.5,1e308\n").unwrap();
     let out = bin().args(["validate", table.to_str().unwrap(), "--format", "json"]).output().unwrap();
@@ -280,14 +280,14 @@ fn validate_never_reports_null_or_checks_nothing() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("samples in the last period"), "{err}");
     assert!(out.stdout.is_empty());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Streams: a closed pipe under CSV output ends with 0; a message that cannot
 /// be written (stderr on a full disk) neither panics nor costs the answer.
 #[test]
 fn closed_pipes_and_full_stderr() {
-    let dir = scratch("streams");
+    let tmp = scratch("streams");
+    let dir = tmp.path();
     let csv = dir.join("many.csv");
     let mut text = String::from("shape,vbar,amp\n");
     for i in 0..200_000 {
@@ -315,14 +315,14 @@ fn closed_pipes_and_full_stderr() {
     let out = bin().args(["scene", scene.to_str().unwrap()]).stderr(full()).output().unwrap();
     assert_eq!(out.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&out.stdout).contains("mu_ratio"));
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// A scene of 10^6 rows holds 16 bytes a row (before: 815 MB), and a history
 /// drawing is refused beyond the plot's limit before any work.
 #[test]
 fn large_scenes_and_drawings_stay_bounded() {
-    let dir = scratch("scene");
+    let tmp = scratch("scene");
+    let dir = tmp.path();
     let scene = dir.join("big.json");
     std::fs::write(
         &scene,
@@ -343,7 +343,6 @@ fn large_scenes_and_drawings_stay_bounded() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Smaller ones: a byte-order mark before JSON Lines; control characters of an

@@ -4,17 +4,19 @@
 mod common;
 
 use std::path::PathBuf;
+use tempfile::TempDir;
 
-fn write_table(name: &str, rows: impl Iterator<Item = (f64, f64)>) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("fricosc-profile-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
+/// Write the table `rows` as `name` in a scratch folder of its own (removed
+/// when the returned guard is dropped, also when the test fails).
+fn write_table(name: &str, rows: impl Iterator<Item = (f64, f64)>) -> (TempDir, PathBuf) {
+    let scratch = tempfile::Builder::new().prefix("fricosc-profile-").tempdir().unwrap();
+    let path = scratch.path().join(name);
     let mut text = String::from("r,f\n");
     for (r, f) in rows {
         text += &format!("{r:?},{f:?}\n");
     }
     std::fs::write(&path, text).unwrap();
-    path
+    (scratch, path)
 }
 
 fn grid(n: usize, max: f64) -> impl Iterator<Item = f64> {
@@ -26,7 +28,8 @@ fn a_tabulated_sphere_reproduces_parabolic_within_the_interpolation_error() {
     // Sphere of radius 1 indented by u0 = 1e-8: a paraboloid to relative ~1e-8.
     let (radius, u0) = (1.0f64, 1e-8f64);
     let rmax = 4.0 * (radius * u0).sqrt();
-    let path = write_table("sphere.csv", grid(300, rmax).map(|r| (r, radius - (radius * radius - r * r).sqrt())));
+    let (_scratch, path) =
+        write_table("sphere.csv", grid(300, rmax).map(|r| (r, radius - (radius * radius - r * r).sqrt())));
     let shape = common::shape(&format!("profile:{}@{u0:?}", path.display())).unwrap();
     let parabolic = common::shape("parabolic").unwrap();
     for (v, a) in [(0.3, 0.4), (0.6, 1.0), (0.2, 2.0), (0.9, 0.7)] {
@@ -42,7 +45,7 @@ fn a_tabulated_sphere_reproduces_parabolic_within_the_interpolation_error() {
 
 #[test]
 fn a_tabulated_equivalent_profile_reproduces_the_power_law() {
-    let path = write_table("g.csv", grid(200, 2.0).map(|x| (x, x.powf(2.5))));
+    let (_scratch, path) = write_table("g.csv", grid(200, 2.0).map(|x| (x, x.powf(2.5))));
     let shape = common::shape(&format!("gx:{}@1", path.display())).unwrap();
     let power = common::shape("power:2.5").unwrap();
     for (v, a) in [(0.3, 0.4), (0.5, 1.5)] {
@@ -64,8 +67,9 @@ fn bad_tables_are_errors() {
         ("empty.csv", "", "at least 3 rows"),
     ];
     for (name, text, frag) in cases {
-        let dir = std::env::temp_dir().join(format!("fricosc-bad-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
+        // Removed when dropped, also when the test fails.
+        let scratch = tempfile::Builder::new().prefix("fricosc-bad-").tempdir().unwrap();
+        let dir = scratch.path().to_path_buf();
         let p = dir.join(name);
         std::fs::write(&p, text).unwrap();
         let e = common::shape(&format!("profile:{}@1", p.display())).unwrap_err().to_string();
@@ -82,8 +86,9 @@ fn bad_tables_are_errors() {
 /// answered with a confident wrong value.
 #[test]
 fn tabulated_shapes_at_extreme_scales_are_right_or_refused() {
-    let dir = std::env::temp_dir().join(format!("fricosc-scale-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-scale-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let write = |name: &str, rows: &[(f64, f64)]| {
         let p = dir.join(name);
         let text: String = rows.iter().map(|(x, g)| format!("{x:e},{g:e}\n")).collect();
@@ -122,8 +127,9 @@ fn tabulated_shapes_at_extreme_scales_are_right_or_refused() {
 /// A profile whose MDR transform falls (a step) is refused with the largest g.
 #[test]
 fn a_non_monotone_transform_is_refused() {
-    let dir = std::env::temp_dir().join(format!("fricosc-step-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-step-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let p = dir.join("step.csv");
     std::fs::write(&p, "r,f\n0,0\n0.5,0\n0.9,0\n0.95,0.5\n1,1\n2,1\n").unwrap();
     let e = common::shape(&format!("profile:{}@0.9", p.display())).unwrap_err().to_string();

@@ -271,8 +271,9 @@ fn amplitude_families_equal_their_single_members() {
 fn scene_plot_draws_one_curve_per_amplitude() {
     use std::process::Command;
     let root = env!("CARGO_MANIFEST_DIR");
-    let dir = std::env::temp_dir().join(format!("fricosc-scene-plot-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-scene-plot-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let scene = format!("{root}/data/scenes/steel-sphere-fig9.json");
     for name in ["f.svg", "f.png"] {
         let path = dir.join(name);
@@ -299,7 +300,6 @@ fn scene_plot_draws_one_curve_per_amplitude() {
     let out = Command::new(env!("CARGO_BIN_EXE_fricosc")).args(["scene", &scene, "--plot", "f.gif"]).output().unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty() && String::from_utf8_lossy(&out.stderr).contains("must end in .svg or .png"));
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// A scene of one velocity still draws: an axis around it, one marked curve point.

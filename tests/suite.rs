@@ -91,8 +91,9 @@ fn values_are_within_their_bounds_of_the_reference() {
 /// manifest's hashes are the files' SHA-256 (checked with sha256sum where present).
 #[test]
 fn the_check_catches_changes() {
-    let dir = std::env::temp_dir().join(format!("fricosc-suite-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-suite-").tempdir().unwrap();
+    let dir = scratch.path().join("suite");
     let d = dir.to_str().unwrap();
     assert_eq!(fricosc(&["suite", "--out", d]).status.code(), Some(0));
     let flat = dir.join("tables/flat.csv");
@@ -113,7 +114,6 @@ fn the_check_catches_changes() {
         let hash = String::from_utf8_lossy(&sum.stdout).split_whitespace().next().unwrap_or("").to_string();
         assert!(hash.len() == 64 && manifest.contains(&hash), "{hash}");
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// The suite's tabulated sphere against the true sphere (its MDR profile

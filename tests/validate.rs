@@ -212,8 +212,11 @@ fn the_readme_walk_through_names_every_planted_bug() {
 fn the_series_finds_the_orders_of_the_seeds_scheme() {
     use fricosc::stepper::Stepping;
 
-    let dir = std::env::temp_dir().join(format!("fricosc-series-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+
+    let scratch = tempfile::Builder::new().prefix("fricosc-series-").tempdir().unwrap();
+
+    let dir = scratch.path().to_path_buf();
     let mut args: Vec<String> = vec!["validate".into(), "--series".into(), "--format".into(), "json".into()];
     for k in 0..7 {
         let m = 1000usize << k;
@@ -263,7 +266,6 @@ fn the_series_finds_the_orders_of_the_seeds_scheme() {
         .unwrap();
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("needs its resolution"));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// `history --method stepping` (the peer) against the exact history: every
@@ -449,8 +451,9 @@ fn curved_histories_are_compared_with_the_reference_grid() {
 /// first order (observed 0.95 and 0.96; the onset of contact falls between steps).
 #[test]
 fn history_series_finds_first_order_in_the_jumping_regime() {
-    let dir = std::env::temp_dir().join(format!("fricosc-hseries-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-hseries-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let mut args: Vec<String> =
         ["validate", "--series", "--history", "--vbar", "0.3", "--amp", "1.5", "--format", "json"]
             .map(String::from)
@@ -471,5 +474,4 @@ fn history_series_finds_first_order_in_the_jumping_regime() {
     assert!((0.6..1.4).contains(&order), "{doc}");
     let slip = doc["events"].as_array().unwrap().iter().find(|e| e["kind"] == "slip").unwrap();
     assert!((0.6..1.4).contains(&slip["order"].as_f64().unwrap()), "{slip}");
-    let _ = std::fs::remove_dir_all(&dir);
 }

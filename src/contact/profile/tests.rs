@@ -61,8 +61,9 @@ fn transform_of_a_sphere_tends_to_hertz_at_small_depth() {
 /// Exactly one header line is allowed (`/etc/passwd` used to give "found 0 rows").
 #[test]
 fn only_one_header_line() {
-    let dir = std::env::temp_dir().join(format!("fricosc-hdr-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when dropped, also when the test fails.
+    let scratch = tempfile::Builder::new().prefix("fricosc-hdr-").tempdir().unwrap();
+    let dir = scratch.path().to_path_buf();
     let p = dir.join("two.csv");
     std::fs::write(&p, "r,f\nradius,height\n0,0\n1,1\n2,4\n").unwrap();
     let text = std::fs::read_to_string(&p).unwrap();
