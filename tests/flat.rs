@@ -195,3 +195,41 @@ fn small_mu_keeps_relative_accuracy_when_jumping() {
         assert!(rel < 1e-8, "a={a}: rel {rel:e}");
     }
 }
+
+/// Springs that stick from contact just above `s = -sqrt(1 - vbar^2)`, where
+/// sticks vanish (a spring of a curved body's foundation, or `Spring::new`
+/// called with such an `s`): the deficit (about `eps^3`, down to 1e-40 here),
+/// the tangential force and the stick's end against independent 40-digit
+/// values (`data/scripts/short_sticks.py`, committed as
+/// `data/short-sticks.json`). The form that summed order-one terms kept
+/// `1e-16 (alpha/eps)^3` of the deficit: 0.3 relative at `s = -c + 1e-6`,
+/// `vbar = 0.3`.
+#[test]
+fn short_sticks_keep_every_digit() {
+    use fricosc::spring::{Regime, Spring};
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/short-sticks.json"))
+        .expect("data/short-sticks.json is committed with the repository");
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let cases = v["cases"].as_array().unwrap();
+    assert_eq!(cases.len(), 54);
+    let (mut worst_d, mut worst_f, mut worst_t) = (0.0f64, 0.0f64, 0.0f64);
+    for c in cases {
+        let text = |k: &str| c[k].as_str().unwrap().to_string();
+        let (vbar, s): (f64, f64) = (text("vbar").parse().unwrap(), text("s").parse().unwrap());
+        let rel = |got: f64, k: &str| common::exact_error(got, &text(k)) / text(k).parse::<f64>().unwrap().abs();
+        for sp in [Spring::new(s, vbar), Spring::with_events(s, vbar)] {
+            assert_eq!(sp.regime, Regime::JumpingStickFirst, "vbar {vbar} s {s}");
+            worst_d = worst_d.max(rel(sp.deficit, "deficit"));
+            worst_f = worst_f.max(rel(sp.mean_tangential(), "mean_tangential"));
+            assert!(rel(sp.deficit, "deficit") <= 1e-13, "vbar {vbar} s {s}: deficit {:e}", sp.deficit);
+            assert!(rel(sp.mean_tangential(), "mean_tangential") <= 1e-14, "vbar {vbar} s {s}");
+        }
+        let phase = Spring::with_events(s, vbar).slip_phase().unwrap();
+        worst_t = worst_t.max(common::exact_error(phase, &text("slip_phase")));
+        assert!(common::exact_error(phase, &text("slip_phase")) <= 1e-14, "vbar {vbar} s {s}: {phase}");
+    }
+    eprintln!("short sticks: deficit {worst_d:.1e}, tangential {worst_f:.1e} relative; slip phase {worst_t:.1e}");
+    // Regression bars, about 10 times the worst observed (deficit 7.1e-15 where
+    // the general form takes over at eps = alpha/4; tangential 9.3e-16; phase 6.6e-16).
+    assert!(worst_d <= 7e-14 && worst_f <= 9.3e-15 && worst_t <= 7e-15, "{worst_d:e} {worst_f:e} {worst_t:e}");
+}

@@ -283,7 +283,10 @@ impl Velocity {
     /// sin^2(e/2))/2pi`), and the magnitude of the terms `D` is summed from (its
     /// rounding is a few ulps of that, not of `D`). Units `mu0 kz du`.
     pub(crate) fn stick_first_means(&self, theta: f64, sin_theta: f64, cos_theta: f64) -> StickMeans {
-        let sol = stick_phase(Start::Contact { theta, sin_theta, cos_theta }, self, ROOT_RTOL_MEANS);
+        // The node's phase u = theta is exact: eps = alpha + pi/2 - theta as
+        // accurate as alpha.
+        let eps = self.alpha + (FRAC_PI_2 - theta);
+        let sol = stick_phase(Start::Contact { theta, sin_theta, cos_theta, eps }, self, ROOT_RTOL_MEANS);
         let (l, e) = (sol.length, sol.tail);
         let h = (0.5 * e).sin();
         let tangential = (0.5 * self.vbar * l * l + cos_theta * s_fn(e) + 2.0 * sin_theta * h * h) / TAU;
@@ -304,6 +307,9 @@ enum Start {
         sin_theta: f64,
         /// `cos theta = s`.
         cos_theta: f64,
+        /// `alpha + beta = alpha + pi/2 - theta`, the start's distance from
+        /// `-alpha` (where sticks vanish), with the best accuracy the caller has.
+        eps: f64,
     },
 }
 
@@ -455,7 +461,11 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
         Start::Tangent => (alpha, TAU),
         Start::Contact { theta, .. } => (FRAC_PI_2 - theta, TAU - 2.0 * theta),
     };
-    let lo = alpha + beta;
+    let lo = match start {
+        Start::Tangent => alpha + beta,
+        Start::Contact { eps, .. } if eps < SHORT_STICK * alpha => return short_stick(eps, vel, rtol),
+        Start::Contact { eps, .. } => eps,
+    };
     let (lt, tail_t) = vel.tangent_guess;
     if vbar < TAIL_FORM_VBAR {
         // sin q and cos q, known without a sine: (-vbar, sqrt(1 - vbar^2)) after
@@ -524,6 +534,118 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
     let (d, m) = deficit_2pi(beta, w, r.x);
     let (deficit, magnitude) = (nonneg(d / TAU), m / TAU);
     StickSolution { length: r.x, tail: x_max - r.x, deficit, magnitude, evaluations: r.evaluations }
+}
+
+/// A stick from contact whose start `beta` lies within this fraction of `alpha`
+/// of `-alpha` (where sticks vanish, `s -> -sqrt(1 - vbar^2)`) is solved by
+/// [`short_stick`].
+const SHORT_STICK: f64 = 0.25;
+/// [`short_stick`]'s last Halley step for the means, relative to `h` (the
+/// deficit evaluated before it is then within `3e-16` relatively).
+const SHORT_STICK_MEANS_STEP: f64 = 1e-8;
+/// Halley steps [`short_stick`] takes before a bracketed search takes over.
+const SHORT_STICK_MAX_STEPS: u32 = 12;
+
+/// The stick phase of a stick from contact near `beta = -alpha`, with
+/// `eps = alpha + beta < SHORT_STICK alpha`, where the stick is short
+/// (`L ~ 2 eps`) and its deficit tiny (`~ (2/3) sin(alpha) eps^3 / 2 pi`): the
+/// general form sums terms of order `alpha^2` (or 1) and kept only
+/// `1e-16 (alpha/eps)^3` of it relatively (relative error 0.3 at
+/// `s = -c + 1e-6`, `vbar = 0.3`; 6.6e5 at `s = -c + 1e-8`, `vbar = 0.6`).
+///
+/// With the stick's half-length `h`, `d = eps - h` and the middle phase
+/// `phi = beta - h = d - alpha`, the gap is
+/// `H(2h) = sin beta - sin(beta - 2h) - 2 vbar h = 2h G(h)` with
+/// `G = cos(phi) sinc(h) - vbar`, written without cancellation as
+/// `G = (cos(alpha - d) - cos alpha) - cos(alpha - d) S(h)/h`, where
+/// `cos(alpha - d) - cos alpha = c sin d - vbar sin^2 d/(1 + cos d)`
+/// (`c = sin alpha`; `d <= eps/24` is small): from the sines and cosines of
+/// `h` and `d` alone. The root lies in `[eps/2, eps]` (for `eps < alpha/4`,
+/// `G(eps/2) > 0` and `G(eps) < 0`); Halley's method starts from its series
+/// `d = t eps^2/6 - t^2 eps^3/18 + (t^3/27 + 7t/360) eps^4` (`t = cot alpha`).
+///
+/// The deficit `(1/2pi) int_0^L H = (1/2pi) [L sin beta + cos beta -
+/// cos(beta - L) - vbar L^2/2]` is, with `vbar` eliminated through
+/// `H = 2h G`, `(1/pi) [sin(alpha - d) (sin h - h cos h) + h^2 G(h)]`:
+/// products of small factors (`sin h - h cos h = h (1 - cos h) - S(h)`, about
+/// `h^3/3`), and still stationary in `h` (an error `e` in `h` moves it by
+/// `3 (e/h)^2` relatively): the means stop at a step of `1e-8 h`, event times
+/// at [`ROOT_RTOL_EVENTS`]. Only `alpha` and `eps` enter: the deficit is as
+/// accurate as `eps` relatively, 3 times over. The magnitude returned (the
+/// deficit's rounding is a few ulps of it) is `D (2 + 3 alpha/eps)`, for an
+/// `eps` within `1.5 ulp(alpha)` where it is `alpha + beta` rounded.
+fn short_stick(eps: f64, vel: &Velocity, rtol: f64) -> StickSolution {
+    let (alpha, vbar) = (vel.alpha, vel.vbar);
+    if eps.is_nan() || eps <= 0.0 {
+        // At the end of the sticks to rounding (the regime's sign test said
+        // stick-first): a stick of no length, slip for the whole contact of 2 delta.
+        return StickSolution { length: 0.0, tail: 2.0 * vel.delta, deficit: 0.0, magnitude: 0.0, evaluations: 0 };
+    }
+    let c = (vel.w * (1.0 + vbar)).sqrt();
+    // sin h - h cos h = h (1 - cos h) - S(h), about h^3/3 (no cancellation;
+    // 1 - cos h = sin^2 h/(1 + cos h), h <= eps < pi/8).
+    let third = |h: f64, sh: f64, ch: f64| h * sh * sh / (1.0 + ch) - x_minus_sin_with(h, sh);
+    // G, G', G'' (sinc'' = -sinc - 2 sinc'/h; sin phi = -sin(alpha - d)), and
+    // the deficit at h (stationary there).
+    let eval = |h: f64| {
+        let (sh, ch) = libm::sincos(h);
+        let d = eps - h;
+        let (sd, cd) = libm::sincos(d);
+        let (sa, ca) = (c * cd - vbar * sd, vbar * cd + c * sd);
+        let t3 = third(h, sh, ch);
+        let g = (c * sd - vbar * sd * sd / (1.0 + cd)) - ca * x_minus_sin_with(h, sh) / h;
+        let sinc = sh / h;
+        let dsinc = -t3 / (h * h);
+        let ddsinc = -sinc - 2.0 * dsinc / h;
+        let derivs = (-sa * sinc + ca * dsinc, -ca * sinc - 2.0 * sa * dsinc + ca * ddsinc);
+        (g, derivs, nonneg((sa * t3 + h * h * g) / PI))
+    };
+    let step_tol = if rtol == ROOT_RTOL_MEANS { SHORT_STICK_MEANS_STEP } else { rtol };
+    let (mut h, mut evaluations) = if vbar == 0.0 {
+        // The stick lasts until the contact is lost: G(eps) = 0.
+        (eps, 0)
+    } else {
+        let t = vbar / c;
+        let e2 = eps * eps;
+        let d = t * e2 / 6.0 - t * t * e2 * eps / 18.0 + (t * t * t / 27.0 + 7.0 * t / 360.0) * e2 * e2;
+        ((eps - d).clamp(0.5 * eps, eps), 0)
+    };
+    let mut deficit;
+    loop {
+        let (g, (g1, g2), dh) = eval(h);
+        evaluations += 1;
+        deficit = dh;
+        if vbar == 0.0 || g == 0.0 {
+            break;
+        }
+        let newton = g / g1;
+        let denom = 1.0 - 0.5 * newton * g2 / g1;
+        let step = if (0.5..=2.0).contains(&denom) { newton / denom } else { newton };
+        let next = h - step;
+        if !(0.5 * eps..=eps).contains(&next) || evaluations >= SHORT_STICK_MAX_STEPS {
+            // Not finite, out of the bracket, or too slow: bracketed search, and
+            // the deficit at its root.
+            let r = root::bracketed(|x| eval(x).0, 0.5 * eps, eps, ROOT_RTOL_EVENTS);
+            evaluations += r.evaluations;
+            h = r.x;
+            deficit = eval(h).2;
+            break;
+        }
+        h = next;
+        if step.abs() <= step_tol * h {
+            break;
+        }
+    }
+    let d = eps - h;
+    StickSolution {
+        length: 2.0 * h,
+        // The contact lasts 2 (pi - theta) = 2 (eps + delta): the tail after the
+        // stick, 2 (delta + d), is a sum of non-negative terms (0 at vbar = 0).
+        tail: 2.0 * (vel.delta + d),
+        deficit,
+        magnitude: deficit * (2.0 + 3.0 * alpha / eps),
+        evaluations,
+    }
 }
 
 impl Spring {
@@ -596,7 +718,22 @@ impl Spring {
         // s <= 0 the sign of s^2 - c^2 = vbar^2 - (1 - s)(1 + s) (error-free
         // products), i.e. whether |s| >= c.
         let square = || crate::special::square_margin(vbar, one_minus_s, s);
-        let contact = Start::Contact { theta, sin_theta, cos_theta: s };
+        // A stick from contact: its distance eps = alpha + beta from the end of
+        // the sticks (beta = -alpha, s = -c). Near it (s < 0) from the inputs
+        // alone, as the angle whose sine is sin(alpha + beta) = c sin(theta) +
+        // vbar s = (c^2 - s^2)/(c sin(theta) - vbar s) with s^2 - c^2 = s^2 +
+        // vbar^2 - 1 summed error-free: the short stick's deficit, of order eps^3, then
+        // keeps its relative accuracy ([`short_stick`]).
+        let eps = {
+            let plain = vel.alpha + (FRAC_PI_2 - theta);
+            if s < 0.0 && plain < 2.0 * SHORT_STICK * vel.alpha {
+                let margin = crate::special::squares_minus_one(s, vbar);
+                (-margin / (c() * sin_theta - vbar * s)).asin()
+            } else {
+                plain
+            }
+        };
+        let contact = Start::Contact { theta, sin_theta, cos_theta: s, eps };
         let (start, regime, start_force) = if s >= 1.0 {
             // In permanent contact: s - c = (s - 1) + vbar^2/(1 + c) (no
             // cancellation of 1 - c as vbar -> 0).

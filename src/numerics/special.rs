@@ -155,6 +155,17 @@ fn two_sum(x: f64, y: f64) -> (f64, f64) {
     (hi, (x - (hi - z)) + (y - z))
 }
 
+/// `s^2 + v^2 - 1` (that is `s^2 - c^2`, `c = sqrt(1 - v^2)`) with
+/// error-free products and sums, for inputs taken as exact: where `1 - s` is
+/// not a double (`s < 0`), [`square_margin`] would need it rounded.
+pub(crate) fn squares_minus_one(s: f64, v: f64) -> f64 {
+    let (p, pe) = two_prod(s, s);
+    let (q, qe) = two_prod(v, v);
+    let (h, l) = two_sum(p, q);
+    let (g, m) = two_sum(h, -1.0);
+    g + (m + l + pe + qe)
+}
+
 /// `1 - a sqrt(1 - v^2)` for `a, v >= 0` with full relative accuracy wherever
 /// the result is at least about `1e-30 a^2` (it is the normal force, over the
 /// mean, where a stick starts on the bound; it vanishes where the spring's
