@@ -97,6 +97,13 @@ fn the_error_estimate_bounds_the_error_at_every_tolerance() {
     }
     assert!(Shape::parse("flat-tip:1").is_err() && Shape::parse("flat-tip:-0.1").is_err());
     assert_eq!(Shape::parse("flat-tip:0.25").unwrap().name(), "flat-tip:0.25");
+    // A negative zero is the paraboloid's flat of no width, named as +0.
+    assert_eq!(Shape::parse("flat-tip:-0").unwrap().name(), "flat-tip:0.0");
+    // Without a stick (vbar >= 1) or an oscillation, mu = 1 exactly: no error.
+    for (v, a) in [(1.0, 0.5), (1.5, 3.0), (0.3, 0.0)] {
+        let e = shape.evaluate(v, a).unwrap();
+        assert_eq!((e.ratio.mu_ratio, e.ratio.reduction, e.error_estimate), (1.0, 0.0, 0.0), "v={v} a={a}");
+    }
 }
 
 /// At a subnormal amplitude (the spring coordinate `(1 - G)/amp` overflows) the
@@ -111,6 +118,33 @@ fn subnormal_amplitude_gives_the_linear_reduction() {
     // 2.1e-314 is subnormal: the reduction carries about 4e-10 relative.
     let tiny = slope(2.1219957905e-314);
     assert!(((tiny - small) / small).abs() < 1e-9, "{tiny} vs {small}");
+    // The estimate bounds mu's error (1 - mu = the reduction, rounded away in
+    // mu = 1) and scales with the amplitude (below an ulp).
+    for a in [1e-305, 2.1219957905e-314] {
+        let e = shape.evaluate(0.3, a).unwrap();
+        assert!(
+            e.ratio.reduction <= e.error_estimate && e.error_estimate <= 1e-20,
+            "amp {a:e}: {:e}",
+            e.error_estimate
+        );
+    }
+}
+
+/// At a huge amplitude the flat (scaled by `1/sqrt(amp)`) vanishes against the
+/// contact: the paraboloid, to its error estimate; a flat of 1e-160 (whose
+/// square would be subnormal) likewise at any amplitude.
+#[test]
+fn a_flat_negligible_against_the_contact_is_the_paraboloid() {
+    for (spec, amp) in
+        [("flat-tip:0.5", 1e300), ("flat-tip:0.9", 1e250), ("flat-tip:1e-160", 0.5), ("flat-tip:1e-160", 2.0)]
+    {
+        for v in [0.1, 0.6] {
+            let tip = Shape::parse(spec).unwrap().evaluate(v, amp).unwrap();
+            let par = Shape::parabolic().evaluate(v, amp).unwrap();
+            let err = (tip.ratio.mu_ratio - par.ratio.mu_ratio).abs();
+            assert!(err <= tip.error_estimate + par.error_estimate, "{spec} amp {amp:e} v {v}: {err:e}");
+        }
+    }
 }
 
 /// A flat far below every other length (E = 1e-152 at amp = 2.2e-159): near the
@@ -125,4 +159,53 @@ fn a_vanishing_flat_at_a_tiny_amplitude_is_the_paraboloid() {
         let rel = (tip.ratio.reduction - par.ratio.reduction).abs() / par.ratio.reduction;
         assert!(rel < 1e-12, "E = {e}: {} vs {}", tip.ratio.reduction, par.ratio.reduction);
     }
+}
+
+/// `flat-tip:0.3` and `flat-tip:0.7` against independent values (the MDR
+/// profile integrated by mpmath's tanh-sinh over `z`, each spring's steady
+/// state from the seed's description: `data/scripts/mdr_reference.py
+/// --flat-tip`, committed as `data/flat-tip-reference.json`), below, at and
+/// above `amp = 1` and down to `vbar = 1e-3`: `mu_ratio` and the reduction, and
+/// the error estimate bounds the error at the default tolerance and at 1e-9.
+#[test]
+fn worn_spheres_match_independent_values() {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/flat-tip-reference.json"))
+        .expect("data/flat-tip-reference.json is committed with the repository");
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let cases = v["cases"].as_array().unwrap();
+    assert_eq!(cases.len(), 12);
+    let mut worst = 0.0f64;
+    for c in cases {
+        let spec = format!("flat-tip:{}", c["flat_ratio"].as_str().unwrap());
+        let (vbar, amp) = (c["vbar"].as_f64().unwrap(), c["amp"].as_f64().unwrap());
+        let (mu, red) = (c["mu_ratio"].as_str().unwrap(), c["reduction"].as_str().unwrap());
+        let shape = Shape::parse(&spec).unwrap();
+        let e = shape.evaluate(vbar, amp).unwrap();
+        let err = common::exact_error(e.ratio.mu_ratio, mu);
+        worst = worst.max(err);
+        assert!(err <= 1e-13, "{spec} vbar={vbar} amp={amp}: {} vs {mu} ({err:e})", e.ratio.mu_ratio);
+        assert!(
+            err <= e.error_estimate,
+            "{spec} vbar={vbar} amp={amp}: error {err:e} > estimate {:e}",
+            e.error_estimate
+        );
+        // The estimate is an estimate, not a floor: at most ten times the tolerance.
+        assert!(
+            e.error_estimate <= 10.0 * fricosc::DEFAULT_TOL,
+            "{spec} vbar={vbar} amp={amp}: {:e}",
+            e.error_estimate
+        );
+        let rel = common::exact_error(e.ratio.reduction, red) / red.parse::<f64>().unwrap();
+        assert!(rel <= 1e-13, "{spec} vbar={vbar} amp={amp}: reduction {rel:e}");
+        let loose = shape.evaluate_with(vbar, amp, &fricosc::Options::default().with_tol(1e-9)).unwrap();
+        let err = common::exact_error(loose.ratio.mu_ratio, mu);
+        assert!(
+            err <= loose.error_estimate,
+            "{spec} vbar={vbar} amp={amp} tol 1e-9: {err:e} > {:e}",
+            loose.error_estimate
+        );
+    }
+    eprintln!("flat-tip against 22-digit values: worst {worst:.1e}");
+    // Regression bar, about 10 times the worst observed.
+    assert!(worst <= 4e-15, "{worst:e}");
 }

@@ -15,8 +15,10 @@ the two agree to the digits written (checked here, the difference printed).
 Run: python3 data/scripts/mdr_reference.py > data/mdr-reference.json   (needs mpmath;
 about ten minutes)
      python3 data/scripts/mdr_reference.py --sphere > data/sphere-reference.json
+     python3 data/scripts/mdr_reference.py --flat-tip > data/flat-tip-reference.json
 The second: the exact sphere of radius 1 (MDR profile (x/2) ln((1 + x)/(1 - x)))
 at a mean indentation of 1e-6, at sampled rows of the suite's tabulated sphere.
+The third: the sphere worn flat at its tip (`flat-tip:E`, E = 0.3 and 0.7).
 """
 import json
 import sys
@@ -91,16 +93,16 @@ def spring(s, v):
     return normal, (stick + slip) / (2 * pi)
 
 
-def mu_profile(G, Ginv, vbar, amp):
+def mu_profile(G, Ginv, vbar, amp, extra_cuts=()):
     """mu of the foundation with profile G (G(1) = 1, increasing; Ginv its
-    inverse) at the working precision."""
+    inverse) at the working precision; extra_cuts: where G is not smooth."""
     v, a = mpf(vbar), mpf(amp)
     if a == 0 or v >= 1:
         return mpf(1)
     c = sqrt(1 - v * v)
     zmax = Ginv(1 + a)
     z_of = lambda s: Ginv(1 - a * s) if 1 - a * s > 0 else mpf(0)
-    cuts = sorted({mpf(0), zmax} | {z_of(s) for s in (1, c, -c, -1) if 0 < 1 - a * s < 1 + a})
+    cuts = sorted({mpf(0), zmax} | {z_of(s) for s in (1, c, -c, -1) if 0 < 1 - a * s < 1 + a} | {mpf(x) for x in extra_cuts if 0 < x < zmax})
     tot_n, tot_t = mpf(0), mpf(0)
     for p, q in zip(cuts, cuts[1:]):
         if q <= p:
@@ -127,6 +129,32 @@ def sphere(u0, vbar, amp, dps):
     xc = inv(u0)
     return mu_profile(lambda z: g(xc * z) / u0, lambda y: inv(y * u0) / xc, vbar, amp)
 
+
+def flat_tip(e, vbar, amp, dps):
+    """The sphere worn flat at its tip, E = a/x_c: G(z) = 0 on the flat z <= E,
+    z sqrt(z^2 - E^2)/sqrt(1 - E^2) beyond (the MDR transform of the
+    paraboloid cut flat; derived in src/contact/flat_tip.rs, checked there
+    against a tabulated profile's numerical transform)."""
+    mp.dps = dps
+    e = mpf(e)
+    k = 1 - e * e
+    G = lambda z: z * sqrt(z * z - e * e) / sqrt(k) if z > e else mpf(0)
+    # z^2 (z^2 - E^2) = y^2 k.
+    Ginv = lambda y: sqrt((e * e + sqrt(e ** 4 + 4 * y * y * k)) / 2)
+    return mu_profile(G, Ginv, vbar, amp, extra_cuts=(e,))
+
+
+if "--flat-tip" in sys.argv:
+    cases = []
+    for e in ("0.3", "0.7"):
+        for vbar, amp in ((0.3, 0.4), (0.05, 0.95), (0.6, 1.0), (0.2, 1.5), (0.9, 3.0), (1e-3, 1.2)):
+            lo, hi = flat_tip(e, vbar, amp, 30), flat_tip(e, vbar, amp, 40)
+            diff = abs(hi - lo) / hi
+            assert diff < mpf(10) ** -20, (e, vbar, amp, diff)
+            print(f"flat-tip:{e} vbar={vbar} amp={amp}: {nstr(hi, 25)} (differ by {nstr(diff, 3)})", file=sys.stderr)
+            cases.append({"flat_ratio": e, "vbar": vbar, "amp": amp, "mu_ratio": nstr(hi, 22), "reduction": nstr(1 - hi, 22)})
+    print(json.dumps({"source": "data/scripts/mdr_reference.py --flat-tip (mpmath, tanh-sinh at 30 and 40 digits, which agree to 1e-20 or better; 22 digits written)", "cases": cases}, indent=1))
+    sys.exit(0)
 
 if "--sphere" in sys.argv:
     # Sampled rows of the suite's tabulated sphere (data/profiles/sphere.csv @ 1e-6).

@@ -219,3 +219,28 @@ impl Contact for FlatTip {
         vec![self.flat_ratio]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Curved;
+
+    /// `z(t)` and `dz/dt` at the axis (the limits `z = E`, `dz/dt = 0` for a
+    /// flat, 1 for the paraboloid, where the general form is 0/0), and the two
+    /// forms (inside the flat's scale `t < E`, beyond it) meeting at `t = E`.
+    #[test]
+    fn the_map_at_the_axis_and_across_the_flat_scale() {
+        for e in [0.0, 0.3, 0.9] {
+            let c = Curved { e, k: (1.0 - e) * (1.0 + e) };
+            assert_eq!(c.z_of_t(0.0), (e, if e > 0.0 { 0.0 } else { 1.0 }), "E = {e}");
+            if e > 0.0 {
+                let (below, above) = (c.z_of_t(e * (1.0 - 1e-12)), c.z_of_t(e * (1.0 + 1e-12)));
+                assert!((below.0 / above.0 - 1.0).abs() < 1e-11 && (below.1 / above.1 - 1.0).abs() < 1e-11);
+                // z^2 (z^2 - E^2) = t^4 (1 - E^2) on both sides.
+                for t in [0.5 * e, e, 2.0 * e] {
+                    let z = c.z_of_t(t).0;
+                    assert!((z * z * (z * z - e * e) / (t.powi(4) * c.k) - 1.0).abs() < 1e-13, "E = {e}, t = {t}");
+                }
+            }
+        }
+    }
+}
