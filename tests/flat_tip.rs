@@ -131,13 +131,20 @@ fn subnormal_amplitude_gives_the_linear_reduction() {
 }
 
 /// At a huge amplitude the flat (scaled by `1/sqrt(amp)`) vanishes against the
-/// contact: the paraboloid, to its error estimate; a flat of 1e-160 (whose
-/// square would be subnormal) likewise at any amplitude.
+/// contact: the paraboloid, to its error estimate; a flat whose square is
+/// subnormal (1e-160) or zero (1e-170, where `t^2` of the pieces cut at its
+/// scale underflows too: NaN if the flat were kept) likewise, at any amplitude.
 #[test]
 fn a_flat_negligible_against_the_contact_is_the_paraboloid() {
-    for (spec, amp) in
-        [("flat-tip:0.5", 1e300), ("flat-tip:0.9", 1e250), ("flat-tip:1e-160", 0.5), ("flat-tip:1e-160", 2.0)]
-    {
+    let cases = [
+        ("flat-tip:0.5", 1e300),
+        ("flat-tip:0.9", 1e250),
+        ("flat-tip:1e-160", 0.5),
+        ("flat-tip:1e-160", 2.0),
+        ("flat-tip:1e-170", 0.5),
+        ("flat-tip:1e-170", 2.0),
+    ];
+    for (spec, amp) in cases {
         for v in [0.1, 0.6] {
             let tip = Shape::parse(spec).unwrap().evaluate(v, amp).unwrap();
             let par = Shape::parabolic().evaluate(v, amp).unwrap();
