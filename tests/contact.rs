@@ -65,6 +65,10 @@ fn default_mean_normal_matches_the_closed_form() {
     }
     // The flat punch: (1/pi) int (1 - amp cos)_+ in units of its stiffness.
     assert_eq!(FlatPunch.mean_normal(0.5).unwrap(), 2.0);
+    // Its equivalent profile: 0 across the punch, a wall beyond its edge.
+    for (z, g) in [(0.0, 0.0), (0.5, 0.0), (1.0, 0.0), (1.0 + 1e-15, f64::INFINITY), (3.0, f64::INFINITY)] {
+        assert_eq!(FlatPunch.equivalent_profile(z), g, "z = {z}");
+    }
 }
 
 /// The time-stepping peer on the tabulated paraboloid equals it on the analytic
