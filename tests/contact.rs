@@ -71,6 +71,23 @@ fn default_mean_normal_matches_the_closed_form() {
     }
 }
 
+/// A power law's exponent: not a number, not finite or not positive, or out of
+/// range, each refused by name.
+#[test]
+fn power_law_exponents_are_refused_by_name() {
+    for (spec, says) in [
+        ("power:x", "is not a number"),
+        ("power:inf", "finite and > 0"),
+        ("power:NaN", "finite and > 0"),
+        ("power:-2", "finite and > 0"),
+        ("power:0.01", "within [0.05, 1e6]"),
+        ("power:2e6", "within [0.05, 1e6]"),
+    ] {
+        let e = Shape::parse(spec).unwrap_err().to_string();
+        assert!(e.contains(says), "{spec}: {e}");
+    }
+}
+
 /// The time-stepping peer on the tabulated paraboloid equals it on the analytic
 /// one (the same grid, the same G up to rounding), and on the worn tip it
 /// converges to the exact solver.
