@@ -31,7 +31,10 @@
 //! `D = (1/2pi) int_0^L H dx = (1/2pi) [C(beta) - C(beta - L) - S(beta) L + w L^2/2]`
 //! with `C(y) = y^2/2 - (1 - cos y)`, `C' = S`. Every term is of the order of
 //! the result (about `alpha^4` near `vbar = 1`), so `D` keeps full relative
-//! accuracy, and `dD/dL = H(L) = 0`: an error `e` in `L` changes `D` by `O(e^2)`,
+//! accuracy, except where a stick from contact is short, `beta` near `-alpha`
+//! (`s` just above `-c`): there `D` is of order `(alpha + beta)^3` and is
+//! computed as a product instead (`short_stick`). And `dD/dL = H(L) = 0`: an
+//! error `e` in `L` changes `D` by `O(e^2)`,
 //! so the means need `L` only to about 1e-8 relative (`ROOT_RTOL_MEANS` (1e-6), or
 //! a Halley step whose next iterate's predicted error is below `ROOT_ACCEPT_MEANS`).
 //!
