@@ -1081,6 +1081,25 @@ mod tests {
     /// where `<B>` vanishes and the formula's terms are ~1e3 times it), which
     /// the last bits of `L` move: 72 eps `<B>` observed, 42 with the step rule
     /// alone, at `s = -0.973`.
+    /// At the end of the sticks (`eps = alpha + beta` at or below 0 by rounding,
+    /// a node of a curved body's band at `s = -c`) the stick has no length and
+    /// the spring slips for its whole contact, `2 (pi - theta) = 2 delta`; just
+    /// inside, the short stick's tail tends to the same.
+    #[test]
+    fn a_stick_of_no_length_slips_for_the_whole_contact() {
+        for v in [0.1, 0.5, 0.9] {
+            let vel = Velocity::new(v);
+            let contact = TAU - 2.0 * (FRAC_PI_2 + vel.alpha);
+            for eps in [0.0, -1e-17, f64::NAN] {
+                let sol = short_stick(eps, &vel, ROOT_RTOL_MEANS);
+                assert_eq!((sol.length, sol.deficit, sol.tail), (0.0, 0.0, 2.0 * vel.delta), "v {v} eps {eps}");
+                assert!((sol.tail - contact).abs() < 1e-15, "v {v}: {} vs {contact}", sol.tail);
+            }
+            let near = short_stick(1e-9, &vel, ROOT_RTOL_MEANS);
+            assert!((near.tail - contact).abs() < 1e-8 && near.length > 0.0 && near.length < 2.1e-9, "v {v}");
+        }
+    }
+
     #[test]
     fn the_means_stick_ends_are_as_accurate_as_predicted() {
         let (mut worst, mut worst_d, mut n) = (0.0f64, 0.0f64, 0);
