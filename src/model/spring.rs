@@ -1069,7 +1069,8 @@ mod tests {
         // [[7145, 13494], [5999, 13589]] before the short sticks' own form.
         let measured = [[7095, 12937], [6047, 9203]];
         for (c, m) in count.iter().flatten().zip(measured.iter().flatten()) {
-            assert!(f64::from(*c) <= 1.02 * f64::from(*m), "{count:?} against {measured:?}");
+            let r = f64::from(*c) / f64::from(*m);
+            assert!((0.98..=1.02).contains(&r), "{count:?} against {measured:?}");
         }
     }
 
@@ -1083,8 +1084,9 @@ mod tests {
     /// the last bits of `L` move: 72 eps `<B>` observed, 42 with the step rule
     /// alone, at `s = -0.973`.
     /// Short sticks (`eps = alpha + beta` below `alpha/4`): Halley's method from
-    /// the series start, with its curvature term, takes what was measured (a
-    /// wrong `G''` falls back to Newton's steps, or wanders).
+    /// the series start, with its curvature term, takes what was measured,
+    /// within 2 % either way (a wrong `G''` falls back to Newton's steps, or
+    /// wanders; a worse start takes more steps).
     #[test]
     fn short_sticks_cost_what_was_measured() {
         let mut count = [0u32; 2];
@@ -1105,7 +1107,8 @@ mod tests {
         eprintln!("short sticks' evaluations [means, events]: {count:?}");
         let measured = [6436u32, 7460];
         for (c, m) in count.iter().zip(measured) {
-            assert!(f64::from(*c) <= 1.02 * f64::from(m), "{count:?} against {measured:?}");
+            let r = f64::from(*c) / f64::from(m);
+            assert!((0.98..=1.02).contains(&r), "{count:?} against {measured:?}");
         }
     }
 
