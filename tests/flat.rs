@@ -207,13 +207,10 @@ fn small_mu_keeps_relative_accuracy_when_jumping() {
 #[test]
 fn short_sticks_keep_every_digit() {
     use fricosc::spring::{Regime, Spring};
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/short-sticks.json"))
-        .expect("data/short-sticks.json is committed with the repository");
-    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-    let cases = v["cases"].as_array().unwrap();
+    let cases = common::data_cases("short-sticks.json");
     assert_eq!(cases.len(), 54);
     let (mut worst_d, mut worst_f, mut worst_t) = (0.0f64, 0.0f64, 0.0f64);
-    for c in cases {
+    for c in &cases {
         let text = |k: &str| c[k].as_str().unwrap().to_string();
         let (vbar, s): (f64, f64) = (text("vbar").parse().unwrap(), text("s").parse().unwrap());
         let rel = |got: f64, k: &str| common::exact_error(got, &text(k)) / text(k).parse::<f64>().unwrap().abs();

@@ -176,13 +176,10 @@ fn a_vanishing_flat_at_a_tiny_amplitude_is_the_paraboloid() {
 /// the error estimate bounds the error at the default tolerance and at 1e-9.
 #[test]
 fn worn_spheres_match_independent_values() {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/flat-tip-reference.json"))
-        .expect("data/flat-tip-reference.json is committed with the repository");
-    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-    let cases = v["cases"].as_array().unwrap();
+    let cases = common::data_cases("flat-tip-reference.json");
     assert_eq!(cases.len(), 12);
     let mut worst = 0.0f64;
-    for c in cases {
+    for c in &cases {
         let spec = format!("flat-tip:{}", c["flat_ratio"].as_str().unwrap());
         let (vbar, amp) = (c["vbar"].as_f64().unwrap(), c["amp"].as_f64().unwrap());
         let (mu, red) = (c["mu_ratio"].as_str().unwrap(), c["reduction"].as_str().unwrap());

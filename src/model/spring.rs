@@ -727,16 +727,18 @@ impl Spring {
         // vbar s = (c^2 - s^2)/(c sin(theta) - vbar s) with s^2 - c^2 = s^2 +
         // vbar^2 - 1 summed error-free: the short stick's deficit, of order eps^3, then
         // keeps its relative accuracy ([`short_stick`]).
-        let eps = {
+        // (Computed only for a spring that sticks from contact: every node of a
+        // tabulated or worn body's bands is solved here.)
+        let contact = || {
             let plain = vel.alpha + (FRAC_PI_2 - theta);
-            if s < 0.0 && plain < 2.0 * SHORT_STICK * vel.alpha {
+            let eps = if s < 0.0 && plain < 2.0 * SHORT_STICK * vel.alpha {
                 let margin = crate::special::squares_minus_one(s, vbar);
                 (-margin / (c() * sin_theta - vbar * s)).asin()
             } else {
                 plain
-            }
+            };
+            Start::Contact { theta, sin_theta, cos_theta: s, eps }
         };
-        let contact = Start::Contact { theta, sin_theta, cos_theta: s, eps };
         let (start, regime, start_force) = if s >= 1.0 {
             // In permanent contact: s - c = (s - 1) + vbar^2/(1 + c) (no
             // cancellation of 1 - c as vbar -> 0).
@@ -746,10 +748,10 @@ impl Spring {
             if s_minus_c >= 0.0 {
                 (Start::Tangent, Regime::JumpingSlipFirst, nonneg(s_minus_c))
             } else {
-                (contact, Regime::JumpingStickFirst, 0.0)
+                (contact(), Regime::JumpingStickFirst, 0.0)
             }
         } else if square() < 0.0 {
-            (contact, Regime::JumpingStickFirst, 0.0)
+            (contact(), Regime::JumpingStickFirst, 0.0)
         } else {
             out.regime = Regime::JumpingSlip;
             return out;
@@ -1074,15 +1076,6 @@ mod tests {
         }
     }
 
-    /// Halley's acceptance of a predicted error (the means' stick ends) is
-    /// honest: over 149 x 99 springs (`s` in (-1, 3), `vbar` in (0, 1)) the
-    /// stick length and tail found for the means lie within 1e-9 relative of
-    /// those found to the last bit (the events'; observed 2.3e-10, 3e-12 with
-    /// the step rule alone), and the deficits within 100 eps `<B>`. That last
-    /// is the deficit formula's rounding at the edge of contact (`s -> -1`,
-    /// where `<B>` vanishes and the formula's terms are ~1e3 times it), which
-    /// the last bits of `L` move: 72 eps `<B>` observed, 42 with the step rule
-    /// alone, at `s = -0.973`.
     /// Short sticks (`eps = alpha + beta` below `alpha/4`): Halley's method from
     /// the series start, with its curvature term, takes what was measured,
     /// within 2 % either way (a wrong `G''` falls back to Newton's steps, or
@@ -1131,6 +1124,15 @@ mod tests {
         }
     }
 
+    /// Halley's acceptance of a predicted error (the means' stick ends) is
+    /// honest: over 149 x 99 springs (`s` in (-1, 3), `vbar` in (0, 1)) the
+    /// stick length and tail found for the means lie within 1e-9 relative of
+    /// those found to the last bit (the events'; observed 2.3e-10, 3e-12 with
+    /// the step rule alone), and the deficits within 100 eps `<B>`. That last
+    /// is the deficit formula's rounding at the edge of contact (`s -> -1`,
+    /// where `<B>` vanishes and the formula's terms are ~1e3 times it), which
+    /// the last bits of `L` move: 72 eps `<B>` observed, 42 with the step rule
+    /// alone, at `s = -0.973`.
     #[test]
     fn the_means_stick_ends_are_as_accurate_as_predicted() {
         let (mut worst, mut worst_d, mut n) = (0.0f64, 0.0f64, 0);

@@ -6,6 +6,16 @@ use serde_json::Value;
 pub mod quad;
 pub mod spring_ref;
 
+/// The `cases` array of a committed reference file `data/<name>` (the 40-digit
+/// values of `data/scripts/`).
+pub fn data_cases(name: &str) -> Vec<Value> {
+    let path = format!("{}/data/{name}", env!("CARGO_MANIFEST_DIR"));
+    let text =
+        std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path} is committed with the repository: {e}"));
+    let v: Value = serde_json::from_str(&text).unwrap();
+    v["cases"].as_array().unwrap().clone()
+}
+
 /// `|got - exact|` for a reference given as decimal text, exact beyond f64: the
 /// text is split into its nearest double `x` and the remainder `exact - x`
 /// (from the decimal digits), so that errors far below an ulp of `exact` are
