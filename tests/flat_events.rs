@@ -1,15 +1,9 @@
 //! Flat-punch event phases, event forces and small `mu_ratio` against independent
 //! 40-digit values (`data/scripts/flat_events.py`, committed as `data/flat-events.json`):
 //! vbar from 1.7e-16 to 0.5, amp from 0.5 through 1 + 1e-9 to 1e3.
+mod common;
 use fricosc::Shape;
 use serde_json::Value;
-
-fn cases() -> Vec<Value> {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/flat-events.json"))
-        .expect("data/flat-events.json is committed with the repository");
-    let v: Value = serde_json::from_str(&text).unwrap();
-    v["cases"].as_array().unwrap().clone()
-}
 
 fn num(v: &Value) -> f64 {
     v.as_str().unwrap().parse().unwrap()
@@ -34,7 +28,7 @@ mod bar {
 #[test]
 fn event_phases_forces_and_small_mu_match_independent_40_digit_values() {
     let (mut worst_phase, mut worst_force, mut worst_mu) = (0.0f64, 0.0f64, 0.0f64);
-    let cs = cases();
+    let cs = common::data_cases("flat-events.json");
     assert!(cs.len() >= 100, "{} cases", cs.len());
     for c in &cs {
         let (vbar, amp) = (c["vbar"].as_f64().unwrap(), c["amp"].as_f64().unwrap());
