@@ -367,3 +367,31 @@ fn the_node_counts_stay_within_two_percent_of_the_measured() {
         within(got, measured, &format!("n {n} vbar {vbar:e} amp {amp}"));
     }
 }
+
+/// The exponents whose `y^gamma` could take a special path: the cone (`gamma =
+/// 0`) and the paraboloid (`gamma = -1/2`) do, `n = 2/3` rounded to a double
+/// (`gamma = 1/2` exactly) must not (`1/sqrt(y)` there is a different body).
+/// Each agrees with the test's own reference and with its neighbouring
+/// doubles (which take `powf`): `mu` moves by `~1e-16` over an ulp of `n`.
+#[test]
+fn exponents_with_an_exact_gamma_agree_with_their_neighbours_and_the_reference() {
+    let o = fricosc::Options::default();
+    for (n, gamma) in [(1.0, 0.0), (2.0, -0.5), (2.0 / 3.0, 0.5)] {
+        assert_eq!(1.0 / n - 1.0, gamma, "n = {n:?}");
+        for (v, a) in [(0.3, 0.5), (0.3, 2.0), (0.05, 1.3), (0.6, 1.0)] {
+            let at = |n: f64| power_law(n, v, a, &o).unwrap();
+            let r = at(n);
+            let (reference, acc) = mdr_ref::mu_ratio(n, v, a);
+            let err = (r.ratio.mu_ratio - reference).abs();
+            assert!(err <= tol::MDR_ABS.max(acc), "n={n:?} v={v} a={a}: err {err:e} (reference accuracy {acc:e})");
+            for m in [n.next_down(), n.next_up()] {
+                let q = at(m);
+                let diff = (q.ratio.mu_ratio - r.ratio.mu_ratio).abs();
+                assert!(
+                    diff <= r.error_estimate + q.error_estimate + 1e-15,
+                    "n={n:?} against {m:?}, v={v} a={a}: {diff:e}"
+                );
+            }
+        }
+    }
+}
