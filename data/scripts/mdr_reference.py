@@ -147,7 +147,9 @@ def flat_tip(e, vbar, amp, dps):
 if "--flat-tip" in sys.argv:
     cases = []
     for e in ("0.3", "0.7"):
-        for vbar, amp in ((0.3, 0.4), (0.05, 0.95), (0.6, 1.0), (0.2, 1.5), (0.9, 3.0), (1e-3, 1.2)):
+        # The last seven: small mu near and above amp = 1 (relative accuracy).
+        for vbar, amp in ((0.3, 0.4), (0.05, 0.95), (0.6, 1.0), (0.2, 1.5), (0.9, 3.0), (1e-3, 1.2),
+                          (1e-2, 0.999), (1e-6, 0.999), (1e-4, 1.0), (1e-6, 1.0), (1e-8, 1.0), (1e-12, 1.0), (1e-8, 2.0)):
             lo, hi = flat_tip(e, vbar, amp, 30), flat_tip(e, vbar, amp, 40)
             diff = abs(hi - lo) / hi
             assert diff < mpf(10) ** -20, (e, vbar, amp, diff)

@@ -24,12 +24,15 @@
 //! `s = (1 - t^2)/amp = 1, +-sqrt(1 - vbar^2), -1`, and each band is integrated
 //! with `t = p + (q - p)(1 - cos theta)/2` (which absorbs the square-root
 //! behaviour of the means at `s = +-1`) by Gauss-Legendre at orders 8, 16, 32,
-//! ... until two successive orders agree to the tolerance; their difference is
-//! the band's error estimate.
+//! ... until two successive orders agree to the tolerance (each of the mean
+//! normal force, the deficit and the mean tangential force); their difference
+//! is the band's error estimate. `mu` is the quotient of the tangential and the
+//! normal force where it is the small one (`amp` near or above 1, `vbar -> 0`),
+//! else `1 - ` that of the deficit (`ratio::from_sums`).
 
 use super::Contact;
 use crate::error::{Error, Result};
-use crate::ratio::{rounding_estimate, Ratio};
+use crate::ratio::Ratio;
 use crate::shape::Evaluation;
 use std::sync::Arc;
 
@@ -90,10 +93,10 @@ impl Curved {
         (z, k * (t / z) / root)
     }
 
-    /// `(int B dz, int D dz)` over the band `t` in `[p, q]` at Gauss order `m`,
-    /// in units of `kz du` times `unit` (`amp` for `amp <= 1`, else 1); `s(t)`
-    /// is the springs' `s`.
-    fn band(&self, p: f64, q: f64, vbar: f64, s_of: &dyn Fn(f64) -> f64, unit: f64, m: usize) -> (f64, f64) {
+    /// `[int <B> dz, int D dz, int <F> dz]` over the band `t` in `[p, q]` at
+    /// Gauss order `m`, in units of `kz du` times `unit` (`amp` for `amp <= 1`,
+    /// else 1); `s(t)` is the springs' `s`.
+    fn band(&self, p: f64, q: f64, vbar: f64, s_of: &dyn Fn(f64) -> f64, unit: f64, m: usize) -> [f64; 3] {
         super::cosine_band(p, q, m, vbar, unit, &|t| (s_of(t), self.z_of_t(t).1))
     }
 }
@@ -170,7 +173,10 @@ impl Contact for FlatTip {
         // the contact, and its square would be subnormal: it is dropped.
         let e = Some(self.flat_ratio / scale).filter(|e| (e * e).is_normal()).unwrap_or(0.0);
         let curved = Curved { e, k: (1.0 - self.flat_ratio) * (1.0 + self.flat_ratio) };
-        let (mut nn, mut dd) = (e * unit * flat.mean_normal, e * unit * flat.deficit);
+        // The flat's <F> as the flat punch's mu times its <B>: for amp <= 1 its
+        // s = 1/amp is rounded, and <F> = s - c + ... would cancel as vbar -> 0.
+        let flat_mu = crate::flat::ratio_of(&flat, amp)?.mu_ratio;
+        let mut sums = [flat.mean_normal, flat.deficit, flat.mean_normal * flat_mu].map(|x| e * unit * x);
         let c = ((1.0 - vbar) * (1.0 + vbar)).sqrt();
         // s(t) = (1 - t^2)/amp, or 1/amp - t^2 in scaled lengths; 1 - t^2 = (1 - t)(1 + t).
         let s_of = move |t: f64| if big { 1.0 / amp - t * t } else { (1.0 - t) * (1.0 + t) / amp };
@@ -182,7 +188,7 @@ impl Contact for FlatTip {
         }
         cuts.sort_by(f64::total_cmp);
         cuts.dedup();
-        let (mut en, mut ed, mut nodes) = (0.0, 0.0, 0usize);
+        let (mut errors, mut nodes) = ([0.0; 3], 0usize);
         for w in cuts.windows(2) {
             let (p, q) = (w[0], w[1]);
             if q <= p {
@@ -195,22 +201,21 @@ impl Contact for FlatTip {
                 m *= 2;
                 let cur = curved.band(p, q, vbar, &s_of, unit, m);
                 nodes += m;
-                let d = ((cur.0 - prev.0).abs(), (cur.1 - prev.1).abs());
-                let done = d.0 <= tol * (nn.abs() + cur.0.abs()) && d.1 <= tol * (dd.abs() + cur.1.abs());
+                let d: [f64; 3] = std::array::from_fn(|k| (cur[k] - prev[k]).abs());
+                // Each of the three sums to the tolerance relative to its total
+                // so far (the tangential force too: it gives mu where mu is small).
+                let done = (0..3).all(|k| d[k] <= tol * (sums[k].abs() + cur[k].abs()));
                 if done || m >= MAX_ORDER {
-                    nn += cur.0;
-                    dd += cur.1;
-                    en += d.0;
-                    ed += d.1;
+                    for k in 0..3 {
+                        sums[k] += cur[k];
+                        errors[k] += d[k];
+                    }
                     break;
                 }
                 prev = cur;
             }
         }
-        let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
-        let truncation = crate::ratio::quotient_error(nn, dd, en, ed);
-        let estimate = truncation + rounding_estimate(reduction, nodes);
-        let ratio = Ratio::from_deficit_within(dd, nn, estimate, "flat-tip contact")?;
+        let (ratio, estimate) = crate::ratio::from_sums(sums, errors, nodes, "flat-tip contact")?;
         Ok(Evaluation { ratio, error_estimate: estimate, interpolation_error: None })
     }
 

@@ -44,7 +44,6 @@ mod foundation;
 mod normal;
 
 use crate::ratio::Ratio;
-use crate::ratio::ROUNDING_PER_TERM;
 use crate::shape::DEFAULT_TOL;
 use crate::special::one_minus_a_cos_asin;
 use crate::spring::{Spring, Velocity};
@@ -225,7 +224,7 @@ fn ratio_of(
         // Each spring's <F> is a sum of non-negative terms (16 eps each); the
         // slip-first band's is <B> - D, rounding with their size.
         let cancel = 4.0 * eps * (slip_first.value[NORMAL] + slip_first.value[DEFICIT]) / nn;
-        let rounding = eps * 2.0 * (ROUNDING_PER_TERM + (total.nodes as f64).sqrt()) * mu + cancel;
+        let rounding = crate::ratio::quotient_rounding(mu, total.nodes) + cancel;
         let estimate = truncation + rounding;
         (Ratio::from_mu_within(mu, estimate, "power-law contact")?, estimate)
     } else {

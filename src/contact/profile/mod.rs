@@ -10,9 +10,12 @@
 //! of the interpolated `f` (in closed form per interval, summed over the
 //! intervals hierarchically in `O(n log n)`: `transform::mdr_transform_knots`), and
 //! interpolated again. The error interpolation adds is estimated by
-//! computing `mu` a second time on the table with every other point removed:
-//! PCHIP converges like `h^3`, so the difference overestimates the error of the
-//! full table; it is reported as `interpolation_error`.
+//! integrating a second time on the table with every other point removed:
+//! PCHIP converges like `h^3`, so the differences overestimate the error of the
+//! full table. Each of the sums `mu` is the quotient of differs separately, and
+//! the differences are propagated through the quotient in absolute value
+//! (the difference of the two `mu` can vanish by accident:
+//! `ratio::sums_difference`); it is reported as `interpolation_error`.
 //!
 //! # Quadrature
 //! With `z = x/x_c` (`g(x_c) = U0`) and `G = g/U0`, the springs are integrated
@@ -20,7 +23,9 @@
 //! `s = (1 - G(z))/amp = 1, +-sqrt(1 - vbar^2), -1`. On each interval the
 //! substitution `z = p + (q - p)(1 - cos t)/2` absorbs the square-root
 //! behaviour at `s = +-1`, and Gauss-Legendre at 16 and 32 points gives the
-//! value and its error estimate.
+//! value and its error estimate. `mu` is the quotient of the mean tangential
+//! force and the mean normal force where it is the small one, else `1 - ` that
+//! of the deficit (`ratio::from_sums`).
 
 use crate::error::{Error, Result};
 mod transform;
@@ -323,23 +328,30 @@ pub(crate) struct TabulatedResult {
 }
 
 /// Evaluate a tabulated contact at `(vbar, amp)`; both must be finite and `>= 0`
-/// (an error otherwise).
+/// (an error otherwise). The interpolation error is the difference the coarse
+/// table makes to the sums, propagated through the quotient
+/// (`ratio::sums_difference`).
 pub(crate) fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedResult> {
     crate::error::check_nonneg("vbar", vbar)?;
     crate::error::check_nonneg("amp", amp)?;
-    let (ratio, err) = integrate(&t.g, vbar, amp)?;
+    if amp == 0.0 || vbar >= 1.0 {
+        let ratio = Ratio { mu_ratio: 1.0, reduction: 0.0 };
+        return Ok(TabulatedResult { ratio, error_estimate: 0.0, interpolation_error: 0.0 });
+    }
+    let fine = integrate(&t.g, vbar, amp)?;
     let interpolation_error = match &t.coarse {
-        Some(c) => integrate(c, vbar, amp).map_or(0.0, |(r, _)| (r.mu_ratio - ratio.mu_ratio).abs()),
+        Some(c) => integrate(c, vbar, amp)
+            .map_or(0.0, |coarse| fine.scale * crate::ratio::sums_difference(fine.sums, coarse.sums)),
         None => 0.0,
     };
-    Ok(TabulatedResult { ratio, error_estimate: err, interpolation_error })
+    Ok(TabulatedResult { ratio: fine.ratio, error_estimate: fine.estimate, interpolation_error })
 }
 
 /// Mean normal force of the whole contact at amplitude `amp`, units
 /// `E* x_c U0` (both sides of the MDR foundation), by the same quadrature.
 pub(crate) fn mean_normal(t: &Tabulated, amp: f64) -> Result<f64> {
     crate::error::check_nonneg("amp", amp)?;
-    Ok(2.0 * integrate_full(&t.g, 0.5, amp)?.2)
+    Ok(2.0 * integrate(&t.g, 0.5, amp)?.sums[0])
 }
 
 /// `G(z)` of a tabulated contact (the cubic interpolant; the end cubics
@@ -376,23 +388,30 @@ pub(crate) fn static_force(t: &Tabulated, depth: f64) -> f64 {
     }
 }
 
-fn integrate(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64)> {
-    if amp == 0.0 || vbar >= 1.0 {
-        return Ok((Ratio { mu_ratio: 1.0, reduction: 0.0 }, 0.0));
-    }
-    integrate_full(g, vbar, amp).map(|(r, e, _)| (r, e))
+/// One quadrature of a table: the ratio, its error estimate, the sums `[nn,
+/// dd, tt]` of [`crate::ratio::from_sums`] (at [`crate::contact::AMP_LINEAR`]
+/// for an `amp` below it) and the factor `scale` by which that ratio's
+/// reduction was scaled (1 otherwise).
+struct Quadrature {
+    ratio: Ratio,
+    estimate: f64,
+    sums: [f64; 3],
+    scale: f64,
 }
 
-/// Ratio, error estimate, and the one-sided mean normal `int amp <B> dz`.
-fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
+/// The quadrature of the springs of `g` at `(vbar, amp)`; at `amp = 0` only the
+/// sums' normal force is meaningful (one side's static force).
+fn integrate(g: &Pchip, vbar: f64, amp: f64) -> Result<Quadrature> {
     if amp > 0.0 && amp < crate::contact::AMP_LINEAR {
-        let (at, estimate, nn) = integrate_full(g, vbar, crate::contact::AMP_LINEAR)?;
+        let at = integrate(g, vbar, crate::contact::AMP_LINEAR)?;
         let k = amp / crate::contact::AMP_LINEAR;
-        return Ok((at.scaled(k), estimate * k, nn));
+        return Ok(Quadrature { ratio: at.ratio.scaled(k), estimate: at.estimate * k, scale: k, ..at });
     }
     if amp == 0.0 {
         // No oscillation: one side's static force, int (1 - G(z))_+ dz.
-        return Ok((Ratio { mu_ratio: 1.0, reduction: 0.0 }, 0.0, 0.5 * normal_force(g, 1.0)));
+        let nn = 0.5 * normal_force(g, 1.0);
+        let ratio = Ratio { mu_ratio: 1.0, reduction: 0.0 };
+        return Ok(Quadrature { ratio, estimate: 0.0, sums: [nn, 0.0, nn], scale: 1.0 });
     }
     let gmax = *g.values().last().unwrap_or(&0.0);
     if gmax < 1.0 + amp {
@@ -420,21 +439,18 @@ fn integrate_full(g: &Pchip, vbar: f64, amp: f64) -> Result<(Ratio, f64, f64)> {
     let pass = |p: f64, q: f64, m: usize| {
         crate::contact::cosine_band(p, q, m, vbar, amp, &|z| ((1.0 - g.eval(z).0) / amp, 1.0))
     };
-    let (mut nn, mut dd, mut en, mut ed) = (0.0, 0.0, 0.0, 0.0);
+    let (mut sums, mut errors) = ([0.0; 3], [0.0; 3]);
     for w in cuts.windows(2) {
         let (a, b) = (pass(w[0], w[1], PASS_ORDERS.0), pass(w[0], w[1], PASS_ORDERS.1));
-        nn += b.0;
-        dd += b.1;
-        en += (b.0 - a.0).abs();
-        ed += (b.1 - a.1).abs();
+        for k in 0..3 {
+            sums[k] += b[k];
+            errors[k] += (b[k] - a[k]).abs();
+        }
     }
     // Truncation (the 16/32-point difference per interval) plus rounding.
-    let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
     let terms = (PASS_ORDERS.0 + PASS_ORDERS.1) * (cuts.len() - 1);
-    let truncation = crate::ratio::quotient_error(nn, dd, en, ed);
-    let estimate = truncation + crate::ratio::rounding_estimate(reduction, terms);
-    let ratio = Ratio::from_deficit_within(dd, nn, estimate, "tabulated contact")?;
-    Ok((ratio, estimate, nn))
+    let (ratio, estimate) = crate::ratio::from_sums(sums, errors, terms, "tabulated contact")?;
+    Ok(Quadrature { ratio, estimate, sums, scale: 1.0 })
 }
 
 #[cfg(test)]
