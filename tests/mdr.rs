@@ -362,6 +362,9 @@ fn the_node_counts_stay_within_two_percent_of_the_measured() {
         (1.0, 1e-6, 0.9, 288),
         (3.0, 0.01, 0.2, 176),
         (2.0, 1e-3, 1.0, 240),
+        // The cone at the boundary: its Jacobian has no branch point (224
+        // nodes where one was graded for).
+        (1.0, 0.8, 5.0 / 3.0, 16),
     ] {
         let got = power_law(n, vbar, amp, &Options::default()).unwrap().nodes;
         within(got, measured, &format!("n {n} vbar {vbar:e} amp {amp}"));
