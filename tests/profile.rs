@@ -134,6 +134,10 @@ fn a_non_monotone_transform_is_refused() {
     std::fs::write(&p, "r,f\n0,0\n0.5,0\n0.9,0\n0.95,0.5\n1,1\n2,1\n").unwrap();
     let e = common::shape(&format!("profile:{}@0.9", p.display())).unwrap_err().to_string();
     assert!(e.contains("decreases after x") && e.contains("largest g"), "{e}");
+    // The largest g is at least the step's height (x/sqrt(x^2 - r^2) >= 1 in
+    // the transform), so not the transform's first value 0.
+    let largest: f64 = e.split("largest g = ").nth(1).unwrap().split(' ').next().unwrap().parse().unwrap();
+    assert!(largest >= 1.0, "{e}");
 }
 
 /// At a subnormal amplitude the spring coordinate `(1 - G)/amp` overflows; the
@@ -182,5 +186,111 @@ fn a_tabulated_paraboloid_keeps_small_mu_to_its_relative_accuracy() {
             // A regression bar at 10 times the worst observed (3.5e-15), within the published 1e-12.
             assert!(err <= 4e-14 * p.ratio.mu_ratio, "a={a} v={v}: relative {:e}", err / p.ratio.mu_ratio);
         }
+    }
+}
+
+/// The table format at the library level (the command line's tests see it
+/// through files): comma, semicolon and blank separators, one header line, `#`
+/// comments and blank lines give the same contact, and a second column that
+/// does not start at 0 is shifted to; messages name the file's line.
+#[test]
+fn the_table_format_and_the_lines_its_messages_name() {
+    use fricosc::profile::Table;
+    let at = |text: &str| Table::parse(text, "t", false).unwrap().at(1.0).unwrap().named("t");
+    let base = at("x,g\n0,0\n0.5,0.25\n1,1\n1.5,2.25\n2,4\n");
+    for text in [
+        "x;g\n0;0\n0.5;0.25\n1;1\n1.5;2.25\n2;4\n",
+        "x g\n0 0\n0.5\t0.25\n1  1\n1.5 2.25\n2 4\n",
+        "# a comment\n\nx,g\n0,0 # after a row\n0.5,0.25\n\n1,1\n1.5,2.25\n2,4\n",
+        "x,g\n0,5\n0.5,5.25\n1,6\n1.5,7.25\n2,9\n",
+    ] {
+        assert_eq!(at(text), base, "{text:?}");
+    }
+    for (text, message) in [
+        ("x,g\n0,0\n1,1\n1,2\n2,3\n", "t: line 4: the first column must increase strictly"),
+        ("x,g\n0,0\n1,1\n0.5,2\n2,3\n", "t: line 4: the first column must increase strictly"),
+        ("# c\nx,g\n0,0\n1,1\n2,0.5\n3,4\n", "t: line 5: the profile must not decrease"),
+        ("x,g\n0,0\n\n1,inf\n2,3\n", "t: line 4: values must be finite"),
+        ("x,g\n0,0\n1,1\n2,x\n", "t: line 4: expected two numbers"),
+        ("x,g\n0,0\n1,1,1\n", "t: line 3: expected two numbers"),
+    ] {
+        let e = Table::parse(text, "t", false).unwrap_err().to_string();
+        assert!(e.contains(message), "{text:?}: {e}");
+    }
+}
+
+/// `MAX_TABLE_ROWS` rows are read (an equivalent profile: no transform to
+/// wait for), one more is refused before anything is built, from text and
+/// from arrays alike.
+#[test]
+fn a_table_of_the_most_rows_is_read_and_one_more_refused() {
+    use fricosc::profile::{Table, MAX_TABLE_ROWS};
+    let rows = |n: usize| -> (Vec<f64>, Vec<f64>) { (0..n).map(|i| (i as f64, (i * i) as f64)).unzip() };
+    let text = |n: usize| -> String {
+        let mut s = String::with_capacity(24 * n);
+        for i in 0..n {
+            s += &format!("{i},{}\n", i * i);
+        }
+        s
+    };
+    let t = Table::parse(&text(MAX_TABLE_ROWS), "t", false).unwrap();
+    assert_eq!(t.max_g(), ((MAX_TABLE_ROWS - 1) * (MAX_TABLE_ROWS - 1)) as f64);
+    let e = Table::parse(&text(MAX_TABLE_ROWS + 1), "t", false).unwrap_err();
+    assert!(matches!(e, fricosc::Error::TooLarge { .. }), "{e}");
+    let (x, g) = rows(MAX_TABLE_ROWS);
+    assert!(Table::from_columns(x, g, false, "t").is_ok());
+    let (x, g) = rows(MAX_TABLE_ROWS + 1);
+    let e = Table::from_columns(x, g, false, "t").unwrap_err();
+    assert!(matches!(e, fricosc::Error::TooLarge { .. }), "{e}");
+}
+
+/// `Table::at` refuses a mean indentation that is not finite and positive,
+/// naming it, and one the table does not reach; `max_g` is the table's largest
+/// `g`, transformed for a profile (`f = r^2/2` has `g = x^2`).
+#[test]
+fn a_table_at_a_mean_indentation_and_its_largest_g() {
+    use fricosc::profile::Table;
+    let x: Vec<f64> = (0..=40).map(|i| 0.05 * i as f64).collect();
+    let g: Vec<f64> = x.iter().map(|x| x * x).collect();
+    let f: Vec<f64> = x.iter().map(|x| 0.5 * x * x).collect();
+    let table = Table::from_columns(x.clone(), g, false, "squares").unwrap();
+    assert_eq!(table.max_g(), 4.0);
+    let profile = Table::from_columns(x, f, true, "paraboloid").unwrap();
+    assert!((profile.max_g() - 4.0).abs() <= 1e-14, "{}", profile.max_g());
+    for u0 in [-1.0, 0.0, -0.0, f64::NAN, f64::INFINITY] {
+        let e = table.at(u0).unwrap_err().to_string();
+        assert!(e.contains("U0") && e.contains("the mean indentation must be finite and > 0"), "{u0}: {e}");
+    }
+    for u0 in [4.0000001, 1e300] {
+        let e = table.at(u0).unwrap_err().to_string();
+        assert!(e.contains("the contact is wider than the table"), "{u0}: {e}");
+    }
+    assert!((table.at(4.0).unwrap().contact_radius - 2.0).abs() <= 1e-15);
+}
+
+/// Through the `Contact` trait: a tabulated contact's reach (`G(z) = 1 + amp`,
+/// `z = sqrt(1 + amp)` for `g = x^2` at `U0 = 1`) and its refusal where the
+/// table ends first, its breakpoints (the knots over the contact radius, where
+/// the sliding-direction quadrature cuts), and the exact answers without a
+/// stick (`vbar >= 1`, `amp = 0`: `mu = 1` with no error at all).
+#[test]
+fn a_tabulated_contact_through_the_trait() {
+    use fricosc::Contact;
+    let x: Vec<f64> = (0..=40).map(|i| 0.05 * i as f64).collect();
+    let g: Vec<f64> = x.iter().map(|x| x * x).collect();
+    let t = fricosc::profile::Table::from_columns(x.clone(), g, false, "squares").unwrap().at(1.0).unwrap();
+    for amp in [0.0, 0.5, 2.0, 3.0] {
+        let z = t.reach(amp).unwrap();
+        assert!((z - (1.0 + amp).sqrt()).abs() <= 1e-15, "amp {amp}: {z}");
+    }
+    let e = t.reach(3.0000001).unwrap_err().to_string();
+    assert!(e.contains("the tabulated profile ends at g = 4.0 U0"), "{e}");
+    assert!(t.reach(-1.0).is_err());
+    let knots: Vec<f64> = x.iter().map(|x| x / t.contact_radius).collect();
+    assert_eq!(t.breakpoints(), knots);
+    for (vbar, amp) in [(1.0, 0.5), (1.5, 2.0), (0.3, 0.0)] {
+        let e = t.evaluate(vbar, amp, fricosc::DEFAULT_TOL).unwrap();
+        assert_eq!((e.ratio.mu_ratio, e.ratio.reduction, e.error_estimate), (1.0, 0.0, 0.0), "{vbar} {amp}");
+        assert_eq!(e.interpolation_error, Some(0.0));
     }
 }
