@@ -261,3 +261,39 @@ fn jumping_shares_at_their_limits() {
     let shares: Vec<f64> = [0.1, 0.5, 0.9].iter().map(|&a| fricosc::regime::jumping_share(&par, a).unwrap()).collect();
     assert!(shares[0] > 0.0 && shares[2] < 1.0 && shares.windows(2).all(|w| w[0] < w[1]), "{shares:?}");
 }
+
+/// Curved contacts at `amp >= 1` and velocities down to the smallest
+/// subnormal, where `mu` is `vbar` times a slope: within its estimate of that
+/// slope (taken at `vbar = 1e-250`, accurate to ~1e-15; `mu/vbar` changes by
+/// ~15 vbar) times `vbar`. Solved directly, the springs' forces went
+/// subnormal and `mu` lost digits its estimate did not cover (the paraboloid at
+/// `amp = 2`: 2.4056e-320 for 2.4079e-320 with an estimate of 0; at `vbar =
+/// 1e-310`, 3.6e-323 off for 5e-324).
+#[test]
+fn curved_contacts_at_subnormal_velocities() {
+    let shapes = [
+        Shape::parse("parabolic").unwrap(),
+        Shape::parse("cone").unwrap(),
+        Shape::parse("power:1.5").unwrap(),
+        Shape::parse("flat-tip:0.3").unwrap(),
+        table_of_squares(),
+    ];
+    for shape in &shapes {
+        for amp in [1.0, 2.0] {
+            let slope = shape.evaluate(1e-250, amp).unwrap().ratio.mu_ratio / 1e-250;
+            for vbar in [1e-280, 1e-290, 1e-300, 1e-310, 1e-320, 5e-324] {
+                let e = shape.evaluate(vbar, amp).unwrap();
+                let expected = slope * vbar;
+                let err = (e.ratio.mu_ratio - expected).abs();
+                assert!(
+                    err <= e.error_estimate + 4e-15 * expected,
+                    "{} amp {amp} vbar {vbar:e}: {:e} vs {expected:e}, estimate {:e}",
+                    shape.name(),
+                    e.ratio.mu_ratio,
+                    e.error_estimate
+                );
+                assert_eq!(e.ratio.reduction, 1.0);
+            }
+        }
+    }
+}

@@ -156,6 +156,12 @@ impl Contact for FlatTip {
             let ratio = Ratio { mu_ratio: 0.0, reduction: 1.0 };
             return Ok(Evaluation { ratio, error_estimate: 0.0, interpolation_error: None });
         }
+        let at = crate::contact::VelocityScale::of(vbar, amp);
+        if at.vbar != vbar {
+            let e = self.evaluate(at.vbar, amp, tol)?;
+            let (ratio, error_estimate) = at.back(e.ratio, e.error_estimate);
+            return Ok(Evaluation { ratio, error_estimate, interpolation_error: None });
+        }
         if amp < crate::contact::AMP_LINEAR {
             let at = self.evaluate(vbar, crate::contact::AMP_LINEAR, tol)?;
             let k = amp / crate::contact::AMP_LINEAR;

@@ -11,6 +11,7 @@
 //! sphere worn flat at its tip. A caller's own contact needs no registry:
 //! [`shape::Shape::from_contact`].
 use crate::error::Result;
+use crate::ratio::Ratio;
 use crate::shape::{Evaluation, Point};
 use std::f64::consts::PI;
 
@@ -176,6 +177,54 @@ pub(crate) fn cosine_band(
 /// at this amplitude and scale it ([`crate::ratio::Ratio::scaled`]), with a
 /// relative error of order `AMP_LINEAR` itself.
 pub(crate) const AMP_LINEAR: f64 = 1e-300;
+
+/// Below this velocity a curved contact at `amp >= 1` (where `mu -> 0` like
+/// `vbar`) is solved at `vbar` times [`VBAR_SCALE`] and its `mu` scaled back
+/// ([`VelocityScale`]): solved directly, its springs' forces of order `vbar`
+/// would go subnormal, and `mu` lost its relative accuracy beyond what its
+/// estimate covered (the paraboloid at `amp = 2, vbar = 1e-320`: 2.4056e-320
+/// for 2.4079e-320, estimate 0). `2^-960`, about `1.03e-289`.
+pub(crate) const VBAR_LINEAR: f64 = f64::from_bits((1023 - 960) << 52);
+/// The factor of [`VBAR_LINEAR`]: `2^192`, so that the scaled velocity stays
+/// below `2^-768` (about `6.4e-232`), where `mu/vbar` has converged to far
+/// below an ulp (its relative change is about `15 vbar`).
+pub(crate) const VBAR_SCALE: f64 = f64::from_bits((1023 + 192) << 52);
+
+/// How a curved contact treats a velocity below [`VBAR_LINEAR`] at `amp >= 1`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct VelocityScale {
+    /// The velocity to solve at.
+    pub(crate) vbar: f64,
+    /// Whether it was scaled (then [`VelocityScale::back`] applies).
+    scaled: bool,
+}
+
+impl VelocityScale {
+    /// The velocity to solve `(vbar, amp)` at.
+    pub(crate) fn of(vbar: f64, amp: f64) -> VelocityScale {
+        if amp >= 1.0 && vbar > 0.0 && vbar < VBAR_LINEAR {
+            VelocityScale { vbar: vbar * VBAR_SCALE, scaled: true }
+        } else {
+            VelocityScale { vbar, scaled: false }
+        }
+    }
+
+    /// The ratio and an error (estimate or interpolation) at the velocity
+    /// asked for, from those at [`VelocityScale::vbar`]: `mu` divided by
+    /// [`VBAR_SCALE`] (exact, but for the one rounding of a subnormal result),
+    /// and the error likewise plus that rounding (at most half the smallest
+    /// subnormal, which is added: its half rounds to 0) and the linearisation
+    /// (`mu` times `1e3` times the scaled velocity, far above the observed
+    /// `15 vbar`).
+    pub(crate) fn back(self, ratio: Ratio, error: f64) -> (Ratio, f64) {
+        if !self.scaled {
+            return (ratio, error);
+        }
+        let mu = ratio.mu_ratio / VBAR_SCALE;
+        let error = error / VBAR_SCALE + f64::from_bits(1) + 1e3 * self.vbar * mu;
+        (Ratio { mu_ratio: mu, reduction: 1.0 - mu }, error)
+    }
+}
 
 /// The flat cylindrical punch: one spring (seed section 2).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -151,7 +151,10 @@ fn permanent_band(n: f64, vbar: f64, amp: f64, z1: f64) -> Permanent {
 /// options; [`crate::Error::Internal`] for a bug.
 pub fn power_law(n: f64, vbar: f64, amp: f64, opts: &crate::Options) -> crate::Result<MdrResult> {
     check(n, vbar, amp, opts)?;
-    solve(n, vbar, amp, opts.tol, Report::Ratio)
+    let at = crate::contact::VelocityScale::of(vbar, amp);
+    let r = solve(n, at.vbar, amp, opts.tol, Report::Ratio)?;
+    let (ratio, error_estimate) = at.back(r.ratio, r.error_estimate);
+    Ok(MdrResult { ratio, error_estimate, ..r })
 }
 
 /// Check the inputs of [`power_law`] and [`point`].
@@ -435,7 +438,7 @@ pub fn point(n: f64, vbar: f64, amp: f64, opts: &crate::Options) -> crate::Resul
     let tol = opts.tol;
     // mu_ratio and its estimate from the same call as every other command (one
     // value per input); the bands, normal force and node count from the banded run.
-    let plain = solve(n, vbar, amp, tol, Report::Ratio)?;
+    let plain = power_law(n, vbar, amp, opts)?;
     let mut result = solve(n, vbar, amp, tol, Report::Bands)?;
     result.ratio = plain.ratio;
     result.error_estimate = plain.error_estimate;

@@ -338,6 +338,13 @@ pub(crate) fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedRe
         let ratio = Ratio { mu_ratio: 1.0, reduction: 0.0 };
         return Ok(TabulatedResult { ratio, error_estimate: 0.0, interpolation_error: 0.0 });
     }
+    let at = crate::contact::VelocityScale::of(vbar, amp);
+    if at.vbar != vbar {
+        let r = evaluate(t, at.vbar, amp)?;
+        let (ratio, error_estimate) = at.back(r.ratio, r.error_estimate);
+        let interpolation_error = at.back(r.ratio, r.interpolation_error).1;
+        return Ok(TabulatedResult { ratio, error_estimate, interpolation_error });
+    }
     let fine = integrate(&t.g, vbar, amp)?;
     let interpolation_error = match &t.coarse {
         Some(c) => integrate(c, vbar, amp)
