@@ -122,6 +122,10 @@ fn tabulated_shapes_at_extreme_scales_are_right_or_refused() {
     // A near-vertical first step.
     let path = write("step.csv", &[(0.0, 0.0), (1e-300, 1.0), (1.0, 2.0), (2.0, 3.0)]);
     assert!(eval(&format!("gx:{path}@1"), 0.3, 0.4).unwrap_err().to_string().contains("too close"));
+    // And one inside the table.
+    let path = write("inner-step.csv", &[(0.0, 0.0), (1.0, 1.0), (1.0 + 1e-13, 2.0), (2.0, 3.0)]);
+    let e = eval(&format!("gx:{path}@1"), 0.3, 0.4).unwrap_err().to_string();
+    assert!(e.contains("rows 1 and 2 are too close"), "{e}");
 }
 
 /// A profile whose MDR transform falls (a step) is refused with the largest g.
