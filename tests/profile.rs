@@ -168,6 +168,17 @@ fn tabulated_contact_at_subnormal_amplitude() {
             .reduction;
     let rel = (small - analytic / 1e-200).abs() / small;
     assert!(rel < 1e-6, "tabulated slope {small} vs paraboloid {}: {rel:e}", analytic / 1e-200);
+    // The estimates scale with the amplitude too (computed at 1e-300 and
+    // scaled: unscaled they would be those of 1e-300, the estimate's half an
+    // ulp of 1 among them).
+    for a in [1e-305, 2.1219957905e-314] {
+        let e = shape.evaluate(0.3, a).unwrap();
+        let scale = a / 1e-300;
+        assert!(e.error_estimate <= 1e-15 * scale, "amp {a:e}: estimate {:e}", e.error_estimate);
+        let at = shape.evaluate(0.3, 1e-300).unwrap();
+        let interp = e.interpolation_error.unwrap();
+        assert!(interp <= at.interpolation_error.unwrap() * scale * 1.0000001 + 1e-323, "amp {a:e}: {interp:e}");
+    }
 }
 
 /// A tabulated paraboloid (`g = x^2` sampled: the cubic interpolant is exact
@@ -289,6 +300,12 @@ fn a_tabulated_contact_through_the_trait() {
     }
     let e = t.reach(3.0000001).unwrap_err().to_string();
     assert!(e.contains("the tabulated profile ends at g = 4.0 U0"), "{e}");
+    let e = t.evaluate(0.3, 3.0000001, fricosc::DEFAULT_TOL).unwrap_err().to_string();
+    assert!(e.contains("amp") && e.contains("the tabulated profile ends at g = 4.0 U0"), "{e}");
+    assert!(t.evaluate(0.3, 3.0, fricosc::DEFAULT_TOL).is_ok());
+    // The mean normal force without oscillation is the static force at the mean indentation.
+    assert_eq!(t.mean_normal(0.0).unwrap(), t.static_force(1.0));
+    assert!((t.static_force(1.0) - 4.0 / 3.0).abs() <= 1e-14);
     assert!(t.reach(-1.0).is_err());
     let knots: Vec<f64> = x.iter().map(|x| x / t.contact_radius).collect();
     assert_eq!(t.breakpoints(), knots);
