@@ -798,7 +798,8 @@ impl Spring {
                 (before + stick + after) / TAU
             }
             (Regime::PermanentStickSlip, Some(st)) => st.start_force + self.tangent_excess().unwrap_or(f64::NAN),
-            _ => self.mean_normal - self.deficit,
+            // No stick: no deficit, the spring slides whenever it touches.
+            _ => self.mean_normal,
         }
     }
 
