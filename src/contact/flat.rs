@@ -74,6 +74,7 @@ pub fn mean_normal(amp: f64) -> f64 {
 
 /// Reduction from the spring: for `amp <= 1`, `<B> = s = 1/amp` and the
 /// reduction is `amp * D` (no division by a large `s`).
+#[inline]
 pub(crate) fn ratio_of(sp: &Spring, amp: f64) -> Result<Ratio> {
     let context = "flat punch";
     if amp <= 1.0 {
