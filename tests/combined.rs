@@ -509,7 +509,9 @@ fn the_estimate_bounds_the_error_at_every_tolerance() {
                         for tol in [1e-3, 1e-6, 1e-9, 1e-12] {
                             let r = evaluate(&shape, &o, tol).unwrap();
                             let e = (r.ratio.mu_ratio - best.ratio.mu_ratio).abs();
-                            if e > r.error_estimate + best.error_estimate || r.error_estimate > 10.0 * tol.max(1e-13) {
+                            if common::exceeds(e, r.error_estimate + best.error_estimate)
+                                || common::exceeds(r.error_estimate, 10.0 * tol.max(1e-13))
+                            {
                                 misses
                                     .push(format!("{spec} {o:?} tol {tol:e}: {e:e}, estimate {:e}", r.error_estimate));
                             }

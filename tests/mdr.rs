@@ -282,7 +282,7 @@ fn the_estimate_bounds_the_error_at_every_tolerance_on_a_wide_grid() {
                 for tol in [1e-3, 1e-5, 1e-7, 1e-9, 1e-11] {
                     let r = power_law(n, vbar, amp, &Options::default().with_tol(tol)).unwrap();
                     let e = (r.ratio.mu_ratio - best.ratio.mu_ratio).abs();
-                    if e > r.error_estimate + best.error_estimate {
+                    if common::exceeds(e, r.error_estimate + best.error_estimate) {
                         misses.push(format!(
                             "n {n} vbar {vbar:?} amp {amp:?} tol {tol:e}: {e:e} > {:e}",
                             r.error_estimate
@@ -316,7 +316,7 @@ fn the_stick_first_band_starting_at_the_centre_threshold() {
                 for tol in [1e-3, 1e-7, 1e-11] {
                     let r = power_law(n, vbar, amp, &Options::default().with_tol(tol)).unwrap();
                     let e = (r.ratio.mu_ratio - best.ratio.mu_ratio).abs();
-                    if e > r.error_estimate + best.error_estimate {
+                    if common::exceeds(e, r.error_estimate + best.error_estimate) {
                         misses
                             .push(format!("n {n} vbar {vbar} amp {amp:?} tol {tol:e}: {e:e} > {:e}", r.error_estimate));
                     }

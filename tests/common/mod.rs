@@ -19,12 +19,21 @@ pub fn data_cases(name: &str) -> Vec<Value> {
 /// `|got - exact|` for a reference given as decimal text, exact beyond f64: the
 /// text is split into its nearest double `x` and the remainder `exact - x`
 /// (from the decimal digits), so that errors far below an ulp of `exact` are
-/// measured, not rounded away.
+/// measured, not rounded away. A `got` that is not a number fails here: a NaN
+/// error would pass every `err > bound` miss check and vanish in `worst.max(err)`.
 pub fn exact_error(got: f64, exact: &str) -> f64 {
+    assert!(!got.is_nan(), "a NaN where {exact} was expected");
     let x: f64 = exact.parse().unwrap();
     // exact - x in decimal: both as scaled integers of the text's digits.
     let residue = decimal_minus(exact, x);
     ((got - x) - residue).abs()
+}
+
+/// Whether `err` is not within `bound`: larger, or either one NaN. Miss checks
+/// written as `if err > bound` let a NaN error (or estimate) through, as
+/// `worst.max(err)` swallows it; this one counts it as a miss.
+pub fn exceeds(err: f64, bound: f64) -> bool {
+    !matches!(err.partial_cmp(&bound), Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal))
 }
 
 /// `text - x` for a decimal `text` and a double `x` near it, as a double:
