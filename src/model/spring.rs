@@ -1050,7 +1050,7 @@ mod tests {
             let st = Spring::with_events(2.0, v).stick.unwrap();
             let (length, tail) = tangent_length_guess(vel.alpha, v);
             let rel = (length / st.length - 1.0).abs().max((tail / st.tail - 1.0).abs());
-            worst = worst.max(rel);
+            worst = crate::numerics::worst_of(worst, rel);
         }
         eprintln!("worst relative error of the Halley start: {worst:e}");
         assert!(worst < GUESS_ACCURACY, "{worst:e}");
@@ -1157,9 +1157,12 @@ mod tests {
                 assert_eq!(m.regime, e.regime, "s {s} vbar {v}");
                 let (Some(a), Some(b)) = (m.stick, e.stick) else { continue };
                 let rel = |x: f64, y: f64| if x == y { 0.0 } else { ((x - y) / y).abs() };
-                worst = worst.max(rel(a.length, b.length)).max(rel(a.tail, b.tail));
+                worst = crate::numerics::worst_of(
+                    crate::numerics::worst_of(worst, rel(a.length, b.length)),
+                    rel(a.tail, b.tail),
+                );
                 let dd = (m.deficit - e.deficit).abs() / (f64::EPSILON * e.mean_normal);
-                worst_d = worst_d.max(dd);
+                worst_d = crate::numerics::worst_of(worst_d, dd);
                 n += 1;
             }
         }

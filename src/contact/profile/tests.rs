@@ -112,7 +112,7 @@ fn fast_transform_matches_direct_sum() {
         let fast = mdr_transform_knots(&p);
         for (i, &x) in p.knots().iter().enumerate() {
             let direct = mdr_transform(&p, x);
-            worst = worst.max((fast[i] - direct).abs() / direct.abs().max(f64::MIN_POSITIVE));
+            worst = crate::numerics::worst_of(worst, (fast[i] - direct).abs() / direct.abs().max(f64::MIN_POSITIVE));
         }
     }
     // Observed 5.7e-15 (relative, every knot): the interpolated far sums agree
@@ -144,9 +144,10 @@ fn transform_matches_quadrature_in_the_angle() {
                 }
             }
             let exact = x * sum;
-            // Relative to |exact|: a wrong derivative can make it negative, and a
-            // negative ratio would vanish in the max.
-            worst = worst.max((mdr_transform(p, x) - exact).abs() / exact.abs());
+            // Relative to |exact|: a wrong derivative can make it negative (a
+            // negative ratio would vanish in the max), or infinite where it
+            // divides by a zero end slope (and a NaN would).
+            worst = crate::numerics::worst_of(worst, (mdr_transform(p, x) - exact).abs() / exact.abs());
         }
     }
     // Observed 2.9e-15 relative.
