@@ -214,7 +214,8 @@ impl Foundation {
         2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * from_star).sin()
     }
 
-    /// `y^gamma`, with the common exponents without `powf`.
+    /// `y^gamma` (or of any positive ratio: the Centre tops take it of `y/d`),
+    /// with the common exponents without `powf`.
     pub(super) fn y_pow(&self, y: f64) -> f64 {
         if self.gamma == 0.0 {
             1.0
@@ -235,12 +236,12 @@ impl Foundation {
             Top::Centre => {
                 // Top at u*: y / d = 2 sin((u + u*)/2) sin(d/2)/d.
                 let ratio = 2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * d).sin() / d;
-                k * ratio.powf(self.gamma) * sin_u
+                k * self.y_pow(ratio) * sin_u
             }
             Top::CentreCritical => {
                 // amp = 1, top at u = 0 (u = d): y/u^2 = 2 (sin(u/2)/u)^2, sin(u)/u.
                 let q = (0.5 * d).sin() / d;
-                k * (2.0 * q * q).powf(self.gamma) * (d.sin() / d)
+                k * self.y_pow(2.0 * q * q) * (d.sin() / d)
             }
         }
     }
@@ -313,13 +314,16 @@ impl Foundation {
         let (d0, d1) = ends;
         let r = quad::rule(m, 0.0);
         let width = bottom - top;
-        let t_top = (d0 / (width + d1)).ln();
+        let e_top = d0 / (width + d1);
+        let t_top = e_top.ln();
         let h = 0.5 * (seg.1 - seg.0);
         let top_from_star = top - self.u_star;
         let mut acc = Acc::new();
         for (i, &x) in r.nodes.iter().enumerate() {
             let tau = (seg.0 - t_top) + h * (1.0 + x);
-            let d = (d0 * tau.exp_m1() / (1.0 + (t_top + tau).exp())).min(width);
+            // E = e^(t_top + tau) from the expm1 already at hand (one exp a node less).
+            let em1 = tau.exp_m1();
+            let d = (d0 * em1 / (1.0 + e_top * (1.0 + em1))).min(width);
             let dudt = (d + d0) * ((width - d) + d1) / (width + d0 + d1);
             let (f, mag) = self.node(top + d, d, top_from_star + d, Top::Regular, dudt, true);
             acc.add(&r, i, f, mag);
