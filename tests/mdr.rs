@@ -361,7 +361,10 @@ fn the_node_counts_stay_within_two_percent_of_the_measured() {
         (2.0, 0.8, 5.0 / 3.0, 224),
         (1.0, 1e-6, 0.9, 288),
         (3.0, 0.01, 0.2, 176),
-        (2.0, 1e-3, 1.0, 240),
+        // 240 with the eigenvectors' weights (2026-11-26): with accurate
+        // ones a piece passes one step earlier, 3.5e-19 from the 40-digit
+        // value for an estimate of 3.7e-17.
+        (2.0, 1e-3, 1.0, 208),
         // The cone at the boundary: its Jacobian has no branch point (224
         // nodes where one was graded for).
         (1.0, 0.8, 5.0 / 3.0, 16),
