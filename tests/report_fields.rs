@@ -202,3 +202,30 @@ fn power_law_bands_have_the_thresholds_and_shares() {
         }
     }
 }
+
+/// The bands' tangential shares keep their accuracy as `mu -> 0` (amp >= 1,
+/// vbar -> 0, down to subnormal velocities): they sum to 1 to rounding. Taken
+/// as shares of `<N> - D`, they lost `mu`'s relative accuracy (the paraboloid's
+/// one band at amp 2 held 0.62 of the force at vbar 1e-16 and none at 1e-20;
+/// at vbar 1e-3 the shares summed to 1 - 1.1e-13), and `point` took the bands
+/// of a subnormal velocity from a direct solve, its forces subnormal.
+#[test]
+fn band_shares_sum_to_one_as_mu_vanishes() {
+    for spec in ["parabolic", "cone", "power:3.7"] {
+        for amp in [1.0, 1.5, 2.0] {
+            for vbar in [1e-3, 1e-8, 1e-16, 1e-20, 1e-310, 5e-324] {
+                let p = point_json(&common::shape(spec).unwrap(), vbar, amp);
+                let bands = p["bands"].as_array().unwrap();
+                let share = |k: &str| bands.iter().map(|b| b[k].as_f64().unwrap()).sum::<f64>();
+                for k in ["normal_share", "tangential_share"] {
+                    let s = share(k);
+                    assert!((s - 1.0).abs() <= 4.0 * f64::EPSILON, "{spec} amp {amp} vbar {vbar:e}: {k} sum {s}");
+                }
+                for b in bands {
+                    let st = b["tangential_share"].as_f64().unwrap();
+                    assert!((0.0..=1.0 + f64::EPSILON).contains(&st), "{spec} amp {amp} vbar {vbar:e}: {b}");
+                }
+            }
+        }
+    }
+}

@@ -179,49 +179,64 @@ pub(crate) fn cosine_band(
 pub(crate) const AMP_LINEAR: f64 = 1e-300;
 
 /// Below this velocity a curved contact at `amp >= 1` (where `mu -> 0` like
-/// `vbar`) is solved at `vbar` times [`VBAR_SCALE`] and its `mu` scaled back
-/// ([`VelocityScale`]): solved directly, its springs' forces of order `vbar`
-/// would go subnormal, and `mu` lost its relative accuracy beyond what its
-/// estimate covered (the paraboloid at `amp = 2, vbar = 1e-320`: 2.4056e-320
-/// for 2.4079e-320, estimate 0). `2^-960`, about `1.03e-289`.
-pub(crate) const VBAR_LINEAR: f64 = f64::from_bits((1023 - 960) << 52);
-/// The factor of [`VBAR_LINEAR`]: `2^192`, so that the scaled velocity stays
-/// below `2^-768` (about `6.4e-232`), where `mu/vbar` has converged to far
-/// below an ulp (its relative change is about `15 vbar`).
-pub(crate) const VBAR_SCALE: f64 = f64::from_bits((1023 + 192) << 52);
+/// `vbar`) is solved at `vbar` scaled by a power of two into
+/// `[VBAR_LINEAR/2, VBAR_LINEAR)` and its `mu` scaled back ([`VelocityScale`]):
+/// solved directly, its springs' forces of order `vbar` would go subnormal,
+/// and `mu` lost its relative accuracy beyond what its estimate covered (the
+/// paraboloid at `amp = 2, vbar = 1e-320`: 2.4056e-320 for 2.4079e-320,
+/// estimate 0); at `amp = 1` the slip-first band's width (`vbar^2` in `y`)
+/// underflows first: the paraboloid's `mu/vbar` was 2.5685834705770345 down
+/// to vbar 1e-155, 2.5685883889 at 1e-160 and 3.45 at 1e-200, each with an
+/// estimate of 1.7e-14 relative. `2^-400`, about `3.9e-121`: far above that,
+/// and far below where `mu/vbar` still moves (its relative change is about
+/// `15 vbar`).
+pub(crate) const VBAR_LINEAR: f64 = f64::from_bits((1023 - 400) << 52);
 
 /// How a curved contact treats a velocity below [`VBAR_LINEAR`] at `amp >= 1`.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct VelocityScale {
     /// The velocity to solve at.
     pub(crate) vbar: f64,
-    /// Whether it was scaled (then [`VelocityScale::back`] applies).
-    scaled: bool,
+    /// The power of two `vbar` was multiplied by (1: not scaled).
+    factor: f64,
 }
 
 impl VelocityScale {
     /// The velocity to solve `(vbar, amp)` at.
     pub(crate) fn of(vbar: f64, amp: f64) -> VelocityScale {
         if amp >= 1.0 && vbar > 0.0 && vbar < VBAR_LINEAR {
-            VelocityScale { vbar: vbar * VBAR_SCALE, scaled: true }
+            // 2^k with vbar 2^k in [VBAR_LINEAR/2, VBAR_LINEAR): k <= 674, so
+            // 2^k is finite and both products exact (powers of two).
+            let k = (VBAR_LINEAR.log2() - vbar.log2()).floor() as i32;
+            let mut factor = 2f64.powi(k);
+            let mut scaled = vbar * factor;
+            // log2 of a subnormal rounds: one step either way puts it in range.
+            if scaled >= VBAR_LINEAR {
+                scaled *= 0.5;
+                factor *= 0.5;
+            } else if scaled < 0.5 * VBAR_LINEAR {
+                scaled *= 2.0;
+                factor *= 2.0;
+            }
+            VelocityScale { vbar: scaled, factor }
         } else {
-            VelocityScale { vbar, scaled: false }
+            VelocityScale { vbar, factor: 1.0 }
         }
     }
 
     /// The ratio and an error (estimate or interpolation) at the velocity
-    /// asked for, from those at [`VelocityScale::vbar`]: `mu` divided by
-    /// [`VBAR_SCALE`] (exact, but for the one rounding of a subnormal result),
-    /// and the error likewise plus that rounding (at most half the smallest
+    /// asked for, from those at [`VelocityScale::vbar`]: `mu` divided by the
+    /// factor (exact, but for the one rounding of a subnormal result), and
+    /// the error likewise plus that rounding (at most half the smallest
     /// subnormal, which is added: its half rounds to 0) and the linearisation
     /// (`mu` times `1e3` times the scaled velocity, far above the observed
     /// `15 vbar`).
     pub(crate) fn back(self, ratio: Ratio, error: f64) -> (Ratio, f64) {
-        if !self.scaled {
+        if self.factor == 1.0 {
             return (ratio, error);
         }
-        let mu = ratio.mu_ratio / VBAR_SCALE;
-        let error = error / VBAR_SCALE + f64::from_bits(1) + 1e3 * self.vbar * mu;
+        let mu = ratio.mu_ratio / self.factor;
+        let error = error / self.factor + f64::from_bits(1) + 1e3 * self.vbar * mu;
         (Ratio { mu_ratio: mu, reduction: 1.0 - mu }, error)
     }
 }

@@ -310,7 +310,9 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     let slip_bands = |scale: [f64; MEANS]| {
         let mut first = contact.band(u_star, u_sf, top_of(u_star), false, (inf, inf), scale);
         first.value[DEFICIT] = slip_first_deficit;
-        first.value[TANGENTIAL] = first.value[NORMAL] - slip_first_deficit;
+        // <B> - D per spring, as a difference: accurate to rounding of <B>
+        // (absolute, which `ratio_of`'s estimate counts), >= 0 exactly.
+        first.value[TANGENTIAL] = crate::special::nonneg(first.value[NORMAL] - slip_first_deficit);
         let only = contact.band(u_low, PI, top_of(u_low), false, (inf, inf), plus(scale, &first));
         (first, only)
     };
@@ -357,7 +359,10 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
         (BandKind::StickFirst, [z_of_u(u_sf), z_of_u(u_low)], stick_first),
         (BandKind::SlipOnly, [z_of_u(u_low), (1.0 + amp).powf(1.0 / n)], slip_only),
     ];
-    let band_list = if bands { band_report(&parts, nn, nn - total.value[DEFICIT]) } else { vec![] };
+    // Shares of the tangential force from its own (cancellation-free) sum: as
+    // `nn - dd` they lost their relative accuracy with `mu` (the paraboloid's
+    // one band at amp 2 held 0.62 of it at vbar 1e-16, and none at 1e-20).
+    let band_list = if bands { band_report(&parts, nn, total.value[TANGENTIAL]) } else { vec![] };
     let mean_normal = Some(2.0 * unscale(nn)).filter(|x| x.is_finite());
     Ok(MdrResult { ratio, error_estimate, mean_normal, bands: band_list, nodes: total.nodes })
 }
@@ -439,7 +444,11 @@ pub fn point(n: f64, vbar: f64, amp: f64, opts: &crate::Options) -> crate::Resul
     // mu_ratio and its estimate from the same call as every other command (one
     // value per input); the bands, normal force and node count from the banded run.
     let plain = power_law(n, vbar, amp, opts)?;
-    let mut result = solve(n, vbar, amp, tol, Report::Bands)?;
+    // The bands at the velocity `power_law` solved at: below `VBAR_LINEAR` the
+    // forces of a direct solve would be subnormal, and the shares are ratios
+    // (independent of the scaling, `mu` being linear in `vbar` there).
+    let at = crate::contact::VelocityScale::of(vbar, amp);
+    let mut result = solve(n, at.vbar, amp, tol, Report::Bands)?;
     result.ratio = plain.ratio;
     result.error_estimate = plain.error_estimate;
     let mu_static_ratio = mu_static_ratio(n, amp, tol)?;
