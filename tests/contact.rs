@@ -296,6 +296,15 @@ fn curved_contacts_at_subnormal_velocities() {
                     e.ratio.mu_ratio,
                     e.error_estimate
                 );
+                // And the estimate is an estimate: an error of the scaled solve
+                // or of the scaling grows it (the linearisation's term is the
+                // scaled velocity times 1e3 mu), it must not cover by size.
+                assert!(
+                    e.error_estimate <= 1e-13 * expected + f64::from_bits(2),
+                    "{} amp {amp} vbar {vbar:e}: estimate {:e}",
+                    shape.name(),
+                    e.error_estimate
+                );
                 assert_eq!(e.ratio.reduction, 1.0);
             }
         }

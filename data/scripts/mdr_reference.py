@@ -16,9 +16,11 @@ Run: python3 data/scripts/mdr_reference.py > data/mdr-reference.json   (needs mp
 about ten minutes)
      python3 data/scripts/mdr_reference.py --sphere > data/sphere-reference.json
      python3 data/scripts/mdr_reference.py --flat-tip > data/flat-tip-reference.json
+     python3 data/scripts/mdr_reference.py --amp-one > data/mdr-amp-one.json
 The second: the exact sphere of radius 1 (MDR profile (x/2) ln((1 + x)/(1 - x)))
 at a mean indentation of 1e-6, at sampled rows of the suite's tabulated sphere.
 The third: the sphere worn flat at its tip (`flat-tip:E`, E = 0.3 and 0.7).
+The fourth: power laws n = 2, 3.7, 8 at amp = 1 and vbar 1e-12, 1e-16.
 """
 import json
 import sys
@@ -144,6 +146,18 @@ def flat_tip(e, vbar, amp, dps):
     return mu_profile(G, Ginv, vbar, amp, extra_cuts=(e,))
 
 
+if "--amp-one" in sys.argv:
+    # Steep power laws at amp = 1 and small vbar: the slip-first band is
+    # vbar^(2/n) wide, far wider than the O(vbar) force it carries.
+    cases = []
+    for n in (2.0, 3.7, 8.0):
+        for vbar in (1e-12, 1e-16):
+            lo, hi = mu(n, vbar, 1.0, 45), mu(n, vbar, 1.0, 60)
+            mp.dps = 60
+            print(f"n={n} vbar={vbar}: {nstr(hi, 25)} (two precisions differ by {nstr(abs(hi - lo) / hi, 3)})", file=sys.stderr)
+            cases.append({"n": n, "vbar": vbar, "amp": 1.0, "mu_ratio": nstr(hi, 40)})
+    print(json.dumps({"source": "data/scripts/mdr_reference.py --amp-one (mpmath, tanh-sinh at 45 and 60 digits)", "cases": cases}, indent=1))
+    sys.exit(0)
 if "--flat-tip" in sys.argv:
     cases = []
     for e in ("0.3", "0.7"):

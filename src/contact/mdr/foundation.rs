@@ -7,6 +7,41 @@ use crate::quad;
 use crate::spring::{mean_normal_sin_cos, Velocity};
 use std::f64::consts::FRAC_PI_2;
 
+/// What a band's nodes compute besides the normal force `<B>`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Means {
+    /// Slip only (or no velocity): the tangential force is `<B>`, no deficit.
+    Slip,
+    /// Stick first: [`Velocity::stick_first_means`].
+    StickFirst,
+    /// Slip first (`cos u` between `sqrt(1 - vbar^2)` and 1, the contact
+    /// phase `u` below `delta = arcsin vbar`): the deficit is the permanent
+    /// spring's `D` (the caller's closed form), and the tangential force
+    /// `<B> - D` is summed from non-negative parts ([`slip_first_tangential`]),
+    /// with `excess` the permanent spring's tangent excess (`D = cos delta -
+    /// excess`).
+    SlipFirst {
+        /// [`crate::spring::Spring::tangent_excess`] of a permanent spring.
+        excess: f64,
+    },
+}
+
+/// `<B> - D` of a slip-first spring at contact phase `u` (`s = cos u`), with
+/// `D = cos delta - excess` the permanent spring's deficit: `<B> = s (1 -
+/// u/pi) + sin(u)/pi`, so `<B> - D = (cos u - cos delta) + (sin u - u cos u)/pi
+/// + excess`, three non-negative terms (`u <= delta`), the first as
+/// `2 sin((delta + u)/2) sin((delta - u)/2)`. As the difference of `<B>` (near
+/// 1) and `D`, it kept only `eps` absolute where it is `O(vbar)`: the power law
+/// `n = 3.7` at amp 1, whose slip-first band is `vbar^(2/n)` wide, lost
+/// `eps vbar^(2/n - 1)` relative (`mu/vbar` 3.18 for 2.71 at vbar 1e-30).
+fn slip_first_tangential(u: f64, sin_u: f64, cos_u: f64, delta: f64, excess: f64) -> f64 {
+    let gap = 2.0 * (0.5 * (delta + u)).sin() * (0.5 * (delta - u)).sin();
+    // sin u - u cos u = u (1 - cos u) - (u - sin u), 1 - cos u = sin^2 u/(1 + cos u)
+    // (u < pi/2): about u^3/2 - u^3/6.
+    let lag = u * (sin_u * sin_u / (1.0 + cos_u)) - crate::special::x_minus_sin(u);
+    gap.max(0.0) + lag.max(0.0) / std::f64::consts::PI + excess
+}
+
 /// Highest Gauss order tried per piece.
 pub(crate) const MAX_ORDER: usize = 256;
 /// First order tried per piece at the default tolerance.
@@ -260,7 +295,7 @@ impl Foundation {
     /// Halley from the neighbouring node's stick length was tried: it costs 10 %
     /// more instructions than the fitted guess, the nodes of a low order being
     /// far apart.)
-    pub(super) fn pass(&self, top: f64, bottom: f64, kind: Top, stick: bool, m: usize) -> Pass {
+    pub(super) fn pass(&self, top: f64, bottom: f64, kind: Top, means: Means, m: usize) -> Pass {
         let e = self.weight_exponent(kind);
         let r = quad::rule(m, e);
         let h = 0.5 * (bottom - top);
@@ -270,7 +305,7 @@ impl Foundation {
         for (i, &x) in r.nodes.iter().enumerate() {
             // x = -1 at the top.
             let d = h * (1.0 + x);
-            let (f, mag) = self.node(top + d, d, top_from_star + d, kind, 1.0, stick);
+            let (f, mag) = self.node(top + d, d, top_from_star + d, kind, 1.0, means);
             acc.add(&r, i, f, mag);
         }
         let width = if e == 0.0 { h } else { h.powf(e + 1.0) };
@@ -280,17 +315,18 @@ impl Foundation {
     /// One node's integrand: `factor` times the Jacobian and the means at `u`
     /// (`d` from the piece's top, `from_star` from `u*`), and the deficit's magnitude
     /// likewise.
-    fn node(&self, u: f64, d: f64, from_star: f64, kind: Top, factor: f64, stick: bool) -> ([f64; MEANS], f64) {
+    fn node(&self, u: f64, d: f64, from_star: f64, kind: Top, factor: f64, means: Means) -> ([f64; MEANS], f64) {
         let beta = FRAC_PI_2 - u;
         let (su, cu) = libm::sincos(u);
         let jac = factor * self.jacobian(u, su, cu, d, from_star, kind);
         // sin(beta) = cos(u), cos(beta) = sin(u); the contact phase is u.
         let b = mean_normal_sin_cos(beta, cu, su);
-        let (dd, tt, mm) = match (stick, &self.vel) {
-            (true, Some(vel)) => {
+        let (dd, tt, mm) = match (means, &self.vel) {
+            (Means::StickFirst, Some(vel)) => {
                 let m = vel.stick_first_means(u, su, cu);
                 (m.deficit, m.tangential, m.magnitude)
             }
+            (Means::SlipFirst { excess }, Some(vel)) => (0.0, slip_first_tangential(u, su, cu, vel.delta, excess), 0.0),
             _ => (0.0, b, 0.0),
         };
         let mut f = [0.0; MEANS];
@@ -325,7 +361,7 @@ impl Foundation {
             let em1 = tau.exp_m1();
             let d = (d0 * em1 / (1.0 + e_top * (1.0 + em1))).min(width);
             let dudt = (d + d0) * ((width - d) + d1) / (width + d0 + d1);
-            let (f, mag) = self.node(top + d, d, top_from_star + d, Top::Regular, dudt, true);
+            let (f, mag) = self.node(top + d, d, top_from_star + d, Top::Regular, dudt, Means::StickFirst);
             acc.add(&r, i, f, mag);
         }
         acc.finish(&r, if self.amp > 1.0 { h } else { self.amp * h })
@@ -362,8 +398,8 @@ impl Foundation {
     /// One piece at increasing orders, until the predicted error of every mean
     /// is within the tolerance relative to the piece plus `scale` (the band's
     /// sums so far).
-    pub(super) fn piece(&self, top: f64, bottom: f64, kind: Top, stick: bool, scale: [f64; MEANS]) -> Sums {
-        self.ladder(|m| self.pass(top, bottom, kind, stick, m), scale)
+    pub(super) fn piece(&self, top: f64, bottom: f64, kind: Top, means: Means, scale: [f64; MEANS]) -> Sums {
+        self.ladder(|m| self.pass(top, bottom, kind, means, m), scale)
     }
 
     /// The order ladder of [`Foundation::piece`] over any rule family `pass(m)`:
@@ -423,7 +459,7 @@ impl Foundation {
         top: f64,
         bottom: f64,
         kind: Top,
-        stick: bool,
+        means: Means,
         near: (f64, f64),
         scale: [f64; MEANS],
     ) -> Sums {
@@ -441,7 +477,7 @@ impl Foundation {
         let jac = self.singular_distance(top, kind).max(width * 2f64.powi(-JACOBIAN_LEVELS));
         let (above, below) = (jac.min(near.0.max(floor)), near.1.max(floor));
         let close = |d: f64| d < GRADE_RATIO * width;
-        if stick && kind == Top::Regular && (close(above) || close(below)) {
+        if means == Means::StickFirst && kind == Top::Regular && (close(above) || close(below)) {
             let side = |d: f64| if close(d) { d } else { FAR_SIDE * width };
             return self.band_mapped(top, bottom, (side(above), side(below)), scale);
         }
@@ -472,7 +508,7 @@ impl Foundation {
         for (a, b) in pieces {
             let k = if a == top { kind } else { Top::Regular };
             let sc = std::array::from_fn(|i| scale[i] + total.value[i].abs());
-            let pc = self.piece(a, b, k, stick, sc);
+            let pc = self.piece(a, b, k, means, sc);
             total += pc;
         }
         total

@@ -47,7 +47,7 @@ use crate::ratio::Ratio;
 use crate::shape::DEFAULT_TOL;
 use crate::special::one_minus_a_cos_asin;
 use crate::spring::{Spring, Velocity};
-use foundation::{Foundation, Sums, Top, DEFICIT, MEANS, NORMAL, TANGENTIAL};
+use foundation::{Foundation, Means, Sums, Top, DEFICIT, MEANS, NORMAL, TANGENTIAL};
 pub(crate) use normal::foundation_force;
 use normal::total_normal;
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -118,13 +118,15 @@ struct Permanent {
     deficit_per_spring: f64,
     /// The magnitude of that deficit's terms, times the band's `amp z1`.
     deficit_magnitude: f64,
+    /// The tangent excess of one spring in permanent contact (0 at `vbar >= 1`).
+    excess: f64,
 }
 
 fn permanent_band(n: f64, vbar: f64, amp: f64, z1: f64) -> Permanent {
     let normal = z1 - z1 * z1.powf(n) / (n + 1.0);
     let mut sums = Sums { value: [normal, 0.0, normal], ..Default::default() };
     if vbar >= 1.0 {
-        return Permanent { sums, deficit_per_spring: 0.0, deficit_magnitude: 0.0 };
+        return Permanent { sums, deficit_per_spring: 0.0, deficit_magnitude: 0.0, excess: 0.0 };
     }
     let sp = Spring::new(f64::MAX, vbar);
     let x = sp.tangent_excess().unwrap_or(0.0);
@@ -132,7 +134,7 @@ fn permanent_band(n: f64, vbar: f64, amp: f64, z1: f64) -> Permanent {
     if z1 > 0.0 {
         sums.value[TANGENTIAL] = z1 * (one_minus_a_cos_asin(amp, vbar) - (1.0 - amp) / (n + 1.0) + amp * x);
     }
-    Permanent { sums, deficit_per_spring: sp.deficit, deficit_magnitude: sp.deficit_magnitude * (amp * z1) }
+    Permanent { sums, deficit_per_spring: sp.deficit, deficit_magnitude: sp.deficit_magnitude * (amp * z1), excess: x }
 }
 
 /// `mu_macro/mu0` of the power-law profile `g = z^n` at `(vbar, amp)`.
@@ -211,12 +213,7 @@ fn slip_first_width(contact: &Foundation, n: f64, amp: f64, z1: f64, u_sf: f64, 
 /// The ratio and its error estimate from the totals: `mu` from the tangential
 /// force's own integral where it is the small one (`small_mu`), else from the
 /// deficit; truncation (the pieces' estimates through the quotient) plus rounding.
-fn ratio_of(
-    total: &Sums,
-    slip_first: &Sums,
-    perm_deficit_magnitude: f64,
-    small_mu: bool,
-) -> crate::Result<(Ratio, f64)> {
+fn ratio_of(total: &Sums, perm_deficit_magnitude: f64, small_mu: bool) -> crate::Result<(Ratio, f64)> {
     let (nn, dd) = (total.value[NORMAL], total.value[DEFICIT]);
     let reduction = if nn > 0.0 { dd / nn } else { 0.0 };
     let eps = f64::EPSILON;
@@ -224,10 +221,9 @@ fn ratio_of(
         let tt = total.value[TANGENTIAL];
         let mu = tt / nn;
         let truncation = crate::ratio::quotient_error(nn, tt, total.error[NORMAL], total.error[TANGENTIAL]);
-        // Each spring's <F> is a sum of non-negative terms (16 eps each); the
-        // slip-first band's is <B> - D, rounding with their size.
-        let cancel = 4.0 * eps * (slip_first.value[NORMAL] + slip_first.value[DEFICIT]) / nn;
-        let rounding = crate::ratio::quotient_rounding(mu, total.nodes) + cancel;
+        // Each spring's <F> is a sum of non-negative terms (16 eps each), the
+        // slip-first band's too (`foundation::Means::SlipFirst`).
+        let rounding = crate::ratio::quotient_rounding(mu, total.nodes);
         let estimate = truncation + rounding;
         (Ratio::from_mu_within(mu, estimate, "power-law contact")?, estimate)
     } else {
@@ -301,19 +297,18 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     // vbar = 0 they are the mean normal force itself (everything sticks):
     // analytic, nothing to grade for.
     let near = if vbar == 0.0 { (inf, inf) } else { (u_sf, u_alpha) };
-    let stick_first = contact.band(u_sf, u_low, top_of(u_sf), vel.is_some(), near, perm.sums.value);
+    let stick_means = if vel.is_some() { Means::StickFirst } else { Means::Slip };
+    let stick_first = contact.band(u_sf, u_low, top_of(u_sf), stick_means, near, perm.sums.value);
     let plus = |a: [f64; MEANS], b: &Sums| std::array::from_fn(|k| a[k] + b.value[k]);
     // Slip first: its deficit is D(vbar) per spring, in closed form.
     let d_perm = perm.deficit_per_spring;
     let slip_first_width = slip_first_width(&contact, n, amp, z1, u_sf, z_of_u(u_sf));
     let slip_first_deficit = if big { d_perm * slip_first_width } else { amp * d_perm * slip_first_width };
     let slip_bands = |scale: [f64; MEANS]| {
-        let mut first = contact.band(u_star, u_sf, top_of(u_star), false, (inf, inf), scale);
+        let means = Means::SlipFirst { excess: perm.excess };
+        let mut first = contact.band(u_star, u_sf, top_of(u_star), means, (inf, inf), scale);
         first.value[DEFICIT] = slip_first_deficit;
-        // <B> - D per spring, as a difference: accurate to rounding of <B>
-        // (absolute, which `ratio_of`'s estimate counts), >= 0 exactly.
-        first.value[TANGENTIAL] = crate::special::nonneg(first.value[NORMAL] - slip_first_deficit);
-        let only = contact.band(u_low, PI, top_of(u_low), false, (inf, inf), plus(scale, &first));
+        let only = contact.band(u_low, PI, top_of(u_low), Means::Slip, (inf, inf), plus(scale, &first));
         (first, only)
     };
     // Without the band report, a closed-form total normal force (cone, paraboloid)
@@ -351,7 +346,7 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
         (slip_first, slip_only) = slip_bands(scale1);
         total = sum([&perm.sums, &slip_first, &stick_first, &slip_only]);
     }
-    let (ratio, error_estimate) = ratio_of(&total, &slip_first, perm.deficit_magnitude, small_mu)?;
+    let (ratio, error_estimate) = ratio_of(&total, perm.deficit_magnitude, small_mu)?;
     let nn = total.value[NORMAL];
     let parts = [
         (BandKind::PermanentContact, [0.0, z1], perm.sums),
@@ -474,7 +469,7 @@ mod tests {
                     let z1 = (1.0 - a).max(0.0).powf(1.0 / n);
                     let perm = z1 - z1 * z1.powf(n) / (n + 1.0);
                     let inf = f64::INFINITY;
-                    let jumping = c.band(u_star, PI, top, false, (inf, inf), [perm, 0.0, perm]).value[NORMAL];
+                    let jumping = c.band(u_star, PI, top, Means::Slip, (inf, inf), [perm, 0.0, perm]).value[NORMAL];
                     // amp > 1: scaled by amp^(1 + 1/n), as total_normal.
                     perm + jumping
                 };
