@@ -27,13 +27,13 @@ pub(super) enum Means {
 }
 
 /// `<B> - D` of a slip-first spring at contact phase `u` (`s = cos u`), with
-/// `D = cos delta - excess` the permanent spring's deficit: `<B> = s (1 -
-/// u/pi) + sin(u)/pi`, so `<B> - D = (cos u - cos delta) + (sin u - u cos u)/pi
-/// + excess`, three non-negative terms (`u <= delta`), the first as
-/// `2 sin((delta + u)/2) sin((delta - u)/2)`. As the difference of `<B>` (near
-/// 1) and `D`, it kept only `eps` absolute where it is `O(vbar)`: the power law
-/// `n = 3.7` at amp 1, whose slip-first band is `vbar^(2/n)` wide, lost
-/// `eps vbar^(2/n - 1)` relative (`mu/vbar` 3.18 for 2.71 at vbar 1e-30).
+/// `D = cos delta - excess` the permanent spring's deficit. As `<B> = s (1 -
+/// u/pi) + sin(u)/pi`, it is the sum of three non-negative terms (`u <= delta`):
+/// `cos u - cos delta`, taken as `2 sin((delta + u)/2) sin((delta - u)/2)`;
+/// `(sin u - u cos u)/pi`; and `excess`. As the difference of `<B>` (near 1)
+/// and `D`, it kept only `eps` absolute where it is `O(vbar)`: the power law
+/// with exponent 3.7 at amp 1, whose slip-first band is `vbar^(2/n)` wide,
+/// lost `eps vbar^(2/n - 1)` relative (`mu/vbar` 3.18 for 2.71 at vbar 1e-30).
 fn slip_first_tangential(u: f64, sin_u: f64, cos_u: f64, delta: f64, excess: f64) -> f64 {
     let gap = 2.0 * (0.5 * (delta + u)).sin() * (0.5 * (delta - u)).sin();
     // sin u - u cos u = u (1 - cos u) - (u - sin u), 1 - cos u = sin^2 u/(1 + cos u)
