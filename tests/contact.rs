@@ -299,6 +299,11 @@ fn curved_contacts_at_subnormal_velocities() {
                 // And the estimate is an estimate: an error of the scaled solve
                 // or of the scaling grows it (the linearisation's term is the
                 // scaled velocity times 1e3 mu), it must not cover by size.
+                // Nor a floor: it carries the scaled solve's estimate (a few
+                // eps of mu), which a scaling that dropped it would lose.
+                if expected > 1e-300 {
+                    assert!(e.error_estimate >= 1e-15 * expected, "{} amp {amp} vbar {vbar:e}", shape.name());
+                }
                 assert!(
                     e.error_estimate <= 1e-13 * expected + f64::from_bits(2),
                     "{} amp {amp} vbar {vbar:e}: estimate {:e}",

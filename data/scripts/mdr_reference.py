@@ -20,7 +20,8 @@ about ten minutes)
 The second: the exact sphere of radius 1 (MDR profile (x/2) ln((1 + x)/(1 - x)))
 at a mean indentation of 1e-6, at sampled rows of the suite's tabulated sphere.
 The third: the sphere worn flat at its tip (`flat-tip:E`, E = 0.3 and 0.7).
-The fourth: power laws n = 2, 3.7, 8 at amp = 1 and vbar 1e-12, 1e-16.
+The fourth: power laws n = 2, 3.7, 8 at amp = 1 and vbar 1e-12, 1e-16, and
+n = 8, 20 at vbar 1e-30.
 """
 import json
 import sys
@@ -150,13 +151,18 @@ if "--amp-one" in sys.argv:
     # Steep power laws at amp = 1 and small vbar: the slip-first band is
     # vbar^(2/n) wide, far wider than the O(vbar) force it carries.
     cases = []
-    for n in (2.0, 3.7, 8.0):
-        for vbar in (1e-12, 1e-16):
-            lo, hi = mu(n, vbar, 1.0, 45), mu(n, vbar, 1.0, 60)
-            mp.dps = 60
-            print(f"n={n} vbar={vbar}: {nstr(hi, 25)} (two precisions differ by {nstr(abs(hi - lo) / hi, 3)})", file=sys.stderr)
-            cases.append({"n": n, "vbar": vbar, "amp": 1.0, "mu_ratio": nstr(hi, 40)})
-    print(json.dumps({"source": "data/scripts/mdr_reference.py --amp-one (mpmath, tanh-sinh at 45 and 60 digits)", "cases": cases}, indent=1))
+    points = [(n, vbar, (45, 60)) for n in (2.0, 3.7, 8.0) for vbar in (1e-12, 1e-16)]
+    # Where the stick-first band's top (arcsin vbar) is far closer to the
+    # Jacobian's branch point than 2^-90 of its width; 1 - sqrt(1 - vbar^2)
+    # is 5e-61 here: 90 and 110 digits.
+    points += [(n, 1e-30, (90, 110)) for n in (8.0, 20.0)]
+    for n, vbar, (low, high) in points:
+        lo, hi = mu(n, vbar, 1.0, low), mu(n, vbar, 1.0, high)
+        mp.dps = high
+        print(f"n={n} vbar={vbar}: {nstr(hi, 25)} (two precisions differ by {nstr(abs(hi - lo) / hi, 3)})", file=sys.stderr)
+        cases.append({"n": n, "vbar": vbar, "amp": 1.0, "mu_ratio": nstr(hi, 40)})
+    source = "data/scripts/mdr_reference.py --amp-one (mpmath, tanh-sinh at 45 and 60 digits; 90 and 110 at vbar 1e-30)"
+    print(json.dumps({"source": source, "cases": cases}, indent=1))
     sys.exit(0)
 if "--flat-tip" in sys.argv:
     cases = []

@@ -179,7 +179,7 @@ pub(crate) fn cosine_band(
 pub(crate) const AMP_LINEAR: f64 = 1e-300;
 
 /// Below this velocity a curved contact at `amp >= 1` (where `mu -> 0` like
-/// `vbar`) is solved at `vbar` scaled by a power of two into
+/// `vbar`) is solved at `vbar` scaled by a power of two to about
 /// `[VBAR_LINEAR/2, VBAR_LINEAR)` and its `mu` scaled back ([`VelocityScale`]):
 /// solved directly, its springs' forces of order `vbar` would go subnormal,
 /// and `mu` lost its relative accuracy beyond what its estimate covered (the
@@ -205,20 +205,12 @@ impl VelocityScale {
     /// The velocity to solve `(vbar, amp)` at.
     pub(crate) fn of(vbar: f64, amp: f64) -> VelocityScale {
         if amp >= 1.0 && vbar > 0.0 && vbar < VBAR_LINEAR {
-            // 2^k with vbar 2^k in [VBAR_LINEAR/2, VBAR_LINEAR): k <= 674, so
-            // 2^k is finite and both products exact (powers of two).
+            // 2^k with vbar 2^k in [VBAR_LINEAR/2, VBAR_LINEAR), up to the
+            // rounding of log2 (a factor 2 either way changes nothing: `mu` is
+            // linear there): k <= 675, so 2^k is finite and the product exact.
             let k = (VBAR_LINEAR.log2() - vbar.log2()).floor() as i32;
-            let mut factor = 2f64.powi(k);
-            let mut scaled = vbar * factor;
-            // log2 of a subnormal rounds: one step either way puts it in range.
-            if scaled >= VBAR_LINEAR {
-                scaled *= 0.5;
-                factor *= 0.5;
-            } else if scaled < 0.5 * VBAR_LINEAR {
-                scaled *= 2.0;
-                factor *= 2.0;
-            }
-            VelocityScale { vbar: scaled, factor }
+            let factor = 2f64.powi(k);
+            VelocityScale { vbar: vbar * factor, factor }
         } else {
             VelocityScale { vbar, factor: 1.0 }
         }
