@@ -146,12 +146,10 @@ fn the_error_estimate_bounds_the_error_against_forty_digit_references() {
 /// bounds the error; at the default one the error is within 1e-12 of `mu`.
 #[test]
 fn steep_power_laws_at_amp_one_keep_every_digit_of_a_small_mu() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/mdr-amp-one.json");
-    let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
-    let cases = v["cases"].as_array().unwrap();
+    let cases = common::data_cases("mdr-amp-one.json");
     assert_eq!(cases.len(), 8);
     let mut worst = 0.0f64;
-    for c in cases {
+    for c in &cases {
         let (n, vbar, amp) = (c["n"].as_f64().unwrap(), c["vbar"].as_f64().unwrap(), c["amp"].as_f64().unwrap());
         let exact = c["mu_ratio"].as_str().unwrap();
         let mu: f64 = exact.parse().unwrap();

@@ -39,7 +39,8 @@ fn slip_first_tangential(u: f64, sin_u: f64, cos_u: f64, delta: f64, excess: f64
     // sin u - u cos u = u (1 - cos u) - (u - sin u), 1 - cos u = sin^2 u/(1 + cos u)
     // (u < pi/2): about u^3/2 - u^3/6.
     let lag = u * (sin_u * sin_u / (1.0 + cos_u)) - crate::special::x_minus_sin(u);
-    gap.max(0.0) + lag.max(0.0) / std::f64::consts::PI + excess
+    // Each term >= 0 but for rounding; `nonneg` keeps a NaN for the checks downstream.
+    crate::special::nonneg(gap) + crate::special::nonneg(lag) / std::f64::consts::PI + excess
 }
 
 /// Highest Gauss order tried per piece.

@@ -141,7 +141,6 @@ fn fast_transform_matches_direct_sum() {
     }
     // Observed 5.7e-15 (relative, every knot): the interpolated far sums agree
     // with the direct ones to rounding.
-    eprintln!("HIER {worst:e}");
     assert!(worst < 2e-14, "hierarchical vs direct transform: {worst:e}");
 }
 
