@@ -41,7 +41,9 @@
 //! Mean tangential force `<F> = <B> - D`, and `mu_macro/mu0 = <F>/<B>`.
 
 use crate::root;
-use crate::special::{half_sq_minus_versin as c_fn, nonneg, x_minus_sin as s_fn, x_minus_sin_with};
+use crate::special::{
+    half_sq_minus_versin as c_fn, half_sq_minus_versin_with, nonneg, x_minus_sin as s_fn, x_minus_sin_with,
+};
 use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, PI, TAU};
 
 /// How precisely a spring's stick phase is solved.
@@ -291,8 +293,10 @@ impl Velocity {
         let eps = self.alpha + (FRAC_PI_2 - theta);
         let sol = stick_phase(Start::Contact { theta, sin_theta, cos_theta, eps }, self, ROOT_RTOL_MEANS);
         let (l, e) = (sol.length, sol.tail);
-        let h = (0.5 * e).sin();
-        let tangential = (0.5 * self.vbar * l * l + cos_theta * s_fn(e) + 2.0 * sin_theta * h * h) / TAU;
+        // sin(e/2) and sin e = 2 sin(e/2) cos(e/2) from the solution's one sin_cos.
+        let (h, hc) = sol.half_tail.unwrap_or_else(|| libm::sincos(0.5 * e));
+        let tangential =
+            (0.5 * self.vbar * l * l + cos_theta * x_minus_sin_with(e, 2.0 * h * hc) + 2.0 * sin_theta * h * h) / TAU;
         StickMeans { deficit: sol.deficit, tangential, magnitude: sol.magnitude }
     }
 }
@@ -325,6 +329,8 @@ struct StickSolution {
     /// The sum of the magnitudes of the deficit's terms, over `2 pi` (the deficit's
     /// rounding is a few ulps of this).
     magnitude: f64,
+    /// `sin(tail/2)` and `cos(tail/2)` where the solver had them (a start at contact).
+    half_tail: Option<(f64, f64)>,
     evaluations: u32,
 }
 
@@ -342,9 +348,13 @@ pub(crate) struct StickMeans {
 const TAIL_FORM_VBAR: f64 = 0.5;
 
 /// `2 pi` times the deficit of a stick of length `len` starting at `beta`, and
-/// the sum of its terms' magnitudes (the bound of its rounding, in ulps).
-fn deficit_2pi(beta: f64, w: f64, len: f64) -> (f64, f64) {
-    let terms = [c_fn(beta), -c_fn(beta - len), -s_fn(beta) * len, 0.5 * w * len * len];
+/// the sum of its terms' magnitudes (the bound of its rounding, in ulps):
+/// `C(beta) - C(beta - len) - S(beta) len + w len^2/2`, with `sin beta`, `cos
+/// beta` and `c_end = C(beta - len)` from the caller (no further trigonometry:
+/// see [`stick_phase`]).
+fn deficit_2pi(beta: f64, (sin_b, cos_b): (f64, f64), w: f64, len: f64, c_end: f64) -> (f64, f64) {
+    let terms =
+        [half_sq_minus_versin_with(beta, cos_b), -c_end, -x_minus_sin_with(beta, sin_b) * len, 0.5 * w * len * len];
     (terms.iter().sum(), terms.iter().map(|t| t.abs()).sum())
 }
 
@@ -469,14 +479,20 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
         Start::Contact { eps, .. } if eps < SHORT_STICK * alpha => return short_stick(eps, vel, rtol),
         Start::Contact { eps, .. } => eps,
     };
-    let (lt, tail_t) = vel.tangent_guess;
-    if vbar < TAIL_FORM_VBAR {
-        // sin q and cos q, known without a sine: (-vbar, sqrt(1 - vbar^2)) after
-        // a tangent start, (sin theta, s) after a start at contact.
-        let (sq, cq) = match start {
-            Start::Tangent => (-vbar, (w * (1.0 + vbar)).sqrt()),
-            Start::Contact { sin_theta, cos_theta, .. } => (sin_theta, cos_theta),
-        };
+    let (_, tail_t) = vel.tangent_guess;
+    // sin q and cos q, known without a sine: (-vbar, sqrt(1 - vbar^2)) after
+    // a tangent start, (sin theta, s) after a start at contact; and sin beta,
+    // cos beta: (cos q, vbar) resp. (cos q, sin q).
+    let (sq, cq) = match start {
+        Start::Tangent => (-vbar, (w * (1.0 + vbar)).sqrt()),
+        Start::Contact { sin_theta, cos_theta, .. } => (sin_theta, cos_theta),
+    };
+    let beta_sc = (cq, if start == Start::Tangent { vbar } else { sq });
+    // After a start at contact the means need sin(e/2) of the tail e anyway
+    // (`Velocity::stick_first_means`): from its sin_cos, also cos(beta - L) =
+    // -sin(q + e) = -(sin q cos e + cos q sin e) (beta - L = q + e - 3 pi/2),
+    // one call for what took up to four (cos(beta - L), sin(e/2), sin e).
+    let (length, tail, evaluations) = if vbar < TAIL_FORM_VBAR {
         // H, H' = sin(q + e) + vbar and H'' = cos(q + e), from one sin_cos: the
         // angle q + e/2 by the addition formulas, whose absolute error is that
         // of its terms (sin(q + e/2) keeps more digits as q + e/2 -> pi than a
@@ -514,18 +530,43 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
         // L = x_max - e to it relative, so it is scaled by L/e where L is the shorter.
         let accept = accept_of(rtol) * ((x_max - e0) / e0).min(1.0);
         let r = root::halley(fdd, 0.0, e_hi, e0, rtol, accept);
-        let length = x_max - r.x;
-        let (d, m) = deficit_2pi(beta, w, length);
-        let (deficit, magnitude) = (nonneg(d / TAU), m / TAU);
-        return StickSolution { length, tail: r.x, deficit, magnitude, evaluations: r.evaluations };
-    }
+        (x_max - r.x, r.x, r.evaluations)
+    } else {
+        length_form(beta, beta_sc.0, lo, x_max, start, vel, rtol)
+    };
+    let (c_end, half_tail) = match start {
+        Start::Tangent => (c_fn(beta - length), None),
+        Start::Contact { .. } => {
+            let (h, hc) = libm::sincos(0.5 * tail);
+            let cos_end = -(sq * (1.0 - 2.0 * h * h) + cq * (2.0 * h * hc));
+            (half_sq_minus_versin_with(beta - length, cos_end), Some((h, hc)))
+        }
+    };
+    let (d, m) = deficit_2pi(beta, beta_sc, w, length, c_end);
+    // The deficit is a mean of a non-negative gap; rounding must not flip it.
+    StickSolution { length, tail, deficit: nonneg(d / TAU), magnitude: m / TAU, half_tail, evaluations }
+}
+
+/// [`stick_phase`]'s root in the length `L` (`vbar >=` [`TAIL_FORM_VBAR`]),
+/// in `[lo, x_max]`: `(L, x_max - L, evaluations)`.
+fn length_form(
+    beta: f64,
+    sin_beta: f64,
+    lo: f64,
+    x_max: f64,
+    start: Start,
+    vel: &Velocity,
+    rtol: f64,
+) -> (f64, f64, u32) {
+    let (alpha, w, vbar) = (vel.alpha, vel.w, vel.vbar);
+    let (lt, _) = vel.tangent_guess;
     let guess = if start == Start::Tangent {
         lt
     } else {
         let ratio_t = lt / (2.0 * alpha);
         lo * (2.0 + (ratio_t - 2.0) * lo / (2.0 * alpha))
     };
-    let s_beta = s_fn(beta);
+    let s_beta = x_minus_sin_with(beta, sin_beta);
     // H, H' = cos(beta - x) - vbar and H'' = sin(beta - x) share one sin_cos.
     let fdd = |x: f64| {
         let y = beta - x;
@@ -533,10 +574,7 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
         (x_minus_sin_with(y, sn) - s_beta + w * x, cs - vbar, sn)
     };
     let r = root::halley(fdd, lo, x_max, guess, rtol, accept_of(rtol));
-    // The deficit is a mean of a non-negative gap; rounding must not flip it.
-    let (d, m) = deficit_2pi(beta, w, r.x);
-    let (deficit, magnitude) = (nonneg(d / TAU), m / TAU);
-    StickSolution { length: r.x, tail: x_max - r.x, deficit, magnitude, evaluations: r.evaluations }
+    (r.x, x_max - r.x, r.evaluations)
 }
 
 /// A stick from contact whose start `beta` lies within this fraction of `alpha`
@@ -582,7 +620,8 @@ fn short_stick(eps: f64, vel: &Velocity, rtol: f64) -> StickSolution {
     if eps.is_nan() || eps <= 0.0 {
         // At the end of the sticks to rounding (the regime's sign test said
         // stick-first): a stick of no length, slip for the whole contact of 2 delta.
-        return StickSolution { length: 0.0, tail: 2.0 * vel.delta, deficit: 0.0, magnitude: 0.0, evaluations: 0 };
+        let tail = 2.0 * vel.delta;
+        return StickSolution { length: 0.0, tail, deficit: 0.0, magnitude: 0.0, half_tail: None, evaluations: 0 };
     }
     let c = (vel.w * (1.0 + vbar)).sqrt();
     // sin h - h cos h = h (1 - cos h) - S(h), about h^3/3 (no cancellation;
@@ -640,13 +679,15 @@ fn short_stick(eps: f64, vel: &Velocity, rtol: f64) -> StickSolution {
         }
     }
     let d = eps - h;
+    // The contact lasts 2 (pi - theta) = 2 (eps + delta): the tail after the
+    // stick, 2 (delta + d), is a sum of non-negative terms (0 at vbar = 0).
+    let half = vel.delta + d;
     StickSolution {
         length: 2.0 * h,
-        // The contact lasts 2 (pi - theta) = 2 (eps + delta): the tail after the
-        // stick, 2 (delta + d), is a sum of non-negative terms (0 at vbar = 0).
-        tail: 2.0 * (vel.delta + d),
+        tail: 2.0 * half,
         deficit,
         magnitude: deficit * (2.0 + 3.0 * alpha / eps),
+        half_tail: Some(libm::sincos(half)),
         evaluations,
     }
 }

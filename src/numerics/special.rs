@@ -108,11 +108,17 @@ pub(crate) fn x_minus_sin_with(x: f64, sin_x: f64) -> f64 {
 /// `C(x) = x^2/2 - (1 - cos x)` with full relative accuracy, even, about `x^4/24` near 0.
 /// It is the antiderivative of [`x_minus_sin`] that vanishes at 0.
 pub(crate) fn half_sq_minus_versin(x: f64) -> f64 {
+    // `cos x` is needed only beyond the series' range.
+    half_sq_minus_versin_with(x, if x.abs() < SERIES_LIMIT { 0.0 } else { x.cos() })
+}
+
+/// [`half_sq_minus_versin`] given `cos x` (used beyond the series' range only).
+pub(crate) fn half_sq_minus_versin_with(x: f64, cos_x: f64) -> f64 {
     if x.abs() < SERIES_LIMIT {
         let y = x * x;
         y * y * horner(&C_COEF, y)
     } else {
-        0.5 * x * x - 1.0 + x.cos()
+        0.5 * x * x - 1.0 + cos_x
     }
 }
 

@@ -184,6 +184,8 @@ pub(super) struct Foundation {
     pub(super) gamma: f64,
     /// `u* = pi/2 - arcsin(1/amp)` for `amp > 1` (where `y = 0`), else 0.
     pub(super) u_star: f64,
+    /// `sin u*` and `cos u*` (of `u*` as rounded: `y` vanishes there exactly).
+    star_sin_cos: (f64, f64),
     /// Velocity constants when `vbar < 1`.
     pub(super) vel: Option<Velocity>,
     pub(super) tol: f64,
@@ -199,7 +201,7 @@ impl Foundation {
     /// for `amp > 1` (where `y = 0`), else 0.
     pub(super) fn new(n: f64, amp: f64, vel: Option<Velocity>, tol: f64) -> Self {
         let u_star = if amp > 1.0 { 2.0 * (0.5 * (amp - 1.0) / amp).sqrt().asin() } else { 0.0 };
-        Foundation { n, amp, gamma: 1.0 / n - 1.0, u_star, vel, tol }
+        Foundation { n, amp, gamma: 1.0 / n - 1.0, u_star, star_sin_cos: libm::sincos(u_star), vel, tol }
     }
 
     /// How the Jacobian behaves at `u*`, the top of the innermost band.
@@ -217,7 +219,7 @@ impl Foundation {
     /// `amp > 1` scaled by `1/amp`: `cos(u*) - cos(u) = 2 sin((u + u*)/2) sin((u - u*)/2)`.
     pub(super) fn y(&self, u: f64) -> f64 {
         if self.amp > 1.0 {
-            self.y_product(u, u - self.u_star)
+            self.y_product(u - self.u_star)
         } else {
             let h = (0.5 * u).sin();
             (1.0 - self.amp) + 2.0 * self.amp * h * h
@@ -233,21 +235,39 @@ impl Foundation {
     /// sees its Jacobian `y^gamma` jitter by 1e-6 (at `amp sqrt(1 - vbar^2) = 1`
     /// the stick-first band starts there: the paraboloid at amp 5/3, vbar 0.8
     /// took 10,436 nodes and missed its 40-digit value by 1.1e-11, twice its estimate).
-    pub(super) fn y_sc(&self, u: f64, sin_u: f64, cos_u: f64, from_star: f64) -> f64 {
+    pub(super) fn y_sc(&self, sin_u: f64, cos_u: f64, from_star: f64) -> f64 {
         if self.amp <= 1.0 {
             let one_minus_c = if cos_u > 0.0 { sin_u * sin_u / (1.0 + cos_u) } else { 1.0 - cos_u };
             (1.0 - self.amp) + self.amp * one_minus_c
         } else if self.amp * cos_u > Y_PRODUCT_FORM || self.amp > Y_PLAIN_MAX_AMP {
-            self.y_product(u, from_star)
+            self.y_product(from_star)
         } else {
             1.0 / self.amp - cos_u
         }
     }
 
     /// `y` of `amp > 1` (scaled by `1/amp`) as `cos u* - cos u = 2 sin((u + u*)/2)
-    /// sin((u - u*)/2)`, with `u - u*` given by the caller.
-    fn y_product(&self, u: f64, from_star: f64) -> f64 {
-        2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * from_star).sin()
+    /// sin((u - u*)/2)`, with `u - u*` given by the caller (`u` itself is not needed).
+    fn y_product(&self, from_star: f64) -> f64 {
+        let (sum, s) = self.half_angles(from_star);
+        2.0 * sum * s
+    }
+
+    /// `sin((u + u*)/2) = sin u* cos(d/2) + cos u* sin(d/2)` and `sin(d/2)`,
+    /// `d = u - u*` in `[0, pi - u*]`, from one `sin_cos`: two non-negative
+    /// terms (both angles in `[0, pi/2]`), so no cancellation (two sines took
+    /// about 140 instructions a node, the `sin_cos` about 100).
+    fn half_angles(&self, d: f64) -> (f64, f64) {
+        let (sin_star, cos_star) = self.star_sin_cos;
+        let (s, c) = libm::sincos(0.5 * d);
+        (sin_star * c + cos_star * s, s)
+    }
+
+    /// `y / (u - u*) = 2 sin((u + u*)/2) sin(d/2)/d` for `amp > 1`, `d = u - u*`
+    /// ([`Foundation::half_angles`]).
+    fn centre_ratio(&self, d: f64) -> f64 {
+        let (sum, s) = self.half_angles(d);
+        2.0 * sum * s / d
     }
 
     /// `y^gamma` (or of any positive ratio: the Centre tops take it of `y/d`),
@@ -265,15 +285,11 @@ impl Foundation {
     /// The Jacobian `|dz/du| = (amp/n) y^gamma sin(u)` (for `amp > 1` in scaled
     /// units, see `power_law`), divided by the weight of `top`; `d` is the
     /// distance of `u` from the top of the piece, `from_star` that of `u` from `u*`.
-    pub(super) fn jacobian(&self, u: f64, sin_u: f64, cos_u: f64, d: f64, from_star: f64, top: Top) -> f64 {
+    pub(super) fn jacobian(&self, sin_u: f64, cos_u: f64, d: f64, from_star: f64, top: Top) -> f64 {
         let k = if self.amp > 1.0 { 1.0 / self.n } else { self.amp / self.n };
         match top {
-            Top::Regular => k * self.y_pow(self.y_sc(u, sin_u, cos_u, from_star)) * sin_u,
-            Top::Centre => {
-                // Top at u*: y / d = 2 sin((u + u*)/2) sin(d/2)/d.
-                let ratio = 2.0 * (0.5 * (u + self.u_star)).sin() * (0.5 * d).sin() / d;
-                k * self.y_pow(ratio) * sin_u
-            }
+            Top::Regular => k * self.y_pow(self.y_sc(sin_u, cos_u, from_star)) * sin_u,
+            Top::Centre => k * self.y_pow(self.centre_ratio(d)) * sin_u,
             Top::CentreCritical => {
                 // amp = 1, top at u = 0 (u = d): y/u^2 = 2 (sin(u/2)/u)^2, sin(u)/u.
                 let q = (0.5 * d).sin() / d;
@@ -319,7 +335,7 @@ impl Foundation {
     fn node(&self, u: f64, d: f64, from_star: f64, kind: Top, factor: f64, means: Means) -> ([f64; MEANS], f64) {
         let beta = FRAC_PI_2 - u;
         let (su, cu) = libm::sincos(u);
-        let jac = factor * self.jacobian(u, su, cu, d, from_star, kind);
+        let jac = factor * self.jacobian(su, cu, d, from_star, kind);
         // sin(beta) = cos(u), cos(beta) = sin(u); the contact phase is u.
         let b = mean_normal_sin_cos(beta, cu, su);
         let (dd, tt, mm) = match (means, &self.vel) {
