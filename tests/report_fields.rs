@@ -229,3 +229,24 @@ fn band_shares_sum_to_one_as_mu_vanishes() {
         }
     }
 }
+
+/// At `vbar = 0` and `amp > 1` the tangential force vanishes (`mu = 0`
+/// exactly): every band's tangential share is then 0, not `0/0` (a NaN would
+/// print as `null`), while the normal shares still sum to 1.
+#[test]
+fn band_shares_without_tangential_force_are_zero() {
+    for spec in ["parabolic", "cone", "power:3.7"] {
+        for amp in [1.5, 2.0, 10.0] {
+            let p = point_json(&common::shape(spec).unwrap(), 0.0, amp);
+            assert_eq!(p["mu_ratio"].as_f64(), Some(0.0), "{spec} amp {amp}");
+            let bands = p["bands"].as_array().unwrap();
+            assert!(!bands.is_empty(), "{spec} amp {amp}");
+            let mut normal = 0.0;
+            for b in bands {
+                assert_eq!(b["tangential_share"].as_f64(), Some(0.0), "{spec} amp {amp}: {b}");
+                normal += b["normal_share"].as_f64().unwrap();
+            }
+            assert!((normal - 1.0).abs() <= 4.0 * f64::EPSILON, "{spec} amp {amp}: normal shares sum to {normal}");
+        }
+    }
+}
