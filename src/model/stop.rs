@@ -32,7 +32,7 @@
 //! downward. `g+' = h` and `g-' = h2 = X' + B' = vhat + R2 cos(tau + psi2)`
 //! have their zeros in closed form, so `g+` and `g-` are monotone between
 //! them: each event is the unique sign change on one such piece, found by a
-//! bracketed root search ([`crate::numerics::root::bracketed`]). Slips end at
+//! bracketed root search (`numerics::root::bracketed`). Slips end at
 //! the closed-form zeros of `h` (forward) and `h2` (backward). Every integral
 //! of a phase is closed form, written without cancellation for short phases.
 

@@ -300,7 +300,7 @@ pub const OSCILLATION_PERIODS: usize = 3;
 /// midpoints of `0 <= z < reach(amp)` (one for the flat punch), each with the
 /// bound `(1 - G(z) - amp cos tau)_+`, all moved by the body's
 /// `X(tau) = vhat tau + T sin(tau + phase)` step by step
-/// ([`update_two_way`]), started sliding (`f = B` at `tau = 0`); the means of
+/// (`update_two_way`), started sliding (`f = B` at `tau = 0`); the means of
 /// the last of `periods` periods (rectangle rule on the periodic state).
 ///
 /// # Errors
