@@ -348,11 +348,15 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     }
     let (ratio, error_estimate) = ratio_of(&total, perm.deficit_magnitude, small_mu)?;
     let nn = total.value[NORMAL];
+    // The contact's edge; the slip-only band is empty where nothing slips only
+    // (u_low = pi at vbar = 0), not an ulp wide from two roundings of the edge.
+    let z_outer = (1.0 + amp).powf(1.0 / n);
+    let z_low = if u_low >= PI { z_outer } else { z_of_u(u_low) };
     let parts = [
         (BandKind::PermanentContact, [0.0, z1], perm.sums),
         (if vel.is_some() { BandKind::SlipFirst } else { BandKind::SlipOnly }, [z1, z_of_u(u_sf)], slip_first),
-        (BandKind::StickFirst, [z_of_u(u_sf), z_of_u(u_low)], stick_first),
-        (BandKind::SlipOnly, [z_of_u(u_low), (1.0 + amp).powf(1.0 / n)], slip_only),
+        (BandKind::StickFirst, [z_of_u(u_sf), z_low], stick_first),
+        (BandKind::SlipOnly, [z_low, z_outer], slip_only),
     ];
     // Shares of the tangential force from its own (cancellation-free) sum: as
     // `nn - dd` they lost their relative accuracy with `mu` (the paraboloid's
