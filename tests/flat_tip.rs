@@ -216,7 +216,6 @@ fn worn_spheres_match_independent_values() {
         );
     }
     eprintln!("flat-tip against 22-digit values: worst {worst:.1e}, relative {worst_rel:.1e}");
-    // Regression bars, about 10 times the worst observed (5.9e-17 and 4.6e-16,
-    // 1.7e-16 and 5.5e-16 before this session's one-sin_cos stick end).
+    // Regression bars, about 10 times the worst observed (5.9e-17 and 4.6e-16).
     assert!(worst <= 1e-15 && worst_rel <= 5e-15, "{worst:e}, relative {worst_rel:e}");
 }
