@@ -488,10 +488,6 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
         Start::Contact { sin_theta, cos_theta, .. } => (sin_theta, cos_theta),
     };
     let beta_sc = (cq, if start == Start::Tangent { vbar } else { sq });
-    // After a start at contact the means need sin(e/2) of the tail e anyway
-    // (`Velocity::stick_first_means`): from its sin_cos, also cos(beta - L) =
-    // -sin(q + e) = -(sin q cos e + cos q sin e) (beta - L = q + e - 3 pi/2),
-    // one call for what took up to four (cos(beta - L), sin(e/2), sin e).
     let (length, tail, evaluations) = if vbar < TAIL_FORM_VBAR {
         // H, H' = sin(q + e) + vbar and H'' = cos(q + e), from one sin_cos: the
         // angle q + e/2 by the addition formulas, whose absolute error is that
@@ -534,6 +530,10 @@ fn stick_phase(start: Start, vel: &Velocity, rtol: f64) -> StickSolution {
     } else {
         length_form(beta, beta_sc.0, lo, x_max, start, vel, rtol)
     };
+    // After a start at contact the means need sin(e/2) of the tail e anyway
+    // (`Velocity::stick_first_means`): from its sin_cos, also cos(beta - L) =
+    // -sin(q + e) = -(sin q cos e + cos q sin e) (beta - L = q + e - 3 pi/2),
+    // one call for what took up to four (cos(beta - L), sin(e/2), sin e).
     let (c_end, half_tail) = match start {
         Start::Tangent => (c_fn(beta - length), None),
         Start::Contact { .. } => {
