@@ -182,16 +182,29 @@ impl Rule {
     /// `tests/mdr.rs` (error 1.09e-13 for an estimate of 1.18e-13); with `q`
     /// the largest error is 0.09 of its estimate there.
     pub(crate) fn truncation(&self, c: &[f64; TAIL_ROWS]) -> Option<f64> {
-        let m = self.nodes.len();
-        if m < 8 {
+        if self.nodes.len() < 8 {
             return None;
         }
-        let env = |g: &[f64]| g.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-        let (e0, e1) = (env(&c[..TAIL_GROUP]), env(&c[TAIL_GROUP..]));
-        // At order 8 two coefficients a group show no decay reliably: none is claimed.
-        let q = if e0 > 0.0 && m >= 16 { (e1 / e0).min(1.0) } else { 1.0 };
-        Some(2.0 * self.root_mu0 * e1 * q)
+        Some(2.0 * self.root_mu0 * envelope(&c[TAIL_GROUP..]) * self.decay(c).min(1.0))
     }
+
+    /// The decay `q = E1/E0` of [`Rule::truncation`] (unclamped: above 1 where
+    /// the coefficients grow), or 1 where none is claimed (below order 16, or
+    /// `E0 = 0`).
+    pub(crate) fn decay(&self, c: &[f64; TAIL_ROWS]) -> f64 {
+        // At order 8 two coefficients a group show no decay reliably: none is claimed.
+        let e0 = envelope(&c[..TAIL_GROUP]);
+        if e0 > 0.0 && self.nodes.len() >= 16 {
+            envelope(&c[TAIL_GROUP..]) / e0
+        } else {
+            1.0
+        }
+    }
+}
+
+/// The largest magnitude of a group of coefficients.
+fn envelope(g: &[f64]) -> f64 {
+    g.iter().fold(0.0f64, |a, x| a.max(x.abs()))
 }
 
 /// Most rules one thread keeps: every order of a power law's three weights

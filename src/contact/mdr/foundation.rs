@@ -1,6 +1,6 @@
 //! The band quadrature of an MDR power-law foundation: springs in the angle
 //! `u = pi/2 - arcsin s`, Gauss(-Jacobi) pieces graded towards singularities,
-//! orders doubled until the truncation error predicted from the pass's own
+//! orders raised until the truncation error predicted from the pass's own
 //! coefficients is within the tolerance.
 
 use crate::quad;
@@ -45,6 +45,15 @@ fn slip_first_tangential(u: f64, sin_u: f64, cos_u: f64, delta: f64, excess: f64
 
 /// Highest Gauss order tried per piece.
 pub(crate) const MAX_ORDER: usize = 256;
+/// The orders a piece's ladder may take: from [`LOOSE_ORDER`] or [`MIN_ORDER`]
+/// up, each step at most a doubling ([`Foundation::next_order`]); a fixed set,
+/// so that a thread computes few rules (Golub-Welsch) for a whole table.
+const ORDERS: [usize; 10] = [8, 16, 24, 32, 48, 64, 96, 128, 192, 256];
+/// [`Foundation::next_order`] aims the next pass's predicted estimate at this
+/// fraction of the tolerance (the node count is insensitive to it: 1, 0.25,
+/// 0.05 and 0.01 gave 27.90, 27.91, 27.97 and 28.02 nodes a point on the
+/// parabolic table).
+const NEXT_ORDER_MARGIN: f64 = 0.25;
 /// First order tried per piece at the default tolerance.
 pub(crate) const MIN_ORDER: usize = 16;
 /// First order tried per piece at a tolerance of [`LOOSE_TOL`] or looser (the
@@ -83,8 +92,15 @@ const JACOBIAN_LEVELS: i32 = 90;
 /// was chosen by measurement (callgrind, the bench's 10 x 100 grid for `n = 2`,
 /// once each order carried its own estimate): 2.0, 2.5, 3.0, 3.5, 4.0, 5.0 and
 /// 7.0 cost 55.8, 56.2, 54.7, 52.8, 50.6, 54.2 and 55.0 million instructions;
-/// 4.0 against 2.5 saves 10 %, 8 % and 2 % for `n` = 1, 3 and 0.5 too.
-const SEGMENT: f64 = 4.0;
+/// 4.0 against 2.5 saves 10 %, 8 % and 2 % for `n` = 1, 3 and 0.5 too. That
+/// was with the ladder starting every segment at order 16, where 270 of the
+/// grid's 281 segments failed (197 of them within the tolerance already, but
+/// their estimate 10^5 times above it: the estimate claims the decay of the
+/// last doubling once, safe for algebraic decays and pessimistic by that decay
+/// again for geometric ones, which the mapped integrand has); starting at
+/// [`mapped_first_order`]'s 32, the grid's nodes a point for segments of 3.5,
+/// 4.0, 4.5, 5.0 and 5.5 were 28.8, 29.4, 29.0, 28.3 and 29.2.
+const SEGMENT: f64 = 5.0;
 /// A side of a mapped band whose singularity lies beyond `GRADE_RATIO` of
 /// the width is mapped as if it lay this many widths away (nearly linear there).
 const FAR_SIDE: f64 = 64.0;
@@ -128,6 +144,8 @@ pub(super) struct Pass {
     sum: [f64; MEANS],
     magnitude: f64,
     truncation: Option<[f64; MEANS]>,
+    /// Each mean's coefficient decay ([`quad::Rule::decay`]).
+    decay: [f64; MEANS],
 }
 
 /// The running sums of a pass: the weighted sums of the [`MEANS`] and the
@@ -162,7 +180,8 @@ impl Acc {
         // Every mean has an estimate, or (below order 8) none has.
         let t = self.coef.each_ref().map(|c| rule.truncation(c));
         let truncation = t.iter().all(Option::is_some).then(|| t.map(|e| scale.abs() * e.unwrap_or(f64::INFINITY)));
-        Pass { sum: self.sum.map(|x| scale * x), magnitude: scale.abs() * self.magnitude, truncation }
+        let decay = self.coef.each_ref().map(|c| rule.decay(c));
+        Pass { sum: self.sum.map(|x| scale * x), magnitude: scale.abs() * self.magnitude, truncation, decay }
     }
 }
 
@@ -407,7 +426,8 @@ impl Foundation {
         let mut total = Sums::default();
         for i in order {
             let sc = std::array::from_fn(|j| scale[j] + total.value[j].abs());
-            total += self.ladder(|m| self.pass_mapped(top, bottom, ends, (at(i), at(i + 1)), m), sc);
+            let pass = |m| self.pass_mapped(top, bottom, ends, (at(i), at(i + 1)), m);
+            total += self.ladder(self.mapped_first_order(), pass, sc);
         }
         total
     }
@@ -416,35 +436,86 @@ impl Foundation {
     /// is within the tolerance relative to the piece plus `scale` (the band's
     /// sums so far).
     pub(super) fn piece(&self, top: f64, bottom: f64, kind: Top, means: Means, scale: [f64; MEANS]) -> Sums {
-        self.ladder(|m| self.pass(top, bottom, kind, means, m), scale)
+        self.ladder(self.first_order(), |m| self.pass(top, bottom, kind, means, m), scale)
+    }
+
+    /// The first order of a piece's ladder: [`MIN_ORDER`], or [`LOOSE_ORDER`]
+    /// at a tolerance of [`LOOSE_TOL`] or looser.
+    fn first_order(&self) -> usize {
+        if self.tol >= LOOSE_TOL {
+            LOOSE_ORDER
+        } else {
+            MIN_ORDER
+        }
+    }
+
+    /// The first order of a mapped segment: one doubling above
+    /// [`Foundation::first_order`] (see [`SEGMENT`]: at order 16 nearly every
+    /// segment of the parabolic table failed; from 32, 34.5 nodes a point
+    /// became 29.8, and 32.8 -> 28.6, 51.1 -> 46.2 and 55.8 -> 52.3 for the
+    /// exponents 1, 3 and 0.5, with [`Foundation::next_order`] 28.3, 44.8 and 49.3).
+    fn mapped_first_order(&self) -> usize {
+        2 * self.first_order()
+    }
+
+    /// The order to try after a pass of order `m` failed: the smallest of
+    /// [`ORDERS`] above `m` whose estimate, if the coefficients decay
+    /// geometrically, falls to [`NEXT_ORDER_MARGIN`] of the tolerance, and at
+    /// most `2 m` (the ladder's old step). With `c_k ~ rho^k` the estimate of
+    /// [`quad::Rule::truncation`] is `~ E1 q ~ rho^(3m/2)`, `q = rho^(m/2)` the
+    /// measured decay, so order `m'` scales it by `q^(3 (m' - m)/m)`. Where no
+    /// decay is measured (`q >= 1`, or none claimed) the order doubles. Only
+    /// the choice of the next order rests on this model: a pass is accepted by
+    /// its own estimate alone.
+    fn next_order(&self, m: usize, p: &Pass, err: &[f64; MEANS], lim: &[f64; MEANS]) -> usize {
+        let mut need = 0.0f64;
+        for k in 0..MEANS {
+            if err[k] > lim[k] {
+                let q = p.decay[k];
+                need = if q > 0.0 && q < 1.0 {
+                    let excess = (err[k] / (NEXT_ORDER_MARGIN * lim[k])).ln();
+                    need.max(excess * m as f64 / (3.0 * -q.ln()))
+                } else {
+                    f64::INFINITY
+                };
+            }
+        }
+        let want = if need < m as f64 { m + (need.ceil() as usize).max(1) } else { 2 * m };
+        ORDERS.into_iter().find(|&o| o >= want).unwrap_or(MAX_ORDER).min(2 * m).max(m + 1)
     }
 
     /// The order ladder of [`Foundation::piece`] over any rule family `pass(m)`:
-    /// orders doubling from [`MIN_ORDER`] ([`LOOSE_ORDER`] at a tolerance of
-    /// [`LOOSE_TOL`] or looser) until every mean's truncation estimate
+    /// orders from `first` ([`Foundation::next_order`] chooses each next one,
+    /// at most a doubling) until every mean's truncation estimate
     /// ([`quad::Rule::truncation`], from the pass's own nodes) is within the
     /// tolerance relative to the piece plus `scale`. (The ladder 4-8-16 it
     /// replaces spent 12 of its 28 nodes on the estimate alone.)
-    fn ladder(&self, pass: impl Fn(usize) -> Pass, scale: [f64; MEANS]) -> Sums {
-        let mut m = if self.tol >= LOOSE_TOL { LOOSE_ORDER } else { MIN_ORDER };
+    fn ladder(&self, first: usize, pass: impl Fn(usize) -> Pass, scale: [f64; MEANS]) -> Sums {
+        let mut m = first;
         let mut nodes = 0;
-        let mut prev: Option<[f64; MEANS]> = None;
+        let mut prev: Option<(usize, [f64; MEANS])> = None;
         loop {
             let p = pass(m);
             nodes += m;
-            // From the second order on, the last difference bounds the error too
-            // (where the integrand's rounding noise sets the coefficients' floor,
-            // far above the error of the sum, which averages it).
+            // After a doubling of the order, the last difference bounds the error
+            // too (where the integrand's rounding noise sets the coefficients'
+            // floor, far above the error of the sum, which averages it). After a
+            // smaller step the two errors can be alike, and their difference
+            // far below either: not used.
             let err: [f64; MEANS] = std::array::from_fn(|k| {
                 let t = p.truncation.map_or(f64::INFINITY, |t| t[k]);
-                prev.map_or(t, |q| t.min((p.sum[k] - q[k]).abs()))
+                match prev {
+                    Some((mp, q)) if m == 2 * mp => t.min((p.sum[k] - q[k]).abs()),
+                    _ => t,
+                }
             });
-            let within = (0..MEANS).all(|k| err[k] <= self.tol * (p.sum[k].abs() + scale[k]));
+            let lim: [f64; MEANS] = std::array::from_fn(|k| self.tol * (p.sum[k].abs() + scale[k]));
+            let within = (0..MEANS).all(|k| err[k] <= lim[k]);
             if within || m >= MAX_ORDER {
                 return Sums { value: p.sum, error: err, deficit_magnitude: p.magnitude, nodes };
             }
-            prev = Some(p.sum);
-            m *= 2;
+            prev = Some((m, p.sum));
+            m = self.next_order(m, &p, &err, &lim);
         }
     }
 

@@ -33,12 +33,13 @@
 //! near 1, or `amp c` near 1) is split geometrically towards its top, so that
 //! every piece is at least its own width away from it (Gauss converges
 //! geometrically on each). `y` is always evaluated in a cancellation-free form.
-//! Each piece is integrated at orders 16, 32, ... (8, 16, ... at loose
-//! tolerances): it is accepted when the truncation error predicted from the
-//! decay of the integrand's discrete orthogonal-polynomial coefficients at the
-//! same nodes (`quad::Rule::truncation`; from the second order on, at most the
-//! difference of the last two orders) is within the relative tolerance; the
-//! estimates of the pieces add up to the reported one.
+//! Each piece is integrated at increasing orders from 16 (a mapped segment from
+//! 32; 8 and 16 at loose tolerances), each next one chosen from the measured
+//! decay and at most a doubling: it is accepted when the truncation error
+//! predicted from the decay of the integrand's discrete orthogonal-polynomial
+//! coefficients at the same nodes (`quad::Rule::truncation`; after a doubling,
+//! at most the difference of the two passes) is within the relative tolerance;
+//! the estimates of the pieces add up to the reported one.
 
 mod foundation;
 mod normal;
