@@ -601,7 +601,7 @@ const SHORT_STICK_MAX_STEPS: u32 = 12;
 /// `G = (cos(alpha - d) - cos alpha) - cos(alpha - d) S(h)/h`, where
 /// `cos(alpha - d) - cos alpha = c sin d - vbar sin^2 d/(1 + cos d)`
 /// (`c = sin alpha`; `d <= eps/24` is small): from the sines and cosines of
-/// `h` and `d` alone. The root lies in `[eps/2, eps]` (for `eps < alpha/4`,
+/// `h` and `d` alone (those of `d <= eps/2 < pi/16` by their series). The root lies in `[eps/2, eps]` (for `eps < alpha/4`,
 /// `G(eps/2) > 0` and `G(eps) < 0`); Halley's method starts from its series
 /// `d = t eps^2/6 - t^2 eps^3/18 + (t^3/27 + 7t/360) eps^4` (`t = cot alpha`).
 ///
@@ -632,7 +632,7 @@ fn short_stick(eps: f64, vel: &Velocity, rtol: f64) -> StickSolution {
     let eval = |h: f64| {
         let (sh, ch) = libm::sincos(h);
         let d = eps - h;
-        let (sd, cd) = libm::sincos(d);
+        let (sd, cd) = crate::special::sin_cos_small(d);
         let (sa, ca) = (c * cd - vbar * sd, vbar * cd + c * sd);
         let t3 = third(h, sh, ch);
         let g = (c * sd - vbar * sd * sd / (1.0 + cd)) - ca * x_minus_sin_with(h, sh) / h;
@@ -681,13 +681,16 @@ fn short_stick(eps: f64, vel: &Velocity, rtol: f64) -> StickSolution {
     let d = eps - h;
     // The contact lasts 2 (pi - theta) = 2 (eps + delta): the tail after the
     // stick, 2 (delta + d), is a sum of non-negative terms (0 at vbar = 0).
+    // Its half's sine and cosine by the addition formulas, with sin delta =
+    // vbar and cos delta = c (no library call: a short stick took four).
     let half = vel.delta + d;
+    let (sd, cd) = crate::special::sin_cos_small(d);
     StickSolution {
         length: 2.0 * h,
         tail: 2.0 * half,
         deficit,
         magnitude: deficit * (2.0 + 3.0 * alpha / eps),
-        half_tail: Some(libm::sincos(half)),
+        half_tail: Some((vbar * cd + c * sd, c * cd - vbar * sd)),
         evaluations,
     }
 }
