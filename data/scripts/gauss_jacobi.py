@@ -1,7 +1,8 @@
 """25-digit Gauss-Jacobi rules for the weight (1 + x)^beta on [-1, 1], the
 reference of `numerics::quad::gauss_jacobi` (its nodes and weights, at every
-order the MDR bands use between 1 and 256, and the exponents of the paraboloid,
-the cone, steep and near-singular power laws).
+order the MDR bands use between 1 and 256: the ladder's 8, 16, 24, 32, 48, ...;
+and the exponents of the paraboloid, the cone, steep and near-singular power
+laws).
 
 Each rule is computed twice, at 60 digits:
 - from the three-term recurrence of the Jacobi polynomials (the coefficients
@@ -26,7 +27,7 @@ import numpy as np
 from mpmath import mp, mpf, sqrt, nstr
 
 mp.dps = 60
-ORDERS = [1, 2, 8, 16, 32, 64, 256]
+ORDERS = [1, 2, 8, 16, 24, 32, 48, 64, 96, 128, 192, 256]
 BETAS = [0.0, -0.5, 1.0, -0.875, -0.99, 3.5, -0.999999]
 
 
