@@ -280,6 +280,69 @@ impl Velocity {
         Velocity { vbar, w, alpha, delta, tangent_guess: tangent_length_guess(alpha, vbar) }
     }
 
+    /// Half the stick length of a tangent start, `L_t/2`, to full precision:
+    /// the top of the stick-first band in [`Velocity::stick_first_by_half_length`]
+    /// (the spring at `beta = alpha` starts its stick at contact and at the
+    /// tangent at once).
+    pub(crate) fn tangent_half_length(&self) -> f64 {
+        0.5 * stick_phase(Start::Tangent, self, ROOT_RTOL_EVENTS).length
+    }
+
+    /// The stick-first spring whose stick lasts `L = 2h`, `0 < h <=`
+    /// [`Velocity::tangent_half_length`], in closed form: no root to find.
+    ///
+    /// The stick from contact at `beta` ends where the gap `H(x) = sin beta -
+    /// sin(beta - x) - vbar x = 2 cos(beta - x/2) sin(x/2) - vbar x` returns to
+    /// 0, so a stick of length `2h` starts at `beta = h - phi` with `cos phi =
+    /// g = vbar h/sin h` (`phi` in `[0, pi/2]`; `beta = -alpha` at `h = 0`, and
+    /// `beta` rises with `h`): the band of springs is swept by `h` explicitly.
+    /// With `psi = beta - h = -phi` the deficit `(1/2pi) int_0^L H` is
+    /// `(1/2pi) [L sin beta + cos beta - cos(beta - L) - vbar L^2/2]
+    /// = sin(phi) (sin h - h cos h)/pi` (using `vbar h = cos(psi) sin h`): a
+    /// product of non-negative factors. The tail after the stick is `e =
+    /// x_max - L = pi - 2 phi = 2 arcsin g`, so `sin(e/2) = g`, `cos(e/2) =
+    /// sin phi`; the contact phase is `u = pi/2 - beta`, with `sin u = cos
+    /// beta` and `cos u = sin beta` by the addition formulas; and `|du/dh| = 1
+    /// + vbar (sin h - h cos h)/(sin^2 h sin phi)` (from `dg/dh = vbar (sin h -
+    /// h cos h)/sin^2 h`). `1 - g = (w h - S(h))/sin h` keeps `sin phi`'s
+    /// digits as `g -> 1`. One `sin_cos`, one square root and one arcsine.
+    pub(crate) fn stick_first_by_half_length(&self, h: f64) -> LengthNode {
+        let vbar = self.vbar;
+        let (sh, ch) = libm::sincos(h);
+        let s_h = x_minus_sin_with(h, sh);
+        // sin h - h cos h: h (1 - cos h) - S(h) below pi/2 (about h^3/3), a sum
+        // of non-negative terms above.
+        let t3 = if ch > 0.0 { h * sh * sh / (1.0 + ch) - s_h } else { sh - h * ch };
+        let g = vbar * h / sh;
+        let (wh, rest) = (self.w * h, s_h);
+        let sin_phi = ((wh - rest) / sh * (1.0 + g)).sqrt();
+        // phi = arccos g and a = arcsin g = pi/2 - phi, the smaller directly.
+        let (phi, a) = if g <= FRAC_1_SQRT_2 {
+            let a = g.asin();
+            (FRAC_PI_2 - a, a)
+        } else {
+            let phi = sin_phi.asin();
+            (phi, FRAC_PI_2 - phi)
+        };
+        let beta = h - phi;
+        let (sin_b, cos_b) = (sh * g - ch * sin_phi, ch * g + sh * sin_phi);
+        let deficit = sin_phi * t3 / PI;
+        // <F> = (vbar L^2/2 + s S(e) + 2 sin(u) sin^2(e/2))/2pi, e = 2a.
+        let e = 2.0 * a;
+        let tangential =
+            (2.0 * vbar * h * h + sin_b * x_minus_sin_with(e, 2.0 * g * sin_phi) + 2.0 * cos_b * g * g) / TAU;
+        // Rounding: sin phi carries the cancellation of w h - S(h).
+        let magnitude = deficit * (2.0 + (wh + rest) / (wh - rest));
+        LengthNode {
+            u: FRAC_PI_2 - beta,
+            sin_u: cos_b,
+            cos_u: sin_b,
+            beta,
+            du_dh: 1.0 + vbar * t3 / (sh * sh * sin_phi),
+            means: StickMeans { deficit, tangential, magnitude },
+        }
+    }
+
     /// The means of the stick-first spring whose contact starts at phase
     /// `theta = arccos s` (`beta = pi/2 - theta`, `|beta| < alpha`), given
     /// `sin theta` and `cos theta = s`: the deficit `D`, the mean tangential
@@ -332,6 +395,21 @@ struct StickSolution {
     /// `sin(tail/2)` and `cos(tail/2)` where the solver had them (a start at contact).
     half_tail: Option<(f64, f64)>,
     evaluations: u32,
+}
+
+/// A stick-first spring given by its stick's half-length
+/// ([`Velocity::stick_first_by_half_length`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct LengthNode {
+    /// The contact phase `u = theta = pi/2 - beta`, and its sine and cosine (`s`).
+    pub(crate) u: f64,
+    pub(crate) sin_u: f64,
+    pub(crate) cos_u: f64,
+    /// `beta = pi/2 - u`.
+    pub(crate) beta: f64,
+    /// `|du/dh|`.
+    pub(crate) du_dh: f64,
+    pub(crate) means: StickMeans,
 }
 
 /// The means of a stick-first spring ([`Velocity::stick_first_means`]).
@@ -1106,6 +1184,52 @@ mod tests {
     /// (0, 1)) within 2 % of those measured. A worse start, or a wrong
     /// derivative (Halley falls back to Newton's order, or leaves the bracket),
     /// costs more without changing a root.
+    /// The closed form in the stick's half-length against the root-found
+    /// stick from contact at the same phase `u`: the deficit, the tangential
+    /// mean and the stick's length agree within `8 eps (1 + k)`, `k = |u
+    /// dX/du / X|` the root-found value's condition in the phase (its input `u`
+    /// is rounded; observed at most 0.77 of that bar); the phase's sine and
+    /// cosine from the addition formulas within 4 eps; and the band's ends come
+    /// out as the closed form says (`beta = alpha` at the tangent start's
+    /// half-length, `-alpha` as `h -> 0`).
+    #[test]
+    fn the_half_length_form_agrees_with_the_root_found_stick() {
+        let mut worst = 0.0f64;
+        for vbar in [0.02, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.9999] {
+            let vel = Velocity::new(vbar);
+            let h_t = vel.tangent_half_length();
+            let top = vel.stick_first_by_half_length(h_t);
+            assert!(
+                (top.beta - vel.alpha).abs() <= 8.0 * f64::EPSILON * vel.alpha,
+                "vbar {vbar}: {} vs {}",
+                top.beta,
+                vel.alpha
+            );
+            let bottom = vel.stick_first_by_half_length(1e-9 * h_t);
+            assert!((bottom.beta + vel.alpha).abs() <= 1e-8 * vel.alpha, "vbar {vbar}: {}", bottom.beta);
+            let root_found = |u: f64| {
+                let (su, cu) = libm::sincos(u);
+                let m = vel.stick_first_means(u, su, cu);
+                let length = Spring::with_events(cu, vbar).stick.map_or(f64::NAN, |st| st.length);
+                [m.deficit, m.tangential, length]
+            };
+            for k in 1..40 {
+                let h = h_t * k as f64 / 40.0;
+                let n = vel.stick_first_by_half_length(h);
+                let (su, cu) = libm::sincos(n.u);
+                assert!((n.sin_u - su).abs() <= 4.0 * f64::EPSILON && (n.cos_u - cu).abs() <= 4.0 * f64::EPSILON);
+                let (x, up, down) = (root_found(n.u), root_found(n.u * (1.0 + 1e-7)), root_found(n.u * (1.0 - 1e-7)));
+                let ours = [n.means.deficit, n.means.tangential, 2.0 * h];
+                for q in 0..3 {
+                    let cond = ((up[q] / down[q]).ln() / 2e-7).abs();
+                    let bar = 8.0 * f64::EPSILON * (1.0 + cond);
+                    worst = worst.max((ours[q] / x[q] - 1.0).abs() / bar);
+                }
+            }
+        }
+        assert!(worst <= 1.0, "{worst} of the bar");
+    }
+
     #[test]
     fn a_stick_from_contact_costs_what_was_measured() {
         let mut count = [[0u32; 2]; 2];

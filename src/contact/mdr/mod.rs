@@ -106,6 +106,20 @@ pub struct MdrResult {
     pub nodes: usize,
 }
 
+/// Below this `vbar` the stick-first band is integrated in the contact phase
+/// `u`, not in the stick's half-length ([`Foundation::band_by_length`]): its
+/// top `u = arcsin vbar` comes out of the closed form as `pi/2 - beta`, whose
+/// absolute rounding is `eps/vbar` of it relatively (10 eps here), and the
+/// branch point of `sin phi` nears the band's top in `h` (`vbar 0.05`: 80
+/// nodes where `u` took 64); the phase keeps both (measured on the parabolic
+/// table: 0.02 and 0.1 cost within 1.3 % of each other).
+const BY_LENGTH_MIN_VBAR: f64 = 0.1;
+/// Nor where the Jacobian's branch point `u*` lies above the band's top
+/// closer than this fraction of the band's width (`amp` or `amp sqrt(1 -
+/// vbar^2)` near 1): the phase's grading and mapping resolve it, and `u -
+/// u*` keeps its digits there as `(top - u*) + d`.
+const BY_LENGTH_JACOBIAN_DISTANCE: f64 = 0.25;
+
 /// The permanent-contact band `0 <= z <= z1 = (1 - amp)^(1/n)` (`amp < 1`), in
 /// closed form: every spring there has the same deficit `D(vbar)` and the same
 /// stick excess `X = <F> - F(tau_s)` ([`Spring::tangent_excess`]), so
@@ -299,7 +313,17 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     // analytic, nothing to grade for.
     let near = if vbar == 0.0 { (inf, inf) } else { (u_sf, u_alpha) };
     let stick_means = if vel.is_some() { Means::StickFirst } else { Means::Slip };
-    let stick_first = contact.band(u_sf, u_low, top_of(u_sf), stick_means, near, perm.sums.value);
+    // The stick-first band in its springs' stick half-length where that
+    // variable serves (`by_length`), else in the contact phase.
+    let by_length = vel.filter(|v| {
+        top_of(u_sf) == Top::Regular
+            && v.vbar >= BY_LENGTH_MIN_VBAR
+            && contact.singular_distance(u_sf, Top::Regular) >= BY_LENGTH_JACOBIAN_DISTANCE * (u_low - u_sf)
+    });
+    let stick_first = match by_length {
+        Some(v) => contact.band_by_length(&v, v.tangent_half_length(), perm.sums.value),
+        None => contact.band(u_sf, u_low, top_of(u_sf), stick_means, near, perm.sums.value),
+    };
     let plus = |a: [f64; MEANS], b: &Sums| std::array::from_fn(|k| a[k] + b.value[k]);
     // Slip first: its deficit is D(vbar) per spring, in closed form.
     let d_perm = perm.deficit_per_spring;
