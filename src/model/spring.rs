@@ -302,10 +302,11 @@ impl Velocity {
     /// product of non-negative factors. The tail after the stick is `e =
     /// x_max - L = pi - 2 phi = 2 arcsin g`, so `sin(e/2) = g`, `cos(e/2) =
     /// sin phi`; the contact phase is `u = pi/2 - beta`, with `sin u = cos
-    /// beta` and `cos u = sin beta` by the addition formulas; and `|du/dh| = 1
-    /// + vbar (sin h - h cos h)/(sin^2 h sin phi)` (from `dg/dh = vbar (sin h -
-    /// h cos h)/sin^2 h`). `1 - g = (w h - S(h))/sin h` keeps `sin phi`'s
-    /// digits as `g -> 1`. One `sin_cos`, one square root and one arcsine.
+    /// beta` and `cos u = sin beta` by the addition formulas; and
+    /// `|du/dh| = 1 + vbar (sin h - h cos h)/(sin^2 h sin phi)` (from `dg/dh =
+    /// vbar (sin h - h cos h)/sin^2 h`). `1 - g = (w h - S(h))/sin h` keeps
+    /// `sin phi`'s digits as `g -> 1`. One `sin_cos`, one square root and one
+    /// arcsine.
     pub(crate) fn stick_first_by_half_length(&self, h: f64) -> LengthNode {
         let vbar = self.vbar;
         let (sh, ch) = libm::sincos(h);
