@@ -288,6 +288,23 @@ impl Velocity {
         0.5 * stick_phase(Start::Tangent, self, ROOT_RTOL_EVENTS).length
     }
 
+    /// The branch point of [`Velocity::stick_first_by_half_length`] above the
+    /// band: the `h` in `(0, pi)` where `g = vbar h/sin h` reaches 1, i.e.
+    /// `w h - S(h) = 0` (in that form: no cancellation as `vbar -> 1`, where
+    /// it is `sqrt(6 w)` to leading order). `sin phi` behaves like `sqrt(h_b -
+    /// h)` there, so the band is integrated in `tau = sqrt(h_b - h)`.
+    pub(crate) fn stick_branch_half_length(&self) -> f64 {
+        let (vbar, w) = (self.vbar, self.w);
+        let fdd = |h: f64| {
+            let (sh, ch) = libm::sincos(h);
+            (w * h - x_minus_sin_with(h, sh), ch - vbar, -sh)
+        };
+        let guess = if vbar > 0.5 { (6.0 * w).sqrt() } else { PI * w };
+        // w h - S(h) > 0 just above 0 and = -vbar pi < 0 at pi.
+        let lo = 1e-3 * guess.min(1.0);
+        root::halley(fdd, lo, PI, guess.clamp(lo, PI), ROOT_RTOL_EVENTS, 0.0).x
+    }
+
     /// The stick-first spring whose stick lasts `L = 2h`, `0 < h <=`
     /// [`Velocity::tangent_half_length`], in closed form: no root to find.
     ///
@@ -1229,6 +1246,27 @@ mod tests {
             }
         }
         assert!(worst <= 1.0, "{worst} of the bar");
+    }
+
+    /// The branch point solves `sin h = vbar h` (to 4 eps of `sin h`, and
+    /// as `sqrt(6 w)` as `vbar -> 1`), lies above every stick of the band, and
+    /// is where `sin phi` vanishes.
+    #[test]
+    fn the_branch_point_is_where_g_reaches_one() {
+        for vbar in [1e-3, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.9999, 1.0 - 1e-12] {
+            let vel = Velocity::new(vbar);
+            let h_b = vel.stick_branch_half_length();
+            let (sh, w) = (h_b.sin(), vel.w);
+            // sin h - vbar h = w h - S(h), cancellation-free.
+            let residual = w * h_b - crate::special::x_minus_sin(h_b);
+            assert!(residual.abs() <= 4.0 * f64::EPSILON * sh, "vbar {vbar}: {residual:e} at {h_b}");
+            assert!(h_b > vel.tangent_half_length(), "vbar {vbar}");
+            if vbar > 0.99 {
+                assert!((h_b / (6.0 * w).sqrt() - 1.0).abs() < 2.0 * w, "vbar {vbar}: {h_b}");
+            }
+            let near = vel.stick_first_by_half_length(h_b * (1.0 - 1e-12));
+            assert!(near.du_dh > 1e4, "vbar {vbar}: {}", near.du_dh);
+        }
     }
 
     #[test]

@@ -43,6 +43,14 @@ fn slip_first_tangential(u: f64, sin_u: f64, cos_u: f64, delta: f64, excess: f64
     crate::special::nonneg(gap) + crate::special::nonneg(lag) / std::f64::consts::PI + excess
 }
 
+/// First order of a stick-first band in the stick's half-length
+/// ([`Foundation::band_by_length`]). Measured on the parabolic table (nodes a
+/// point; the phase alone took 29.1): in `h` itself from 16, 33.9 (nearly
+/// every band failing at 16: `sin phi` has a square-root branch point just
+/// above the band's top) and from 32, 29.3; in `tau = sqrt(h_b - h)`, which
+/// removes it, from 16, 28.9 (most bands passing at 24), from 24, 26.2, and
+/// from 32, 28.3.
+const LENGTH_FIRST_ORDER: usize = 24;
 /// Highest Gauss order tried per piece.
 pub(crate) const MAX_ORDER: usize = 256;
 /// The orders a piece's ladder may take: from [`LOOSE_ORDER`] or [`MIN_ORDER`]
@@ -404,16 +412,24 @@ impl Foundation {
     }
 
     /// Order-`m` Gauss-Legendre sums over the stick-first band's springs
-    /// given by their stick's half-length `h` in `[a, b]`
-    /// ([`Velocity::stick_first_by_half_length`]: no root to find), the
-    /// Jacobian `|dz/du| |du/dh|`.
-    pub(super) fn pass_length(&self, vel: &Velocity, a: f64, b: f64, m: usize) -> Pass {
+    /// given by their stick's half-length `h` ([`Velocity::stick_first_by_half_length`]:
+    /// no root to find), in `tau = sqrt(h_b - h)` (`h_b` the branch point
+    /// above the band, [`Velocity::stick_branch_half_length`], where `sin phi`
+    /// goes like `tau`: analytic in `tau`), held as `d = sqrt(h_b) - tau` in
+    /// `[0, d_top]` from the band's bottom (`h = 0`), so that `h = d (2
+    /// sqrt(h_b) - d) + (h_b - sqrt(h_b)^2)` keeps its digits at small
+    /// sticks. The Jacobian is `|dz/du| |du/dh| 2 tau`.
+    pub(super) fn pass_length(&self, vel: &Velocity, h_b: f64, d_top: f64, m: usize) -> Pass {
         let r = quad::rule(m, 0.0);
-        let half = 0.5 * (b - a);
+        let half = 0.5 * d_top;
+        let root = h_b.sqrt();
+        let residual = root.mul_add(-root, h_b);
         let mut acc = Acc::new();
         for (i, &x) in r.nodes.iter().enumerate() {
-            let n = vel.stick_first_by_half_length(a + half * (1.0 + x));
-            let jac = n.du_dh * self.jacobian(n.sin_u, n.cos_u, 0.0, n.u - self.u_star, Top::Regular);
+            let d = half * (1.0 + x);
+            let n = vel.stick_first_by_half_length(d * (2.0 * root - d) + residual);
+            let dh = 2.0 * (root - d);
+            let jac = dh * n.du_dh * self.jacobian(n.sin_u, n.cos_u, 0.0, n.u - self.u_star, Top::Regular);
             let b = mean_normal_sin_cos(n.beta, n.cos_u, n.sin_u);
             let f = [jac * b, jac * n.means.deficit, jac * n.means.tangential];
             acc.add(&r, i, f, jac * n.means.magnitude);
@@ -422,14 +438,13 @@ impl Foundation {
     }
 
     /// The stick-first band `h` in `[0, h_top]` by [`Foundation::pass_length`],
-    /// one piece from the mapped segments' first order. On the parabolic
-    /// table (this variable from vbar 0.02 on), from order 16: 33.9 nodes a
-    /// point where the phase took 29.1, nearly every band failing at 16 and
-    /// passing at 32; from 32: 29.3. With the variable from vbar 0.1 on, 29.1
-    /// nodes a point and 12 % fewer instructions than in the phase: a node
-    /// costs about half (one `sin_cos`, one arcsine, no root).
+    /// one piece from order [`LENGTH_FIRST_ORDER`] ([`LOOSE_ORDER`] at loose
+    /// tolerances).
     pub(super) fn band_by_length(&self, vel: &Velocity, h_top: f64, scale: [f64; MEANS]) -> Sums {
-        self.ladder(self.mapped_first_order(), |m| self.pass_length(vel, 0.0, h_top, m), scale)
+        let h_b = vel.stick_branch_half_length();
+        let d_top = h_b.sqrt() - (h_b - h_top).max(0.0).sqrt();
+        let first = if self.tol >= LOOSE_TOL { LOOSE_ORDER } else { LENGTH_FIRST_ORDER };
+        self.ladder(first, |m| self.pass_length(vel, h_b, d_top, m), scale)
     }
 
     /// A stick-first band analytic at its top, singular near an end (a
