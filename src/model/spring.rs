@@ -288,6 +288,15 @@ impl Velocity {
         0.5 * stick_phase(Start::Tangent, self, ROOT_RTOL_EVENTS).length
     }
 
+    /// Half the stick length of the stick-first spring whose contact starts
+    /// at phase `u` (`|pi/2 - u| < alpha`), to full precision (root-found).
+    pub(crate) fn stick_half_length_at(&self, u: f64) -> f64 {
+        let (sin_theta, cos_theta) = libm::sincos(u);
+        let eps = self.alpha + (FRAC_PI_2 - u);
+        let start = Start::Contact { theta: u, sin_theta, cos_theta, eps };
+        0.5 * stick_phase(start, self, ROOT_RTOL_EVENTS).length
+    }
+
     /// The branch point of [`Velocity::stick_first_by_half_length`] above the
     /// band: the `h` in `(0, pi)` where `g = vbar h/sin h` reaches 1, i.e.
     /// `w h - S(h) = 0` (in that form: no cancellation as `vbar -> 1`, where

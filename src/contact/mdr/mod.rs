@@ -313,15 +313,18 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     let near = if vbar == 0.0 { (inf, inf) } else { (u_sf, u_alpha) };
     let stick_means = if vel.is_some() { Means::StickFirst } else { Means::Slip };
     // The stick-first band in its springs' stick half-length where that
-    // variable serves (`by_length`), else in the contact phase.
+    // variable serves (`by_length`); below the centre's threshold, its part
+    // away from it (`centre_by_length`); else in the contact phase.
     let by_length = vel.filter(|v| {
         top_of(u_sf) == Top::Regular
             && v.vbar >= BY_LENGTH_MIN_VBAR
             && contact.singular_distance(u_sf, Top::Regular) >= BY_LENGTH_JACOBIAN_DISTANCE * (u_low - u_sf)
     });
-    let stick_first = match by_length {
-        Some(v) => contact.band_by_length(&v, v.tangent_half_length(), perm.sums.value),
-        None => contact.band(u_sf, u_low, top_of(u_sf), stick_means, near, perm.sums.value),
+    let centre_by_length = vel.filter(|v| top_of(u_sf) == Top::Centre && v.vbar >= BY_LENGTH_MIN_VBAR);
+    let stick_first = match (by_length, centre_by_length) {
+        (Some(v), _) => contact.band_by_length(&v, v.tangent_half_length(), perm.sums.value),
+        (None, Some(v)) => contact.band_centre_by_length(&v, u_sf, u_low, near, perm.sums.value),
+        (None, None) => contact.band(u_sf, u_low, top_of(u_sf), stick_means, near, perm.sums.value),
     };
     let plus = |a: [f64; MEANS], b: &Sums| std::array::from_fn(|k| a[k] + b.value[k]);
     // Slip first: its deficit is D(vbar) per spring, in closed form.
