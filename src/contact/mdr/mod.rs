@@ -109,9 +109,11 @@ pub struct MdrResult {
 /// Below this `vbar` the stick-first band is integrated in the contact phase
 /// `u`, not in the stick's half-length ([`Foundation::band_by_length`]): its
 /// top `u = arcsin vbar` comes out of the closed form as `pi/2 - beta`, whose
-/// absolute rounding is `eps/vbar` of it relatively (10 eps here; the sine
-/// of `u`, from the addition formulas, likewise), where the phase keeps every
-/// digit (on the parabolic table 0.02 and 0.1 cost within 1.3 % of each other).
+/// absolute rounding is `eps/vbar` of it relatively, and the sine of `u`,
+/// from the addition formulas, cancels there (measured near the top: up to
+/// 13 eps at vbar 0.1, within the [`crate::ratio::ROUNDING_PER_TERM`] of 16
+/// the error estimate allows a node; 15 at 0.05, 190 at 0.02), where the phase keeps every digit
+/// (on the parabolic table 0.02 and 0.1 cost within 1.3 % of each other).
 const BY_LENGTH_MIN_VBAR: f64 = 0.1;
 /// Nor where the Jacobian's branch point `u*` lies above the band's top
 /// closer than this fraction of the band's width (`amp` or `amp sqrt(1 -
