@@ -714,3 +714,35 @@ impl Foundation {
         total
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// [`Foundation::next_order`] against orders worked out by hand from its
+    /// model (`m' - m >= m ln(err/(margin lim)) / (3 ln(1/q))`, the smallest
+    /// of [`ORDERS`] above, at most `2 m`); the grid's node count sees only its
+    /// sum (`tests/mdr.rs`), not each choice.
+    #[test]
+    fn the_next_order_is_the_predicted_one() {
+        let f = Foundation::new(2.0, 0.5, None, crate::shape::DEFAULT_TOL);
+        let pass = |decay: [f64; MEANS]| Pass { sum: [1.0; MEANS], magnitude: 0.0, truncation: None, decay };
+        let lim = [1e-15; MEANS];
+        let within = 1e-16;
+        // q = 0.01, 100 times the limit: ln(400) 16/(3 ln 100) = 6.9 -> 23 -> 24.
+        assert_eq!(f.next_order(16, &pass([0.01, 0.5, 0.5]), &[1e-13, within, within], &lim), 24);
+        // Two failing means: the larger need (q = 0.1, 10 times: ln(40) 16/(3 ln 10) = 8.5 -> 25 -> 32).
+        assert_eq!(f.next_order(16, &pass([0.01, 0.1, 0.5]), &[1e-13, 1e-14, within], &lim), 32);
+        // A slow decay needs more than a doubling: the doubling.
+        assert_eq!(f.next_order(16, &pass([0.5, 0.5, 0.5]), &[1e-9, within, within], &lim), 32);
+        // No decay measured (q = 1, or q = 0: no coefficients), the doubling.
+        assert_eq!(f.next_order(24, &pass([1.0, 0.5, 0.5]), &[1e-14, within, within], &lim), 48);
+        assert_eq!(f.next_order(24, &pass([0.0, 0.5, 0.5]), &[1e-14, within, within], &lim), 48);
+        // A fast decay just above the limit: the next order of the set (24 + 2 -> 32).
+        assert_eq!(f.next_order(24, &pass([1e-4, 0.5, 0.5]), &[2e-15, within, within], &lim), 32);
+        // ln(40) 32/(3 ln 10) = 17.1 -> 50 -> 64.
+        assert_eq!(f.next_order(32, &pass([0.1, 0.5, 0.5]), &[1e-14, within, within], &lim), 64);
+        // A mean exactly at its limit is within it: its slow decay does not count.
+        assert_eq!(f.next_order(16, &pass([0.01, 0.9, 0.5]), &[1e-13, 1e-15, within], &lim), 24);
+    }
+}
