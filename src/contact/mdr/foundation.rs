@@ -604,20 +604,14 @@ impl Foundation {
         scale: [f64; MEANS],
     ) -> Sums {
         let width = bottom - top;
-        let floor = width * 2f64.powi(-(MAX_PIECES as i32 / 2 - 2));
-        let jac = self.singular_distance(top, Top::Centre).max(width * 2f64.powi(-JACOBIAN_LEVELS));
+        let (jac, above, below) = self.floored_distances(top, width, Top::Centre, near);
         let mut cuts = vec![top];
-        for (start, ratio) in [(jac, JACOBIAN_GRADE_RATIO), (near.0.max(floor), GRADE_RATIO)] {
-            let mut d = start;
-            while d < ratio * width {
-                cuts.push(top + d);
-                d *= 2.0;
-            }
-        }
+        grade(&mut cuts, jac, JACOBIAN_GRADE_RATIO * width, top, 1.0);
+        grade(&mut cuts, above, GRADE_RATIO * width, top, 1.0);
         // Without a cut above, the band is split in half where the phase
         // would grade towards its bottom at least twice (the means'
         // singularity `near.1` below it, which the half-length does not see).
-        if cuts.len() < 2 && near.1.max(floor) < CENTRE_SPLIT_BELOW * width {
+        if cuts.len() < 2 && below < CENTRE_SPLIT_BELOW * width {
             cuts.push(top + 0.5 * width);
         }
         cuts.sort_by(f64::total_cmp);
@@ -636,6 +630,27 @@ impl Foundation {
             total += self.piece(a, b, k, Means::StickFirst, sc);
         }
         total
+    }
+
+    /// The distances of a band's singularities that [`Foundation::band`] and
+    /// [`Foundation::band_centre_by_length`] grade towards: the Jacobian's
+    /// branch point above `top`, and `near` above and below, floored.
+    /// Singularities closer than these are treated as at them (as graded
+    /// pieces stop there): what lies between is at most 2^-48 of the band's
+    /// width (2^-90 towards the Jacobian's branch point). At amp = 1 (u* = 0)
+    /// a regular top's distance to the branch point is the top itself, exact,
+    /// however small (the stick-first band's top is arcsin(vbar)): floored,
+    /// the mapping put the branch point at 2^-90 of the width, and `power:20`
+    /// at vbar 1e-40 lost 2.5e-5 of mu, with an estimate of 6.9e-6.
+    fn floored_distances(&self, top: f64, width: f64, kind: Top, near: (f64, f64)) -> (f64, f64, f64) {
+        let floor = width * 2f64.powi(-(MAX_PIECES as i32 / 2 - 2));
+        let distance = self.singular_distance(top, kind);
+        let jac = if self.amp == 1.0 && kind == Top::Regular {
+            distance.max(f64::MIN_POSITIVE)
+        } else {
+            distance.max(width * 2f64.powi(-JACOBIAN_LEVELS))
+        };
+        (jac, near.0.max(floor), near.1.max(floor))
     }
 
     /// Integrate the band `u` in `[top, bottom]` with close singularities:
@@ -660,22 +675,8 @@ impl Foundation {
             return total;
         }
         let width = bottom - top;
-        let floor = width * 2f64.powi(-(MAX_PIECES as i32 / 2 - 2));
-        // Singularities closer than these are treated as at them (as graded
-        // pieces stop there): what lies between is at most 2^-48 of the
-        // band's width (2^-90 towards the Jacobian's branch point).
-        // At amp = 1 (u* = 0) a regular top's distance to the branch point is
-        // the top itself, exact, however small (the stick-first band's top is
-        // arcsin(vbar)): floored, the mapping put the branch point at 2^-90 of
-        // the width, and `power:20` at vbar 1e-40 lost 2.5e-5 of mu, with an
-        // estimate of 6.9e-6.
-        let distance = self.singular_distance(top, kind);
-        let jac = if self.amp == 1.0 && kind == Top::Regular {
-            distance.max(f64::MIN_POSITIVE)
-        } else {
-            distance.max(width * 2f64.powi(-JACOBIAN_LEVELS))
-        };
-        let (above, below) = (jac.min(near.0.max(floor)), near.1.max(floor));
+        let (jac, near_above, below) = self.floored_distances(top, width, kind, near);
+        let above = jac.min(near_above);
         let close = |d: f64| d < GRADE_RATIO * width;
         if means == Means::StickFirst && kind == Top::Regular && (close(above) || close(below)) {
             let side = |d: f64| if close(d) { d } else { FAR_SIDE * width };
@@ -687,17 +688,9 @@ impl Foundation {
         // every piece is at least its own width away from them, up to a quarter
         // of the band's width (Gauss copes beyond), so that the gradings from
         // opposite ends never cross.
-        for (start, ratio, sign, from) in [
-            (jac, JACOBIAN_GRADE_RATIO, 1.0, top),
-            (near.0.max(floor), GRADE_RATIO, 1.0, top),
-            (near.1.max(floor), GRADE_RATIO, -1.0, bottom),
-        ] {
-            let mut d = start;
-            while d < ratio * width {
-                cuts.push(from + sign * d);
-                d *= 2.0;
-            }
-        }
+        grade(&mut cuts, jac, JACOBIAN_GRADE_RATIO * width, top, 1.0);
+        grade(&mut cuts, near_above, GRADE_RATIO * width, top, 1.0);
+        grade(&mut cuts, below, GRADE_RATIO * width, bottom, -1.0);
         cuts.sort_by(f64::total_cmp);
         cuts.dedup();
         // Widest pieces first: their sum sets the absolute scale that the tiny
@@ -712,6 +705,17 @@ impl Foundation {
             total += pc;
         }
         total
+    }
+}
+
+/// Cuts at `from + sign d 2^k` for `k = 0, 1, ...` while `d 2^k < until`:
+/// every piece at least its own width away from a singularity at distance
+/// `d` beyond `from`.
+fn grade(cuts: &mut Vec<f64>, d: f64, until: f64, from: f64, sign: f64) {
+    let mut d = d;
+    while d < until {
+        cuts.push(from + sign * d);
+        d *= 2.0;
     }
 }
 
