@@ -1263,7 +1263,8 @@ mod tests {
     /// none from the closed forms): 42 springs, vbar 0.1 to 0.9999, sticks of
     /// 0.001 to 1 of the tangent start's. The deficit's error stays within
     /// `4 eps` of its `magnitude` (the rounding bound the estimate takes), and
-    /// that magnitude within 40 times the deficit. The references are taken at
+    /// that magnitude between 2 and 40 times the deficit, above 8 where the
+    /// form cancels most. The references are taken at
     /// the doubles the test passes (`vbar = 0.9999` as a decimal moves `w` by
     /// 5e-14 relatively, and the deficit by 250 eps).
     #[test]
@@ -1273,7 +1274,7 @@ mod tests {
         let cases = v["cases"].as_array().unwrap();
         assert_eq!(cases.len(), 42);
         let num = |x: &serde_json::Value| x.as_str().unwrap().parse::<f64>().unwrap();
-        let (mut worst, mut worst_ratio) = ([0.0f64; 5], 0.0f64);
+        let (mut worst, mut worst_ratio, mut least_ratio) = ([0.0f64; 5], 0.0f64, f64::INFINITY);
         for c in cases {
             let (vbar, h) = (c["vbar"].as_f64().unwrap(), c["h"].as_f64().unwrap());
             let n = Velocity::new(vbar).stick_first_by_half_length(h);
@@ -1290,11 +1291,17 @@ mod tests {
                 *w = w.max(e);
             }
             worst_ratio = worst_ratio.max(n.means.magnitude / n.means.deficit);
+            least_ratio = least_ratio.min(n.means.magnitude / n.means.deficit);
         }
-        eprintln!("{worst:?}, magnitude/deficit {worst_ratio}");
-        // The deficit's rounding within its bound (observed 0.22 of it), the
-        // bound not loose (magnitude/deficit observed 16.6).
-        assert!(worst[4] <= 1.0 && worst_ratio <= 40.0, "{worst:?} {worst_ratio}");
+        eprintln!("{worst:?}, magnitude/deficit {least_ratio} to {worst_ratio}");
+        // The deficit's rounding within its bound (observed 0.22 of it); the
+        // bound at least the deficit, growing with the cancellation of `w h -
+        // S(h)` where that is strong, and not loose (magnitude/deficit observed
+        // 3.0 to 16.6).
+        assert!(
+            worst[4] <= 1.0 && least_ratio >= 2.0 && (8.0..=40.0).contains(&worst_ratio),
+            "{worst:?} {worst_ratio}"
+        );
         // Regression bars, about ten times the observed 1, 3, 4 and 1.5 eps.
         assert!(worst[0] <= 8.0 && worst[1] <= 32.0 && worst[2] <= 32.0 && worst[3] <= 16.0, "{worst:?}");
     }
