@@ -329,12 +329,10 @@ mod tests {
     /// (beta = -0.875).
     #[test]
     fn rules_match_25_digit_values() {
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/gauss-jacobi.json");
-        let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
-        let cases = v["cases"].as_array().unwrap();
+        let cases = crate::numerics::reference_cases("gauss-jacobi.json");
         assert_eq!(cases.len(), 84);
         let (mut worst_node, mut worst_weights) = (0.0f64, 0.0f64);
-        for c in cases {
+        for c in &cases {
             let (m, beta) = (c["m"].as_u64().unwrap() as usize, c["beta"].as_f64().unwrap());
             let r = gauss_jacobi(m, beta);
             let num = |x: &serde_json::Value| x.as_str().unwrap().parse::<f64>().unwrap();
