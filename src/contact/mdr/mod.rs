@@ -40,6 +40,15 @@
 //! coefficients at the same nodes (`quad::Rule::truncation`; after a doubling,
 //! at most the difference of the two passes) is within the relative tolerance;
 //! the estimates of the pieces add up to the reported one.
+//!
+//! # The stick-first band in the stick's half-length
+//! From vbar 0.1 on, the stick-first band (or, below the contact centre's
+//! threshold, its part away from it) is integrated in its springs' stick
+//! half-length `h` instead of the phase: the spring whose stick lasts `2h`
+//! starts it at `beta = h - arccos(vbar h/sin h)` and loses `sin(phi)(sin h -
+//! h cos h)/pi` ([`crate::spring`]'s closed form), so a node needs no root;
+//! in `tau = sqrt(h_b - h)`, `h_b` the square-root branch point where `vbar h
+//! = sin h`, the integrand is analytic up to the band's top.
 
 mod foundation;
 mod normal;
@@ -112,8 +121,9 @@ pub struct MdrResult {
 /// absolute rounding is `eps/vbar` of it relatively, and the sine of `u`,
 /// from the addition formulas, cancels there (measured near the top: up to
 /// 13 eps at vbar 0.1, within the [`crate::ratio::ROUNDING_PER_TERM`] of 16
-/// the error estimate allows a node; 15 at 0.05, 190 at 0.02), where the phase keeps every digit
-/// (on the parabolic table 0.02 and 0.1 cost within 1.3 % of each other).
+/// the error estimate allows a node; 15 at 0.05, 190 at 0.02), where the
+/// phase keeps every digit (on the parabolic table 0.02 and 0.1 cost within
+/// 1.3 % of each other).
 const BY_LENGTH_MIN_VBAR: f64 = 0.1;
 /// Nor where the Jacobian's branch point `u*` lies above the band's top
 /// closer than this fraction of the band's width (`amp` or `amp sqrt(1 -
