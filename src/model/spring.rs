@@ -341,8 +341,8 @@ impl Velocity {
         // of non-negative terms above.
         let t3 = if ch > 0.0 { h * sh * sh / (1.0 + ch) - s_h } else { sh - h * ch };
         let g = vbar * h / sh;
-        let (wh, rest) = (self.w * h, s_h);
-        let sin_phi = ((wh - rest) / sh * (1.0 + g)).sqrt();
+        let wh = self.w * h;
+        let sin_phi = ((wh - s_h) / sh * (1.0 + g)).sqrt();
         // phi = arccos g and a = arcsin g = pi/2 - phi, the smaller directly.
         let (phi, a) = if g <= FRAC_1_SQRT_2 {
             let a = g.asin();
@@ -359,12 +359,11 @@ impl Velocity {
         let tangential =
             (2.0 * vbar * h * h + sin_b * x_minus_sin_with(e, 2.0 * g * sin_phi) + 2.0 * cos_b * g * g) / TAU;
         // Rounding: sin phi carries the cancellation of w h - S(h).
-        let magnitude = deficit * (2.0 + (wh + rest) / (wh - rest));
+        let magnitude = deficit * (2.0 + (wh + s_h) / (wh - s_h));
         LengthNode {
-            u: FRAC_PI_2 - beta,
+            beta,
             sin_u: cos_b,
             cos_u: sin_b,
-            beta,
             du_dh: 1.0 + vbar * t3 / (sh * sh * sin_phi),
             means: StickMeans { deficit, tangential, magnitude },
         }
@@ -428,12 +427,11 @@ struct StickSolution {
 /// ([`Velocity::stick_first_by_half_length`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct LengthNode {
-    /// The contact phase `u = theta = pi/2 - beta`, and its sine and cosine (`s`).
-    pub(crate) u: f64,
+    /// The stick's start `beta`; the contact phase is `u = pi/2 - beta`.
+    pub(crate) beta: f64,
+    /// `sin u = cos beta` and `cos u = sin beta` (`s`).
     pub(crate) sin_u: f64,
     pub(crate) cos_u: f64,
-    /// `beta = pi/2 - u`.
-    pub(crate) beta: f64,
     /// `|du/dh|`.
     pub(crate) du_dh: f64,
     pub(crate) means: StickMeans,
@@ -706,8 +704,9 @@ const SHORT_STICK_MAX_STEPS: u32 = 12;
 /// `G = (cos(alpha - d) - cos alpha) - cos(alpha - d) S(h)/h`, where
 /// `cos(alpha - d) - cos alpha = c sin d - vbar sin^2 d/(1 + cos d)`
 /// (`c = sin alpha`; `d <= eps/24` is small): from the sines and cosines of
-/// `h` and `d` alone (those of `d <= eps/2 < pi/16` by their series). The root lies in `[eps/2, eps]` (for `eps < alpha/4`,
-/// `G(eps/2) > 0` and `G(eps) < 0`); Halley's method starts from its series
+/// `h` and `d` alone (those of `d <= eps/2 < pi/16` by their series). The
+/// root lies in `[eps/2, eps]` (for `eps < alpha/4`, `G(eps/2) > 0` and
+/// `G(eps) < 0`); Halley's method starts from its series
 /// `d = t eps^2/6 - t^2 eps^3/18 + (t^3/27 + 7t/360) eps^4` (`t = cot alpha`).
 ///
 /// The deficit `(1/2pi) int_0^L H = (1/2pi) [L sin beta + cos beta -
@@ -1205,12 +1204,6 @@ mod tests {
         assert!(worst < GUESS_ACCURACY, "{worst:e}");
     }
 
-    /// What the Halley starts of a stick from contact buy, in both forms (the
-    /// tail below `vbar = 1/2`, the length above), at both precisions: the
-    /// evaluations over a 99 x 99 grid of springs (`s` in (-1, 1), `vbar` in
-    /// (0, 1)) within 2 % of those measured. A worse start, or a wrong
-    /// derivative (Halley falls back to Newton's order, or leaves the bracket),
-    /// costs more without changing a root.
     /// The closed form in the stick's half-length against the root-found
     /// stick from contact at the same phase `u`: the deficit, the tangential
     /// mean and the stick's length agree within `8 eps (1 + k)`, `k = |u
@@ -1243,9 +1236,10 @@ mod tests {
             for k in 1..40 {
                 let h = h_t * k as f64 / 40.0;
                 let n = vel.stick_first_by_half_length(h);
-                let (su, cu) = libm::sincos(n.u);
+                let u = FRAC_PI_2 - n.beta;
+                let (su, cu) = libm::sincos(u);
                 assert!((n.sin_u - su).abs() <= 4.0 * f64::EPSILON && (n.cos_u - cu).abs() <= 4.0 * f64::EPSILON);
-                let (x, up, down) = (root_found(n.u), root_found(n.u * (1.0 + 1e-7)), root_found(n.u * (1.0 - 1e-7)));
+                let (x, up, down) = (root_found(u), root_found(u * (1.0 + 1e-7)), root_found(u * (1.0 - 1e-7)));
                 let ours = [n.means.deficit, n.means.tangential, 2.0 * h];
                 for q in 0..3 {
                     let cond = ((up[q] / down[q]).ln() / 2e-7).abs();
@@ -1326,6 +1320,12 @@ mod tests {
         }
     }
 
+    /// What the Halley starts of a stick from contact buy, in both forms (the
+    /// tail below `vbar = 1/2`, the length above), at both precisions: the
+    /// evaluations over a 99 x 99 grid of springs (`s` in (-1, 1), `vbar` in
+    /// (0, 1)) within 2 % of those measured. A worse start, or a wrong
+    /// derivative (Halley falls back to Newton's order, or leaves the bracket),
+    /// costs more without changing a root.
     #[test]
     fn a_stick_from_contact_costs_what_was_measured() {
         let mut count = [[0u32; 2]; 2];

@@ -45,14 +45,16 @@ fn slip_first_tangential(u: f64, sin_u: f64, cos_u: f64, delta: f64, excess: f64
 
 /// [`Foundation::band_centre_by_length`] splits a band without cuts towards
 /// its top where the means' singularity below its bottom is closer than this
-/// fraction of its width. Measured on the parabolic table (nodes a point,
-/// instructions a row): without the split 26.22 and 29,827; with it from
-/// 0.25 (where the phase grades once) 26.22, from 0.125 25.53 and 28,524,
-/// from 0.0625 25.98. Splitting at 0.3, 0.5 or 0.7 of the width costs the same.
+/// fraction of its width. Measured on the parabolic table (nodes a point, and
+/// instructions a row of a build that read these settings from the
+/// environment): without the split 26.22 and 29,827; with it from 0.25
+/// (where the phase grades once) 26.22, from 0.125 25.53 and 28,524, from
+/// 0.0625 25.98. Splitting at 0.3, 0.5 or 0.7 of the width costs the same.
 const CENTRE_SPLIT_BELOW: f64 = 0.125;
 /// First order of a stick-first band in the stick's half-length
 /// ([`Foundation::band_by_length`]). Measured on the parabolic table (nodes a
-/// point; the phase alone took 29.1): in `h` itself from 16, 33.9 (nearly
+/// point; the phase alone took 29.1): in `h` itself (from vbar 0.02) from
+/// 16, 33.9 (nearly
 /// every band failing at 16: `sin phi` has a square-root branch point just
 /// above the band's top) and from 32, 29.3; in `tau = sqrt(h_b - h)`, which
 /// removes it, from 16, 28.9 (most bands passing at 24), from 24, 26.2, and
@@ -112,9 +114,10 @@ const JACOBIAN_LEVELS: i32 = 90;
 /// grid's 281 segments failed (197 of them within the tolerance already, but
 /// their estimate 10^5 times above it: the estimate claims the decay of the
 /// last doubling once, safe for algebraic decays and pessimistic by that decay
-/// again for geometric ones, which the mapped integrand has); starting at
-/// [`mapped_first_order`]'s 32, the grid's nodes a point for segments of 3.5,
-/// 4.0, 4.5, 5.0 and 5.5 were 28.8, 29.4, 29.0, 28.3 and 29.2.
+/// again for geometric ones, which the mapped integrand has). With the next
+/// order predicted ([`Foundation::next_order`]), segments of 4.5, 5.0 and 5.5
+/// from [`Foundation::mapped_first_order`]'s 32 took 28.97, 29.08 and 29.24
+/// nodes a point on the grid; 3.5 and 4.0 from 24 took 28.84 and 29.43.
 const SEGMENT: f64 = 5.0;
 /// A side of a mapped band whose singularity lies beyond `GRADE_RATIO` of
 /// the width is mapped as if it lay this many widths away (nearly linear there).
@@ -436,7 +439,8 @@ impl Foundation {
             let d = half * (1.0 + x);
             let n = vel.stick_first_by_half_length(d * (2.0 * root - d) + residual);
             let dh = 2.0 * (root - d);
-            let jac = dh * n.du_dh * self.jacobian(n.sin_u, n.cos_u, 0.0, n.u - self.u_star, Top::Regular);
+            let from_star = (FRAC_PI_2 - n.beta) - self.u_star;
+            let jac = dh * n.du_dh * self.jacobian(n.sin_u, n.cos_u, 0.0, from_star, Top::Regular);
             let b = mean_normal_sin_cos(n.beta, n.cos_u, n.sin_u);
             let f = [jac * b, jac * n.means.deficit, jac * n.means.tangential];
             acc.add(&r, i, f, jac * n.means.magnitude);
@@ -505,8 +509,9 @@ impl Foundation {
     /// The first order of a mapped segment: one doubling above
     /// [`Foundation::first_order`] (see [`SEGMENT`]: at order 16 nearly every
     /// segment of the parabolic table failed; from 32, 34.5 nodes a point
-    /// became 29.8, and 32.8 -> 28.6, 51.1 -> 46.2 and 55.8 -> 52.3 for the
-    /// exponents 1, 3 and 0.5, with [`Foundation::next_order`] 28.3, 44.8 and 49.3).
+    /// became 29.8, and 51.1 -> 46.2 and 55.8 -> 52.3 for the exponents 3 and
+    /// 0.5; with [`Foundation::next_order`] too, 29.1, 44.8 and 49.3, and 32.8
+    /// -> 28.6 for the cone).
     fn mapped_first_order(&self) -> usize {
         2 * self.first_order()
     }

@@ -122,8 +122,8 @@ pub struct MdrResult {
 /// from the addition formulas, cancels there (measured near the top: up to
 /// 13 eps at vbar 0.1, within the [`crate::ratio::ROUNDING_PER_TERM`] of 16
 /// the error estimate allows a node; 15 at 0.05, 190 at 0.02), where the
-/// phase keeps every digit (on the parabolic table 0.02 and 0.1 cost within
-/// 1.3 % of each other).
+/// phase keeps every digit (on the parabolic table, with the form still in
+/// `h` rather than `tau`, 0.02 and 0.1 cost within 1.3 % of each other).
 const BY_LENGTH_MIN_VBAR: f64 = 0.1;
 /// Nor where the Jacobian's branch point `u*` lies above the band's top
 /// closer than this fraction of the band's width (`amp` or `amp sqrt(1 -
