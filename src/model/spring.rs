@@ -337,9 +337,7 @@ impl Velocity {
         let vbar = self.vbar;
         let (sh, ch) = libm::sincos(h);
         let s_h = x_minus_sin_with(h, sh);
-        // sin h - h cos h: h (1 - cos h) - S(h) below pi/2 (about h^3/3), a sum
-        // of non-negative terms above.
-        let t3 = if ch > 0.0 { h * sh * sh / (1.0 + ch) - s_h } else { sh - h * ch };
+        let t3 = sin_minus_x_cos(h, sh, ch, s_h);
         let g = vbar * h / sh;
         let wh = self.w * h;
         let sin_phi = ((wh - s_h) / sh * (1.0 + g)).sqrt();
@@ -366,7 +364,46 @@ impl Velocity {
             cos_u: sin_b,
             du_dh: 1.0 + vbar * t3 / (sh * sh * sin_phi),
             means: StickMeans { deficit, tangential, magnitude },
+            sin_h: sh,
+            g,
+            sin_phi,
         }
+    }
+
+    /// The top `h*` of a band in the half-length, as
+    /// [`Velocity::phase_below_top`] needs it.
+    pub(crate) fn length_top(&self, h: f64) -> LengthTop {
+        let (sh, ch) = libm::sincos(h);
+        let node = self.stick_first_by_half_length(h);
+        let t3 = sin_minus_x_cos(h, sh, ch, x_minus_sin_with(h, sh));
+        LengthTop { h, sin_h: sh, cos_h: ch, t3, node }
+    }
+
+    /// `u(h* - rho) - u(h*)` of [`Velocity::stick_first_by_half_length`]'s
+    /// springs, to full relative accuracy as `rho -> 0` (`node` is the spring
+    /// at `h = h* - rho`, `u_top` the phase the band's top stands for).
+    ///
+    /// With `u = pi/2 - h + phi`, it is `rho + (phi - phi*)`, two non-negative
+    /// terms (`g = vbar h/sin h` rises with `h`, so `phi = arccos g` falls).
+    /// `sin(phi - phi*) = sin phi g* - g sin phi* = dg (g (g + g*)/(sin phi +
+    /// sin phi*) + sin phi)` with `dg = g* - g = vbar N/(sin h sin h*)` and `N
+    /// = h* sin h - h sin h* = rho (sin h* - h* cos h*) + h* cos h* S(rho) - 2
+    /// h* sin h* sin^2(rho/2)` (from `sin(h* - rho)` by the addition formula,
+    /// in `h*` and `rho` alone, so that the top is exactly `rho` away). That
+    /// form loses a few digits at most while `rho <= h*/2` (a factor 5 at `h*
+    /// -> 0`); beyond, `u - u*` is at least `rho` (`|du/dh| >= 1`) and the
+    /// plain difference `(pi/2 - beta) - u_top` keeps its relative accuracy.
+    pub(crate) fn phase_below_top(&self, top: &LengthTop, rho: f64, node: &LengthNode, u_top: f64) -> f64 {
+        if rho > 0.5 * top.h {
+            return (FRAC_PI_2 - node.beta) - u_top;
+        }
+        let (s2, c2) = libm::sincos(0.5 * rho);
+        let n =
+            rho * top.t3 + top.h * top.cos_h * x_minus_sin_with(rho, 2.0 * s2 * c2) - 2.0 * top.h * top.sin_h * s2 * s2;
+        let dg = self.vbar * n.max(0.0) / (node.sin_h * top.sin_h);
+        let (g, gt) = (node.g, top.node.g);
+        let sin_diff = dg * (g * (g + gt) / (node.sin_phi + top.node.sin_phi) + node.sin_phi);
+        rho + sin_diff.min(1.0).asin()
     }
 
     /// The means of the stick-first spring whose contact starts at phase
@@ -435,6 +472,32 @@ pub(crate) struct LengthNode {
     /// `|du/dh|`.
     pub(crate) du_dh: f64,
     pub(crate) means: StickMeans,
+    /// `sin h`, `g = vbar h/sin h = cos phi` and `sin phi`.
+    pub(crate) sin_h: f64,
+    pub(crate) g: f64,
+    pub(crate) sin_phi: f64,
+}
+
+/// `sin h - h cos h` given `sin h`, `cos h` and `S(h) = h - sin h`: `h (1 -
+/// cos h) - S(h)` below `pi/2` (about `h^3/3`), a sum of non-negative terms
+/// above.
+fn sin_minus_x_cos(h: f64, sh: f64, ch: f64, s_h: f64) -> f64 {
+    if ch > 0.0 {
+        h * sh * sh / (1.0 + ch) - s_h
+    } else {
+        sh - h * ch
+    }
+}
+
+/// The top of a band in the stick's half-length ([`Velocity::length_top`]):
+/// `h*`, `sin h*`, `cos h*`, `sin h* - h* cos h*` and its spring.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct LengthTop {
+    pub(crate) h: f64,
+    sin_h: f64,
+    cos_h: f64,
+    t3: f64,
+    pub(crate) node: LengthNode,
 }
 
 /// The means of a stick-first spring ([`Velocity::stick_first_means`]).

@@ -238,6 +238,22 @@ pub(crate) fn one_minus_a_cos_asin(a: f64, v: f64) -> f64 {
     d / (1.0 + a * c)
 }
 
+/// Compensated (Kahan) summation.
+#[derive(Debug, Default, Clone, Copy)]
+pub(crate) struct Kahan {
+    pub(crate) sum: f64,
+    carry: f64,
+}
+
+impl Kahan {
+    pub(crate) fn add(&mut self, x: f64) {
+        let y = x - self.carry;
+        let t = self.sum + y;
+        self.carry = (t - self.sum) - y;
+        self.sum = t;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -17,6 +17,7 @@
 use crate::error::{check_nonneg, Error, Result};
 use crate::ratio::Ratio;
 use crate::shape::Shape;
+use crate::special::Kahan;
 use std::f64::consts::TAU;
 
 /// Period means from a time-stepping run.
@@ -41,22 +42,6 @@ impl SteppedMeans {
         } else {
             1.0
         }
-    }
-}
-
-/// Compensated (Kahan) summation.
-#[derive(Default)]
-struct Kahan {
-    sum: f64,
-    carry: f64,
-}
-
-impl Kahan {
-    fn add(&mut self, x: f64) {
-        let y = x - self.carry;
-        let t = self.sum + y;
-        self.carry = (t - self.sum) - y;
-        self.sum = t;
     }
 }
 

@@ -4,7 +4,7 @@
 //! coefficients is within the tolerance.
 
 use crate::quad;
-use crate::spring::{mean_normal_sin_cos, Velocity};
+use crate::spring::{mean_normal_sin_cos, LengthTop, Velocity};
 use std::f64::consts::FRAC_PI_2;
 
 /// What a band's nodes compute besides the normal force `<B>`.
@@ -60,6 +60,9 @@ const CENTRE_SPLIT_BELOW: f64 = 0.125;
 /// removes it, from 16, 28.9 (most bands passing at 24), from 24, 26.2, and
 /// from 32, 28.3.
 const LENGTH_FIRST_ORDER: usize = 24;
+/// [`Foundation::band_centre_whole`] takes a band whose singularities lie at
+/// least this fraction of its width (in `tau`) above its top.
+const CENTRE_WHOLE_DISTANCE: f64 = 0.25;
 /// Highest Gauss order tried per piece.
 pub(crate) const MAX_ORDER: usize = 256;
 /// The orders a piece's ladder may take: from [`LOOSE_ORDER`] or [`MIN_ORDER`]
@@ -460,6 +463,62 @@ impl Foundation {
         self.ladder(first, |m| self.pass_length(vel, h_b, d_top, m), scale)
     }
 
+    /// Order-`m` Gauss-Jacobi sums over the whole stick-first band below the
+    /// contact centre's threshold (`u` in `[u*, pi/2 + alpha]`, `h` in `[0,
+    /// h*]`) in `tau = sqrt(h_b - h)` as [`Foundation::pass_length`], with the
+    /// Jacobian's weight `(u - u*)^gamma` taken as `t^gamma`, `t = tau - tau*`
+    /// from the top: `u - u*` is `t (2 tau* + t)` times an analytic positive
+    /// factor ([`Velocity::phase_below_top`] gives it to full relative
+    /// accuracy), so the node's Jacobian is `(1/n) (y/t)^gamma sin u |du/dh| 2
+    /// tau`, with `y/t = (y/d) (d/t)`, `d = u - u*`.
+    pub(super) fn pass_centre_length(&self, vel: &Velocity, h_b: f64, top: &LengthTop, m: usize) -> Pass {
+        let r = quad::rule(m, self.gamma);
+        let root = h_b.sqrt();
+        let tau_top = (h_b - top.h).sqrt();
+        let half = 0.5 * (root - tau_top);
+        let residual = root.mul_add(-root, h_b);
+        let k = 1.0 / self.n;
+        let mut acc = Acc::new();
+        for (i, &x) in r.nodes.iter().enumerate() {
+            // x = -1 at the top (t = 0), +1 at the bottom (e = 0, h = 0).
+            let (t, e) = (half * (1.0 + x), half * (1.0 - x));
+            let n = vel.stick_first_by_half_length(e * (2.0 * root - e) + residual);
+            let d = vel.phase_below_top(top, t * (2.0 * tau_top + t), &n, self.u_star);
+            let y_over_t = self.centre_ratio(d) * (d / t);
+            let jac = k * self.y_pow(y_over_t) * n.sin_u * n.du_dh * 2.0 * (root - e);
+            let b = mean_normal_sin_cos(n.beta, n.cos_u, n.sin_u);
+            let f = [jac * b, jac * n.means.deficit, jac * n.means.tangential];
+            acc.add(&r, i, f, jac * n.means.magnitude);
+        }
+        acc.finish(&r, half.powf(self.gamma + 1.0))
+    }
+
+    /// The stick-first band below the contact centre's threshold `u*` as one
+    /// piece of [`Foundation::pass_centre_length`], where its singularities
+    /// above the top lie at least [`CENTRE_WHOLE_DISTANCE`] of its width away
+    /// in `tau`: `tau = -tau*` (the other root of `u = u*`) and the Jacobian's
+    /// other branch point `u = -u*` (its distance in `tau` estimated from the
+    /// slope at the top). `None` where they lie closer.
+    pub(super) fn band_centre_whole(&self, vel: &Velocity, scale: [f64; MEANS]) -> Option<Sums> {
+        if self.u_star >= FRAC_PI_2 + vel.alpha {
+            return None;
+        }
+        let h_b = vel.stick_branch_half_length();
+        let top = vel.length_top(vel.stick_half_length_at(self.u_star));
+        if top.h.is_nan() || top.h >= h_b {
+            return None;
+        }
+        let tau_top = (h_b - top.h).sqrt();
+        let span = h_b.sqrt() - tau_top;
+        let slope = top.node.du_dh * 2.0 * tau_top;
+        let near = (2.0 * tau_top).min(2.0 * self.u_star / slope);
+        if near < CENTRE_WHOLE_DISTANCE * span {
+            return None;
+        }
+        let first = if self.tol >= LOOSE_TOL { MIN_ORDER } else { LENGTH_FIRST_ORDER };
+        Some(self.ladder(first, |m| self.pass_centre_length(vel, h_b, &top, m), scale))
+    }
+
     /// A stick-first band analytic at its top, singular near an end (a
     /// distance below `GRADE_RATIO` of its width: `near.0` or the Jacobian's
     /// branch point above the top, `near.1` below the bottom), in the mapped
@@ -608,6 +667,9 @@ impl Foundation {
         near: (f64, f64),
         scale: [f64; MEANS],
     ) -> Sums {
+        if let Some(s) = self.band_centre_whole(vel, scale) {
+            return s;
+        }
         let width = bottom - top;
         let (jac, above, below) = self.floored_distances(top, width, Top::Centre, near);
         let mut cuts = vec![top];

@@ -224,11 +224,11 @@ fn sliding(half: Option<f64>) -> MdrResult {
 /// their absolute accuracy, and the band is as thin as vbar^2 near vbar = 0.
 /// (For amp > 1, in the scaled units of the integrals: y/amp from 0.)
 /// `z_sf` is `z(u_sf)`, the plain form where `z1 = 0`.
-fn slip_first_width(contact: &Foundation, n: f64, amp: f64, z1: f64, u_sf: f64, z_sf: f64) -> f64 {
+fn slip_first_width(contact: &Foundation, n: f64, amp: f64, z1: f64, u_sf: f64, z_sf: impl Fn() -> f64) -> f64 {
     if amp > 1.0 {
         contact.y(u_sf).max(0.0).powf(1.0 / n)
     } else if z1 == 0.0 {
-        z_sf
+        z_sf()
     } else {
         let h = (0.5 * u_sf).sin();
         let (dy, y0) = (2.0 * amp * h * h, 1.0 - amp);
@@ -341,7 +341,7 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     let plus = |a: [f64; MEANS], b: &Sums| std::array::from_fn(|k| a[k] + b.value[k]);
     // Slip first: its deficit is D(vbar) per spring, in closed form.
     let d_perm = perm.deficit_per_spring;
-    let slip_first_width = slip_first_width(&contact, n, amp, z1, u_sf, z_of_u(u_sf));
+    let slip_first_width = slip_first_width(&contact, n, amp, z1, u_sf, || z_of_u(u_sf));
     let slip_first_deficit = if big { d_perm * slip_first_width } else { amp * d_perm * slip_first_width };
     let slip_bands = |scale: [f64; MEANS]| {
         let means = Means::SlipFirst { excess: perm.excess };
@@ -387,20 +387,26 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     }
     let (ratio, error_estimate) = ratio_of(&total, perm.deficit_magnitude, small_mu)?;
     let nn = total.value[NORMAL];
-    // The contact's edge; the slip-only band is empty where nothing slips only
-    // (u_low = pi at vbar = 0), not an ulp wide from two roundings of the edge.
-    let z_outer = (1.0 + amp).powf(1.0 / n);
-    let z_low = if u_low >= PI { z_outer } else { z_of_u(u_low) };
-    let parts = [
-        (BandKind::PermanentContact, [0.0, z1], perm.sums),
-        (if vel.is_some() { BandKind::SlipFirst } else { BandKind::SlipOnly }, [z1, z_of_u(u_sf)], slip_first),
-        (BandKind::StickFirst, [z_of_u(u_sf), z_low], stick_first),
-        (BandKind::SlipOnly, [z_low, z_outer], slip_only),
-    ];
-    // Shares of the tangential force from its own (cancellation-free) sum: as
-    // `nn - dd` they lost their relative accuracy with `mu` (the paraboloid's
-    // one band at amp 2 held 0.62 of it at vbar 1e-16, and none at 1e-20).
-    let band_list = if bands { band_report(&parts, nn, total.value[TANGENTIAL]) } else { vec![] };
+    // The bands' edges only where they are reported (four powers a point).
+    let band_list = if bands {
+        // The contact's edge; the slip-only band is empty where nothing slips only
+        // (u_low = pi at vbar = 0), not an ulp wide from two roundings of the edge.
+        let z_outer = (1.0 + amp).powf(1.0 / n);
+        let z_low = if u_low >= PI { z_outer } else { z_of_u(u_low) };
+        let z_sf = z_of_u(u_sf);
+        let parts = [
+            (BandKind::PermanentContact, [0.0, z1], perm.sums),
+            (if vel.is_some() { BandKind::SlipFirst } else { BandKind::SlipOnly }, [z1, z_sf], slip_first),
+            (BandKind::StickFirst, [z_sf, z_low], stick_first),
+            (BandKind::SlipOnly, [z_low, z_outer], slip_only),
+        ];
+        // Shares of the tangential force from its own (cancellation-free) sum: as
+        // `nn - dd` they lost their relative accuracy with `mu` (the paraboloid's
+        // one band at amp 2 held 0.62 of it at vbar 1e-16, and none at 1e-20).
+        band_report(&parts, nn, total.value[TANGENTIAL])
+    } else {
+        vec![]
+    };
     let mean_normal = Some(2.0 * unscale(nn)).filter(|x| x.is_finite());
     Ok(MdrResult { ratio, error_estimate, mean_normal, bands: band_list, nodes: total.nodes })
 }
