@@ -17,6 +17,7 @@ about ten minutes)
      python3 data/scripts/mdr_reference.py --sphere > data/sphere-reference.json
      python3 data/scripts/mdr_reference.py --flat-tip > data/flat-tip-reference.json
      python3 data/scripts/mdr_reference.py --amp-one > data/mdr-amp-one.json
+     python3 data/scripts/mdr_reference.py --small-vbar > data/mdr-small-vbar.json
 The second: the exact sphere of radius 1 (MDR profile (x/2) ln((1 + x)/(1 - x)))
 at a mean indentation of 1e-6, at sampled rows of the suite's tabulated sphere.
 The third: the sphere worn flat at its tip (`flat-tip:E`, E = 0.3 and 0.7).
@@ -186,6 +187,24 @@ if "--flat-tip" in sys.argv:
             print(f"flat-tip:{e} vbar={vbar} amp={amp}: {nstr(hi, 25)} (differ by {nstr(diff, 3)})", file=sys.stderr)
             cases.append({"flat_ratio": e, "vbar": vbar, "amp": amp, "mu_ratio": nstr(hi, 22), "reduction": nstr(1 - hi, 22)})
     print(json.dumps({"source": "data/scripts/mdr_reference.py --flat-tip (mpmath, tanh-sinh at 30 and 40 digits, which agree to 1e-20 or better; at amp 1 below vbar 1e-12 at up to 290 and 310; 22 digits written)", "cases": cases}, indent=1))
+    sys.exit(0)
+
+if "--small-vbar" in sys.argv:
+    # Between vbar 0.001 and 0.1 the stick-first band is integrated in the
+    # stick's half-length, its springs near a small top phase (arcsin vbar,
+    # or u* near it) with their phase taken from the top.
+    cases = []
+    for n in (0.5, 1.0, 2.0, 3.0):
+        for vbar in (0.001, 0.003, 0.0101, 0.02, 0.05):
+            for amp in (0.3, 0.55, 0.75, 0.95, 1.2, 2.0, 3.0):
+                lo, hi = mu(n, vbar, amp, 30), mu(n, vbar, amp, 40)
+                mp.dps = 40
+                diff = abs(hi - lo) / hi
+                assert diff < mpf(10) ** -20, (n, vbar, amp, diff)
+                print(f"n={n} vbar={vbar} amp={amp}: {nstr(hi, 25)} (differ by {nstr(diff, 3)})", file=sys.stderr)
+                cases.append({"n": n, "vbar": vbar, "amp": amp, "mu_ratio": nstr(hi, 25), "reduction": nstr(1 - hi, 25)})
+    source = "data/scripts/mdr_reference.py --small-vbar (mpmath, tanh-sinh at 30 and 40 digits, which agree to 1e-20 or better; 25 digits written)"
+    print(json.dumps({"source": source, "cases": cases}, indent=1))
     sys.exit(0)
 
 if "--sphere" in sys.argv:

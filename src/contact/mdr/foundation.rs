@@ -63,6 +63,11 @@ const LENGTH_FIRST_ORDER: usize = 24;
 /// [`Foundation::band_centre_whole`] takes a band whose singularities lie at
 /// least this fraction of its width (in `tau`) above its top.
 const CENTRE_WHOLE_DISTANCE: f64 = 0.25;
+/// The half-length forms take a spring's phase `u` from the band's top
+/// ([`Foundation::pass_length`], [`Foundation::pass_centre_length`]) where
+/// it is below this (and the spring in the top half): the addition formulas'
+/// `sin u` is within `eps/u` relatively, 4 eps here.
+const FROM_TOP_PHASE: f64 = 0.25;
 /// Highest Gauss order tried per piece.
 pub(crate) const MAX_ORDER: usize = 256;
 /// The orders a piece's ladder may take: from [`LOOSE_ORDER`] or [`MIN_ORDER`]
@@ -289,24 +294,24 @@ impl Foundation {
     /// `y` of `amp > 1` (scaled by `1/amp`) as `cos u* - cos u = 2 sin((u + u*)/2)
     /// sin((u - u*)/2)`, with `u - u*` given by the caller (`u` itself is not needed).
     fn y_product(&self, from_star: f64) -> f64 {
-        let (sum, s) = self.half_angles(from_star);
+        let (sum, s, _) = self.half_angles(from_star);
         2.0 * sum * s
     }
 
     /// `sin((u + u*)/2) = sin u* cos(d/2) + cos u* sin(d/2)` and `sin(d/2)`,
-    /// `d = u - u*` in `[0, pi - u*]`, from one `sin_cos`: two non-negative
+    /// `d = u - u*` in `[0, pi - u*]`, and `cos(d/2)`, from one `sin_cos`: two non-negative
     /// terms (both angles in `[0, pi/2]`), so no cancellation (two of glibc's
     /// sines took about 130 instructions a node, libm's `sin_cos` takes about 80).
-    fn half_angles(&self, d: f64) -> (f64, f64) {
+    fn half_angles(&self, d: f64) -> (f64, f64, f64) {
         let (sin_star, cos_star) = self.star_sin_cos;
         let (s, c) = libm::sincos(0.5 * d);
-        (sin_star * c + cos_star * s, s)
+        (sin_star * c + cos_star * s, s, c)
     }
 
     /// `y / (u - u*) = 2 sin((u + u*)/2) sin(d/2)/d` for `amp > 1`, `d = u - u*`
     /// ([`Foundation::half_angles`]).
     fn centre_ratio(&self, d: f64) -> f64 {
-        let (sum, s) = self.half_angles(d);
+        let (sum, s, _) = self.half_angles(d);
         2.0 * sum * s / d
     }
 
@@ -432,19 +437,44 @@ impl Foundation {
     /// `[0, d_top]` from the band's bottom (`h = 0`), so that `h = d (2
     /// sqrt(h_b) - d) + (h_b - sqrt(h_b)^2)` keeps its digits at small
     /// sticks. The Jacobian is `|dz/du| |du/dh| 2 tau`.
-    pub(super) fn pass_length(&self, vel: &Velocity, h_b: f64, d_top: f64, m: usize) -> Pass {
+    ///
+    /// With `top` (the band's top spring and its phase `u_top`), the phase
+    /// of the springs in the top half (`h >= h_top/2`) below
+    /// [`FROM_TOP_PHASE`] is `u_top + d`, `d` from
+    /// [`Velocity::phase_below_top`], and its sine and cosine are taken of
+    /// that: `pi/2 - beta` keeps only its absolute accuracy, and the addition
+    /// formulas' `sin u` cancels where `u` is small (the top `u = arcsin
+    /// vbar` at small `vbar`: 190 eps at vbar 0.02).
+    pub(super) fn pass_length(
+        &self,
+        vel: &Velocity,
+        h_b: f64,
+        d_top: f64,
+        top: Option<(&LengthTop, f64)>,
+        m: usize,
+    ) -> Pass {
         let r = quad::rule(m, 0.0);
         let half = 0.5 * d_top;
         let root = h_b.sqrt();
+        let tau_top = root - d_top;
         let residual = root.mul_add(-root, h_b);
         let mut acc = Acc::new();
         for (i, &x) in r.nodes.iter().enumerate() {
-            let d = half * (1.0 + x);
+            let (d, t) = (half * (1.0 + x), half * (1.0 - x));
             let n = vel.stick_first_by_half_length(d * (2.0 * root - d) + residual);
             let dh = 2.0 * (root - d);
-            let from_star = (FRAC_PI_2 - n.beta) - self.u_star;
-            let jac = dh * n.du_dh * self.jacobian(n.sin_u, n.cos_u, 0.0, from_star, Top::Regular);
-            let b = mean_normal_sin_cos(n.beta, n.cos_u, n.sin_u);
+            let rho = t * (2.0 * tau_top + t);
+            let (beta, sin_u, cos_u, from_star) = match top {
+                Some((top, u_top)) if rho <= 0.5 * top.h && FRAC_PI_2 - n.beta < FROM_TOP_PHASE => {
+                    let below = vel.phase_below_top(top, rho, &n, u_top);
+                    let u = u_top + below;
+                    let (su, cu) = libm::sincos(u);
+                    (FRAC_PI_2 - u, su, cu, (u_top - self.u_star) + below)
+                }
+                _ => (n.beta, n.sin_u, n.cos_u, (FRAC_PI_2 - n.beta) - self.u_star),
+            };
+            let jac = dh * n.du_dh * self.jacobian(sin_u, cos_u, 0.0, from_star, Top::Regular);
+            let b = mean_normal_sin_cos(beta, cos_u, sin_u);
             let f = [jac * b, jac * n.means.deficit, jac * n.means.tangential];
             acc.add(&r, i, f, jac * n.means.magnitude);
         }
@@ -456,11 +486,15 @@ impl Foundation {
     /// tolerances: from [`LOOSE_ORDER`], whose estimate claims no decay,
     /// `power:2.5` at vbar 0.2, amp 1.5 took as many nodes at tol 1e-6 as at
     /// the default).
-    pub(super) fn band_by_length(&self, vel: &Velocity, h_top: f64, scale: [f64; MEANS]) -> Sums {
+    ///
+    /// `u_top`: the top's phase, for [`Foundation::pass_length`]'s phases
+    /// from the top (below [`FROM_TOP_PHASE`]).
+    pub(super) fn band_by_length(&self, vel: &Velocity, h_top: f64, u_top: f64, scale: [f64; MEANS]) -> Sums {
         let h_b = vel.stick_branch_half_length();
         let d_top = h_b.sqrt() - (h_b - h_top).max(0.0).sqrt();
         let first = if self.tol >= LOOSE_TOL { MIN_ORDER } else { LENGTH_FIRST_ORDER };
-        self.ladder(first, |m| self.pass_length(vel, h_b, d_top, m), scale)
+        let top = (u_top < FROM_TOP_PHASE).then(|| vel.length_top(h_top));
+        self.ladder(first, |m| self.pass_length(vel, h_b, d_top, top.as_ref().map(|t| (t, u_top)), m), scale)
     }
 
     /// Order-`m` Gauss-Jacobi sums over the whole stick-first band below the
@@ -478,15 +512,32 @@ impl Foundation {
         let half = 0.5 * (root - tau_top);
         let residual = root.mul_add(-root, h_b);
         let k = 1.0 / self.n;
+        let from_top = self.u_star < FROM_TOP_PHASE;
         let mut acc = Acc::new();
         for (i, &x) in r.nodes.iter().enumerate() {
             // x = -1 at the top (t = 0), +1 at the bottom (e = 0, h = 0).
             let (t, e) = (half * (1.0 + x), half * (1.0 - x));
             let n = vel.stick_first_by_half_length(e * (2.0 * root - e) + residual);
-            let d = vel.phase_below_top(top, t * (2.0 * tau_top + t), &n, self.u_star);
-            let y_over_t = self.centre_ratio(d) * (d / t);
-            let jac = k * self.y_pow(y_over_t) * n.sin_u * n.du_dh * 2.0 * (root - e);
-            let b = mean_normal_sin_cos(n.beta, n.cos_u, n.sin_u);
+            let rho = t * (2.0 * tau_top + t);
+            let d = vel.phase_below_top(top, rho, &n, self.u_star);
+            let (sum, s, c) = self.half_angles(d);
+            let y_over_t = (2.0 * sum * s / d) * (d / t);
+            // In the top half, u = u* + d: sin u = sin u* cos d + cos u* sin d
+            // (both terms >= 0 there) keeps the digits that the addition
+            // formulas' sin u loses where u* is small (as in `pass_length`).
+            let (beta, sin_u, cos_u) = if from_top && rho <= 0.5 * top.h && FRAC_PI_2 - n.beta < FROM_TOP_PHASE {
+                let (sin_d, cos_d) = (2.0 * s * c, 1.0 - 2.0 * s * s);
+                let (sin_star, cos_star) = self.star_sin_cos;
+                (
+                    (FRAC_PI_2 - self.u_star) - d,
+                    sin_star * cos_d + cos_star * sin_d,
+                    cos_star * cos_d - sin_star * sin_d,
+                )
+            } else {
+                (n.beta, n.sin_u, n.cos_u)
+            };
+            let jac = k * self.y_pow(y_over_t) * sin_u * n.du_dh * 2.0 * (root - e);
+            let b = mean_normal_sin_cos(beta, cos_u, sin_u);
             let f = [jac * b, jac * n.means.deficit, jac * n.means.tangential];
             acc.add(&r, i, f, jac * n.means.magnitude);
         }
@@ -688,7 +739,7 @@ impl Foundation {
             return self.band(top, bottom, Top::Centre, Means::StickFirst, near, scale);
         }
         // The widest piece first: its sums set the scale of the others.
-        let mut total = self.band_by_length(vel, vel.stick_half_length_at(low), scale);
+        let mut total = self.band_by_length(vel, vel.stick_half_length_at(low), low, scale);
         let mut pieces: Vec<(f64, f64)> = cuts.windows(2).map(|w| (w[0], w[1])).collect();
         pieces.sort_by(|a, b| (b.1 - b.0).total_cmp(&(a.1 - a.0)));
         for (a, b) in pieces {

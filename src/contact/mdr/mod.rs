@@ -42,13 +42,18 @@
 //! the estimates of the pieces add up to the reported one.
 //!
 //! # The stick-first band in the stick's half-length
-//! From vbar 0.1 on, the stick-first band (or, below the contact centre's
-//! threshold, its part away from it) is integrated in its springs' stick
-//! half-length `h` instead of the phase: the spring whose stick lasts `2h`
-//! starts it at `beta = h - arccos(vbar h/sin h)` and loses `sin(phi)(sin h -
-//! h cos h)/pi` ([`crate::spring`]'s closed form), so a node needs no root;
-//! in `tau = sqrt(h_b - h)`, `h_b` the square-root branch point where `vbar h
-//! = sin h`, the integrand is analytic up to the band's top.
+//! From vbar 1e-3 on, the stick-first band is integrated in its springs'
+//! stick half-length `h` instead of the phase: the spring whose stick lasts
+//! `2h` starts it at `beta = h - arccos(vbar h/sin h)` and loses `sin(phi)(sin
+//! h - h cos h)/pi` ([`crate::spring`]'s closed form), so a node needs no
+//! root; in `tau = sqrt(h_b - h)`, `h_b` the square-root branch point where
+//! `vbar h = sin h`, the integrand is analytic up to the band's top. Below the
+//! contact centre's threshold `u*` the whole band is one Gauss-Jacobi piece
+//! in `tau`, its weight `(tau - tau*)^(1/n - 1)` from the top (`u - u*` from
+//! the top to full relative accuracy: [`crate::spring`]'s `phase_below_top`),
+//! where the singularities above the top lie far enough (else the phase
+//! grades towards `u*`, and the half-length takes the band's lowest piece).
+//! Springs with a small phase near the top take it from the top too.
 
 mod foundation;
 mod normal;
@@ -116,15 +121,18 @@ pub struct MdrResult {
 }
 
 /// Below this `vbar` the stick-first band is integrated in the contact phase
-/// `u`, not in the stick's half-length ([`Foundation::band_by_length`]): its
-/// top `u = arcsin vbar` comes out of the closed form as `pi/2 - beta`, whose
-/// absolute rounding is `eps/vbar` of it relatively, and the sine of `u`,
-/// from the addition formulas, cancels there (measured near the top: up to
-/// 13 eps at vbar 0.1, within the [`crate::ratio::ROUNDING_PER_TERM`] of 16
-/// the error estimate allows a node; 15 at 0.05, 190 at 0.02), where the
-/// phase keeps every digit (on the parabolic table, with the form still in
-/// `h` rather than `tau`, 0.02 and 0.1 cost within 1.3 % of each other).
-const BY_LENGTH_MIN_VBAR: f64 = 0.1;
+/// `u`, not in the stick's half-length ([`Foundation::band_by_length`]). As
+/// `vbar -> 0` the band's top `h_t` nears `pi`, where `g = vbar h/sin h` has
+/// its pole, about `(pi vbar)^(1/4)` away in `tau`: the coefficients' decay
+/// turns irregular, and the estimate of the first, loose orders with it.
+/// Measured on the 42,000 checks' grid (tolerances 1e-3 to 1e-11 against the
+/// default, 60 velocities a decade): the largest error was 0.05 of its
+/// estimate from 1e-3 to 0.1 (0.27 over the whole grid), 0.08 at 5e-4, 0.37 at
+/// 2.5e-4, 0.88 at 1.5e-4, and below 1.3e-4 estimates failed. Down to here
+/// the half-length takes far fewer nodes than the phase (the paraboloid at
+/// vbar 0.003, amp 2: 40 for 160). Its small top phase `arcsin vbar` is taken
+/// from the top ([`Foundation::pass_length`]).
+const BY_LENGTH_MIN_VBAR: f64 = 1e-3;
 /// Nor where the Jacobian's branch point `u*` lies above the band's top
 /// closer than this fraction of the band's width (`amp` or `amp sqrt(1 -
 /// vbar^2)` near 1): the phase's grading and mapping resolve it, and `u -
@@ -334,7 +342,7 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     });
     let centre_by_length = vel.filter(|v| top_of(u_sf) == Top::Centre && v.vbar >= BY_LENGTH_MIN_VBAR);
     let stick_first = match (by_length, centre_by_length) {
-        (Some(v), _) => contact.band_by_length(&v, v.tangent_half_length(), perm.sums.value),
+        (Some(v), _) => contact.band_by_length(&v, v.tangent_half_length(), v.delta, perm.sums.value),
         (None, Some(v)) => contact.band_centre_by_length(&v, u_sf, u_low, near, perm.sums.value),
         (None, None) => contact.band(u_sf, u_low, top_of(u_sf), stick_means, near, perm.sums.value),
     };
