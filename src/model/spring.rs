@@ -308,7 +308,17 @@ impl Velocity {
             let (sh, ch) = libm::sincos(h);
             (w * h - x_minus_sin_with(h, sh), ch - vbar, -sh)
         };
-        let guess = if vbar > 0.5 { (6.0 * w).sqrt() } else { PI * w };
+        // Within 1.3 % of the root (measured at 999 velocities; the old guesses
+        // `pi w` and `sqrt(6 w)` were up to 7 % off): from vbar -> 0, `pi - h_b
+        // = k` with `sin k = vbar (pi - k)`, `k ~ vbar pi/(1 + vbar)` corrected
+        // once by `k/sin k ~ 1 + k^2/6`; from vbar -> 1, `h_b^2 ~ 6 w (1 +
+        // 3w/10)`.
+        let guess = if vbar > 0.57 {
+            (6.0 * w).sqrt() * (1.0 + 0.15 * w)
+        } else {
+            let k0 = vbar * PI / (1.0 + vbar);
+            PI - vbar * (PI - k0) * (1.0 + k0 * k0 / 6.0)
+        };
         // w h - S(h) > 0 just above 0 and = -vbar pi < 0 at pi.
         let lo = 1e-3 * guess.min(1.0);
         root::halley(fdd, lo, PI, guess.clamp(lo, PI), ROOT_RTOL_EVENTS, 0.0).x
@@ -397,7 +407,7 @@ impl Velocity {
         if rho > 0.5 * top.h {
             return (FRAC_PI_2 - node.beta) - u_top;
         }
-        let (s2, c2) = libm::sincos(0.5 * rho);
+        let (s2, c2) = crate::special::sin_cos_small(0.5 * rho);
         let n =
             rho * top.t3 + top.h * top.cos_h * x_minus_sin_with(rho, 2.0 * s2 * c2) - 2.0 * top.h * top.sin_h * s2 * s2;
         let dg = self.vbar * n.max(0.0) / (node.sin_h * top.sin_h);

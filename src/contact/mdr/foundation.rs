@@ -304,7 +304,7 @@ impl Foundation {
     /// sines took about 130 instructions a node, libm's `sin_cos` takes about 80).
     fn half_angles(&self, d: f64) -> (f64, f64, f64) {
         let (sin_star, cos_star) = self.star_sin_cos;
-        let (s, c) = libm::sincos(0.5 * d);
+        let (s, c) = crate::special::sin_cos_small(0.5 * d);
         (sin_star * c + cos_star * s, s, c)
     }
 

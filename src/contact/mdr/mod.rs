@@ -60,7 +60,7 @@ mod normal;
 
 use crate::ratio::Ratio;
 use crate::shape::DEFAULT_TOL;
-use crate::special::one_minus_a_cos_asin;
+use crate::special::{one_minus_a_cos_asin, powf};
 use crate::spring::{Spring, Velocity};
 use foundation::{Foundation, Means, Sums, Top, DEFICIT, MEANS, NORMAL, TANGENTIAL};
 pub(crate) use normal::foundation_force;
@@ -157,7 +157,7 @@ struct Permanent {
 }
 
 fn permanent_band(n: f64, vbar: f64, amp: f64, z1: f64) -> Permanent {
-    let normal = z1 - z1 * z1.powf(n) / (n + 1.0);
+    let normal = z1 - z1 * powf(z1, n) / (n + 1.0);
     let mut sums = Sums { value: [normal, 0.0, normal], ..Default::default() };
     if vbar >= 1.0 {
         return Permanent { sums, deficit_per_spring: 0.0, deficit_magnitude: 0.0, excess: 0.0 };
@@ -234,7 +234,7 @@ fn sliding(half: Option<f64>) -> MdrResult {
 /// `z_sf` is `z(u_sf)`, the plain form where `z1 = 0`.
 fn slip_first_width(contact: &Foundation, n: f64, amp: f64, z1: f64, u_sf: f64, z_sf: impl Fn() -> f64) -> f64 {
     if amp > 1.0 {
-        contact.y(u_sf).max(0.0).powf(1.0 / n)
+        powf(contact.y(u_sf).max(0.0), 1.0 / n)
     } else if z1 == 0.0 {
         z_sf()
     } else {
@@ -312,10 +312,10 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     let contact = Foundation::new(n, amp, vel, tol);
     let (u_star, top_kind) = (contact.u_star, contact.top_kind());
     let top_of = |u: f64| if u == u_star { top_kind } else { Top::Regular };
-    let z_of_s = |s: f64| (1.0 - amp * s).clamp(0.0, 1.0 + amp).powf(1.0 / n);
+    let z_of_s = |s: f64| powf((1.0 - amp * s).clamp(0.0, 1.0 + amp), 1.0 / n);
     // Band edges from u: y(u) is cancellation-free where 1 - amp sqrt(1 - vbar^2) is not.
-    let z_scale = if big { amp.powf(1.0 / n) } else { 1.0 };
-    let z_of_u = |u: f64| z_scale * contact.y(u).max(0.0).powf(1.0 / n);
+    let z_scale = if big { powf(amp, 1.0 / n) } else { 1.0 };
+    let z_of_u = |u: f64| z_scale * powf(contact.y(u).max(0.0), 1.0 / n);
     let z1 = z_of_s(1.0);
     let perm = permanent_band(n, vbar, amp, z1);
     // The stick-first band is u in [u_sf, pi/2 + alpha], u_sf = max(u_alpha, u*);
@@ -399,7 +399,7 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     let band_list = if bands {
         // The contact's edge; the slip-only band is empty where nothing slips only
         // (u_low = pi at vbar = 0), not an ulp wide from two roundings of the edge.
-        let z_outer = (1.0 + amp).powf(1.0 / n);
+        let z_outer = powf(1.0 + amp, 1.0 / n);
         let z_low = if u_low >= PI { z_outer } else { z_of_u(u_low) };
         let z_sf = z_of_u(u_sf);
         let parts = [
