@@ -407,9 +407,9 @@ impl Velocity {
         if rho > 0.5 * top.h {
             return (FRAC_PI_2 - node.beta) - u_top;
         }
-        let (s2, c2) = crate::special::sin_cos_small(0.5 * rho);
-        let n =
-            rho * top.t3 + top.h * top.cos_h * x_minus_sin_with(rho, 2.0 * s2 * c2) - 2.0 * top.h * top.sin_h * s2 * s2;
+        // rho <= h*/2 < 2: S(rho) by its series, sin(rho/2) by its own where small.
+        let s2 = crate::special::sin_cos_small(0.5 * rho).0;
+        let n = rho * top.t3 + top.h * top.cos_h * s_fn(rho) - 2.0 * top.h * top.sin_h * s2 * s2;
         let dg = self.vbar * n.max(0.0) / (node.sin_h * top.sin_h);
         let (g, gt) = (node.g, top.node.g);
         let sin_diff = dg * (g * (g + gt) / (node.sin_phi + top.node.sin_phi) + node.sin_phi);
@@ -1349,6 +1349,15 @@ mod tests {
                 for k in 1..=6 {
                     let (_, d, plain) = at(k);
                     assert!((d - plain).abs() <= 8.0 * f64::EPSILON * PI, "vbar {vbar} h* {}: {d} vs {plain}", top.h);
+                }
+                // Near the band's bottom (`h = h* 2^-k`, `rho > h*/2`) the form
+                // from the top would divide its rounding by `sin h`: the plain
+                // difference is taken.
+                for k in 2..=20 {
+                    let h = top.h * 2f64.powi(-k);
+                    let n = vel.stick_first_by_half_length(h);
+                    let (d, plain) = (vel.phase_below_top(&top, top.h - h, &n, u_top), (FRAC_PI_2 - n.beta) - u_top);
+                    assert!((d - plain).abs() <= 8.0 * f64::EPSILON * PI, "vbar {vbar} h {h}: {d} vs {plain}");
                 }
                 // The curvature term of d/rho, measured where it dominates rounding.
                 let (rho_c, d_c, _) = at(12);
