@@ -7,8 +7,11 @@ beta is found by mpmath's root finder on the gap H(L) = sin(beta) - sin(beta - L
 the deficit is the integral of H over the stick (mp.quad), the tangential mean
 is <B> - D with <B> = (s (pi - u) + sin u)/pi the mean normal force of the
 spring (s = sin beta, contact phase u = pi/2 - beta), and |du/dh| is mp.diff of
-u(h). h runs over fractions of the tangent start's half-length L_t/2 (itself a
-root at 50 digits). Velocities from 0.1 (the lower limit of that form's use)
+u(h); u itself is written too, and the phase of the spring rho = (1 - fraction)
+L_t/2 below the exact top (near the top at small vbar it is small, and
+`Foundation::pass_length` takes it from the top, rho below the top). h runs
+over fractions of the tangent start's half-length L_t/2 (itself a root at 50
+digits). Velocities from 0.001 (the lower limit of that form's use)
 to 0.9999, each taken as the double the test passes (0.9999 as a decimal
 differs in w = 1 - vbar by 5e-14 relatively).
 
@@ -20,7 +23,7 @@ import sys
 from mpmath import mp, mpf, sin, cos, asin, acos, pi, findroot, quad, diff, nstr
 
 mp.dps = 50
-VBARS = ["0.1", "0.3", "0.5", "0.7", "0.9", "0.99", "0.9999"]
+VBARS = ["0.001", "0.003", "0.02", "0.1", "0.3", "0.5", "0.7", "0.9", "0.99", "0.9999"]
 FRACTIONS = ["0.001", "0.05", "0.3", "0.7", "0.999", "1"]
 
 
@@ -71,6 +74,10 @@ for vs in VBARS:
         s = sin(beta)
         normal = (s * (pi - u) + sin(u)) / pi
         du_dh = abs(diff(lambda hh: pi / 2 - beta_of(hh, v, alpha), h))
+        # The spring rho below the exact top (rho as the double the test
+        # passes): its phase, which a band's nodes take from the top.
+        rho = mpf(float((1 - mpf(fs)) * h_t))
+        u_below_top = pi / 2 - beta_of(h_t - rho, v, alpha) if rho > 0 else pi / 2 - alpha
         cases.append({
             "vbar": float(v),
             "h": float(h),
@@ -78,6 +85,9 @@ for vs in VBARS:
             "deficit": nstr(deficit, 40),
             "tangential": nstr(normal - deficit, 40),
             "du_dh": nstr(du_dh, 40),
+            "u": nstr(u, 40),
+            "rho": float(rho),
+            "u_below_top": nstr(u_below_top, 40),
         })
         print(f"vbar {vs} h {fs}: done", file=sys.stderr)
 

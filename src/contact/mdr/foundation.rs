@@ -4,7 +4,7 @@
 //! coefficients is within the tolerance.
 
 use crate::quad;
-use crate::spring::{mean_normal_sin_cos, LengthTop, Velocity};
+use crate::spring::{mean_normal_sin_cos, LengthNode, LengthTop, Velocity};
 use std::f64::consts::FRAC_PI_2;
 
 /// What a band's nodes compute besides the normal force `<B>`.
@@ -299,9 +299,11 @@ impl Foundation {
     }
 
     /// `sin((u + u*)/2) = sin u* cos(d/2) + cos u* sin(d/2)` and `sin(d/2)`,
-    /// `d = u - u*` in `[0, pi - u*]`, and `cos(d/2)`, from one `sin_cos`: two non-negative
-    /// terms (both angles in `[0, pi/2]`), so no cancellation (two of glibc's
-    /// sines took about 130 instructions a node, libm's `sin_cos` takes about 80).
+    /// `d = u - u*` in `[0, pi - u*]`, and `cos(d/2)`, from one `sin_cos` (by
+    /// its series for small `d`, [`crate::special::sin_cos_small`]): two
+    /// non-negative terms (both angles in `[0, pi/2]`), so no cancellation
+    /// (two of glibc's sines took about 130 instructions a node, libm's
+    /// `sin_cos` takes about 80).
     fn half_angles(&self, d: f64) -> (f64, f64, f64) {
         let (sin_star, cos_star) = self.star_sin_cos;
         let (s, c) = crate::special::sin_cos_small(0.5 * d);
@@ -463,22 +465,35 @@ impl Foundation {
             let (d, t) = (half * (1.0 + x), half * (1.0 - x));
             let n = vel.stick_first_by_half_length(d * (2.0 * root - d) + residual);
             let dh = 2.0 * (root - d);
-            let rho = t * (2.0 * tau_top + t);
-            let (beta, sin_u, cos_u, from_star) = match top {
-                Some((top, u_top)) if rho <= 0.5 * top.h && FRAC_PI_2 - n.beta < FROM_TOP_PHASE => {
-                    let below = vel.phase_below_top(top, rho, &n, u_top);
-                    let u = u_top + below;
-                    let (su, cu) = libm::sincos(u);
-                    (FRAC_PI_2 - u, su, cu, (u_top - self.u_star) + below)
-                }
-                _ => (n.beta, n.sin_u, n.cos_u, (FRAC_PI_2 - n.beta) - self.u_star),
-            };
+            let (beta, sin_u, cos_u, from_star) = self.length_phase(vel, &n, t * (2.0 * tau_top + t), top);
             let jac = dh * n.du_dh * self.jacobian(sin_u, cos_u, 0.0, from_star, Top::Regular);
             let b = mean_normal_sin_cos(beta, cos_u, sin_u);
             let f = [jac * b, jac * n.means.deficit, jac * n.means.tangential];
             acc.add(&r, i, f, jac * n.means.magnitude);
         }
         acc.finish(&r, if self.amp > 1.0 { half } else { self.amp * half })
+    }
+
+    /// The phase of [`Foundation::pass_length`]'s spring `n`, `rho` below the
+    /// band's top in `h`: `(beta, sin u, cos u, u - u*)`, from the top where
+    /// `top` is given (the top spring and its phase) and the spring lies in
+    /// the top half with a phase below [`FROM_TOP_PHASE`], else `n`'s own.
+    fn length_phase(
+        &self,
+        vel: &Velocity,
+        n: &LengthNode,
+        rho: f64,
+        top: Option<(&LengthTop, f64)>,
+    ) -> (f64, f64, f64, f64) {
+        match top {
+            Some((top, u_top)) if rho <= 0.5 * top.h && FRAC_PI_2 - n.beta < FROM_TOP_PHASE => {
+                let below = vel.phase_below_top(top, rho, n, u_top);
+                let u = u_top + below;
+                let (su, cu) = libm::sincos(u);
+                (FRAC_PI_2 - u, su, cu, (u_top - self.u_star) + below)
+            }
+            _ => (n.beta, n.sin_u, n.cos_u, (FRAC_PI_2 - n.beta) - self.u_star),
+        }
     }
 
     /// The stick-first band `h` in `[0, h_top]` by [`Foundation::pass_length`],
@@ -705,11 +720,14 @@ impl Foundation {
     }
 
     /// A stick-first band whose top is the contact centre's threshold `u*`
-    /// (`kind` [`Top::Centre`]): graded towards `u*` in the phase as
-    /// [`Foundation::band`] does, but its lowest piece, from the last cut
-    /// (at least an eighth of the band's width below `u*`) to the bottom, in
-    /// the stick's half-length ([`Foundation::band_by_length`], its top found
-    /// by one root). Without a cut (the branch point far), [`Foundation::band`].
+    /// (`kind` [`Top::Centre`]): one Gauss-Jacobi piece in the stick's
+    /// half-length where its singularities allow
+    /// ([`Foundation::band_centre_whole`]); else graded towards `u*` in the
+    /// phase as [`Foundation::band`] does, but its lowest piece, from the
+    /// last cut (at least an eighth of the band's width below `u*`) to the
+    /// bottom, in the half-length ([`Foundation::band_by_length`], its top
+    /// found by one root). Without a cut (the branch point far),
+    /// [`Foundation::band`].
     pub(super) fn band_centre_by_length(
         &self,
         vel: &Velocity,
@@ -845,6 +863,43 @@ mod tests {
     /// model (`m' - m >= m ln(err/(margin lim)) / (3 ln(1/q))`, the smallest
     /// of [`ORDERS`] above, at most `2 m`); the grid's node count sees only its
     /// sum (`tests/mdr.rs`), not each choice.
+    /// [`Foundation::length_phase`] keeps `sin u` to its relative accuracy
+    /// where `u` is small (the band's top at small `vbar`), against the
+    /// 40-digit phases of `data/half-length.json` of the springs `rho` below
+    /// the exact top (the 8 of its 60 in the top half below
+    /// [`FROM_TOP_PHASE`], vbar 0.001 to 0.1): within 32 eps (observed 21.5,
+    /// at vbar 0.001 and `rho = 0.003`: the computed top `h_t` is itself
+    /// rounded, its `u` 5.6e-16 above `arcsin vbar`, and `d` measured from it
+    /// is 2.8e-17 off the exact top's, `|du/dh|` falling fast below the top),
+    /// where `n`'s own `sin u` is 2,098 eps off (the addition formulas'
+    /// rounding at `u = 0.001`).
+    #[test]
+    fn the_phase_near_a_small_top_keeps_its_digits() {
+        let cases = crate::numerics::reference_cases("half-length.json");
+        let (mut worst, mut own, mut count) = (0.0f64, 0.0f64, 0);
+        for c in &cases {
+            let (vbar, rho) = (c["vbar"].as_f64().unwrap(), c["rho"].as_f64().unwrap());
+            let u: f64 = c["u_below_top"].as_str().unwrap().parse().unwrap();
+            let vel = Velocity::new(vbar);
+            let f = Foundation::new(2.0, 0.5, Some(vel), 1e-15);
+            let h_t = vel.tangent_half_length();
+            let top = vel.length_top(h_t);
+            let n = vel.stick_first_by_half_length(h_t - rho);
+            if rho > 0.5 * h_t || FRAC_PI_2 - n.beta >= FROM_TOP_PHASE {
+                continue;
+            }
+            count += 1;
+            let (_, sin_u, _, _) = f.length_phase(&vel, &n, rho, Some((&top, vel.delta)));
+            // sin of the rounded reference is within an ulp of sin u.
+            let rel = |x: f64| (x / u.sin() - 1.0).abs() / f64::EPSILON;
+            worst = crate::numerics::worst_of(worst, rel(sin_u));
+            own = crate::numerics::worst_of(own, rel(n.sin_u));
+        }
+        eprintln!("sin u near a small top ({count} springs): {worst} eps; the node's own {own} eps");
+        assert_eq!(count, 8);
+        assert!(worst <= 32.0 && own > 1000.0, "{worst} eps, own {own} eps");
+    }
+
     #[test]
     fn the_next_order_is_the_predicted_one() {
         let f = Foundation::new(2.0, 0.5, None, crate::shape::DEFAULT_TOL);
