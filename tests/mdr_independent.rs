@@ -169,44 +169,18 @@ fn the_error_estimate_bounds_the_error_against_forty_digit_references() {
 /// bounds the error; at the default one the error is within 1e-12 of `mu`.
 #[test]
 fn steep_power_laws_at_amp_one_keep_every_digit_of_a_small_mu() {
-    let cases = common::data_cases("mdr-amp-one.json");
-    assert_eq!(cases.len(), 8);
-    let mut worst = 0.0f64;
-    for c in &cases {
-        let (n, vbar, amp) = (c["n"].as_f64().unwrap(), c["vbar"].as_f64().unwrap(), c["amp"].as_f64().unwrap());
-        let exact = c["mu_ratio"].as_str().unwrap();
-        let mu: f64 = exact.parse().unwrap();
-        for tol in [1e-3, 1e-6, 1e-9, 1e-12, DEFAULT_TOL] {
-            let r = power_law(n, vbar, amp, &fricosc::Options::default().with_tol(tol)).unwrap();
-            let err = common::exact_error(r.ratio.mu_ratio, exact);
-            assert!(
-                !common::exceeds(err, r.error_estimate),
-                "n={n} vbar={vbar} tol {tol:e}: {err:e} > {:e}",
-                r.error_estimate
-            );
-            if tol == DEFAULT_TOL {
-                assert!(err <= 1e-12 * mu, "n={n} vbar={vbar}: relative error {:e}", err / mu);
-                worst = worst.max(err / mu);
-            }
-        }
-    }
+    let worst = worst_relative_error_within_the_estimates("mdr-amp-one.json", 8);
     eprintln!("steep power laws at amp 1: worst relative error {worst:e}");
     // Regression bar, about ten times the observed 3.2e-16.
     assert!(worst <= 3e-15, "{worst:e}");
 }
 
-/// Between vbar 0.001 and 0.1 (`data/mdr-small-vbar.json`,
-/// `data/scripts/mdr_reference.py --small-vbar`: 140 points, vbar 0.001 to
-/// 0.05, exponents 0.5 to 3, amp 0.3 to 3): the stick-first band is integrated in the stick's
-/// half-length there, the springs near a small top phase (`arcsin vbar`, or
-/// the contact centre's threshold `u*` close to it) with their phase taken
-/// from the top. At every tolerance the estimate bounds the error; at the
-/// default one `mu` is within 1e-12 of itself (the published bar) and, as a
-/// regression bar, about ten times the observed.
-#[test]
-fn small_velocities_in_the_half_length_keep_every_digit() {
-    let cases = common::data_cases("mdr-small-vbar.json");
-    assert_eq!(cases.len(), 140);
+/// The power-law cases of a reference file (`count` of them), at every
+/// tolerance within the estimate, and at the default one within 1e-12 of `mu`
+/// (the published bar): their largest relative error there.
+fn worst_relative_error_within_the_estimates(file: &str, count: usize) -> f64 {
+    let cases = common::data_cases(file);
+    assert_eq!(cases.len(), count);
     let mut worst = 0.0f64;
     for c in &cases {
         let (n, vbar, amp) = (c["n"].as_f64().unwrap(), c["vbar"].as_f64().unwrap(), c["amp"].as_f64().unwrap());
@@ -226,6 +200,20 @@ fn small_velocities_in_the_half_length_keep_every_digit() {
             }
         }
     }
+    worst
+}
+
+/// Between vbar 0.001 and 0.1 (`data/mdr-small-vbar.json`,
+/// `data/scripts/mdr_reference.py --small-vbar`: 140 points, vbar 0.001 to
+/// 0.05, exponents 0.5 to 3, amp 0.3 to 3): the stick-first band is integrated in the stick's
+/// half-length there, the springs near a small top phase (`arcsin vbar`, or
+/// the contact centre's threshold `u*` close to it) with their phase taken
+/// from the top. At every tolerance the estimate bounds the error; at the
+/// default one `mu` is within 1e-12 of itself (the published bar) and, as a
+/// regression bar, about ten times the observed.
+#[test]
+fn small_velocities_in_the_half_length_keep_every_digit() {
+    let worst = worst_relative_error_within_the_estimates("mdr-small-vbar.json", 140);
     eprintln!("small velocities: worst relative error {worst:e}");
     // Regression bar, about ten times the observed 9.0e-16 (n = 2, vbar 0.05,
     // amp 0.95: in the phase, whose code the half-length forms left alone;
