@@ -527,7 +527,6 @@ impl Foundation {
         let half = 0.5 * (root - tau_top);
         let residual = root.mul_add(-root, h_b);
         let k = 1.0 / self.n;
-        let from_top = self.u_star < FROM_TOP_PHASE;
         let mut acc = Acc::new();
         for (i, &x) in r.nodes.iter().enumerate() {
             // x = -1 at the top (t = 0), +1 at the bottom (e = 0, h = 0).
@@ -537,26 +536,31 @@ impl Foundation {
             let d = vel.phase_below_top(top, rho, &n, self.u_star);
             let (sum, s, c) = self.half_angles(d);
             let y_over_t = (2.0 * sum * s / d) * (d / t);
-            // In the top half, u = u* + d: sin u = sin u* cos d + cos u* sin d
-            // (both terms >= 0 there) keeps the digits that the addition
-            // formulas' sin u loses where u* is small (as in `pass_length`).
-            let (beta, sin_u, cos_u) = if from_top && rho <= 0.5 * top.h && FRAC_PI_2 - n.beta < FROM_TOP_PHASE {
-                let (sin_d, cos_d) = (2.0 * s * c, 1.0 - 2.0 * s * s);
-                let (sin_star, cos_star) = self.star_sin_cos;
-                (
-                    (FRAC_PI_2 - self.u_star) - d,
-                    sin_star * cos_d + cos_star * sin_d,
-                    cos_star * cos_d - sin_star * sin_d,
-                )
-            } else {
-                (n.beta, n.sin_u, n.cos_u)
-            };
+            let (beta, sin_u, cos_u) = self.centre_phase(&n, rho, top.h, d, (s, c));
             let jac = k * self.y_pow(y_over_t) * sin_u * n.du_dh * 2.0 * (root - e);
             let b = mean_normal_sin_cos(beta, cos_u, sin_u);
             let f = [jac * b, jac * n.means.deficit, jac * n.means.tangential];
             acc.add(&r, i, f, jac * n.means.magnitude);
         }
         acc.finish(&r, half.powf(self.gamma + 1.0))
+    }
+
+    /// The phase of [`Foundation::pass_centre_length`]'s spring `n`, `rho`
+    /// below the top `h*` in `h` and `d = u - u*` above `u*` in the phase
+    /// (`half`: `sin(d/2)`, `cos(d/2)`): `(beta, sin u, cos u)`. In the top
+    /// half below [`FROM_TOP_PHASE`], `u = u* + d`, `sin u = sin u* cos d +
+    /// cos u* sin d` (both terms `>= 0` there) keeps the digits that the
+    /// addition formulas' `sin u` loses where `u*` is small (as
+    /// [`Foundation::length_phase`]); else `n`'s own.
+    fn centre_phase(&self, n: &LengthNode, rho: f64, top_h: f64, d: f64, half: (f64, f64)) -> (f64, f64, f64) {
+        if self.u_star < FROM_TOP_PHASE && rho <= 0.5 * top_h && FRAC_PI_2 - n.beta < FROM_TOP_PHASE {
+            let (s, c) = half;
+            let (sin_d, cos_d) = (2.0 * s * c, 1.0 - 2.0 * s * s);
+            let (sin_star, cos_star) = self.star_sin_cos;
+            ((FRAC_PI_2 - self.u_star) - d, sin_star * cos_d + cos_star * sin_d, cos_star * cos_d - sin_star * sin_d)
+        } else {
+            (n.beta, n.sin_u, n.cos_u)
+        }
     }
 
     /// The stick-first band below the contact centre's threshold `u*` as one
@@ -863,11 +867,12 @@ mod tests {
     /// model (`m' - m >= m ln(err/(margin lim)) / (3 ln(1/q))`, the smallest
     /// of [`ORDERS`] above, at most `2 m`); the grid's node count sees only its
     /// sum (`tests/mdr.rs`), not each choice.
-    /// [`Foundation::length_phase`] keeps `sin u` to its relative accuracy
-    /// where `u` is small (the band's top at small `vbar`), against the
+    /// [`Foundation::length_phase`] and [`Foundation::centre_phase`] keep
+    /// `sin u` to its relative accuracy where `u` is small (the band's top at
+    /// small `vbar`; as the top, `arcsin vbar`, and `u*` there), against the
     /// 40-digit phases of `data/half-length.json` of the springs `rho` below
     /// the exact top (the 8 of its 60 in the top half below
-    /// [`FROM_TOP_PHASE`], vbar 0.001 to 0.1): within 32 eps (observed 21.5,
+    /// [`FROM_TOP_PHASE`], vbar 0.001 to 0.1): within 32 eps (observed 22.5,
     /// at vbar 0.001 and `rho = 0.003`: the computed top `h_t` is itself
     /// rounded, its `u` 5.6e-16 above `arcsin vbar`, and `d` measured from it
     /// is 2.8e-17 off the exact top's, `|du/dh|` falling fast below the top),
@@ -890,9 +895,14 @@ mod tests {
             }
             count += 1;
             let (_, sin_u, _, _) = f.length_phase(&vel, &n, rho, Some((&top, vel.delta)));
+            // The same springs below a centre's threshold `u* = arcsin vbar`.
+            let centre = Foundation { u_star: vel.delta, star_sin_cos: libm::sincos(vel.delta), ..f };
+            let d = vel.phase_below_top(&top, rho, &n, vel.delta);
+            let (_, s, c) = centre.half_angles(d);
+            let (_, sin_u_centre, _) = centre.centre_phase(&n, rho, h_t, d, (s, c));
             // sin of the rounded reference is within an ulp of sin u.
             let rel = |x: f64| (x / u.sin() - 1.0).abs() / f64::EPSILON;
-            worst = crate::numerics::worst_of(worst, rel(sin_u));
+            worst = crate::numerics::worst_of(worst, rel(sin_u).max(rel(sin_u_centre)));
             own = crate::numerics::worst_of(own, rel(n.sin_u));
         }
         eprintln!("sin u near a small top ({count} springs): {worst} eps; the node's own {own} eps");
