@@ -508,7 +508,7 @@ impl Foundation {
         let h_b = vel.stick_branch_half_length();
         let d_top = h_b.sqrt() - (h_b - h_top).max(0.0).sqrt();
         let first = if self.tol >= LOOSE_TOL { MIN_ORDER } else { LENGTH_FIRST_ORDER };
-        let top = (u_top < FROM_TOP_PHASE).then(|| vel.length_top(h_top));
+        let top = small_top(vel, h_top, u_top);
         self.ladder(first, |m| self.pass_length(vel, h_b, d_top, top.as_ref().map(|t| (t, u_top)), m), scale)
     }
 
@@ -848,6 +848,13 @@ impl Foundation {
     }
 }
 
+/// The top spring of a band in the half-length whose top phase `u_top` is
+/// below [`FROM_TOP_PHASE`] (its springs near the top take their phase from
+/// it: [`Foundation::length_phase`]), else `None`.
+fn small_top(vel: &Velocity, h_top: f64, u_top: f64) -> Option<LengthTop> {
+    (u_top < FROM_TOP_PHASE).then(|| vel.length_top(h_top))
+}
+
 /// Cuts at `from + sign d 2^k` for `k = 0, 1, ...` while `d 2^k < until`:
 /// every piece at least its own width away from a singularity at distance
 /// `d` beyond `from`.
@@ -877,7 +884,7 @@ mod tests {
     /// rounded, its `u` 5.6e-16 above `arcsin vbar`, and `d` measured from it
     /// is 2.8e-17 off the exact top's, `|du/dh|` falling fast below the top),
     /// where `n`'s own `sin u` is 2,098 eps off (the addition formulas'
-    /// rounding at `u = 0.001`).
+    /// rounding at `u = 0.001`); `beta` and `cos u` within 4 eps absolute.
     #[test]
     fn the_phase_near_a_small_top_keeps_its_digits() {
         let cases = crate::numerics::reference_cases("half-length.json");
@@ -888,21 +895,26 @@ mod tests {
             let vel = Velocity::new(vbar);
             let f = Foundation::new(2.0, 0.5, Some(vel), 1e-15);
             let h_t = vel.tangent_half_length();
-            let top = vel.length_top(h_t);
             let n = vel.stick_first_by_half_length(h_t - rho);
             if rho > 0.5 * h_t || FRAC_PI_2 - n.beta >= FROM_TOP_PHASE {
                 continue;
             }
             count += 1;
-            let (_, sin_u, _, _) = f.length_phase(&vel, &n, rho, Some((&top, vel.delta)));
+            let top = small_top(&vel, h_t, vel.delta).expect("a small top");
+            let (beta, sin_u, cos_u, _) = f.length_phase(&vel, &n, rho, Some((&top, vel.delta)));
             // The same springs below a centre's threshold `u* = arcsin vbar`.
             let centre = Foundation { u_star: vel.delta, star_sin_cos: libm::sincos(vel.delta), ..f };
             let d = vel.phase_below_top(&top, rho, &n, vel.delta);
             let (_, s, c) = centre.half_angles(d);
-            let (_, sin_u_centre, _) = centre.centre_phase(&n, rho, h_t, d, (s, c));
-            // sin of the rounded reference is within an ulp of sin u.
+            let (beta_centre, sin_u_centre, cos_u_centre) = centre.centre_phase(&n, rho, h_t, d, (s, c));
+            // sin of the rounded reference is within an ulp of sin u; beta and
+            // cos u are near pi/2 and 1, where their absolute accuracy counts.
             let rel = |x: f64| (x / u.sin() - 1.0).abs() / f64::EPSILON;
-            worst = crate::numerics::worst_of(worst, rel(sin_u).max(rel(sin_u_centre)));
+            let abs = |x: f64, r: f64| 8.0 * (x - r).abs() / f64::EPSILON;
+            let (b, cu) = (FRAC_PI_2 - u, u.cos());
+            let others = [abs(beta, b), abs(beta_centre, b), abs(cos_u, cu), abs(cos_u_centre, cu)];
+            let e = others.into_iter().fold(rel(sin_u).max(rel(sin_u_centre)), f64::max);
+            worst = crate::numerics::worst_of(worst, e);
             own = crate::numerics::worst_of(own, rel(n.sin_u));
         }
         eprintln!("sin u near a small top ({count} springs): {worst} eps; the node's own {own} eps");
