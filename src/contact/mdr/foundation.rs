@@ -457,14 +457,13 @@ impl Foundation {
     ) -> Pass {
         let r = quad::rule(m, 0.0);
         let half = 0.5 * d_top;
-        let root = h_b.sqrt();
-        let tau_top = root - d_top;
-        let residual = root.mul_add(-root, h_b);
+        let tau = Tau::new(h_b);
+        let tau_top = tau.root - d_top;
         let mut acc = Acc::new();
         for (i, &x) in r.nodes.iter().enumerate() {
             let (d, t) = (half * (1.0 + x), half * (1.0 - x));
-            let n = vel.stick_first_by_half_length(d * (2.0 * root - d) + residual);
-            let dh = 2.0 * (root - d);
+            let n = vel.stick_first_by_half_length(tau.h(d));
+            let dh = 2.0 * (tau.root - d);
             let (beta, sin_u, cos_u, from_star) = self.length_phase(vel, &n, t * (2.0 * tau_top + t), top);
             let jac = dh * n.du_dh * self.jacobian(sin_u, cos_u, 0.0, from_star, Top::Regular);
             let b = mean_normal_sin_cos(beta, cos_u, sin_u);
@@ -507,7 +506,7 @@ impl Foundation {
     pub(super) fn band_by_length(&self, vel: &Velocity, h_top: f64, u_top: f64, scale: [f64; MEANS]) -> Sums {
         let h_b = vel.stick_branch_half_length();
         let d_top = h_b.sqrt() - (h_b - h_top).max(0.0).sqrt();
-        let first = if self.tol >= LOOSE_TOL { MIN_ORDER } else { LENGTH_FIRST_ORDER };
+        let first = self.length_first_order();
         let top = small_top(vel, h_top, u_top);
         self.ladder(first, |m| self.pass_length(vel, h_b, d_top, top.as_ref().map(|t| (t, u_top)), m), scale)
     }
@@ -522,22 +521,21 @@ impl Foundation {
     /// tau`, with `y/t = (y/d) (d/t)`, `d = u - u*`.
     pub(super) fn pass_centre_length(&self, vel: &Velocity, h_b: f64, top: &LengthTop, m: usize) -> Pass {
         let r = quad::rule(m, self.gamma);
-        let root = h_b.sqrt();
+        let tau = Tau::new(h_b);
         let tau_top = (h_b - top.h).sqrt();
-        let half = 0.5 * (root - tau_top);
-        let residual = root.mul_add(-root, h_b);
+        let half = 0.5 * (tau.root - tau_top);
         let k = 1.0 / self.n;
         let mut acc = Acc::new();
         for (i, &x) in r.nodes.iter().enumerate() {
             // x = -1 at the top (t = 0), +1 at the bottom (e = 0, h = 0).
             let (t, e) = (half * (1.0 + x), half * (1.0 - x));
-            let n = vel.stick_first_by_half_length(e * (2.0 * root - e) + residual);
+            let n = vel.stick_first_by_half_length(tau.h(e));
             let rho = t * (2.0 * tau_top + t);
             let d = vel.phase_below_top(top, rho, &n, self.u_star);
             let (sum, s, c) = self.half_angles(d);
             let y_over_t = (2.0 * sum * s / d) * (d / t);
             let (beta, sin_u, cos_u) = self.centre_phase(&n, rho, top.h, d, (s, c));
-            let jac = k * self.y_pow(y_over_t) * sin_u * n.du_dh * 2.0 * (root - e);
+            let jac = k * self.y_pow(y_over_t) * sin_u * n.du_dh * 2.0 * (tau.root - e);
             let b = mean_normal_sin_cos(beta, cos_u, sin_u);
             let f = [jac * b, jac * n.means.deficit, jac * n.means.tangential];
             acc.add(&r, i, f, jac * n.means.magnitude);
@@ -585,7 +583,7 @@ impl Foundation {
         if near < CENTRE_WHOLE_DISTANCE * span {
             return None;
         }
-        let first = if self.tol >= LOOSE_TOL { MIN_ORDER } else { LENGTH_FIRST_ORDER };
+        let first = self.length_first_order();
         Some(self.ladder(first, |m| self.pass_centre_length(vel, h_b, &top, m), scale))
     }
 
@@ -632,6 +630,17 @@ impl Foundation {
             LOOSE_ORDER
         } else {
             MIN_ORDER
+        }
+    }
+
+    /// The first order of a band in the stick's half-length:
+    /// [`LENGTH_FIRST_ORDER`], or [`MIN_ORDER`] at a tolerance of
+    /// [`LOOSE_TOL`] or looser.
+    fn length_first_order(&self) -> usize {
+        if self.tol >= LOOSE_TOL {
+            MIN_ORDER
+        } else {
+            LENGTH_FIRST_ORDER
         }
     }
 
@@ -845,6 +854,28 @@ impl Foundation {
             total += pc;
         }
         total
+    }
+}
+
+/// The half-length forms' variable `tau = sqrt(h_b - h)`, held as the
+/// distance `e = sqrt(h_b) - tau` from the band's bottom (`h = 0`).
+struct Tau {
+    /// `sqrt(h_b)`.
+    root: f64,
+    /// `h_b - sqrt(h_b)^2`, exact (a fused multiply-add).
+    residual: f64,
+}
+
+impl Tau {
+    fn new(h_b: f64) -> Self {
+        let root = h_b.sqrt();
+        Tau { root, residual: root.mul_add(-root, h_b) }
+    }
+
+    /// `h = h_b - tau^2 = e (2 sqrt(h_b) - e) + (h_b - sqrt(h_b)^2)`, which
+    /// keeps its digits at small sticks (`e -> 0`).
+    fn h(&self, e: f64) -> f64 {
+        e * (2.0 * self.root - e) + self.residual
     }
 }
 
