@@ -10,6 +10,7 @@ pub mod cmd;
 pub mod error;
 pub mod export;
 pub mod figures;
+pub mod float;
 pub mod grid;
 pub mod history;
 pub mod input;

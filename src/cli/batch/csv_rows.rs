@@ -179,7 +179,7 @@ impl Csv {
             if t.is_empty() && name != "amp" {
                 return Ok(None);
             }
-            match t.parse::<f64>() {
+            match crate::cli::float::f64_of(t) {
                 Ok(x) if x.is_finite() => Ok(Some(x + 0.0)),
                 _ => Err(format!("'{name}' is not a finite number: '{t}'")),
             }

@@ -55,6 +55,9 @@ const CHUNK: usize = 1 << 16;
 /// The fields a row is read for.
 const NAMES: [&str; FIELDS] = ["shape", "vbar", "amp", "mu_ratio", "reduction", "vhat", "tangential_amp", "phase"];
 
+/// [`NAMES`] for the scanner.
+const KEYS: scan::Keys<'static, FIELDS> = scan::Keys::new(&NAMES);
+
 /// How many fields a row is read for.
 const FIELDS: usize = 8;
 
@@ -537,7 +540,7 @@ fn line_chunk(
 /// One line of JSON Lines, scanned.
 fn scan_line(line: &[u8]) -> Scanned<'_> {
     let text = std::str::from_utf8(line).map_err(|_| "not UTF-8".to_string())?;
-    scan::line_row(text, &NAMES).map_err(|e| e.describe(text))
+    scan::line_row(text, &KEYS).map_err(|e| e.describe(text))
 }
 
 /// JSON Lines: chunks of lines read serially, checked ([`check_chunk`]),
