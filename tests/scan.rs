@@ -22,10 +22,17 @@ fn by_serde(text: &str) -> Option<Vec<(String, Vec<Option<String>>)>> {
         .collect()
 }
 
-/// What the scanner makes of it.
+/// What the scanner makes of it; each number it read on its way must be its
+/// field's value as `str::parse` reads it, bit for bit.
 fn by_scan(text: &str) -> Option<Vec<(String, Vec<Option<String>>)>> {
     let mut out = vec![];
     array_rows(text, &NAMES, |_, r| {
+        for (x, f) in r.numbers.iter().zip(r.fields) {
+            if !x.is_nan() {
+                let y = f.and_then(|f| f.parse::<f64>().ok());
+                assert_eq!(Some(x.to_bits()), y.map(f64::to_bits), "{f:?} read as {x:?}");
+            }
+        }
         out.push((r.raw.to_string(), r.fields.iter().map(|v| v.map(String::from)).collect()));
         Ok(())
     })

@@ -72,6 +72,29 @@ pub struct Row<'a, const N: usize> {
     pub raw: &'a str,
     /// The wanted fields' raw values (`None` where absent).
     pub fields: [Option<&'a str>; N],
+    /// The wanted fields' values where the scan read them as numbers on its
+    /// way ([`crate::cli::float`]'s fast path: `str::parse`'s value), NaN
+    /// elsewhere (absent, not a number, or a number to read from its raw text).
+    pub numbers: [f64; N],
+}
+
+impl<const N: usize> Row<'_, N> {
+    /// The wanted field `k` as a finite number: as read by the scan, else
+    /// from its raw text ([`number_of`], whose messages name `name`); `None`
+    /// where absent.
+    pub fn number(&self, k: usize, name: &str) -> Result<Option<f64>, String> {
+        self.fields[k].map(|raw| self.number_in(k, raw, name)).transpose()
+    }
+
+    /// The wanted field `k`, present with the raw value `raw`, as a finite number.
+    pub fn number_in(&self, k: usize, raw: &str, name: &str) -> Result<f64, String> {
+        let x = self.numbers[k];
+        if x.is_nan() {
+            number_of(raw, name)
+        } else {
+            Ok(x + 0.0)
+        }
+    }
 }
 
 fn ws(b: &[u8], mut i: usize) -> usize {
@@ -384,12 +407,13 @@ fn skip(b: &[u8], i: usize) -> usize {
 fn quick_row<'a, const N: usize>(text: &'a str, i: usize, keys: &Keys<N>) -> Option<(Row<'a, N>, usize)> {
     let b = text.as_bytes();
     let mut fields: [Option<&'a str>; N] = [None; N];
+    let mut numbers = [f64::NAN; N];
     const OTHERS: usize = 8;
     let mut others: [&[u8]; OTHERS] = [&[]; OTHERS];
     let mut n_others = 0;
     let mut j = skip(b, i + 1);
     if b.get(j) == Some(&b'}') {
-        return Some((Row { raw: &text[i..j + 1], fields }, j + 1));
+        return Some((Row { raw: &text[i..j + 1], fields, numbers }, j + 1));
     }
     loop {
         if b.get(j) != Some(&b'"') {
@@ -402,9 +426,14 @@ fn quick_row<'a, const N: usize>(text: &'a str, i: usize, keys: &Keys<N>) -> Opt
             return None;
         }
         let vs = skip(b, j + 1);
+        let mut x = f64::NAN;
         let ve = match b.get(vs)? {
             b'"' => plain_string_end(b, vs + 1)? + 1,
-            b'-' | b'0'..=b'9' => number(b, vs).ok()?,
+            b'-' | b'0'..=b'9' => {
+                let end;
+                (end, x) = crate::cli::float::json_number(b, vs)?;
+                end
+            }
             b't' => literal(b, vs, b"true").ok()?,
             b'f' => literal(b, vs, b"false").ok()?,
             b'n' => literal(b, vs, b"null").ok()?,
@@ -415,6 +444,7 @@ fn quick_row<'a, const N: usize>(text: &'a str, i: usize, keys: &Keys<N>) -> Opt
                 if fields[p].replace(&text[vs..ve]).is_some() {
                     return None;
                 }
+                numbers[p] = x;
             }
             None => {
                 let key = &b[kstart..kend];
@@ -428,7 +458,7 @@ fn quick_row<'a, const N: usize>(text: &'a str, i: usize, keys: &Keys<N>) -> Opt
         j = skip(b, ve);
         match b.get(j)? {
             b',' => j = skip(b, j + 1),
-            b'}' => return Some((Row { raw: &text[i..j + 1], fields }, j + 1)),
+            b'}' => return Some((Row { raw: &text[i..j + 1], fields, numbers }, j + 1)),
             _ => return None,
         }
     }
@@ -492,7 +522,7 @@ fn general_row<'a, const N: usize>(text: &'a str, i: usize, names: &[&str; N]) -
     if escapes {
         fields = decoded_fields(text, i, names)?;
     }
-    Ok((Row { raw: &text[i..end], fields }, end))
+    Ok((Row { raw: &text[i..end], fields, numbers: [f64::NAN; N] }, end))
 }
 
 /// The wanted fields of a well-formed object whose keys have escapes: keys
@@ -872,12 +902,33 @@ mod tests {
                 if let Some((r, end)) = quick {
                     let (g, gend) = general.unwrap();
                     assert_eq!((r.raw, r.fields, end), (g.raw, g.fields, gend), "{text}");
+                    numbers_are_the_fields(&r);
                 }
             }
         }
         let r = row(&plain[0], 0, &keys).unwrap().0;
         assert_eq!(r.fields[..3], [Some("\"flat\""), Some("0.16123709293488145"), Some("2.542301210811698")]);
         assert_eq!(r.fields[3..], [None; 5]);
+        assert_eq!(r.numbers[1..3], [0.16123709293488145, 2.542301210811698]);
+        // Numbers the fast path leaves to the raw text: NaN, and read from it.
+        let t = r#"{"vbar":1.00000000000000000001,"amp":1e-30,"phase":-0,"vhat":2E+3}"#;
+        let r = row(t, 0, &keys).unwrap().0;
+        assert!(r.numbers[1].is_nan() && r.numbers[2].is_nan());
+        assert_eq!((r.numbers[5], r.numbers[7].to_bits()), (2000.0, (-0.0f64).to_bits()));
+        assert_eq!(
+            (r.number(1, "vbar"), r.number(2, "amp"), r.number(0, "shape")),
+            (Ok(Some(1.0)), Ok(Some(1e-30)), Ok(None))
+        );
+        assert_eq!(r.number(7, "phase").map(|x| x.map(f64::to_bits)), Ok(Some(0)), "-0 read as 0");
+    }
+
+    /// Each number the scan read is its field's `str::parse` value, bit for bit.
+    fn numbers_are_the_fields<const N: usize>(r: &Row<N>) {
+        for (x, f) in r.numbers.iter().zip(r.fields) {
+            if !x.is_nan() {
+                assert_eq!(Some(x.to_bits()), f.and_then(|f| f.parse::<f64>().ok()).map(f64::to_bits), "{f:?}");
+            }
+        }
     }
 
     #[test]
