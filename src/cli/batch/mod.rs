@@ -304,9 +304,19 @@ fn check_chunk<'a, T: Sync>(
     // Serially: the first malformed row, and every shape up to it.
     let mut ids = Vec::with_capacity(items.len());
     let mut first: Option<(usize, String)> = None;
+    // The last row's raw shape value and its index: the same text is the same
+    // shape (most batches use one), with no decoding or lookup.
+    let mut last: Option<(&'a str, u32)> = None;
     for (j, item) in items.iter().enumerate() {
         let id = match row(item) {
-            Ok(r) => json_spec(&r.fields).and_then(|spec| shapes.id(&spec).map_err(|e| e.to_string())),
+            Ok(r) => match (r.fields[0], last) {
+                (Some(raw), Some((l, k))) if raw == l => Ok(k),
+                (raw, _) => json_spec(&r.fields).and_then(|spec| {
+                    let k = shapes.id(&spec).map_err(|e| e.to_string())?;
+                    last = raw.map(|raw| (raw, k));
+                    Ok(k)
+                }),
+            },
             Err(e) => Err(e.clone()),
         };
         match id {
