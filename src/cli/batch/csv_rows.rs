@@ -186,7 +186,18 @@ impl Csv {
         };
         let spec = text(self.cols[0], "shape").map_err(bad)?.trim();
         let k = shapes.id(spec).map_err(|e| bad(e.to_string()))?;
-        let job = inputs(shapes, k, &get, self.results.is_some()).map_err(bad)?;
+        // The seed's columns (vbar and amp only, both plain numbers): straight
+        // to the check; anything else (an error included) through `inputs`.
+        let plain = |col: usize| text(col, "").ok().and_then(|t| crate::cli::float::parse(t.trim()));
+        let job = match self.optional {
+            [(_, Some(v)), (_, None), (_, None), (_, None)] => match (plain(v), plain(self.cols[1])) {
+                (Some(vbar), Some(amp)) => {
+                    shapes.check(k, vbar + 0.0, amp + 0.0, self.results.is_some()).map_err(|e| bad(e.to_string()))?
+                }
+                _ => inputs(shapes, k, &get, self.results.is_some()).map_err(bad)?,
+            },
+            _ => inputs(shapes, k, &get, self.results.is_some()).map_err(bad)?,
+        };
         if keep {
             for f in &self.record {
                 self.kept.extend_from_slice(f);
