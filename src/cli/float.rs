@@ -43,20 +43,22 @@ const fn powers() -> [(u64, u64); 55] {
         let v: u128 = if q >= 0 {
             (p as u128) << (p as u128).leading_zeros()
         } else {
-            // z: the least with 2^z >= p; then floor(2^(z + 127) / p) + 1 by
-            // long division (p < 2^63, so the remainder's double fits).
-            let z = 64 - (p - 1).leading_zeros();
+            // z: the least with 2^z >= p, p's bit length (5^k is no power of
+            // two); then floor(2^(z + 127) / p) + 1 by long division (p < 2^63,
+            // so the remainder's double fits).
+            let z = 64 - p.leading_zeros();
             let b = z + 127;
-            let (mut quotient, mut rem): (u128, u128) = (0, 0);
-            let mut bit = b as i64;
-            while bit >= 0 {
-                rem = 2 * rem + if bit == b as i64 { 1 } else { 0 };
+            // 2^b is a one followed by b zeros: bring them down one at a time.
+            let (mut quotient, mut rem): (u128, u128) = (0, 1);
+            let mut j = 0;
+            while j < b {
+                rem *= 2;
                 quotient <<= 1;
                 if rem >= p as u128 {
                     rem -= p as u128;
                     quotient |= 1;
                 }
-                bit -= 1;
+                j += 1;
             }
             quotient + 1
         };
