@@ -19,8 +19,9 @@
 //! first eight bytes as one word ([`Keys`]). Anything else, faults included,
 //! goes to the general scan, which decides and words the error: the quick
 //! path is only a faster way to the same result (a unit test compares the
-//! two; ~650 instructions of the random flat batch row where the general scan
-//! took ~1,080).
+//! two). It reads the plain row's numbers on its way ([`Row::numbers`]): a
+//! random flat batch row's scan and numbers take ~1,100 instructions where
+//! the general scan and `str::parse` took ~1,620 (measured).
 
 use std::borrow::Cow;
 

@@ -188,6 +188,7 @@ impl Csv {
         let k = shapes.id(spec).map_err(|e| bad(e.to_string()))?;
         // The seed's columns (vbar and amp only, both plain numbers): straight
         // to the check; anything else (an error included) through `inputs`.
+        // (A cell the fast path does not read gives None: `inputs` then reads it, or words why not.)
         let plain = |col: usize| text(col, "").ok().and_then(|t| crate::cli::float::parse(t.trim()));
         let job = match self.optional {
             [(_, Some(v)), (_, None), (_, None), (_, None)] => match (plain(v), plain(self.cols[1])) {
