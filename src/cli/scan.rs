@@ -160,10 +160,7 @@ fn string(b: &[u8], mut i: usize) -> Scan<(usize, bool)> {
 fn digits(b: &[u8], mut i: usize) -> usize {
     while let Some(w) = b.get(i..i + 8) {
         let x = u64::from_le_bytes([w[0], w[1], w[2], w[3], w[4], w[5], w[6], w[7]]);
-        // Every byte is 0x30..=0x39: its high nibble is 3, and adding 6 keeps it 3.
-        const HIGH: u64 = 0xF0F0_F0F0_F0F0_F0F0;
-        const THREES: u64 = 0x3030_3030_3030_3030;
-        if x & HIGH != THREES || x.wrapping_add(0x0606_0606_0606_0606) & HIGH != THREES {
+        if !crate::cli::float::all_digits(x) {
             break;
         }
         i += 8;

@@ -497,8 +497,9 @@ fn too_many(source: &str, n: u64) -> Error {
 /// `read_until(b'\n')` of at most `limit` bytes (as through `Read::take`):
 /// the bytes up to and including the next line break, or up to `limit` of
 /// them, or to the end, appended to `buf`; their count. The line break is
-/// found by `memchr` in the reader's buffer (~0.3 instructions a byte where
-/// the standard library's search took ~2.5, and no `Take` adapter a line).
+/// found by `memchr` in the reader's buffer (~80 instructions a 68-byte line,
+/// the call included, where the standard library's search took ~160; and no
+/// `Take` adapter a line).
 fn read_line_capped(input: &mut dyn BufRead, buf: &mut Vec<u8>, limit: usize) -> io::Result<usize> {
     let mut read = 0;
     while read < limit {
