@@ -283,7 +283,10 @@ impl Velocity {
     /// Half the stick length of a tangent start, `L_t/2`, to full precision:
     /// the top of the stick-first band in [`Velocity::stick_first_by_half_length`]
     /// (the spring at `beta = alpha` starts its stick at contact and at the
-    /// tangent at once).
+    /// tangent at once). The library takes it from the spring in permanent
+    /// contact, whose stick this is ([`Spring::with_events`] at `s >= 1`: the
+    /// same root), so that a point finds it once; the tests call this.
+    #[cfg(test)]
     pub(crate) fn tangent_half_length(&self) -> f64 {
         0.5 * stick_phase(Start::Tangent, self, ROOT_RTOL_EVENTS).length
     }

@@ -58,8 +58,15 @@ const CENTRE_SPLIT_BELOW: f64 = 0.125;
 /// every band failing at 16: `sin phi` has a square-root branch point just
 /// above the band's top) and from 32, 29.3; in `tau = sqrt(h_b - h)`, which
 /// removes it, from 16, 28.9 (most bands passing at 24), from 24, 26.2, and
-/// from 32, 28.3.
-const LENGTH_FIRST_ORDER: usize = 24;
+/// from 32, 28.3. With 20 among the [`ORDERS`] (2026-11-26, nodes a point of
+/// the parabolic table and of `tests/mdr.rs`'s wide grid of seven exponents):
+/// from 24, 21.89 and 127.98; from 20, 20.44 and 127.30; from 18, 20.22 and
+/// 128.85 (the bench's point `vbar 0.3, amp 0.4` failing at 18: 38 nodes
+/// where it takes 20). At order 16 that point's estimate is 2.5e-14 for an
+/// error below 1e-20: the estimate claims the measured decay only once, and
+/// claiming it to the power 1.5 for these bands alone missed its bound on the
+/// wide grid (1.34 of it at `n = 3.7, vbar 1e-3, amp 0.5`).
+const LENGTH_FIRST_ORDER: usize = 20;
 /// [`Foundation::band_centre_whole`] takes a band whose singularities lie at
 /// least this fraction of its width (in `tau`) above its top.
 const CENTRE_WHOLE_DISTANCE: f64 = 0.25;
@@ -72,8 +79,9 @@ const FROM_TOP_PHASE: f64 = 0.25;
 pub(crate) const MAX_ORDER: usize = 256;
 /// The orders a piece's ladder may take: from [`LOOSE_ORDER`] or [`MIN_ORDER`]
 /// up, each step at most a doubling ([`Foundation::next_order`]); a fixed set,
-/// so that a thread computes few rules (Golub-Welsch) for a whole table.
-const ORDERS: [usize; 10] = [8, 16, 24, 32, 48, 64, 96, 128, 192, 256];
+/// so that a thread computes few rules (Golub-Welsch) for a whole table
+/// (20 is the half-length bands' first, [`LENGTH_FIRST_ORDER`]).
+const ORDERS: [usize; 11] = [8, 16, 20, 24, 32, 48, 64, 96, 128, 192, 256];
 /// [`Foundation::next_order`] aims the next pass's predicted estimate at this
 /// fraction of the tolerance (the node count is insensitive to it: 1, 0.25,
 /// 0.05 and 0.01 gave 27.90, 27.91, 27.97 and 28.02 nodes a point on the
@@ -174,40 +182,50 @@ pub(super) struct Pass {
     decay: [f64; MEANS],
 }
 
-/// The running sums of a pass: the weighted sums of the [`MEANS`] and the
-/// deficit's magnitude, and each mean's discrete coefficients of
-/// [`quad::Rule::tail`].
+/// A pass's node values: each node's integrand ([`MEANS`], with the Jacobian
+/// and any change of variable, without the rule's weight) and the deficit's
+/// magnitude, summed by [`Acc::finish`] once the nodes are all evaluated. (Summed
+/// node by node, the 3 x 9 running sums lived in registers across each node's
+/// library calls, and were saved and restored around every one of them: ~45
+/// instructions a node of the parabolic bench point's 20.)
 struct Acc {
-    sum: [f64; MEANS],
-    magnitude: f64,
-    coef: [[f64; quad::TAIL_ROWS]; MEANS],
+    values: Vec<([f64; MEANS], f64)>,
 }
 
 impl Acc {
-    fn new() -> Self {
-        Acc { sum: [0.0; MEANS], magnitude: 0.0, coef: [[0.0; quad::TAIL_ROWS]; MEANS] }
+    fn new(rule: &quad::Rule) -> Self {
+        Acc { values: Vec::with_capacity(rule.nodes.len()) }
     }
 
-    /// Node `i` of `rule`, with the integrand's values `f` (the Jacobian and any
-    /// change of variable, without the rule's weight) and the deficit's magnitude.
-    fn add(&mut self, rule: &quad::Rule, i: usize, f: [f64; MEANS], magnitude: f64) {
-        let (w, tail) = (rule.weights[i], &rule.tail[i]);
-        for ((sum, coef), fk) in self.sum.iter_mut().zip(&mut self.coef).zip(f) {
-            *sum += w * fk;
-            for (c, t) in coef.iter_mut().zip(tail) {
-                *c += t * fk;
-            }
-        }
-        self.magnitude += w * magnitude;
+    /// The next node's integrand values `f` and the deficit's magnitude.
+    fn add(&mut self, f: [f64; MEANS], magnitude: f64) {
+        self.values.push((f, magnitude));
     }
 
-    /// The pass, every sum times `scale`.
+    /// The pass, every sum times `scale`: the weighted sums of the [`MEANS`]
+    /// and the deficit's magnitude, each mean's discrete coefficients of
+    /// [`quad::Rule::tail`], and from them the truncation estimates. Node `i` of
+    /// [`Acc::add`] is node `i` of `rule`.
     fn finish(&self, rule: &quad::Rule, scale: f64) -> Pass {
+        let mut sum = [0.0; MEANS];
+        let mut magnitude = 0.0;
+        let mut coef = [[0.0; quad::TAIL_ROWS]; MEANS];
+        let n = self.values.len().min(rule.weights.len()).min(rule.tail.len());
+        for i in 0..n {
+            let ((f, mag), w, tail) = (&self.values[i], rule.weights[i], &rule.tail[i]);
+            for k in 0..MEANS {
+                sum[k] += w * f[k];
+                for r in 0..quad::TAIL_ROWS {
+                    coef[k][r] += tail[r] * f[k];
+                }
+            }
+            magnitude += w * mag;
+        }
         // Every mean has an estimate, or (below order 8) none has.
-        let t = self.coef.each_ref().map(|c| rule.truncation(c));
+        let t = coef.each_ref().map(|c| rule.truncation(c));
         let truncation = t.iter().all(Option::is_some).then(|| t.map(|e| scale.abs() * e.unwrap_or(f64::INFINITY)));
-        let decay = self.coef.each_ref().map(|c| rule.decay(c));
-        Pass { sum: self.sum.map(|x| scale * x), magnitude: scale.abs() * self.magnitude, truncation, decay }
+        let decay = coef.each_ref().map(|c| rule.decay(c));
+        Pass { sum: sum.map(|x| scale * x), magnitude: scale.abs() * magnitude, truncation, decay }
     }
 }
 
@@ -234,6 +252,14 @@ pub(super) struct Foundation {
     /// Velocity constants when `vbar < 1`.
     pub(super) vel: Option<Velocity>,
     pub(super) tol: f64,
+    /// Whether the bands integrate the normal force. Without a band report,
+    /// the cone's and the paraboloid's total normal force has a closed form
+    /// that replaces the bands' (`mdr::solve`): a stick-first node then skips
+    /// its `<B>` (a series and two divisions), and every band's normal slot
+    /// holds 0, whose truncation estimate is 0, so that it decides no order
+    /// (the slip bands of a small `mu` would otherwise chase a normal force
+    /// that is thrown away, against a scale without the stick band's).
+    pub(super) normal: bool,
 }
 
 /// Nodes are placed in `u = pi/2 - beta`, the angular distance from the
@@ -246,7 +272,8 @@ impl Foundation {
     /// for `amp > 1` (where `y = 0`), else 0.
     pub(super) fn new(n: f64, amp: f64, vel: Option<Velocity>, tol: f64) -> Self {
         let u_star = if amp > 1.0 { 2.0 * (0.5 * (amp - 1.0) / amp).sqrt().asin() } else { 0.0 };
-        Foundation { n, amp, gamma: 1.0 / n - 1.0, u_star, star_sin_cos: libm::sincos(u_star), vel, tol }
+        let star_sin_cos = libm::sincos(u_star);
+        Foundation { n, amp, gamma: 1.0 / n - 1.0, u_star, star_sin_cos, vel, tol, normal: true }
     }
 
     /// How the Jacobian behaves at `u*`, the top of the innermost band.
@@ -365,12 +392,12 @@ impl Foundation {
         let h = 0.5 * (bottom - top);
         // Exact where it matters (Sterbenz: a top near u*).
         let top_from_star = top - self.u_star;
-        let mut acc = Acc::new();
-        for (i, &x) in r.nodes.iter().enumerate() {
+        let mut acc = Acc::new(&r);
+        for &x in &r.nodes {
             // x = -1 at the top.
             let d = h * (1.0 + x);
             let (f, mag) = self.node(top + d, d, top_from_star + d, kind, 1.0, means);
-            acc.add(&r, i, f, mag);
+            acc.add(f, mag);
         }
         let width = if e == 0.0 { h } else { h.powf(e + 1.0) };
         acc.finish(&r, if self.amp > 1.0 { width } else { self.amp * width })
@@ -384,7 +411,8 @@ impl Foundation {
         let (su, cu) = libm::sincos(u);
         let jac = factor * self.jacobian(su, cu, d, from_star, kind);
         // sin(beta) = cos(u), cos(beta) = sin(u); the contact phase is u.
-        let b = mean_normal_sin_cos(beta, cu, su);
+        // <B> is the tangential force of a spring that only slips.
+        let b = if self.normal || means == Means::Slip { mean_normal_sin_cos(beta, cu, su) } else { 0.0 };
         let (dd, tt, mm) = match (means, &self.vel) {
             (Means::StickFirst, Some(vel)) => {
                 let m = vel.stick_first_means(u, su, cu);
@@ -394,7 +422,7 @@ impl Foundation {
             _ => (0.0, b, 0.0),
         };
         let mut f = [0.0; MEANS];
-        f[NORMAL] = jac * b;
+        f[NORMAL] = if self.normal { jac * b } else { 0.0 };
         f[DEFICIT] = jac * dd;
         f[TANGENTIAL] = jac * tt;
         (f, jac.abs() * mm)
@@ -418,15 +446,15 @@ impl Foundation {
         let t_top = e_top.ln();
         let h = 0.5 * (seg.1 - seg.0);
         let top_from_star = top - self.u_star;
-        let mut acc = Acc::new();
-        for (i, &x) in r.nodes.iter().enumerate() {
+        let mut acc = Acc::new(&r);
+        for &x in &r.nodes {
             let tau = (seg.0 - t_top) + h * (1.0 + x);
             // E = e^(t_top + tau) from the expm1 already at hand (one exp a node less).
             let em1 = tau.exp_m1();
             let d = (d0 * em1 / (1.0 + e_top * (1.0 + em1))).min(width);
             let dudt = (d + d0) * ((width - d) + d1) / (width + d0 + d1);
             let (f, mag) = self.node(top + d, d, top_from_star + d, Top::Regular, dudt, Means::StickFirst);
-            acc.add(&r, i, f, mag);
+            acc.add(f, mag);
         }
         acc.finish(&r, if self.amp > 1.0 { h } else { self.amp * h })
     }
@@ -459,16 +487,16 @@ impl Foundation {
         let half = 0.5 * d_top;
         let tau = Tau::new(h_b);
         let tau_top = tau.root - d_top;
-        let mut acc = Acc::new();
-        for (i, &x) in r.nodes.iter().enumerate() {
+        let mut acc = Acc::new(&r);
+        for &x in &r.nodes {
             let (d, t) = (half * (1.0 + x), half * (1.0 - x));
             let n = vel.stick_first_by_half_length(tau.h(d));
             let dh = 2.0 * (tau.root - d);
             let (beta, sin_u, cos_u, from_star) = self.length_phase(vel, &n, t * (2.0 * tau_top + t), top);
             let jac = dh * n.du_dh * self.jacobian(sin_u, cos_u, 0.0, from_star, Top::Regular);
-            let b = mean_normal_sin_cos(beta, cos_u, sin_u);
+            let b = if self.normal { mean_normal_sin_cos(beta, cos_u, sin_u) } else { 0.0 };
             let f = [jac * b, jac * n.means.deficit, jac * n.means.tangential];
-            acc.add(&r, i, f, jac * n.means.magnitude);
+            acc.add(f, jac * n.means.magnitude);
         }
         acc.finish(&r, if self.amp > 1.0 { half } else { self.amp * half })
     }
@@ -525,8 +553,8 @@ impl Foundation {
         let tau_top = (h_b - top.h).sqrt();
         let half = 0.5 * (tau.root - tau_top);
         let k = 1.0 / self.n;
-        let mut acc = Acc::new();
-        for (i, &x) in r.nodes.iter().enumerate() {
+        let mut acc = Acc::new(&r);
+        for &x in &r.nodes {
             // x = -1 at the top (t = 0), +1 at the bottom (e = 0, h = 0).
             let (t, e) = (half * (1.0 + x), half * (1.0 - x));
             let n = vel.stick_first_by_half_length(tau.h(e));
@@ -536,9 +564,9 @@ impl Foundation {
             let y_over_t = (2.0 * sum * s / d) * (d / t);
             let (beta, sin_u, cos_u) = self.centre_phase(&n, rho, top.h, d, (s, c));
             let jac = k * self.y_pow(y_over_t) * sin_u * n.du_dh * 2.0 * (tau.root - e);
-            let b = mean_normal_sin_cos(beta, cos_u, sin_u);
+            let b = if self.normal { mean_normal_sin_cos(beta, cos_u, sin_u) } else { 0.0 };
             let f = [jac * b, jac * n.means.deficit, jac * n.means.tangential];
-            acc.add(&r, i, f, jac * n.means.magnitude);
+            acc.add(f, jac * n.means.magnitude);
         }
         acc.finish(&r, half.powf(self.gamma + 1.0))
     }

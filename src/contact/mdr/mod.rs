@@ -154,21 +154,34 @@ struct Permanent {
     deficit_magnitude: f64,
     /// The tangent excess of one spring in permanent contact (0 at `vbar >= 1`).
     excess: f64,
+    /// Half the stick of a spring in permanent contact (NaN at `vbar >= 1`):
+    /// the stick from the tangent, [`crate::spring::Velocity::tangent_half_length`],
+    /// which is the top of the stick-first band in the half-length. The spring
+    /// is solved to full precision for it, one root where the band's top took a
+    /// second (~520 instructions a point).
+    tangent_half_length: f64,
 }
 
 fn permanent_band(n: f64, vbar: f64, amp: f64, z1: f64) -> Permanent {
     let normal = z1 - z1 * powf(z1, n) / (n + 1.0);
     let mut sums = Sums { value: [normal, 0.0, normal], ..Default::default() };
     if vbar >= 1.0 {
-        return Permanent { sums, deficit_per_spring: 0.0, deficit_magnitude: 0.0, excess: 0.0 };
+        let (deficit_per_spring, deficit_magnitude, excess, tangent_half_length) = (0.0, 0.0, 0.0, f64::NAN);
+        return Permanent { sums, deficit_per_spring, deficit_magnitude, excess, tangent_half_length };
     }
-    let sp = Spring::new(f64::MAX, vbar);
+    let sp = Spring::with_events(f64::MAX, vbar);
     let x = sp.tangent_excess().unwrap_or(0.0);
     sums.value[DEFICIT] = sp.deficit * (amp * z1);
     if z1 > 0.0 {
         sums.value[TANGENTIAL] = z1 * (one_minus_a_cos_asin(amp, vbar) - (1.0 - amp) / (n + 1.0) + amp * x);
     }
-    Permanent { sums, deficit_per_spring: sp.deficit, deficit_magnitude: sp.deficit_magnitude * (amp * z1), excess: x }
+    Permanent {
+        sums,
+        deficit_per_spring: sp.deficit,
+        deficit_magnitude: sp.deficit_magnitude * (amp * z1),
+        excess: x,
+        tangent_half_length: sp.stick.map_or(f64::NAN, |st| 0.5 * st.length),
+    }
 }
 
 /// `mu_macro/mu0` of the power-law profile `g = z^n` at `(vbar, amp)`.
@@ -309,7 +322,11 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     // In u = pi/2 - beta: the centre threshold y = 0 at u* (amp > 1), the
     // stick-first band's upper edge beta = alpha at u_alpha = arcsin(vbar).
     let u_alpha = if vel.is_some() { vbar.asin() } else { FRAC_PI_2 };
-    let contact = Foundation::new(n, amp, vel, tol);
+    // Without the band report, a closed-form total normal force (cone, paraboloid)
+    // replaces the bands' normal force (see `sum` below).
+    let closed = if bands { None } else { total_normal(n, amp) };
+    let mut contact = Foundation::new(n, amp, vel, tol);
+    contact.normal = closed.is_none();
     let (u_star, top_kind) = (contact.u_star, contact.top_kind());
     let top_of = |u: f64| if u == u_star { top_kind } else { Top::Regular };
     let z_of_s = |s: f64| powf((1.0 - amp * s).clamp(0.0, 1.0 + amp), 1.0 / n);
@@ -342,7 +359,7 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     });
     let centre_by_length = vel.filter(|v| top_of(u_sf) == Top::Centre && v.vbar >= BY_LENGTH_MIN_VBAR);
     let stick_first = match (by_length, centre_by_length) {
-        (Some(v), _) => contact.band_by_length(&v, v.tangent_half_length(), v.delta, perm.sums.value),
+        (Some(v), _) => contact.band_by_length(&v, perm.tangent_half_length, v.delta, perm.sums.value),
         (None, Some(v)) => contact.band_centre_by_length(&v, u_sf, u_low, near, perm.sums.value),
         (None, None) => contact.band(u_sf, u_low, top_of(u_sf), stick_means, near, perm.sums.value),
     };
@@ -358,10 +375,8 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
         let only = contact.band(u_low, PI, top_of(u_low), Means::Slip, (inf, inf), plus(scale, &first));
         (first, only)
     };
-    // Without the band report, a closed-form total normal force (cone, paraboloid)
-    // makes the normal force of the two slip bands unnecessary where the
+    // With the closed form, the two slip bands are unnecessary where the
     // reduction is the small one: only the stick band needs springs solved.
-    let closed = if bands { None } else { total_normal(n, amp) };
     let scale1 = plus(perm.sums.value, &stick_first);
     let (mut slip_first, mut slip_only) = match closed {
         Some(_) => {
@@ -510,6 +525,18 @@ pub fn point(n: f64, vbar: f64, amp: f64, opts: &crate::Options) -> crate::Resul
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The band's top in the half-length is the permanent spring's half stick,
+    /// the tangent start's root to full precision (bit for bit), and NaN where
+    /// nothing sticks.
+    #[test]
+    fn the_permanent_spring_gives_the_band_top_in_the_half_length() {
+        for vbar in [1e-3, 0.05, 0.3, 0.7, 0.999] {
+            let p = permanent_band(2.0, vbar, 0.4, 0.6f64.sqrt());
+            assert_eq!(p.tangent_half_length, Velocity::new(vbar).tangent_half_length(), "vbar {vbar}");
+        }
+        assert!(permanent_band(2.0, 1.0, 0.4, 0.6f64.sqrt()).tangent_half_length.is_nan());
+    }
 
     #[test]
     fn closed_form_normal_force_equals_the_band_quadrature() {
