@@ -348,6 +348,13 @@ impl Velocity {
     /// `sin phi`'s digits as `g -> 1`. One `sin_cos`, one square root and one
     /// arcsine.
     pub(crate) fn stick_first_by_half_length(&self, h: f64) -> LengthNode {
+        self.stick_first_by_half_length_with(h, true)
+    }
+
+    /// [`Velocity::stick_first_by_half_length`], the mean tangential force
+    /// only where `tangential` asks for it (else 0: a series of `S(e)` and a
+    /// division less, for a caller whose `mu` comes from the deficit).
+    pub(crate) fn stick_first_by_half_length_with(&self, h: f64, tangential: bool) -> LengthNode {
         let vbar = self.vbar;
         let (sh, ch) = libm::sincos(h);
         let s_h = x_minus_sin_with(h, sh);
@@ -368,8 +375,11 @@ impl Velocity {
         let deficit = sin_phi * t3 / PI;
         // <F> = (vbar L^2/2 + s S(e) + 2 sin(u) sin^2(e/2))/2pi, e = 2a.
         let e = 2.0 * a;
-        let tangential =
-            (2.0 * vbar * h * h + sin_b * x_minus_sin_with(e, 2.0 * g * sin_phi) + 2.0 * cos_b * g * g) / TAU;
+        let tangential = if tangential {
+            (2.0 * vbar * h * h + sin_b * x_minus_sin_with(e, 2.0 * g * sin_phi) + 2.0 * cos_b * g * g) / TAU
+        } else {
+            0.0
+        };
         // Rounding: sin phi carries the cancellation of w h - S(h).
         let magnitude = deficit * (2.0 + (wh + s_h) / (wh - s_h));
         LengthNode {

@@ -190,11 +190,13 @@ pub(super) struct Pass {
 /// instructions a node of the parabolic bench point's 20.)
 struct Acc {
     values: Vec<([f64; MEANS], f64)>,
+    /// The means the pass integrates; the others' slots hold 0 and are not summed.
+    active: [bool; MEANS],
 }
 
 impl Acc {
-    fn new(rule: &quad::Rule) -> Self {
-        Acc { values: Vec::with_capacity(rule.nodes.len()) }
+    fn new(rule: &quad::Rule, active: [bool; MEANS]) -> Self {
+        Acc { values: Vec::with_capacity(rule.nodes.len()), active }
     }
 
     /// The next node's integrand values `f` and the deficit's magnitude.
@@ -207,20 +209,23 @@ impl Acc {
     /// [`quad::Rule::tail`], and from them the truncation estimates. Node `i` of
     /// [`Acc::add`] is node `i` of `rule`.
     fn finish(&self, rule: &quad::Rule, scale: f64) -> Pass {
-        let mut sum = [0.0; MEANS];
-        let mut magnitude = 0.0;
-        let mut coef = [[0.0; quad::TAIL_ROWS]; MEANS];
         let n = self.values.len().min(rule.weights.len()).min(rule.tail.len());
-        for i in 0..n {
-            let ((f, mag), w, tail) = (&self.values[i], rule.weights[i], &rule.tail[i]);
-            for k in 0..MEANS {
-                sum[k] += w * f[k];
+        let (values, weights, tails) = (&self.values[..n], &rule.weights[..n], &rule.tail[..n]);
+        // One mean at a time: its nine running sums fit in registers.
+        let mut sum = [0.0; MEANS];
+        let mut coef = [[0.0; quad::TAIL_ROWS]; MEANS];
+        for k in (0..MEANS).filter(|&k| self.active[k]) {
+            let (mut s, mut c) = (0.0, [0.0; quad::TAIL_ROWS]);
+            for ((f, _), (w, tail)) in values.iter().zip(weights.iter().zip(tails)) {
+                let fk = f[k];
+                s += w * fk;
                 for r in 0..quad::TAIL_ROWS {
-                    coef[k][r] += tail[r] * f[k];
+                    c[r] += tail[r] * fk;
                 }
             }
-            magnitude += w * mag;
+            (sum[k], coef[k]) = (s, c);
         }
+        let magnitude = values.iter().zip(weights).fold(0.0, |m, ((_, mag), w)| m + w * mag);
         // Every mean has an estimate, or (below order 8) none has.
         let t = coef.each_ref().map(|c| rule.truncation(c));
         let truncation = t.iter().all(Option::is_some).then(|| t.map(|e| scale.abs() * e.unwrap_or(f64::INFINITY)));
@@ -260,6 +265,11 @@ pub(super) struct Foundation {
     /// (the slip bands of a small `mu` would otherwise chase a normal force
     /// that is thrown away, against a scale without the stick band's).
     pub(super) normal: bool,
+    /// Whether the stick-first bands integrate the tangential force (where
+    /// `mu` will come from the deficit, `mdr::solve` knows so before the band:
+    /// `S(e)`, a division and a third mean's sums less a node). Its slot holds
+    /// 0 otherwise, as the normal force's.
+    pub(super) tangential: bool,
 }
 
 /// Nodes are placed in `u = pi/2 - beta`, the angular distance from the
@@ -273,7 +283,18 @@ impl Foundation {
     pub(super) fn new(n: f64, amp: f64, vel: Option<Velocity>, tol: f64) -> Self {
         let u_star = if amp > 1.0 { 2.0 * (0.5 * (amp - 1.0) / amp).sqrt().asin() } else { 0.0 };
         let star_sin_cos = libm::sincos(u_star);
-        Foundation { n, amp, gamma: 1.0 / n - 1.0, u_star, star_sin_cos, vel, tol, normal: true }
+        Foundation { n, amp, gamma: 1.0 / n - 1.0, u_star, star_sin_cos, vel, tol, normal: true, tangential: true }
+    }
+
+    /// The means that a band of `means` integrates: the normal force where no
+    /// closed form replaces it ([`Foundation::normal`]), the deficit, and the
+    /// tangential force unless a stick-first band may skip it
+    /// ([`Foundation::tangential`]).
+    fn active(&self, means: Means) -> [bool; MEANS] {
+        let mut a = [true; MEANS];
+        a[NORMAL] = self.normal;
+        a[TANGENTIAL] = self.tangential || means != Means::StickFirst;
+        a
     }
 
     /// How the Jacobian behaves at `u*`, the top of the innermost band.
@@ -392,7 +413,7 @@ impl Foundation {
         let h = 0.5 * (bottom - top);
         // Exact where it matters (Sterbenz: a top near u*).
         let top_from_star = top - self.u_star;
-        let mut acc = Acc::new(&r);
+        let mut acc = Acc::new(&r, self.active(means));
         for &x in &r.nodes {
             // x = -1 at the top.
             let d = h * (1.0 + x);
@@ -416,7 +437,7 @@ impl Foundation {
         let (dd, tt, mm) = match (means, &self.vel) {
             (Means::StickFirst, Some(vel)) => {
                 let m = vel.stick_first_means(u, su, cu);
-                (m.deficit, m.tangential, m.magnitude)
+                (m.deficit, if self.tangential { m.tangential } else { 0.0 }, m.magnitude)
             }
             (Means::SlipFirst { excess }, Some(vel)) => (0.0, slip_first_tangential(u, su, cu, vel.delta, excess), 0.0),
             _ => (0.0, b, 0.0),
@@ -446,7 +467,7 @@ impl Foundation {
         let t_top = e_top.ln();
         let h = 0.5 * (seg.1 - seg.0);
         let top_from_star = top - self.u_star;
-        let mut acc = Acc::new(&r);
+        let mut acc = Acc::new(&r, self.active(Means::StickFirst));
         for &x in &r.nodes {
             let tau = (seg.0 - t_top) + h * (1.0 + x);
             // E = e^(t_top + tau) from the expm1 already at hand (one exp a node less).
@@ -487,10 +508,10 @@ impl Foundation {
         let half = 0.5 * d_top;
         let tau = Tau::new(h_b);
         let tau_top = tau.root - d_top;
-        let mut acc = Acc::new(&r);
+        let mut acc = Acc::new(&r, self.active(Means::StickFirst));
         for &x in &r.nodes {
             let (d, t) = (half * (1.0 + x), half * (1.0 - x));
-            let n = vel.stick_first_by_half_length(tau.h(d));
+            let n = vel.stick_first_by_half_length_with(tau.h(d), self.tangential);
             let dh = 2.0 * (tau.root - d);
             let (beta, sin_u, cos_u, from_star) = self.length_phase(vel, &n, t * (2.0 * tau_top + t), top);
             let jac = dh * n.du_dh * self.jacobian(sin_u, cos_u, 0.0, from_star, Top::Regular);
@@ -553,11 +574,11 @@ impl Foundation {
         let tau_top = (h_b - top.h).sqrt();
         let half = 0.5 * (tau.root - tau_top);
         let k = 1.0 / self.n;
-        let mut acc = Acc::new(&r);
+        let mut acc = Acc::new(&r, self.active(Means::StickFirst));
         for &x in &r.nodes {
             // x = -1 at the top (t = 0), +1 at the bottom (e = 0, h = 0).
             let (t, e) = (half * (1.0 + x), half * (1.0 - x));
-            let n = vel.stick_first_by_half_length(tau.h(e));
+            let n = vel.stick_first_by_half_length_with(tau.h(e), self.tangential);
             let rho = t * (2.0 * tau_top + t);
             let d = vel.phase_below_top(top, rho, &n, self.u_star);
             let (sum, s, c) = self.half_angles(d);
