@@ -340,7 +340,7 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     let alpha = vel.map_or(0.0, |v| v.alpha);
     // In u = pi/2 - beta: the centre threshold y = 0 at u* (amp > 1), the
     // stick-first band's upper edge beta = alpha at u_alpha = arcsin(vbar).
-    let u_alpha = if vel.is_some() { vbar.asin() } else { FRAC_PI_2 };
+    let u_alpha = vel.map_or(FRAC_PI_2, |v| v.delta);
     // Without the band report, a closed-form total normal force (cone, paraboloid)
     // replaces the bands' normal force (see `sum` below).
     let closed = if bands { None } else { total_normal(n, amp) };
