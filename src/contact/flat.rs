@@ -94,9 +94,10 @@ pub(crate) fn ratio_of(sp: &Spring, amp: f64) -> Result<Ratio> {
         // integral: amp <F> = (1 - amp sqrt(1 - vbar^2)) + amp (<F> - F(tau_s)),
         // both cancellation-free (the difference 1 - reduction would keep only
         // the absolute accuracy of 1).
-        match sp.tangent_excess() {
-            Some(x) if reduction > 0.5 => Ratio::from_mu(one_minus_a_cos_asin(amp, sp.vbar) + amp * x, context),
-            _ => Ratio::from_reduction(reduction, context),
+        // (The excess, a sine and a series, only where it is used.)
+        match (reduction > 0.5).then(|| sp.tangent_excess()).flatten() {
+            Some(x) => Ratio::from_mu(one_minus_a_cos_asin(amp, sp.vbar) + amp * x, context),
+            None => Ratio::from_reduction(reduction, context),
         }
     } else if matches!(sp.regime, Regime::JumpingStickFirst | Regime::JumpingSlipFirst) && !clearly_small(sp) {
         // The smaller of the two from its own integral (full relative accuracy:
