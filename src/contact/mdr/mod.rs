@@ -157,8 +157,13 @@ struct Permanent {
     deficit_per_spring: f64,
     /// The magnitude of that deficit's terms, times the band's `amp z1`.
     deficit_magnitude: f64,
-    /// The tangent excess of one spring in permanent contact (0 at `vbar >= 1`).
+    /// The tangent excess of one spring in permanent contact (0 at `vbar >= 1`,
+    /// and where the tangential force is not integrated).
     excess: f64,
+    /// Whether the bands integrate the tangential force: not where `mu` will
+    /// come from the deficit ([`deficit_only`]); the band's own tangential
+    /// force is then 0 (it is never used), and so is the excess.
+    tangential: bool,
     /// Half the stick of a spring in permanent contact (NaN at `vbar >= 1`):
     /// the stick from the tangent, [`crate::spring::Velocity::tangent_half_length`],
     /// which is the top of the stick-first band in the half-length. The spring
@@ -167,24 +172,38 @@ struct Permanent {
     tangent_half_length: f64,
 }
 
-fn permanent_band(n: f64, vbar: f64, amp: f64, z1: f64) -> Permanent {
+/// The permanent band, with `closed` the closed-form total normal force where
+/// one replaces the bands' (which decides [`Permanent::tangential`]).
+fn permanent_band(n: f64, vbar: f64, amp: f64, z1: f64, closed: Option<f64>) -> Permanent {
     let normal = z1 - z1 * powf(z1, n) / (n + 1.0);
     let mut sums = Sums { value: [normal, 0.0, normal], ..Default::default() };
     if vbar >= 1.0 {
         let (deficit_per_spring, deficit_magnitude, excess, tangent_half_length) = (0.0, 0.0, 0.0, f64::NAN);
-        return Permanent { sums, deficit_per_spring, deficit_magnitude, excess, tangent_half_length };
+        return Permanent {
+            sums,
+            deficit_per_spring,
+            deficit_magnitude,
+            excess,
+            tangential: true,
+            tangent_half_length,
+        };
     }
     let sp = Spring::with_events(f64::MAX, vbar);
-    let x = sp.tangent_excess().unwrap_or(0.0);
     sums.value[DEFICIT] = sp.deficit * (amp * z1);
-    if z1 > 0.0 {
-        sums.value[TANGENTIAL] = z1 * (one_minus_a_cos_asin(amp, vbar) - (1.0 - amp) / (n + 1.0) + amp * x);
-    }
+    let tangential = !deficit_only(closed, &sums);
+    // The excess (a sine and a series) only where the tangential force is integrated.
+    let x = if tangential { sp.tangent_excess().unwrap_or(0.0) } else { 0.0 };
+    sums.value[TANGENTIAL] = if tangential && z1 > 0.0 {
+        z1 * (one_minus_a_cos_asin(amp, vbar) - (1.0 - amp) / (n + 1.0) + amp * x)
+    } else {
+        0.0
+    };
     Permanent {
         sums,
         deficit_per_spring: sp.deficit,
         deficit_magnitude: sp.deficit_magnitude * (amp * z1),
         excess: x,
+        tangential,
         tangent_half_length: sp.stick.map_or(f64::NAN, |st| 0.5 * st.length),
     }
 }
@@ -269,10 +288,10 @@ fn slip_first_width(contact: &Foundation, n: f64, amp: f64, z1: f64, u_sf: f64, 
 /// most its normal force; the deficit is used where that bound is below
 /// [`DEFICIT_ONLY_BELOW`] (the cone and the paraboloid at `amp < 1`, where the
 /// permanent band holds most of the force: at `vbar 0.3, amp 0.4` 90 %).
-fn deficit_only(closed: Option<f64>, perm: &Permanent) -> bool {
+fn deficit_only(closed: Option<f64>, perm: &Sums) -> bool {
     closed.is_some_and(|nc| {
-        let rest = (nc - perm.sums.value[NORMAL]).max(0.0);
-        perm.sums.value[DEFICIT] + rest < DEFICIT_ONLY_BELOW * nc
+        let rest = (nc - perm.value[NORMAL]).max(0.0);
+        perm.value[DEFICIT] + rest < DEFICIT_ONLY_BELOW * nc
     })
 }
 
@@ -350,8 +369,8 @@ pub(crate) fn solve(n: f64, vbar: f64, amp: f64, tol: f64, report: Report) -> cr
     let top_of = |u: f64| if u == u_star { top_kind } else { Top::Regular };
     let z_of_s = |s: f64| powf((1.0 - amp * s).clamp(0.0, 1.0 + amp), 1.0 / n);
     let z1 = z_of_s(1.0);
-    let perm = permanent_band(n, vbar, amp, z1);
-    contact.tangential = !deficit_only(closed, &perm);
+    let perm = permanent_band(n, vbar, amp, z1, closed);
+    contact.tangential = perm.tangential;
     // Band edges from u: y(u) is cancellation-free where 1 - amp sqrt(1 - vbar^2) is not.
     let z_scale = if big { powf(amp, 1.0 / n) } else { 1.0 };
     let z_of_u = |u: f64| z_scale * powf(contact.y(u).max(0.0), 1.0 / n);
@@ -566,8 +585,8 @@ mod tests {
                     let b = solve(n, vbar, amp, DEFAULT_TOL, Report::Bands).unwrap();
                     let e = (r.ratio.mu_ratio - b.ratio.mu_ratio).abs();
                     assert!(e <= r.error_estimate + b.error_estimate, "n {n} amp {amp} vbar {vbar}: {e:e}");
-                    let perm = permanent_band(n, vbar, amp, powf(1.0 - amp, 1.0 / n));
-                    if deficit_only(total_normal(n, amp), &perm) {
+                    let perm = permanent_band(n, vbar, amp, powf(1.0 - amp, 1.0 / n), total_normal(n, amp));
+                    if !perm.tangential {
                         alone += 1;
                         assert!(r.ratio.reduction < DEFICIT_ONLY_BELOW, "n {n} amp {amp} vbar {vbar}");
                     } else {
@@ -585,10 +604,10 @@ mod tests {
     #[test]
     fn the_permanent_spring_gives_the_band_top_in_the_half_length() {
         for vbar in [1e-3, 0.05, 0.3, 0.7, 0.999] {
-            let p = permanent_band(2.0, vbar, 0.4, 0.6f64.sqrt());
+            let p = permanent_band(2.0, vbar, 0.4, 0.6f64.sqrt(), None);
             assert_eq!(p.tangent_half_length, Velocity::new(vbar).tangent_half_length(), "vbar {vbar}");
         }
-        assert!(permanent_band(2.0, 1.0, 0.4, 0.6f64.sqrt()).tangent_half_length.is_nan());
+        assert!(permanent_band(2.0, 1.0, 0.4, 0.6f64.sqrt(), None).tangent_half_length.is_nan());
     }
 
     #[test]
