@@ -950,6 +950,37 @@ fn grade(cuts: &mut Vec<f64>, d: f64, until: f64, from: f64, sign: f64) {
 mod tests {
     use super::*;
 
+    /// A pass's sums: each active mean's weighted sum (here of 1, x and x^2
+    /// over [-1, 1]: 2, 0 and 2/3), its discrete coefficients (a polynomial
+    /// of degree 2 has none at the tail's degrees: no truncation, and
+    /// `c_k = 0` for the whole tail), the deficit's magnitude (here 3 a node:
+    /// 6), every sum times `scale` (and the magnitude and estimates times
+    /// its size); an inactive mean's slot is not summed (its 5 a node
+    /// would give 10).
+    #[test]
+    fn a_pass_sums_the_active_means_and_the_magnitude() {
+        let r = quad::rule(16, 0.0);
+        let mut acc = Acc::new(&r, [true, true, false]);
+        for &x in &r.nodes {
+            acc.add([1.0, x, 5.0 + x * x], 3.0);
+        }
+        let p = acc.finish(&r, -0.5);
+        assert!((p.sum[0] + 1.0).abs() < 1e-15 && p.sum[1].abs() < 1e-15 && p.sum[2] == 0.0, "{:?}", p.sum);
+        assert!((p.magnitude - 3.0).abs() < 1e-15, "{}", p.magnitude);
+        let t = p.truncation.unwrap();
+        assert!(t.iter().all(|&e| e < 1e-15), "{t:?}");
+        // x^20 over [-1, 1] is 2/21; 8 nodes (exact to degree 15) miss it, and the estimate sees it.
+        let r = quad::rule(8, 0.0);
+        let mut acc = Acc::new(&r, [true; MEANS]);
+        for &x in &r.nodes {
+            acc.add([x.powi(20), 0.0, 1.0], 0.0);
+        }
+        let p = acc.finish(&r, 1.0);
+        let err = (p.sum[0] - 2.0 / 21.0).abs();
+        let t = p.truncation.unwrap();
+        assert!(err > 1e-12 && err <= t[0] && t[2] < 1e-15, "{err:e} {t:?}");
+    }
+
     /// [`Foundation::next_order`] against orders worked out by hand from its
     /// model (`m' - m >= m ln(err/(margin lim)) / (3 ln(1/q))`, the smallest
     /// of [`ORDERS`] above, at most `2 m`); the grid's node count sees only its
