@@ -231,6 +231,37 @@ fn the_shape_api_names_checks_and_bounds() {
     assert!(e.error_estimate >= f64::from_bits(1) && error <= e.error_estimate, "{e:?}");
 }
 
+/// `Shape::ratio` (the ratio without its estimate: the flat punch's own path,
+/// the others through `evaluate`) gives `evaluate`'s numbers bit for bit,
+/// across the flat punch's regimes and every contact kind, and refuses what
+/// `evaluate` refuses.
+#[test]
+fn the_ratio_alone_is_the_evaluations_ratio() {
+    let shapes = [
+        Shape::parse("flat").unwrap(),
+        Shape::parse("parabolic").unwrap(),
+        Shape::parse("flat-tip:0.5").unwrap(),
+        table_of_squares(),
+    ];
+    for shape in &shapes {
+        for vbar in [0.0, 1e-9, 0.05, 0.3, 0.69, 0.71, 0.999, 1.0, 2.0] {
+            for amp in [0.0, 0.3, 0.9, 1.0, 1.2, 3.0] {
+                let (r, e) = (shape.ratio(vbar, amp).unwrap(), shape.evaluate(vbar, amp).unwrap().ratio);
+                assert_eq!(
+                    (r.mu_ratio.to_bits(), r.reduction.to_bits()),
+                    (e.mu_ratio.to_bits(), e.reduction.to_bits()),
+                    "{shape:?} vbar {vbar} amp {amp}"
+                );
+            }
+        }
+        for bad in [-1.0, f64::NAN, f64::INFINITY] {
+            assert!(shape.ratio(bad, 0.5).is_err() && shape.ratio(0.5, bad).is_err(), "{shape:?} {bad}");
+        }
+    }
+    // Beyond the table's reach (its last row: x = 4).
+    assert!(shapes[3].ratio(0.5, 20.0).is_err() && shapes[3].evaluate(0.5, 20.0).is_err());
+}
+
 /// The regimes' names as outputs print them: each variant's `name` is its
 /// serde name (snake case), and they are distinct.
 #[test]

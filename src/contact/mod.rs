@@ -38,6 +38,16 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
     fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation>;
 
+    /// `mu_macro/mu0` alone (checked inputs): [`Contact::evaluate`]'s ratio, by
+    /// default through it. A contact whose error estimate costs work of its own
+    /// skips that work here (the flat punch: a batch of rows wants no estimate).
+    ///
+    /// # Errors
+    /// As [`Contact::evaluate`].
+    fn ratio(&self, vbar: f64, amp: f64, tol: f64) -> Result<crate::ratio::Ratio> {
+        self.evaluate(vbar, amp, tol).map(|e| e.ratio)
+    }
+
     /// Everything the solver reports about one point (checked inputs). By
     /// default the evaluation alone; the flat punch adds its events, power laws
     /// their bands.
@@ -244,6 +254,9 @@ impl Contact for FlatPunch {
     fn evaluate(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Evaluation> {
         let ratio = flat::ratio(vbar, amp)?;
         Ok(Evaluation { ratio, error_estimate: shape::flat_error_estimate(&ratio), interpolation_error: None })
+    }
+    fn ratio(&self, vbar: f64, amp: f64, _tol: f64) -> Result<crate::ratio::Ratio> {
+        flat::ratio(vbar, amp)
     }
     fn point(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Point> {
         Ok(Point::Flat(flat::point(vbar, amp)?))

@@ -217,6 +217,18 @@ impl Shape {
         self.contact.evaluate(vbar, amp, opts.tol)
     }
 
+    /// `mu_macro/mu0` and the reduction at `(vbar, amp)` with the default
+    /// [`Options`]: [`Shape::evaluate`]'s ratio, without its error estimate
+    /// (the same numbers, less work where the estimate costs any).
+    ///
+    /// # Errors
+    /// As [`Shape::evaluate`].
+    pub fn ratio(&self, vbar: f64, amp: f64) -> Result<Ratio> {
+        check_nonneg("vbar", vbar)?;
+        check_nonneg("amp", amp)?;
+        self.contact.ratio(vbar, amp, DEFAULT_TOL)
+    }
+
     /// Everything the solver reports about one point: the flat punch's regime
     /// and events, a power law's bands, or the evaluation of other shapes.
     ///

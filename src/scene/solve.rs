@@ -347,7 +347,7 @@ fn solve_amplitude(
         let mus = crate::numerics::par::map(chunk, |&v0| -> Result<f64> {
             let vbar = v0 / v_crit;
             // At or above the critical velocity no spring is computed.
-            Ok(if vbar >= 1.0 { 1.0 } else { shape.evaluate(vbar, amp)?.ratio.mu_ratio })
+            Ok(if vbar >= 1.0 { 1.0 } else { shape.ratio(vbar, amp)?.mu_ratio })
         });
         for m in mus {
             mu_ratio.push(m?);

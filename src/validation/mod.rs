@@ -354,7 +354,7 @@ pub fn exact_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest) -> Resul
     if vbar == 0.0 && at_rest == AtRest::Relaxed {
         return Ok(0.0);
     }
-    Ok(shape.evaluate(vbar, amp)?.ratio.mu_ratio)
+    Ok(shape.ratio(vbar, amp)?.mu_ratio)
 }
 
 /// Most stepping-peer work of one check: rows x steps per period x springs

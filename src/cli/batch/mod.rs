@@ -226,7 +226,7 @@ impl Shapes {
         }
         match self.stepping {
             Some(st) => crate::stepper::evaluate(shape, j.vbar, j.amp, st).map(|e| e.ratio),
-            None => shape.evaluate(j.vbar, j.amp).map(|e| e.ratio),
+            None => shape.ratio(j.vbar, j.amp),
         }
     }
 

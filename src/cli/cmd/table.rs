@@ -144,7 +144,7 @@ pub fn run(a: TableArgs) -> Result<()> {
             let r = match stepping {
                 Some(st) => crate::stepper::evaluate(&shape, vbar, amp, st)?.ratio,
                 // Inputs and options checked above, once: the contact itself.
-                None => contact.evaluate(vbar, amp, opts.tol)?.ratio,
+                None => contact.ratio(vbar, amp, opts.tol)?,
             };
             *row = [vbar, r.mu_ratio, r.reduction];
         }
