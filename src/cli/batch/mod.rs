@@ -226,7 +226,8 @@ impl Shapes {
         }
         match self.stepping {
             Some(st) => crate::stepper::evaluate(shape, j.vbar, j.amp, st).map(|e| e.ratio),
-            None => shape.ratio(j.vbar, j.amp),
+            // Inputs checked with the row (`Shapes::check`): the contact itself.
+            None => shape.contact().ratio(j.vbar, j.amp, crate::DEFAULT_TOL),
         }
     }
 
