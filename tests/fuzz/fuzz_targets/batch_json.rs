@@ -1,7 +1,8 @@
 #![no_main]
 //! The batch reader on arbitrary bytes (mirrored by tests/fuzz_mirror.rs), and
 //! the one-pass row scanner against serde_json (mirrored by tests/scan.rs): both
-//! accept the same inputs and pick the same rows and fields.
+//! accept the same inputs and pick the same rows and fields, and the numbers
+//! the scanner reads on its way are the fields' values.
 use libfuzzer_sys::fuzz_target;
 
 #[path = "../../common/rows.rs"]
@@ -24,6 +25,12 @@ fn by_serde(text: &str) -> Rows {
 fn by_scan(text: &str) -> Rows {
     let mut out = vec![];
     fricosc::cli::scan::array_rows(text, &NAMES, |_, r| {
+        // A number read on the scan's way (quick path or a row's layout) is its field's value.
+        for (x, f) in r.numbers.iter().zip(r.fields) {
+            if !x.is_nan() {
+                assert_eq!(Some(x.to_bits()), f.and_then(|f| f.parse::<f64>().ok()).map(f64::to_bits), "{f:?}");
+            }
+        }
         out.push((r.raw.to_string(), r.fields.iter().map(|v| v.map(String::from)).collect()));
         Ok(())
     })
