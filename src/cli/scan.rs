@@ -576,7 +576,7 @@ impl<'a> Layout<'a> {
 
     /// The row at `text[i..]` (at `{`) when it has this layout: as
     /// [`quick_row`] reads it, and its end; `None` otherwise.
-    #[inline]
+    #[inline(always)]
     fn row<const N: usize>(&self, text: &'a str, i: usize) -> Option<(Row<'a, N>, usize)> {
         let b = text.as_bytes();
         let mut fields: [Option<&'a str>; N] = [None; N];
@@ -604,6 +604,47 @@ impl<'a> Layout<'a> {
         }
         let end = j + last.bytes.len();
         Some((Row { raw: &text[i..end], fields, numbers }, end))
+    }
+}
+
+/// Misses a reader's layouts may have at first, whatever the rows (see
+/// [`Layouts`]): rows whose layouts keep changing are then read by the quick
+/// path alone.
+const LAYOUT_MISSES: usize = 64;
+
+/// The last row's layout, which the next row is tried with first. A row that
+/// misses it sets a new one, while the misses stay fewer than
+/// [`LAYOUT_MISSES`] plus an eighth of the rows.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Layouts<'a> {
+    last: Option<Layout<'a>>,
+    misses: usize,
+    rows: usize,
+}
+
+impl<'a> Layouts<'a> {
+    /// The plain row at `text[i..]` (at `{`) and its end: by the last row's
+    /// layout, else by [`quick_row`]; `None` where the quick path leaves it
+    /// to the general scan.
+    #[inline(always)]
+    fn quick<const N: usize>(&mut self, text: &'a str, i: usize, keys: &Keys<N>) -> Option<(Row<'a, N>, usize)> {
+        self.rows += 1;
+        match self.last.as_ref().and_then(|l| l.row(text, i)) {
+            Some(r) => Some(r),
+            None => self.miss(text, i, keys),
+        }
+    }
+
+    /// [`Layouts::quick`] for a row that missed the layout (a call of its
+    /// own: the layout's path stays short).
+    #[inline(never)]
+    fn miss<const N: usize>(&mut self, text: &'a str, i: usize, keys: &Keys<N>) -> Option<(Row<'a, N>, usize)> {
+        let r = quick_row(text, i, keys)?;
+        if self.misses < LAYOUT_MISSES + self.rows / 8 {
+            self.misses += 1;
+            self.last = Layout::of(text, i, keys);
+        }
+        Some(r)
     }
 }
 
@@ -753,22 +794,14 @@ pub struct ArrayReader<'a, 'n, const N: usize> {
     at: usize,
     state: At,
     rows: usize,
-    /// The last row's layout, which the next row is tried with first.
-    layout: Option<Layout<'a>>,
-    /// Rows that missed the layout (each then sets a new one, while these
-    /// stay fewer than [`LAYOUT_MISSES`] plus an eighth of the rows).
-    misses: usize,
+    /// The rows' layouts.
+    layouts: Layouts<'a>,
 }
-
-/// Misses a reader's layouts may have at first, whatever the rows (see
-/// [`ArrayReader`]'s `misses`): rows whose layouts keep changing are then
-/// read by the quick path alone.
-const LAYOUT_MISSES: usize = 64;
 
 impl<'a, 'n, const N: usize> ArrayReader<'a, 'n, N> {
     /// A reader of `text`, picking the fields `names` of each row.
     pub fn new(text: &'a str, names: &'n [&'n str; N]) -> Self {
-        ArrayReader { text, keys: Keys::new(names), at: 0, state: At::Start, rows: 0, layout: None, misses: 0 }
+        ArrayReader { text, keys: Keys::new(names), at: 0, state: At::Start, rows: 0, layouts: Layouts::default() }
     }
 
     /// Rows read so far.
@@ -820,26 +853,16 @@ impl<'a, 'n, const N: usize> ArrayReader<'a, 'n, N> {
             // As `row`, with the quick path's row moved straight into `out`
             // (a row is 208 bytes: ~90 instructions a row fewer, measured),
             // and the last row's layout tried first.
-            let laid_out = self.layout.as_ref().and_then(|l| l.row(self.text, i));
-            let end = if let Some((r, end)) = laid_out {
-                out.push(r);
-                end
-            } else {
-                match quick_row(self.text, i, &self.keys) {
-                    Some((r, end)) => {
-                        out.push(r);
-                        if self.misses < LAYOUT_MISSES + self.rows / 8 {
-                            self.misses += 1;
-                            self.layout = Layout::of(self.text, i, &self.keys);
-                        }
-                        end
-                    }
-                    None => {
-                        let (r, end) = general_row(self.text, i, self.keys.names)
-                            .map_err(|error| RowsError::Syntax { row: Some(self.rows), error })?;
-                        out.push(r);
-                        end
-                    }
+            let end = match self.layouts.quick(self.text, i, &self.keys) {
+                Some((r, end)) => {
+                    out.push(r);
+                    end
+                }
+                None => {
+                    let (r, end) = general_row(self.text, i, self.keys.names)
+                        .map_err(|error| RowsError::Syntax { row: Some(self.rows), error })?;
+                    out.push(r);
+                    end
                 }
             };
             self.rows += 1;
@@ -867,13 +890,26 @@ impl<'a, 'n, const N: usize> ArrayReader<'a, 'n, N> {
 
 /// The one object of a line of JSON Lines (whitespace around it allowed).
 pub fn line_row<'a, const N: usize>(line: &'a str, keys: &Keys<N>) -> Scan<Row<'a, N>> {
+    line_row_with(line, keys, &mut Layouts::default())
+}
+
+/// [`line_row`], trying the line with the last line's layout first (`layouts`
+/// kept from line to line, of lines of one text).
+pub(crate) fn line_row_with<'a, const N: usize>(
+    line: &'a str,
+    keys: &Keys<N>,
+    layouts: &mut Layouts<'a>,
+) -> Scan<Row<'a, N>> {
     let b = line.as_bytes();
     let i = ws(b, 0);
     if b.get(i) != Some(&b'{') {
         value(b, i, 1)?;
         return Err(ScanError::new(i, "expected an object"));
     }
-    let (r, end) = row(line, i, keys)?;
+    let (r, end) = match layouts.quick(line, i, keys) {
+        Some(r) => r,
+        None => general_row(line, i, keys.names)?,
+    };
     let end = ws(b, end);
     if end < b.len() {
         return Err(ScanError::new(end, "trailing characters"));

@@ -601,10 +601,14 @@ fn line_chunk(
     Ok(())
 }
 
-/// One line of JSON Lines, scanned.
-fn scan_line(text: &str) -> Scanned<'_> {
-    scan::line_row(text, &KEYS).map_err(|e| e.describe(text))
+/// One line of JSON Lines, scanned (tried first with the layout of the line
+/// before it in `layouts`).
+fn scan_line<'a>(text: &'a str, layouts: &mut scan::Layouts<'a>) -> Scanned<'a> {
+    scan::line_row_with(text, &KEYS, layouts).map_err(|e| e.describe(text))
 }
+
+/// Lines a task of [`scan_lines`] scans, one line's layout tried on the next.
+const LINES_PER_TASK: usize = 1024;
 
 /// The lines `spans` of a chunk `buf`, scanned in parallel: the chunk checked
 /// as UTF-8 at once (~0.5 instructions a byte where a check a line took ~140
@@ -613,10 +617,25 @@ fn scan_lines<'a>(buf: &'a [u8], spans: &[(usize, usize)]) -> Vec<Scanned<'a>> {
     // Each span starts after a line break (or at the start) and ends before
     // one (or at the end): on character boundaries of a valid text.
     match std::str::from_utf8(buf) {
-        Ok(text) => spans.par_iter().map(|&(a, b)| scan_line(&text[a..b])).collect(),
+        Ok(text) => {
+            // Tasks of consecutive lines, each scanned into its place.
+            let mut out: Vec<Scanned<'a>> = Vec::new();
+            out.resize_with(spans.len(), || Err(String::new()));
+            out.par_chunks_mut(LINES_PER_TASK).zip(spans.par_chunks(LINES_PER_TASK)).for_each(|(out, spans)| {
+                let mut layouts = scan::Layouts::default();
+                for (slot, &(a, b)) in out.iter_mut().zip(spans) {
+                    *slot = scan_line(&text[a..b], &mut layouts);
+                }
+            });
+            out
+        }
         Err(_) => spans
             .par_iter()
-            .map(|&(a, b)| std::str::from_utf8(&buf[a..b]).map_err(|_| "not UTF-8".to_string()).and_then(scan_line))
+            .map(|&(a, b)| {
+                std::str::from_utf8(&buf[a..b])
+                    .map_err(|_| "not UTF-8".to_string())
+                    .and_then(|line| scan_line(line, &mut scan::Layouts::default()))
+            })
             .collect(),
     }
 }
@@ -729,6 +748,41 @@ fn changed(source: &str, checked: u64, again: u64) -> Error {
 mod tests {
     use super::*;
     use std::io::Read;
+
+    /// JSON Lines are scanned in tasks of consecutive lines, each line tried
+    /// with the last line's layout: every line reads as it reads alone (rows,
+    /// numbers to the bit, and faults), across tasks and changing layouts.
+    #[test]
+    fn lines_scan_as_each_line_alone() {
+        let kinds = [
+            |i: usize| format!(r#"{{"shape":"flat","vbar":0.{i},"amp":{i}e-2}}"#),
+            |i: usize| format!(r#"  {{"vbar":{i},"shape":"parabolic","amp":1}} "#),
+            |i: usize| format!(r#"{{"shape":"flat","vbar":0.{i},"amp":{i},"id":"r{i}"}}"#),
+            |i: usize| format!(r#"{{"shape":"flat","vbar":0.{i},"amp":{i}}} x"#),
+            |i: usize| format!(r#"{{"shape":"flat","vbar":0.{i},"amp":{i},"vbar":1}}"#),
+            |i: usize| format!(r#"{{"shape":"fl\u0061t","vbar":{i},"amp":1}}"#),
+        ];
+        for period in [1, 3, 700] {
+            let lines: Vec<String> = (0..2500).map(|i| kinds[(i / period) % kinds.len()](i)).collect();
+            let buf = lines.join("\n");
+            let mut spans = vec![];
+            let mut at = 0;
+            for l in &lines {
+                spans.push((at, at + l.len()));
+                at += l.len() + 1;
+            }
+            let got = scan_lines(buf.as_bytes(), &spans);
+            assert_eq!(got.len(), lines.len());
+            for (g, l) in got.iter().zip(&lines) {
+                let alone = scan::line_row(l, &KEYS).map_err(|e| e.describe(l));
+                type Bits<'a> = (&'a str, [Option<&'a str>; 8], [u64; 8]);
+                fn bits<'a>(r: &Scanned<'a>) -> std::result::Result<Bits<'a>, String> {
+                    r.as_ref().map(|r| (r.raw, r.fields, r.numbers.map(f64::to_bits))).map_err(Clone::clone)
+                }
+                assert_eq!(bits(g), bits(&alone), "period {period}: {l}");
+            }
+        }
+    }
 
     /// `map_into` appends `f`'s values in order, or reports the first item at
     /// fault (of many, spread over the threads) and leaves `out` as it was.
