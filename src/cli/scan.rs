@@ -1185,6 +1185,16 @@ mod tests {
                 ],
             ),
             (
+                // Pieces of 9 to 32 bytes differ in their second to fourth words.
+                r#"{"shape":"flat","tangential_amp":1,"a_key_of_twenty_nine_bytes_":2}"#.into(),
+                vec![r#"{"shape":"cone","tangential_amp":-1e-9,"a_key_of_twenty_nine_bytes_":0}"#.into()],
+                vec![
+                    r#"{"shape":"flat","tangential_amq":1,"a_key_of_twenty_nine_bytes_":2}"#.into(),
+                    r#"{"shape":"flat","tangential_amp":1,"a_key_of_twenty_nine_bytes_!":2}"#.into(),
+                    r#"{"shape":"flat","tangential_amp":1,"a_key_of_twenty_nine_bytes!":2}"#.into(),
+                ],
+            ),
+            (
                 format!(r#"{{"{long}":"x","vbar":2}}"#),
                 vec![format!(r#"{{"{long}":"yy","vbar":-3.5}}"#)],
                 vec![
@@ -1213,6 +1223,42 @@ mod tests {
         for t in [r#"{"shape":"flat","ok":true}"#, "{}", &many] {
             assert!(quick_row::<8>(t, 0, &keys).is_some() && Layout::of(t, 0, &keys).is_none(), "{t}");
         }
+    }
+
+    /// A reader's layouts: one miss for rows of one layout; for rows whose
+    /// layouts alternate, a new layout at each miss while the misses stay
+    /// below `LAYOUT_MISSES` plus an eighth of the rows (a model of that rule
+    /// counts them), which they then follow.
+    #[test]
+    fn layouts_are_rebuilt_within_their_budget() {
+        let names = ["a", "b"];
+        let misses = |row: &dyn Fn(usize) -> String| {
+            let text = format!("[{}]", (0..1000).map(row).collect::<Vec<_>>().join(","));
+            let mut reader = ArrayReader::new(&text, &names);
+            let mut rows = vec![];
+            reader.chunk(2000, &mut rows).unwrap();
+            assert_eq!(rows.len(), 1000);
+            reader.layouts.misses
+        };
+        assert_eq!(misses(&|i| format!(r#"{{"a":{i},"b":"x{i}"}}"#)), 1);
+        let alternate = |i: usize| {
+            if i.is_multiple_of(2) {
+                format!(r#"{{"a":{i},"b":2}}"#)
+            } else {
+                format!(r#"{{"b":2,"a":{i}}}"#)
+            }
+        };
+        // The rule: row r (from 1) of layout r % 2 misses unless the last
+        // layout set is its own; a miss sets it while misses < 64 + r/8.
+        let (mut model, mut last) = (0, None);
+        for r in 1..=1000usize {
+            if last != Some(r % 2) && model < LAYOUT_MISSES + r / 8 {
+                model += 1;
+                last = Some(r % 2);
+            }
+        }
+        assert!(model > 64 + 1000 / 8 - 10 && model <= 64 + 1000 / 8, "{model}");
+        assert_eq!(misses(&alternate), model);
     }
 
     /// A reader tries each row with the last row's layout: every row of an

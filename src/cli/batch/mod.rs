@@ -260,10 +260,7 @@ fn map_into<T: Sync, R: Copy + Send + Sync, E: Send>(
     let before = out.len();
     out.par_extend(items.par_iter().enumerate().map(|(i, item)| {
         f(i, item).unwrap_or_else(|e| {
-            let mut slot = first.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-            if slot.as_ref().is_none_or(|(j, _)| i < *j) {
-                *slot = Some((i, e));
-            }
+            keep_first(&mut first.lock().unwrap_or_else(std::sync::PoisonError::into_inner), i, e);
             filler
         })
     }));
@@ -273,6 +270,14 @@ fn map_into<T: Sync, R: Copy + Send + Sync, E: Send>(
             Err(fault)
         }
         None => Ok(()),
+    }
+}
+
+/// Keep in `slot` the fault of the lowest index: `(i, e)` where it comes
+/// before the one there (the threads of a pass meet faults in any order).
+fn keep_first<E>(slot: &mut Option<(usize, E)>, i: usize, e: E) {
+    if slot.as_ref().is_none_or(|(j, _)| i < *j) {
+        *slot = Some((i, e));
     }
 }
 
@@ -784,10 +789,38 @@ mod tests {
         }
     }
 
+    /// A chunk with a row at fault (its shape, found serially; or its numbers,
+    /// found in parallel) is reported at that row and appends nothing.
+    #[test]
+    fn a_chunk_at_fault_appends_nothing() {
+        let good = [r#"{"shape":"flat","vbar":0.5,"amp":1}"#, r#"{"shape":"flat","vbar":0.2,"amp":0.5}"#];
+        let scanned = |lines: &[&'static str]| -> Vec<Scanned<'static>> {
+            lines.iter().map(|l| scan::line_row(l, &KEYS).map_err(|e| e.what)).collect()
+        };
+        let mut shapes = Shapes::new(None);
+        let (mut raws, mut jobs) = (vec![], vec![]);
+        check_chunk(&scanned(&good), &|r| r.as_ref(), &mut shapes, &mut raws, &mut jobs).unwrap();
+        assert_eq!((raws.len(), jobs.len()), (2, 2));
+        for (bad, at) in [
+            ([good[0], good[1], r#"{"shape":"nope","vbar":0.5,"amp":1}"#], 2),
+            ([good[0], r#"{"shape":"flat","vbar":-1,"amp":1}"#, good[1]], 1),
+        ] {
+            let fault = check_chunk(&scanned(&bad), &|r| r.as_ref(), &mut shapes, &mut raws, &mut jobs).unwrap_err();
+            assert_eq!(fault.0, at, "{fault:?}");
+            assert_eq!((raws.len(), jobs.len()), (2, 2), "{bad:?}");
+        }
+    }
+
     /// `map_into` appends `f`'s values in order, or reports the first item at
     /// fault (of many, spread over the threads) and leaves `out` as it was.
     #[test]
     fn map_into_keeps_order_and_the_first_fault() {
+        // The slot keeps the lowest index, whatever the order faults come in.
+        let mut slot = None;
+        for (i, e) in [(50, "b"), (70, "c"), (20, "a"), (30, "d"), (20, "e")] {
+            keep_first(&mut slot, i, e);
+        }
+        assert_eq!(slot, Some((20, "a")));
         let items: Vec<u64> = (0..100_000).collect();
         let square = |_: usize, &x: &u64| -> std::result::Result<u64, String> { Ok(x * x) };
         let mut out = vec![7];
