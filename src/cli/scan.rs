@@ -22,7 +22,7 @@
 //! two). It reads the plain row's numbers on its way ([`Row::numbers`]): a
 //! random flat batch row's scan and numbers take ~1,100 instructions where
 //! the general scan and `str::parse` took ~1,620 (measured). An array's
-//! reader first tries each row with the last row's layout ([`Layout`]: the
+//! reader first tries each row with the last row's layout (`Layout`: the
 //! bytes between its values, compared a word at a time; the random flat row
 //! read in ~940 instructions where the quick path took ~1,110, measured), and
 //! only then the quick path.
