@@ -329,7 +329,7 @@ impl Velocity {
     }
 
     /// The stick-first spring whose stick lasts `L = 2h`, `0 < h <=`
-    /// [`Velocity::tangent_half_length`], in closed form: no root to find.
+    /// `Velocity::tangent_half_length`, in closed form: no root to find.
     ///
     /// The stick from contact at `beta` ends where the gap `H(x) = sin beta -
     /// sin(beta - x) - vbar x = 2 cos(beta - x/2) sin(x/2) - vbar x` returns to
@@ -622,7 +622,7 @@ const GUESS_RATIO: [f64; 11] = [
 /// Halley start for the stick length `L` of a tangent start and its tail
 /// `2 pi - L`, which depend on `vbar` alone: polynomial fits of degree 10
 /// ([`GUESS_TAIL`], [`GUESS_RATIO`], from `data/scripts/tangent_guess.py`),
-/// both within [`GUESS_ACCURACY`] relative (tested; the tail from its own fit
+/// both within `GUESS_ACCURACY` relative (tested; the tail from its own fit
 /// where it is small, not as a difference).
 fn tangent_length_guess(alpha: f64, vbar: f64) -> (f64, f64) {
     let horner = |c: &[f64], x: f64| c.iter().fold(0.0, |acc, &k| acc * x + k);

@@ -29,7 +29,7 @@ pub(crate) struct Rule {
     /// Weights (positive, summing to `mu0`).
     pub weights: Vec<f64>,
     /// Per node `x_i`: `w_i p_k(x_i)` for the orthonormal polynomials `p_k` of
-    /// the weight at the degrees `k` of [`Rule::tail_degrees`], so that
+    /// the weight at the degrees `k` of [`tail_degrees`], so that
     /// `sum_i f(x_i) tail[i][r]` is the discrete coefficient `c_k` of `f`
     /// (exact for `f` of degree `< m`, the rule being exact to degree `2m - 1`).
     pub tail: Vec<[f64; TAIL_ROWS]>,

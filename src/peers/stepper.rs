@@ -108,7 +108,7 @@ pub(crate) fn physical_mu_ratio(p: &PhysicalSpring, m: usize) -> f64 {
 /// values whatever the steps per period (a whole table of 10^8 steps took 800 MB).
 const COS_BLOCK: usize = 4096;
 
-/// [`run`] for `count` springs given by `spring(i) = (s_i, weight_i)`, generated
+/// The seed's scheme for `count` springs given by `spring(i) = (s_i, weight_i)`, generated
 /// a chunk at a time: memory is bounded by a few chunks per thread, whatever
 /// `count` and `steps_per_period` are.
 pub(crate) fn run_with(

@@ -165,7 +165,7 @@ struct Permanent {
     /// force is then 0 (it is never used), and so is the excess.
     tangential: bool,
     /// Half the stick of a spring in permanent contact (NaN at `vbar >= 1`):
-    /// the stick from the tangent, [`crate::spring::Velocity::tangent_half_length`],
+    /// the stick from the tangent, `Velocity::tangent_half_length` (a test's),
     /// which is the top of the stick-first band in the half-length. The spring
     /// is solved to full precision for it, one root where the band's top took a
     /// second (~520 instructions a point).

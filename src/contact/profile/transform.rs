@@ -180,12 +180,12 @@ const FAR_POINTS: usize = 24;
 /// Target blocks of at most this many knots sum their near sources directly.
 const LEAF_TARGETS: usize = 32;
 
-/// The MDR transform [`mdr_transform`] at every knot of `f`, in `O(n log n)`
+/// The MDR transform (`mdr_transform`, a test's reference) at every knot of `f`, in `O(n log n)`
 /// operations instead of `O(n^2)`.
 ///
 /// # Derivation
 /// Write `P_i` for the antiderivative of `f_i'(r)/sqrt(x^2 - r^2)` on interval
-/// `i` (built from `A = asin(r/x)`, `Q = sqrt(x^2 - r^2)`, see [`mdr_transform`]).
+/// `i` (built from `A = asin(r/x)`, `Q = sqrt(x^2 - r^2)`, see `mdr_transform`).
 /// Summing `P_i(r_(i+1)) - P_i(r_i)` over the intervals below a knot `x = r_j`
 /// and regrouping by knot gives
 /// `g(r_j)/r_j = a1_0 r_j + sum_(k=1)^(j-1) K_k(r_j) + (pi/2)(d_j - b1 r_j + 3/2 b2 r_j^2)`,
