@@ -527,7 +527,7 @@ enum Kind {
 /// fields and numbers, since its keys are byte for byte those of a row the
 /// quick path accepted, and its values are read by the same functions.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Layout<'a> {
+pub(crate) struct Layout<'a, const N: usize> {
     /// `pieces[k]` precedes value `k`; `pieces[values]` closes the row.
     pieces: [Piece<'a>; LAYOUT_VALUES + 1],
     /// Each value's kind and its place among the wanted fields (`None`: not wanted).
@@ -535,11 +535,11 @@ pub(crate) struct Layout<'a> {
     values: usize,
 }
 
-impl<'a> Layout<'a> {
+impl<'a, const N: usize> Layout<'a, N> {
     /// The layout of the row `text[i..]` (at `{`) that [`quick_row`] accepted;
     /// `None` for a row this path does not take (no value, a literal value,
     /// more than [`LAYOUT_VALUES`] values).
-    fn of<const N: usize>(text: &'a str, i: usize, keys: &Keys<N>) -> Option<Self> {
+    fn of(text: &'a str, i: usize, keys: &Keys<N>) -> Option<Self> {
         let b = text.as_bytes();
         let empty = Piece::new(&[]);
         let mut l =
@@ -578,7 +578,7 @@ impl<'a> Layout<'a> {
     /// The row at `text[i..]` (at `{`) when it has this layout: as
     /// [`quick_row`] reads it, and its end; `None` otherwise.
     #[inline(always)]
-    fn row<const N: usize>(&self, text: &'a str, i: usize) -> Option<(Row<'a, N>, usize)> {
+    fn row(&self, text: &'a str, i: usize) -> Option<(Row<'a, N>, usize)> {
         let b = text.as_bytes();
         let mut fields: [Option<&'a str>; N] = [None; N];
         let mut numbers = [f64::NAN; N];
@@ -616,19 +616,25 @@ const LAYOUT_MISSES: usize = 64;
 /// The last row's layout, which the next row is tried with first. A row that
 /// misses it sets a new one, while the misses stay fewer than
 /// [`LAYOUT_MISSES`] plus an eighth of the rows.
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct Layouts<'a> {
-    last: Option<Layout<'a>>,
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Layouts<'a, const N: usize> {
+    last: Option<Layout<'a, N>>,
     misses: usize,
     rows: usize,
 }
 
-impl<'a> Layouts<'a> {
+impl<const N: usize> Default for Layouts<'_, N> {
+    fn default() -> Self {
+        Layouts { last: None, misses: 0, rows: 0 }
+    }
+}
+
+impl<'a, const N: usize> Layouts<'a, N> {
     /// The plain row at `text[i..]` (at `{`) and its end: by the last row's
     /// layout, else by [`quick_row`]; `None` where the quick path leaves it
     /// to the general scan.
     #[inline(always)]
-    fn quick<const N: usize>(&mut self, text: &'a str, i: usize, keys: &Keys<N>) -> Option<(Row<'a, N>, usize)> {
+    fn quick(&mut self, text: &'a str, i: usize, keys: &Keys<N>) -> Option<(Row<'a, N>, usize)> {
         self.rows += 1;
         match self.last.as_ref().and_then(|l| l.row(text, i)) {
             Some(r) => Some(r),
@@ -639,7 +645,7 @@ impl<'a> Layouts<'a> {
     /// [`Layouts::quick`] for a row that missed the layout (a call of its
     /// own: the layout's path stays short).
     #[inline(never)]
-    fn miss<const N: usize>(&mut self, text: &'a str, i: usize, keys: &Keys<N>) -> Option<(Row<'a, N>, usize)> {
+    fn miss(&mut self, text: &'a str, i: usize, keys: &Keys<N>) -> Option<(Row<'a, N>, usize)> {
         let r = quick_row(text, i, keys)?;
         if self.misses < LAYOUT_MISSES + self.rows / 8 {
             self.misses += 1;
@@ -796,7 +802,7 @@ pub struct ArrayReader<'a, 'n, const N: usize> {
     state: At,
     rows: usize,
     /// The rows' layouts.
-    layouts: Layouts<'a>,
+    layouts: Layouts<'a, N>,
 }
 
 impl<'a, 'n, const N: usize> ArrayReader<'a, 'n, N> {
@@ -899,7 +905,7 @@ pub fn line_row<'a, const N: usize>(line: &'a str, keys: &Keys<N>) -> Scan<Row<'
 pub(crate) fn line_row_with<'a, const N: usize>(
     line: &'a str,
     keys: &Keys<N>,
-    layouts: &mut Layouts<'a>,
+    layouts: &mut Layouts<'a, N>,
 ) -> Scan<Row<'a, N>> {
     let b = line.as_bytes();
     let i = ws(b, 0);
@@ -1208,7 +1214,7 @@ mod tests {
             let layout = Layout::of(template, 0, &keys).expect(template);
             for (t, laid_out) in same.iter().map(|t| (t, true)).chain(different.iter().map(|t| (t, false))) {
                 for text in [t.clone(), format!("{t}        , more text")] {
-                    let by_layout = layout.row::<8>(&text, 0);
+                    let by_layout = layout.row(&text, 0);
                     assert_eq!(by_layout.is_some(), laid_out, "{template} then {text}");
                     if let Some(r) = by_layout {
                         assert_eq!(read_of(r), read_of(quick_row(&text, 0, &keys).expect(&text)), "{text}");

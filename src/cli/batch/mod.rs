@@ -608,7 +608,7 @@ fn line_chunk(
 
 /// One line of JSON Lines, scanned (tried first with the layout of the line
 /// before it in `layouts`).
-fn scan_line<'a>(text: &'a str, layouts: &mut scan::Layouts<'a>) -> Scanned<'a> {
+fn scan_line<'a>(text: &'a str, layouts: &mut scan::Layouts<'a, FIELDS>) -> Scanned<'a> {
     scan::line_row_with(text, &KEYS, layouts).map_err(|e| e.describe(text))
 }
 
