@@ -12,7 +12,7 @@
 //! disk, a closed stderr) is dropped, and the exit code still tells.
 
 use clap::Parser;
-use fricosc::cli::cmd::{emit, say, Command, Outcome};
+use fricosc_cli::cmd::{emit, say, Command, Outcome};
 use std::io::Write;
 use std::process::ExitCode;
 

@@ -1,8 +1,11 @@
 //! Nothing lost, nothing half-written: every input and output path as a hostile
 //! user drives it (pipes and FIFOs read twice, files that change, output folders
 //! with other files or links in them, signals, full disks, closed pipes,
-//! answers that would not be numbers, and memory). Each test failed on the
-//! version before these fixes.
+//! answers that would not be numbers, and memory).
+//!
+//! A test crate of its own: the peak memory of a child (`wait4`) starts from
+//! the parent's own peak where the child is spawned (Linux carries the high
+//! water mark across `exec`), so the parent must stay small.
 use std::io::{Read, Write};
 use std::os::unix::process::ExitStatusExt;
 use std::path::Path;

@@ -6,8 +6,8 @@
 //! a sample repeats the evaluation until it lasts a few milliseconds. Failures
 //! (an error or a non-finite value) are kept and listed, never dropped.
 
-use crate::shape::Shape;
-use crate::stepper::Stepping;
+use fricosc::stepper::Stepping;
+use fricosc::Shape;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -163,7 +163,7 @@ struct Collector<'a> {
 
 impl Collector<'_> {
     /// Record one run's value and time; its error if it gave a finite value.
-    fn record(&mut self, method: &str, setting: String, value: crate::Result<f64>, time_s: f64) -> Option<f64> {
+    fn record(&mut self, method: &str, setting: String, value: fricosc::Result<f64>, time_s: f64) -> Option<f64> {
         let name = self.case;
         match value {
             Ok(m) if m.is_finite() => {
@@ -194,10 +194,10 @@ struct Timing {
 /// set): `(error, time)` of the last (most accurate) one.
 fn exact_runs(c: &mut Collector, shape: &Shape, vbar: f64, amp: f64, tm: Timing) -> Option<(f64, f64)> {
     let tols: &[f64] =
-        if shape.is_flat() { &[crate::DEFAULT_TOL] } else { &[1e-4, 1e-6, 1e-8, 1e-11, crate::DEFAULT_TOL] };
+        if shape.is_flat() { &[fricosc::DEFAULT_TOL] } else { &[1e-4, 1e-6, 1e-8, 1e-11, fricosc::DEFAULT_TOL] };
     let mut best = None;
     for &tol in tols {
-        let opts = crate::Options::default().with_tol(tol);
+        let opts = fricosc::Options::default().with_tol(tol);
         let value = shape.evaluate_with(vbar, amp, &opts).map(|e| e.ratio.mu_ratio);
         let t = time_per_call(tm.k, tm.sample, || {
             shape.evaluate_with(vbar, amp, &opts).map_or(f64::NAN, |e| e.ratio.mu_ratio)
@@ -220,9 +220,9 @@ fn stepping_runs(c: &mut Collector, shape: &Shape, vbar: f64, amp: f64, tm: Timi
     let mut best: Option<(f64, f64)> = None;
     for (m, n) in steps {
         let st = Stepping { steps_per_period: m, springs: n };
-        let value = crate::stepper::evaluate(shape, vbar, amp, st).map(|e| e.ratio.mu_ratio);
+        let value = fricosc::stepper::evaluate(shape, vbar, amp, st).map(|e| e.ratio.mu_ratio);
         let t = time_per_call(tm.k.min(3), tm.sample, || {
-            crate::stepper::evaluate(shape, vbar, amp, st).map_or(f64::NAN, |e| e.ratio.mu_ratio)
+            fricosc::stepper::evaluate(shape, vbar, amp, st).map_or(f64::NAN, |e| e.ratio.mu_ratio)
         });
         if let Some(err) = c.record("stepping", format!("M={m},N={n}"), value, t) {
             if best.is_none_or(|(e, _)| err < e) {
@@ -284,7 +284,7 @@ pub fn run(quick: bool) -> Report {
     }
 }
 
-impl crate::cli::export::Report for Report {
+impl crate::export::Report for Report {
     /// The points: `case,method,setting,error,time_s`.
     fn columns(&self) -> Vec<String> {
         ["case", "method", "setting", "error", "time_s"].map(String::from).to_vec()
@@ -305,7 +305,7 @@ impl crate::cli::export::Report for Report {
             .collect()
     }
 
-    fn svg(&self) -> Option<crate::cli::error::Result<String>> {
+    fn svg(&self) -> Option<crate::error::Result<String>> {
         Some(Ok(to_svg(self)))
     }
 }
@@ -317,7 +317,7 @@ const ERROR_FLOOR: f64 = 1e-17;
 /// Log-log SVG of error against time per evaluation: one colour per case, the
 /// exact solver solid with circles, time stepping dashed with triangles.
 fn to_svg(r: &Report) -> String {
-    use crate::cli::plot::{Axis, Chart, Dash, Key, Marker, Rgb, Series, Style, OKABE_ITO};
+    use crate::plot::{Axis, Chart, Dash, Key, Marker, Rgb, Series, Style, OKABE_ITO};
     let (tmin, tmax) = r.points.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.time_s), b.max(p.time_s)));
     let (tmin, tmax) = if tmax > 0.0 { (tmin / 3.0, tmax * 3.0) } else { (1e-9, 1.0) };
     let mut cases: Vec<&str> = vec![];
@@ -360,7 +360,7 @@ fn to_svg(r: &Report) -> String {
         y: Axis::log("error |μ/μ_{0} − reference|", (ERROR_FLOOR / 10.0, 1.0)),
         series,
         key,
-        rules: vec![crate::cli::plot::Rule { horizontal: true, at: ERROR_FLOOR }],
+        rules: vec![crate::plot::Rule { horizontal: true, at: ERROR_FLOOR }],
     }
     .svg()
 }

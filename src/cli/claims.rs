@@ -1,12 +1,12 @@
 //! `fricosc claims`: every quantitative statement of the seed, checked against
 //! the exact solver, with a verdict. `tests/claims.rs` asserts each verdict.
 
-use crate::flat;
-use crate::mdr::{mu_static_ratio, power_law};
-use crate::seed;
-use crate::spring::EventKind;
-use crate::stepper::{physical_mu_ratio, PhysicalSpring};
-use crate::{Options, DEFAULT_TOL};
+use fricosc::flat;
+use fricosc::mdr::power_law;
+use fricosc::seed;
+use fricosc::spring::EventKind;
+use fricosc::stepper::{physical_mu_ratio, PhysicalSpring};
+use fricosc::{Options, Shape};
 use serde::Serialize;
 use std::f64::consts::{PI, TAU};
 
@@ -387,7 +387,7 @@ fn critical_velocity() -> Claim {
 /// seed is right that it holds for every shape.
 /// NaN where anything fails (the claim's verdict then says so).
 fn small_amplitude_slope(spec: &str, vbar: f64, amp: f64) -> f64 {
-    let Ok(shape) = crate::shape::Shape::parse(spec) else { return f64::NAN };
+    let Ok(shape) = fricosc::Shape::parse(spec) else { return f64::NAN };
     let reduction = shape.evaluate(vbar, amp).map_or(f64::NAN, |e| e.ratio.reduction);
     let n0 = shape.contact().mean_normal(0.0).unwrap_or(f64::NAN);
     reduction * n0 / (2.0 * amp)
@@ -448,7 +448,7 @@ fn static_friction_minimum_normal() -> Claim {
     let mut worst = 0.0f64;
     let mut measured = vec![];
     for spec in ["flat", "parabolic", "cone", "flat-tip:0.5"] {
-        let Ok(shape) = crate::shape::Shape::parse(spec) else {
+        let Ok(shape) = fricosc::Shape::parse(spec) else {
             worst = f64::INFINITY;
             continue;
         };
@@ -489,8 +489,8 @@ fn eq27_shape_independence() -> Claim {
     for (name, f) in &shapes {
         let mu_static = |a: f64| match *name {
             "flat" => flat::mu_static_ratio(a),
-            "parabolic" => mu_static_ratio(2.0, a, DEFAULT_TOL).unwrap_or(f64::NAN),
-            _ => mu_static_ratio(1.0, a, DEFAULT_TOL).unwrap_or(f64::NAN),
+            "parabolic" => Shape::parabolic().mu_static(a, &Options::default()).unwrap_or(f64::NAN),
+            _ => Shape::cone().mu_static(a, &Options::default()).unwrap_or(f64::NAN),
         };
         let (w, at) =
             worst_over(&[0.2, 0.4, 0.6, 0.8, 1.0, 1.5, 2.0], 200, |v, a| (seed::eq27(v, mu_static(a)) - f(v, a)).abs());
@@ -535,8 +535,8 @@ fn two_parameters() -> Claim {
                 "indenter": {{"sphere": {{"radius_m": {r:?}}}}}, "loading": {{"mean_indentation_m": {u:?}}},
                 "oscillation": {{"amplitude_m": {d:?}, "frequency_hz": {f:?}}}, "velocity": {{"values_m_per_s": [{v:?}]}}}}"#
         );
-        crate::cli::scene::parse(&json, "claim")
-            .and_then(|s| crate::cli::scene::solve(&s, "claim"))
+        crate::scene::parse(&json, "claim")
+            .and_then(|s| crate::scene::solve(&s, "claim"))
             .map_or(f64::NAN, |r| r[0].rows.get(0).map_or(f64::NAN, |x| x.mu_ratio))
     };
     let (sa, sb) = (scene(2e11, 5e-3, 1e-6, 1.3e-6, 1e3, 3e-4), scene(2e7, 5.0, 1e-3, 1.3e-3, 10.0, 3e-3));
@@ -631,7 +631,7 @@ pub fn markdown(claims: &[Claim]) -> String {
     s
 }
 
-impl crate::cli::export::Report for Vec<Claim> {
+impl crate::export::Report for Vec<Claim> {
     /// One row per claim, every field (the deviation as a number in round-trip precision).
     fn columns(&self) -> Vec<String> {
         ["claim", "seed_says", "exact_gives", "deviation", "deviation_is", "location", "criterion", "verdict"]
@@ -646,7 +646,7 @@ impl crate::cli::export::Report for Vec<Claim> {
                     c.claim.clone(),
                     c.seed_says.clone(),
                     c.exact_gives.clone(),
-                    c.deviation.map_or(String::new(), crate::cli::output::num),
+                    c.deviation.map_or(String::new(), crate::output::num),
                     c.deviation_is.clone(),
                     c.location.clone(),
                     c.criterion.clone(),

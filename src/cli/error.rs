@@ -10,7 +10,7 @@ use thiserror::Error;
 pub enum Error {
     /// The library refused the request or failed.
     #[error(transparent)]
-    Core(#[from] crate::Error),
+    Core(#[from] fricosc::Error),
     /// Malformed input text or options.
     #[error("{context}: {reason}")]
     Parse {
@@ -69,9 +69,9 @@ impl Error {
         Error::Io { path: path.into(), source }
     }
 
-    /// Shorthand for the library's [`crate::Error::InvalidParameter`].
+    /// Shorthand for the library's [`fricosc::Error::InvalidParameter`].
     pub fn param(name: &'static str, value: f64, reason: &str) -> Self {
-        Error::Core(crate::Error::param(name, value, reason))
+        Error::Core(fricosc::Error::param(name, value, reason))
     }
 
     /// True for a write to a closed pipe (the reader went away: not an error).
@@ -89,7 +89,7 @@ impl Error {
         }
     }
 
-    /// As a boxed error for the library's file readers ([`crate::Error::File`]).
+    /// As a boxed error for the library's file readers ([`fricosc::Error::File`]).
     pub fn boxed(self) -> Box<dyn std::error::Error + Send + Sync> {
         Box::new(self)
     }

@@ -1,10 +1,10 @@
 //! One exporter for every report: a report names its columns and rows (CSV and
 //! Markdown are drawn from them), serialises itself (JSON) and may draw itself
 //! (SVG, and PNG from it). Output formats are a choice at the edge, never part of a computation.
-//! (`table` streams its rows through [`crate::cli::output::TableWriter`] instead: it
+//! (`table` streams its rows through [`crate::output::TableWriter`] instead: it
 //! may hold 10^7 of them.)
 
-use crate::cli::error::{Error, Result};
+use crate::error::{Error, Result};
 
 /// Something a command prints or writes.
 pub trait Report: serde::Serialize {
@@ -34,7 +34,7 @@ pub enum Format {
     Markdown,
     /// An SVG drawing.
     Svg,
-    /// The SVG drawing rendered as PNG ([`crate::cli::plot::png`]; bytes: see [`export_bytes`]).
+    /// The SVG drawing rendered as PNG ([`crate::plot::png`]; bytes: see [`export_bytes`]).
     Png,
 }
 
@@ -79,12 +79,12 @@ pub fn export(report: &impl Report, format: Format) -> Result<String> {
         Format::Json => serde_json::to_string_pretty(report)
             .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") }),
         Format::Csv => {
-            let table = crate::cli::output::csv_table(
+            let table = crate::output::csv_table(
                 &report.columns().iter().map(String::as_str).collect::<Vec<_>>(),
                 report.rows(),
             );
             Ok(match report.comment() {
-                Some(c) => format!("# {}\n{table}", crate::cli::cmd::escape_controls(&c)),
+                Some(c) => format!("# {}\n{table}", crate::cmd::escape_controls(&c)),
                 None => table,
             })
         }
@@ -109,7 +109,7 @@ pub fn export(report: &impl Report, format: Format) -> Result<String> {
 /// the SVG drawing rendered.
 pub fn export_bytes(report: &impl Report, format: Format) -> Result<Vec<u8>> {
     match format {
-        Format::Png => crate::cli::plot::png(&export(report, Format::Svg)?)
+        Format::Png => crate::plot::png(&export(report, Format::Svg)?)
             .map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") }),
         f => export(report, f).map(String::into_bytes),
     }

@@ -1,10 +1,10 @@
 //! Parsing of value lists on the command line: `0,0.2,0.4` or `start:stop:count`.
 
-use crate::cli::error::{Error, Result};
+use crate::error::{Error, Result};
 
 /// Most rows any command reads or writes (tables, batches, validated tables,
 /// histories), and most values one list or range may produce: the one limit.
-pub const MAX_ROWS: usize = crate::history::MAX_SAMPLES;
+pub const MAX_ROWS: usize = fricosc::history::MAX_SAMPLES;
 /// [`MAX_ROWS`] for counts computed in `u128` (before they can overflow).
 pub const MAX_LIST: u128 = MAX_ROWS as u128;
 
@@ -70,20 +70,7 @@ fn range(start: f64, stop: f64, count: &str) -> std::result::Result<Vec<f64>, St
     if n == 1 {
         return Ok(vec![start]);
     }
-    let span = stop - start;
-    let last = (n - 1) as f64;
-    let at = |k: usize| {
-        let t = k as f64 / last;
-        // stop - start overflows for ranges across most of f64 (-1e308:1e308).
-        if span.is_finite() {
-            start + span * t
-        } else {
-            start * (1.0 - t) + stop * t
-        }
-    };
-    let mut out: Vec<f64> = (0..n).map(|k| if k + 1 == n { stop } else { at(k) }).collect();
-    // Remove the binary noise of k * step (0.30000000000000004 -> 0.3), where it is noise.
-    crate::numerics::decimal::tidy(&mut out, start, stop);
+    let out = fricosc::spaced(start, stop, n, false);
     if let Some(w) = out.windows(2).find(|w| w[1] <= w[0]) {
         return Err(format!(
             "the range {start:?}:{stop:?} holds fewer than {n} distinct double values ({:?} repeats)",

@@ -1,10 +1,10 @@
-//! `fricosc history`: the force histories of [`crate::history`] as a
+//! `fricosc history`: the force histories of [`fricosc::history`] as a
 //! report (CSV, JSON, the seed's Fig. 2 as SVG).
 
-use crate::cli::error::Result;
-use crate::history::{History, Sample};
+use crate::error::Result;
+use fricosc::history::{History, Sample};
 
-impl crate::cli::export::Report for History {
+impl crate::export::Report for History {
     fn columns(&self) -> Vec<String> {
         ["tau", "normal", "tangential", "event"].map(String::from).to_vec()
     }
@@ -17,7 +17,7 @@ impl crate::cli::export::Report for History {
     }
 
     fn rows(&self) -> Vec<Vec<String>> {
-        let n = crate::cli::output::num;
+        let n = crate::output::num;
         self.samples
             .iter()
             .map(|x| {
@@ -31,7 +31,7 @@ impl crate::cli::export::Report for History {
 
     /// Both forces over the phase (the seed's Fig. 2).
     fn svg(&self) -> Option<Result<String>> {
-        use crate::cli::plot::{Axis, Chart, Series, Style, OKABE_ITO};
+        use crate::plot::{Axis, Chart, Series, Style, OKABE_ITO};
         let pts = |f: fn(&Sample) -> f64| self.samples.iter().map(|x| (x.tau, f(x))).collect::<Vec<_>>();
         let ymax = self.samples.iter().map(|x| x.normal).fold(0.0, f64::max) * 1.05 + 1e-12;
         let series = vec![

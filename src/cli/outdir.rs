@@ -10,7 +10,7 @@
 //! `proj/README.md`. Below the folder, no subfolder may be a symlink (it could
 //! lead out of the folder); the folder itself is the one the user named.
 
-use crate::cli::error::{Error, Result};
+use crate::error::{Error, Result};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 

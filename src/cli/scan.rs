@@ -78,7 +78,7 @@ pub struct Row<'a, const N: usize> {
     /// The wanted fields' raw values (`None` where absent).
     pub fields: [Option<&'a str>; N],
     /// The wanted fields' values where the scan read them as numbers on its
-    /// way ([`crate::cli::float`]'s fast path: `str::parse`'s value), NaN
+    /// way ([`crate::float`]'s fast path: `str::parse`'s value), NaN
     /// elsewhere (absent, not a number, or a number to read from its raw text).
     pub numbers: [f64; N],
 }
@@ -164,7 +164,7 @@ fn string(b: &[u8], mut i: usize) -> Scan<(usize, bool)> {
 fn digits(b: &[u8], mut i: usize) -> usize {
     while let Some(w) = b.get(i..i + 8) {
         let x = u64::from_le_bytes([w[0], w[1], w[2], w[3], w[4], w[5], w[6], w[7]]);
-        if !crate::cli::float::all_digits(x) {
+        if !crate::float::all_digits(x) {
             break;
         }
         i += 8;
@@ -433,7 +433,7 @@ fn quick_row<'a, const N: usize>(text: &'a str, i: usize, keys: &Keys<N>) -> Opt
             b'"' => plain_string_end(b, vs + 1)? + 1,
             b'-' | b'0'..=b'9' => {
                 let end;
-                (end, x) = crate::cli::float::json_number(b, vs)?;
+                (end, x) = crate::float::json_number(b, vs)?;
                 end
             }
             b't' => literal(b, vs, b"true").ok()?,
@@ -557,7 +557,7 @@ impl<'a, const N: usize> Layout<'a, N> {
             let vs = skip(b, colon + 1);
             let (kind, ve) = match b.get(vs)? {
                 b'"' => (Kind::String, plain_string_end(b, vs + 1)? + 1),
-                b'-' | b'0'..=b'9' => (Kind::Number, crate::cli::float::json_number(b, vs)?.0),
+                b'-' | b'0'..=b'9' => (Kind::Number, crate::float::json_number(b, vs)?.0),
                 _ => return None,
             };
             l.pieces[l.values] = Piece::new(&b[start..vs]);
@@ -590,7 +590,7 @@ impl<'a, const N: usize> Layout<'a, N> {
             let vs = j + piece.bytes.len();
             let (ve, x) = match (kind, b.get(vs)?) {
                 (Kind::String, b'"') => (plain_string_end(b, vs + 1)? + 1, f64::NAN),
-                (Kind::Number, b'-' | b'0'..=b'9') => crate::cli::float::json_number(b, vs)?,
+                (Kind::Number, b'-' | b'0'..=b'9') => crate::float::json_number(b, vs)?,
                 _ => return None,
             };
             if let Some(p) = place {
@@ -1008,7 +1008,7 @@ pub fn number_of(raw: &str, name: &str) -> Result<f64, String> {
     if !raw.starts_with(|c: char| c == '-' || c.is_ascii_digit()) {
         return Err(format!("'{name}' must be a number"));
     }
-    match crate::cli::float::f64_of(raw) {
+    match crate::float::f64_of(raw) {
         Ok(x) if x.is_finite() => Ok(x + 0.0),
         _ => Err(format!("'{name}' is not a finite number")),
     }

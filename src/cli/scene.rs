@@ -1,8 +1,8 @@
-//! `fricosc scene`: the core's physical scenes ([`crate::scene`]) read
+//! `fricosc scene`: the core's physical scenes ([`fricosc::scene`]) read
 //! from JSON, with the capped file reader, their schema, and their report.
 
-use crate::cli::error::{Error, Result};
-use crate::scene::{solve_with, Scene, SceneResult};
+use crate::error::{Error, Result};
+use fricosc::scene::{solve_with, Scene, SceneResult};
 
 /// Parse a scene from JSON text; `source` names the file in errors. A scene is a
 /// JSON object: serde would also accept its fields as a positional array.
@@ -21,7 +21,7 @@ pub fn solve(s: &Scene, source: &str) -> Result<Vec<SceneResult>> {
 
 /// [`solve`], calling `progress(k)` after each chunk of `k` velocities.
 pub fn solve_with_progress(s: &Scene, source: &str, progress: &(dyn Fn(u64) + Sync)) -> Result<Vec<SceneResult>> {
-    Ok(solve_with(s, source, &crate::cli::input::small_file, progress)?)
+    Ok(solve_with(s, source, &crate::input::small_file, progress)?)
 }
 
 /// The JSON Schema of the scene file (schemars).
@@ -38,7 +38,7 @@ pub fn length_label(m: f64) -> String {
         _ => (1.0, "m"),
     };
     let v: f64 = format!("{:.3e}", m * scale).parse().unwrap_or(m * scale);
-    format!("{} {unit}", crate::cli::output::num(v).trim_end_matches(".0"))
+    format!("{} {unit}", crate::output::num(v).trim_end_matches(".0"))
 }
 
 /// `mu_macro` against the sliding velocity, one curve per answer (the seed's
@@ -47,8 +47,8 @@ pub fn length_label(m: f64) -> String {
 /// comes with its scene's label; with several scenes the legend names both.
 /// The velocity axis is logarithmic where the velocities are positive and span
 /// two decades or more.
-pub fn family_chart(results: &[(String, SceneResult)]) -> crate::cli::plot::Chart {
-    use crate::cli::plot::{family_color, Axis, Chart, Key, Rule, Series, Style};
+pub fn family_chart(results: &[(String, SceneResult)]) -> crate::plot::Chart {
+    use crate::plot::{family_color, Axis, Chart, Key, Rule, Series, Style};
     let scenes: Vec<&str> = results.iter().fold(vec![], |mut v, (l, _)| {
         if !v.contains(&l.as_str()) {
             v.push(l.as_str());
@@ -92,7 +92,7 @@ pub fn family_chart(results: &[(String, SceneResult)]) -> crate::cli::plot::Char
                 points: r.rows.iter().map(|x| (x.velocity_m_per_s, x.mu_macro)).collect(),
                 // A lone velocity is a point: drawn as a marker.
                 style: if r.rows.len() < 2 {
-                    Style::line(family_color(i, n)).marker(crate::cli::plot::Marker::Circle)
+                    Style::line(family_color(i, n)).marker(crate::plot::Marker::Circle)
                 } else {
                     Style::line(family_color(i, n))
                 },
@@ -109,7 +109,7 @@ pub fn family_chart(results: &[(String, SceneResult)]) -> crate::cli::plot::Char
         }
     }
     if !rules.is_empty() {
-        key.push(Key::Entry(Style::line(crate::cli::plot::Rgb(0x99, 0x99, 0x99)).width(0.5), "0 (μ_{0})".into()));
+        key.push(Key::Entry(Style::line(crate::plot::Rgb(0x99, 0x99, 0x99)).width(0.5), "0 (μ_{0})".into()));
     }
     Chart {
         title: format!("mu_macro against velocity: {}", scenes.join(", ")),
@@ -121,7 +121,7 @@ pub fn family_chart(results: &[(String, SceneResult)]) -> crate::cli::plot::Char
     }
 }
 
-impl crate::cli::export::Report for SceneResult {
+impl crate::export::Report for SceneResult {
     /// One row per velocity.
     fn columns(&self) -> Vec<String> {
         [
@@ -144,8 +144,8 @@ impl crate::cli::export::Report for SceneResult {
 }
 
 /// One scene row as text, in the order of the report's columns.
-pub fn row_cells(x: &crate::scene::Row) -> [String; 8] {
-    let n = crate::cli::output::num;
+pub fn row_cells(x: &fricosc::scene::Row) -> [String; 8] {
+    let n = crate::output::num;
     [
         n(x.velocity_m_per_s),
         n(x.vbar),

@@ -7,7 +7,7 @@
 //! same value a period of the phase later, and continuity in every parameter
 //! (a relative step of 1e-12 moves the value by at most 1e-5).
 
-use crate::shape::Shape;
+use fricosc::Shape;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::time::Instant;
@@ -151,7 +151,7 @@ pub const EDGE_T: [f64; 6] = [5e-324, 1e-300, 1.0 - f64::EPSILON, 1.0, 1.0 + f64
 /// About `points` random and edge points under oscillation in the sliding
 /// direction over `shapes`: how many were run, and the failures described.
 pub fn run_oscillation(points: usize, seed: u64, shapes: &[Shape]) -> (usize, Vec<String>) {
-    use crate::combined::{evaluate, Oscillation};
+    use fricosc::combined::{evaluate, Oscillation};
     let per_shape = points.div_ceil(shapes.len().max(1));
     let jobs: Vec<(usize, u64)> = (0..shapes.len()).flat_map(|s| (0..per_shape as u64).map(move |k| (s, k))).collect();
     let failures = jobs
@@ -181,7 +181,7 @@ pub fn run_oscillation(points: usize, seed: u64, shapes: &[Shape]) -> (usize, Ve
             let here = format!("{} vhat={vhat:e} amp={amp:e} T={t:e} phase={phase:e}", shape.name());
             let eval = |v: f64, a: f64, tt: f64, p: f64| {
                 std::panic::catch_unwind(|| {
-                    Oscillation::new(v, a, tt, p).and_then(|o| evaluate(shape, &o, crate::DEFAULT_TOL))
+                    Oscillation::new(v, a, tt, p).and_then(|o| evaluate(shape, &o, fricosc::DEFAULT_TOL))
                 })
             };
             let mut out = vec![];

@@ -21,9 +21,9 @@
 //! `fricosc suite --check DIR` recomputes every file and compares bytes and
 //! hashes: a suite made by another version is reported file by file.
 
-use crate::cli::error::{Error, Result};
-use crate::cli::output::num;
-use crate::shape::Shape;
+use crate::error::{Error, Result};
+use crate::output::num;
+use fricosc::Shape;
 use sha2::{Digest, Sha256};
 use std::path::Path;
 
@@ -102,7 +102,7 @@ pub fn files() -> Result<Vec<SuiteFile>> {
         [("flat", "flat"), ("parabolic", "parabolic"), ("cone", "cone"), ("tabulated-sphere", TABULATED)]
     {
         // The tabulated sphere's table is built in: the suite is the same from any directory.
-        let shape = crate::shape::Shape::parse_with(spec, &|_| Ok(SPHERE_TABLE.to_string()))?;
+        let shape = fricosc::Shape::parse_with(spec, &|_| Ok(SPHERE_TABLE.to_string()))?;
         let mut rows = vec![];
         for &a in &AMP {
             for &v in &VBAR {
@@ -123,7 +123,7 @@ pub fn files() -> Result<Vec<SuiteFile>> {
     }
     let mut rows = vec![];
     for spec in ["flat", "parabolic", "cone"] {
-        let shape = crate::shape::Shape::parse(spec)?;
+        let shape = fricosc::Shape::parse(spec)?;
         for (v, a) in [(0.0, 0.5), (0.0, 1.5), (1.0 - 1e-3, 0.5), (1.0 - 1e-6, 0.5), (1.0 - 1e-6, 1.5), (0.5, 1.0)] {
             rows.push(value_row(&shape, spec, v, a)?);
         }
@@ -134,13 +134,13 @@ pub fn files() -> Result<Vec<SuiteFile>> {
         command: "fricosc point --shape S --vbar V --amp A (each row)".into(),
     });
     for (v, a) in HISTORIES {
-        let h = crate::history::history(
+        let h = fricosc::history::history(
             &Shape::flat(),
             v,
             a,
-            &crate::history::HistoryOptions::default().with_samples(HISTORY_SAMPLES),
+            &fricosc::history::HistoryOptions::default().with_samples(HISTORY_SAMPLES),
         )?;
-        let event = |e: Option<crate::spring::EventKind>| {
+        let event = |e: Option<fricosc::spring::EventKind>| {
             e.and_then(|k| serde_json::to_value(k).ok())
                 .and_then(|k| k.as_str().map(str::to_string))
                 .unwrap_or_default()
@@ -149,14 +149,14 @@ pub fn files() -> Result<Vec<SuiteFile>> {
         out.push(SuiteFile {
             path: format!("{stem}.csv"),
             // Exactly what the command writes (with its units line).
-            text: crate::cli::export::export(&h, crate::cli::export::Format::Csv)?,
+            text: crate::export::export(&h, crate::export::Format::Csv)?,
             command: format!(
                 "fricosc history --shape flat --vbar {} --amp {} --samples {HISTORY_SAMPLES} --format csv",
                 num(v),
                 num(a)
             ),
         });
-        let p = crate::flat::point(v, a)?;
+        let p = fricosc::flat::point(v, a)?;
         let rows: Vec<Vec<String>> =
             p.events.iter().map(|e| vec![num(e.tau), event(Some(e.kind)), num(e.normal), num(e.tangential)]).collect();
         out.push(SuiteFile {
@@ -218,7 +218,7 @@ should agree to its own discretisation error; `error_bound` is far below that. `
 }
 
 /// Write the suite into the folder `out`.
-pub fn write(out: &crate::cli::outdir::OutDir) -> Result<Vec<String>> {
+pub fn write(out: &crate::outdir::OutDir) -> Result<Vec<String>> {
     let files = files()?;
     let mut written = vec![];
     let mut put = |rel: &str, text: &str| -> Result<()> {
@@ -258,7 +258,7 @@ pub fn check(dir: &Path) -> Result<Vec<String>> {
         match std::fs::symlink_metadata(&p) {
             Ok(m) if !m.is_file() => bad.push(format!("{rel} is not a regular file")),
             Ok(m) if m.len() != text.len() as u64 => bad.push(format!("{rel} differs")),
-            Ok(_) => match crate::io::read_capped(&p.display().to_string(), text.len() as u64) {
+            Ok(_) => match fricosc::io::read_capped(&p.display().to_string(), text.len() as u64) {
                 Ok(found) if found == text => {}
                 Ok(_) => bad.push(format!("{rel} differs")),
                 Err(e) => return Err(Error::read(&p.display().to_string(), e)),

@@ -14,12 +14,12 @@
 //!   with the orient to use;
 //! - JSON Lines (one row object a line, pandas' `lines=True`).
 //!
-//! JSON is read by [`crate::cli::scan`] (no value trees: a column is a vector
+//! JSON is read by [`crate::scan`] (no value trees: a column is a vector
 //! of numbers, 8 bytes a row). Every refusal names the file, the row and what
 //! was expected.
 
-use crate::cli::error::{Error, Result};
-use crate::cli::scan::{self, ScanError};
+use crate::error::{Error, Result};
+use crate::scan::{self, ScanError};
 use std::borrow::Cow;
 
 /// What a wanted column holds.
@@ -173,7 +173,7 @@ fn read_csv(text: &str, source: &str, wanted: &[(&str, Kind)], max_rows: usize) 
     }
     let (first, first_at) = first.ok_or_else(|| err("the table has no rows (only comments or blank lines)".into()))?;
     let numeric = |line: &str, d: Option<u8>| {
-        fields(line, d).is_ok_and(|f| !f.is_empty() && f.iter().all(|x| crate::cli::grid::number(x).is_ok()))
+        fields(line, d).is_ok_and(|f| !f.is_empty() && f.iter().all(|x| crate::grid::number(x).is_ok()))
     };
     // numpy's header is a comment above rows of numbers.
     let (header_line, data_at) = match last_comment {
@@ -213,7 +213,7 @@ fn read_csv(text: &str, source: &str, wanted: &[(&str, Kind)], max_rows: usize) 
         for (k, (name, kind)) in wanted.iter().enumerate() {
             let Some(c) = at[k] else { continue };
             let cell = match kind {
-                Kind::Number => Cell::Number(crate::cli::grid::number(rec[c]).map_err(|e| {
+                Kind::Number => Cell::Number(crate::grid::number(rec[c]).map_err(|e| {
                     let hint = if rec[c].contains(',') && delimiter != Some(b',') {
                         " (decimal commas are not read: write numbers with '.')"
                     } else {

@@ -13,7 +13,7 @@
 //!   [`MAX_SPOOL_BYTES`] bytes, and the reader's own checks (the line cap)
 //!   apply while it is being written.
 
-use crate::cli::error::{Error, Result};
+use crate::error::{Error, Result};
 use std::cell::{Cell, RefCell};
 use std::fs::File;
 use std::io::{self, BufRead, BufReader, Read, Seek, Write};

@@ -2,9 +2,9 @@
 //! parallel chunks; every column kept, `mu_ratio,reduction` appended or filled.
 
 use super::{changed, inputs, too_many, Job, Shapes, CHUNK, MAX_LINE, MAX_STREAM_ROWS};
-use crate::cli::error::{Error, Result};
-use crate::ratio::Ratio;
-use crate::stepper::Stepping;
+use crate::error::{Error, Result};
+use fricosc::stepper::Stepping;
+use fricosc::Ratio;
 use std::io::{self, BufRead, Write};
 
 /// CSV: records read and checked one at a time, evaluated in parallel chunks.
@@ -179,7 +179,7 @@ impl Csv {
             if t.is_empty() && name != "amp" {
                 return Ok(None);
             }
-            match crate::cli::float::f64_of(t) {
+            match crate::float::f64_of(t) {
                 Ok(x) if x.is_finite() => Ok(Some(x + 0.0)),
                 _ => Err(format!("'{name}' is not a finite number: '{t}'")),
             }
@@ -189,7 +189,7 @@ impl Csv {
         // The seed's columns (vbar and amp only, both plain numbers): straight
         // to the check; anything else (an error included) through `inputs`.
         // (A cell the fast path does not read gives None: `inputs` then reads it, or words why not.)
-        let plain = |col: usize| text(col, "").ok().and_then(|t| crate::cli::float::parse(t.trim()));
+        let plain = |col: usize| text(col, "").ok().and_then(|t| crate::float::parse(t.trim()));
         let job = match self.optional {
             [(_, Some(v)), (_, None), (_, None), (_, None)] => match (plain(v), plain(self.cols[1])) {
                 (Some(vbar), Some(amp)) => {

@@ -10,7 +10,7 @@
 //! - A JSON array is read whole (at most 10^7 rows) and each row kept as its raw
 //!   text, borrowed from the input; only the wanted fields are picked out, by
 //!   one strict serial pass that finds and scans the rows at once
-//!   ([`crate::cli::scan::ArrayReader`], a chunk of 65,536 rows at a time, each
+//!   ([`crate::scan::ArrayReader`], a chunk of 65,536 rows at a time, each
 //!   chunk then checked in parallel). Each row is written back as given
 //!   (other fields keep their order and bytes) with
 //!   `"mu_ratio":..,"reduction":..` spliced in before its closing brace. A row
@@ -29,12 +29,12 @@
 //!   appends `mu_ratio,reduction`, or fills those columns where they exist.
 //! - Duplicate keys are refused. Each distinct shape string is parsed once.
 
-use crate::cli::error::{Error, Result};
-use crate::cli::scan::{self, string_of, RowsError};
-use crate::error::check_nonneg;
-use crate::ratio::Ratio;
-use crate::shape::Shape;
-use crate::stepper::Stepping;
+use crate::error::{Error, Result};
+use crate::scan::{self, string_of, RowsError};
+use fricosc::error::check_nonneg;
+use fricosc::stepper::Stepping;
+use fricosc::Ratio;
+use fricosc::Shape;
 use rayon::prelude::*;
 use std::collections::HashMap;
 use std::io::{self, BufRead, Write};
@@ -44,7 +44,7 @@ pub use csv_rows::io_of;
 use csv_rows::stream_csv;
 
 /// Most rows one JSON array may hold.
-pub const MAX_ROWS: usize = crate::cli::grid::MAX_ROWS;
+pub const MAX_ROWS: usize = crate::grid::MAX_ROWS;
 /// Most rows of a streamed batch (JSON Lines, CSV).
 pub const MAX_STREAM_ROWS: u64 = 1_000_000_000;
 /// Longest line of JSON Lines or CSV, in bytes.
@@ -122,7 +122,7 @@ fn inputs(
     let amp = get("amp")?.ok_or("missing field 'amp'")?;
     let (vbar, vhat) = (get("vbar")?, get("vhat")?);
     let (t, phase) = (get("tangential_amp")?, get("phase")?);
-    let err = |e: crate::Error| e.to_string();
+    let err = |e: fricosc::Error| e.to_string();
     if phase.is_some() && t.is_none() {
         return Err("'phase' needs 'tangential_amp'".into());
     }
@@ -136,14 +136,14 @@ fn inputs(
         (None, Some(h), None) => {
             check_nonneg("vhat", h).map_err(err)?;
             check_nonneg("amp", amp).map_err(err)?;
-            crate::vbar_from_vhat(h, amp).map_err(err)?
+            fricosc::vbar_from_vhat(h, amp).map_err(err)?
         }
         (None, Some(h), Some(_)) => h,
     };
     let mut job = shapes.check(shape, vbar, amp, replace).map_err(|e| e.to_string())?;
     if let (Some(vhat), Some(t)) = (vhat, t) {
         let phase = phase.unwrap_or(0.0);
-        crate::combined::Oscillation::new(vhat, amp, t, phase).map_err(err)?;
+        fricosc::combined::Oscillation::new(vhat, amp, t, phase).map_err(err)?;
         job.tangential = Some((vhat, t, phase));
     }
     Ok(job)
@@ -188,7 +188,7 @@ impl Shapes {
         let k = match self.index.get(spec) {
             Some(&k) => k,
             None => {
-                let parsed = crate::cli::input::parse_shape(spec)?;
+                let parsed = crate::input::parse_shape(spec)?;
                 if let Some(st) = self.stepping {
                     st.check(&parsed)?;
                 }
@@ -214,20 +214,22 @@ impl Shapes {
         Ok(Job { shape, replace, vbar, amp, tangential: None })
     }
 
-    fn evaluate(&self, j: &Job) -> crate::Result<Ratio> {
+    fn evaluate(&self, j: &Job) -> fricosc::Result<Ratio> {
         let shape = &self.list[j.shape as usize];
         if let Some((vhat, t, phase)) = j.tangential {
-            let o = crate::combined::Oscillation { vhat, amp: j.amp, tangential_amp: t, phase };
+            let o = fricosc::combined::Oscillation { vhat, amp: j.amp, tangential_amp: t, phase };
             return match self.stepping {
-                Some(st) => crate::stepper::evaluate_oscillation(shape, &o, st, crate::stepper::OSCILLATION_PERIODS)
-                    .map(|e| e.ratio),
-                None => crate::combined::evaluate(shape, &o, crate::DEFAULT_TOL).map(|e| e.ratio),
+                Some(st) => {
+                    fricosc::stepper::evaluate_oscillation(shape, &o, st, fricosc::stepper::OSCILLATION_PERIODS)
+                        .map(|e| e.ratio)
+                }
+                None => fricosc::combined::evaluate(shape, &o, fricosc::DEFAULT_TOL).map(|e| e.ratio),
             };
         }
         match self.stepping {
-            Some(st) => crate::stepper::evaluate(shape, j.vbar, j.amp, st).map(|e| e.ratio),
+            Some(st) => fricosc::stepper::evaluate(shape, j.vbar, j.amp, st).map(|e| e.ratio),
             // Inputs checked with the row (`Shapes::check`): the contact itself.
-            None => shape.contact().ratio(j.vbar, j.amp, crate::DEFAULT_TOL),
+            None => shape.contact().ratio(j.vbar, j.amp, fricosc::DEFAULT_TOL),
         }
     }
 
@@ -237,7 +239,7 @@ impl Shapes {
         let mut out = Vec::with_capacity(jobs.len());
         let filler = Ratio { mu_ratio: 0.0, reduction: 0.0 };
         map_into(jobs, filler, &|_, j| self.evaluate(j), &mut out).map_err(|(i, e)| match e {
-            crate::Error::Internal { what } => Error::Internal { what: format!("{source} {}: {what}", name(i)) },
+            fricosc::Error::Internal { what } => Error::Internal { what: format!("{source} {}: {what}", name(i)) },
             e => Error::Parse { context: source.into(), reason: format!("{}: {e}", name(i)) },
         })?;
         Ok(out)

@@ -2,9 +2,9 @@
 //! with results out, in the same format.
 
 use super::{io_err, read_input};
-use crate::cli::batch::{self, Format};
-use crate::cli::error::Result;
-use crate::stepper::Stepping;
+use crate::batch::{self, Format};
+use crate::error::Result;
+use fricosc::stepper::Stepping;
 use std::io::{self, Write};
 
 #[derive(clap::Args)]
@@ -34,7 +34,7 @@ pub fn run(a: BatchArgs) -> Result<()> {
             // Streaming reads its input twice (check, then compute and write),
             // the second time exactly the bytes the first one checked; an input
             // of one chunk (65,536 rows) once.
-            let input = crate::cli::twopass::TwoPass::open(&path)?;
+            let input = crate::twopass::TwoPass::open(&path)?;
             let open = || input.next_pass();
             let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
             batch::stream(streamed, &open, input.source(), stepping, &mut out).map(|_| ())

@@ -1,8 +1,8 @@
 //! `fricosc bench`: the work-precision benchmark.
 
 use super::emit;
-use crate::cli::error::{Error, Result};
-use crate::cli::export::{export_bytes, Format};
+use crate::error::{Error, Result};
+use crate::export::{export_bytes, Format};
 use clap::Args;
 
 #[derive(Args)]
@@ -18,8 +18,8 @@ pub struct BenchArgs {
 /// Run the benchmark and write its JSON, CSV, SVG and PNG into `--out`.
 pub fn run(a: BenchArgs) -> Result<()> {
     let (out, quick) = (a.out.as_str(), a.quick);
-    let dir = crate::cli::outdir::OutDir::open("--out", out)?;
-    let mut report = crate::cli::bench::run(quick);
+    let dir = crate::outdir::OutDir::open("--out", out)?;
+    let mut report = crate::bench::run(quick);
     if !quick {
         report.instructions = instruction_counts()?;
     }
@@ -67,7 +67,7 @@ fn callgrind(args: &[&str]) -> Option<f64> {
 /// start-up is not counted), over the rows' difference. Rayon runs one thread
 /// (`RAYON_NUM_THREADS=1`): idle worker threads spin, and their instructions
 /// would count as work.
-fn instruction_counts() -> Result<Vec<crate::cli::bench::InstructionCount>> {
+fn instruction_counts() -> Result<Vec<crate::bench::InstructionCount>> {
     // The workloads' input files go in a scratch folder of our own, removed after.
     let scratch = std::env::temp_dir().join(format!("fricosc-bench-{}", std::process::id()));
     std::fs::create_dir(&scratch).map_err(|e| Error::write(&scratch.display().to_string(), e))?;
@@ -76,7 +76,7 @@ fn instruction_counts() -> Result<Vec<crate::cli::bench::InstructionCount>> {
     counts
 }
 
-fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::cli::bench::InstructionCount>> {
+fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::bench::InstructionCount>> {
     // A fixed pseudo-random row set: vbar in [0, 1.2], amp in [0, 3].
     let mut seed = 0x9E3779B97F4A7C15u64;
     let mut rand = || {
@@ -123,7 +123,7 @@ fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::cli::bench:
             (callgrind(&["batch", &big.display().to_string()]), callgrind(&["batch", &one.display().to_string()]));
         let _ = (std::fs::remove_file(&big), std::fs::remove_file(&one));
         let (Some(i_n), Some(i_1)) = counts else { return Ok(vec![]) };
-        out.push(crate::cli::bench::InstructionCount {
+        out.push(crate::bench::InstructionCount {
             workload: workload.into(),
             rows: pts.len(),
             instructions_per_row: (i_n - i_1) / (pts.len() - 1) as f64,
@@ -136,7 +136,7 @@ fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::cli::bench:
 
 /// Instructions per row of `table` (the seed's problem and oscillation in the
 /// sliding direction), against a one-point table.
-fn table_counts() -> Vec<crate::cli::bench::InstructionCount> {
+fn table_counts() -> Vec<crate::bench::InstructionCount> {
     let seed = |shape: &'static str, vbar: &'static str, amp: &'static str| {
         vec!["table", "--shape", shape, "--vbar", vbar, "--amp", amp, "--format", "csv"]
     };
@@ -176,7 +176,7 @@ fn table_counts() -> Vec<crate::cli::bench::InstructionCount> {
     let mut out = vec![];
     for (workload, args, single, rows) in tables {
         if let (Some(t), Some(s)) = (callgrind(&args), callgrind(&single)) {
-            out.push(crate::cli::bench::InstructionCount {
+            out.push(crate::bench::InstructionCount {
                 workload: workload.into(),
                 rows,
                 instructions_per_row: (t - s) / (rows - 1) as f64,

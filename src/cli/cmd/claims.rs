@@ -1,8 +1,8 @@
 //! `fricosc claims`: every quantitative statement of the seed, checked.
 
 use super::emit;
-use crate::cli::error::Result;
-use crate::cli::export::{export, Format};
+use crate::error::Result;
+use crate::export::{export, Format};
 use clap::Args;
 
 #[derive(Args)]
@@ -15,9 +15,9 @@ pub struct ClaimsArgs {
 /// Print the claims as Markdown, JSON or CSV.
 pub fn run(a: ClaimsArgs) -> Result<()> {
     let format = Format::parse(&a.format, &[Format::Markdown, Format::Json, Format::Csv])?;
-    let claims = crate::cli::claims::check();
+    let claims = crate::claims::check();
     let text = match format {
-        Format::Markdown => crate::cli::claims::markdown(&claims),
+        Format::Markdown => crate::claims::markdown(&claims),
         f => export(&claims, f)?,
     };
     emit(if text.ends_with('\n') { text } else { text + "\n" }.as_str())

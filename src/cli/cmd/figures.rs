@@ -1,7 +1,7 @@
 //! `fricosc figures`: the seed's figures, exact, with its approximations.
 
 use super::emit;
-use crate::cli::error::Result;
+use crate::error::Result;
 use clap::Args;
 
 #[derive(Args)]
@@ -14,7 +14,7 @@ pub struct FiguresArgs {
 /// Write every figure into `--out`.
 pub fn run(a: FiguresArgs) -> Result<()> {
     let out = a.out.as_str();
-    let dir = crate::cli::outdir::OutDir::open("--out", out)?;
-    let names = crate::cli::figures::write_all(&dir)?;
+    let dir = crate::outdir::OutDir::open("--out", out)?;
+    let names = crate::figures::write_all(&dir)?;
     emit(&format!("wrote {} figures to {out}: {}\n", names.len(), names.join(", ")))
 }

@@ -1,8 +1,8 @@
 //! `fricosc history`: exact force histories (the seed's Fig. 2).
 
 use super::{emit_bytes, list, number, List, MethodArg, VelocityPoint, DEFAULT_STEPPING};
-use crate::cli::error::{Error, Result};
-use crate::cli::export::{export_bytes, Format};
+use crate::error::{Error, Result};
+use crate::export::{export_bytes, Format};
 use clap::Args;
 
 #[derive(Args)]
@@ -51,7 +51,7 @@ pub fn run(a: HistoryArgs) -> Result<()> {
         (_, None) => None,
     };
     let chosen = a.spring_at.map(|l| l.0).unwrap_or_default();
-    let shape = crate::cli::input::parse_shape(&a.shape)?;
+    let shape = crate::input::parse_shape(&a.shape)?;
     let amp = a.amp;
     let vbar = a.velocity.vbar(amp)?;
     let format = Format::parse(&a.format, &[Format::Json, Format::Csv, Format::Svg, Format::Png])?;
@@ -60,7 +60,7 @@ pub fn run(a: HistoryArgs) -> Result<()> {
         Some(m) => a.periods as u128 * m as u128 + 1,
         None => a.samples as u128 + 1,
     };
-    let limit = crate::cli::figures::MAX_POINTS as u128;
+    let limit = crate::figures::MAX_POINTS as u128;
     if matches!(format, Format::Svg | Format::Png) && drawn > limit {
         return Err(Error::TooLarge {
             what: "samples of a history drawn as SVG or PNG (use csv or json for more)".into(),
@@ -70,22 +70,22 @@ pub fn run(a: HistoryArgs) -> Result<()> {
     }
     let h = match stepping {
         None => {
-            let opts = crate::history::HistoryOptions::default()
+            let opts = fricosc::history::HistoryOptions::default()
                 .with_periods(a.periods)
                 .with_samples(a.samples)
                 .with_springs(a.springs)
                 .with_spring_at(chosen);
-            crate::history::history(&shape, vbar, amp, &opts)?
+            fricosc::history::history(&shape, vbar, amp, &opts)?
         }
         Some(m) => {
             if !shape.is_flat() || !chosen.is_empty() {
-                return Err(crate::Error::InvalidShape {
+                return Err(fricosc::Error::InvalidShape {
                     spec: shape.name().into(),
                     reason: "history --method stepping steps the flat punch (without --spring-at)".into(),
                 }
                 .into());
             }
-            crate::history::stepped_history(vbar, amp, a.periods, m)?
+            fricosc::history::stepped_history(vbar, amp, a.periods, m)?
         }
     };
     let mut bytes = export_bytes(&h, format)?;

@@ -2,10 +2,9 @@
 //! (typed by clap's value parsers), the one checked path to stdout, bounded
 //! input, and the outcome that `main` turns into an exit code.
 
-use crate::cli::error::{Error, Result};
-use crate::shape::check_tol;
-use crate::stepper::Stepping;
+use crate::error::{Error, Result};
 use clap::{Args, Subcommand};
+use fricosc::stepper::Stepping;
 use std::io::{self, Write};
 
 pub mod batch;
@@ -87,7 +86,7 @@ impl Command {
 
 /// clap's value parser of a number: finite (`-0` is 0).
 pub fn number(text: &str) -> std::result::Result<f64, String> {
-    crate::cli::grid::number(text)
+    crate::grid::number(text)
 }
 
 /// clap's value parser of a number `>= 0`.
@@ -110,16 +109,17 @@ pub fn positive(text: &str) -> std::result::Result<f64, String> {
 
 /// clap's value parser of a quadrature tolerance: finite, in `(0, 1)`.
 pub fn tolerance(text: &str) -> std::result::Result<f64, String> {
-    check_tol(number(text)?).map_err(|e| e.to_string())
+    let tol = number(text)?;
+    fricosc::Options::default().with_tol(tol).check().map(|()| tol).map_err(|e| e.to_string())
 }
 
-/// A list of values: a comma list or `start:stop:count` ([`crate::cli::grid::values`]).
+/// A list of values: a comma list or `start:stop:count` ([`crate::grid::values`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct List(pub Vec<f64>);
 
 /// clap's value parser of a [`List`].
 pub fn list(text: &str) -> std::result::Result<List, String> {
-    crate::cli::grid::values(text).map(List)
+    crate::grid::values(text).map(List)
 }
 
 /// The velocity of one point, as vbar (eq. 3) or vhat (eq. 15, vbar = vhat / amp).
@@ -184,10 +184,10 @@ pub struct TangentialPoint {
 
 impl TangentialPoint {
     /// The oscillation at `vhat` and `amp`, if a tangential amplitude was given.
-    pub fn oscillation(&self, velocity: &VelocityPoint, amp: f64) -> Result<Option<crate::combined::Oscillation>> {
+    pub fn oscillation(&self, velocity: &VelocityPoint, amp: f64) -> Result<Option<fricosc::combined::Oscillation>> {
         let Some(t) = self.tangential_amp else { return Ok(None) };
         let vhat = vhat_for_tangential(velocity.vbar.is_some(), velocity.vhat)?;
-        Ok(Some(crate::combined::Oscillation::new(vhat, amp, t, self.phase.unwrap_or(0.0))?))
+        Ok(Some(fricosc::combined::Oscillation::new(vhat, amp, t, self.phase.unwrap_or(0.0))?))
     }
 }
 
@@ -290,13 +290,13 @@ pub struct Common {
 
 impl Common {
     /// The evaluation options.
-    pub fn options(&self) -> crate::Options {
-        crate::Options::default().with_tol(self.tol.unwrap_or(crate::DEFAULT_TOL))
+    pub fn options(&self) -> fricosc::Options {
+        fricosc::Options::default().with_tol(self.tol.unwrap_or(fricosc::DEFAULT_TOL))
     }
 }
 
 pub fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
-    Ok(crate::vbar_from_vhat(vhat, amp)?)
+    Ok(fricosc::vbar_from_vhat(vhat, amp)?)
 }
 
 /// `text` with its control characters escaped (`\u{1b}` for an escape), so
@@ -331,7 +331,7 @@ pub fn emit_bytes(bytes: &[u8]) -> Result<()> {
 
 /// An SVG document rendered as PNG (an internal error if our own SVG does not render).
 pub fn png_of(svg: &str) -> Result<Vec<u8>> {
-    crate::cli::plot::png(svg).map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") })
+    crate::plot::png(svg).map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") })
 }
 
 /// Whether a drawing's file name asks for a PNG (`.png`) or an SVG (`.svg`);
@@ -351,7 +351,7 @@ pub fn drawing_kind(option: &str, path: &str) -> Result<bool> {
 pub fn write_drawing(option: &str, path: &str, svg: &str) -> Result<()> {
     if drawing_kind(option, path)? {
         let png = png_of(svg)?;
-        crate::cli::outdir::write_atomic(std::path::Path::new(path), &png)
+        crate::outdir::write_atomic(std::path::Path::new(path), &png)
     } else {
         write_file(option, path, svg)
     }
@@ -359,7 +359,7 @@ pub fn write_drawing(option: &str, path: &str, svg: &str) -> Result<()> {
 
 pub fn read_input(file: Option<String>) -> Result<(String, String)> {
     let path = file.unwrap_or_else(|| "-".into());
-    let text = crate::cli::input::read_capped(&path, crate::cli::input::MAX_TABLE_BYTES)?;
+    let text = crate::input::read_capped(&path, crate::input::MAX_TABLE_BYTES)?;
     Ok((text, if path == "-" { "stdin".into() } else { path }))
 }
 
@@ -374,5 +374,5 @@ pub fn write_file(option: &str, path: &str, text: &str) -> Result<()> {
     if path.trim().is_empty() {
         return Err(Error::Parse { context: option.into(), reason: "the file name is empty".into() });
     }
-    crate::cli::outdir::write_atomic(std::path::Path::new(path), text.as_bytes())
+    crate::outdir::write_atomic(std::path::Path::new(path), text.as_bytes())
 }

@@ -1,7 +1,7 @@
 //! `fricosc plot`: the user's own curves in the style of the seed's figures.
 
 use super::{drawing_kind, emit, list, write_drawing, List, VelocityList};
-use crate::cli::error::Result;
+use crate::error::Result;
 use clap::Args;
 
 #[derive(Args)]
@@ -38,26 +38,26 @@ pub fn run(a: PlotArgs) -> Result<()> {
     if let Some(path) = &a.out {
         drawing_kind("--out", path)?;
     }
-    let shape = crate::cli::input::parse_shape(&a.shape)?;
+    let shape = crate::input::parse_shape(&a.shape)?;
     let (xs, vhat) = a.velocity.values();
     let tangential = a.tangential_amp.map(|t| (t, a.phase.unwrap_or(0.0)));
-    let mut fig = crate::cli::figures::user_with(&shape, &a.amp.0, xs, vhat, tangential)?;
+    let mut fig = crate::figures::user_with(&shape, &a.amp.0, xs, vhat, tangential)?;
     if let Some(file) = &a.overlay {
         let (text, source) = super::read_input(Some(file.clone()))?;
-        let table = crate::cli::validate::read_table(&text, &source)?;
+        let table = crate::validate::read_table(&text, &source)?;
         if let Some(named) = &table.shape {
-            if crate::cli::input::parse_shape(named)?.name() != shape.name() {
-                return Err(crate::cli::error::Error::Parse {
+            if crate::input::parse_shape(named)?.name() != shape.name() {
+                return Err(crate::error::Error::Parse {
                     context: source,
                     reason: format!("its points are for shape '{named}', the plot is for '{}'", shape.name()),
                 });
             }
         }
-        let rows = crate::cli::validate::normalise(&table, a.mu0, &source)?;
+        let rows = crate::validate::normalise(&table, a.mu0, &source)?;
         let name = std::path::Path::new(&source).file_name().map_or(source.clone(), |n| n.to_string_lossy().into());
-        crate::cli::figures::overlay(&mut fig, &rows, &name)?;
+        crate::figures::overlay(&mut fig, &rows, &name)?;
     }
-    let svg = crate::cli::figures::chart(&fig).svg();
+    let svg = crate::figures::chart(&fig).svg();
     match &a.out {
         Some(path) => write_drawing("--out", path, &svg),
         None => emit(&svg),

@@ -1,9 +1,9 @@
 //! `fricosc point`: one point with its regime, events and bands (JSON).
 
 use super::{io_err, number, Common, TangentialPoint, VelocityPoint};
-use crate::cli::error::{Error, Result};
-use crate::shape::Shape;
+use crate::error::{Error, Result};
 use clap::Args;
+use fricosc::Shape;
 use std::io::{self, Write};
 
 #[derive(Args)]
@@ -21,15 +21,15 @@ pub struct PointArgs {
 
 /// A point under oscillation in the sliding direction: the inputs, the answer
 /// and the flat punch's spring (phases and events) or a curved contact's bands.
-fn combined_point(shape: &Shape, o: &crate::combined::Oscillation, common: &Common) -> Result<serde_json::Value> {
+fn combined_point(shape: &Shape, o: &fricosc::combined::Oscillation, common: &Common) -> Result<serde_json::Value> {
     let mut v = serde_json::json!({"vhat": o.vhat, "amp": o.amp, "tangential_amp": o.tangential_amp, "phase": o.phase});
     let body = match common.method.stepping()? {
         Some(st) => {
-            let e = crate::stepper::evaluate_oscillation(shape, o, st, crate::stepper::OSCILLATION_PERIODS)?;
+            let e = fricosc::stepper::evaluate_oscillation(shape, o, st, fricosc::stepper::OSCILLATION_PERIODS)?;
             serde_json::json!({"mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction, "method": "stepping",
                 "steps": e.steps, "springs": e.springs, "period_change": e.period_change})
         }
-        None => serde_json::to_value(crate::combined::evaluate(shape, o, common.options().tol)?)
+        None => serde_json::to_value(fricosc::combined::evaluate(shape, o, common.options().tol)?)
             .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?,
     };
     if let (serde_json::Value::Object(m), serde_json::Value::Object(b)) = (&mut v, body) {
@@ -38,13 +38,13 @@ fn combined_point(shape: &Shape, o: &crate::combined::Oscillation, common: &Comm
     Ok(v)
 }
 
-fn exact_point(shape: &Shape, vbar: f64, amp: f64, opts: &crate::Options) -> Result<serde_json::Value> {
+fn exact_point(shape: &Shape, vbar: f64, amp: f64, opts: &fricosc::Options) -> Result<serde_json::Value> {
     serde_json::to_value(shape.point(vbar, amp, opts)?)
         .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
 }
 
 pub fn run(a: PointArgs) -> Result<()> {
-    let shape = crate::cli::input::parse_shape(&a.common.shape)?;
+    let shape = crate::input::parse_shape(&a.common.shape)?;
     let amp = a.amp;
     let body = if let Some(o) = a.tangential.oscillation(&a.velocity, amp)? {
         combined_point(&shape, &o, &a.common)?
@@ -67,7 +67,7 @@ fn normal_point(shape: &Shape, a: &PointArgs, amp: f64) -> Result<serde_json::Va
     let vbar = a.velocity.vbar(amp)?;
     Ok(match a.common.method.stepping()? {
         Some(st) => {
-            let e = crate::stepper::evaluate(shape, vbar, amp, st)?;
+            let e = fricosc::stepper::evaluate(shape, vbar, amp, st)?;
             serde_json::json!({"vbar": vbar, "amp": amp, "mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction,
                 "method": "stepping", "steps": e.steps, "springs": e.springs, "period_change": e.period_change})
         }

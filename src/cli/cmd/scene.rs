@@ -1,8 +1,8 @@
 //! `fricosc scene`: physical scenes in SI units.
 
 use super::emit;
-use crate::cli::error::{Error, Result};
-use crate::cli::output::Format;
+use crate::error::{Error, Result};
+use crate::output::Format;
 use rayon::prelude::*;
 use std::io::{self, IsTerminal, Write};
 
@@ -25,7 +25,7 @@ pub struct SceneArgs {
 pub fn run(a: SceneArgs) -> Result<()> {
     let SceneArgs { files, schema, format, plot } = a;
     if schema {
-        return emit(&format!("{}\n", crate::cli::scene::schema()));
+        return emit(&format!("{}\n", crate::scene::schema()));
     }
     if let Some(path) = &plot {
         super::drawing_kind("--plot", path)?;
@@ -34,29 +34,29 @@ pub fn run(a: SceneArgs) -> Result<()> {
         return Err(Error::Parse { context: "scene".into(), reason: "give a scene file (or --schema)".into() });
     }
     // Read and solve everything before the first byte is written.
-    let scenes: Vec<Result<crate::scene::Scene>> = files
+    let scenes: Vec<Result<fricosc::scene::Scene>> = files
         .iter()
         .map(|f| {
-            let text = crate::cli::input::read_capped(f, crate::cli::input::MAX_SMALL_BYTES)?;
-            crate::cli::scene::parse(&text, f)
+            let text = crate::input::read_capped(f, crate::input::MAX_SMALL_BYTES)?;
+            crate::scene::parse(&text, f)
         })
         .collect();
     let scenes = scenes.into_iter().collect::<Result<Vec<_>>>()?;
     // A progress bar on stderr only when it is a terminal and the work is long.
-    let total: usize = scenes.iter().map(crate::scene::velocity_count).sum();
+    let total: usize = scenes.iter().map(fricosc::scene::velocity_count).sum();
     let bar = (std::io::stderr().is_terminal() && total >= 2000).then(|| Progress::new(total as u64));
     let tick = |k: u64| {
         if let Some(b) = &bar {
             b.inc(k);
         }
     };
-    let results: Vec<Result<Vec<crate::scene::SceneResult>>> =
-        scenes.par_iter().zip(&files).map(|(s, f)| crate::cli::scene::solve_with_progress(s, f, &tick)).collect();
+    let results: Vec<Result<Vec<fricosc::scene::SceneResult>>> =
+        scenes.par_iter().zip(&files).map(|(s, f)| crate::scene::solve_with_progress(s, f, &tick)).collect();
     if let Some(b) = &bar {
         b.finish();
     }
     // Each answer (one per amplitude) with its scene's label: its name, or its file.
-    let mut labelled: Vec<(String, crate::scene::SceneResult)> = vec![];
+    let mut labelled: Vec<(String, fricosc::scene::SceneResult)> = vec![];
     for (r, f) in results.into_iter().zip(&files) {
         labelled.extend(r?.into_iter().map(|x| (x.name.clone().unwrap_or_else(|| f.clone()), x)));
     }
@@ -66,10 +66,10 @@ pub fn run(a: SceneArgs) -> Result<()> {
         }
     }
     if let Some(path) = &plot {
-        let svg = crate::cli::scene::family_chart(&labelled).svg();
+        let svg = crate::scene::family_chart(&labelled).svg();
         super::write_drawing("--plot", path, &svg)?;
     }
-    let results: Vec<&crate::scene::SceneResult> = labelled.iter().map(|(_, r)| r).collect();
+    let results: Vec<&fricosc::scene::SceneResult> = labelled.iter().map(|(_, r)| r).collect();
     // One shape of output whatever the number of files: a JSON list, and CSV in
     // long form (one header; each row with its scene and the scene's results).
     // Everything is computed; now it is written as it is formatted (a row's
@@ -88,11 +88,11 @@ pub fn run(a: SceneArgs) -> Result<()> {
 /// Every scene's rows in one CSV table: the scene (its name, or its file), the
 /// scene-level results repeated on each row (one amplitude of a family each),
 /// then the row's own columns.
-fn scenes_csv(out: &mut dyn Write, results: &[(String, crate::scene::SceneResult)]) -> io::Result<()> {
-    use crate::cli::export::Report;
-    let n = crate::cli::output::num;
+fn scenes_csv(out: &mut dyn Write, results: &[(String, fricosc::scene::SceneResult)]) -> io::Result<()> {
+    use crate::export::Report;
+    let n = crate::output::num;
     let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(out);
-    let fail = crate::cli::batch::io_of;
+    let fail = crate::batch::io_of;
     let scene_cols = ["scene", "u0_m", "du_m", "amp", "contact_radius_m", "critical_velocity_m_per_s", "mu_static"];
     let mut header: Vec<String> = scene_cols.map(String::from).to_vec();
     if let Some((_, r)) = results.first() {
@@ -110,7 +110,7 @@ fn scenes_csv(out: &mut dyn Write, results: &[(String, crate::scene::SceneResult
             n(r.mu_static),
         ];
         for x in r.rows.iter() {
-            w.write_record(scene.iter().chain(&crate::cli::scene::row_cells(&x))).map_err(fail)?;
+            w.write_record(scene.iter().chain(&crate::scene::row_cells(&x))).map_err(fail)?;
         }
     }
     w.flush()

@@ -1,7 +1,7 @@
 //! `fricosc stress`: random and edge points through every check.
 
 use super::{emit, to_json, Outcome};
-use crate::cli::error::{Error, Result};
+use crate::error::{Error, Result};
 use clap::Args;
 
 #[derive(Args)]
@@ -23,7 +23,7 @@ pub fn run(a: StressArgs) -> Result<Outcome> {
     if points > MAX_POINTS {
         return Err(Error::TooLarge { what: "stress points".into(), count: points as u128, limit: MAX_POINTS as u128 });
     }
-    let r = crate::cli::stress::run(points, seed, &crate::cli::stress::default_shapes());
+    let r = crate::stress::run(points, seed, &crate::stress::default_shapes());
     emit(&format!("{}\n", to_json(&r)?))?;
     Ok(if r.failure_count == 0 { Outcome::Done } else { Outcome::Negative })
 }

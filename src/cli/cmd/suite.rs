@@ -1,7 +1,7 @@
 //! `fricosc suite`: write the reference suite, or check a copy of it.
 
 use super::{emit, Outcome};
-use crate::cli::error::Result;
+use crate::error::Result;
 use clap::Args;
 
 #[derive(Args)]
@@ -19,29 +19,26 @@ pub struct SuiteArgs {
 pub fn run(a: SuiteArgs) -> Result<Outcome> {
     match (a.out, a.check) {
         (Some(dir), None) => {
-            let out = crate::cli::outdir::OutDir::open("--out", &dir)?;
-            let files = crate::cli::suite::write(&out)?;
+            let out = crate::outdir::OutDir::open("--out", &dir)?;
+            let files = crate::suite::write(&out)?;
             emit(&format!(
                 "wrote the reference suite (version {}) to {dir}: {} files\n",
-                crate::cli::suite::SUITE_VERSION,
+                crate::suite::SUITE_VERSION,
                 files.len()
             ))?;
             Ok(Outcome::Done)
         }
         (None, Some(dir)) => {
-            let bad = crate::cli::suite::check(std::path::Path::new(&dir))?;
+            let bad = crate::suite::check(std::path::Path::new(&dir))?;
             if bad.is_empty() {
-                emit(&format!(
-                    "{dir}: the reference suite (version {}) is current\n",
-                    crate::cli::suite::SUITE_VERSION
-                ))?;
+                emit(&format!("{dir}: the reference suite (version {}) is current\n", crate::suite::SUITE_VERSION))?;
                 Ok(Outcome::Done)
             } else {
                 emit(&format!("{dir}: {}\n", bad.join("; ")))?;
                 Ok(Outcome::Negative)
             }
         }
-        _ => Err(crate::cli::error::Error::Parse {
+        _ => Err(crate::error::Error::Parse {
             context: "suite".into(),
             reason: "give exactly one of --out DIR (write) and --check DIR (verify)".into(),
         }),

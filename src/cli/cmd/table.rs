@@ -1,8 +1,8 @@
 //! `fricosc table`: a grid of amplitudes x velocities (JSON or CSV).
 
 use super::{io_err, list, vbar_of, Common, List, TangentialList, VelocityList};
-use crate::cli::error::{Error, Result};
-use crate::cli::output::{Cell, Format, TableWriter, Text};
+use crate::error::{Error, Result};
+use crate::output::{Cell, Format, TableWriter, Text};
 use clap::Args;
 use rayon::prelude::*;
 use std::io;
@@ -25,15 +25,15 @@ pub struct TableArgs {
 
 /// A table under oscillation in the sliding direction: every (amp, T, phase,
 /// vhat), columns vhat, amp, tangential_amp, phase, mu_ratio, reduction.
-fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases: &[f64]) -> Result<()> {
+fn combined_table(a: &TableArgs, shape: &fricosc::Shape, ts: &[f64], phases: &[f64]) -> Result<()> {
     let (vels, _) = a.velocity.values();
     let amps = &a.amp.0;
     let total = [amps.len(), ts.len(), phases.len(), vels.len()].iter().map(|&n| n as u128).product::<u128>();
-    if total > crate::cli::grid::MAX_LIST {
+    if total > crate::grid::MAX_LIST {
         return Err(Error::TooLarge {
             what: "table rows (amplitudes x tangential amplitudes x phases x velocities)".into(),
             count: total,
-            limit: crate::cli::grid::MAX_LIST,
+            limit: crate::grid::MAX_LIST,
         });
     }
     let mut points = Vec::with_capacity(total as usize);
@@ -42,8 +42,8 @@ fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases
             for &phase in phases {
                 for &v in vels {
                     // Checked before any work (and the phase kept as given).
-                    crate::combined::Oscillation::new(v, amp, t, phase)?;
-                    points.push(crate::combined::Oscillation { vhat: v, amp, tangential_amp: t, phase });
+                    fricosc::combined::Oscillation::new(v, amp, t, phase)?;
+                    points.push(fricosc::combined::Oscillation { vhat: v, amp, tangential_amp: t, phase });
                 }
             }
         }
@@ -58,9 +58,9 @@ fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases
         .map(|o| {
             let r = match stepping {
                 Some(st) => {
-                    crate::stepper::evaluate_oscillation(shape, o, st, crate::stepper::OSCILLATION_PERIODS)?.ratio
+                    fricosc::stepper::evaluate_oscillation(shape, o, st, fricosc::stepper::OSCILLATION_PERIODS)?.ratio
                 }
-                None => crate::combined::evaluate(shape, o, tol)?.ratio,
+                None => fricosc::combined::evaluate(shape, o, tol)?.ratio,
             };
             Ok([r.mu_ratio, r.reduction])
         })
@@ -92,7 +92,7 @@ fn combined_table(a: &TableArgs, shape: &crate::shape::Shape, ts: &[f64], phases
 const ROWS_PER_TASK: usize = 64;
 
 pub fn run(a: TableArgs) -> Result<()> {
-    let shape = crate::cli::input::parse_shape(&a.common.shape)?;
+    let shape = crate::input::parse_shape(&a.common.shape)?;
     let opts = a.common.options();
     let amps = &a.amp.0;
     let (vels, is_vhat) = a.velocity.values();
@@ -100,19 +100,19 @@ pub fn run(a: TableArgs) -> Result<()> {
         return combined_table(&a, &shape, &ts, &phases);
     }
     let total = amps.len() as u128 * vels.len() as u128;
-    if total > crate::cli::grid::MAX_LIST {
+    if total > crate::grid::MAX_LIST {
         return Err(Error::TooLarge {
             what: "table rows (amplitudes x velocities)".into(),
             count: total,
-            limit: crate::cli::grid::MAX_LIST,
+            limit: crate::grid::MAX_LIST,
         });
     }
     // Validate every input before the first byte is written.
     for &amp in amps {
-        crate::error::check_nonneg("amp", amp)?;
+        fricosc::error::check_nonneg("amp", amp)?;
         for &v in vels {
             let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
-            crate::error::check_nonneg(if is_vhat { "vhat" } else { "vbar" }, vbar)?;
+            fricosc::error::check_nonneg(if is_vhat { "vhat" } else { "vbar" }, vbar)?;
         }
     }
     let mut cols = vec!["vbar", "amp", "mu_ratio", "reduction"];
@@ -142,7 +142,7 @@ pub fn run(a: TableArgs) -> Result<()> {
             (a_i, v_i) = if v_i + 1 == vels.len() { (a_i + 1, 0) } else { (a_i, v_i + 1) };
             let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
             let r = match stepping {
-                Some(st) => crate::stepper::evaluate(&shape, vbar, amp, st)?.ratio,
+                Some(st) => fricosc::stepper::evaluate(&shape, vbar, amp, st)?.ratio,
                 // Inputs and options checked above, once: the contact itself.
                 None => contact.ratio(vbar, amp, opts.tol)?,
             };

@@ -2,10 +2,10 @@
 //! errors by regime and amplitude and findings that point at bugs.
 
 use super::{io_err, nonneg, number, positive, read_input, Outcome};
-use crate::cli::error::{Error, Result};
-use crate::shape::Shape;
-use crate::stepper::Stepping;
-use crate::validation::{AtRest, Check, Convergence, HistoryData, HistoryValidation, TimeAxis, Validation};
+use crate::error::{Error, Result};
+use fricosc::stepper::Stepping;
+use fricosc::validation::{AtRest, Check, Convergence, HistoryData, HistoryValidation, TimeAxis, Validation};
+use fricosc::Shape;
 use std::io::{self, IsTerminal, Write};
 
 /// The options of `validate`.
@@ -182,17 +182,17 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
         });
     }
     let (text, source) = read_input(Some(a.files[0].clone()))?;
-    let table = crate::cli::validate::read_table(&text, &source)?;
+    let table = crate::validate::read_table(&text, &source)?;
     drop(text);
     let (shape, shape_source) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
     let peer = a.peer.map(|m| Stepping { steps_per_period: m as usize, springs: a.peer_springs.unwrap_or(m) as usize });
     if table.tangential.is_some() {
-        let rows = crate::cli::validate::oscillation_rows(&table, mu0, &source)?;
-        let v = crate::validation::compare_oscillation(&shape, &rows, &check.with_peer(peer))?;
+        let rows = crate::validate::oscillation_rows(&table, mu0, &source)?;
+        let v = fricosc::validation::compare_oscillation(&shape, &rows, &check.with_peer(peer))?;
         #[derive(serde::Serialize)]
         struct OscillationReport<'a> {
             #[serde(flatten)]
-            validation: &'a crate::validation::OscillationValidation,
+            validation: &'a fricosc::validation::OscillationValidation,
             shape_source: ShapeSource,
             format: &'a str,
             #[serde(skip_serializing_if = "<[String]>::is_empty")]
@@ -206,20 +206,20 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
         };
         let body = match format.as_str() {
             "json" => compact(&report)?,
-            "csv" => crate::cli::validate::oscillation_csv(&v)?,
-            _ => crate::cli::validate::oscillation_summary(&v, &source),
+            "csv" => crate::validate::oscillation_csv(&v)?,
+            _ => crate::validate::oscillation_summary(&v, &source),
         };
         print(&body)?;
         return Ok(outcome(&a, !v.findings.is_empty(), max_error.map_or(0.0, |_| v.summary.max_abs_error)));
     }
-    let rows = crate::cli::validate::normalise(&table, mu0, &source)?;
-    let v = crate::validation::compare(&shape, &rows, &check.with_peer(peer))?;
+    let rows = crate::validate::normalise(&table, mu0, &source)?;
+    let v = fricosc::validation::compare(&shape, &rows, &check.with_peer(peer))?;
     let report =
         Report { validation: &v, shape_source, format: &table.format, ignored_columns: &table.ignored_columns };
     let body = match format.as_str() {
         "json" => compact(&report)?,
-        "csv" => crate::cli::validate::rows_csv(&v)?,
-        _ => crate::cli::validate::summary(&v, &report_source(&report), &table),
+        "csv" => crate::validate::rows_csv(&v)?,
+        _ => crate::validate::summary(&v, &report_source(&report), &table),
     };
     print(&body)?;
     Ok(outcome(&a, !v.findings.is_empty(), max_error.map_or(0.0, |_| v.max_abs_error)))
@@ -238,7 +238,7 @@ fn report_source(r: &Report) -> String {
 fn choose_shape(file: Option<&str>, option: Option<&str>, source: &str) -> Result<(Shape, ShapeSource)> {
     Ok(match (file, option) {
         (Some(f), Some(o)) => {
-            let (fs, os) = (crate::cli::input::parse_shape(f)?, crate::cli::input::parse_shape(o)?);
+            let (fs, os) = (crate::input::parse_shape(f)?, crate::input::parse_shape(o)?);
             if fs.name() != os.name() {
                 return Err(Error::Parse {
                     context: source.into(),
@@ -247,8 +247,8 @@ fn choose_shape(file: Option<&str>, option: Option<&str>, source: &str) -> Resul
             }
             (fs, ShapeSource::File)
         }
-        (Some(f), None) => (crate::cli::input::parse_shape(f)?, ShapeSource::File),
-        (None, Some(o)) => (crate::cli::input::parse_shape(o)?, ShapeSource::Option),
+        (Some(f), None) => (crate::input::parse_shape(f)?, ShapeSource::File),
+        (None, Some(o)) => (crate::input::parse_shape(o)?, ShapeSource::Option),
         (None, None) => (Shape::flat(), ShapeSource::Default),
     })
 }
@@ -300,7 +300,7 @@ fn run_series(a: &ValidateArgs, check: &Check, mu0: Option<f64>, format: &str) -
     for arg in &a.files {
         let (file, n) = file_and_resolution(arg)?;
         let (text, source) = read_input(Some(file))?;
-        let table = crate::cli::validate::read_table(&text, &source)?;
+        let table = crate::validate::read_table(&text, &source)?;
         let (shape, src) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
         if let Some((s, _)) = &chosen {
             if s.name() != shape.name() {
@@ -311,19 +311,19 @@ fn run_series(a: &ValidateArgs, check: &Check, mu0: Option<f64>, format: &str) -
             }
         }
         chosen = Some((shape, src));
-        tables.push(crate::cli::validate::normalise(&table, mu0, &source)?);
+        tables.push(crate::validate::normalise(&table, mu0, &source)?);
         resolutions.push(n);
     }
     let (shape, shape_source) = chosen.ok_or_else(|| Error::Internal { what: "an empty series".into() })?;
-    let c = crate::validation::convergence(&shape, &resolutions, &tables, check, target)?;
+    let c = fricosc::validation::convergence(&shape, &resolutions, &tables, check, target)?;
     if let Some(path) = &a.plot {
-        let svg = crate::cli::validate::series_svg(&c)?;
+        let svg = crate::validate::series_svg(&c)?;
         super::write_drawing("--plot", path, &svg)?;
     }
     let body = match format {
         "json" => compact(&SeriesReport { convergence: &c, shape_source })?,
-        "csv" => crate::cli::validate::series_csv(&c)?,
-        _ => crate::cli::validate::series_summary(&c),
+        "csv" => crate::validate::series_csv(&c)?,
+        _ => crate::validate::series_summary(&c),
     };
     print(&body)?;
     let worst = c.rows.iter().filter_map(|r| r.errors.last()).fold(0.0f64, |m, e| m.max(e.abs()));
@@ -339,7 +339,7 @@ fn history_of(
     tolerance: f64,
 ) -> Result<(HistoryValidation, String)> {
     let shape = match &a.shape {
-        Some(spec) => crate::cli::input::parse_shape(spec)?,
+        Some(spec) => crate::input::parse_shape(spec)?,
         None => Shape::flat(),
     };
     let amp = h.amp.unwrap_or(0.0);
@@ -349,7 +349,7 @@ fn history_of(
         _ => return Err(Error::Parse { context: "--history".into(), reason: "needs one of --vbar and --vhat".into() }),
     };
     let (text, source) = read_input(Some(file.to_string()))?;
-    let c = crate::cli::validate::read_history(&text, &source, h.static_force.unwrap_or(1.0), mu0.unwrap_or(1.0))?;
+    let c = crate::validate::read_history(&text, &source, h.static_force.unwrap_or(1.0), mu0.unwrap_or(1.0))?;
     drop(text);
     let time = if c.is_tau { TimeAxis::Phase(&c.time) } else { TimeAxis::Time { t: &c.time, omega: h.omega } };
     if c.is_tau && h.omega.is_some() {
@@ -359,8 +359,8 @@ fn history_of(
         });
     }
     let data = HistoryData { time, tangential: &c.tangential, normal: c.normal.as_deref() };
-    let v = crate::validation::compare_history(&shape, vbar, amp, &data, tolerance).map_err(|e| match e {
-        crate::Error::Parse { context, reason } => Error::Parse { context: format!("{source}: {context}"), reason },
+    let v = fricosc::validation::compare_history(&shape, vbar, amp, &data, tolerance).map_err(|e| match e {
+        fricosc::Error::Parse { context, reason } => Error::Parse { context: format!("{source}: {context}"), reason },
         e => Error::Core(e),
     })?;
     Ok((v, c.format))
@@ -376,8 +376,8 @@ fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f
     let (v, read_as) = history_of(a, h, &a.files[0], mu0, tolerance)?;
     let body = match format {
         "json" => compact(&v)?,
-        "csv" => crate::cli::validate::history_csv(&v)?,
-        _ => crate::cli::validate::history_summary(&v, &read_as),
+        "csv" => crate::validate::history_csv(&v)?,
+        _ => crate::validate::history_summary(&v, &read_as),
     };
     print(&body)?;
     Ok(outcome(a, !v.findings.is_empty(), v.max_abs_error))
@@ -394,7 +394,7 @@ struct HistorySeries {
     /// Per event kind: the timing errors (one per resolution) and their order.
     events: Vec<EventSeries>,
     /// The findings of the finest history.
-    findings: Vec<crate::validation::Finding>,
+    findings: Vec<fricosc::validation::Finding>,
 }
 
 #[derive(serde::Serialize)]
@@ -422,8 +422,8 @@ fn run_history_series(
     runs.sort_by(|x, y| x.0.total_cmp(&y.0));
     let resolutions: Vec<f64> = runs.iter().map(|r| r.0).collect();
     let max_abs_errors: Vec<f64> = runs.iter().map(|r| r.1.max_abs_error).collect();
-    let (order, constant) = crate::validation::observed_order(&resolutions, &max_abs_errors);
-    let mut kinds: Vec<crate::spring::EventKind> = runs[0].1.exact_events.iter().map(|e| e.kind).collect();
+    let (order, constant) = fricosc::validation::observed_order(&resolutions, &max_abs_errors);
+    let mut kinds: Vec<fricosc::spring::EventKind> = runs[0].1.exact_events.iter().map(|e| e.kind).collect();
     kinds.dedup();
     let events = kinds
         .iter()
@@ -433,9 +433,9 @@ fn run_history_series(
             let (res, errs): (Vec<f64>, Vec<f64>) =
                 resolutions.iter().zip(&timing_errors).filter_map(|(r, e)| e.map(|e| (*r, e))).unzip();
             EventSeries {
-                kind: crate::cli::validate::json_name(k),
+                kind: crate::validate::json_name(k),
                 timing_errors,
-                order: crate::validation::observed_order(&res, &errs).0,
+                order: fricosc::validation::observed_order(&res, &errs).0,
             }
         })
         .collect();
@@ -445,7 +445,7 @@ fn run_history_series(
         "csv" => {
             let mut t = String::from("resolution,max_abs_error\n");
             for (r, e) in report.resolutions.iter().zip(&report.max_abs_errors) {
-                t += &format!("{},{}\n", crate::cli::output::num(*r), crate::cli::output::num(*e));
+                t += &format!("{},{}\n", crate::output::num(*r), crate::output::num(*e));
             }
             t
         }
@@ -464,12 +464,7 @@ fn run_history_series(
             for ev in &report.events {
                 t += &format!("  event {:<16} timing order {}\n", ev.kind, o(ev.order));
             }
-            t + &crate::cli::validate::findings_text(
-                "Findings of the finest history",
-                &report.findings,
-                "none",
-                "sample",
-            )
+            t + &crate::validate::findings_text("Findings of the finest history", &report.findings, "none", "sample")
         }
     };
     print(&body)?;

@@ -1,11 +1,11 @@
 //! `fricosc figures`: the seed's Figs. 3, 4, 5 (with its inset), 7 and 8, exact,
 //! with the seed's approximations on each (dashed), as JSON, CSV and SVG.
-//! Every exact point is the solver's value ([`crate::Shape::evaluate`]).
+//! Every exact point is the solver's value ([`fricosc::Shape::evaluate`]).
 
-use crate::cli::error::{Error, Result};
-use crate::cli::plot::{self, Axis, Chart, Dash, Key, Rule, Series, Style};
-use crate::seed;
-use crate::shape::Shape;
+use crate::error::{Error, Result};
+use crate::plot::{self, Axis, Chart, Dash, Key, Rule, Series, Style};
+use fricosc::seed;
+use fricosc::Shape;
 use serde::Serialize;
 
 mod oscillation;
@@ -53,7 +53,7 @@ pub struct Figure {
     pub title: String,
     /// The horizontal axis' quantity.
     pub x: XAxis,
-    /// Axis label (markup of [`crate::cli::plot`]: `_{}` subscripts).
+    /// Axis label (markup of [`crate::plot`]: `_{}` subscripts).
     pub x_label: String,
     /// Axis label.
     pub y_label: String,
@@ -117,7 +117,7 @@ fn exact(shape: &Shape, amp: f64, xs: &[f64], vhat: bool) -> Result<Curve> {
     let points = xs
         .iter()
         .map(|&x| shape.evaluate(vbar_of(x), amp).map(|e| [x, e.ratio.mu_ratio]))
-        .collect::<crate::Result<Vec<_>>>()?;
+        .collect::<fricosc::Result<Vec<_>>>()?;
     Ok(Curve { label: format!("exact, du/u0 = {amp}"), kind: "exact".into(), equation: None, amp: Some(amp), points })
 }
 
@@ -237,7 +237,7 @@ fn jumping_figures() -> Result<Vec<Figure>> {
 
     // Fig. 5 inset: the low-velocity slope against the amplitude.
     let aa = grid(1.0, 5.0, 161);
-    let slope_exact: Vec<[f64; 2]> = aa.iter().map(|&a| [a, crate::cli::claims::exact_slope(a)]).collect();
+    let slope_exact: Vec<[f64; 2]> = aa.iter().map(|&a| [a, crate::claims::exact_slope(a)]).collect();
     let mut f = figure(
         "fig5-inset",
         "Fig. 5 inset: low-velocity slope against the amplitude, exact, eqs. 21 and 22 as printed and corrected",
@@ -263,7 +263,7 @@ fn jumping_figures() -> Result<Vec<Figure>> {
     // Figs. 7 and 8: paraboloid, with eq. 27.
     let mut c = vec![];
     for &a in &small {
-        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::DEFAULT_TOL)?;
+        let ms = parabolic.mu_static(a, &fricosc::Options::default())?;
         c.push(exact(&parabolic, a, &vb, false)?);
         if a > 0.0 {
             c.push(approx("eq. 27", Some(a), &vb, |v| seed::eq27(v, ms)));
@@ -272,7 +272,7 @@ fn jumping_figures() -> Result<Vec<Figure>> {
     figs.push(figure("fig7", "Fig. 7: parabolic indenter, exact and eq. 27", XAxis::Vbar, [0.0, 1.2, 0.0, 1.05], c));
     let mut c = vec![];
     for &a in small.iter().chain(&jumping) {
-        let ms = crate::mdr::mu_static_ratio(2.0, a, crate::DEFAULT_TOL)?;
+        let ms = parabolic.mu_static(a, &fricosc::Options::default())?;
         c.push(exact(&parabolic, a, &vh, true)?);
         if a > 0.0 {
             c.push(approx("eq. 27", Some(a), &vh, |x| seed::eq27(x / a, ms)));
@@ -326,15 +326,15 @@ pub fn user_with(
     }
     let what = if vhat { "vhat" } else { "vbar" };
     for &a in amps {
-        crate::error::check_nonneg("amp", a)?;
+        fricosc::error::check_nonneg("amp", a)?;
     }
     for &x in xs {
-        crate::error::check_nonneg(what, x)?;
+        fricosc::error::check_nonneg(what, x)?;
     }
     // vbar = vhat / amp must be a number at every amplitude (the message names both).
     if let (true, Some(&top)) = (vhat, xs.iter().max_by(|a, b| a.total_cmp(b))) {
         for &a in amps.iter().filter(|&&a| a > 0.0) {
-            crate::vbar_from_vhat(top, a)?;
+            fricosc::vbar_from_vhat(top, a)?;
         }
     }
     let mut xs = xs.to_vec();
@@ -491,7 +491,7 @@ pub fn chart(f: &Figure) -> Chart {
     if !amps.is_empty() {
         key.push(Key::Heading(if f.family == "amp" { AMP_LABEL } else { T_LABEL }.into()));
         for &a in &amps {
-            key.push(Key::Entry(Style::line(color(a)).width(bold(a)), crate::cli::output::num(a)));
+            key.push(Key::Entry(Style::line(color(a)).width(bold(a)), crate::output::num(a)));
         }
         let grey = plot::Rgb(0x55, 0x55, 0x55);
         let family_eqs: Vec<&str> = eqs
@@ -526,7 +526,7 @@ pub fn chart(f: &Figure) -> Chart {
     }
 }
 
-impl crate::cli::export::Report for Figure {
+impl crate::export::Report for Figure {
     /// Long format: `curve,kind,equation,amp,x,y` (`tangential_amp` for the
     /// figures whose family is the tangential amplitude).
     fn columns(&self) -> Vec<String> {
@@ -534,7 +534,7 @@ impl crate::cli::export::Report for Figure {
     }
 
     fn rows(&self) -> Vec<Vec<String>> {
-        let n = crate::cli::output::num;
+        let n = crate::output::num;
         self.curves
             .iter()
             .flat_map(|c| {
@@ -558,10 +558,10 @@ impl crate::cli::export::Report for Figure {
 }
 
 /// Write every figure as `name.json`, `name.csv`, `name.svg` and `name.png` into `dir`.
-pub fn write_all(out: &crate::cli::outdir::OutDir) -> Result<Vec<String>> {
+pub fn write_all(out: &crate::outdir::OutDir) -> Result<Vec<String>> {
     let mut names = vec![];
     for f in build()? {
-        use crate::cli::export::{export, Format};
+        use crate::export::{export, Format};
         for (ext, format) in [("json", Format::Json), ("csv", Format::Csv), ("svg", Format::Svg)] {
             out.write(&format!("{}.{ext}", f.name), export(&f, format)?.as_bytes())?;
         }

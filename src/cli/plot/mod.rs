@@ -292,7 +292,7 @@ fn axis_ticks(a: &Axis) -> Vec<(f64, String)> {
                 let v = m * 10f64.powi(k as i32);
                 if v >= lo * (1.0 - 1e-9) && v <= hi * (1.0 + 1e-9) {
                     let label = match (m == 1.0, (-3..5).contains(&k)) {
-                        (_, true) => crate::cli::output::num(v).trim_end_matches(".0").to_string(),
+                        (_, true) => crate::output::num(v).trim_end_matches(".0").to_string(),
                         (true, false) => power(k),
                         (false, false) => format!("{m}·{}", power(k)),
                     };

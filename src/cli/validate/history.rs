@@ -1,10 +1,10 @@
 //! `validate --history`: a force history file as read, and the reports of its
-//! comparison ([`crate::validation::compare_history`]).
+//! comparison ([`fricosc::validation::compare_history`]).
 
 use super::{count, csv_text, findings_text, json_name, wrap};
-use crate::cli::error::{Error, Result};
-use crate::cli::tables::{read_columns, Kind};
-use crate::validation::HistoryValidation;
+use crate::error::{Error, Result};
+use crate::tables::{read_columns, Kind};
+use fricosc::validation::HistoryValidation;
 
 /// The columns of a history file, forces already divided by the units given.
 #[derive(Debug, Clone, PartialEq)]
@@ -24,12 +24,12 @@ pub struct HistoryColumns {
 const HISTORY_COLUMNS: [(&str, Kind); 4] =
     [("tau", Kind::Number), ("t", Kind::Number), ("tangential", Kind::Number), ("normal", Kind::Number)];
 
-/// Read a history (any format of [`crate::cli::tables`]: columns `tau` or `t`,
+/// Read a history (any format of [`crate::tables`]: columns `tau` or `t`,
 /// `tangential`, optionally `normal`); forces in the file's units, divided by
 /// `static_force` (`F0` in them) and `mu0` (the tangential one).
 pub fn read_history(text: &str, source: &str, static_force: f64, mu0: f64) -> Result<HistoryColumns> {
     let err = |reason: String| Error::Parse { context: source.into(), reason };
-    let mut c = read_columns(text, source, &HISTORY_COLUMNS, crate::cli::grid::MAX_ROWS)?;
+    let mut c = read_columns(text, source, &HISTORY_COLUMNS, crate::grid::MAX_ROWS)?;
     let names = || format!("this one ({}) has {}", c.format, c.names.join(", "));
     let is_tau = match (c.has(0), c.has(1)) {
         (true, false) => true,
@@ -44,14 +44,14 @@ pub fn read_history(text: &str, source: &str, static_force: f64, mu0: f64) -> Re
         .take()
         .ok_or_else(|| err(format!("no column 'tangential' (the tangential force); {}", names())))?;
     let mut normal = c.numbers[3].take();
-    crate::validation::to_static_units(&mut tangential, normal.as_deref_mut(), static_force, mu0)?;
+    fricosc::validation::to_static_units(&mut tangential, normal.as_deref_mut(), static_force, mu0)?;
     Ok(HistoryColumns { time, is_tau, tangential, normal, format: c.format })
 }
 
 /// Every sample of the last period as CSV: the seed's phase, the exact and the
 /// file's tangential force and their difference, the same for the normal force.
 pub fn history_csv(v: &HistoryValidation) -> Result<String> {
-    let n = crate::cli::output::num;
+    let n = crate::output::num;
     let opt = |x: Option<f64>| x.map(n).unwrap_or_default();
     let header = ["index", "tau", "exact", "yours", "error", "normal_exact", "normal_yours", "normal_error"];
     let mut records = vec![header.map(String::from).to_vec()];
@@ -72,7 +72,7 @@ pub fn history_csv(v: &HistoryValidation) -> Result<String> {
 
 /// The time origin in words.
 fn origin_text(v: &HistoryValidation) -> String {
-    use crate::validation::OriginSource;
+    use fricosc::validation::OriginSource;
     let o = &v.time_origin;
     let omega = o
         .omega

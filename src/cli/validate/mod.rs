@@ -1,10 +1,10 @@
 //! `validate`: read another code's table or history and compare it with the
-//! exact solver ([`crate::validation`]); the reports (summary, JSON, CSV).
+//! exact solver ([`fricosc::validation`]); the reports (summary, JSON, CSV).
 //!
 //! A table has the columns `vbar` or `vhat` (eq. 15, `vbar = vhat / amp`),
 //! `amp`, and `mu_ratio` or `mu` (then `mu_ratio = mu / mu0`, `--mu0`
 //! required), optionally `shape` (one for the whole table); any file
-//! [`crate::cli::tables`] reads (CSV as numpy, pandas or a spreadsheet writes
+//! [`crate::tables`] reads (CSV as numpy, pandas or a spreadsheet writes
 //! it, fricosc's or pandas' JSON, JSON Lines). Other columns are listed as not read.
 
 mod history;
@@ -13,12 +13,12 @@ mod series;
 pub use history::{history_csv, history_summary, read_history, HistoryColumns};
 pub use series::{series_csv, series_summary, series_svg};
 
-use crate::cli::error::{Error, Result};
-use crate::cli::tables::{read_columns, Kind};
-use crate::validation::{rows_from_columns, AtRest, Finding, Summary, Validation};
+use crate::error::{Error, Result};
+use crate::tables::{read_columns, Kind};
+use fricosc::validation::{rows_from_columns, AtRest, Finding, Summary, Validation};
 
 /// Most rows one file may hold.
-pub const MAX_ROWS: usize = crate::cli::grid::MAX_ROWS;
+pub const MAX_ROWS: usize = crate::grid::MAX_ROWS;
 
 /// One row as read: the velocity column (`vbar` or `vhat`) and the friction
 /// column (`mu_ratio` or `mu`) as the file names them.
@@ -64,7 +64,7 @@ const TABLE_COLUMNS: [(&str, Kind); 8] = [
 ];
 
 /// Which of two alternative columns is present (exactly one must be): the second's?
-fn one_of(c: &crate::cli::tables::Columns, k: [usize; 2], what: &str) -> std::result::Result<bool, String> {
+fn one_of(c: &crate::tables::Columns, k: [usize; 2], what: &str) -> std::result::Result<bool, String> {
     let [a, b] = k.map(|k| TABLE_COLUMNS[k].0);
     match (c.has(k[0]), c.has(k[1])) {
         (true, false) => Ok(false),
@@ -79,7 +79,7 @@ fn one_of(c: &crate::cli::tables::Columns, k: [usize; 2], what: &str) -> std::re
     }
 }
 
-/// Read a table (any format of [`crate::cli::tables`]); `source` names it in
+/// Read a table (any format of [`crate::tables`]); `source` names it in
 /// errors. Every row is read and checked before anything is compared.
 pub fn read_table(text: &str, source: &str) -> Result<RawTable> {
     let err = |reason: String| Error::Parse { context: source.into(), reason };
@@ -123,7 +123,7 @@ pub fn read_table(text: &str, source: &str) -> Result<RawTable> {
     Ok(RawTable { shape: shapes.pop(), vhat, mu, rows, ignored_columns, format: c.format, tangential })
 }
 
-/// `(vbar, amp, mu_ratio)` of every row ([`crate::validation::rows_from_columns`]).
+/// `(vbar, amp, mu_ratio)` of every row ([`fricosc::validation::rows_from_columns`]).
 pub fn normalise(table: &RawTable, mu0: Option<f64>, source: &str) -> Result<Vec<(f64, f64, f64)>> {
     if table.tangential.is_some() {
         return Err(Error::Parse {
@@ -155,7 +155,7 @@ pub fn oscillation_rows(table: &RawTable, mu0: Option<f64>, source: &str) -> Res
 }
 
 /// The summary of an oscillation table's comparison.
-pub fn oscillation_summary(v: &crate::validation::OscillationValidation, source: &str) -> String {
+pub fn oscillation_summary(v: &fricosc::validation::OscillationValidation, source: &str) -> String {
     use std::fmt::Write;
     let s = &v.summary;
     let mut out = format!(
@@ -188,8 +188,8 @@ pub fn oscillation_summary(v: &crate::validation::OscillationValidation, source:
 }
 
 /// Every compared row of an oscillation table as CSV.
-pub fn oscillation_csv(v: &crate::validation::OscillationValidation) -> Result<String> {
-    let n = crate::cli::output::num;
+pub fn oscillation_csv(v: &fricosc::validation::OscillationValidation) -> Result<String> {
+    let n = crate::output::num;
     let header =
         ["row", "vhat", "amp", "tangential_amp", "phase", "mu_ratio", "exact", "error", "relative_error", "regime"];
     let rows = v.rows.iter().map(|r| {
@@ -220,7 +220,7 @@ fn compared_csv(header: &[&str], peer: bool, rows: impl Iterator<Item = (Vec<Str
     let mut records = vec![head];
     for (mut cells, p) in rows {
         if peer {
-            cells.push(p.map(crate::cli::output::num).unwrap_or_default());
+            cells.push(p.map(crate::output::num).unwrap_or_default());
         }
         records.push(cells);
     }
@@ -245,7 +245,7 @@ pub(crate) fn csv_text(records: &[Vec<String>]) -> Result<String> {
 
 /// Every compared row as CSV (one header line).
 pub fn rows_csv(v: &Validation) -> Result<String> {
-    let n = crate::cli::output::num;
+    let n = crate::output::num;
     let header = ["row", "vbar", "amp", "mu_ratio", "exact", "error", "relative_error", "regime", "jumping_share"];
     let rows = v.rows.iter().map(|r| {
         let cells = vec![
@@ -296,8 +296,8 @@ pub(crate) fn count(n: usize, noun: &str) -> String {
 
 /// A regime's label: its name, and for a curved contact the share of the load
 /// on springs that lose contact ("mixed: 38 % jumping", or a range).
-pub(crate) fn regime_label(regime: crate::ContactRegime, share: [f64; 2]) -> String {
-    use crate::ContactRegime::{Jumping, Mixed};
+pub(crate) fn regime_label(regime: fricosc::ContactRegime, share: [f64; 2]) -> String {
+    use fricosc::ContactRegime::{Jumping, Mixed};
     let pct = |x: f64| format!("{:.0}", 100.0 * x);
     match regime {
         Mixed if pct(share[0]) == pct(share[1]) => format!("mixed: {} % jumping", pct(share[0])),

@@ -1,8 +1,8 @@
 //! The reports of a convergence study (`validate --series`).
 
 use super::{count, csv_text, findings_text, json_name, regime_label, wrap};
-use crate::cli::error::{Error, Result};
-use crate::validation::{Convergence, Needed, SeriesRow};
+use crate::error::{Error, Result};
+use fricosc::validation::{Convergence, Needed, SeriesRow};
 
 fn needed_text(n: Option<Needed>, f: &dyn Fn(f64) -> String) -> String {
     match n {
@@ -15,7 +15,7 @@ fn needed_text(n: Option<Needed>, f: &dyn Fn(f64) -> String) -> String {
 /// A convergence study as CSV: one line per row, its status, order, constant,
 /// Richardson error and needed resolution, then its error at each resolution.
 pub fn series_csv(c: &Convergence) -> Result<String> {
-    let n = crate::cli::output::num;
+    let n = crate::output::num;
     let opt = |x: Option<f64>| x.map(n).unwrap_or_default();
     let mut header: Vec<String> = [
         "vbar",
@@ -127,7 +127,7 @@ pub fn series_summary(c: &Convergence) -> String {
 /// geometric mean of its rows' errors (solid, circles) and the slope of its
 /// median order through the last point (dashed).
 pub fn series_svg(c: &Convergence) -> Result<String> {
-    use crate::cli::plot::{Axis, Chart, Dash, Marker, Series, Style, OKABE_ITO};
+    use crate::plot::{Axis, Chart, Dash, Marker, Series, Style, OKABE_ITO};
     let mut series = vec![];
     let (mut ylo, mut yhi) = (f64::INFINITY, f64::NEG_INFINITY);
     for (i, g) in c.by_regime.iter().enumerate() {
@@ -176,7 +176,7 @@ pub fn series_svg(c: &Convergence) -> Result<String> {
 }
 
 /// The smallest and largest jumping share of a regime's rows.
-fn share_range(c: &Convergence, g: crate::ContactRegime) -> [f64; 2] {
+fn share_range(c: &Convergence, g: fricosc::ContactRegime) -> [f64; 2] {
     let share = c.rows.iter().filter(|r| r.regime == g).map(|r| r.jumping_share);
     [share.clone().fold(f64::INFINITY, f64::min), share.fold(f64::NEG_INFINITY, f64::max)]
 }

@@ -5,7 +5,7 @@
 //! the scanner reads on its way are the fields' values.
 use libfuzzer_sys::fuzz_target;
 
-#[path = "../../common/rows.rs"]
+#[path = "../../tool/common/rows.rs"]
 mod rows;
 
 const NAMES: [&str; 3] = ["shape", "vbar", "amp"];
@@ -24,7 +24,7 @@ fn by_serde(text: &str) -> Rows {
 
 fn by_scan(text: &str) -> Rows {
     let mut out = vec![];
-    fricosc::cli::scan::array_rows(text, &NAMES, |_, r| {
+    fricosc_cli::scan::array_rows(text, &NAMES, |_, r| {
         // A number read on the scan's way (quick path or a row's layout) is its field's value.
         for (x, f) in r.numbers.iter().zip(r.fields) {
             if !x.is_nan() {
@@ -40,9 +40,9 @@ fn by_scan(text: &str) -> Rows {
 
 fuzz_target!(|data: &[u8]| {
     if let Ok(text) = std::str::from_utf8(data) {
-        let _ = fricosc::cli::batch::run(text, "fuzz", None);
+        let _ = fricosc_cli::batch::run(text, "fuzz", None);
         // Nesting beyond the scanner's depth limit is refused on purpose.
-        if text.matches(['[', '{']).count() < fricosc::cli::scan::MAX_DEPTH {
+        if text.matches(['[', '{']).count() < fricosc_cli::scan::MAX_DEPTH {
             assert_eq!(by_scan(text), by_serde(text), "{text:?}");
         }
     }

@@ -1,0 +1,21 @@
+//! The library's tests: one test crate (one build and link), a module per
+//! subject. Each compares the solver with something it did not compute (see
+//! `tests/README.md` at the top of the repository).
+
+mod common;
+
+mod combined;
+mod contact;
+#[allow(clippy::excessive_precision)]
+mod flat;
+mod flat_events;
+mod flat_tip;
+mod history;
+mod mdr;
+mod mdr_independent;
+mod profile;
+mod properties;
+mod reference;
+#[allow(clippy::excessive_precision)]
+mod report_fields;
+mod stepper;

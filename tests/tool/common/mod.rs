@@ -1,0 +1,3 @@
+//! Support shared by the tool's tests.
+pub mod rows;
+pub mod run;

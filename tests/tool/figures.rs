@@ -1,0 +1,226 @@
+//! The figures: exact curves are the solver's values (no second implementation),
+//! each approximation is drawn only where the seed uses it, and every drawing
+//! parses, tells its curves apart, names its axes' symbols and renders to a PNG
+//! of the stated size.
+use fricosc::Shape;
+use fricosc_cli::figures::{build, chart, XAxis};
+use fricosc_cli::plot::{self, Rgb};
+
+#[test]
+fn exact_curves_equal_the_solver_and_every_figure_is_there() {
+    let figs = build().unwrap();
+    let names: Vec<&str> = figs.iter().map(|f| f.name.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "fig3",
+            "fig3-inset",
+            "fig4",
+            "fig5",
+            "fig5-inset",
+            "fig7",
+            "fig8",
+            "tangential-flat",
+            "tangential-parabolic",
+            "combined-phase",
+            "combined-regimes"
+        ]
+    );
+    for f in figs.iter().filter(|f| f.name.starts_with("fig")) {
+        let shape =
+            if f.name.starts_with("fig7") || f.name.starts_with("fig8") { Shape::parabolic() } else { Shape::flat() };
+        for c in f.curves.iter().filter(|c| c.kind == "exact") {
+            let Some(amp) = c.amp else { continue };
+            for p in c.points.iter().step_by(7) {
+                let vbar = if f.x == XAxis::Vhat && amp > 0.0 { p[0] / amp } else { p[0] };
+                assert_eq!(p[1], shape.evaluate(vbar, amp).unwrap().ratio.mu_ratio, "{} {}", f.name, c.label);
+            }
+        }
+    }
+    // The inset's exact slope is the claims' one, and the corrected eq. 21 follows it.
+    let inset = figs.iter().find(|f| f.name == "fig5-inset").unwrap();
+    for (e, c) in inset.curves[0].points.iter().zip(&inset.curves[1].points).skip(1) {
+        assert!((e[1] / c[1] - 1.0).abs() < 1e-6, "amp {}: {} vs {}", e[0], e[1], c[1]);
+    }
+}
+
+/// The figures beyond the seed: their exact points are the solver's
+/// ([`fricosc::combined::evaluate`]), the regime map's tiles are the spring's
+/// regimes, and its sign-change line lies where `mu` is 0.
+#[test]
+fn oscillation_figures_are_the_solvers_values() {
+    use fricosc::combined::{evaluate, Oscillation};
+    use fricosc_cli::figures::{COMBINED, MAP_T};
+    let mu = |shape: &Shape, vhat: f64, amp: f64, t: f64, p: f64| {
+        evaluate(shape, &Oscillation::new(vhat, amp, t, p).unwrap(), fricosc::DEFAULT_TOL).unwrap()
+    };
+    let figs = build().unwrap();
+    for f in &figs {
+        let shape = if f.name.ends_with("parabolic") { Shape::parabolic() } else { Shape::flat() };
+        for c in f.curves.iter().filter(|c| c.kind == "exact" && !f.name.starts_with("fig")) {
+            let t = c.amp.unwrap();
+            assert_eq!(f.family, "tangential_amp", "{}", f.name);
+            for p in c.points.iter().step_by(5) {
+                let want = match f.x {
+                    XAxis::SlidingRatio => mu(&shape, p[0] * t, 0.0, t, 0.0),
+                    XAxis::Phase => mu(&shape, COMBINED.0, COMBINED.1, t, p[0]),
+                    x => panic!("{}: axis {x:?}", f.name),
+                };
+                assert_eq!(p[1], want.ratio.mu_ratio, "{} {}", f.name, c.label);
+            }
+        }
+    }
+    // The rigid-body law is what the largest T approaches.
+    let flat = figs.iter().find(|f| f.name == "tangential-flat").unwrap();
+    let (big, law) = (&flat.curves[5], flat.curves.last().unwrap());
+    for (e, l) in big.points.iter().zip(&law.points).filter(|(e, _)| e[0] < 0.9) {
+        assert!((e[1] - l[1]).abs() < 0.02, "x {}: {} against {}", e[0], e[1], l[1]);
+    }
+    let map = figs.iter().find(|f| f.name == "combined-regimes").unwrap();
+    for c in &map.curves {
+        for p in c.points.iter().step_by(37) {
+            let r = mu(&Shape::flat(), COMBINED.0, p[1], MAP_T, p[0]);
+            if c.kind == "sign change" {
+                assert!(r.ratio.mu_ratio.abs() < 1e-9, "mu {} at {p:?}", r.ratio.mu_ratio);
+                continue;
+            }
+            let s = r.spring.unwrap();
+            let jumping = s.contact == fricosc::stop::Contact::Jumping;
+            let both = s.phases.iter().any(|q| q.kind == fricosc::stop::StopKind::Backward && q.end > q.start);
+            assert_eq!(c.label.starts_with("jumping"), jumping, "{} at {p:?}", c.label);
+            assert_eq!(c.label.ends_with("both ways"), both, "{} at {p:?}", c.label);
+        }
+    }
+}
+
+/// The seed's approximations where it uses them: eq. 16 (eq. 11 in vhat) only
+/// without jumping, eq. 17 for jumping; no approximation at du/u0 = 0 (mu = mu0
+/// is exact there); the seed's amplitudes and the line at du/u0 = 0 where it has them.
+#[test]
+fn approximations_are_drawn_where_the_seed_uses_them() {
+    let figs = build().unwrap();
+    for f in &figs {
+        for c in f.curves.iter().filter(|c| c.kind == "approximation") {
+            let eq = c.equation.as_deref().unwrap();
+            match (eq, c.amp) {
+                ("eq. 16", Some(a)) => assert!(a > 0.0 && a <= 1.0, "{}: eq. 16 at {a}", f.name),
+                ("eq. 17", Some(a)) => assert!(a > 1.0, "{}: eq. 17 at {a}", f.name),
+                (_, Some(a)) => assert!(a > 0.0, "{}: {eq} at 0", f.name),
+                _ => {}
+            }
+            // On a mu axis an approximation stays within [0, 1]: none is drawn
+            // where it goes negative (eq. 16 at jumping amplitudes reaches -1).
+            if f.y_label == fricosc_cli::figures::MU_LABEL {
+                assert!(c.points.iter().all(|p| (0.0..=1.0).contains(&p[1])), "{}: {}", f.name, c.label);
+            }
+        }
+        let amps = |kind: &str| {
+            let mut a: Vec<f64> = f.curves.iter().filter(|c| c.kind == kind).filter_map(|c| c.amp).collect();
+            a.dedup();
+            a
+        };
+        let expected: &[f64] = match f.name.as_str() {
+            "fig3" | "fig7" => &[0.0, 0.2, 0.4, 0.6, 0.8, 1.0],
+            "fig4" | "fig8" => &[0.0, 0.2, 0.4, 0.6, 0.8, 1.0, 1.2, 1.4, 1.6, 1.8, 2.0],
+            "fig5" => &[1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 2.0],
+            "fig3-inset" => &[1.0],
+            "tangential-flat" | "tangential-parabolic" => &fricosc_cli::figures::TANGENTIAL_AMPS,
+            "combined-phase" => &fricosc_cli::figures::COMBINED_TS,
+            _ => &[],
+        };
+        assert_eq!(amps("exact"), expected, "{}", f.name);
+    }
+}
+
+/// `(colour, width, dash)` of every series in an SVG, read from the document.
+fn series_styles(svg: &str) -> Vec<(String, Rgb, String, String)> {
+    let attr = |s: &str, name: &str| {
+        s.split(&format!(" {name}=\"")).nth(1).map(|t| t.split('"').next().unwrap_or("").to_string())
+    };
+    svg.split("<g data-series=\"")
+        .skip(1)
+        .map(|g| {
+            let label = g.split('"').next().unwrap().to_string();
+            let path = g.split("</g>").next().unwrap();
+            let hex = attr(path, "stroke").or_else(|| attr(path, "fill")).expect("a colour");
+            let c = u32::from_str_radix(hex.trim_start_matches('#'), 16).unwrap();
+            let rgb = Rgb((c >> 16) as u8, (c >> 8) as u8, c as u8);
+            (
+                label,
+                rgb,
+                attr(path, "stroke-width").unwrap_or_default(),
+                attr(path, "stroke-dasharray").unwrap_or_default(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn every_drawing_parses_tells_curves_apart_and_renders() {
+    for f in build().unwrap() {
+        let svg = fricosc_cli::export::export(&f, fricosc_cli::export::Format::Svg).unwrap();
+        let (w, h) = plot::parse_size(&svg).unwrap_or_else(|e| panic!("{}: {e}", f.name));
+        assert_eq!(w, plot::WIDTH, "{}: 8.5 cm wide", f.name);
+        // Axis symbols in Unicode, never the ASCII stand-ins.
+        let symbol = match f.x {
+            XAxis::Vbar => "v\u{304}",
+            XAxis::Vhat => "v\u{302}",
+            XAxis::Amp => "Δu",
+            XAxis::SlidingRatio => "ω Δx",
+            XAxis::Phase => "φ",
+        };
+        let text: String = svg.split("<text").skip(1).map(|t| t.split("</text>").next().unwrap()).collect();
+        assert!(text.contains(symbol) && text.contains("μ"), "{}: axis symbols", f.name);
+        for ascii in ["mu_macro", "mu0", "vbar", "vhat", "du/u0"] {
+            assert!(!text.contains(ascii), "{}: '{ascii}' printed", f.name);
+        }
+        // No two series alike: the library's own check, and the same read back from the SVG.
+        let c = chart(&f);
+        plot::distinct(&c, 8.0).unwrap_or_else(|e| panic!("{}: {e}", f.name));
+        let styles = series_styles(&svg);
+        assert_eq!(styles.len(), f.curves.len(), "{}", f.name);
+        for (i, a) in styles.iter().enumerate() {
+            for b in &styles[i + 1..] {
+                let same_line = a.2 == b.2 && a.3 == b.3;
+                assert!(!(same_line && a.1.delta_e(b.1) < 8.0), "{}: '{}' and '{}' look alike", f.name, a.0, b.0);
+            }
+        }
+        // Coordinates carry fractions of a point (no whole-pixel steps).
+        // (A map has markers, no curves: their positions.)
+        let sixth = svg.split(" L").nth(5).or_else(|| svg.split(" x=\"").nth(5));
+        assert!(svg.contains(".") && sixth.is_some_and(|s| s.contains('.')), "{}", f.name);
+        // The PNG: 300 dpi of the drawing's size in pt.
+        let png = plot::png(&svg).unwrap();
+        assert_eq!(&png[1..4], b"PNG");
+        let be = |k: usize| u32::from_be_bytes([png[k], png[k + 1], png[k + 2], png[k + 3]]);
+        let px = |pt: f64| (pt / 72.0 * plot::DPI).round() as u32;
+        assert_eq!((be(16), be(20)), (px(w), px(h)), "{}", f.name);
+    }
+}
+
+/// The checker itself: two series in one style are caught.
+#[test]
+fn distinct_catches_a_repeated_style() {
+    let mut c = chart(&build().unwrap()[0]);
+    assert!(plot::distinct(&c, 8.0).is_ok());
+    c.series[2].style = c.series[0].style;
+    assert!(plot::distinct(&c, 8.0).is_err());
+    // Near colours count as the same.
+    let s = c.series[0].style;
+    c.series[2].style = plot::Style { color: Rgb(s.color.0.saturating_add(3), s.color.1, s.color.2), ..s };
+    assert!(plot::distinct(&c, 8.0).is_err());
+}
+
+/// `plot`'s limit of 12 amplitudes keeps neighbouring colours apart.
+#[test]
+fn the_largest_user_plot_tells_its_curves_apart() {
+    let amps: Vec<f64> = (1..=fricosc_cli::figures::MAX_CURVES).map(|k| k as f64 * 0.25).collect();
+    let xs: Vec<f64> = (0..=12).map(|k| k as f64 * 0.1).collect();
+    let f = fricosc_cli::figures::user(&Shape::flat(), &amps, &xs, false).unwrap();
+    assert_eq!(f.curves.len(), 12);
+    plot::distinct(&chart(&f), 8.0).unwrap();
+    // With a 13th amplitude the limit is enforced.
+    let mut more = amps.clone();
+    more.push(9.0);
+    assert!(fricosc_cli::figures::user(&Shape::flat(), &more, &xs, false).is_err());
+}

@@ -1,0 +1,19 @@
+//! The command-line tool's tests: one test crate (one build and link), a
+//! module per subject. Most run the `fricosc` binary as a user does; what
+//! each checks against what is listed in `tests/README.md`.
+
+mod common;
+
+mod batch_formats;
+mod claims;
+mod cli;
+mod combined_cli;
+mod figures;
+mod fuzz_mirror;
+mod hostile;
+mod scan;
+mod scene;
+mod stress;
+mod suite;
+mod users;
+mod validate;
