@@ -175,3 +175,12 @@ impl<W: Write> TableWriter<W> {
         self.out.flush()
     }
 }
+
+/// A CSV writer's error as the I/O error it wraps, with its kind (a closed
+/// pipe stays a closed pipe, which ends the program quietly).
+pub fn io_of(e: csv::Error) -> io::Error {
+    match e.into_kind() {
+        csv::ErrorKind::Io(e) => e,
+        other => io::Error::other(format!("{other:?}")),
+    }
+}

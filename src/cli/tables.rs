@@ -14,12 +14,13 @@
 //!   with the orient to use;
 //! - JSON Lines (one row object a line, pandas' `lines=True`).
 //!
-//! JSON is read by [`crate::scan`] (no value trees: a column is a vector
-//! of numbers, 8 bytes a row). Every refusal names the file, the row and what
-//! was expected.
+//! JSON is read as raw values ([`crate::json`]: no value trees, a column is
+//! a vector of numbers, 8 bytes a row). Every refusal names the file, the row
+//! and what was expected.
 
 use crate::error::{Error, Result};
-use crate::scan::{self, ScanError};
+use crate::json;
+use serde_json::value::RawValue;
 use std::borrow::Cow;
 
 /// What a wanted column holds.
@@ -273,35 +274,31 @@ impl<'a> Json<'a, '_> {
         Error::Parse { context: self.source.into(), reason }
     }
 
-    fn scan_err(&self, e: ScanError) -> Error {
-        self.err(e.describe(self.text))
-    }
-
-    fn cell(&self, raw: &'a str, name: &str, kind: Kind) -> std::result::Result<Cell<'a>, String> {
+    fn cell(&self, raw: &'a RawValue, name: &str, kind: Kind) -> std::result::Result<Cell<'a>, String> {
         Ok(match kind {
-            Kind::Number => Cell::Number(scan::number_of(raw, name)?),
-            Kind::Label => Cell::Text(scan::string_of(raw, name)?),
+            Kind::Number => Cell::Number(json::number(raw, name)?),
+            Kind::Label => Cell::Text(json::string(raw, name)?),
         })
     }
 
     fn read(&self) -> Result<Columns> {
         let t = self.text;
-        let start = scan::skip_ws(t, 0);
-        let end = scan::value_end(t, start).map_err(|e| self.scan_err(e))?;
-        if scan::skip_ws(t, end) < t.len() {
-            return self.lines();
+        let top = match json::value(t) {
+            Ok(v) => v.get(),
+            // More than one value: JSON Lines, one row object a line.
+            Err(e) if e.is_syntax() && e.to_string().starts_with("trailing characters") => return self.lines(),
+            Err(e) => return Err(self.err(json::message(&e))),
+        };
+        if top.starts_with('[') {
+            return self.array(top, "JSON array of rows");
         }
-        if t.as_bytes()[start] == b'[' {
-            return self.array(start, "JSON array of rows");
-        }
-        let top = scan::members(t, start).map_err(|e| self.scan_err(e))?;
-        let key = |k: &str| top.iter().find(|(x, _)| x == k).map(|(_, span)| *span);
-        let is_object = |span: (usize, usize)| t.as_bytes()[span.0] == b'{';
+        let top = json::members(top).map_err(|e| self.err(e))?;
+        let key = |k: &str| top.iter().find(|(x, _)| x == k).map(|(_, v)| *v);
         let is_wanted = |k: &str| self.wanted.iter().any(|(w, _)| *w == k);
         if let Some(rows) = key("rows") {
-            let mut cols = self.array(rows.0, "fricosc JSON ('rows')")?;
-            if let (Some(span), Some(k)) = (key("shape"), self.wanted.iter().position(|(w, _)| *w == "shape")) {
-                let s = scan::string_of(&t[span.0..span.1], "shape").map_err(|e| self.err(e))?;
+            let mut cols = self.array(rows.get(), "fricosc JSON ('rows')")?;
+            if let (Some(v), Some(k)) = (key("shape"), self.wanted.iter().position(|(w, _)| *w == "shape")) {
+                let s = json::string(v, "shape").map_err(|e| self.err(e))?;
                 push(&mut cols, k, Kind::Label, Cell::Text(s)).map_err(|e| Error::Internal { what: e })?;
             }
             return Ok(cols);
@@ -310,9 +307,9 @@ impl<'a> Json<'a, '_> {
             return self.split(columns, data);
         }
         if let (Some(_), Some(data)) = (key("schema"), key("data")) {
-            return self.array(data.0, "pandas 'table' JSON");
+            return self.array(data.get(), "pandas 'table' JSON");
         }
-        if !top.is_empty() && top.iter().all(|(_, span)| is_object(*span)) {
+        if !top.is_empty() && top.iter().all(|(_, v)| v.get().starts_with('{')) {
             if top.iter().any(|(k, _)| is_wanted(k)) {
                 return self.columns(&top);
             }
@@ -323,7 +320,7 @@ impl<'a> Json<'a, '_> {
     }
 
     /// Rows from one row object (its wanted fields; `k` its index).
-    fn record(&self, cols: &mut Columns, k: usize, fields: &[Option<&'a str>]) -> std::result::Result<(), String> {
+    fn record(&self, cols: &mut Columns, k: usize, fields: &[Option<&'a RawValue>]) -> std::result::Result<(), String> {
         for (j, (name, kind)) in self.wanted.iter().enumerate() {
             match fields[j] {
                 Some(raw) => {
@@ -342,66 +339,43 @@ impl<'a> Json<'a, '_> {
     }
 
     /// [`Error::TooLarge`] once `rows` reach the cap (checked before each row).
-    fn full(&self, rows: usize) -> Option<Error> {
-        (rows >= self.max_rows).then(|| too_many(self.source, self.max_rows))
+    fn full(&self, rows: usize) -> Result<()> {
+        if rows >= self.max_rows {
+            return Err(too_many(self.source, self.max_rows));
+        }
+        Ok(())
     }
 
-    /// The keys of the object at `i` (the column names of a row object).
-    fn keys(&self, i: usize) -> Vec<String> {
-        scan::members(self.text, i).map(|m| m.into_iter().map(|(k, _)| k.into_owned()).collect()).unwrap_or_default()
+    /// The wanted fields of the members of a row object.
+    fn fields(&self, members: &json::Members<'a>) -> Vec<Option<&'a RawValue>> {
+        self.wanted.iter().map(|(w, _)| members.iter().find(|(k, _)| k == w).map(|(_, v)| *v)).collect()
     }
 
-    /// The wanted fields of the row object at `span`.
-    fn fields(&self, span: (usize, usize)) -> std::result::Result<Vec<Option<&'a str>>, String> {
-        let t = self.text;
-        let mut fields = vec![None; self.wanted.len()];
-        let mut seen: Vec<Cow<str>> = vec![];
-        scan::each_member(t, span.0, &mut |k, (vs, ve)| {
-            if seen.contains(&k) {
-                return Err(ScanError { at: vs, what: format!("duplicate key '{k}'"), malformed: false });
-            }
-            if let Some(j) = self.wanted.iter().position(|(w, _)| *w == k) {
-                fields[j] = Some(&t[vs..ve]);
-            }
-            seen.push(k);
-            Ok(())
-        })
-        .map_err(|e| e.describe(t))?;
-        Ok(fields)
-    }
-
-    /// An array of row objects at `text[start..end]`.
-    fn array(&self, start: usize, format: &str) -> Result<Columns> {
-        let t = self.text;
-        let mut cols = Columns::new(format, self.wanted.len());
-        let mut k = 0usize;
-        let mut failure: Option<Error> = None;
-        let stop = |at: usize| ScanError { at, what: String::new(), malformed: false };
-        scan::each_element(t, start, &mut |span| {
-            if let Some(e) = self.full(cols.rows) {
-                failure = Some(e);
-                return Err(stop(span.0));
-            }
-            let result = match t.as_bytes()[span.0] {
-                b'{' => {
-                    if k == 0 {
-                        cols.names = self.keys(span.0);
-                    }
-                    self.fields(span).and_then(|f| self.record(&mut cols, k, &f))
+    /// One row object of an array, `k` its index.
+    fn row(&self, cols: &mut Columns, k: usize, v: &'a RawValue) -> std::result::Result<(), String> {
+        match v.get().as_bytes()[0] {
+            b'{' => {
+                let members = json::members(v.get())?;
+                if k == 0 {
+                    cols.names = members.iter().map(|(k, _)| k.to_string()).collect();
                 }
-                b'[' => Err("an array of arrays has no column names (pandas' orient 'values'): write \
-                             to_json(orient='records') or orient='split'"
-                    .into()),
-                _ => Err("expected a row object".into()),
-            };
-            if let Err(e) = result {
-                failure = Some(self.err(format!("row {k}: {e}")));
-                return Err(stop(span.0));
+                self.record(cols, k, &self.fields(&members))
             }
-            k += 1;
-            Ok(())
-        })
-        .map_err(|e| failure.take().unwrap_or_else(|| self.scan_err(e)))?;
+            b'[' => Err("an array of arrays has no column names (pandas' orient 'values'): write \
+                         to_json(orient='records') or orient='split'"
+                .into()),
+            _ => Err("expected a row object".into()),
+        }
+    }
+
+    /// An array of row objects, `text` its JSON.
+    fn array(&self, text: &'a str, format: &str) -> Result<Columns> {
+        let mut cols = Columns::new(format, self.wanted.len());
+        let rows = json::elements(text).map_err(|e| self.err(e))?;
+        for (k, v) in rows.into_iter().enumerate() {
+            self.full(cols.rows)?;
+            self.row(&mut cols, k, v).map_err(|e| self.err(format!("row {k}: {e}")))?;
+        }
         Ok(cols)
     }
 
@@ -414,23 +388,18 @@ impl<'a> Json<'a, '_> {
                 continue;
             }
             let at = |e: String| self.err(format!("line {}: {e}", n + 1));
-            let i = scan::skip_ws(line, 0);
-            let end = scan::value_end(line, i).map_err(|e| at(e.describe(line)))?;
-            if scan::skip_ws(line, end) < line.len() {
-                return Err(at("one row object a line (JSON Lines): trailing characters".into()));
-            }
-            if line.as_bytes()[i] != b'{' {
+            let v = json::value(line).map_err(|e| {
+                if e.to_string().starts_with("trailing characters") {
+                    at("one row object a line (JSON Lines): trailing characters".into())
+                } else {
+                    at(json::message(&e))
+                }
+            })?;
+            if !v.get().starts_with('{') {
                 return Err(at("expected a row object (JSON Lines: one object a line)".into()));
             }
-            if let Some(e) = self.full(cols.rows) {
-                return Err(e);
-            }
-            let sub = Json { text: line, wanted: self.wanted, max_rows: self.max_rows, source: self.source };
-            if k == 0 {
-                cols.names = sub.keys(i);
-            }
-            let f = sub.fields((i, end)).map_err(at)?;
-            sub.record(&mut cols, k, &f).map_err(at)?;
+            self.full(cols.rows)?;
+            self.row(&mut cols, k, v).map_err(at)?;
             k += 1;
         }
         Ok(cols)
@@ -438,42 +407,30 @@ impl<'a> Json<'a, '_> {
 
     /// pandas' `columns` orient: `{column: {index: value}}`, every column with
     /// the same index labels in the same order.
-    fn columns(&self, top: &[(Cow<str>, (usize, usize))]) -> Result<Columns> {
-        let t = self.text;
+    fn columns(&self, top: &json::Members<'a>) -> Result<Columns> {
         let mut cols = Columns::new("pandas 'columns' JSON", self.wanted.len());
         cols.names = top.iter().map(|(k, _)| k.to_string()).collect();
-        let mut index: Option<Vec<String>> = None;
+        let mut index: Option<Vec<Cow<str>>> = None;
         for (j, (name, kind)) in self.wanted.iter().enumerate() {
-            let Some((_, span)) = top.iter().find(|(k, _)| k == name) else { continue };
-            let mut labels: Vec<String> = vec![];
-            let mut failure: Option<Error> = None;
-            let mut n = 0usize;
-            scan::each_member(t, span.0, &mut |label, (vs, ve)| {
-                let stop = ScanError { at: vs, what: String::new(), malformed: false };
-                if let Some(e) = self.full(n) {
-                    failure = Some(e);
-                    return Err(stop);
+            let Some((_, column)) = top.iter().find(|(k, _)| k == name) else { continue };
+            let members = json::members(column.get()).map_err(|e| self.err(format!("column '{name}': {e}")))?;
+            for (n, (label, v)) in members.iter().enumerate() {
+                self.full(n)?;
+                self.cell(v, name, *kind)
+                    .and_then(|c| push(&mut cols, j, *kind, c))
+                    .map_err(|e| self.err(format!("column '{name}', index '{label}': {e}")))?;
+                if index.as_ref().is_some_and(|x| x.get(n) != Some(label)) {
+                    return Err(self.err(format!("column '{name}': its index labels differ from the columns before")));
                 }
-                let r = self.cell(&t[vs..ve], name, *kind).and_then(|c| push(&mut cols, j, *kind, c));
-                if let Err(e) = r {
-                    failure = Some(self.err(format!("column '{name}', index '{label}': {e}")));
-                    return Err(stop);
-                }
-                if index.is_none() {
-                    labels.push(label.into_owned());
-                } else if index.as_ref().and_then(|x| x.get(n)).is_none_or(|x| *x != label) {
-                    failure =
-                        Some(self.err(format!("column '{name}': its index labels differ from the columns before")));
-                    return Err(stop);
-                }
-                n += 1;
-                Ok(())
-            })
-            .map_err(|e| failure.take().unwrap_or_else(|| self.scan_err(e)))?;
+            }
             match &index {
-                None => index = Some(labels),
-                Some(x) if x.len() != n => {
-                    return Err(self.err(format!("column '{name}' has {n} values, the columns before {}", x.len())))
+                None => index = Some(members.into_iter().map(|(l, _)| l).collect()),
+                Some(x) if x.len() != members.len() => {
+                    return Err(self.err(format!(
+                        "column '{name}' has {} values, the columns before {}",
+                        members.len(),
+                        x.len()
+                    )))
                 }
                 Some(_) => {}
             }
@@ -483,18 +440,11 @@ impl<'a> Json<'a, '_> {
     }
 
     /// pandas' `index` orient: `{index: {column: value}}`.
-    fn index(&self, top: &[(Cow<str>, (usize, usize))]) -> Result<Columns> {
+    fn index(&self, top: &json::Members<'a>) -> Result<Columns> {
         let mut cols = Columns::new("pandas 'index' JSON", self.wanted.len());
-        if let Some((_, span)) = top.first() {
-            cols.names = self.keys(span.0);
-        }
-        for (k, (label, span)) in top.iter().enumerate() {
-            if let Some(e) = self.full(cols.rows) {
-                return Err(e);
-            }
-            let at = |e: String| self.err(format!("index '{label}': {e}"));
-            let f = self.fields(*span).map_err(at)?;
-            self.record(&mut cols, k, &f).map_err(at)?;
+        for (k, (label, v)) in top.iter().enumerate() {
+            self.full(cols.rows)?;
+            self.row(&mut cols, k, v).map_err(|e| self.err(format!("index '{label}': {e}")))?;
         }
         if self.wanted.iter().enumerate().all(|(j, _)| !cols.has(j)) {
             let names: Vec<&str> = top.iter().map(|(k, _)| k.as_ref()).take(8).collect();
@@ -507,48 +457,25 @@ impl<'a> Json<'a, '_> {
     }
 
     /// pandas' `split` orient: `{"columns": [...], "index": [...], "data": [[...], ...]}`.
-    fn split(&self, columns: (usize, usize), data: (usize, usize)) -> Result<Columns> {
-        let t = self.text;
+    fn split(&self, columns: &'a RawValue, data: &'a RawValue) -> Result<Columns> {
         let mut cols = Columns::new("pandas 'split' JSON", self.wanted.len());
-        let mut names = vec![];
-        scan::each_element(t, columns.0, &mut |(vs, ve)| {
-            let s =
-                scan::string_of(&t[vs..ve], "columns").map_err(|e| ScanError { at: vs, what: e, malformed: false })?;
-            names.push(s.into_owned());
-            Ok(())
-        })
-        .map_err(|e| self.scan_err(e))?;
-        cols.names = names.clone();
-        let at: Vec<Option<usize>> = self.wanted.iter().map(|(w, _)| names.iter().position(|n| n == w)).collect();
-        let mut k = 0usize;
-        let mut failure: Option<Error> = None;
-        scan::each_element(t, data.0, &mut |row| {
-            if let Some(e) = self.full(cols.rows) {
-                failure = Some(e);
-                return Err(ScanError { at: row.0, what: String::new(), malformed: false });
-            }
-            let mut cells: Vec<(usize, usize)> = vec![];
-            scan::each_element(t, row.0, &mut |span| {
-                cells.push(span);
-                Ok(())
-            })?;
-            let mut fields = vec![None; self.wanted.len()];
-            for (j, c) in at.iter().enumerate() {
-                fields[j] = c.and_then(|c| cells.get(c)).map(|&(vs, ve)| &t[vs..ve]);
-            }
-            let r = if cells.len() != names.len() {
-                Err(format!("{} values, the columns are {}", cells.len(), names.len()))
+        let names = json::elements(columns.get())
+            .and_then(|v| v.iter().map(|n| json::string(n, "columns").map(Cow::into_owned)).collect())
+            .map_err(|e: String| self.err(e))?;
+        cols.names = names;
+        let at: Vec<Option<usize>> = self.wanted.iter().map(|(w, _)| cols.names.iter().position(|n| n == w)).collect();
+        let rows = json::elements(data.get()).map_err(|e| self.err(e))?;
+        for (k, row) in rows.into_iter().enumerate() {
+            self.full(cols.rows)?;
+            let cells = json::elements(row.get()).map_err(|e| self.err(format!("row {k}: {e}")))?;
+            let fields: Vec<Option<&RawValue>> = at.iter().map(|c| c.and_then(|c| cells.get(c)).copied()).collect();
+            let r = if cells.len() != cols.names.len() {
+                Err(format!("{} values, the columns are {}", cells.len(), cols.names.len()))
             } else {
                 self.record(&mut cols, k, &fields)
             };
-            if let Err(e) = r {
-                failure = Some(self.err(format!("row {k}: {e}")));
-                return Err(ScanError { at: row.0, what: String::new(), malformed: false });
-            }
-            k += 1;
-            Ok(())
-        })
-        .map_err(|e| failure.take().unwrap_or_else(|| self.scan_err(e)))?;
+            r.map_err(|e| self.err(format!("row {k}: {e}")))?;
+        }
         Ok(cols)
     }
 }

@@ -7,9 +7,9 @@
 //!   file that shrank is an error;
 //! - anything else (stdin, `/dev/stdin`, a pipe from `<(...)`, a named FIFO): it
 //!   is opened once, and the first pass copies what it reads into a spool file
-//!   that the second reads. The spool is created readable by its owner only
-//!   and removed from the directory at once (only the open handle keeps it),
-//!   so that nothing is left behind whatever ends the process; at most
+//!   that the second reads. The spool has no name in the directory (only the
+//!   open handle keeps it), so that nothing is left behind whatever ends the
+//!   process; at most
 //!   [`MAX_SPOOL_BYTES`] bytes, and the reader's own checks (the line cap)
 //!   apply while it is being written.
 
@@ -101,27 +101,10 @@ impl TwoPass {
     }
 }
 
-/// A new spool file in the temporary directory, readable by its owner only,
-/// removed from the directory at once.
+/// A new spool file in the temporary directory, without a name from the
+/// moment it exists (`tempfile::tempfile`: `O_TMPFILE`, or unlinked at once).
 fn spool_file() -> Result<File> {
-    let dir = std::env::temp_dir();
-    for attempt in 0..16 {
-        let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_nanos());
-        let path = dir.join(format!("fricosc-spool-{}-{nanos}-{attempt}", std::process::id()));
-        let mut options = std::fs::OpenOptions::new();
-        options.read(true).write(true).create_new(true);
-        #[cfg(unix)]
-        std::os::unix::fs::OpenOptionsExt::mode(&mut options, 0o600);
-        match options.open(&path) {
-            Ok(f) => {
-                std::fs::remove_file(&path).map_err(|e| Error::write(&path.display().to_string(), e))?;
-                return Ok(f);
-            }
-            Err(e) if e.kind() == io::ErrorKind::AlreadyExists => continue,
-            Err(e) => return Err(Error::write(&path.display().to_string(), e)),
-        }
-    }
-    Err(Error::write("the spool file", io::Error::new(io::ErrorKind::AlreadyExists, "no free name")))
+    tempfile::tempfile().map_err(|e| Error::write(&std::env::temp_dir().display().to_string(), e))
 }
 
 /// A reader that counts its bytes.
@@ -199,9 +182,8 @@ mod tests {
     /// shrinks is an error, never fewer rows in silence.
     #[test]
     fn the_second_pass_reads_exactly_what_the_first_checked() {
-        let dir = std::env::temp_dir().join(format!("fricosc-twopass-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("rows.csv");
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("rows.csv");
         std::fs::write(&path, "a\n1\n2\n").unwrap();
         let p = path.to_str().unwrap();
         let input = TwoPass::open(p).unwrap();
@@ -214,13 +196,11 @@ mod tests {
         let e = all(input.next_pass().unwrap()).unwrap_err();
         assert!(e.to_string().contains("changed while it was read"), "{e}");
         assert!(input.next_pass().is_err(), "no third pass");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 
-    /// A non-seekable input is opened once: the second pass reads the spool,
-    /// which has no name in the directory at any time after it is created.
+    /// A non-seekable input is opened once: the second pass reads the spool.
     #[test]
-    fn a_pipe_is_read_once_and_spooled_without_a_name() {
+    fn a_pipe_is_read_once_and_spooled() {
         let (mut reader, mut writer) = io::pipe().unwrap();
         writer.write_all(b"x\ny\n").unwrap();
         drop(writer);
@@ -230,10 +210,5 @@ mod tests {
         let input = TwoPass { source: "pipe".into(), kind, pass: Cell::new(0), length: Rc::new(Cell::new(0)) };
         assert_eq!(all(input.next_pass().unwrap()).unwrap(), "x\ny\n");
         assert_eq!(all(input.next_pass().unwrap()).unwrap(), "x\ny\n");
-        let named = std::fs::read_dir(std::env::temp_dir())
-            .unwrap()
-            .filter_map(|e| e.ok())
-            .any(|e| e.file_name().to_string_lossy().starts_with(&format!("fricosc-spool-{}-", std::process::id())));
-        assert!(!named, "the spool has a name in the temporary directory");
     }
 }

@@ -5,13 +5,13 @@
 mod common;
 
 mod batch_formats;
+mod batch_rows;
 mod claims;
 mod cli;
 mod combined_cli;
 mod figures;
 mod fuzz_mirror;
 mod hostile;
-mod scan;
 mod scene;
 mod stress;
 mod suite;

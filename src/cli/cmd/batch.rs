@@ -35,9 +35,8 @@ pub fn run(a: BatchArgs) -> Result<()> {
             // the second time exactly the bytes the first one checked; an input
             // of one chunk (65,536 rows) once.
             let input = crate::twopass::TwoPass::open(&path)?;
-            let open = || input.next_pass();
             let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
-            batch::stream(streamed, &open, input.source(), stepping, &mut out).map(|_| ())
+            batch::stream(streamed, &input, stepping, &mut out).map(|_| ())
         }
     }
 }

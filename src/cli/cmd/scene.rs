@@ -92,7 +92,7 @@ fn scenes_csv(out: &mut dyn Write, results: &[(String, fricosc::scene::SceneResu
     use crate::export::Report;
     let n = crate::output::num;
     let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(out);
-    let fail = crate::batch::io_of;
+    let fail = crate::output::io_of;
     let scene_cols = ["scene", "u0_m", "du_m", "amp", "contact_radius_m", "critical_velocity_m_per_s", "mu_static"];
     let mut header: Vec<String> = scene_cols.map(String::from).to_vec();
     if let Some((_, r)) = results.first() {

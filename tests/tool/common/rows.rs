@@ -55,7 +55,8 @@ impl<'de> Visitor<'de> for Pick<'_> {
         let mut out = vec![None; self.0.len()];
         let mut seen: Vec<Cow<'de, str>> = Vec::with_capacity(8);
         while let Some(Key(key)) = map.next_key::<Key<'de>>()? {
-            if seen.contains(&key) {
+            // The fields `batch` reads may not come twice; others may.
+            if seen.contains(&key) && self.0.contains(&key.as_ref()) {
                 return Err(de::Error::custom(format!("duplicate key '{key}'")));
             }
             let v: &'de RawValue = map.next_value()?;

@@ -89,6 +89,12 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
     fn reach(&self, amp: f64) -> Result<f64>;
 
+    /// The largest amplitude the contact reaches ([`Contact::reach`] is an
+    /// error beyond it): a table's deepest level less 1. By default unbounded.
+    fn max_amp(&self) -> f64 {
+        f64::INFINITY
+    }
+
     /// Static normal force at indentation `depth u0`,
     /// `2 int_0^inf (depth - G(z))_+ dz`, in units of `E* x_c u0` (both sides of
     /// the foundation; the flat punch's stiffness is `2 E* x_c`).
@@ -345,6 +351,9 @@ impl Contact for profile::Tabulated {
     }
     fn reach(&self, amp: f64) -> Result<f64> {
         profile::reach(self, amp)
+    }
+    fn max_amp(&self) -> f64 {
+        profile::max_amp(self)
     }
     fn static_force(&self, depth: f64) -> f64 {
         profile::static_force(self, depth)

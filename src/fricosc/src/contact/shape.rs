@@ -239,6 +239,19 @@ impl Shape {
         self.contact.point(vbar, amp, opts.tol)
     }
 
+    /// Whether the shape reaches the amplitude `amp` (a tabulated profile
+    /// must reach the contact's edge, `G = 1 + amp`): the check a batch makes
+    /// of each row before it writes anything.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for an amplitude beyond a tabulated profile.
+    pub fn check_amp(&self, amp: f64) -> Result<()> {
+        if amp > self.contact.max_amp() {
+            self.contact.reach(amp)?;
+        }
+        Ok(())
+    }
+
     /// `mu_static/mu0`, the limit `vbar -> 0+` (the minimum normal force over its mean).
     ///
     /// # Errors

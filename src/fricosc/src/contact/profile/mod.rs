@@ -372,6 +372,17 @@ pub(crate) fn equivalent_profile(t: &Tabulated, z: f64) -> f64 {
     t.g.eval(z).0
 }
 
+/// The largest amplitude the table reaches ([`reach`] accepts it): its
+/// deepest level less 1, or just below where that difference rounds up.
+pub(crate) fn max_amp(t: &Tabulated) -> f64 {
+    let gmax = *t.g.values().last().unwrap_or(&0.0);
+    let mut amp = gmax - 1.0;
+    while 1.0 + amp > gmax {
+        amp = amp.next_down();
+    }
+    amp
+}
+
 /// `z` with `G(z) = 1 + amp`: an error if the table ends before.
 pub(crate) fn reach(t: &Tabulated, amp: f64) -> Result<f64> {
     crate::error::check_nonneg("amp", amp)?;
