@@ -197,11 +197,10 @@ fn exact_runs(c: &mut Collector, shape: &Shape, vbar: f64, amp: f64, tm: Timing)
         if shape.is_flat() { &[fricosc::DEFAULT_TOL] } else { &[1e-4, 1e-6, 1e-8, 1e-11, fricosc::DEFAULT_TOL] };
     let mut best = None;
     for &tol in tols {
-        let opts = fricosc::Options::default().with_tol(tol);
-        let value = shape.evaluate_with(vbar, amp, &opts).map(|e| e.ratio.mu_ratio);
-        let t = time_per_call(tm.k, tm.sample, || {
-            shape.evaluate_with(vbar, amp, &opts).map_or(f64::NAN, |e| e.ratio.mu_ratio)
-        });
+        let run =
+            || fricosc::Conditions::vbar(vbar, amp).and_then(|c| c.with_tol(tol)).and_then(|c| shape.evaluate(&c));
+        let value = run().map(|e| e.ratio.mu_ratio);
+        let t = time_per_call(tm.k, tm.sample, || run().map_or(f64::NAN, |e| e.ratio.mu_ratio));
         if let Some(err) = c.record("exact", format!("tol={tol:e}"), value, t) {
             best = Some((err, t));
         }
@@ -220,10 +219,9 @@ fn stepping_runs(c: &mut Collector, shape: &Shape, vbar: f64, amp: f64, tm: Timi
     let mut best: Option<(f64, f64)> = None;
     for (m, n) in steps {
         let st = Stepping { steps_per_period: m, springs: n };
-        let value = fricosc::stepper::evaluate(shape, vbar, amp, st).map(|e| e.ratio.mu_ratio);
-        let t = time_per_call(tm.k.min(3), tm.sample, || {
-            fricosc::stepper::evaluate(shape, vbar, amp, st).map_or(f64::NAN, |e| e.ratio.mu_ratio)
-        });
+        let run = || fricosc::Conditions::vbar(vbar, amp).and_then(|c| fricosc::stepper::evaluate(shape, &c, st));
+        let value = run().map(|e| e.ratio.mu_ratio);
+        let t = time_per_call(tm.k.min(3), tm.sample, || run().map_or(f64::NAN, |e| e.ratio.mu_ratio));
         if let Some(err) = c.record("stepping", format!("M={m},N={n}"), value, t) {
             if best.is_none_or(|(e, _)| err < e) {
                 best = Some((err, t));

@@ -1,12 +1,10 @@
 //! `fricosc claims`: every quantitative statement of the seed, checked against
 //! the exact solver, with a verdict. `tests/claims.rs` asserts each verdict.
 
-use fricosc::flat;
-use fricosc::mdr::power_law;
 use fricosc::seed;
 use fricosc::spring::EventKind;
 use fricosc::stepper::{physical_mu_ratio, PhysicalSpring};
-use fricosc::{Options, Shape};
+use fricosc::{Conditions, Report, Shape, DEFAULT_TOL};
 use serde::Serialize;
 use std::f64::consts::{PI, TAU};
 
@@ -60,12 +58,18 @@ fn named(pairs: &[(&str, f64)]) -> Vec<(String, f64)> {
     pairs.iter().map(|&(n, v)| (n.to_string(), v)).collect()
 }
 
+/// `mu_macro/mu0` of `shape` at `(vbar, amp)`, NaN where it fails (a claim's
+/// verdict then says so).
+fn mu_of(shape: &Shape, v: f64, a: f64) -> f64 {
+    Conditions::vbar(v, a).and_then(|c| shape.ratio(&c)).map_or(f64::NAN, |r| r.mu_ratio)
+}
+
 fn mu_flat(v: f64, a: f64) -> f64 {
-    flat::ratio(v, a).map_or(f64::NAN, |r| r.mu_ratio)
+    mu_of(&Shape::flat(), v, a)
 }
 
 fn mu_mdr(n: f64, v: f64, a: f64) -> f64 {
-    power_law(n, v, a, &Options::default()).map_or(f64::NAN, |r| r.ratio.mu_ratio)
+    Shape::power(n).map_or(f64::NAN, |s| mu_of(&s, v, a))
 }
 
 /// The velocity at which small-velocity slopes are measured.
@@ -147,10 +151,10 @@ pub fn check() -> Vec<Claim> {
 fn eq8_sign() -> Claim {
     let v = 0.5f64;
     let t1 = v.asin();
-    let t2 = flat::point(v, 0.5)
-        .ok()
-        .and_then(|p| p.events.iter().find(|e| e.kind == EventKind::Slip).map(|e| e.tau))
-        .unwrap_or(f64::NAN);
+    let t2 = match Conditions::vbar(v, 0.5).and_then(|c| Shape::flat().report(&c)) {
+        Ok(Report::Flat(p)) => p.events.iter().find(|e| e.kind == EventKind::Slip).map_or(f64::NAN, |e| e.tau),
+        _ => f64::NAN,
+    };
     let printed = |t: f64| seed::eq8_printed_residual(v, t);
     let corrected = |t: f64| seed::eq8_corrected_residual(v, t);
     let worst_printed = (1..=1000).map(|k| printed(t1 + k as f64 * TAU / 1000.0)).fold(f64::NEG_INFINITY, f64::max);
@@ -388,7 +392,7 @@ fn critical_velocity() -> Claim {
 /// NaN where anything fails (the claim's verdict then says so).
 fn small_amplitude_slope(spec: &str, vbar: f64, amp: f64) -> f64 {
     let Ok(shape) = fricosc::Shape::parse(spec) else { return f64::NAN };
-    let reduction = shape.evaluate(vbar, amp).map_or(f64::NAN, |e| e.ratio.reduction);
+    let reduction = Conditions::vbar(vbar, amp).and_then(|c| shape.ratio(&c)).map_or(f64::NAN, |r| r.reduction);
     let n0 = shape.contact().mean_normal(0.0).unwrap_or(f64::NAN);
     reduction * n0 / (2.0 * amp)
 }
@@ -453,7 +457,7 @@ fn static_friction_minimum_normal() -> Claim {
             continue;
         };
         for amp in [0.2, 0.5, 0.8, 1.5] {
-            let mu = shape.evaluate(1e-10, amp).map_or(f64::NAN, |e| e.ratio.mu_ratio);
+            let mu = mu_of(&shape, 1e-10, amp);
             let c = shape.contact();
             let ratio = c.mean_normal(amp).map(|mean| c.static_force(1.0 - amp) / mean).unwrap_or(f64::NAN);
             // A NaN (a failed evaluation) fails the claim: f64::max would drop it.
@@ -488,9 +492,9 @@ fn eq27_shape_independence() -> Claim {
     let mut w27 = 0.0f64;
     for (name, f) in &shapes {
         let mu_static = |a: f64| match *name {
-            "flat" => flat::mu_static_ratio(a),
-            "parabolic" => Shape::parabolic().mu_static(a, &Options::default()).unwrap_or(f64::NAN),
-            _ => Shape::cone().mu_static(a, &Options::default()).unwrap_or(f64::NAN),
+            "flat" => Shape::flat().mu_static(a, DEFAULT_TOL).unwrap_or(f64::NAN),
+            "parabolic" => Shape::parabolic().mu_static(a, DEFAULT_TOL).unwrap_or(f64::NAN),
+            _ => Shape::cone().mu_static(a, DEFAULT_TOL).unwrap_or(f64::NAN),
         };
         let (w, at) =
             worst_over(&[0.2, 0.4, 0.6, 0.8, 1.0, 1.5, 2.0], 200, |v, a| (seed::eq27(v, mu_static(a)) - f(v, a)).abs());

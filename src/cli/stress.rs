@@ -101,7 +101,8 @@ pub fn run(points: usize, seed: u64, shapes: &[Shape]) -> StressReport {
             let mut out = vec![];
             let mut prev: Option<(f64, f64)> = None;
             for &v in &vs {
-                let res = std::panic::catch_unwind(|| shape.evaluate(v, amp));
+                let res =
+                    std::panic::catch_unwind(|| fricosc::Conditions::vbar(v, amp).and_then(|c| shape.evaluate(&c)));
                 let here = format!("{} vbar={v:e} amp={amp:e}", shape.name());
                 match res {
                     Err(_) => out.push(format!("{here}: panicked")),
@@ -151,7 +152,6 @@ pub const EDGE_T: [f64; 6] = [5e-324, 1e-300, 1.0 - f64::EPSILON, 1.0, 1.0 + f64
 /// About `points` random and edge points under oscillation in the sliding
 /// direction over `shapes`: how many were run, and the failures described.
 pub fn run_oscillation(points: usize, seed: u64, shapes: &[Shape]) -> (usize, Vec<String>) {
-    use fricosc::combined::{evaluate, Oscillation};
     let per_shape = points.div_ceil(shapes.len().max(1));
     let jobs: Vec<(usize, u64)> = (0..shapes.len()).flat_map(|s| (0..per_shape as u64).map(move |k| (s, k))).collect();
     let failures = jobs
@@ -181,7 +181,9 @@ pub fn run_oscillation(points: usize, seed: u64, shapes: &[Shape]) -> (usize, Ve
             let here = format!("{} vhat={vhat:e} amp={amp:e} T={t:e} phase={phase:e}", shape.name());
             let eval = |v: f64, a: f64, tt: f64, p: f64| {
                 std::panic::catch_unwind(|| {
-                    Oscillation::new(v, a, tt, p).and_then(|o| evaluate(shape, &o, fricosc::DEFAULT_TOL))
+                    fricosc::Conditions::vhat(v, a)
+                        .and_then(|c| c.with_tangential(tt, p))
+                        .and_then(|c| shape.evaluate(&c))
                 })
             };
             let mut out = vec![];

@@ -71,7 +71,7 @@ fn csv(header: &[&str], rows: &[Vec<String>]) -> Result<String> {
 }
 
 fn value_row(shape: &Shape, spec: &str, vbar: f64, amp: f64) -> Result<Vec<String>> {
-    let e = shape.evaluate(vbar, amp)?;
+    let e = shape.evaluate(&fricosc::Conditions::vbar(vbar, amp)?)?;
     let bound = e.error_estimate + e.interpolation_error.unwrap_or(0.0);
     Ok(vec![spec.into(), num(vbar), num(amp), num(e.ratio.mu_ratio), num(e.ratio.reduction), num(bound)])
 }
@@ -156,7 +156,9 @@ pub fn files() -> Result<Vec<SuiteFile>> {
                 num(a)
             ),
         });
-        let p = fricosc::flat::point(v, a)?;
+        let fricosc::Report::Flat(p) = Shape::flat().report(&fricosc::Conditions::vbar(v, a)?)? else {
+            return Err(Error::Internal { what: "the flat punch's report without its events".into() });
+        };
         let rows: Vec<Vec<String>> =
             p.events.iter().map(|e| vec![num(e.tau), event(Some(e.kind)), num(e.normal), num(e.tangential)]).collect();
         out.push(SuiteFile {

@@ -37,7 +37,7 @@ fn serial(text: &str) -> Result<Vec<(String, fricosc::Ratio)>, Option<usize>> {
         let shape: String = serde_json::from_str(p.0[0].ok_or(fault)?.get()).map_err(|_| fault)?;
         let shape = Shape::parse(&shape).map_err(|_| fault)?;
         let (vbar, amp) = (number(p.0[1]).map_err(|()| fault)?, number(p.0[2]).map_err(|()| fault)?);
-        out.push((r.get().to_string(), shape.ratio(vbar, amp).map_err(|_| fault)?));
+        out.push((r.get().to_string(), crate::common::eval(&shape, vbar, amp).map(|e| e.ratio).map_err(|_| fault)?));
     }
     Ok(out)
 }

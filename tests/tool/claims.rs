@@ -49,7 +49,7 @@ fn eq_11_error_matches_a_converged_time_stepper() {
     let c = get(&cs, "eq. 11");
     let (v, a) = (m(c, "at_vbar"), m(c, "at_amp"));
     // The seed's scheme is second order without contact loss: at M = 20000 it is within 1e-8.
-    let stepped = fricosc::stepper::evaluate(
+    let stepped = crate::common::at::stepped(
         &fricosc::Shape::flat(),
         v,
         a,
@@ -132,7 +132,7 @@ fn critical_velocity_and_two_parameter_claims_agree_with_the_stepper() {
     assert_eq!(m(c, "all_checks_pass"), 1.0);
     // The stepper slips throughout above vbar = 1.
     assert!(
-        (fricosc::stepper::evaluate(
+        (crate::common::at::stepped(
             &fricosc::Shape::flat(),
             1.1,
             0.3,
@@ -147,7 +147,7 @@ fn critical_velocity_and_two_parameter_claims_agree_with_the_stepper() {
     );
     assert!(m(c, "min_reduction_1e-3") > 0.0);
     let c = get(&cs, "section 2");
-    let stepped = fricosc::stepper::evaluate(
+    let stepped = crate::common::at::stepped(
         &fricosc::Shape::flat(),
         0.4,
         0.5,

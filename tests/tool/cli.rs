@@ -327,12 +327,14 @@ fn one_value_per_input() {
         let t = json(&fricosc(&["table", "--shape", shape, "--vbar", vbar, "--amp", amp], None));
         let batch = format!(r#"[{{"shape":"{shape}","vbar":{vbar},"amp":{amp}}}]"#);
         let b = json(&fricosc(&["batch", "-"], Some(&batch)));
-        let lib = fricosc_cli::input::parse_shape(shape)
-            .unwrap()
-            .evaluate(vbar.parse().unwrap(), amp.parse().unwrap())
-            .unwrap()
-            .ratio
-            .mu_ratio;
+        let lib = crate::common::eval(
+            &fricosc_cli::input::parse_shape(shape).unwrap(),
+            vbar.parse().unwrap(),
+            amp.parse().unwrap(),
+        )
+        .unwrap()
+        .ratio
+        .mu_ratio;
         let bits = |v: &serde_json::Value| v.as_f64().unwrap().to_bits();
         assert_eq!(bits(&p["mu_ratio"]), lib.to_bits(), "{shape} {vbar} {amp}: point");
         assert_eq!(bits(&t["rows"][0]["mu_ratio"]), lib.to_bits(), "{shape} {vbar} {amp}: table");

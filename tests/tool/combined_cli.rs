@@ -5,8 +5,7 @@
 //! nothing on stdout).
 use crate::common::run as cli;
 
-use fricosc::combined::{evaluate, Oscillation};
-use fricosc::{Shape, DEFAULT_TOL};
+use fricosc::Shape;
 use std::process::Output;
 
 fn ok(out: &Output) -> String {
@@ -23,7 +22,7 @@ fn refused(args: &[&str], stdin: Option<&str>, message: &str) {
 }
 
 fn exact(shape: &Shape, vhat: f64, amp: f64, t: f64, phase: f64) -> f64 {
-    evaluate(shape, &Oscillation::new(vhat, amp, t, phase).unwrap(), DEFAULT_TOL).unwrap().ratio.mu_ratio
+    crate::common::at::combined(shape, vhat, amp, t, phase).unwrap().ratio.mu_ratio
 }
 
 #[test]

@@ -33,7 +33,13 @@ fn exact_curves_equal_the_solver_and_every_figure_is_there() {
             let Some(amp) = c.amp else { continue };
             for p in c.points.iter().step_by(7) {
                 let vbar = if f.x == XAxis::Vhat && amp > 0.0 { p[0] / amp } else { p[0] };
-                assert_eq!(p[1], shape.evaluate(vbar, amp).unwrap().ratio.mu_ratio, "{} {}", f.name, c.label);
+                assert_eq!(
+                    p[1],
+                    crate::common::eval(&shape, vbar, amp).unwrap().ratio.mu_ratio,
+                    "{} {}",
+                    f.name,
+                    c.label
+                );
             }
         }
     }
@@ -45,14 +51,13 @@ fn exact_curves_equal_the_solver_and_every_figure_is_there() {
 }
 
 /// The figures beyond the seed: their exact points are the solver's
-/// ([`fricosc::combined::evaluate`]), the regime map's tiles are the spring's
+/// (`Shape::report` under a tangential oscillation), the regime map's tiles are the spring's
 /// regimes, and its sign-change line lies where `mu` is 0.
 #[test]
 fn oscillation_figures_are_the_solvers_values() {
-    use fricosc::combined::{evaluate, Oscillation};
     use fricosc_cli::figures::{COMBINED, MAP_T};
     let mu = |shape: &Shape, vhat: f64, amp: f64, t: f64, p: f64| {
-        evaluate(shape, &Oscillation::new(vhat, amp, t, p).unwrap(), fricosc::DEFAULT_TOL).unwrap()
+        crate::common::at::combined(shape, vhat, amp, t, p).unwrap()
     };
     let figs = build().unwrap();
     for f in &figs {
@@ -85,8 +90,8 @@ fn oscillation_figures_are_the_solvers_values() {
                 continue;
             }
             let s = r.spring.unwrap();
-            let jumping = s.contact == fricosc::stop::Contact::Jumping;
-            let both = s.phases.iter().any(|q| q.kind == fricosc::stop::StopKind::Backward && q.end > q.start);
+            let jumping = s.contact == fricosc::spring::Touch::Jumping;
+            let both = s.phases.iter().any(|q| q.kind == fricosc::spring::StopKind::Backward && q.end > q.start);
             assert_eq!(c.label.starts_with("jumping"), jumping, "{} at {p:?}", c.label);
             assert_eq!(c.label.ends_with("both ways"), both, "{} at {p:?}", c.label);
         }

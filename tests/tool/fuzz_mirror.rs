@@ -88,7 +88,7 @@ proptest! {
         let path = dir.join("t.csv");
         std::fs::write(&path, &text).unwrap();
         if let Ok(shape) = fricosc_cli::input::parse_shape(&format!("profile:{}@1", path.display())) {
-            match shape.evaluate(v, a) {
+            match crate::common::eval(&shape, v, a) {
                 Ok(e) => prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio)),
                 // Bad input or a table that cannot carry the contact, never an internal failure.
                 Err(e) => prop_assert!(!matches!(e, fricosc::Error::Internal { .. }), "{e}"),
@@ -108,9 +108,9 @@ proptest! {
             x.push(x[x.len() - 1] + dx);
             f.push(f[f.len() - 1] + df * df * df);
         }
-        if let Ok(table) = fricosc::profile::Table::from_columns(x, f, profile, "mirror") {
+        if let Ok(table) = fricosc::contact::Table::from_columns(x, f, profile, "mirror") {
             if let Ok(contact) = table.at(u0) {
-                match fricosc::Shape::from_contact(std::sync::Arc::new(contact)).evaluate(v, a) {
+                match crate::common::eval(&fricosc::Shape::from_contact(std::sync::Arc::new(contact)), v, a) {
                     Ok(e) => prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio)),
                     Err(e) => prop_assert!(!matches!(e, fricosc::Error::Internal { .. }), "{e}"),
                 }
@@ -136,13 +136,13 @@ proptest! {
                 Err(_) => return Ok(()),
             },
         };
-        match shape.evaluate(v, a) {
+        match crate::common::eval(&shape, v, a) {
             Ok(e) => {
                 prop_assert!((0.0..=1.0).contains(&e.ratio.mu_ratio));
                 prop_assert!(e.ratio.reduction >= 0.0);
             }
             Err(_) => prop_assert!(!(v.is_finite() && a.is_finite() && v >= 0.0 && a >= 0.0)),
         }
-        let _ = fricosc::stepper::evaluate(&shape, v, a, Stepping { steps_per_period: 16, springs: 8 });
+        let _ = crate::common::at::stepped(&shape, v, a, Stepping { steps_per_period: 16, springs: 8 });
     }
 }

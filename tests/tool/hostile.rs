@@ -344,7 +344,7 @@ fn nothing_on_stdout_when_the_exit_code_is_2() {
 #[test]
 fn a_profile_past_the_row_limit_is_refused_before_the_transform() {
     use std::fmt::Write as _;
-    let rows = fricosc::profile::MAX_TABLE_ROWS + 1;
+    let rows = fricosc::contact::MAX_TABLE_ROWS + 1;
     let mut text = String::with_capacity(rows * 12);
     for i in 0..rows {
         let _ = writeln!(text, "{i},{i}");
@@ -354,5 +354,5 @@ fn a_profile_past_the_row_limit_is_refused_before_the_transform() {
     std::fs::write(&path, text).unwrap();
     let shape = format!("profile:{}@1", path.display());
     let out = bin().args(["point", "--shape", &shape, "--vbar", "0.3", "--amp", "0.5"]).output().unwrap();
-    refused(&out, &format!("is more than the limit of {}", fricosc::profile::MAX_TABLE_ROWS));
+    refused(&out, &format!("is more than the limit of {}", fricosc::contact::MAX_TABLE_ROWS));
 }

@@ -1,5 +1,4 @@
 //! Numerical stress: random and edge points, and continuity across every regime boundary.
-use fricosc::mdr::power_law;
 use fricosc::DEFAULT_TOL;
 use fricosc_cli::stress::{default_shapes, run};
 
@@ -14,7 +13,8 @@ fn a_hundred_thousand_random_and_edge_points_pass_every_check() {
 }
 
 fn mu(n: f64, v: f64, a: f64) -> f64 {
-    power_law(n, v, a, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap().ratio.mu_ratio
+    let c = fricosc::Conditions::vbar(v, a).and_then(|c| c.with_tol(DEFAULT_TOL)).unwrap();
+    fricosc::Shape::power(n).unwrap().ratio(&c).unwrap().mu_ratio
 }
 
 /// Jumps of mu across a boundary at distance d on both sides: Lipschitz part

@@ -6,8 +6,8 @@
 use crate::common::run as cli;
 
 use fricosc::history::HistoryOptions;
+use fricosc::report::ContactRegime;
 use fricosc::validation::{compare, AtRest, Check, FindingKind, HistoryData, HistoryValidation, TimeAxis};
-use fricosc::ContactRegime;
 use fricosc::Shape;
 use std::process::Command;
 
@@ -145,7 +145,7 @@ fn fricosc_cmd(args: &[&str], stdin: &str) -> std::process::Output {
 /// conflicting --shape refused, vhat and mu with --mu0 read, the three formats.
 #[test]
 fn the_command_reads_shapes_velocities_and_formats() {
-    let exact = |v: f64, a: f64| Shape::parabolic().evaluate(v, a).unwrap().ratio.mu_ratio;
+    let exact = |v: f64, a: f64| crate::common::eval(&Shape::parabolic(), v, a).unwrap().ratio.mu_ratio;
     // JSON with its shape: compared with the paraboloid, not the flat punch.
     let json = format!(
         r#"{{"shape": "parabolic", "rows": [{{"vbar": 0.5, "amp": 0.5, "mu_ratio": {:?}}}]}}"#,
@@ -223,7 +223,7 @@ fn the_series_finds_the_orders_of_the_seeds_scheme() {
         for a in [0.5, 0.9, 1.5, 2.0] {
             for v in [0.2, 0.4, 0.6, 0.8] {
                 let st = Stepping { steps_per_period: m, springs: 1 };
-                let mu = fricosc::stepper::evaluate(&Shape::flat(), v, a, st).unwrap().ratio.mu_ratio;
+                let mu = crate::common::at::stepped(&Shape::flat(), v, a, st).unwrap().ratio.mu_ratio;
                 text += &format!("{v:?},{a:?},{mu:?}\n");
             }
         }

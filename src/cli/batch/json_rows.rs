@@ -513,7 +513,9 @@ mod tests {
     /// in, none given gets both; every other byte stays.
     #[test]
     fn results_are_spliced_or_replaced_in_place() {
-        let r = Ratio { mu_ratio: 0.25, reduction: 0.75 };
+        // The flat punch at vbar = 0, amp = 0.75: mu = 1 - amp = 0.25 exactly.
+        let r = fricosc::Shape::flat().ratio(&fricosc::Conditions::vbar(0.0, 0.75).unwrap()).unwrap();
+        assert_eq!((r.mu_ratio, r.reduction), (0.25, 0.75));
         let mut fmt = zmij::Buffer::new();
         for (text, want) in [
             (r#"{"a": 1e400, "b":"\ud800"}"#, r#"{"a": 1e400, "b":"\ud800","mu_ratio":0.25,"reduction":0.75}"#),

@@ -23,7 +23,7 @@
 
 use crate::error::{Error, Result};
 use fricosc::stepper::Stepping;
-use fricosc::{Ratio, Shape};
+use fricosc::{Conditions, Ratio, Shape};
 use rayon::prelude::*;
 use std::collections::HashMap;
 use std::io::{BufRead, Write};
@@ -113,14 +113,11 @@ impl Inputs {
 /// A row as read: its shape's text and its inputs, or why it is malformed.
 type Read<'a> = std::result::Result<(&'a str, &'a Inputs), &'a str>;
 
-/// One checked row: its shape (an index into [`Shapes`]) and inputs.
+/// One checked row: its shape (an index into [`Shapes`]) and conditions.
 #[derive(Debug, Clone, Copy)]
 struct Job {
     shape: u32,
-    vbar: f64,
-    amp: f64,
-    /// Oscillation in the sliding direction: `(vhat, T, phase)`.
-    tangential: Option<(f64, f64, f64)>,
+    conditions: Conditions,
 }
 
 /// The shapes of a batch, each distinct string parsed (and checked) once.
@@ -168,7 +165,7 @@ impl Shapes {
         if phase.is_some() && tangential_amp.is_none() {
             return Err("'phase' needs 'tangential_amp'".into());
         }
-        let vbar = match (vbar, vhat, tangential_amp) {
+        let conditions = match (vbar, vhat, tangential_amp) {
             (Some(_), Some(_), _) => return Err("give one of 'vbar' and 'vhat', not both".into()),
             (Some(_), None, Some(_)) => {
                 return Err(
@@ -176,46 +173,27 @@ impl Shapes {
                 )
             }
             (None, None, _) => return Err("missing field 'vbar' (or 'vhat')".into()),
-            (Some(v), None, None) => v,
+            (Some(v), None, None) => Conditions::vbar(v, amp).map_err(err)?,
             (None, Some(h), None) => {
-                fricosc::error::check_nonneg("vhat", h).map_err(err)?;
-                fricosc::error::check_nonneg("amp", amp).map_err(err)?;
-                fricosc::vbar_from_vhat(h, amp).map_err(err)?
+                let c = Conditions::vhat(h, amp).map_err(err)?;
+                c.as_vbar().map_err(err)?;
+                c
             }
-            (None, Some(h), Some(_)) => h,
+            (None, Some(h), Some(t)) => {
+                Conditions::vhat(h, amp).and_then(|c| c.with_tangential(t, phase.unwrap_or(0.0))).map_err(err)?
+            }
         };
-        fricosc::error::check_nonneg("vbar", vbar).map_err(err)?;
-        fricosc::error::check_nonneg("amp", amp).map_err(err)?;
         // A tabulated profile must reach the deepest indentation (else the
         // evaluation would refuse the row after output had begun).
         self.list[shape as usize].check_amp(amp).map_err(err)?;
-        let tangential = match (vhat, tangential_amp) {
-            (Some(vhat), Some(t)) => {
-                let phase = phase.unwrap_or(0.0);
-                fricosc::combined::Oscillation::new(vhat, amp, t, phase).map_err(err)?;
-                Some((vhat, t, phase))
-            }
-            _ => None,
-        };
-        Ok(Job { shape, vbar, amp, tangential })
+        Ok(Job { shape, conditions })
     }
 
     fn evaluate(&self, j: &Job) -> fricosc::Result<Ratio> {
         let shape = &self.list[j.shape as usize];
-        if let Some((vhat, t, phase)) = j.tangential {
-            let o = fricosc::combined::Oscillation { vhat, amp: j.amp, tangential_amp: t, phase };
-            return match self.stepping {
-                Some(st) => {
-                    fricosc::stepper::evaluate_oscillation(shape, &o, st, fricosc::stepper::OSCILLATION_PERIODS)
-                        .map(|e| e.ratio)
-                }
-                None => fricosc::combined::evaluate(shape, &o, fricosc::DEFAULT_TOL).map(|e| e.ratio),
-            };
-        }
         match self.stepping {
-            Some(st) => fricosc::stepper::evaluate(shape, j.vbar, j.amp, st).map(|e| e.ratio),
-            // Inputs checked with the row: the contact itself.
-            None => shape.contact().ratio(j.vbar, j.amp, fricosc::DEFAULT_TOL),
+            Some(st) => fricosc::stepper::evaluate(shape, &j.conditions, st).map(|e| e.ratio),
+            None => shape.ratio(&j.conditions),
         }
     }
 
@@ -223,7 +201,7 @@ impl Shapes {
     /// errors, and the first row at fault (in order) is the one reported.
     fn evaluate_all(&self, jobs: &[Job], source: &str, name: &(dyn Fn(usize) -> String + Sync)) -> Result<Vec<Ratio>> {
         let mut out = Vec::with_capacity(jobs.len());
-        let filler = Ratio { mu_ratio: 0.0, reduction: 0.0 };
+        let filler = Ratio::default();
         map_into(jobs, filler, &|_, j| self.evaluate(j), &mut out).map_err(|(i, e)| match e {
             fricosc::Error::Internal { what } => Error::Internal { what: format!("{source} {}: {what}", name(i)) },
             e => Error::Parse { context: source.into(), reason: format!("{}: {e}", name(i)) },
@@ -263,7 +241,7 @@ impl Shapes {
             }
         }
         let this = &*self;
-        let filler = Job { shape: 0, vbar: 0.0, amp: 0.0, tangential: None };
+        let filler = Job { shape: 0, conditions: Conditions::vbar(0.0, 0.0).map_err(|e| (0, e.to_string()))? };
         let job = |j: usize, row: &T| match read(row) {
             Ok((_, inputs)) => this.job(ids[j], inputs),
             Err(e) => Err(e.to_string()),

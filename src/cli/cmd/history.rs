@@ -53,7 +53,11 @@ pub fn run(a: HistoryArgs) -> Result<()> {
     let chosen = a.spring_at.map(|l| l.0).unwrap_or_default();
     let shape = crate::input::parse_shape(&a.shape)?;
     let amp = a.amp;
-    let vbar = a.velocity.vbar(amp)?;
+    let vbar = match a.velocity.velocity()? {
+        fricosc::Velocity::Vbar(v) => fricosc::Conditions::vbar(v, amp)?,
+        fricosc::Velocity::Vhat(v) => fricosc::Conditions::vhat(v, amp)?,
+    }
+    .as_vbar()?;
     let format = Format::parse(&a.format, &[Format::Json, Format::Csv, Format::Svg, Format::Png])?;
     // A drawing holds at most as many points as a plot (checked before any work).
     let drawn = match stepping {

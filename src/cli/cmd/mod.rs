@@ -110,7 +110,7 @@ pub fn positive(text: &str) -> std::result::Result<f64, String> {
 /// clap's value parser of a quadrature tolerance: finite, in `(0, 1)`.
 pub fn tolerance(text: &str) -> std::result::Result<f64, String> {
     let tol = number(text)?;
-    fricosc::Options::default().with_tol(tol).check().map(|()| tol).map_err(|e| e.to_string())
+    fricosc::Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map(|_| tol).map_err(|e| e.to_string())
 }
 
 /// A list of values: a comma list or `start:stop:count` ([`crate::grid::values`]).
@@ -135,11 +135,11 @@ pub struct VelocityPoint {
 }
 
 impl VelocityPoint {
-    /// `vbar` at amplitude `amp`.
-    pub fn vbar(&self, amp: f64) -> Result<f64> {
+    /// The velocity as given.
+    pub fn velocity(&self) -> Result<fricosc::Velocity> {
         match (self.vbar, self.vhat) {
-            (Some(v), _) => Ok(v),
-            (None, Some(h)) => vbar_of(h, amp),
+            (Some(v), _) => Ok(fricosc::Velocity::Vbar(v)),
+            (None, Some(h)) => Ok(fricosc::Velocity::Vhat(h)),
             (None, None) => Err(Error::Parse { context: "velocity".into(), reason: "give --vbar or --vhat".into() }),
         }
     }
@@ -183,11 +183,11 @@ pub struct TangentialPoint {
 }
 
 impl TangentialPoint {
-    /// The oscillation at `vhat` and `amp`, if a tangential amplitude was given.
-    pub fn oscillation(&self, velocity: &VelocityPoint, amp: f64) -> Result<Option<fricosc::combined::Oscillation>> {
+    /// The tangential oscillation `(T, phase)`, if given; it needs the velocity as `--vhat`.
+    pub fn oscillation(&self, velocity: &VelocityPoint) -> Result<Option<(f64, f64)>> {
         let Some(t) = self.tangential_amp else { return Ok(None) };
-        let vhat = vhat_for_tangential(velocity.vbar.is_some(), velocity.vhat)?;
-        Ok(Some(fricosc::combined::Oscillation::new(vhat, amp, t, self.phase.unwrap_or(0.0))?))
+        vhat_for_tangential(velocity.vbar.is_some(), velocity.vhat)?;
+        Ok(Some((t, self.phase.unwrap_or(0.0))))
     }
 }
 
@@ -289,14 +289,32 @@ pub struct Common {
 }
 
 impl Common {
-    /// The evaluation options.
-    pub fn options(&self) -> fricosc::Options {
-        fricosc::Options::default().with_tol(self.tol.unwrap_or(fricosc::DEFAULT_TOL))
+    /// The quadrature tolerance.
+    pub fn tol(&self) -> f64 {
+        self.tol.unwrap_or(fricosc::DEFAULT_TOL)
     }
-}
 
-pub fn vbar_of(vhat: f64, amp: f64) -> Result<f64> {
-    Ok(fricosc::vbar_from_vhat(vhat, amp)?)
+    /// The conditions of one point: `velocity` and `amp`, with a tangential
+    /// oscillation `(T, phase)` if given, and this tolerance.
+    pub fn conditions(
+        &self,
+        velocity: fricosc::Velocity,
+        amp: f64,
+        tangential: Option<(f64, f64)>,
+    ) -> Result<fricosc::Conditions> {
+        let c = match velocity {
+            fricosc::Velocity::Vbar(v) => fricosc::Conditions::vbar(v, amp)?,
+            fricosc::Velocity::Vhat(v) => fricosc::Conditions::vhat(v, amp)?,
+        };
+        let c = match tangential {
+            Some((t, phase)) => c.with_tangential(t, phase)?,
+            None => {
+                c.as_vbar()?;
+                c
+            }
+        };
+        Ok(c.with_tol(self.tol())?)
+    }
 }
 
 /// `text` with its control characters escaped (`\u{1b}` for an escape), so

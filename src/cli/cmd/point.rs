@@ -3,7 +3,7 @@
 use super::{io_err, number, Common, TangentialPoint, VelocityPoint};
 use crate::error::{Error, Result};
 use clap::Args;
-use fricosc::Shape;
+use fricosc::{Conditions, Shape};
 use std::io::{self, Write};
 
 #[derive(Args)]
@@ -19,37 +19,14 @@ pub struct PointArgs {
     pub tangential: TangentialPoint,
 }
 
-/// A point under oscillation in the sliding direction: the inputs, the answer
-/// and the flat punch's spring (phases and events) or a curved contact's bands.
-fn combined_point(shape: &Shape, o: &fricosc::combined::Oscillation, common: &Common) -> Result<serde_json::Value> {
-    let mut v = serde_json::json!({"vhat": o.vhat, "amp": o.amp, "tangential_amp": o.tangential_amp, "phase": o.phase});
-    let body = match common.method.stepping()? {
-        Some(st) => {
-            let e = fricosc::stepper::evaluate_oscillation(shape, o, st, fricosc::stepper::OSCILLATION_PERIODS)?;
-            serde_json::json!({"mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction, "method": "stepping",
-                "steps": e.steps, "springs": e.springs, "period_change": e.period_change})
-        }
-        None => serde_json::to_value(fricosc::combined::evaluate(shape, o, common.options().tol)?)
-            .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?,
-    };
-    if let (serde_json::Value::Object(m), serde_json::Value::Object(b)) = (&mut v, body) {
-        m.extend(b);
-    }
-    Ok(v)
-}
-
-fn exact_point(shape: &Shape, vbar: f64, amp: f64, opts: &fricosc::Options) -> Result<serde_json::Value> {
-    serde_json::to_value(shape.point(vbar, amp, opts)?)
-        .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
-}
-
 pub fn run(a: PointArgs) -> Result<()> {
     let shape = crate::input::parse_shape(&a.common.shape)?;
-    let amp = a.amp;
-    let body = if let Some(o) = a.tangential.oscillation(&a.velocity, amp)? {
-        combined_point(&shape, &o, &a.common)?
-    } else {
-        normal_point(&shape, &a, amp)?
+    let tangential = a.tangential.oscillation(&a.velocity)?;
+    let c = a.common.conditions(a.velocity.velocity()?, a.amp, tangential)?;
+    let body = match a.common.method.stepping()? {
+        Some(st) => stepped(&shape, &c, st)?,
+        None => serde_json::to_value(shape.report(&c)?)
+            .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?,
     };
     let mut obj = serde_json::Map::new();
     obj.insert("shape".into(), shape.name().into());
@@ -62,15 +39,19 @@ pub fn run(a: PointArgs) -> Result<()> {
     writeln!(out).map_err(io_err)
 }
 
-/// The seed's problem: the solver's point, or the stepping peer's.
-fn normal_point(shape: &Shape, a: &PointArgs, amp: f64) -> Result<serde_json::Value> {
-    let vbar = a.velocity.vbar(amp)?;
-    Ok(match a.common.method.stepping()? {
-        Some(st) => {
-            let e = fricosc::stepper::evaluate(shape, vbar, amp, st)?;
-            serde_json::json!({"vbar": vbar, "amp": amp, "mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction,
-                "method": "stepping", "steps": e.steps, "springs": e.springs, "period_change": e.period_change})
+/// The stepping peer's point: the inputs, its answer and its resolution.
+fn stepped(shape: &Shape, c: &Conditions, st: fricosc::stepper::Stepping) -> Result<serde_json::Value> {
+    let e = fricosc::stepper::evaluate(shape, c, st)?;
+    let mut v = match c.tangential() {
+        Some((t, phase)) => {
+            serde_json::json!({"vhat": c.as_vhat(), "amp": c.amp(), "tangential_amp": t, "phase": phase})
         }
-        None => exact_point(shape, vbar, amp, &a.common.options())?,
-    })
+        None => serde_json::json!({"vbar": c.as_vbar()?, "amp": c.amp()}),
+    };
+    let body = serde_json::json!({"mu_ratio": e.ratio.mu_ratio, "reduction": e.ratio.reduction, "method": "stepping",
+        "steps": e.steps, "springs": e.springs, "period_change": e.period_change});
+    if let (serde_json::Value::Object(m), serde_json::Value::Object(b)) = (&mut v, body) {
+        m.extend(b);
+    }
+    Ok(v)
 }

@@ -1,6 +1,6 @@
 //! `fricosc table`: a grid of amplitudes x velocities (JSON or CSV).
 
-use super::{io_err, list, vbar_of, Common, List, TangentialList, VelocityList};
+use super::{io_err, list, Common, List, TangentialList, VelocityList};
 use crate::error::{Error, Result};
 use crate::output::{Cell, Format, TableWriter, Text};
 use clap::Args;
@@ -41,9 +41,8 @@ fn combined_table(a: &TableArgs, shape: &fricosc::Shape, ts: &[f64], phases: &[f
         for &t in ts {
             for &phase in phases {
                 for &v in vels {
-                    // Checked before any work (and the phase kept as given).
-                    fricosc::combined::Oscillation::new(v, amp, t, phase)?;
-                    points.push(fricosc::combined::Oscillation { vhat: v, amp, tangential_amp: t, phase });
+                    // Checked before any work (and the phase printed as given).
+                    points.push(a.common.conditions(fricosc::Velocity::Vhat(v), amp, Some((t, phase)))?);
                 }
             }
         }
@@ -52,15 +51,12 @@ fn combined_table(a: &TableArgs, shape: &fricosc::Shape, ts: &[f64], phases: &[f
     if let Some(st) = stepping {
         st.check(shape)?;
     }
-    let tol = a.common.options().tol;
     let rows: Vec<[f64; 2]> = points
         .par_iter()
-        .map(|o| {
+        .map(|c| {
             let r = match stepping {
-                Some(st) => {
-                    fricosc::stepper::evaluate_oscillation(shape, o, st, fricosc::stepper::OSCILLATION_PERIODS)?.ratio
-                }
-                None => fricosc::combined::evaluate(shape, o, tol)?.ratio,
+                Some(st) => fricosc::stepper::evaluate(shape, c, st)?.ratio,
+                None => shape.ratio(c)?,
             };
             Ok([r.mu_ratio, r.reduction])
         })
@@ -93,7 +89,7 @@ const ROWS_PER_TASK: usize = 64;
 
 pub fn run(a: TableArgs) -> Result<()> {
     let shape = crate::input::parse_shape(&a.common.shape)?;
-    let opts = a.common.options();
+    let tol = a.common.tol();
     let amps = &a.amp.0;
     let (vels, is_vhat) = a.velocity.values();
     if let Some((ts, phases)) = a.tangential.values(is_vhat)? {
@@ -108,11 +104,10 @@ pub fn run(a: TableArgs) -> Result<()> {
         });
     }
     // Validate every input before the first byte is written.
+    let velocity = |v: f64| if is_vhat { fricosc::Velocity::Vhat(v) } else { fricosc::Velocity::Vbar(v) };
     for &amp in amps {
-        fricosc::error::check_nonneg("amp", amp)?;
         for &v in vels {
-            let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
-            fricosc::error::check_nonneg(if is_vhat { "vhat" } else { "vbar" }, vbar)?;
+            a.common.conditions(velocity(v), amp, None)?;
         }
     }
     let mut cols = vec!["vbar", "amp", "mu_ratio", "reduction"];
@@ -131,7 +126,6 @@ pub fn run(a: TableArgs) -> Result<()> {
     // Rows are filled in place, a chunk of ROWS_PER_TASK at a time (row i is
     // amplitude i / vels.len(), velocity i % vels.len()): no list of pairs, no
     // collection of rayon's pieces into one vector afterwards.
-    opts.check()?;
     let contact = shape.contact();
     let mut rows = vec![[0.0; 3]; total as usize];
     rows.par_chunks_mut(ROWS_PER_TASK).enumerate().try_for_each(|(c, chunk)| {
@@ -140,11 +134,11 @@ pub fn run(a: TableArgs) -> Result<()> {
         for row in chunk {
             let (amp, v) = (amps[a_i], vels[v_i]);
             (a_i, v_i) = if v_i + 1 == vels.len() { (a_i + 1, 0) } else { (a_i, v_i + 1) };
-            let vbar = if is_vhat { vbar_of(v, amp)? } else { v };
+            let vbar = if is_vhat { fricosc::Conditions::vhat(v, amp)?.as_vbar()? } else { v };
             let r = match stepping {
-                Some(st) => fricosc::stepper::evaluate(&shape, vbar, amp, st)?.ratio,
+                Some(st) => fricosc::stepper::evaluate(&shape, &fricosc::Conditions::vbar(vbar, amp)?, st)?.ratio,
                 // Inputs and options checked above, once: the contact itself.
-                None => contact.ratio(vbar, amp, opts.tol)?,
+                None => contact.ratio(vbar, amp, tol)?,
             };
             *row = [vbar, r.mu_ratio, r.reduction];
         }

@@ -345,7 +345,7 @@ fn history_of(
     let amp = h.amp.unwrap_or(0.0);
     let vbar = match (h.vbar, h.vhat) {
         (Some(v), None) => v,
-        (None, Some(v)) => super::vbar_of(v, amp)?,
+        (None, Some(v)) => fricosc::Conditions::vhat(v, amp)?.as_vbar()?,
         _ => return Err(Error::Parse { context: "--history".into(), reason: "needs one of --vbar and --vhat".into() }),
     };
     let (text, source) = read_input(Some(file.to_string()))?;

@@ -116,7 +116,7 @@ fn exact(shape: &Shape, amp: f64, xs: &[f64], vhat: bool) -> Result<Curve> {
     let vbar_of = |x: f64| if vhat && amp > 0.0 { x / amp } else { x };
     let points = xs
         .iter()
-        .map(|&x| shape.evaluate(vbar_of(x), amp).map(|e| [x, e.ratio.mu_ratio]))
+        .map(|&x| fricosc::Conditions::vbar(vbar_of(x), amp).and_then(|c| shape.ratio(&c)).map(|r| [x, r.mu_ratio]))
         .collect::<fricosc::Result<Vec<_>>>()?;
     Ok(Curve { label: format!("exact, du/u0 = {amp}"), kind: "exact".into(), equation: None, amp: Some(amp), points })
 }
@@ -263,7 +263,7 @@ fn jumping_figures() -> Result<Vec<Figure>> {
     // Figs. 7 and 8: paraboloid, with eq. 27.
     let mut c = vec![];
     for &a in &small {
-        let ms = parabolic.mu_static(a, &fricosc::Options::default())?;
+        let ms = parabolic.mu_static(a, fricosc::DEFAULT_TOL)?;
         c.push(exact(&parabolic, a, &vb, false)?);
         if a > 0.0 {
             c.push(approx("eq. 27", Some(a), &vb, |v| seed::eq27(v, ms)));
@@ -272,7 +272,7 @@ fn jumping_figures() -> Result<Vec<Figure>> {
     figs.push(figure("fig7", "Fig. 7: parabolic indenter, exact and eq. 27", XAxis::Vbar, [0.0, 1.2, 0.0, 1.05], c));
     let mut c = vec![];
     for &a in small.iter().chain(&jumping) {
-        let ms = parabolic.mu_static(a, &fricosc::Options::default())?;
+        let ms = parabolic.mu_static(a, fricosc::DEFAULT_TOL)?;
         c.push(exact(&parabolic, a, &vh, true)?);
         if a > 0.0 {
             c.push(approx("eq. 27", Some(a), &vh, |x| seed::eq27(x / a, ms)));
@@ -326,15 +326,15 @@ pub fn user_with(
     }
     let what = if vhat { "vhat" } else { "vbar" };
     for &a in amps {
-        fricosc::error::check_nonneg("amp", a)?;
+        fricosc::check_nonneg("amp", a)?;
     }
     for &x in xs {
-        fricosc::error::check_nonneg(what, x)?;
+        fricosc::check_nonneg(what, x)?;
     }
     // vbar = vhat / amp must be a number at every amplitude (the message names both).
     if let (true, Some(&top)) = (vhat, xs.iter().max_by(|a, b| a.total_cmp(b))) {
         for &a in amps.iter().filter(|&&a| a > 0.0) {
-            fricosc::vbar_from_vhat(top, a)?;
+            fricosc::Conditions::vhat(top, a)?.as_vbar()?;
         }
     }
     let mut xs = xs.to_vec();

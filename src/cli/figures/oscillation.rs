@@ -1,5 +1,5 @@
 //! The figures beyond the seed: oscillation in the sliding direction
-//! ([`fricosc::combined`]), alone and with the normal oscillation.
+//! (`Conditions::with_tangential`), alone and with the normal oscillation.
 
 use super::{approx, figure, grid, Curve, Figure, XAxis};
 use crate::error::Result;
@@ -16,8 +16,8 @@ pub const MAP_T: f64 = 2.0;
 
 /// `mu_macro/mu0` under oscillation (the solver's value).
 pub(super) fn combined_mu(shape: &Shape, vhat: f64, amp: f64, t: f64, phase: f64) -> Result<f64> {
-    let o = fricosc::combined::Oscillation::new(vhat, amp, t, phase)?;
-    Ok(fricosc::combined::evaluate(shape, &o, fricosc::DEFAULT_TOL)?.ratio.mu_ratio)
+    let c = fricosc::Conditions::vhat(vhat, amp)?.with_tangential(t, phase)?;
+    Ok(shape.ratio(&c)?.mu_ratio)
 }
 
 /// The figures beyond the seed (`shared/MODEL-oscillation.md`): pure
@@ -88,7 +88,7 @@ pub(super) fn oscillation_figures() -> Result<Vec<Figure>> {
 /// whether the contact is kept and which way the spring slips, and the line
 /// where `mu_macro` changes sign.
 fn regime_map() -> Result<Figure> {
-    use fricosc::stop::{Contact, StopKind};
+    use fricosc::spring::{StopKind, Touch};
     let (vhat, t) = (COMBINED.0, MAP_T);
     let classes = [
         "contact kept, slips forward",
@@ -100,13 +100,15 @@ fn regime_map() -> Result<Figure> {
     let phases = grid(0.0, std::f64::consts::TAU, 61);
     let amps = grid(0.0, 3.0, 41);
     let mu = |amp: f64, p: f64| -> Result<(f64, usize)> {
-        let o = fricosc::combined::Oscillation::new(vhat, amp, t, p)?;
-        let r = fricosc::combined::evaluate(&Shape::flat(), &o, fricosc::DEFAULT_TOL)?;
-        let class = r.spring.map_or(0, |s| {
+        let c = fricosc::Conditions::vhat(vhat, amp)?.with_tangential(t, p)?;
+        let fricosc::Report::Tangential(r) = Shape::flat().report(&c)? else {
+            return Err(crate::error::Error::Internal { what: "a tangential report without its spring".into() });
+        };
+        let class = r.result.spring.map_or(0, |s| {
             let both = s.phases.iter().any(|q| q.kind == StopKind::Backward && q.end > q.start);
-            usize::from(both) + if s.contact == Contact::Jumping { 2 } else { 0 }
+            usize::from(both) + if s.contact == Touch::Jumping { 2 } else { 0 }
         });
-        Ok((r.ratio.mu_ratio, class))
+        Ok((r.result.ratio.mu_ratio, class))
     };
     for &p in &phases {
         for &a in &amps {

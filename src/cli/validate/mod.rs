@@ -296,8 +296,8 @@ pub(crate) fn count(n: usize, noun: &str) -> String {
 
 /// A regime's label: its name, and for a curved contact the share of the load
 /// on springs that lose contact ("mixed: 38 % jumping", or a range).
-pub(crate) fn regime_label(regime: fricosc::ContactRegime, share: [f64; 2]) -> String {
-    use fricosc::ContactRegime::{Jumping, Mixed};
+pub(crate) fn regime_label(regime: fricosc::report::ContactRegime, share: [f64; 2]) -> String {
+    use fricosc::report::ContactRegime::{Jumping, Mixed};
     let pct = |x: f64| format!("{:.0}", 100.0 * x);
     match regime {
         Mixed if pct(share[0]) == pct(share[1]) => format!("mixed: {} % jumping", pct(share[0])),

@@ -176,7 +176,7 @@ pub fn series_svg(c: &Convergence) -> Result<String> {
 }
 
 /// The smallest and largest jumping share of a regime's rows.
-fn share_range(c: &Convergence, g: fricosc::ContactRegime) -> [f64; 2] {
+fn share_range(c: &Convergence, g: fricosc::report::ContactRegime) -> [f64; 2] {
     let share = c.rows.iter().filter(|r| r.regime == g).map(|r| r.jumping_share);
     [share.clone().fold(f64::INFINITY, f64::min), share.fold(f64::NEG_INFINITY, f64::max)]
 }

@@ -9,14 +9,13 @@
 //! index as a second argument, which the Python side turns into an index of
 //! the broadcast shape.
 
-use fricosc::error::check_nonneg;
+use fricosc::contact::Table;
 use fricosc::history::{history as core_history, HistoryOptions, Sample};
-use fricosc::profile::Table;
 use fricosc::stepper::Stepping;
 use fricosc::validation::{
     compare, compare_history, convergence, rows_from_columns, to_static_units, AtRest, Check, HistoryData, TimeAxis,
 };
-use fricosc::{Error, Options, Shape};
+use fricosc::{Conditions, Error, Report, Shape, DEFAULT_TOL};
 use numpy::{IntoPyArray, PyArray3, PyArrayDyn, PyArrayMethods, PyReadonlyArray1, PyReadonlyArrayDyn};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
@@ -104,14 +103,23 @@ impl CoreShape {
     }
 }
 
+/// The conditions of one element of the seed's problem: checked, `vbar`
+/// from `vhat` if asked (and defined).
+fn conditions(v: f64, a: f64, vhat: bool, tol: f64) -> fricosc::Result<Conditions> {
+    let c = if vhat { Conditions::vhat(v, a)? } else { Conditions::vbar(v, a)? };
+    c.as_vbar()?;
+    c.with_tol(tol)
+}
+
 /// `(vbar, amp)` of one element: checked, `vbar` from `vhat` if asked.
 fn velocity(v: f64, a: f64, vhat: bool) -> fricosc::Result<(f64, f64)> {
-    check_nonneg("amp", a)?;
-    if vhat {
-        Ok((fricosc::vbar_from_vhat(v, a)?, a))
-    } else {
-        Ok((check_nonneg("vbar", v)?, a))
-    }
+    let c = conditions(v, a, vhat, DEFAULT_TOL)?;
+    Ok((c.as_vbar()?, c.amp()))
+}
+
+/// The conditions of one element under a tangential oscillation.
+fn oscillation(v: f64, a: f64, t: f64, p: f64, tol: f64) -> fricosc::Result<Conditions> {
+    Conditions::vhat(v, a)?.with_tangential(t, p)?.with_tol(tol)
 }
 
 /// `mu_ratio` (or, with `reduction`, the reduction) at every element of the
@@ -134,16 +142,14 @@ fn evaluate<'py>(
     if v.shape() != a.shape() {
         return Err(InputError::new_err(format!("vbar and amp differ in shape ({:?} and {:?})", v.shape(), a.shape())));
     }
-    let opts = Options::default().with_tol(tol);
-    opts.check().map_err(to_py)?;
+    Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
     for (i, (&vi, &ai)) in v.iter().zip(a.iter()).enumerate() {
-        velocity(vi, ai, vhat).map_err(|e| at_index(e, i))?;
+        conditions(vi, ai, vhat, tol).map_err(|e| at_index(e, i))?;
     }
     let shape = &shape.inner;
     let mut inputs = v.iter().zip(a.iter()).map(|(&x, &y)| [x, y]);
     chunked(py, v.shape(), &mut inputs, &|&[x, y]: &[f64; 2]| {
-        let (vbar, amp) = velocity(x, y, vhat)?;
-        let r = shape.evaluate_with(vbar, amp, &opts)?.ratio;
+        let r = shape.evaluate(&conditions(x, y, vhat, tol)?)?.ratio;
         Ok(if reduction { r.reduction } else { r.mu_ratio })
     })
 }
@@ -215,7 +221,7 @@ fn evaluate_oscillation<'py>(
     if arrays.iter().any(|x| x.shape() != arrays[0].shape()) {
         return Err(InputError::new_err("vhat, amp, tangential_amp and phase differ in shape".to_string()));
     }
-    Options::default().with_tol(tol).check().map_err(to_py)?;
+    Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
     let each = || {
         arrays[0]
             .iter()
@@ -225,12 +231,11 @@ fn evaluate_oscillation<'py>(
             .map(|(((&v, &a), &t), &p)| [v, a, t, p])
     };
     for (i, [v, a, t, p]) in each().enumerate() {
-        fricosc::combined::Oscillation::new(v, a, t, p).map_err(|e| at_index(e, i))?;
+        oscillation(v, a, t, p, tol).map_err(|e| at_index(e, i))?;
     }
     let shape = &shape.inner;
     chunked(py, arrays[0].shape(), &mut each(), &|&[v, a, t, p]: &[f64; 4]| {
-        let o = fricosc::combined::Oscillation::new(v, a, t, p)?;
-        let r = fricosc::combined::evaluate(shape, &o, tol)?.ratio;
+        let r = shape.ratio(&oscillation(v, a, t, p, tol)?)?;
         Ok(if reduction { r.reduction } else { r.mu_ratio })
     })
 }
@@ -251,18 +256,12 @@ fn point_oscillation<'py>(
     #[derive(serde::Serialize)]
     struct Named<'a> {
         shape: &'a str,
-        vhat: f64,
-        amp: f64,
-        tangential_amp: f64,
-        phase: f64,
         #[serde(flatten)]
-        point: fricosc::combined::Combined,
+        point: Report,
     }
-    Options::default().with_tol(tol).check().map_err(to_py)?;
-    let o = fricosc::combined::Oscillation::new(vhat, amp, t, phase).map_err(to_py)?;
-    let p = fricosc::combined::evaluate(&shape.inner, &o, tol).map_err(to_py)?;
-    let named = Named { shape: shape.inner.name(), vhat, amp, tangential_amp: t, phase: o.phase, point: p };
-    pythonize::pythonize(py, &named).map_err(serialise_err)
+    let c = oscillation(vhat, amp, t, phase, tol).map_err(to_py)?;
+    let p = shape.inner.report(&c).map_err(to_py)?;
+    pythonize::pythonize(py, &Named { shape: shape.inner.name(), point: p }).map_err(serialise_err)
 }
 
 /// One point as `fricosc point` reports it: a dict.
@@ -272,10 +271,9 @@ fn point<'py>(py: Python<'py>, shape: &CoreShape, v: f64, a: f64, vhat: bool, to
     struct Named<'a> {
         shape: &'a str,
         #[serde(flatten)]
-        point: fricosc::Point,
+        point: Report,
     }
-    let (v, a) = velocity(v, a, vhat).map_err(to_py)?;
-    let p = shape.inner.point(v, a, &Options::default().with_tol(tol)).map_err(to_py)?;
+    let p = shape.inner.report(&conditions(v, a, vhat, tol).map_err(to_py)?).map_err(to_py)?;
     pythonize::pythonize(py, &Named { shape: shape.inner.name(), point: p }).map_err(serialise_err)
 }
 

@@ -8,7 +8,7 @@
 //! A spring's steady state changes its sequence of phases (stick, forward
 //! and backward slips, contact) only at isolated `z`: where it starts or stops
 //! to lose contact (`G = 1 - amp`, closed form), where `G` itself is not smooth
-//! ([`crate::Contact::breakpoints`]), and where an event appears or disappears
+//! ([`crate::contact::Contact::breakpoints`]), and where an event appears or disappears
 //! (a tangency of the force and its bound, found by bisection on the
 //! sequence of phases between `z` samples). Between those edges the means
 //! are smooth in `z` and vanish or turn like a square root at the edges, so each
@@ -20,61 +20,39 @@
 //! # Units
 //! `mu_macro/mu0 = int <f> dz / int <B> dz` over the foundation (`<f>`, `<B>`
 //! per unit length in `mu0 E* u0`), the normal force from the same quadrature
-//! as the friction force (it equals [`crate::Contact::mean_normal`] to the
+//! as the friction force (it equals [`crate::contact::Contact::mean_normal`] to the
 //! tolerance, tested); the reduction `int <B - f> dz / int <B> dz` on its own.
 
+use crate::conditions::Conditions;
 use crate::error::{check_nonneg, Error, Result};
 use crate::ratio::Ratio;
 use crate::shape::Shape;
 use crate::stop::{solve, Bound, Drive, StopKind, StopSpring};
 
-/// The oscillation and the sliding: `vhat` (eq. 15), the normal amplitude
-/// `amp = du/u0`, the tangential amplitude `T = dx/l` (pre-slip lengths
-/// `l = mu0 u0 kz/kx`) and its phase against the normal oscillation.
+/// The oscillation and the sliding of [`Conditions`] with a tangential
+/// oscillation: `vhat` (eq. 15), the normal amplitude `amp = du/u0`, the
+/// tangential amplitude `T = dx/l` (pre-slip lengths `l = mu0 u0 kz/kx`) and
+/// its phase against the normal oscillation (the body's position is
+/// `vhat tau + T sin(tau + phase)`, the indentation `u0 - du cos tau`).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct Oscillation {
-    /// `v0 / (omega l)`.
-    pub vhat: f64,
-    /// `du / u0`.
-    pub amp: f64,
-    /// `dx / l`.
-    pub tangential_amp: f64,
-    /// Radians: the body's position is `vhat tau + T sin(tau + phase)`, the
-    /// indentation `u0 - du cos tau`.
-    pub phase: f64,
+pub(crate) struct Oscillation {
+    pub(crate) vhat: f64,
+    pub(crate) amp: f64,
+    pub(crate) tangential_amp: f64,
+    pub(crate) phase: f64,
 }
 
 impl Oscillation {
-    /// Checked: `vhat`, `amp`, `tangential_amp` finite and `>= 0`, `phase` finite.
-    ///
-    /// # Errors
-    /// [`Error::InvalidParameter`] naming the bad input.
-    pub fn new(vhat: f64, amp: f64, tangential_amp: f64, phase: f64) -> Result<Oscillation> {
-        check_nonneg("vhat", vhat)?;
-        check_nonneg("amp", amp)?;
-        check_nonneg("tangential-amp", tangential_amp)?;
-        if !phase.is_finite() {
-            return Err(Error::param("phase", phase, "must be finite"));
-        }
-        // Beyond this the phase's rounding (ulp of the phase, times T) is the answer's scale.
-        if tangential_amp > MAX_TANGENTIAL_AMP || vhat > MAX_TANGENTIAL_AMP {
-            return Err(Error::param(
-                if vhat > MAX_TANGENTIAL_AMP { "vhat" } else { "tangential-amp" },
-                tangential_amp.max(vhat),
-                "must be <= 1e6 pre-slip lengths (the rounding of the phase grows with T; near there the rigid-body law (2/pi) asin(vhat/T) holds to ~1e-6)",
-            ));
-        }
-        Ok(Oscillation { vhat, amp, tangential_amp, phase: phase.rem_euclid(std::f64::consts::TAU) })
+    /// The oscillation of `c` (`T = 0` without a tangential one).
+    pub(crate) fn of(c: &Conditions) -> Oscillation {
+        let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+        Oscillation { vhat: c.as_vhat(), amp: c.amp(), tangential_amp: t, phase }
     }
 
     fn drive(&self) -> Drive {
         Drive { vhat: self.vhat, t: self.tangential_amp, phase: self.phase }
     }
 }
-
-/// Largest tangential amplitude and velocity accepted (pre-slip lengths).
-pub const MAX_TANGENTIAL_AMP: f64 = 1e6;
 
 /// One band of a curved contact's springs.
 #[derive(Debug, Clone, PartialEq)]
@@ -111,6 +89,26 @@ pub struct Combined {
     pub bands: Vec<CombinedBand>,
 }
 
+/// A point under an oscillation in the sliding direction
+/// ([`crate::Report::Tangential`]): its inputs and the answer with the flat
+/// punch's spring or a curved contact's bands.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
+pub struct Tangential {
+    /// `vhat` (eq. 15).
+    pub vhat: f64,
+    /// `du/u0`.
+    pub amp: f64,
+    /// `T = dx/l`.
+    pub tangential_amp: f64,
+    /// The phase, radians in `[0, 2 pi)`.
+    pub phase: f64,
+    /// The answer, the spring's phases or the bands.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub result: Combined,
+}
+
 /// One spring's steady state for a report.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
@@ -118,7 +116,7 @@ pub struct SpringReport {
     /// Its contact and phases, as a band's regime: e.g. `jumping: stick, backward, stick, forward`.
     pub regime: String,
     /// `permanent`, `jumping` or `never`.
-    pub contact: crate::stop::Contact,
+    pub contact: crate::stop::Touch,
     /// The phases, in order from the start of the window.
     pub phases: Vec<crate::stop::StopPhase>,
     /// The events of one period: where a phase ends (phase in `[0, 2 pi)`).
@@ -148,17 +146,17 @@ fn kind_name(k: StopKind) -> &'static str {
 }
 
 /// What a spring does, as a band's name: its contact and phases.
-fn signature(s: &StopSpring) -> (crate::stop::Contact, Vec<StopKind>) {
+fn signature(s: &StopSpring) -> (crate::stop::Touch, Vec<StopKind>) {
     let mut kinds: Vec<StopKind> = s.phases.iter().filter(|p| p.end > p.start).map(|p| p.kind).collect();
     kinds.dedup();
     (s.contact, kinds)
 }
 
-fn signature_name(sig: &(crate::stop::Contact, Vec<StopKind>)) -> String {
+fn signature_name(sig: &(crate::stop::Touch, Vec<StopKind>)) -> String {
     let contact = match sig.0 {
-        crate::stop::Contact::Never => "never",
-        crate::stop::Contact::Permanent => "permanent",
-        crate::stop::Contact::Jumping => "jumping",
+        crate::stop::Touch::Never => "never",
+        crate::stop::Touch::Permanent => "permanent",
+        crate::stop::Touch::Jumping => "jumping",
     };
     let phases: Vec<&str> = sig.1.iter().map(|&k| kind_name(k)).collect();
     format!("{contact}: {}", phases.join(", "))
@@ -168,12 +166,12 @@ fn signature_name(sig: &(crate::stop::Contact, Vec<StopKind>)) -> String {
 fn report(s: &StopSpring, b: Bound) -> SpringReport {
     use std::f64::consts::TAU;
     let mut events = vec![];
-    if s.contact == crate::stop::Contact::Jumping {
+    if s.contact == crate::stop::Touch::Jumping {
         events.push(StopEvent { kind: "contact", tau: s.window.0.rem_euclid(TAU), normal: 0.0, tangential: 0.0 });
     }
     let wrap = match (s.contact, s.phases.first(), s.phases.last()) {
         // Always in contact: the period's first phase starts where its last ends.
-        (crate::stop::Contact::Permanent, Some(first), Some(last)) if first.kind != last.kind => Some((last, first)),
+        (crate::stop::Touch::Permanent, Some(first), Some(last)) if first.kind != last.kind => Some((last, first)),
         _ => None,
     };
     for (p, q) in s.phases.iter().zip(s.phases.iter().skip(1)).chain(wrap) {
@@ -193,7 +191,7 @@ fn report(s: &StopSpring, b: Bound) -> SpringReport {
             tangential: f,
         });
     }
-    if s.contact == crate::stop::Contact::Jumping {
+    if s.contact == crate::stop::Touch::Jumping {
         events.push(StopEvent {
             kind: "loss_of_contact",
             tau: s.window.1.rem_euclid(TAU),
@@ -220,14 +218,14 @@ fn spring_scale(b: Bound, d: Drive) -> f64 {
     (b.c.abs() + b.amp + d.t + d.vhat * std::f64::consts::TAU).max(f64::MIN_POSITIVE)
 }
 
-/// `mu_macro/mu0` of `shape` under the oscillation `o`, to the relative
-/// quadrature tolerance `tol` (curved shapes). `T = 0` is the seed's problem:
-/// its solver's answer (`vbar = vhat/amp`; no oscillation at all: 1).
+/// `mu_macro/mu0` of `shape` under the conditions `c`, to their relative
+/// quadrature tolerance (curved shapes). `T = 0` is the seed's problem: its
+/// solver's answer (`vbar = vhat/amp`; no oscillation at all: 1).
 ///
 /// # Errors
-/// The solver's errors for bad inputs; [`Error::Internal`] for a result out of range.
-pub fn evaluate(shape: &Shape, o: &Oscillation, tol: f64) -> Result<Combined> {
-    let o = Oscillation::new(o.vhat, o.amp, o.tangential_amp, o.phase)?;
+/// The solver's errors; [`Error::Internal`] for a result out of range.
+pub(crate) fn evaluate(shape: &Shape, c: &Conditions) -> Result<Combined> {
+    let (o, tol) = (Oscillation::of(c), c.tol());
     if o.tangential_amp == 0.0 {
         if o.amp == 0.0 {
             return Ok(Combined {
@@ -237,7 +235,7 @@ pub fn evaluate(shape: &Shape, o: &Oscillation, tol: f64) -> Result<Combined> {
                 bands: vec![],
             });
         }
-        let e = shape.contact().evaluate(crate::vbar_from_vhat(o.vhat, o.amp)?, o.amp, tol)?;
+        let e = shape.contact().evaluate(c.as_vbar()?, o.amp, tol)?;
         return Ok(Combined { ratio: e.ratio, error_estimate: e.error_estimate, spring: None, bands: vec![] });
     }
     let d = o.drive();
@@ -267,7 +265,7 @@ const MAX_ORDER: usize = 1024;
 /// Samples of the phase sequence per band before bisecting for its changes.
 const SCAN: usize = 32;
 
-fn curved(c: &dyn crate::Contact, o: &Oscillation, tol: f64) -> Result<Combined> {
+fn curved(c: &dyn crate::contact::Contact, o: &Oscillation, tol: f64) -> Result<Combined> {
     check_nonneg("tol", tol)?;
     let d = o.drive();
     let zmax = c.reach(o.amp)?;
@@ -344,13 +342,13 @@ fn curved(c: &dyn crate::Contact, o: &Oscillation, tol: f64) -> Result<Combined>
     Ok(Combined { ratio, error_estimate, spring: None, bands })
 }
 
-type Sig = (crate::stop::Contact, Vec<StopKind>);
+type Sig = (crate::stop::Touch, Vec<StopKind>);
 
 /// The bands' edges over `[0, zmax]`: the ends, where contact starts to be
 /// lost, where `G` has kinks, and where the phase sequence changes (found by
 /// bisection between [`SCAN`] samples of each piece).
 fn band_edges(
-    c: &dyn crate::Contact,
+    c: &dyn crate::contact::Contact,
     amp: f64,
     zmax: f64,
     spring: &dyn Fn(f64) -> (StopSpring, Bound),

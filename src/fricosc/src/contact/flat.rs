@@ -4,9 +4,9 @@
 //! `mu0 kz u0` (tangential), so that `amp = 0` (no oscillation) stays finite.
 
 use crate::error::{check_nonneg, Result};
+use crate::model::spring::{Event, EventKind, Precision, Regime, Spring};
 use crate::ratio::Ratio;
 use crate::special::one_minus_a_cos_asin;
-use crate::spring::{Event, EventKind, Precision, Regime, Spring};
 
 /// The exact steady state of a flat punch.
 #[derive(Debug, Clone, PartialEq)]
@@ -68,7 +68,7 @@ pub fn mean_normal(amp: f64) -> f64 {
     if amp <= 1.0 {
         1.0
     } else {
-        amp * crate::spring::mean_normal_of(spring_s(amp), (amp - 1.0) / amp)
+        amp * crate::model::spring::mean_normal_of(spring_s(amp), (amp - 1.0) / amp)
     }
 }
 
@@ -116,11 +116,6 @@ pub(crate) fn ratio_of(sp: &Spring, amp: f64) -> Result<Ratio> {
 }
 
 /// `mu_macro/mu0` of a flat punch; `vbar, amp` finite and `>= 0`.
-///
-/// ```
-/// let r = fricosc::flat::ratio(0.5, 0.5).unwrap();
-/// assert!((r.mu_ratio - 0.8992738983331656556).abs() < 1e-15);
-/// ```
 ///
 /// # Errors
 /// [`crate::Error::InvalidParameter`] for a negative or non-finite input;

@@ -171,7 +171,7 @@ impl Contact for FlatTip {
         let tol = tol.max(crate::DEFAULT_TOL);
         // Forces in units of kz u0 (amp <= 1) or kz du (amp > 1): both finite.
         let unit = if amp <= 1.0 { amp } else { 1.0 };
-        let flat = crate::flat::spring(vbar, amp, crate::spring::Precision::Means);
+        let flat = crate::flat::spring(vbar, amp, crate::model::spring::Precision::Means);
         // Lengths scaled by sqrt(amp) for amp > 1 (module docs).
         let big = amp > 1.0;
         let scale = if big { amp.sqrt() } else { 1.0 };

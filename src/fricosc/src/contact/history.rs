@@ -13,8 +13,8 @@
 //! foundation, in units of `E* u0` (and `mu0 E* u0`).
 
 use crate::error::{check_nonneg, Error, Result};
+use crate::model::spring::{EventKind, Spring};
 use crate::shape::Shape;
-use crate::spring::{EventKind, Spring};
 use std::f64::consts::TAU;
 
 /// One sample of the forces.
@@ -230,7 +230,7 @@ pub fn history(shape: &Shape, vbar: f64, amp: f64, opts: &HistoryOptions) -> Res
 
 /// The flat punch's samples at `taus`, with its events added.
 fn flat_samples(vbar: f64, amp: f64, periods: usize, mut taus: Vec<(f64, Option<EventKind>)>) -> Vec<Sample> {
-    let sp = crate::flat::spring(vbar, amp, crate::spring::Precision::Events);
+    let sp = crate::flat::spring(vbar, amp, crate::model::spring::Precision::Events);
     for p in 0..periods {
         for e in sp.events() {
             taus.push((e.tau + TAU * p as f64, Some(e.kind)));
@@ -248,7 +248,7 @@ fn flat_samples(vbar: f64, amp: f64, periods: usize, mut taus: Vec<(f64, Option<
 /// Every other contact through its MDR foundation ([`crate::contact::grid`]):
 /// the normal force exactly, the tangential one as the grid's sum.
 fn foundation_samples(
-    c: &dyn crate::Contact,
+    c: &dyn crate::contact::Contact,
     vbar: f64,
     amp: f64,
     opts: &HistoryOptions,

@@ -1,28 +1,30 @@
-//! Contacts: the flat punch (one spring), power-law profiles and tabulated
-//! profiles by the method of dimensionality reduction, and [`shape::Shape`].
+//! Contacts: the flat punch (one spring), power-law profiles, a sphere worn
+//! flat, and tabulated profiles by the method of dimensionality reduction.
 //!
 //! # Adding an indenter
-//! A new analytic indenter is one file implementing [`Contact`] (the solver
-//! `evaluate`, and its MDR profile: `equivalent_profile`, `reach`,
-//! `static_force`) and one line in the registry of [`shape`] (its name prefix
-//! and its parser); [`shape::Shape::parse`] then accepts it everywhere a shape is
-//! named (`point`, `table`, `batch`, `validate`, `history`), and the
-//! time-stepping peer steps it through [`grid`]. [`flat_tip`] is the example: a
-//! sphere worn flat at its tip. A caller's own contact needs no registry:
-//! [`shape::Shape::from_contact`].
+//! A new indenter is one implementation of [`Contact`] (its MDR profile:
+//! `equivalent_profile`, `reach`, `static_force`; and its solver `evaluate`)
+//! and, to be named on the command line, one line in the registry of
+//! [`crate::Shape::parse`]. A caller's own contact needs no registry:
+//! [`crate::Shape::from_contact`]. [`FlatTip`] is the example: a sphere worn
+//! flat at its tip.
 use crate::error::Result;
 use crate::ratio::Ratio;
-use crate::shape::{Evaluation, Point};
+use crate::shape::{Evaluation, Report};
 use std::f64::consts::PI;
 
-pub mod combined;
-pub mod flat;
-pub mod flat_tip;
-pub mod history;
-pub mod mdr;
-pub mod profile;
-pub mod regime;
-pub mod shape;
+pub(crate) mod combined;
+pub(crate) mod flat;
+pub(crate) mod flat_tip;
+pub(crate) mod history;
+pub(crate) mod mdr;
+pub(crate) mod profile;
+pub(crate) mod regime;
+pub(crate) mod shape;
+
+pub use flat_tip::FlatTip;
+pub use profile::{Table, Tabulated, MAX_TABLE_ROWS};
+pub use shape::Reader;
 
 /// A contact geometry: `mu_macro/mu0` as a function of `vbar` (eq. 3) and
 /// `amp = du/u0`.
@@ -55,8 +57,8 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     /// # Errors
     /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
     /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
-    fn point(&self, vbar: f64, amp: f64, tol: f64) -> Result<Point> {
-        Ok(Point::Other { vbar, amp, evaluation: self.evaluate(vbar, amp, tol)? })
+    fn point(&self, vbar: f64, amp: f64, tol: f64) -> Result<Report> {
+        Ok(Report::Other { vbar, amp, evaluation: self.evaluate(vbar, amp, tol)? })
     }
 
     /// `mu_static/mu0`, the limit `vbar -> 0+` (the minimum normal force over
@@ -131,7 +133,7 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
 
     /// Where the equivalent profile `G` is not smooth (`z` values in
     /// `(0, reach)`): the combined-oscillation quadrature cuts its bands there
-    /// ([`combined`]). By default none.
+    /// (oscillation in the sliding direction). By default none.
     fn breakpoints(&self) -> Vec<f64> {
         vec![]
     }
@@ -159,7 +161,7 @@ pub(crate) fn grid(contact: &dyn Contact, amp: f64, count: usize) -> Result<(f64
 /// Gauss-Legendre of order `m` in `theta` with `x = p + (q - p)(1 - cos theta)/2`:
 /// the substitution absorbs the square-root behaviour of the means where a band
 /// ends at a contact-loss threshold (`s = +-1`). Each spring's `<F>` is its own
-/// cancellation-free form ([`crate::spring::Spring::mean_tangential`]), so the
+/// cancellation-free form ([`crate::model::spring::Spring::mean_tangential`]), so the
 /// third sum keeps its relative accuracy where it is small. Shared by the
 /// tabulated and flat-tip contacts.
 pub(crate) fn cosine_band(
@@ -176,7 +178,7 @@ pub(crate) fn cosine_band(
     for (&x, &w) in rule.nodes.iter().zip(&rule.weights) {
         let (st, ct) = (0.5 * std::f64::consts::PI * (1.0 + x)).sin_cos();
         let (s, jac) = spring(p + half * (1.0 - ct));
-        let sp = crate::spring::Spring::new(s, vbar);
+        let sp = crate::model::spring::Spring::new(s, vbar);
         let weight = w * half * st * jac * unit;
         for (sum, mean) in sums.iter_mut().zip([sp.mean_normal, sp.deficit, sp.mean_tangential()]) {
             *sum += weight * mean;
@@ -264,8 +266,8 @@ impl Contact for FlatPunch {
     fn ratio(&self, vbar: f64, amp: f64, _tol: f64) -> Result<crate::ratio::Ratio> {
         flat::ratio(vbar, amp)
     }
-    fn point(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Point> {
-        Ok(Point::Flat(flat::point(vbar, amp)?))
+    fn point(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Report> {
+        Ok(Report::Flat(flat::point(vbar, amp)?))
     }
     fn mu_static(&self, amp: f64, _tol: f64) -> Result<f64> {
         Ok(flat::mu_static_ratio(amp))
@@ -292,7 +294,7 @@ impl Contact for FlatPunch {
     }
 }
 
-/// The MDR power-law profile `g ~ |x|^n` ([`mdr`]).
+/// The MDR power-law profile `g ~ |x|^n`, solved in analytic bands.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PowerLaw {
     /// The exponent `n` (1: cone, 2: paraboloid).
@@ -310,11 +312,11 @@ impl Contact for PowerLaw {
         }
     }
     fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
-        let r = mdr::power_law(self.n, vbar, amp, &crate::shape::Options::default().with_tol(tol))?;
+        let r = mdr::power_law(self.n, vbar, amp, tol)?;
         Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate, interpolation_error: None })
     }
-    fn point(&self, vbar: f64, amp: f64, tol: f64) -> Result<Point> {
-        Ok(Point::Power(mdr::point(self.n, vbar, amp, &crate::shape::Options::default().with_tol(tol))?))
+    fn point(&self, vbar: f64, amp: f64, tol: f64) -> Result<Report> {
+        Ok(Report::Power(mdr::point(self.n, vbar, amp, tol)?))
     }
     fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
         mdr::mu_static_ratio(self.n, amp, tol)

@@ -9,8 +9,8 @@
 //! stays in contact), `jumping` from `amp = 1` on (every spring loses contact).
 
 use crate::error::{check_nonneg, Result};
+use crate::model::spring::{Regime, Spring};
 use crate::shape::Shape;
-use crate::spring::{Regime, Spring};
 
 /// What the springs of a contact do at one point.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -84,7 +84,7 @@ pub(crate) fn regime_of(flat: bool, vbar: f64, amp: f64) -> ContactRegime {
 /// The share of the period-mean normal force carried by springs that lose
 /// contact during the period, in `[0, 1]`: 0 or 1 for the flat punch (`amp <= 1`
 /// or not); for a curved contact `1 - P/<N>`, where `<N>` is
-/// [`crate::Contact::mean_normal`] and `P` the mean force of the springs that
+/// [`crate::contact::Contact::mean_normal`] and `P` the mean force of the springs that
 /// never lose contact, those with `G(z) <= 1 - amp`. Each has the mean force
 /// `2 (1 - G(z))` (the oscillation averages out), so
 /// `P = 2 int_0^{z_p} (1 - G) dz = F(1 - amp) + 2 amp z_p`, with `F` the static

@@ -2,7 +2,8 @@
 //! the command line writes it, or from a [`Contact`] of the caller's own.
 
 use super::{Contact, FlatPunch, PowerLaw};
-use crate::error::{check_nonneg, Error, Result};
+use crate::conditions::Conditions;
+use crate::error::{Error, Result};
 use crate::ratio::Ratio;
 use std::sync::Arc;
 
@@ -15,58 +16,19 @@ pub const MIN_EXPONENT: f64 = 0.05;
 /// punch to within `O(1/N)`.
 pub const MAX_EXPONENT: f64 = 1e6;
 
-/// Default relative quadrature tolerance of curved shapes: about what f64 allows.
-pub const DEFAULT_TOL: f64 = 4e-15;
-
 /// The reader of the files a shape or scene names (`profile:FILE@U0`): the
 /// library reads no files itself. [`crate::io::read_capped`] is one.
 pub type Reader<'a> = &'a dyn Fn(&str) -> std::io::Result<String>;
-
-/// How a point is evaluated.
-///
-/// ```
-/// let opts = fricosc::Options::default().with_tol(1e-10);
-/// assert_eq!(opts.tol, 1e-10);
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub struct Options {
-    /// Relative quadrature tolerance of curved shapes (ignored by the flat
-    /// punch): finite, in `(0, 1)`; looser is faster. Default [`DEFAULT_TOL`].
-    pub tol: f64,
-}
-
-impl Default for Options {
-    fn default() -> Self {
-        Options { tol: DEFAULT_TOL }
-    }
-}
-
-impl Options {
-    /// These options with the quadrature tolerance `tol`.
-    #[must_use]
-    pub fn with_tol(self, tol: f64) -> Self {
-        Options { tol, ..self }
-    }
-
-    /// Check the options.
-    ///
-    /// # Errors
-    /// [`Error::InvalidParameter`] for a tolerance outside `(0, 1)` or not finite.
-    pub fn check(&self) -> Result<()> {
-        check_tol(self.tol).map(|_| ())
-    }
-}
 
 /// A contact geometry: the flat punch, a power law, a worn tip, a tabulated
 /// profile, or any [`Contact`] of the caller's. Two shapes are equal when their
 /// names are.
 ///
 /// ```
-/// use fricosc::Shape;
+/// use fricosc::{Conditions, Shape};
 /// let hertz = Shape::parse("parabolic")?;
 /// assert_eq!(hertz, Shape::parabolic());
-/// let e = hertz.evaluate(0.3, 0.4)?;
+/// let e = hertz.evaluate(&Conditions::vbar(0.3, 0.4)?)?;
 /// assert!((e.ratio.mu_ratio - 0.7661542311590507).abs() < 1e-15);
 /// # Ok::<(), fricosc::Error>(())
 /// ```
@@ -199,44 +161,60 @@ impl Shape {
         self.contact.single_spring()
     }
 
-    /// `mu_macro/mu0` at `(vbar, amp)` with the default [`Options`].
+    /// `mu_macro/mu0` under the conditions `c`, with an error estimate:
+    /// the one way in. Without a tangential oscillation the seed's problem
+    /// at `vbar`; with one, the stop operator of every spring.
+    ///
+    /// ```
+    /// use fricosc::{Conditions, Shape};
+    /// let e = Shape::cone().evaluate(&Conditions::vbar(0.3, 0.5)?.with_tol(1e-9)?)?;
+    /// assert!(e.error_estimate < 1e-9 && e.ratio.mu_ratio > 0.5);
+    /// # Ok::<(), fricosc::Error>(())
+    /// ```
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] for a negative or non-finite input or an
-    /// amplitude beyond a tabulated profile; [`Error::Internal`] for a bug.
-    pub fn evaluate(&self, vbar: f64, amp: f64) -> Result<Evaluation> {
-        self.evaluate_with(vbar, amp, &Options::default())
+    /// [`Error::InvalidParameter`] for an amplitude beyond a tabulated
+    /// profile, or `vbar = vhat/amp` undefined (`amp = 0` without a
+    /// tangential oscillation); [`Error::Internal`] for a bug.
+    pub fn evaluate(&self, c: &Conditions) -> Result<Evaluation> {
+        match c.tangential() {
+            Some(_) => {
+                let r = super::combined::evaluate(self, c)?;
+                Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate, interpolation_error: None })
+            }
+            None => self.contact.evaluate(c.as_vbar()?, c.amp(), c.tol()),
+        }
     }
 
-    /// `mu_macro/mu0` at `(vbar, amp)`, both finite and `>= 0`.
-    ///
-    /// # Errors
-    /// As [`Shape::evaluate`], and for invalid options.
-    pub fn evaluate_with(&self, vbar: f64, amp: f64, opts: &Options) -> Result<Evaluation> {
-        check_point(vbar, amp, opts)?;
-        self.contact.evaluate(vbar, amp, opts.tol)
-    }
-
-    /// `mu_macro/mu0` and the reduction at `(vbar, amp)` with the default
-    /// [`Options`]: [`Shape::evaluate`]'s ratio, without its error estimate
-    /// (the same numbers, less work where the estimate costs any).
+    /// [`Shape::evaluate`]'s ratio without its error estimate: the same
+    /// numbers, less work where the estimate costs any (a batch of rows).
     ///
     /// # Errors
     /// As [`Shape::evaluate`].
-    pub fn ratio(&self, vbar: f64, amp: f64) -> Result<Ratio> {
-        check_nonneg("vbar", vbar)?;
-        check_nonneg("amp", amp)?;
-        self.contact.ratio(vbar, amp, DEFAULT_TOL)
+    pub fn ratio(&self, c: &Conditions) -> Result<Ratio> {
+        match c.tangential() {
+            Some(_) => Ok(super::combined::evaluate(self, c)?.ratio),
+            None => self.contact.ratio(c.as_vbar()?, c.amp(), c.tol()),
+        }
     }
 
     /// Everything the solver reports about one point: the flat punch's regime
-    /// and events, a power law's bands, or the evaluation of other shapes.
+    /// and events, a power law's bands, under a tangential oscillation the
+    /// flat punch's phases or a curved contact's bands; else the evaluation.
     ///
     /// # Errors
-    /// As [`Shape::evaluate_with`].
-    pub fn point(&self, vbar: f64, amp: f64, opts: &Options) -> Result<Point> {
-        check_point(vbar, amp, opts)?;
-        self.contact.point(vbar, amp, opts.tol)
+    /// As [`Shape::evaluate`].
+    pub fn report(&self, c: &Conditions) -> Result<Report> {
+        match c.tangential() {
+            Some((t, phase)) => Ok(Report::Tangential(crate::report::Tangential {
+                vhat: c.as_vhat(),
+                amp: c.amp(),
+                tangential_amp: t,
+                phase,
+                result: super::combined::evaluate(self, c)?,
+            })),
+            None => self.contact.point(c.as_vbar()?, c.amp(), c.tol()),
+        }
     }
 
     /// Whether the shape reaches the amplitude `amp` (a tabulated profile
@@ -252,25 +230,21 @@ impl Shape {
         Ok(())
     }
 
-    /// `mu_static/mu0`, the limit `vbar -> 0+` (the minimum normal force over its mean).
+    /// `mu_static/mu0`, the limit `vbar -> 0+` (the minimum normal force over
+    /// its mean), at amplitude `amp` and quadrature tolerance `tol`.
     ///
     /// # Errors
-    /// As [`Shape::evaluate_with`].
-    pub fn mu_static(&self, amp: f64, opts: &Options) -> Result<f64> {
-        check_point(0.0, amp, opts)?;
-        self.contact.mu_static(amp, opts.tol)
+    /// As [`Shape::evaluate`], and for a bad `amp` or `tol`.
+    pub fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
+        let c = Conditions::vbar(0.0, amp)?.with_tol(tol)?;
+        self.contact.mu_static(c.amp(), c.tol())
     }
-}
-
-fn check_point(vbar: f64, amp: f64, opts: &Options) -> Result<()> {
-    check_nonneg("vbar", vbar)?;
-    check_nonneg("amp", amp)?;
-    opts.check()
 }
 
 /// `mu_macro/mu0` of a shape with an error estimate.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
 pub struct Evaluation {
     /// Ratio and reduction.
     #[cfg_attr(feature = "serde", serde(flatten))]
@@ -282,18 +256,22 @@ pub struct Evaluation {
     pub interpolation_error: Option<f64>,
 }
 
-/// Everything the solver reports about one point: the flat punch's regime and
-/// events ([`crate::flat::FlatPoint`]), a power law's bands ([`crate::mdr::MdrPoint`]),
-/// or, for other shapes, the evaluation with its error estimates. Serialised
-/// (feature `serde`) as one flat object: `fricosc point`'s output.
+/// Everything the solver reports about one point ([`Shape::report`]): the
+/// flat punch's regime and events, a power law's bands, under a tangential
+/// oscillation the spring's phases or the bands, or, for other shapes, the
+/// evaluation with its error estimates. Serialised (feature `serde`) as one
+/// flat object: `fricosc point`'s output.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[cfg_attr(feature = "serde", serde(untagged))]
-pub enum Point {
+#[non_exhaustive]
+pub enum Report {
     /// The flat punch.
-    Flat(crate::flat::FlatPoint),
+    Flat(crate::report::FlatPoint),
     /// A power-law profile.
-    Power(crate::mdr::MdrPoint),
+    Power(crate::report::MdrPoint),
+    /// Any shape under an oscillation in the sliding direction.
+    Tangential(crate::report::Tangential),
     /// Any other shape.
     Other {
         /// Dimensionless velocity.
@@ -306,14 +284,15 @@ pub enum Point {
     },
 }
 
-impl Point {
+impl Report {
     /// `mu_macro/mu0` and the reduction.
     #[must_use]
     pub fn ratio(&self) -> Ratio {
         match self {
-            Point::Flat(p) => p.ratio,
-            Point::Power(p) => p.result.ratio,
-            Point::Other { evaluation, .. } => evaluation.ratio,
+            Report::Flat(p) => p.ratio,
+            Report::Power(p) => p.result.ratio,
+            Report::Tangential(t) => t.result.ratio,
+            Report::Other { evaluation, .. } => evaluation.ratio,
         }
     }
 }
@@ -331,14 +310,5 @@ pub(crate) fn flat_error_estimate(r: &Ratio) -> f64 {
         f64::EPSILON * per_term * r.mu_ratio + per_term * f64::from_bits(1)
     } else {
         f64::EPSILON * (per_term * r.reduction + 0.5)
-    }
-}
-
-/// Check a tolerance: finite, `> 0` and `< 1`.
-pub(crate) fn check_tol(tol: f64) -> Result<f64> {
-    if tol.is_finite() && tol > 0.0 && tol < 1.0 {
-        Ok(tol)
-    } else {
-        Err(Error::param("tol", tol, "must be finite, > 0 and < 1"))
     }
 }

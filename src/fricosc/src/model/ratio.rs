@@ -85,14 +85,22 @@ pub(crate) fn quotient_error(nn: f64, dd: f64, en: f64, ed: f64) -> f64 {
     }
 }
 
-/// `mu_macro/mu0` and `1 - mu_macro/mu0`, the latter with full relative accuracy.
+/// `mu_macro/mu0` and `1 - mu_macro/mu0`, the latter with full relative
+/// accuracy. The default is no reduction: `mu_macro = mu0`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
 pub struct Ratio {
     /// `mu_macro / mu0`.
     pub mu_ratio: f64,
     /// `1 - mu_macro/mu0`, computed directly (not as a difference).
     pub reduction: f64,
+}
+
+impl Default for Ratio {
+    fn default() -> Self {
+        Ratio { mu_ratio: 1.0, reduction: 0.0 }
+    }
 }
 
 /// `x` in `[0, 1]` up to `slack` (at least [`ROUNDING_SLACK`]: a quadrature
@@ -119,7 +127,7 @@ impl Ratio {
     /// # Errors
     /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
     /// than rounding (or the given slack): a bug, never an answer.
-    pub fn from_reduction(reduction: f64, context: &str) -> Result<Self> {
+    pub(crate) fn from_reduction(reduction: f64, context: &str) -> Result<Self> {
         Self::from_reduction_within(reduction, ROUNDING_SLACK, context)
     }
 
@@ -129,7 +137,7 @@ impl Ratio {
     /// # Errors
     /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
     /// than rounding (or the given slack): a bug, never an answer.
-    pub fn from_reduction_within(reduction: f64, slack: f64, context: &str) -> Result<Self> {
+    pub(crate) fn from_reduction_within(reduction: f64, slack: f64, context: &str) -> Result<Self> {
         let reduction = unit_interval("reduction", reduction, slack, context)?;
         Ok(Ratio { mu_ratio: 1.0 - reduction, reduction })
     }
@@ -139,7 +147,7 @@ impl Ratio {
     /// # Errors
     /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
     /// than rounding or the given slack.
-    pub fn from_mu_within(mu_ratio: f64, slack: f64, context: &str) -> Result<Self> {
+    pub(crate) fn from_mu_within(mu_ratio: f64, slack: f64, context: &str) -> Result<Self> {
         let mu_ratio = unit_interval("mu_ratio", mu_ratio, slack, context)?;
         Ok(Ratio { mu_ratio, reduction: 1.0 - mu_ratio })
     }
@@ -149,7 +157,7 @@ impl Ratio {
     /// # Errors
     /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
     /// than rounding (or the given slack): a bug, never an answer.
-    pub fn from_mu(mu_ratio: f64, context: &str) -> Result<Self> {
+    pub(crate) fn from_mu(mu_ratio: f64, context: &str) -> Result<Self> {
         let mu_ratio = unit_interval("mu_ratio", mu_ratio, ROUNDING_SLACK, context)?;
         Ok(Ratio { mu_ratio, reduction: 1.0 - mu_ratio })
     }
@@ -162,7 +170,7 @@ impl Ratio {
     /// # Errors
     /// [`Error::Internal`] for a value that is not finite or outside its range
     /// by more than rounding (or the slack): a bug, never an answer.
-    pub fn signed(mu_ratio: f64, reduction: f64, slack: f64, context: &str) -> Result<Self> {
+    pub(crate) fn signed(mu_ratio: f64, reduction: f64, slack: f64, context: &str) -> Result<Self> {
         let slack = slack.max(ROUNDING_SLACK);
         let within = |name: &str, x: f64, lo: f64, hi: f64| {
             if x.is_finite() && (lo - slack..=hi + slack).contains(&x) {
@@ -184,7 +192,7 @@ impl Ratio {
     /// # Errors
     /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
     /// than rounding (or the given slack): a bug, never an answer.
-    pub fn from_deficit(deficit: f64, mean_normal: f64, context: &str) -> Result<Self> {
+    pub(crate) fn from_deficit(deficit: f64, mean_normal: f64, context: &str) -> Result<Self> {
         Self::from_deficit_within(deficit, mean_normal, ROUNDING_SLACK, context)
     }
 
@@ -193,7 +201,7 @@ impl Ratio {
     /// # Errors
     /// [`Error::Internal`] for a value that is not finite, or outside `[0, 1]` by more
     /// than rounding (or the given slack): a bug, never an answer.
-    pub fn from_deficit_within(deficit: f64, mean_normal: f64, slack: f64, context: &str) -> Result<Self> {
+    pub(crate) fn from_deficit_within(deficit: f64, mean_normal: f64, slack: f64, context: &str) -> Result<Self> {
         if !(deficit.is_finite() && mean_normal.is_finite() && deficit >= 0.0 && mean_normal >= 0.0) {
             return Err(Error::Internal {
                 what: format!("deficit {deficit:?} and mean normal force {mean_normal:?} ({context})"),

@@ -134,7 +134,7 @@ pub struct StopPhase {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
-pub enum Contact {
+pub enum Touch {
     /// Never.
     Never,
     /// All the time.
@@ -147,7 +147,7 @@ pub enum Contact {
 #[derive(Debug, Clone, PartialEq)]
 pub struct StopSpring {
     /// How it touches.
-    pub contact: Contact,
+    pub contact: Touch,
     /// The phases of one period in order (out of contact: none).
     pub phases: Vec<StopPhase>,
     /// Where the contact window starts and ends (a whole period where always in contact).
@@ -203,7 +203,7 @@ pub fn solve(b: Bound, d: Drive) -> StopSpring {
     let never = b.c <= -b.amp || (b.amp == 0.0 && b.c <= 0.0);
     if never {
         return StopSpring {
-            contact: Contact::Never,
+            contact: Touch::Never,
             phases: vec![],
             window: (0.0, 0.0),
             mean_force: 0.0,
@@ -220,7 +220,7 @@ pub fn solve(b: Bound, d: Drive) -> StopSpring {
             // Always slipping forward.
             None => {
                 return StopSpring {
-                    contact: Contact::Permanent,
+                    contact: Touch::Permanent,
                     phases: vec![StopPhase { kind: StopKind::Forward, start: 0.0, end: TAU, force: b.at(0.0) }],
                     window: (0.0, TAU),
                     mean_force: b.c,
@@ -282,7 +282,7 @@ pub fn solve(b: Bound, d: Drive) -> StopSpring {
         tau = end;
     }
     StopSpring {
-        contact: if permanent { Contact::Permanent } else { Contact::Jumping },
+        contact: if permanent { Touch::Permanent } else { Touch::Jumping },
         phases,
         window: (lo, hi),
         mean_force: sum_f / TAU,
@@ -367,7 +367,7 @@ fn phase_integrals(b: Bound, d: Drive, kind: StopKind, (a, e): (f64, f64), f0: f
 /// The force at phase `tau` (any real; reduced to the period) in the steady state.
 #[must_use]
 pub fn force_at(s: &StopSpring, b: Bound, d: Drive, tau: f64) -> f64 {
-    if s.contact == Contact::Never {
+    if s.contact == Touch::Never {
         return 0.0;
     }
     let (lo, _) = s.window;

@@ -14,7 +14,7 @@
 //! periods suffice; the means are taken over the last period (a rectangle rule
 //! on a periodic function) and the change from the period before is reported.
 
-use crate::error::{check_nonneg, Error, Result};
+use crate::error::{Error, Result};
 use crate::ratio::Ratio;
 use crate::shape::Shape;
 use crate::special::Kahan;
@@ -240,14 +240,22 @@ pub struct SteppingEvaluation {
     pub period_change: f64,
 }
 
-/// `mu_macro/mu0` by the seed's time-stepping scheme.
+/// `mu_macro/mu0` under the conditions `c` by time stepping: the seed's
+/// scheme, or under a tangential oscillation the stop operator's
+/// (three periods from a sliding start).
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] for a negative or non-finite input or a
-/// resolution beyond the limits; [`Error::Internal`] for a non-finite result.
-pub fn evaluate(shape: &Shape, vbar: f64, amp: f64, st: Stepping) -> Result<SteppingEvaluation> {
-    check_nonneg("vbar", vbar)?;
-    check_nonneg("amp", amp)?;
+/// [`Error::InvalidParameter`] for a resolution beyond the limits or an
+/// undefined `vbar`; [`Error::Internal`] for a non-finite result.
+pub fn evaluate(shape: &Shape, c: &crate::Conditions, st: Stepping) -> Result<SteppingEvaluation> {
+    match c.tangential() {
+        Some(_) => evaluate_oscillation(shape, c, st, OSCILLATION_PERIODS),
+        None => evaluate_normal(shape, c.as_vbar()?, c.amp(), st),
+    }
+}
+
+/// The seed's scheme at `(vbar, amp)`.
+fn evaluate_normal(shape: &Shape, vbar: f64, amp: f64, st: Stepping) -> Result<SteppingEvaluation> {
     st.check(shape)?;
     // Any contact: its foundation on a uniform grid (crate::contact::grid).
     let (run, springs) = contact_mu_ratio(shape.contact(), vbar, amp, st)?;
@@ -276,9 +284,9 @@ pub(crate) fn update_two_way(f: f64, b: f64, dx: f64) -> f64 {
     }
 }
 
-/// Periods the oscillation peer runs by default: from a sliding start every
-/// spring slips forward within the first period, which fixes its state.
-pub const OSCILLATION_PERIODS: usize = 3;
+/// Periods the oscillation peer runs: from a sliding start every spring
+/// slips forward within the first period, which fixes its state.
+pub(crate) const OSCILLATION_PERIODS: usize = 3;
 
 /// `mu_macro/mu0` under oscillation in the sliding direction
 /// ([`crate::combined`]) by time stepping: `st.springs` springs at the
@@ -291,13 +299,13 @@ pub const OSCILLATION_PERIODS: usize = 3;
 /// # Errors
 /// [`Error::InvalidParameter`] for bad inputs or resolutions beyond the limits;
 /// [`Error::Internal`] for a non-finite result.
-pub fn evaluate_oscillation(
+pub(crate) fn evaluate_oscillation(
     shape: &Shape,
-    o: &crate::combined::Oscillation,
+    c: &crate::Conditions,
     st: Stepping,
     periods: usize,
 ) -> Result<SteppingEvaluation> {
-    let o = crate::combined::Oscillation::new(o.vhat, o.amp, o.tangential_amp, o.phase)?;
+    let o = crate::combined::Oscillation::of(c);
     st.check(shape)?;
     if periods == 0 || periods > 1000 {
         return Err(Error::param("periods", periods as f64, "must be between 1 and 1000"));

@@ -12,8 +12,8 @@
 //!   equivalent profile `g = kappa(n) c |x|^n`, `kappa(n) = sqrt(pi) Gamma(n/2 + 1) /
 //!   Gamma(n/2 + 1/2)`; contact radius at the mean indentation `x_c = (u0/(kappa c))^(1/n)`;
 //!   `kz = 2 E* x_c`, `kx = 2 G* x_c`; mean normal force `E* x_c u0` times
-//!   [`crate::mdr::MdrResult::mean_normal`].
-//! - A tabulated profile (`profile`): the table's MDR transform ([`crate::profile`]),
+//!   the contact's mean normal force ([`crate::contact::Contact::mean_normal`]).
+//! - A tabulated profile (`profile`): the table's MDR transform ([`crate::contact::Table`]),
 //!   redone for every mean indentation the load control tries.
 //! - Load control: `u0` is solved so that the *period-averaged* normal force
 //!   equals the given force. With contact loss (jumping) that differs from the
@@ -234,10 +234,10 @@ pub struct Row {
     pub mean_friction_force_n: f64,
     /// Mean normal force (N).
     pub mean_normal_force_n: f64,
-    /// What the springs do ([`crate::regime`]: `sliding` at or above the
+    /// What the springs do ([`crate::report::regime`]: `sliding` at or above the
     /// critical velocity; below it `permanent_contact`, `jumping_slip_first` or
     /// `jumping_stick_first` for the flat punch, `mixed` or `jumping` for a curved contact).
-    pub regime: crate::ContactRegime,
+    pub regime: crate::report::ContactRegime,
 }
 
 /// The rows of an answer, kept compact (16 bytes a row: the velocity and
@@ -269,7 +269,7 @@ impl Rows {
             mu_ratio: mu,
             mean_friction_force_n: mu * self.mu0 * self.normal,
             mean_normal_force_n: self.normal,
-            regime: crate::regime::regime_of(self.flat, vbar, self.amp),
+            regime: crate::contact::regime::regime_of(self.flat, vbar, self.amp),
         })
     }
 

@@ -47,7 +47,7 @@ fn field(source: &str, path: &str, value: f64, ok: bool, what: &str) -> Result<f
     }
 }
 
-fn check(s: &Scene, source: &str, read: crate::Reader) -> Result<Checked> {
+fn check(s: &Scene, source: &str, read: crate::contact::Reader) -> Result<Checked> {
     let m = &s.materials;
     let pos = |p: &str, v: f64| field(source, p, v, v > 0.0, "must be finite and > 0");
     let nu = |p: &str, v: f64| field(source, p, v, v > -1.0 && v <= 0.5, "must be in (-1, 0.5]");
@@ -114,7 +114,7 @@ fn check(s: &Scene, source: &str, read: crate::Reader) -> Result<Checked> {
 }
 
 /// The indenter's geometry in the solver's terms, checked.
-fn geometry(s: &Scene, source: &str, read: crate::Reader) -> Result<Geometry> {
+fn geometry(s: &Scene, source: &str, read: crate::contact::Reader) -> Result<Geometry> {
     let pos = |p: &str, v: f64| field(source, p, v, v > 0.0, "must be finite and > 0");
     Ok(match &s.indenter {
         Indenter::FlatPunch { radius_m } => Geometry::Flat { radius: pos("indenter.flat_punch.radius_m", *radius_m)? },
@@ -284,7 +284,7 @@ pub fn velocity_count(s: &Scene) -> usize {
 pub fn solve_with(
     s: &Scene,
     source: &str,
-    read: crate::Reader,
+    read: crate::contact::Reader,
     progress: &(dyn Fn(u64) + Sync),
 ) -> Result<Vec<SceneResult>> {
     let c = check(s, source, read)?;
@@ -317,7 +317,7 @@ fn solve_amplitude(
     let ratio = c.g_star / c.e_star;
     let v_crit = c.mu0 * c.omega * du / ratio;
     let warnings = sphere_warnings(s, xc, u0, source)?;
-    let mu_static = shape.mu_static(amp, &crate::Options::default())? * c.mu0;
+    let mu_static = shape.mu_static(amp, crate::DEFAULT_TOL)? * c.mu0;
     // eq. 3 with kx/kz = G*/E*: vbar = v0 / v_crit. The velocity scale must be an
     // ordinary number, else every vbar is 0, infinite or NaN.
     if !(v_crit.is_normal() && v_crit > 0.0) {
@@ -334,7 +334,7 @@ fn solve_amplitude(
         let mus = crate::numerics::par::map(chunk, |&v0| -> Result<f64> {
             let vbar = v0 / v_crit;
             // At or above the critical velocity no spring is computed.
-            Ok(if vbar >= 1.0 { 1.0 } else { shape.ratio(vbar, amp)?.mu_ratio })
+            Ok(if vbar >= 1.0 { 1.0 } else { shape.ratio(&crate::Conditions::vbar(vbar, amp)?)?.mu_ratio })
         });
         for m in mus {
             mu_ratio.push(m?);

@@ -5,7 +5,7 @@
 //! # Units and phase
 //! Forces are in units of the static force `F0`, the normal force at the mean
 //! indentation `u0` without oscillation (`kz u0` for the flat punch, Hertz's
-//! `(4/3) E* R^(1/2) u0^(3/2)` for the paraboloid; [`crate::Contact::static_force`]
+//! `(4/3) E* R^(1/2) u0^(3/2)` for the paraboloid; [`crate::contact::Contact::static_force`]
 //! at depth 1 in general): normal `/ F0`, tangential `/ (mu0 F0)`. The seed's
 //! phase is `tau = omega t` with the indentation `u0 - du cos tau` (the
 //! shallowest point at `tau = 0`). A file written with another convention
@@ -114,7 +114,7 @@ pub struct HistorySample {
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FoundEvent {
     /// What happened.
-    pub kind: crate::spring::EventKind,
+    pub kind: crate::model::spring::EventKind,
     /// Its phase in the user's history (aligned), in `[0, 2 pi)`.
     pub tau: f64,
     /// The exact event's phase (absent if the exact solution has none of this kind).
@@ -168,7 +168,7 @@ pub struct HistoryValidation {
     /// How many such samples.
     pub above_bound_count: usize,
     /// The exact events of the period.
-    pub exact_events: Vec<crate::spring::Event>,
+    pub exact_events: Vec<crate::model::spring::Event>,
     /// What looks wrong, with hints (empty: nothing found).
     pub findings: Vec<Finding>,
     /// Every sample of the last period.
@@ -391,7 +391,7 @@ struct Exact {
 impl Exact {
     fn new(shape: &Shape, vbar: f64, amp: f64) -> Result<Exact> {
         let flat = shape.is_flat();
-        let spring = crate::flat::spring(vbar, amp, crate::spring::Precision::Events);
+        let spring = crate::flat::spring(vbar, amp, crate::model::spring::Precision::Events);
         if flat {
             return Ok(Exact { flat, amp, spring, springs: vec![], scale: 1.0, f0: 1.0 });
         }
@@ -413,7 +413,7 @@ impl Exact {
         if self.flat {
             crate::flat::forces_at(&self.spring, self.amp, tau).1
         } else {
-            self.scale * self.springs.iter().map(|s| crate::history::spring_force(s, tau)).sum::<f64>()
+            self.scale * self.springs.iter().map(|s| crate::contact::history::spring_force(s, tau)).sum::<f64>()
         }
     }
 }
@@ -588,9 +588,9 @@ fn find_events(
     tangential: &[f64],
     bound: &dyn Fn(usize) -> f64,
     bar: f64,
-    exact_events: &[crate::spring::Event],
+    exact_events: &[crate::model::spring::Event],
 ) -> Vec<FoundEvent> {
-    use crate::spring::EventKind;
+    use crate::model::spring::EventKind;
     let state = |i: usize| {
         let b = bound(i);
         if b <= bar {
@@ -693,8 +693,8 @@ fn history_findings(v: &HistoryValidation, above: &[usize], tolerance: f64) -> V
 }
 
 /// An event kind's name (as JSON writes it).
-pub(crate) fn event_name(k: crate::spring::EventKind) -> &'static str {
-    use crate::spring::EventKind;
+pub(crate) fn event_name(k: crate::model::spring::EventKind) -> &'static str {
+    use crate::model::spring::EventKind;
     match k {
         EventKind::Contact => "contact",
         EventKind::Stick => "stick",

@@ -40,10 +40,10 @@ pub use series::{
     convergence, observed_order, Convergence, Needed, RegimeOrder, RowStatus, SeriesRow, MAX_EXTRAPOLATION, MIN_ORDER,
 };
 
+use crate::contact::regime::ContactRegime;
 use crate::error::{Error, Result};
-use crate::regime::ContactRegime;
+use crate::model::spring::Spring;
 use crate::shape::Shape;
-use crate::spring::Spring;
 use crate::stepper::Stepping;
 
 /// The start a `vbar = 0` row is compared with (module docs).
@@ -114,10 +114,10 @@ pub struct Row {
     pub error: f64,
     /// `error / exact` (absent where the exact value is 0).
     pub relative_error: Option<f64>,
-    /// What the contact's springs do there ([`crate::regime`]).
+    /// What the contact's springs do there ([`crate::report::regime`]).
     pub regime: ContactRegime,
     /// The share of the mean normal force carried by springs that lose contact
-    /// ([`crate::regime::jumping_share`]).
+    /// ([`crate::contact::regime::jumping_share`]).
     pub jumping_share: f64,
     /// The stepping peer's error at the same point and resolution (with a peer).
     pub peer_error: Option<f64>,
@@ -337,7 +337,7 @@ pub fn rows_from_columns(
             let at = |e: Error| Error::Parse { context: format!("row {i}"), reason: e.to_string() };
             let a = crate::error::check_nonneg("amp", amp[i]).map_err(at)?;
             let v = if vhat {
-                crate::model::vbar_from_vhat(velocity[i], a).map_err(at)?
+                crate::Conditions::vhat(velocity[i], a).and_then(|c| c.as_vbar()).map_err(at)?
             } else {
                 crate::error::check_nonneg("vbar", velocity[i]).map_err(at)?
             };
@@ -354,7 +354,7 @@ pub fn exact_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest) -> Resul
     if vbar == 0.0 && at_rest == AtRest::Relaxed {
         return Ok(0.0);
     }
-    Ok(shape.ratio(vbar, amp)?.mu_ratio)
+    Ok(shape.ratio(&crate::Conditions::vbar(vbar, amp)?)?.mu_ratio)
 }
 
 /// Most stepping-peer work of one check: rows x steps per period x springs
@@ -405,7 +405,7 @@ fn peer_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest, st: Stepping)
     if vbar == 0.0 && at_rest == AtRest::Relaxed {
         return Ok(0.0);
     }
-    Ok(crate::stepper::evaluate(shape, vbar, amp, st)?.ratio.mu_ratio)
+    Ok(crate::stepper::evaluate(shape, &crate::Conditions::vbar(vbar, amp)?, st)?.ratio.mu_ratio)
 }
 
 /// Compare `rows` of `(vbar, amp, mu_ratio)` with the exact solver for `shape`,
@@ -431,7 +431,7 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result
     amps.sort_by(f64::total_cmp);
     amps.dedup();
     let shares: Vec<f64> =
-        amps.iter().map(|&a| crate::regime::jumping_share(shape, a)).collect::<Result<Vec<f64>>>()?;
+        amps.iter().map(|&a| crate::contact::regime::jumping_share(shape, a)).collect::<Result<Vec<f64>>>()?;
     let share_of = |a: f64| shares[amps.partition_point(|&x| x < a)];
     let mut out = Vec::with_capacity(rows.len());
     for (i, (&(vbar, amp, mu_ratio), e)) in rows.iter().zip(exact).enumerate() {
@@ -446,7 +446,7 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result
             exact,
             error,
             relative_error: (exact != 0.0).then(|| error / exact),
-            regime: crate::regime::regime(shape, vbar, amp)?,
+            regime: crate::contact::regime::regime(shape, vbar, amp)?,
             jumping_share: share_of(amp),
             peer_error,
         });

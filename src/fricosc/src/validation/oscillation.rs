@@ -6,9 +6,9 @@
 //! body forward), and errors ten times the stepping peer's.
 
 use super::{finding, FindingKind, Summary};
-use crate::combined::{evaluate, Oscillation};
 use crate::error::{Error, Result};
 use crate::shape::Shape;
+use crate::Conditions;
 
 /// One compared row.
 #[derive(Debug, Clone, PartialEq)]
@@ -73,7 +73,7 @@ pub struct OscillationValidation {
 
 /// Compare `rows` of `[vhat, amp, tangential_amp, phase, mu_ratio]` with the
 /// exact values of `shape` (at [`crate::DEFAULT_TOL`]); `check.peer` runs the
-/// stepping peer ([`crate::stepper::evaluate_oscillation`], three periods) on
+/// stepping peer ([`crate::stepper::evaluate`], three periods) on
 /// every row too. `check.at_rest` does not apply (a `vhat = 0` row is the limit
 /// `vhat -> 0+`).
 ///
@@ -83,12 +83,11 @@ pub struct OscillationValidation {
 /// [`super::MAX_PEER_WORK`], the solver's errors.
 pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<OscillationValidation> {
     let oscillations = checked(shape, rows, check)?;
-    let exact = crate::numerics::par::map(&oscillations, |o| evaluate(shape, o, crate::DEFAULT_TOL));
+    let exact = crate::numerics::par::map(&oscillations, |c| crate::combined::evaluate(shape, c));
     let peer: Option<Vec<f64>> = match check.peer {
         Some(st) => Some(
             crate::numerics::par::map(&oscillations, |o| {
-                crate::stepper::evaluate_oscillation(shape, o, st, crate::stepper::OSCILLATION_PERIODS)
-                    .map(|e| e.ratio.mu_ratio)
+                crate::stepper::evaluate(shape, o, st).map(|e| e.ratio.mu_ratio)
             })
             .into_iter()
             .collect::<Result<Vec<f64>>>()?,
@@ -179,7 +178,7 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
 }
 
 /// Every row's oscillation, checked (the first bad row named), and the peer's work.
-fn checked(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<Vec<Oscillation>> {
+fn checked(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<Vec<Conditions>> {
     crate::error::check_nonneg("tolerance", check.tolerance)?;
     if rows.is_empty() {
         return Err(Error::param("rows", 0.0, "the table has no rows (nothing to validate)"));
@@ -187,7 +186,8 @@ fn checked(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<Vec
     let mut oscillations = Vec::with_capacity(rows.len());
     for (i, r) in rows.iter().enumerate() {
         let at = |reason: String| Error::Parse { context: format!("row {i}"), reason };
-        oscillations.push(Oscillation::new(r[0], r[1], r[2], r[3]).map_err(|e| at(e.to_string()))?);
+        let c = Conditions::vhat(r[0], r[1]).and_then(|c| c.with_tangential(r[2], r[3]));
+        oscillations.push(c.map_err(|e| at(e.to_string()))?);
         if !r[4].is_finite() {
             return Err(at(format!("mu_ratio = {:?} is not finite", r[4])));
         }

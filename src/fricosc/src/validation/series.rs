@@ -24,7 +24,7 @@ pub struct SeriesRow {
     pub vbar: f64,
     /// Amplitude.
     pub amp: f64,
-    /// What the contact's springs do there ([`crate::regime`]).
+    /// What the contact's springs do there ([`crate::report::regime`]).
     pub regime: ContactRegime,
     /// The share of the mean normal force carried by springs that lose contact.
     pub jumping_share: f64,
@@ -245,8 +245,8 @@ pub fn convergence(
         rows.push(SeriesRow {
             vbar,
             amp,
-            regime: crate::regime::regime(shape, vbar, amp)?,
-            jumping_share: crate::regime::jumping_share(shape, amp)?,
+            regime: crate::contact::regime::regime(shape, vbar, amp)?,
+            jumping_share: crate::contact::regime::jumping_share(shape, amp)?,
             status,
             exact,
             values,

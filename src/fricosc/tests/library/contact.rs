@@ -2,15 +2,16 @@
 //! static and mean normal forces, the time-stepping peer and force histories
 //! work for the flat punch, power laws, tabulated tables and the worn tip alike.
 
+use fricosc::contact::{Contact, FlatPunch, PowerLaw};
 use fricosc::history::{history, HistoryOptions};
 use fricosc::stepper::Stepping;
-use fricosc::{Contact, FlatPunch, PowerLaw, Shape};
+use fricosc::Shape;
 
 fn table_of_squares() -> Shape {
     // g = x^2 tabulated: the interpolant is exact for quadratics.
     let x: Vec<f64> = (0..=400).map(|i| 0.01 * i as f64).collect();
     let g: Vec<f64> = x.iter().map(|x| x * x).collect();
-    let t = fricosc::profile::Table::from_columns(x, g, false, "squares").unwrap().at(1.0).unwrap();
+    let t = fricosc::contact::Table::from_columns(x, g, false, "squares").unwrap().at(1.0).unwrap();
     Shape::from_contact(std::sync::Arc::new(t.named("squares")))
 }
 
@@ -93,14 +94,14 @@ fn power_law_exponents_are_refused_by_name() {
 #[test]
 fn stepping_works_for_every_contact() {
     let st = Stepping { steps_per_period: 400, springs: 200 };
-    let par = fricosc::stepper::evaluate(&Shape::parabolic(), 0.3, 0.4, st).unwrap();
-    let tab = fricosc::stepper::evaluate(&table_of_squares(), 0.3, 0.4, st).unwrap();
+    let par = crate::common::at::stepped(&Shape::parabolic(), 0.3, 0.4, st).unwrap();
+    let tab = crate::common::at::stepped(&table_of_squares(), 0.3, 0.4, st).unwrap();
     assert!((par.ratio.mu_ratio - tab.ratio.mu_ratio).abs() < 1e-13, "{par:?} vs {tab:?}");
     let tip = Shape::parse("flat-tip:0.5").unwrap();
-    let exact = tip.evaluate(0.3, 0.4).unwrap().ratio.mu_ratio;
+    let exact = crate::common::at::eval(&tip, 0.3, 0.4).unwrap().ratio.mu_ratio;
     let err = |m: usize| {
         let st = Stepping { steps_per_period: m, springs: m };
-        (fricosc::stepper::evaluate(&tip, 0.3, 0.4, st).unwrap().ratio.mu_ratio - exact).abs()
+        (crate::common::at::stepped(&tip, 0.3, 0.4, st).unwrap().ratio.mu_ratio - exact).abs()
     };
     let (coarse, fine) = (err(250), err(1000));
     assert!(fine < 0.5 * coarse && fine < 2e-3, "errors {coarse:e} -> {fine:e}");
@@ -142,7 +143,7 @@ fn histories_work_for_every_contact() {
 /// contact: 1 from `amp = 1` on.
 #[test]
 fn jumping_share_matches_closed_forms() {
-    use fricosc::regime::jumping_share;
+    use fricosc::report::jumping_share;
     let (x, w) = crate::common::quad::gauss_legendre(64);
     for a in [1e-6, 0.01, 0.3, 0.5, 0.9, 0.999] {
         let cone = 1.0 - (1.0 - a * a) / (1.0 + 0.5 * a * a);
@@ -174,8 +175,8 @@ fn jumping_share_matches_closed_forms() {
 /// jumping from it on; at rest at vbar = 0, sliding from vbar = 1 or at amp = 0.
 #[test]
 fn regimes_of_points() {
-    use fricosc::regime::regime;
-    use fricosc::ContactRegime as R;
+    use fricosc::report::regime;
+    use fricosc::report::ContactRegime as R;
     let (flat, para) = (Shape::flat(), Shape::parabolic());
     assert_eq!(regime(&flat, 0.0, 0.5).unwrap(), R::AtRest);
     assert_eq!(regime(&flat, 1.0, 0.5).unwrap(), R::Sliding);
@@ -200,22 +201,21 @@ fn the_shape_api_names_checks_and_bounds() {
     assert_eq!(format!("{flat:?}"), "Shape(flat)");
     assert_eq!(format!("{par:?}"), "Shape(parabolic)");
     assert!(flat == Shape::parse("flat").unwrap() && flat != par);
-    let opts = fricosc::Options::default();
+    let tol = fricosc::DEFAULT_TOL;
     for amp in [0.0, 0.25, 0.4, 1.0, 1.5] {
-        assert_eq!(flat.mu_static(amp, &opts).unwrap(), (1.0 - amp).max(0.0), "amp {amp}");
+        assert_eq!(flat.mu_static(amp, tol).unwrap(), (1.0 - amp).max(0.0), "amp {amp}");
     }
-    assert_eq!(par.mu_static(1.5, &opts).unwrap(), 0.0);
-    assert_eq!(par.mu_static(0.0, &opts).unwrap(), 1.0);
+    assert_eq!(par.mu_static(1.5, tol).unwrap(), 0.0);
+    assert_eq!(par.mu_static(0.0, tol).unwrap(), 1.0);
     for bad in [-1.0, f64::NAN, f64::INFINITY] {
-        assert!(flat.mu_static(bad, &opts).is_err(), "amp {bad}");
-        assert!(flat.point(bad, 0.5, &opts).is_err(), "vbar {bad}");
-        assert!(flat.point(0.5, bad, &opts).is_err(), "amp {bad}");
+        assert!(flat.mu_static(bad, tol).is_err(), "amp {bad}");
+        assert!(crate::common::at::report(&flat, bad, 0.5, tol).is_err(), "vbar {bad}");
+        assert!(crate::common::at::report(&flat, 0.5, bad, tol).is_err(), "amp {bad}");
     }
-    let loose = opts.with_tol(0.0);
-    assert!(flat.mu_static(0.5, &loose).is_err() && flat.point(0.5, 0.5, &loose).is_err());
+    assert!(flat.mu_static(0.5, 0.0).is_err() && crate::common::at::report(&flat, 0.5, 0.5, 0.0).is_err());
     let mut checked = 0;
     for c in crate::common::reference_cases().iter().filter(|c| c.shape == "flat") {
-        let e = flat.evaluate(c.vbar, c.amp).unwrap();
+        let e = crate::common::at::eval(&flat, c.vbar, c.amp).unwrap();
         let error = crate::common::exact_error(e.ratio.mu_ratio, &c.mu_text);
         assert!(error <= e.error_estimate, "vbar {} amp {}: error {error:e} > {:e}", c.vbar, c.amp, e.error_estimate);
         assert!(e.error_estimate <= 2e-15, "vbar {} amp {}: estimate {:e}", c.vbar, c.amp, e.error_estimate);
@@ -225,7 +225,7 @@ fn the_shape_api_names_checks_and_bounds() {
     // At amp = 1 mu = pi vbar (1 + O(vbar)): subnormal at vbar = 1e-320, where
     // the estimate's relative part underflows and the subnormals' spacing is the bound.
     let vbar = 1e-320;
-    let e = flat.evaluate(vbar, 1.0).unwrap();
+    let e = crate::common::at::eval(&flat, vbar, 1.0).unwrap();
     let error = (e.ratio.mu_ratio - std::f64::consts::PI * vbar).abs();
     assert!(e.error_estimate >= f64::from_bits(1) && error <= e.error_estimate, "{e:?}");
 }
@@ -245,7 +245,10 @@ fn the_ratio_alone_is_the_evaluations_ratio() {
     for shape in &shapes {
         for vbar in [0.0, 1e-9, 0.05, 0.3, 0.69, 0.71, 0.999, 1.0, 2.0] {
             for amp in [0.0, 0.3, 0.9, 1.0, 1.2, 3.0] {
-                let (r, e) = (shape.ratio(vbar, amp).unwrap(), shape.evaluate(vbar, amp).unwrap().ratio);
+                let (r, e) = (
+                    crate::common::at::ratio(shape, vbar, amp).unwrap(),
+                    crate::common::at::eval(shape, vbar, amp).unwrap().ratio,
+                );
                 assert_eq!(
                     (r.mu_ratio.to_bits(), r.reduction.to_bits()),
                     (e.mu_ratio.to_bits(), e.reduction.to_bits()),
@@ -254,18 +257,25 @@ fn the_ratio_alone_is_the_evaluations_ratio() {
             }
         }
         for bad in [-1.0, f64::NAN, f64::INFINITY] {
-            assert!(shape.ratio(bad, 0.5).is_err() && shape.ratio(0.5, bad).is_err(), "{shape:?} {bad}");
+            assert!(
+                crate::common::at::ratio(shape, bad, 0.5).is_err()
+                    && crate::common::at::ratio(shape, 0.5, bad).is_err(),
+                "{shape:?} {bad}"
+            );
         }
     }
     // Beyond the table's reach (its last row: x = 4).
-    assert!(shapes[3].ratio(0.5, 20.0).is_err() && shapes[3].evaluate(0.5, 20.0).is_err());
+    assert!(
+        crate::common::at::ratio(&shapes[3], 0.5, 20.0).is_err()
+            && crate::common::at::eval(&shapes[3], 0.5, 20.0).is_err()
+    );
 }
 
 /// The regimes' names as outputs print them: each variant's `name` is its
 /// serde name (snake case), and they are distinct.
 #[test]
 fn regime_names_are_their_serialised_names() {
-    use fricosc::ContactRegime::*;
+    use fricosc::report::ContactRegime::*;
     let all = [AtRest, Sliding, PermanentContact, JumpingSlipFirst, JumpingStickFirst, Mixed, Jumping];
     let names: std::collections::BTreeSet<&str> = all.iter().map(|r| r.name()).collect();
     assert_eq!(names.len(), all.len());
@@ -283,12 +293,12 @@ fn regime_names_are_their_serialised_names() {
 fn jumping_shares_at_their_limits() {
     let (flat, par) = (Shape::parse("flat").unwrap(), Shape::parse("parabolic").unwrap());
     for (amp, want) in [(0.0, 0.0), (0.5, 0.0), (1.0, 0.0), (1.5, 1.0)] {
-        assert_eq!(fricosc::regime::jumping_share(&flat, amp).unwrap(), want, "flat {amp}");
+        assert_eq!(fricosc::report::jumping_share(&flat, amp).unwrap(), want, "flat {amp}");
     }
     for (amp, want) in [(0.0, 0.0), (1.0, 1.0), (1.5, 1.0)] {
-        assert_eq!(fricosc::regime::jumping_share(&par, amp).unwrap(), want, "parabolic {amp}");
+        assert_eq!(fricosc::report::jumping_share(&par, amp).unwrap(), want, "parabolic {amp}");
     }
-    let shares: Vec<f64> = [0.1, 0.5, 0.9].iter().map(|&a| fricosc::regime::jumping_share(&par, a).unwrap()).collect();
+    let shares: Vec<f64> = [0.1, 0.5, 0.9].iter().map(|&a| fricosc::report::jumping_share(&par, a).unwrap()).collect();
     assert!(shares[0] > 0.0 && shares[2] < 1.0 && shares.windows(2).all(|w| w[0] < w[1]), "{shares:?}");
 }
 
@@ -314,9 +324,9 @@ fn curved_contacts_at_subnormal_velocities() {
     ];
     for shape in &shapes {
         for amp in [1.0, 2.0] {
-            let slope = shape.evaluate(1e-30, amp).unwrap().ratio.mu_ratio / 1e-30;
+            let slope = crate::common::at::eval(shape, 1e-30, amp).unwrap().ratio.mu_ratio / 1e-30;
             for vbar in [1e-100, 1e-160, 1e-200, 1e-250, 1e-280, 1e-290, 1e-300, 1e-310, 1e-320, 5e-324] {
-                let e = shape.evaluate(vbar, amp).unwrap();
+                let e = crate::common::at::eval(shape, vbar, amp).unwrap();
                 let expected = slope * vbar;
                 let err = (e.ratio.mu_ratio - expected).abs();
                 assert!(

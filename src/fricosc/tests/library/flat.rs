@@ -1,7 +1,7 @@
 //! The single spring (flat punch) against derived limits and independent values.
 // Reference values keep all their published digits on purpose.
+use crate::common::at::flat_ratio as ratio;
 use crate::common::tol;
-use fricosc::flat::ratio;
 use std::f64::consts::PI;
 
 fn mu(v: f64, a: f64) -> f64 {
@@ -139,14 +139,14 @@ fn bad_parameters_are_errors_not_panics() {
         [(f64::NAN, 0.5), (0.5, f64::NAN), (f64::INFINITY, 0.5), (0.5, f64::INFINITY), (-0.1, 0.5), (0.5, -1e-300)]
     {
         assert!(ratio(v, a).is_err(), "v={v} a={a}");
-        assert!(fricosc::flat::point(v, a).is_err());
+        assert!(crate::common::at::flat_point(v, a).is_err());
     }
 }
 
 #[test]
 fn events_are_on_the_bound_and_in_order() {
     for (v, a) in [(0.3, 0.5), (0.3, 1.5), (0.9, 1.5), (0.95, 4.0), (1.2, 2.0), (0.0, 0.5)] {
-        let p = fricosc::flat::point(v, a).unwrap();
+        let p = crate::common::at::flat_point(v, a).unwrap();
         for w in p.events.windows(2) {
             assert!(w[0].tau <= w[1].tau);
         }
@@ -158,12 +158,12 @@ fn events_are_on_the_bound_and_in_order() {
     }
     // Stick from contact: contact, stick at the same phase, slip, loss.
     let kinds = |v: f64, a: f64| -> Vec<String> {
-        fricosc::flat::point(v, a).unwrap().events.iter().map(|e| format!("{:?}", e.kind)).collect()
+        crate::common::at::flat_point(v, a).unwrap().events.iter().map(|e| format!("{:?}", e.kind)).collect()
     };
     assert_eq!(kinds(0.3, 1.5), ["Contact", "Stick", "Slip", "LossOfContact"]);
     // Slip first (s = 0.5 >= sqrt(1 - 0.95^2) = 0.31): contact, (slip), stick, slip, loss.
     assert_eq!(kinds(0.95, 2.0), ["Contact", "Stick", "Slip", "LossOfContact"]);
-    let p = fricosc::flat::point(0.95, 2.0).unwrap();
+    let p = crate::common::at::flat_point(0.95, 2.0).unwrap();
     assert_eq!(format!("{:?}", p.regime), "JumpingSlipFirst");
     assert!(p.events[1].tau > p.events[0].tau + 0.1, "the stick starts after a slip phase");
 }

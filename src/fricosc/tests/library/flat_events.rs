@@ -31,7 +31,7 @@ fn event_phases_forces_and_small_mu_match_independent_40_digit_values() {
     assert!(cs.len() >= 100, "{} cases", cs.len());
     for c in &cs {
         let (vbar, amp) = (c["vbar"].as_f64().unwrap(), c["amp"].as_f64().unwrap());
-        let p = fricosc::flat::point(vbar, amp).unwrap();
+        let p = crate::common::at::flat_point(vbar, amp).unwrap();
         let mu = num(&c["mu_ratio"]);
         let rel_mu = (p.ratio.mu_ratio - mu).abs() / mu;
         if rel_mu > 1e-14 {
@@ -39,7 +39,7 @@ fn event_phases_forces_and_small_mu_match_independent_40_digit_values() {
         }
         worst_mu = worst_mu.max(rel_mu);
         // The reported estimate bounds the error (a derived rounding bound, no floor).
-        let est = Shape::flat().evaluate(vbar, amp).unwrap().error_estimate;
+        let est = crate::common::at::eval(&Shape::flat(), vbar, amp).unwrap().error_estimate;
         assert!((p.ratio.mu_ratio - mu).abs() <= est, "vbar {vbar} amp {amp}: estimate {est:e}");
         let red = num(&c["reduction"]);
         assert!((p.ratio.reduction - red).abs() <= 1e-15, "reduction at vbar {vbar} amp {amp}");
@@ -79,7 +79,7 @@ fn small_mu_near_amp_one_keeps_its_relative_accuracy() {
     let mut worst = (0.0f64, 0.0, 0.0);
     for c in cs {
         let (vbar, amp) = (c["vbar"].as_f64().unwrap(), c["amp"].as_f64().unwrap());
-        let e = Shape::flat().evaluate(vbar, amp).unwrap();
+        let e = crate::common::at::eval(&Shape::flat(), vbar, amp).unwrap();
         let mu = num(&c["mu_ratio"]);
         let err = (e.ratio.mu_ratio - mu).abs();
         assert!(err <= e.error_estimate, "vbar {vbar:e} amp {amp}: error {err:e} > estimate {:e}", e.error_estimate);
@@ -101,7 +101,7 @@ fn small_mu_near_amp_one_keeps_its_relative_accuracy() {
 #[test]
 fn forces_at_the_regime_switch_stay_within_their_bounds() {
     for (vbar, amp) in [(0.6, 1.25), (0.9, 2.294157338705618)] {
-        let p = fricosc::flat::point(vbar, amp).unwrap();
+        let p = crate::common::at::flat_point(vbar, amp).unwrap();
         let stick = p.events.iter().find(|e| e.kind == fricosc::spring::EventKind::Stick).unwrap();
         assert_eq!(stick.tangential, 0.0, "vbar {vbar} amp {amp}: {stick:?}");
     }
@@ -115,7 +115,7 @@ fn forces_at_the_regime_switch_stay_within_their_bounds() {
         }
         for _ in 0..16 {
             amp = amp.next_up();
-            let p = fricosc::flat::point(vbar, amp).unwrap();
+            let p = crate::common::at::flat_point(vbar, amp).unwrap();
             for e in &p.events {
                 let bound = (1.0 - amp * e.tau.cos()).max(0.0);
                 assert!(e.tangential >= 0.0, "vbar {vbar} amp {amp}: {e:?}");

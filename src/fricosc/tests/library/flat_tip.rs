@@ -5,7 +5,7 @@
 use fricosc::Shape;
 
 fn mu(spec: &str, v: f64, a: f64) -> (f64, f64) {
-    let e = Shape::parse(spec).unwrap().evaluate(v, a).unwrap();
+    let e = crate::common::at::eval(&Shape::parse(spec).unwrap(), v, a).unwrap();
     (e.ratio.mu_ratio, e.error_estimate)
 }
 
@@ -58,7 +58,7 @@ fn agrees_with_the_tabulated_profile_of_the_same_body() {
     std::fs::write(&file, format!("r,f\n{rows}")).unwrap();
     let table = crate::common::shape(&format!("profile:{}@{u0:?}", file.display())).unwrap();
     for (v, amp) in [(0.3, 0.4), (0.1, 0.8), (0.5, 1.5)] {
-        let t = table.evaluate(v, amp).unwrap();
+        let t = crate::common::at::eval(&table, v, amp).unwrap();
         let (m, est) = mu("flat-tip:0.5", v, amp);
         let err = (t.ratio.mu_ratio - m).abs();
         let interp = t.interpolation_error.unwrap();
@@ -73,10 +73,10 @@ fn agrees_with_the_tabulated_profile_of_the_same_body() {
     // The transform itself: g(x) = x sqrt(x^2 - a^2)/R at points of the table,
     // through the tabulated contact's normalised profile G(z) = g(x_c z)/U0.
     let text = std::fs::read_to_string(&file).unwrap();
-    let t = fricosc::profile::Table::parse(&text, "flat tip", true).unwrap().at(u0).unwrap();
+    let t = fricosc::contact::Table::parse(&text, "flat tip", true).unwrap().at(u0).unwrap();
     let xc = t.contact_radius;
     for x in [0.08, 0.1, 0.2, 0.3] {
-        let g = u0 * fricosc::Contact::equivalent_profile(&t, x / xc);
+        let g = u0 * fricosc::contact::Contact::equivalent_profile(&t, x / xc);
         let exact = x * (x * x - a * a).sqrt() / r_sphere;
         assert!((g / exact - 1.0).abs() < 1e-4, "x={x}: {g} vs {exact}");
     }
@@ -87,9 +87,9 @@ fn agrees_with_the_tabulated_profile_of_the_same_body() {
 fn the_error_estimate_bounds_the_error_at_every_tolerance() {
     let shape = Shape::parse("flat-tip:0.3").unwrap();
     for (v, a) in [(0.3, 0.4), (0.05, 0.95), (0.6, 3.0), (1e-4, 1.2)] {
-        let best = shape.evaluate(v, a).unwrap().ratio.mu_ratio;
+        let best = crate::common::at::eval(&shape, v, a).unwrap().ratio.mu_ratio;
         for tol in [1e-3, 1e-6, 1e-9, 1e-12] {
-            let e = shape.evaluate_with(v, a, &fricosc::Options::default().with_tol(tol)).unwrap();
+            let e = crate::common::at::eval_tol(&shape, v, a, tol).unwrap();
             let err = (e.ratio.mu_ratio - best).abs();
             assert!(err <= e.error_estimate + 1e-15, "v={v} a={a} tol={tol:e}: {err:e} > {:e}", e.error_estimate);
         }
@@ -100,7 +100,7 @@ fn the_error_estimate_bounds_the_error_at_every_tolerance() {
     assert_eq!(Shape::parse("flat-tip:-0").unwrap().name(), "flat-tip:0.0");
     // Without a stick (vbar >= 1) or an oscillation, mu = 1 exactly: no error.
     for (v, a) in [(1.0, 0.5), (1.5, 3.0), (0.3, 0.0)] {
-        let e = shape.evaluate(v, a).unwrap();
+        let e = crate::common::at::eval(&shape, v, a).unwrap();
         assert_eq!((e.ratio.mu_ratio, e.ratio.reduction, e.error_estimate), (1.0, 0.0, 0.0), "v={v} a={a}");
     }
 }
@@ -111,7 +111,7 @@ fn the_error_estimate_bounds_the_error_at_every_tolerance() {
 #[test]
 fn subnormal_amplitude_gives_the_linear_reduction() {
     let shape = Shape::parse("flat-tip:0.5").unwrap();
-    let slope = |a: f64| shape.evaluate(0.3, a).unwrap().ratio.reduction / a;
+    let slope = |a: f64| crate::common::at::eval(&shape, 0.3, a).unwrap().ratio.reduction / a;
     let (below, small) = (slope(1e-305), slope(1e-200));
     assert!(((below - small) / small).abs() < 1e-12, "{below} vs {small}");
     // 2.1e-314 is subnormal: the reduction carries about 4e-10 relative.
@@ -120,7 +120,7 @@ fn subnormal_amplitude_gives_the_linear_reduction() {
     // The estimate bounds mu's error (1 - mu = the reduction, rounded away in
     // mu = 1) and scales with the amplitude (below an ulp).
     for a in [1e-305, 2.1219957905e-314] {
-        let e = shape.evaluate(0.3, a).unwrap();
+        let e = crate::common::at::eval(&shape, 0.3, a).unwrap();
         assert!(
             e.ratio.reduction <= e.error_estimate && e.error_estimate <= 1e-20,
             "amp {a:e}: {:e}",
@@ -145,8 +145,8 @@ fn a_flat_negligible_against_the_contact_is_the_paraboloid() {
     ];
     for (spec, amp) in cases {
         for v in [0.1, 0.6] {
-            let tip = Shape::parse(spec).unwrap().evaluate(v, amp).unwrap();
-            let par = Shape::parabolic().evaluate(v, amp).unwrap();
+            let tip = crate::common::at::eval(&Shape::parse(spec).unwrap(), v, amp).unwrap();
+            let par = crate::common::at::eval(&Shape::parabolic(), v, amp).unwrap();
             let err = (tip.ratio.mu_ratio - par.ratio.mu_ratio).abs();
             assert!(err <= tip.error_estimate + par.error_estimate, "{spec} amp {amp:e} v {v}: {err:e}");
         }
@@ -160,8 +160,9 @@ fn a_flat_negligible_against_the_contact_is_the_paraboloid() {
 fn a_vanishing_flat_at_a_tiny_amplitude_is_the_paraboloid() {
     let amp = 2.2138601171837047e-159;
     for e in ["1e-152", "6.015012502120174e-153"] {
-        let tip = Shape::parse(&format!("flat-tip:{e}")).unwrap().evaluate(0.5625000000004549, amp).unwrap();
-        let par = Shape::parabolic().evaluate(0.5625000000004549, amp).unwrap();
+        let tip =
+            crate::common::at::eval(&Shape::parse(&format!("flat-tip:{e}")).unwrap(), 0.5625000000004549, amp).unwrap();
+        let par = crate::common::at::eval(&Shape::parabolic(), 0.5625000000004549, amp).unwrap();
         let rel = (tip.ratio.reduction - par.ratio.reduction).abs() / par.ratio.reduction;
         assert!(rel < 1e-12, "E = {e}: {} vs {}", tip.ratio.reduction, par.ratio.reduction);
     }
@@ -187,7 +188,7 @@ fn worn_spheres_match_independent_values() {
         let (vbar, amp) = (c["vbar"].as_f64().unwrap(), c["amp"].as_f64().unwrap());
         let (mu, red) = (c["mu_ratio"].as_str().unwrap(), c["reduction"].as_str().unwrap());
         let shape = Shape::parse(&spec).unwrap();
-        let e = shape.evaluate(vbar, amp).unwrap();
+        let e = crate::common::at::eval(&shape, vbar, amp).unwrap();
         let err = crate::common::exact_error(e.ratio.mu_ratio, mu);
         let rel = err / mu.parse::<f64>().unwrap();
         (worst, worst_rel) = (worst.max(err), worst_rel.max(rel));
@@ -206,7 +207,7 @@ fn worn_spheres_match_independent_values() {
         );
         let rel = crate::common::exact_error(e.ratio.reduction, red) / red.parse::<f64>().unwrap();
         assert!(rel <= 1e-13, "{spec} vbar={vbar} amp={amp}: reduction {rel:e}");
-        let loose = shape.evaluate_with(vbar, amp, &fricosc::Options::default().with_tol(1e-9)).unwrap();
+        let loose = crate::common::at::eval_tol(&shape, vbar, amp, 1e-9).unwrap();
         let err = crate::common::exact_error(loose.ratio.mu_ratio, mu);
         assert!(
             err <= loose.error_estimate,

@@ -17,7 +17,7 @@ fn flat_history_is_bounded_by_the_normal_force_and_averages_to_mu() {
         }
         let t: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.tangential)).collect();
         let n: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.normal)).collect();
-        let mu = Shape::flat().evaluate(v, a).unwrap().ratio.mu_ratio;
+        let mu = crate::common::at::eval(&Shape::flat(), v, a).unwrap().ratio.mu_ratio;
         // Events are samples, so the trapezoid rule is second order on each smooth piece.
         assert!((mean(&t) / mean(&n) - mu).abs() < 1e-7, "v={v} a={a}: {} vs {mu}", mean(&t) / mean(&n));
     }
@@ -35,12 +35,12 @@ fn mdr_history_averages_to_the_exact_mu() {
     .unwrap();
     let t: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.tangential)).collect();
     let n: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.normal)).collect();
-    let mu = Shape::parabolic().evaluate(v, a).unwrap().ratio.mu_ratio;
+    let mu = crate::common::at::eval(&Shape::parabolic(), v, a).unwrap().ratio.mu_ratio;
     assert!((mean(&t) / mean(&n) - mu).abs() < 1e-5, "{} vs {mu}", mean(&t) / mean(&n));
     // Chosen springs: the centre one is a flat punch with s = 1/amp; the outer one jumps.
     let c: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.springs[0][1])).collect();
     let cn: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.springs[0][0])).collect();
-    let flat = Shape::flat().evaluate(v, a).unwrap().ratio.mu_ratio;
+    let flat = crate::common::at::eval(&Shape::flat(), v, a).unwrap().ratio.mu_ratio;
     assert!((mean(&c) / mean(&cn) - flat).abs() < 1e-6);
     assert!(h.samples.iter().any(|s| s.springs[1][0] == 0.0), "the spring at 1.1 x_c loses contact");
 }
@@ -154,7 +154,7 @@ fn chosen_springs_are_flat_punches_at_their_level() {
             n.push((s.tau, nrm));
             t.push((s.tau, tan));
         }
-        let flat = Shape::flat().evaluate(vbar, amp / level).unwrap().ratio.mu_ratio;
+        let flat = crate::common::at::eval(&Shape::flat(), vbar, amp / level).unwrap().ratio.mu_ratio;
         assert!((mean(&t) / mean(&n) - flat).abs() < 1e-6, "x {x}: {} vs {flat}", mean(&t) / mean(&n));
     }
 }
@@ -169,7 +169,7 @@ fn chosen_springs_are_flat_punches_at_their_level() {
 fn the_stepped_history_converges_to_the_exact_mu() {
     use fricosc::history::{stepped_history, MAX_SAMPLES};
     let (vbar, amp) = (0.3, 0.5);
-    let mu = Shape::flat().evaluate(vbar, amp).unwrap().ratio.mu_ratio;
+    let mu = crate::common::at::eval(&Shape::flat(), vbar, amp).unwrap().ratio.mu_ratio;
     let err = |steps: usize| {
         let h = stepped_history(vbar, amp, 3, steps).unwrap();
         assert_eq!(h.samples.len(), 3 * steps + 1);

@@ -1,15 +1,14 @@
 //! MDR contacts (power-law profiles) against the references, the stepper and limits.
 use crate::common::{reference_cases, tol};
-use fricosc::mdr::power_law;
 use fricosc::Shape;
-use fricosc::{Options, DEFAULT_TOL};
+use fricosc::DEFAULT_TOL;
 
 #[test]
 fn parabolic_and_cone_references_to_1e_13_within_the_error_estimate() {
     let mut n = 0;
     for c in reference_cases().iter().filter(|c| c.shape != "flat") {
         let shape = crate::common::shape(&c.shape).unwrap();
-        let e = shape.evaluate(c.vbar, c.amp).unwrap();
+        let e = crate::common::at::eval(&shape, c.vbar, c.amp).unwrap();
         let err = (e.ratio.mu_ratio - c.mu_ratio).abs();
         assert!(
             err <= tol::MDR_ABS.min(tol::MDR_ABS_REGRESSION),
@@ -36,11 +35,11 @@ fn parabolic_and_cone_references_to_1e_13_within_the_error_estimate() {
 #[test]
 fn named_shapes_are_power_laws() {
     for (v, a) in [(0.3, 0.5), (0.7, 1.3)] {
-        let cone = Shape::parse("cone").unwrap().evaluate(v, a).unwrap();
-        let p1 = Shape::parse("power:1").unwrap().evaluate(v, a).unwrap();
+        let cone = crate::common::at::eval(&Shape::parse("cone").unwrap(), v, a).unwrap();
+        let p1 = crate::common::at::eval(&Shape::parse("power:1").unwrap(), v, a).unwrap();
         assert_eq!(cone, p1);
-        let par = Shape::parse("parabolic").unwrap().evaluate(v, a).unwrap();
-        let p2 = Shape::parse("power:2.0").unwrap().evaluate(v, a).unwrap();
+        let par = crate::common::at::eval(&Shape::parse("parabolic").unwrap(), v, a).unwrap();
+        let p2 = crate::common::at::eval(&Shape::parse("power:2.0").unwrap(), v, a).unwrap();
         assert_eq!(par, p2);
     }
 }
@@ -48,11 +47,8 @@ fn named_shapes_are_power_laws() {
 #[test]
 fn steep_power_laws_approach_the_flat_punch_like_1_over_n() {
     for (v, a) in [(0.3, 0.5), (0.5, 2.0)] {
-        let flat = fricosc::flat::ratio(v, a).unwrap().mu_ratio;
-        let d = |n: f64| {
-            (power_law(n, v, a, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap().ratio.mu_ratio - flat)
-                .abs()
-        };
+        let flat = crate::common::at::flat_ratio(v, a).unwrap().mu_ratio;
+        let d = |n: f64| (crate::common::at::power(n, v, a, DEFAULT_TOL).unwrap().ratio.mu_ratio - flat).abs();
         let (d100, d1000) = (d(100.0), d(1000.0));
         assert!(d1000 < 2.0 / 1000.0, "v={v} a={a}: {d1000:e}");
         assert!(d1000 < 0.2 * d100, "not O(1/N): {d100:e} -> {d1000:e}");
@@ -64,11 +60,11 @@ fn steep_power_laws_approach_the_flat_punch_like_1_over_n() {
 #[test]
 fn time_stepping_agrees_in_every_regime() {
     for (n, v, a) in [(2.0, 0.3, 0.4), (2.0, 0.6, 1.0), (2.0, 0.3, 1.6), (1.0, 0.5, 2.0), (2.0, 1.1, 1.5)] {
-        let exact = power_law(n, v, a, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap().ratio.mu_ratio;
+        let exact = crate::common::at::power(n, v, a, DEFAULT_TOL).unwrap().ratio.mu_ratio;
         let mut errs = vec![];
         for k in [1000usize, 4000] {
             let st = fricosc::stepper::Stepping { steps_per_period: k, springs: k };
-            let run = fricosc::stepper::evaluate(&Shape::power(n).unwrap(), v, a, st).unwrap();
+            let run = crate::common::at::stepped(&Shape::power(n).unwrap(), v, a, st).unwrap();
             errs.push((run.ratio.mu_ratio - exact).abs());
         }
         assert!(errs[1] <= 1.0 / 4000.0, "n={n} v={v} a={a}: {errs:?}");
@@ -76,12 +72,13 @@ fn time_stepping_agrees_in_every_regime() {
     }
 }
 
+/// A looser tolerance stays within its estimate (that it does less work:
+/// `contact::mdr`'s unit tests).
 #[test]
-fn looser_tolerance_does_less_work_within_its_estimate() {
+fn looser_tolerance_stays_within_its_estimate() {
     for (n, v, a) in [(2.0, 0.05, 0.5), (1.5, 0.3, 0.4), (2.5, 0.2, 1.5), (1.0, 0.01, 2.0)] {
-        let fine = power_law(n, v, a, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap();
-        let loose = power_law(n, v, a, &fricosc::Options::default().with_tol(1e-6)).unwrap();
-        assert!(loose.nodes < fine.nodes, "n={n} v={v} a={a}: {} vs {}", loose.nodes, fine.nodes);
+        let fine = crate::common::at::power(n, v, a, DEFAULT_TOL).unwrap();
+        let loose = crate::common::at::power(n, v, a, 1e-6).unwrap();
         let err = (loose.ratio.mu_ratio - fine.ratio.mu_ratio).abs();
         assert!(err <= loose.error_estimate, "n={n} v={v} a={a}: err {err:e} > estimate {:e}", loose.error_estimate);
     }
@@ -91,25 +88,19 @@ fn looser_tolerance_does_less_work_within_its_estimate() {
 fn limits_of_amplitude_and_velocity() {
     for n in [1.0, 2.0, 3.7] {
         // No oscillation, or at/above the critical velocity: mu = mu0 exactly.
-        assert_eq!(
-            power_law(n, 0.4, 0.0, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap().ratio.mu_ratio,
-            1.0
-        );
+        assert_eq!(crate::common::at::power(n, 0.4, 0.0, DEFAULT_TOL).unwrap().ratio.mu_ratio, 1.0);
         for v in [1.0, 1.5] {
-            let r = power_law(n, v, 0.7, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap();
-            assert_eq!((r.ratio.mu_ratio, r.nodes), (1.0, 0), "vbar >= 1 needs no spring computation");
+            let r = crate::common::at::power(n, v, 0.7, DEFAULT_TOL).unwrap();
+            assert_eq!((r.ratio.mu_ratio, r.error_estimate), (1.0, 0.0), "vbar >= 1");
         }
         // Static limit: minimum over mean normal force; 0 once the centre loses contact.
-        assert!(
-            power_law(n, 0.0, 1.5, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap().ratio.mu_ratio.abs()
-                < 1e-15
-        );
+        assert!(crate::common::at::power(n, 0.0, 1.5, DEFAULT_TOL).unwrap().ratio.mu_ratio.abs() < 1e-15);
         // Small amplitude: 1 - amp * 9 (1-vbar)^2/(4 pi) ... the seed's eq. 14 regime:
         // the reduction per normal force is amp * D(vbar) * (kz du)/(F_N) -> amp D (n+1)/n.
         let v = 0.5;
         let d = fricosc::spring::Spring::new(10.0, v).deficit;
         let amp = 1e-6;
-        let red = power_law(n, v, amp, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap().ratio.reduction;
+        let red = crate::common::at::power(n, v, amp, DEFAULT_TOL).unwrap().ratio.reduction;
         let lead = amp * d * (n + 1.0) / n;
         assert!((red / lead - 1.0).abs() < 1e-4, "n={n}: {red:e} vs {lead:e}");
     }
@@ -123,10 +114,7 @@ fn near_critical_reduction_keeps_relative_accuracy() {
     // difference 1 - mu (all digits lost there) cannot pass.
     for n in [1.0, 2.0] {
         for amp in [0.5, 2.0] {
-            let f = |w: f64| {
-                power_law(n, 1.0 - w, amp, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap().ratio.reduction
-                    / (w * w)
-            };
+            let f = |w: f64| crate::common::at::power(n, 1.0 - w, amp, DEFAULT_TOL).unwrap().ratio.reduction / (w * w);
             // The f64 nearest to 1 - w: use w that are exact in binary near 1.
             let (w1, w2, w3) = (2f64.powi(-30), 2f64.powi(-34), 2f64.powi(-40));
             let b = (f(w2) - f(w1)) / (w2.sqrt() - w1.sqrt());
@@ -152,7 +140,7 @@ fn agrees_with_a_second_quadrature_in_y_on_a_grid_and_the_estimate_bounds_the_er
     for n in [1.0, 2.0, 1.5, 3.0] {
         for &v in &vbars {
             for &a in &amps {
-                let r = power_law(n, v, a, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap();
+                let r = crate::common::at::power(n, v, a, DEFAULT_TOL).unwrap();
                 let (reference, ref_acc) = mdr_ref::mu_ratio(n, v, a);
                 let err = (r.ratio.mu_ratio - reference).abs();
                 worst = worst.max(err);
@@ -189,8 +177,7 @@ fn static_friction_is_the_minimum_over_the_mean_normal_force() {
     // The solver at vbar = 0 against the definition, computed independently.
     for n in [1.0, 2.0, 1.5, 3.0] {
         for a in [0.0, 0.05, 0.3, 0.7, 0.99, 1.0, 1.5, 4.0] {
-            let solver =
-                power_law(n, 0.0, a, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap().ratio.mu_ratio;
+            let solver = crate::common::at::power(n, 0.0, a, DEFAULT_TOL).unwrap().ratio.mu_ratio;
             let formula = mu_static_reference(n, a);
             assert!((solver - formula).abs() < 1e-14, "n={n} a={a}: {solver} vs {formula}");
         }
@@ -200,39 +187,40 @@ fn static_friction_is_the_minimum_over_the_mean_normal_force() {
 #[test]
 fn the_accepted_exponent_range_agrees_with_the_reference_at_its_ends() {
     for (n, v, a) in [(0.05, 0.3, 0.5), (0.05, 0.3, 2.0), (0.05, 0.05, 1.3), (1e6, 0.3, 0.5), (1e6, 0.5, 2.0)] {
-        let r = power_law(n, v, a, &fricosc::Options::default().with_tol(DEFAULT_TOL)).unwrap();
+        let r = crate::common::at::power(n, v, a, DEFAULT_TOL).unwrap();
         let (reference, acc) = mdr_ref::mu_ratio(n, v, a);
         let err = (r.ratio.mu_ratio - reference).abs();
         assert!(err <= tol::MDR_ABS.max(acc), "n={n} v={v} a={a}: err {err:e} (reference accuracy {acc:e})");
     }
 }
 
-/// `power_law` and `mdr::point` themselves (not only `Shape`) refuse what is
-/// outside their domain, naming the input: just outside the exponent range,
-/// a negative or non-finite velocity or amplitude, a tolerance outside (0, 1).
+/// Power laws refuse what is outside their domain, naming the input: just
+/// outside the exponent range (where the shape is built), a negative or
+/// non-finite velocity or amplitude, a tolerance outside (0, 1) (where the
+/// conditions are built); the range's ends are inside.
 #[test]
-fn the_power_law_entry_points_refuse_what_is_outside_their_domain() {
-    let ok = Options::default();
+fn power_laws_refuse_what_is_outside_their_domain() {
+    use fricosc::{Conditions, Shape};
     let (lo, hi) = (fricosc::MIN_EXPONENT, fricosc::MAX_EXPONENT);
-    let bad: [(f64, f64, f64, Options, &str); 8] = [
-        (lo * (1.0 - 1e-15), 0.3, 0.5, ok, "n"),
-        (hi * (1.0 + 1e-15), 0.3, 0.5, ok, "n"),
-        (f64::NAN, 0.3, 0.5, ok, "n"),
-        (2.0, -1e-300, 0.5, ok, "vbar"),
-        (2.0, f64::INFINITY, 0.5, ok, "vbar"),
-        (2.0, 0.3, f64::NAN, ok, "amp"),
-        (2.0, 0.3, 0.5, ok.with_tol(0.0), "tol"),
-        (2.0, 0.3, 0.5, ok.with_tol(1.0), "tol"),
-    ];
-    for (n, v, a, opts, name) in bad {
-        for e in [power_law(n, v, a, &opts).err(), fricosc::mdr::point(n, v, a, &opts).err()] {
-            let e = e.unwrap_or_else(|| panic!("n {n} vbar {v} amp {a} tol {} accepted", opts.tol));
-            assert!(matches!(e, fricosc::Error::InvalidParameter { .. }), "{e}");
-            assert!(e.to_string().contains(name), "{name}: {e}");
-        }
+    for n in [lo * (1.0 - 1e-15), hi * (1.0 + 1e-15), f64::NAN] {
+        let e = Shape::power(n).unwrap_err();
+        assert!(matches!(e, fricosc::Error::InvalidShape { .. }), "n {n}: {e}");
     }
-    // The ends themselves are inside.
-    assert!(power_law(lo, 0.3, 0.5, &ok).is_ok() && power_law(hi, 0.3, 0.5, &ok).is_ok());
+    let bad: [(f64, f64, f64, &str); 5] = [
+        (-1e-300, 0.5, DEFAULT_TOL, "vbar"),
+        (f64::INFINITY, 0.5, DEFAULT_TOL, "vbar"),
+        (0.3, f64::NAN, DEFAULT_TOL, "amp"),
+        (0.3, 0.5, 0.0, "tol"),
+        (0.3, 0.5, 1.0, "tol"),
+    ];
+    for (v, a, tol, name) in bad {
+        let e = Conditions::vbar(v, a).and_then(|c| c.with_tol(tol)).unwrap_err();
+        assert!(matches!(e, fricosc::Error::InvalidParameter { .. }), "{e}");
+        assert!(e.to_string().contains(name), "{name}: {e}");
+    }
+    for n in [lo, hi] {
+        assert!(crate::common::at::power(n, 0.3, 0.5, DEFAULT_TOL).is_ok(), "n {n}");
+    }
 }
 
 /// The banded report at vbar >= 1 and a huge amplitude: u* rounded above pi/2
@@ -242,7 +230,7 @@ fn the_power_law_entry_points_refuse_what_is_outside_their_domain() {
 fn bands_at_and_above_the_critical_velocity_for_huge_amplitudes() {
     for n in [0.5, 1.0, 2.0, 3.0, 300.0] {
         for amp in [2.0, 1e10, 5e293] {
-            let r = fricosc::mdr::point(n, 1.5, amp, &Options::default()).unwrap().result;
+            let r = crate::common::at::mdr_point(n, 1.5, amp, DEFAULT_TOL).unwrap().result;
             assert_eq!(r.ratio.mu_ratio, 1.0);
             if amp.powf(1.0 / n).is_finite() {
                 let shares: f64 = r.bands.iter().map(|b| b.normal_share).sum();
@@ -266,7 +254,6 @@ fn bands_at_and_above_the_critical_velocity_for_huge_amplitudes() {
 /// last difference as a cap, missed 113 of them.)
 #[test]
 fn the_estimate_bounds_the_error_at_every_tolerance_on_a_wide_grid() {
-    use fricosc::Options;
     let mut misses = vec![];
     for n in [0.5, 1.0, 1.5, 2.0, 3.0, 3.7, 8.0] {
         for i in 0..40 {
@@ -277,9 +264,9 @@ fn the_estimate_bounds_the_error_at_every_tolerance_on_a_wide_grid() {
                     10..=19 => 1.0 + (-1f64).powi(j) * 10f64.powf(-(j as f64 - 9.0)),
                     _ => 1.0 + 0.3 * (j - 19) as f64,
                 };
-                let best = power_law(n, vbar, amp, &Options::default()).unwrap();
+                let best = crate::common::at::power(n, vbar, amp, fricosc::DEFAULT_TOL).unwrap();
                 for tol in [1e-3, 1e-5, 1e-7, 1e-9, 1e-11] {
-                    let r = power_law(n, vbar, amp, &Options::default().with_tol(tol)).unwrap();
+                    let r = crate::common::at::power(n, vbar, amp, tol).unwrap();
                     let e = (r.ratio.mu_ratio - best.ratio.mu_ratio).abs();
                     if crate::common::exceeds(e, r.error_estimate + best.error_estimate) {
                         misses.push(format!(
@@ -302,18 +289,16 @@ fn the_estimate_bounds_the_error_at_every_tolerance_on_a_wide_grid() {
 /// spent 10,436 nodes and missed the 40-digit value by 1.1e-11, twice its estimate.)
 #[test]
 fn the_stick_first_band_starting_at_the_centre_threshold() {
-    use fricosc::Options;
-    let (mut misses, mut worst_nodes) = (vec![], 0);
+    let mut misses = vec![];
     for n in [0.5, 1.0, 2.0, 3.0, 8.0] {
         for i in 1..100 {
             let vbar = i as f64 / 100.0;
             let a0 = 1.0 / (1.0 - vbar * vbar).sqrt();
             let next = |k: i64| f64::from_bits((a0.to_bits() as i64 + k) as u64);
             for amp in [a0, next(1), next(-1), a0 * (1.0 + 1e-12), a0 * (1.0 - 1e-12)] {
-                let best = power_law(n, vbar, amp, &Options::default()).unwrap();
-                worst_nodes = worst_nodes.max(best.nodes);
+                let best = crate::common::at::power(n, vbar, amp, fricosc::DEFAULT_TOL).unwrap();
                 for tol in [1e-3, 1e-7, 1e-11] {
-                    let r = power_law(n, vbar, amp, &Options::default().with_tol(tol)).unwrap();
+                    let r = crate::common::at::power(n, vbar, amp, tol).unwrap();
                     let e = (r.ratio.mu_ratio - best.ratio.mu_ratio).abs();
                     if crate::common::exceeds(e, r.error_estimate + best.error_estimate) {
                         misses
@@ -324,68 +309,6 @@ fn the_stick_first_band_starting_at_the_centre_threshold() {
         }
     }
     assert!(misses.is_empty(), "{} misses:\n{}", misses.len(), misses.join("\n"));
-    // Observed 1,852 (n = 0.5); the boundary once cost 10,436.
-    assert!(worst_nodes <= 4000, "{worst_nodes} nodes");
-}
-
-/// The quadrature's cost, in nodes (deterministic, unlike time): within 2 %
-/// of what was measured when the stick-first bands got their mapped segments
-/// (2026-11-24; before them the grid took 60,064 nodes at the default
-/// tolerance, `vbar = 1e-300` 2,664 and the boundary point `amp 5/3, vbar 0.8`
-/// 1,572). A change that spends more nodes for the same bound fails here, and
-/// so does one that spends fewer: it updates the figures, or it accepts pieces
-/// more easily than the tolerance allows.
-#[test]
-fn the_node_counts_stay_within_two_percent_of_the_measured() {
-    let grid_nodes = |opts: &Options| -> usize {
-        (0..10)
-            .flat_map(|a| (0..100).map(move |v| (1.2 * v as f64 / 99.0, 3.0 * a as f64 / 9.0)))
-            .map(|(vbar, amp)| power_law(2.0, vbar, amp, opts).unwrap().nodes)
-            .sum()
-    };
-    let within = |got: usize, measured: usize, what: &str| {
-        // Both ways: fewer nodes for the same tolerance means a piece accepted
-        // more easily than the estimate allows (the threshold's arithmetic mutated).
-        let ratio = got as f64 / measured as f64;
-        assert!((0.98..=1.02).contains(&ratio), "{what}: {got} nodes, measured {measured}");
-    };
-    // The parabolic table of `fricosc bench`: 10 x 100 points, amp 0 to 3, vbar 0 to 1.2.
-    // Measured again when the order ladder 4-8-16 gave way to one order's own
-    // coefficient estimate and the mapped segments grew from 2.5 to 4.0
-    // (2026-11-25: 48,868 and 37,794 before). Measured again when mapped
-    // segments grew to 5.0 and started at order 32, and the ladder chose its
-    // next order from the measured decay (2026-11-27: 34,528 and 28,240
-    // before; the points below took 384, 224, 288, 176, 208 and 16: two of
-    // them now cost more). Again when the stick-first band went to the stick's
-    // half-length from vbar 0.1, in `tau = sqrt(h_b - h)`, also below the
-    // centre's threshold (29,080 and 26,144 before; the cone below 16). Again
-    // when the whole band below the centre's threshold went to one
-    // Gauss-Jacobi piece in `tau` (2026-11-26: 25,528 and 22,448 before),
-    // and the half-length forms went down to vbar 1e-3 (25,552 and 17,584
-    // before; `n = 3, vbar 0.01, amp 0.2` 128). Again when the half-length
-    // bands started at order 20 (2026-11-26: 21,888 and 14,464 before; the
-    // points below took 464, 256, 224, 56, 104 and 24).
-    within(grid_nodes(&Options::default()), 20_444, "grid at the default tolerance");
-    within(grid_nodes(&Options::default().with_tol(1e-8)), 14_424, "grid at tol 1e-8");
-    for (n, vbar, amp, measured) in [
-        (2.0, 1e-300, 0.5, 464),
-        (2.0, 0.8, 5.0 / 3.0, 256),
-        (1.0, 1e-6, 0.9, 224),
-        // One band fails at order 20 and passes at 24 (56 when they started at 24).
-        (3.0, 0.01, 0.2, 76),
-        // 240 with the eigenvectors' weights (2026-11-26): with accurate
-        // ones a piece passes one step earlier, 3.5e-19 from the 40-digit
-        // value for an estimate of 3.7e-17; 160 before the half-length
-        // forms went down to vbar 1e-3.
-        (2.0, 1e-3, 1.0, 92),
-        // The cone at the boundary: its Jacobian has no branch point (224
-        // nodes where one was graded for; 16 in the phase, 24 in the stick's
-        // half-length, whose first order is 20).
-        (1.0, 0.8, 5.0 / 3.0, 20),
-    ] {
-        let got = power_law(n, vbar, amp, &Options::default()).unwrap().nodes;
-        within(got, measured, &format!("n {n} vbar {vbar:e} amp {amp}"));
-    }
 }
 
 /// The exponents whose `y^gamma` could take a special path: the cone (`gamma =
@@ -395,11 +318,10 @@ fn the_node_counts_stay_within_two_percent_of_the_measured() {
 /// doubles (which take `powf`): `mu` moves by `~1e-16` over an ulp of `n`.
 #[test]
 fn exponents_with_an_exact_gamma_agree_with_their_neighbours_and_the_reference() {
-    let o = fricosc::Options::default();
     for (n, gamma) in [(1.0, 0.0), (2.0, -0.5), (2.0 / 3.0, 0.5)] {
         assert_eq!(1.0 / n - 1.0, gamma, "n = {n:?}");
         for (v, a) in [(0.3, 0.5), (0.3, 2.0), (0.05, 1.3), (0.6, 1.0)] {
-            let at = |n: f64| power_law(n, v, a, &o).unwrap();
+            let at = |n: f64| crate::common::at::power(n, v, a, DEFAULT_TOL).unwrap();
             let r = at(n);
             let (reference, acc) = mdr_ref::mu_ratio(n, v, a);
             let err = (r.ratio.mu_ratio - reference).abs();

@@ -12,7 +12,6 @@
 use crate::common::quad::tanh_sinh;
 use crate::common::spring_ref::{deficit, mean_b};
 use crate::common::tol;
-use fricosc::mdr::power_law;
 use fricosc::DEFAULT_TOL;
 
 /// `(mu_ratio, accuracy)` of the power law `g = z^n` by the reference.
@@ -64,7 +63,7 @@ fn the_error_estimate_bounds_the_error_at_every_tolerance_against_an_independent
         let mut misses = vec![];
         let mut worst = 0.0f64;
         for &(n, v, a, (mu, acc)) in &refs {
-            let r = power_law(n, v, a, &fricosc::Options::default().with_tol(tol)).unwrap();
+            let r = crate::common::at::power(n, v, a, tol).unwrap();
             let err = (r.ratio.mu_ratio - mu).abs();
             worst = worst.max(err);
             if crate::common::exceeds(err, r.error_estimate + acc) {
@@ -108,7 +107,7 @@ fn the_error_estimate_bounds_the_error_against_forty_digit_references() {
         for c in cases {
             let (n, vbar, amp) = (c["n"].as_f64().unwrap(), c["vbar"].as_f64().unwrap(), c["amp"].as_f64().unwrap());
             let exact = c["mu_ratio"].as_str().unwrap();
-            let r = power_law(n, vbar, amp, &fricosc::Options::default().with_tol(tol)).unwrap();
+            let r = crate::common::at::power(n, vbar, amp, tol).unwrap();
             let err = crate::common::exact_error(r.ratio.mu_ratio, exact);
             if crate::common::exceeds(err, r.error_estimate) {
                 misses.push(format!("n={n} vbar={vbar} amp={amp}: error {err:e} > estimate {:e}", r.error_estimate));
@@ -186,7 +185,7 @@ fn worst_relative_error_within_the_estimates(file: &str, count: usize) -> f64 {
         let exact = c["mu_ratio"].as_str().unwrap();
         let mu: f64 = exact.parse().unwrap();
         for tol in [1e-3, 1e-6, 1e-9, 1e-12, DEFAULT_TOL] {
-            let r = power_law(n, vbar, amp, &fricosc::Options::default().with_tol(tol)).unwrap();
+            let r = crate::common::at::power(n, vbar, amp, tol).unwrap();
             let err = crate::common::exact_error(r.ratio.mu_ratio, exact);
             assert!(
                 !crate::common::exceeds(err, r.error_estimate),

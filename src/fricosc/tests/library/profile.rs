@@ -32,8 +32,8 @@ fn a_tabulated_sphere_reproduces_parabolic_within_the_interpolation_error() {
     let shape = crate::common::shape(&format!("profile:{}@{u0:?}", path.display())).unwrap();
     let parabolic = crate::common::shape("parabolic").unwrap();
     for (v, a) in [(0.3, 0.4), (0.6, 1.0), (0.2, 2.0), (0.9, 0.7)] {
-        let t = shape.evaluate(v, a).unwrap();
-        let p = parabolic.evaluate(v, a).unwrap();
+        let t = crate::common::at::eval(&shape, v, a).unwrap();
+        let p = crate::common::at::eval(&parabolic, v, a).unwrap();
         let interp = t.interpolation_error.unwrap();
         let err = (t.ratio.mu_ratio - p.ratio.mu_ratio).abs();
         // The sphere differs from the paraboloid by O(u0/R) = 1e-8 in g.
@@ -48,8 +48,8 @@ fn a_tabulated_equivalent_profile_reproduces_the_power_law() {
     let shape = crate::common::shape(&format!("gx:{}@1", path.display())).unwrap();
     let power = crate::common::shape("power:2.5").unwrap();
     for (v, a) in [(0.3, 0.4), (0.5, 1.5)] {
-        let t = shape.evaluate(v, a).unwrap();
-        let p = power.evaluate(v, a).unwrap();
+        let t = crate::common::at::eval(&shape, v, a).unwrap();
+        let p = crate::common::at::eval(&power, v, a).unwrap();
         let err = (t.ratio.mu_ratio - p.ratio.mu_ratio).abs();
         assert!(err <= t.interpolation_error.unwrap() + t.error_estimate, "v={v} a={a}: {err:e}");
     }
@@ -94,11 +94,8 @@ fn tabulated_shapes_at_extreme_scales_are_right_or_refused() {
         std::fs::write(&p, format!("x,g\n{text}")).unwrap();
         p.to_str().unwrap().to_string()
     };
-    let eval = |spec: &str, v: f64, a: f64| crate::common::shape(spec)?.evaluate(v, a);
-    let parabolic = fricosc::mdr::power_law(2.0, 0.3, 0.4, &fricosc::Options::default().with_tol(fricosc::DEFAULT_TOL))
-        .unwrap()
-        .ratio
-        .mu_ratio;
+    let eval = |spec: &str, v: f64, a: f64| crate::common::at::eval(&crate::common::shape(spec)?, v, a);
+    let parabolic = crate::common::at::power(2.0, 0.3, 0.4, fricosc::DEFAULT_TOL).unwrap().ratio.mu_ratio;
     // g = x^2 on 0..2 (41 rows) at several scales of x and g.
     for (sx, sg) in [(1.0, 1.0), (1e-150, 1e-300), (1e150, 1e300), (1e-300, 1e-300)] {
         let rows: Vec<(f64, f64)> = (0..=40).map(|i| 0.05 * i as f64).map(|x| (x * sx, x * x * sg)).collect();
@@ -151,30 +148,26 @@ fn a_non_monotone_transform_is_refused() {
 fn tabulated_contact_at_subnormal_amplitude() {
     let x: Vec<f64> = (0..=200).map(|i| 0.01 * i as f64).collect();
     let g: Vec<f64> = x.iter().map(|x| x * x).collect();
-    let t = fricosc::profile::Table::from_columns(x, g, false, "square").unwrap().at(1.0).unwrap();
+    let t = fricosc::contact::Table::from_columns(x, g, false, "square").unwrap().at(1.0).unwrap();
     let shape = fricosc::Shape::from_contact(std::sync::Arc::new(t));
-    let slope = |a: f64| shape.evaluate(0.3, a).unwrap().ratio.reduction / a;
+    let slope = |a: f64| crate::common::at::eval(&shape, 0.3, a).unwrap().ratio.reduction / a;
     let (below, small) = (slope(1e-305), slope(1e-200));
     assert!(((below - small) / small).abs() < 1e-12, "{below} vs {small}");
     // A subnormal reduction carries only its own bits: 1.3e-314 has an ulp of
     // 4.9e-324, a relative 4e-10.
     let tiny = slope(2.1219957905e-314);
     assert!(((tiny - small) / small).abs() < 1e-9, "{tiny} vs {small}");
-    let analytic =
-        fricosc::mdr::power_law(2.0, 0.3, 1e-200, &fricosc::Options::default().with_tol(fricosc::DEFAULT_TOL))
-            .unwrap()
-            .ratio
-            .reduction;
+    let analytic = crate::common::at::power(2.0, 0.3, 1e-200, fricosc::DEFAULT_TOL).unwrap().ratio.reduction;
     let rel = (small - analytic / 1e-200).abs() / small;
     assert!(rel < 1e-6, "tabulated slope {small} vs paraboloid {}: {rel:e}", analytic / 1e-200);
     // The estimates scale with the amplitude too (computed at 1e-300 and
     // scaled: unscaled they would be those of 1e-300, the estimate's half an
     // ulp of 1 among them).
     for a in [1e-305, 2.1219957905e-314] {
-        let e = shape.evaluate(0.3, a).unwrap();
+        let e = crate::common::at::eval(&shape, 0.3, a).unwrap();
         let scale = a / 1e-300;
         assert!(e.error_estimate <= 1e-15 * scale, "amp {a:e}: estimate {:e}", e.error_estimate);
-        let at = shape.evaluate(0.3, 1e-300).unwrap();
+        let at = crate::common::at::eval(&shape, 0.3, 1e-300).unwrap();
         let interp = e.interpolation_error.unwrap();
         assert!(interp <= at.interpolation_error.unwrap() * scale * 1.0000001 + 1e-323, "amp {a:e}: {interp:e}");
     }
@@ -193,8 +186,8 @@ fn a_tabulated_paraboloid_keeps_small_mu_to_its_relative_accuracy() {
     let parabolic = crate::common::shape("parabolic").unwrap();
     for a in [0.999, 1.0, 2.0] {
         for v in [1e-2, 1e-6, 1e-10] {
-            let t = shape.evaluate(v, a).unwrap();
-            let p = parabolic.evaluate(v, a).unwrap();
+            let t = crate::common::at::eval(&shape, v, a).unwrap();
+            let p = crate::common::at::eval(&parabolic, v, a).unwrap();
             let err = (t.ratio.mu_ratio - p.ratio.mu_ratio).abs();
             let interp = t.interpolation_error.unwrap();
             assert!(err <= t.error_estimate + p.error_estimate + interp, "a={a} v={v}: {err:e}");
@@ -214,7 +207,7 @@ fn a_tabulated_paraboloid_keeps_small_mu_to_its_relative_accuracy() {
 /// does not start at 0 is shifted to; messages name the file's line.
 #[test]
 fn the_table_format_and_the_lines_its_messages_name() {
-    use fricosc::profile::Table;
+    use fricosc::contact::Table;
     let at = |text: &str| Table::parse(text, "t", false).unwrap().at(1.0).unwrap().named("t");
     let base = at("x,g\n0,0\n0.5,0.25\n1,1\n1.5,2.25\n2,4\n");
     for text in [
@@ -243,7 +236,7 @@ fn the_table_format_and_the_lines_its_messages_name() {
 /// from arrays alike.
 #[test]
 fn a_table_of_the_most_rows_is_read_and_one_more_refused() {
-    use fricosc::profile::{Table, MAX_TABLE_ROWS};
+    use fricosc::contact::{Table, MAX_TABLE_ROWS};
     let rows = |n: usize| -> (Vec<f64>, Vec<f64>) { (0..n).map(|i| (i as f64, (i * i) as f64)).unzip() };
     let text = |n: usize| -> String {
         let mut s = String::with_capacity(24 * n);
@@ -268,7 +261,7 @@ fn a_table_of_the_most_rows_is_read_and_one_more_refused() {
 /// `g`, transformed for a profile (`f = r^2/2` has `g = x^2`).
 #[test]
 fn a_table_at_a_mean_indentation_and_its_largest_g() {
-    use fricosc::profile::Table;
+    use fricosc::contact::Table;
     let x: Vec<f64> = (0..=40).map(|i| 0.05 * i as f64).collect();
     let g: Vec<f64> = x.iter().map(|x| x * x).collect();
     let f: Vec<f64> = x.iter().map(|x| 0.5 * x * x).collect();
@@ -294,10 +287,10 @@ fn a_table_at_a_mean_indentation_and_its_largest_g() {
 /// stick (`vbar >= 1`, `amp = 0`: `mu = 1` with no error at all).
 #[test]
 fn a_tabulated_contact_through_the_trait() {
-    use fricosc::Contact;
+    use fricosc::contact::Contact;
     let x: Vec<f64> = (0..=40).map(|i| 0.05 * i as f64).collect();
     let g: Vec<f64> = x.iter().map(|x| x * x).collect();
-    let t = fricosc::profile::Table::from_columns(x.clone(), g, false, "squares").unwrap().at(1.0).unwrap();
+    let t = fricosc::contact::Table::from_columns(x.clone(), g, false, "squares").unwrap().at(1.0).unwrap();
     for amp in [0.0, 0.5, 2.0, 3.0] {
         let z = t.reach(amp).unwrap();
         assert!((z - (1.0 + amp).sqrt()).abs() <= 1e-15, "amp {amp}: {z}");

@@ -1,8 +1,8 @@
 //! Properties over random inputs (proptest), each against something the
 //! library did not compute.
 
+use crate::common::at::flat_ratio as ratio;
 use crate::common::spring_ref::flat_mu;
-use fricosc::flat::ratio;
 use proptest::prelude::*;
 
 proptest! {

@@ -20,7 +20,7 @@ fn the_copy_in_data_equals_shared_when_present() {
 fn flat_cases_match_to_1e_14() {
     let mut n = 0;
     for c in reference_cases().iter().filter(|c| c.shape == "flat") {
-        let r = fricosc::flat::ratio(c.vbar, c.amp).unwrap();
+        let r = crate::common::at::flat_ratio(c.vbar, c.amp).unwrap();
         let err = (r.mu_ratio - c.mu_ratio).abs();
         assert!(
             err <= tol::FLAT_ABS.min(tol::FLAT_ABS_REGRESSION),

@@ -8,11 +8,11 @@
 
 use crate::common::quad::tanh_sinh;
 use crate::common::spring_ref::{deficit, mean_b};
-use fricosc::{Options, Shape};
+use fricosc::Shape;
 use std::f64::consts::PI;
 
 fn point_json(shape: &Shape, vbar: f64, amp: f64) -> serde_json::Value {
-    serde_json::to_value(shape.point(vbar, amp, &Options::default()).unwrap()).unwrap()
+    serde_json::to_value(crate::common::at::report(shape, vbar, amp, fricosc::DEFAULT_TOL).unwrap()).unwrap()
 }
 
 #[test]
@@ -48,7 +48,7 @@ fn flat_mean_normal(amp: f64) -> f64 {
 fn the_flat_punchs_mean_normal_force_and_its_report() {
     for amp in [0.0, 0.3, 1.0, 1.0 + 1e-9, 1.5, 3.0, 1e3, 1e10] {
         let want = flat_mean_normal(amp);
-        let got = fricosc::flat::mean_normal(amp);
+        let got = crate::common::at::flat_point(0.3, amp).unwrap().mean_normal;
         assert!((got / want - 1.0).abs() <= 4e-16 * amp.max(1.0).log2().max(1.0), "amp {amp}: {got} against {want}");
         // Both sides of the foundation in the contact's units.
         let c = Shape::flat().contact().mean_normal(amp).unwrap();
@@ -96,22 +96,14 @@ fn power_law_mean_normal_forces_against_mpmath() {
         let reported = p["mean_normal"].as_f64().unwrap();
         assert!((reported / want - 1.0).abs() <= 1e-13, "n {n} amp {amp}: reported {reported}");
     }
-    // Where nothing sticks (vbar >= 1), the ratio's own call reports the force
-    // from its closed form (the cone and the paraboloid; none for other exponents).
-    let opts = fricosc::Options::default();
-    for (n, amp, want) in POWER_NORMAL {
-        let got = fricosc::mdr::power_law(n, 1.5, amp, &opts).unwrap().mean_normal;
-        match got {
-            Some(got) => assert!((got / want - 1.0).abs() <= 1e-14, "n {n} amp {amp} vbar 1.5: {got} against {want}"),
-            None => assert!(n != 1.0 && n != 2.0, "n {n} amp {amp} vbar 1.5: no mean normal force"),
-        }
-    }
     // Without oscillation: the static force, 2 n/(n + 1), from the contact and
-    // from the ratio's own call (both sides of the foundation).
+    // from the point's report (both sides of the foundation).
     for n in [0.5, 1.0, 2.0, 3.7] {
         let got = crate::common::shape(&format!("power:{n}")).unwrap().contact().mean_normal(0.0).unwrap();
         assert!((got / (2.0 * n / (n + 1.0)) - 1.0).abs() <= 4e-16, "n {n}: {got}");
-        let reported = fricosc::mdr::power_law(n, 0.4, 0.0, &opts).unwrap().mean_normal.unwrap();
+        let reported = point_json(&crate::common::shape(&format!("power:{n}")).unwrap(), 0.4, 0.0)["mean_normal"]
+            .as_f64()
+            .unwrap();
         assert!((reported / (2.0 * n / (n + 1.0)) - 1.0).abs() <= 4e-16, "n {n}: reported {reported}");
     }
     // The tabulated sphere at u0 = 1e-6 of its radius is the paraboloid to O(u0/R).
@@ -139,7 +131,7 @@ fn static_friction_is_the_small_velocity_limit() {
         let shape = crate::common::shape(spec).unwrap();
         for amp in [0.2, 0.6, 0.95, 1.0, 1.7] {
             let ms = shape.contact().mu_static(amp, fricosc::DEFAULT_TOL).unwrap();
-            let near = shape.evaluate(1e-10, amp).unwrap().ratio.mu_ratio;
+            let near = crate::common::at::eval(&shape, 1e-10, amp).unwrap().ratio.mu_ratio;
             assert!((near - ms).abs() <= 1e-8, "{spec} amp {amp}: mu_static {ms}, mu(1e-10) {near}");
             if amp >= 1.0 {
                 assert_eq!(ms, 0.0, "{spec} amp {amp}");

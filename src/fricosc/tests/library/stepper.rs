@@ -1,12 +1,12 @@
 //! The seed's time-stepping scheme converges to the exact solver, at the order
 //! Expected: second order for amp <= 1, first (erratic in M) once contact is lost.
-use fricosc::flat::ratio;
-use fricosc::stepper::{evaluate, Stepping, SteppingEvaluation};
+use crate::common::at::flat_ratio as ratio;
+use fricosc::stepper::{Stepping, SteppingEvaluation};
 use fricosc::Shape;
 use std::f64::consts::TAU;
 
 fn flat_mu_ratio(v: f64, a: f64, m: usize) -> SteppingEvaluation {
-    evaluate(&Shape::flat(), v, a, Stepping { steps_per_period: m, springs: 1 }).unwrap()
+    crate::common::at::stepped(&Shape::flat(), v, a, Stepping { steps_per_period: m, springs: 1 }).unwrap()
 }
 
 /// Least-squares order and the worst error constant err / h^p over a geometric M sweep.

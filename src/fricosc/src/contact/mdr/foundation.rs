@@ -3,8 +3,8 @@
 //! orders raised until the truncation error predicted from the pass's own
 //! coefficients is within the tolerance.
 
+use crate::model::spring::{mean_normal_sin_cos, LengthNode, LengthTop, Velocity};
 use crate::quad;
-use crate::spring::{mean_normal_sin_cos, LengthNode, LengthTop, Velocity};
 use std::f64::consts::FRAC_PI_2;
 
 /// What a band's nodes compute besides the normal force `<B>`.
@@ -21,7 +21,7 @@ pub(super) enum Means {
     /// with `excess` the permanent spring's tangent excess (`D = cos delta -
     /// excess`).
     SlipFirst {
-        /// [`crate::spring::Spring::tangent_excess`] of a permanent spring.
+        /// [`crate::model::spring::Spring::tangent_excess`] of a permanent spring.
         excess: f64,
     },
 }
@@ -1036,7 +1036,7 @@ mod tests {
 
     #[test]
     fn the_next_order_is_the_predicted_one() {
-        let f = Foundation::new(2.0, 0.5, None, crate::shape::DEFAULT_TOL);
+        let f = Foundation::new(2.0, 0.5, None, crate::DEFAULT_TOL);
         let pass = |decay: [f64; MEANS]| Pass { sum: [1.0; MEANS], magnitude: 0.0, truncation: None, decay };
         let lim = [1e-15; MEANS];
         let within = 1e-16;

@@ -151,7 +151,7 @@ impl Table {
     /// appears in messages.
     ///
     /// ```
-    /// use fricosc::profile::Table;
+    /// use fricosc::contact::Table;
     /// // A paraboloid f = r^2/2 (R = 1) at mean indentation 1e-4: Hertz.
     /// let r: Vec<f64> = (0..=200).map(|i| i as f64 * 0.005).collect();
     /// let f: Vec<f64> = r.iter().map(|r| r * r / 2.0).collect();

@@ -197,3 +197,59 @@ pub mod tol {
     /// MDR references: observed 4e-16.
     pub const MDR_ABS_REGRESSION: f64 = 4e-15;
 }
+
+/// The facade's calls in the shapes the tests use: a shape at `(vbar, amp)`,
+/// at a tolerance, its ratio alone, its report; the flat punch and power laws
+/// by name; oscillation in the sliding direction as `[vhat, amp, T, phase]`.
+pub mod at {
+    use fricosc::report::{Combined, FlatPoint, MdrPoint};
+    use fricosc::stepper::{Stepping, SteppingEvaluation};
+    use fricosc::{Conditions, Evaluation, Ratio, Report, Result, Shape};
+
+    pub fn eval(shape: &Shape, vbar: f64, amp: f64) -> Result<Evaluation> {
+        shape.evaluate(&Conditions::vbar(vbar, amp)?)
+    }
+    pub fn eval_tol(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
+        shape.evaluate(&Conditions::vbar(vbar, amp)?.with_tol(tol)?)
+    }
+    pub fn ratio(shape: &Shape, vbar: f64, amp: f64) -> Result<Ratio> {
+        shape.ratio(&Conditions::vbar(vbar, amp)?)
+    }
+    pub fn report(shape: &Shape, vbar: f64, amp: f64, tol: f64) -> Result<Report> {
+        shape.report(&Conditions::vbar(vbar, amp)?.with_tol(tol)?)
+    }
+    pub fn flat_ratio(vbar: f64, amp: f64) -> Result<Ratio> {
+        ratio(&Shape::flat(), vbar, amp)
+    }
+    pub fn flat_point(vbar: f64, amp: f64) -> Result<FlatPoint> {
+        match report(&Shape::flat(), vbar, amp, fricosc::DEFAULT_TOL)? {
+            Report::Flat(p) => Ok(p),
+            r => panic!("the flat punch reported {r:?}"),
+        }
+    }
+    pub fn power(n: f64, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
+        eval_tol(&Shape::power(n)?, vbar, amp, tol)
+    }
+    pub fn mdr_point(n: f64, vbar: f64, amp: f64, tol: f64) -> Result<MdrPoint> {
+        match report(&Shape::power(n)?, vbar, amp, tol)? {
+            Report::Power(p) => Ok(p),
+            r => panic!("a power law reported {r:?}"),
+        }
+    }
+    /// `[vhat, amp, T, phase]` as conditions.
+    pub fn osc(o: [f64; 4]) -> Result<Conditions> {
+        Conditions::vhat(o[0], o[1])?.with_tangential(o[2], o[3])
+    }
+    pub fn combined(shape: &Shape, o: [f64; 4], tol: f64) -> Result<Combined> {
+        match shape.report(&osc(o)?.with_tol(tol)?)? {
+            Report::Tangential(t) => Ok(t.result),
+            r => panic!("a tangential report expected, got {r:?}"),
+        }
+    }
+    pub fn stepped(shape: &Shape, vbar: f64, amp: f64, st: Stepping) -> Result<SteppingEvaluation> {
+        fricosc::stepper::evaluate(shape, &Conditions::vbar(vbar, amp)?, st)
+    }
+    pub fn stepped_osc(shape: &Shape, o: [f64; 4], st: Stepping) -> Result<SteppingEvaluation> {
+        fricosc::stepper::evaluate(shape, &osc(o)?, st)
+    }
+}

@@ -1,0 +1,217 @@
+//! What is asked of a contact: the sliding velocity, the normal and the
+//! tangential oscillation, and the quadrature tolerance. Checked once, where
+//! it is built; everything downstream trusts it.
+
+use crate::error::{check_nonneg, Error, Result};
+use std::f64::consts::TAU;
+
+/// Default relative quadrature tolerance of curved shapes: about what f64 allows.
+pub const DEFAULT_TOL: f64 = 4e-15;
+
+/// Largest tangential amplitude and velocity accepted with a tangential
+/// oscillation (pre-slip lengths): beyond it the phase's rounding (an ulp of
+/// the phase, times `T`) is the answer's scale; near there the rigid-body law
+/// `(2/pi) asin(vhat/T)` holds to about 1e-6.
+pub const MAX_TANGENTIAL_AMP: f64 = 1e6;
+
+/// The sliding velocity, in the seed's two forms.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Velocity {
+    /// `vbar = (kx/kz) v0 / (mu0 omega du)` (eq. 3).
+    Vbar(f64),
+    /// `vhat = (kx/kz) v0 / (mu0 omega u0) = vbar amp` (eq. 15).
+    Vhat(f64),
+}
+
+/// The conditions of one point: the velocity, the amplitude `amp = du/u0` of
+/// the normal oscillation, optionally an oscillation in the sliding direction
+/// (its amplitude `T = dx/l` in pre-slip lengths `l = mu0 u0 kz/kx`, and its
+/// phase against the normal oscillation), and the quadrature tolerance of
+/// curved shapes.
+///
+/// ```
+/// use fricosc::{Conditions, Shape};
+/// // The seed's problem at vbar = 0.3, du/u0 = 0.4.
+/// let c = Conditions::vbar(0.3, 0.4)?;
+/// assert!((Shape::flat().evaluate(&c)?.ratio.mu_ratio - 0.8317432589602997).abs() < 1e-15);
+/// // The same velocity as vhat, with an oscillation in the sliding direction.
+/// let c = Conditions::vhat(0.12, 0.4)?.with_tangential(1.5, 0.7)?;
+/// assert!(Shape::flat().evaluate(&c)?.ratio.mu_ratio < 0.8);
+/// # Ok::<(), fricosc::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Conditions {
+    velocity: Velocity,
+    amp: f64,
+    tangential: Option<(f64, f64)>,
+    tol: f64,
+}
+
+impl Conditions {
+    /// The seed's problem at `vbar` (eq. 3) and `amp`, both finite and `>= 0`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming the bad input.
+    pub fn vbar(vbar: f64, amp: f64) -> Result<Conditions> {
+        check_nonneg("vbar", vbar)?;
+        check_nonneg("amp", amp)?;
+        Ok(Conditions { velocity: Velocity::Vbar(vbar + 0.0), amp: amp + 0.0, tangential: None, tol: DEFAULT_TOL })
+    }
+
+    /// The seed's problem at `vhat = vbar amp` (eq. 15) and `amp`, both finite
+    /// and `>= 0`; `vbar = vhat/amp` must be finite, unless a tangential
+    /// oscillation follows ([`Conditions::with_tangential`]), which needs no
+    /// `vbar` (it is undefined at `amp = 0`).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming the bad input.
+    pub fn vhat(vhat: f64, amp: f64) -> Result<Conditions> {
+        check_nonneg("vhat", vhat)?;
+        check_nonneg("amp", amp)?;
+        Ok(Conditions { velocity: Velocity::Vhat(vhat + 0.0), amp: amp + 0.0, tangential: None, tol: DEFAULT_TOL })
+    }
+
+    /// These conditions with an oscillation in the sliding direction of
+    /// amplitude `t` (pre-slip lengths, `>= 0`, at most
+    /// [`MAX_TANGENTIAL_AMP`]) and phase `phase` (radians, finite; reduced to
+    /// `[0, 2 pi)`): the body's position is `vhat tau + t sin(tau + phase)`
+    /// while the indentation is `u0 - du cos tau`. The velocity must be `vhat`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming the bad input, or the velocity given as `vbar`.
+    pub fn with_tangential(self, t: f64, phase: f64) -> Result<Conditions> {
+        let Velocity::Vhat(vhat) = self.velocity else {
+            return Err(Error::param(
+                "tangential-amp",
+                t,
+                "needs the velocity as vhat (vbar = vhat/amp is undefined without normal oscillation)",
+            ));
+        };
+        check_nonneg("tangential-amp", t)?;
+        if !phase.is_finite() {
+            return Err(Error::param("phase", phase, "must be finite"));
+        }
+        if t > MAX_TANGENTIAL_AMP || vhat > MAX_TANGENTIAL_AMP {
+            return Err(Error::param(
+                if vhat > MAX_TANGENTIAL_AMP { "vhat" } else { "tangential-amp" },
+                t.max(vhat),
+                "must be <= 1e6 pre-slip lengths (the rounding of the phase grows with T; near there the rigid-body law (2/pi) asin(vhat/T) holds to ~1e-6)",
+            ));
+        }
+        Ok(Conditions { tangential: Some((t + 0.0, phase.rem_euclid(TAU))), ..self })
+    }
+
+    /// These conditions with the relative quadrature tolerance `tol` of
+    /// curved shapes (ignored by the flat punch): finite, in `(0, 1)`; looser
+    /// is faster. Default [`DEFAULT_TOL`].
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a tolerance outside `(0, 1)` or not finite.
+    pub fn with_tol(self, tol: f64) -> Result<Conditions> {
+        if tol.is_finite() && tol > 0.0 && tol < 1.0 {
+            Ok(Conditions { tol, ..self })
+        } else {
+            Err(Error::param("tol", tol, "must be finite, > 0 and < 1"))
+        }
+    }
+
+    /// The velocity as given.
+    #[must_use]
+    pub fn velocity(&self) -> Velocity {
+        self.velocity
+    }
+
+    /// The amplitude `du/u0` of the normal oscillation.
+    #[must_use]
+    pub fn amp(&self) -> f64 {
+        self.amp
+    }
+
+    /// The tangential oscillation `(T, phase)`, phase in `[0, 2 pi)`, if any.
+    #[must_use]
+    pub fn tangential(&self) -> Option<(f64, f64)> {
+        self.tangential
+    }
+
+    /// The quadrature tolerance.
+    #[must_use]
+    pub fn tol(&self) -> f64 {
+        self.tol
+    }
+
+    /// The velocity as `vhat = vbar amp` (eq. 15).
+    #[must_use]
+    pub fn as_vhat(&self) -> f64 {
+        match self.velocity {
+            Velocity::Vbar(v) => v * self.amp,
+            Velocity::Vhat(v) => v,
+        }
+    }
+
+    /// The velocity as `vbar` (eq. 3): as given, or `vhat/amp`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] where `vhat/amp` is undefined (`amp = 0`)
+    /// or overflows.
+    pub fn as_vbar(&self) -> Result<f64> {
+        match self.velocity {
+            Velocity::Vbar(v) => Ok(v),
+            Velocity::Vhat(v) => vbar_from_vhat(v, self.amp),
+        }
+    }
+}
+
+/// `vbar` (eq. 3) from `vhat = vbar amp` (eq. 15): `vhat / amp`, refused where
+/// `amp` is 0 (the velocity has no `vbar` then) or the quotient overflows.
+fn vbar_from_vhat(vhat: f64, amp: f64) -> Result<f64> {
+    if amp > 0.0 {
+        let vbar = vhat / amp;
+        if vbar.is_finite() {
+            Ok(vbar)
+        } else {
+            Err(Error::param("vbar", vbar, &format!("vhat / amp = {vhat:?} / {amp:?} overflows double precision")))
+        }
+    } else {
+        Err(Error::param("amp", amp, "vhat needs amp > 0 (vbar = vhat / amp)"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `amp = 0` is refused as such (not as an overflow of `vhat / 0`), with
+    /// `vhat` zero or not; the overflow is named.
+    #[test]
+    fn vbar_from_vhat_refuses_a_zero_amplitude_by_name() {
+        for vhat in [0.0, 0.3] {
+            let e = Conditions::vhat(vhat, 0.0).unwrap().as_vbar().unwrap_err().to_string();
+            assert!(e.contains("needs amp > 0") && !e.contains("overflows"), "{e}");
+        }
+        let e = Conditions::vhat(1e300, 1e-300).unwrap().as_vbar().unwrap_err().to_string();
+        assert!(e.contains("overflows"), "{e}");
+        assert_eq!(Conditions::vhat(0.0, 5e-324).unwrap().as_vbar().unwrap(), 0.0);
+    }
+
+    /// Every input is checked where the conditions are built, by name.
+    #[test]
+    fn bad_inputs_are_named() {
+        let name = |e: Error| match e {
+            Error::InvalidParameter { name, .. } => name,
+            _ => "",
+        };
+        assert_eq!(name(Conditions::vbar(-1.0, 0.5).unwrap_err()), "vbar");
+        assert_eq!(name(Conditions::vbar(0.5, f64::NAN).unwrap_err()), "amp");
+        assert_eq!(name(Conditions::vhat(f64::INFINITY, 0.5).unwrap_err()), "vhat");
+        let c = Conditions::vhat(0.3, 0.5).unwrap();
+        assert_eq!(name(c.with_tangential(-1.0, 0.0).unwrap_err()), "tangential-amp");
+        assert_eq!(name(c.with_tangential(1.0, f64::NAN).unwrap_err()), "phase");
+        assert_eq!(name(c.with_tangential(2e6, 0.0).unwrap_err()), "tangential-amp");
+        assert_eq!(name(c.with_tol(1.0).unwrap_err()), "tol");
+        assert_eq!(name(Conditions::vbar(0.3, 0.5).unwrap().with_tangential(1.0, 0.0).unwrap_err()), "tangential-amp");
+        // -0 is 0; a phase is reduced to [0, 2 pi).
+        let c = Conditions::vhat(-0.0, 0.5).unwrap().with_tangential(1.0, -1.0).unwrap();
+        assert_eq!(c.as_vhat().to_bits(), 0);
+        assert_eq!(c.tangential(), Some((1.0, TAU - 1.0)));
+    }
+}
