@@ -12,7 +12,7 @@ pub const DEFAULT_TOL: f64 = 4e-15;
 /// oscillation (pre-slip lengths): beyond it the phase's rounding (an ulp of
 /// the phase, times `T`) is the answer's scale; near there the rigid-body law
 /// `(2/pi) asin(vhat/T)` holds to about 1e-6.
-pub const MAX_TANGENTIAL_AMP: f64 = 1e6;
+pub(crate) const MAX_TANGENTIAL_AMP: f64 = 1e6;
 
 /// The sliding velocity, in the seed's two forms.
 #[derive(Debug, Clone, Copy, PartialEq)]

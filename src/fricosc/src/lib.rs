@@ -66,7 +66,7 @@ pub mod report;
 pub mod scene;
 pub mod validation;
 
-pub use conditions::{Conditions, Velocity, DEFAULT_TOL, MAX_TANGENTIAL_AMP};
+pub use conditions::{Conditions, Velocity, DEFAULT_TOL};
 pub use contact::shape::{Evaluation, Report, Shape, MAX_EXPONENT, MIN_EXPONENT};
 pub use error::{check_nonneg, Error, Result};
 pub use model::ratio::Ratio;
@@ -89,7 +89,7 @@ pub mod spring {
 pub mod history {
     pub use crate::contact::history::{
         history, stepped_history, History, HistoryOptions, Sample, MAX_SAMPLES, MAX_SPRINGS, MAX_SPRING_WORK,
-        MIN_CURVED_AMP, UNITS,
+        MIN_CURVED_AMP,
     };
 }
 

@@ -186,7 +186,7 @@ fn check_history(shape: &Shape, vbar: f64, amp: f64, o: &HistoryOptions) -> Resu
 }
 
 /// The units of every history's forces (module docs).
-pub const UNITS: &str = "normal: F0 (the static normal force at depth u0); tangential: mu0 F0";
+pub(crate) const UNITS: &str = "normal: F0 (the static normal force at depth u0); tangential: mu0 F0";
 
 /// Smallest nonzero amplitude of a curved shape's history: below it the
 /// springs' coordinate `s = (1 - G)/amp` overflows.

@@ -22,7 +22,7 @@ use std::f64::consts::TAU;
 
 /// Period means from a time-stepping run.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SteppedMeans {
+pub(crate) struct SteppedMeans {
     /// Weighted sum of the springs' mean tangential forces.
     pub tangential: f64,
     /// Weighted sum of the springs' mean normal forces.
@@ -200,11 +200,11 @@ pub struct Stepping {
 }
 
 /// Largest `M` and `N` accepted (each); their product is bounded by [`MAX_STEPPING_WORK`].
-pub const MAX_STEPPING: usize = 100_000_000;
+pub(crate) const MAX_STEPPING: usize = 100_000_000;
 /// Largest `M * N` (spring updates per period) accepted: two periods of 10^11
 /// updates take about four minutes on two cores (0.6 ns per update measured);
 /// memory stays at a few MB whatever `M` and `N` (`run_with`).
-pub const MAX_STEPPING_WORK: u128 = 100_000_000_000;
+pub(crate) const MAX_STEPPING_WORK: u128 = 100_000_000_000;
 
 impl Stepping {
     /// Check the resolution and the shape before any work (and any output).

@@ -179,11 +179,11 @@ pub struct ValueSweep {
 }
 
 /// At most this many amplitudes in one scene.
-pub const MAX_AMPLITUDES: usize = 1000;
+pub(crate) const MAX_AMPLITUDES: usize = 1000;
 /// At most this many velocities in one scene.
-pub const MAX_VELOCITIES: usize = 1_000_000;
+pub(crate) const MAX_VELOCITIES: usize = 1_000_000;
 /// At most this many rows (amplitudes x velocities) in one scene.
-pub const MAX_SCENE_ROWS: usize = 1_000_000;
+pub(crate) const MAX_SCENE_ROWS: usize = 1_000_000;
 
 /// Sliding velocities.
 #[derive(Debug, Clone)]
@@ -338,7 +338,7 @@ pub struct SceneResult {
 }
 
 /// Largest accepted local coefficient of friction.
-pub const MAX_MU0: f64 = 10.0;
+pub(crate) const MAX_MU0: f64 = 10.0;
 
 /// `kappa(n) = sqrt(pi) Gamma(n/2 + 1) / Gamma(n/2 + 1/2)`: the MDR factor of `r^n`.
 ///
@@ -349,7 +349,7 @@ pub const MAX_MU0: f64 = 10.0;
 /// truncation is below 4e-17 relative from `x = 85` on (checked with mpmath),
 /// so that exponents up to 1e6 stay finite and exact.
 #[must_use]
-pub fn kappa(n: f64) -> f64 {
+pub(crate) fn kappa(n: f64) -> f64 {
     let x = 0.5 * n;
     if x < 85.0 {
         PI.sqrt() * libm::tgamma(x + 1.0) / libm::tgamma(x + 0.5)

@@ -195,22 +195,22 @@ pub fn to_static_units(tangential: &mut [f64], normal: Option<&mut [f64]>, stati
 }
 
 /// Fewest samples the last period of a history must hold to be compared.
-pub const MIN_LAST_SAMPLES: usize = 4;
+pub(crate) const MIN_LAST_SAMPLES: usize = 4;
 
 /// Springs of the reference tangential force of a curved contact's history
 /// (the midpoint grid of the contact's grid; second order in the spacing).
-pub const HISTORY_REFERENCE_SPRINGS: usize = 20_000;
+pub(crate) const HISTORY_REFERENCE_SPRINGS: usize = 20_000;
 
 /// How far the file's mean normal force may be from the exact mean (relative)
 /// before it is a [`FindingKind::NormalScale`] finding. Both means use the
 /// same quadrature on the same samples, so a stepper's own error in it is its
 /// spring grid's (1e-5 with 250 springs on the paraboloid); wrong units are off
 /// by tens of percent.
-pub const NORMAL_MEAN_TOLERANCE: f64 = 1e-3;
+pub(crate) const NORMAL_MEAN_TOLERANCE: f64 = 1e-3;
 
 /// How far (relative to the peak) the aligned normal force may differ from
 /// the exact one before it is a [`FindingKind::NormalShape`] finding.
-pub const NORMAL_SHAPE_TOLERANCE: f64 = 1e-2;
+pub(crate) const NORMAL_SHAPE_TOLERANCE: f64 = 1e-2;
 
 /// How close (in sample spacings) a time origin must be to a multiple of
 /// `pi/2` to be taken as that convention exactly.

@@ -33,12 +33,9 @@ pub use oscillation::{compare_oscillation, OscillationRegime, OscillationRow, Os
 
 pub use history::{
     compare_history, to_static_units, FoundEvent, HistoryData, HistorySample, HistoryValidation, NormalComparison,
-    OriginSource, TimeAxis, TimeOrigin, HISTORY_REFERENCE_SPRINGS, MIN_LAST_SAMPLES, NORMAL_MEAN_TOLERANCE,
-    NORMAL_SHAPE_TOLERANCE,
+    OriginSource, TimeAxis, TimeOrigin,
 };
-pub use series::{
-    convergence, observed_order, Convergence, Needed, RegimeOrder, RowStatus, SeriesRow, MAX_EXTRAPOLATION, MIN_ORDER,
-};
+pub use series::{convergence, observed_order, Convergence, Needed, RegimeOrder, RowStatus, SeriesRow};
 
 use crate::contact::regime::ContactRegime;
 use crate::error::{Error, Result};
@@ -359,7 +356,7 @@ pub fn exact_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest) -> Resul
 
 /// Most stepping-peer work of one check: rows x steps per period x springs
 /// (the stepping peer's own bound on one point, [`crate::stepper::MAX_STEPPING_WORK`]).
-pub const MAX_PEER_WORK: u128 = crate::stepper::MAX_STEPPING_WORK;
+pub(crate) const MAX_PEER_WORK: u128 = crate::stepper::MAX_STEPPING_WORK;
 
 /// Check the rows (finite, `vbar, amp >= 0`), the tolerance and the peer's work.
 fn check_rows(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result<()> {

@@ -86,14 +86,14 @@ impl serde::Serialize for Needed {
 }
 
 /// Smallest observed order of a converging row.
-pub const MIN_ORDER: f64 = 0.5;
+pub(crate) const MIN_ORDER: f64 = 0.5;
 
 /// Largest extrapolation of a needed resolution beyond the finest run.
-pub const MAX_EXTRAPOLATION: f64 = 1e6;
+pub(crate) const MAX_EXTRAPOLATION: f64 = 1e6;
 
 /// Smallest ratio of finest to coarsest resolution over which a row's error
 /// can be called independent of the resolution.
-pub const STAGNANT_RANGE: f64 = 4.0;
+pub(crate) const STAGNANT_RANGE: f64 = 4.0;
 
 /// The orders observed in one regime.
 #[derive(Debug, Clone, Copy, PartialEq)]
