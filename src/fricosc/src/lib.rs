@@ -58,6 +58,7 @@
 mod conditions;
 pub mod contact;
 mod error;
+mod integrate;
 pub mod io;
 mod model;
 mod numerics;

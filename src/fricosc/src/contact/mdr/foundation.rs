@@ -4,6 +4,7 @@
 //! coefficients is within the tolerance.
 
 use crate::model::spring::{mean_normal_sin_cos, LengthNode, LengthTop, Velocity};
+use crate::integrate::{self, Ladder, LOOSE_TOL, MIN_ORDER};
 use crate::quad;
 use std::f64::consts::FRAC_PI_2;
 
@@ -75,25 +76,6 @@ const CENTRE_WHOLE_DISTANCE: f64 = 0.25;
 /// it is below this (and the spring in the top half): the addition formulas'
 /// `sin u` is within `eps/u` relatively, 4 eps here.
 const FROM_TOP_PHASE: f64 = 0.25;
-/// Highest Gauss order tried per piece.
-pub(crate) const MAX_ORDER: usize = 256;
-/// The orders a piece's ladder may take: from [`LOOSE_ORDER`] or [`MIN_ORDER`]
-/// up, each step at most a doubling ([`Foundation::next_order`]); a fixed set,
-/// so that a thread computes few rules (Golub-Welsch) for a whole table
-/// (20 is the half-length bands' first, [`LENGTH_FIRST_ORDER`]).
-const ORDERS: [usize; 11] = [8, 16, 20, 24, 32, 48, 64, 96, 128, 192, 256];
-/// [`Foundation::next_order`] aims the next pass's predicted estimate at this
-/// fraction of the tolerance (the node count is insensitive to it: 1, 0.25,
-/// 0.05 and 0.01 gave 27.90, 27.91, 27.97 and 28.02 nodes a point on the
-/// parabolic table).
-const NEXT_ORDER_MARGIN: f64 = 0.25;
-/// First order tried per piece at the default tolerance.
-pub(crate) const MIN_ORDER: usize = 16;
-/// First order tried per piece at a tolerance of [`LOOSE_TOL`] or looser (the
-/// lowest whose coefficients show a decay, see [`quad::Rule::truncation`]).
-pub(crate) const LOOSE_ORDER: usize = 8;
-/// Tolerances at or above this start the order ladder at [`LOOSE_ORDER`].
-pub(crate) const LOOSE_TOL: f64 = 1e-9;
 /// Above this `amp cos u`, `1/amp - cos u` (scaled `y`) loses more than one bit
 /// to cancellation, and the product form `2 sin((u + u*)/2) sin((u - u*)/2)` is used.
 /// Beyond [`Y_PLAIN_MAX_AMP`] it is used everywhere: `cos u` of a node `u`
@@ -149,91 +131,11 @@ pub(super) const NORMAL: usize = 0;
 pub(super) const DEFICIT: usize = 1;
 pub(super) const TANGENTIAL: usize = 2;
 
-/// The integrals of the [`MEANS`] with their truncation estimates, the
-/// integral of the deficit's rounding magnitude (its terms' sizes: the
-/// deficit's rounding is a few ulps of it), and the node count.
-#[derive(Debug, Clone, Copy, Default)]
-pub(super) struct Sums {
-    pub(super) value: [f64; MEANS],
-    pub(super) error: [f64; MEANS],
-    pub(super) deficit_magnitude: f64,
-    pub(super) nodes: usize,
-}
-
-impl std::ops::AddAssign for Sums {
-    fn add_assign(&mut self, o: Sums) {
-        for k in 0..MEANS {
-            self.value[k] += o.value[k];
-            self.error[k] += o.error[k];
-        }
-        self.deficit_magnitude += o.deficit_magnitude;
-        self.nodes += o.nodes;
-    }
-}
-
-/// One pass's sums: the [`MEANS`], the deficit's magnitude, and the
-/// truncation estimate of each mean ([`quad::Rule::truncation`]; `None` below
-/// order 8).
-pub(super) struct Pass {
-    sum: [f64; MEANS],
-    magnitude: f64,
-    truncation: Option<[f64; MEANS]>,
-    /// Each mean's coefficient decay ([`quad::Rule::decay`]).
-    decay: [f64; MEANS],
-}
-
-/// A pass's node values: each node's integrand ([`MEANS`], with the Jacobian
-/// and any change of variable, without the rule's weight) and the deficit's
-/// magnitude, summed by [`Acc::finish`] once the nodes are all evaluated. (Summed
-/// node by node, the 3 x 9 running sums lived in registers across each node's
-/// library calls, and were saved and restored around every one of them: the
-/// bench's parabolic point took 14,937 instructions, 14,577 summed afterwards,
-/// and 12,934 summed one mean at a time with the unused means left out.)
-struct Acc {
-    values: Vec<([f64; MEANS], f64)>,
-    /// The means the pass integrates; the others' slots hold 0 and are not summed.
-    active: [bool; MEANS],
-}
-
-impl Acc {
-    fn new(rule: &quad::Rule, active: [bool; MEANS]) -> Self {
-        Acc { values: Vec::with_capacity(rule.nodes.len()), active }
-    }
-
-    /// The next node's integrand values `f` and the deficit's magnitude.
-    fn add(&mut self, f: [f64; MEANS], magnitude: f64) {
-        self.values.push((f, magnitude));
-    }
-
-    /// The pass, every sum times `scale`: the weighted sums of the [`MEANS`]
-    /// and the deficit's magnitude, each mean's discrete coefficients of
-    /// [`quad::Rule::tail`], and from them the truncation estimates. Node `i` of
-    /// [`Acc::add`] is node `i` of `rule`.
-    fn finish(&self, rule: &quad::Rule, scale: f64) -> Pass {
-        let n = self.values.len().min(rule.weights.len()).min(rule.tail.len());
-        let (values, weights, tails) = (&self.values[..n], &rule.weights[..n], &rule.tail[..n]);
-        // One mean at a time: its nine running sums fit in registers.
-        let mut sum = [0.0; MEANS];
-        let mut coef = [[0.0; quad::TAIL_ROWS]; MEANS];
-        for k in (0..MEANS).filter(|&k| self.active[k]) {
-            let (mut s, mut c) = (0.0, [0.0; quad::TAIL_ROWS]);
-            for ((f, _), (w, tail)) in values.iter().zip(weights.iter().zip(tails)) {
-                let fk = f[k];
-                s += w * fk;
-                for r in 0..quad::TAIL_ROWS {
-                    c[r] += tail[r] * fk;
-                }
-            }
-            (sum[k], coef[k]) = (s, c);
-        }
-        let magnitude = values.iter().zip(weights).fold(0.0, |m, ((_, mag), w)| m + w * mag);
-        // Every mean has an estimate, or (below order 8) none has.
-        let t = coef.each_ref().map(|c| rule.truncation(c));
-        let truncation = t.iter().all(Option::is_some).then(|| t.map(|e| scale.abs() * e.unwrap_or(f64::INFINITY)));
-        let decay = coef.each_ref().map(|c| rule.decay(c));
-        Pass { sum: sum.map(|x| scale * x), magnitude: scale.abs() * magnitude, truncation, decay }
-    }
-}
+/// The sums of a band of the foundation: the [`MEANS`], and as the
+/// magnitude the deficit's terms' sizes (its rounding is a few ulps of them).
+pub(super) type Sums = integrate::Sums<MEANS>;
+type Pass = integrate::Pass<MEANS>;
+type Acc = integrate::Acc<MEANS>;
 
 /// How the Jacobian behaves at the top of a piece.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -558,7 +460,7 @@ impl Foundation {
         let d_top = h_b.sqrt() - (h_b - h_top).max(0.0).sqrt();
         let first = self.length_first_order();
         let top = small_top(vel, h_top, u_top);
-        self.ladder(first, |m| self.pass_length(vel, h_b, d_top, top.as_ref().map(|t| (t, u_top)), m), scale)
+        self.ladder().run(first, |m| self.pass_length(vel, h_b, d_top, top.as_ref().map(|t| (t, u_top)), m), scale)
     }
 
     /// Order-`m` Gauss-Jacobi sums over the whole stick-first band below the
@@ -634,7 +536,7 @@ impl Foundation {
             return None;
         }
         let first = self.length_first_order();
-        Some(self.ladder(first, |m| self.pass_centre_length(vel, h_b, &top, m), scale))
+        Some(self.ladder().run(first, |m| self.pass_centre_length(vel, h_b, &top, m), scale))
     }
 
     /// A stick-first band analytic at its top, singular near an end (a
@@ -661,26 +563,21 @@ impl Foundation {
         for i in order {
             let sc = std::array::from_fn(|j| scale[j] + total.value[j].abs());
             let pass = |m| self.pass_mapped(top, bottom, ends, (at(i), at(i + 1)), m);
-            total += self.ladder(self.mapped_first_order(), pass, sc);
+            total += self.ladder().run(self.mapped_first_order(), pass, sc);
         }
         total
+    }
+
+    /// The order ladder of the foundation's pieces, to its tolerance.
+    fn ladder(&self) -> Ladder {
+        Ladder::new(self.tol)
     }
 
     /// One piece at increasing orders, until the predicted error of every mean
     /// is within the tolerance relative to the piece plus `scale` (the band's
     /// sums so far).
     pub(super) fn piece(&self, top: f64, bottom: f64, kind: Top, means: Means, scale: [f64; MEANS]) -> Sums {
-        self.ladder(self.first_order(), |m| self.pass(top, bottom, kind, means, m), scale)
-    }
-
-    /// The first order of a piece's ladder: [`MIN_ORDER`], or [`LOOSE_ORDER`]
-    /// at a tolerance of [`LOOSE_TOL`] or looser.
-    fn first_order(&self) -> usize {
-        if self.tol >= LOOSE_TOL {
-            LOOSE_ORDER
-        } else {
-            MIN_ORDER
-        }
+        self.ladder().run(self.ladder().first_order(), |m| self.pass(top, bottom, kind, means, m), scale)
     }
 
     /// The first order of a band in the stick's half-length:
@@ -695,74 +592,13 @@ impl Foundation {
     }
 
     /// The first order of a mapped segment: one doubling above
-    /// [`Foundation::first_order`] (see [`SEGMENT`]: at order 16 nearly every
+    /// [`Ladder::first_order`] (see [`SEGMENT`]: at order 16 nearly every
     /// segment of the parabolic table failed; from 32, 34.5 nodes a point
     /// became 29.8, and 51.1 -> 46.2 and 55.8 -> 52.3 for the exponents 3 and
     /// 0.5; with [`Foundation::next_order`] too, 29.1, 44.8 and 49.3, and 32.8
     /// -> 28.6 for the cone).
     fn mapped_first_order(&self) -> usize {
-        2 * self.first_order()
-    }
-
-    /// The order to try after a pass of order `m` failed: the smallest of
-    /// [`ORDERS`] above `m` whose estimate, if the coefficients decay
-    /// geometrically, falls to [`NEXT_ORDER_MARGIN`] of the tolerance, and at
-    /// most `2 m` (the ladder's old step). With `c_k ~ rho^k` the estimate of
-    /// [`quad::Rule::truncation`] is `~ E1 q ~ rho^(3m/2)`, `q = rho^(m/2)` the
-    /// measured decay, so order `m'` scales it by `q^(3 (m' - m)/m)`. Where no
-    /// decay is measured (`q >= 1`, or none claimed) the order doubles. Only
-    /// the choice of the next order rests on this model: a pass is accepted by
-    /// its own estimate alone.
-    fn next_order(&self, m: usize, p: &Pass, err: &[f64; MEANS], lim: &[f64; MEANS]) -> usize {
-        let mut need = 0.0f64;
-        for k in 0..MEANS {
-            if err[k] > lim[k] {
-                let q = p.decay[k];
-                need = if q > 0.0 && q < 1.0 {
-                    let excess = (err[k] / (NEXT_ORDER_MARGIN * lim[k])).ln();
-                    need.max(excess * m as f64 / (3.0 * -q.ln()))
-                } else {
-                    f64::INFINITY
-                };
-            }
-        }
-        let want = if need < m as f64 { m + (need.ceil() as usize).max(1) } else { 2 * m };
-        ORDERS.into_iter().find(|&o| o >= want).unwrap_or(MAX_ORDER).min(2 * m).max(m + 1)
-    }
-
-    /// The order ladder of [`Foundation::piece`] over any rule family `pass(m)`:
-    /// orders from `first` ([`Foundation::next_order`] chooses each next one,
-    /// at most a doubling) until every mean's truncation estimate
-    /// ([`quad::Rule::truncation`], from the pass's own nodes) is within the
-    /// tolerance relative to the piece plus `scale`. (The ladder 4-8-16 it
-    /// replaces spent 12 of its 28 nodes on the estimate alone.)
-    fn ladder(&self, first: usize, pass: impl Fn(usize) -> Pass, scale: [f64; MEANS]) -> Sums {
-        let mut m = first;
-        let mut nodes = 0;
-        let mut prev: Option<(usize, [f64; MEANS])> = None;
-        loop {
-            let p = pass(m);
-            nodes += m;
-            // After a doubling of the order, the last difference bounds the error
-            // too (where the integrand's rounding noise sets the coefficients'
-            // floor, far above the error of the sum, which averages it). After a
-            // smaller step the two errors can be alike, and their difference
-            // far below either: not used.
-            let err: [f64; MEANS] = std::array::from_fn(|k| {
-                let t = p.truncation.map_or(f64::INFINITY, |t| t[k]);
-                match prev {
-                    Some((mp, q)) if m == 2 * mp => t.min((p.sum[k] - q[k]).abs()),
-                    _ => t,
-                }
-            });
-            let lim: [f64; MEANS] = std::array::from_fn(|k| self.tol * (p.sum[k].abs() + scale[k]));
-            let within = (0..MEANS).all(|k| err[k] <= lim[k]);
-            if within || m >= MAX_ORDER {
-                return Sums { value: p.sum, error: err, deficit_magnitude: p.magnitude, nodes };
-            }
-            prev = Some((m, p.sum));
-            m = self.next_order(m, &p, &err, &lim);
-        }
+        2 * self.ladder().first_order()
     }
 
     /// Distance from a band's top `top` (in `u`) to the nearest singularity of
@@ -951,41 +787,6 @@ fn grade(cuts: &mut Vec<f64>, d: f64, until: f64, from: f64, sign: f64) {
 mod tests {
     use super::*;
 
-    /// A pass's sums: each active mean's weighted sum (here of 1, x and x^2
-    /// over [-1, 1]: 2, 0 and 2/3), its discrete coefficients (a polynomial
-    /// of degree 2 has none at the tail's degrees: no truncation, and
-    /// `c_k = 0` for the whole tail), the deficit's magnitude (here 3 a node:
-    /// 6), every sum times `scale` (and the magnitude and estimates times
-    /// its size); an inactive mean's slot is not summed (its 5 a node
-    /// would give 10).
-    #[test]
-    fn a_pass_sums_the_active_means_and_the_magnitude() {
-        let r = quad::rule(16, 0.0);
-        let mut acc = Acc::new(&r, [true, true, false]);
-        for &x in &r.nodes {
-            acc.add([1.0, x, 5.0 + x * x], 3.0);
-        }
-        let p = acc.finish(&r, -0.5);
-        assert!((p.sum[0] + 1.0).abs() < 1e-15 && p.sum[1].abs() < 1e-15 && p.sum[2] == 0.0, "{:?}", p.sum);
-        assert!((p.magnitude - 3.0).abs() < 1e-15, "{}", p.magnitude);
-        let t = p.truncation.unwrap();
-        assert!(t.iter().all(|&e| e < 1e-15), "{t:?}");
-        // x^20 over [-1, 1] is 2/21; 8 nodes (exact to degree 15) miss it, and the estimate sees it.
-        let r = quad::rule(8, 0.0);
-        let mut acc = Acc::new(&r, [true; MEANS]);
-        for &x in &r.nodes {
-            acc.add([x.powi(20), 0.0, 1.0], 0.0);
-        }
-        let p = acc.finish(&r, 1.0);
-        let err = (p.sum[0] - 2.0 / 21.0).abs();
-        let t = p.truncation.unwrap();
-        assert!(err > 1e-12 && err <= t[0] && t[2] < 1e-15, "{err:e} {t:?}");
-    }
-
-    /// [`Foundation::next_order`] against orders worked out by hand from its
-    /// model (`m' - m >= m ln(err/(margin lim)) / (3 ln(1/q))`, the smallest
-    /// of [`ORDERS`] above, at most `2 m`); the grid's node count sees only its
-    /// sum (`tests/mdr.rs`), not each choice.
     /// [`Foundation::length_phase`] and [`Foundation::centre_phase`] keep
     /// `sin u` to its relative accuracy where `u` is small (the band's top at
     /// small `vbar`; as the top, `arcsin vbar`, and `u*` there), against the
@@ -1034,26 +835,4 @@ mod tests {
         assert!(worst <= 32.0 && own > 1000.0, "{worst} eps, own {own} eps");
     }
 
-    #[test]
-    fn the_next_order_is_the_predicted_one() {
-        let f = Foundation::new(2.0, 0.5, None, crate::DEFAULT_TOL);
-        let pass = |decay: [f64; MEANS]| Pass { sum: [1.0; MEANS], magnitude: 0.0, truncation: None, decay };
-        let lim = [1e-15; MEANS];
-        let within = 1e-16;
-        // q = 0.01, 100 times the limit: ln(400) 16/(3 ln 100) = 6.9 -> 23 -> 24.
-        assert_eq!(f.next_order(16, &pass([0.01, 0.5, 0.5]), &[1e-13, within, within], &lim), 24);
-        // Two failing means: the larger need (q = 0.1, 10 times: ln(40) 16/(3 ln 10) = 8.5 -> 25 -> 32).
-        assert_eq!(f.next_order(16, &pass([0.01, 0.1, 0.5]), &[1e-13, 1e-14, within], &lim), 32);
-        // A slow decay needs more than a doubling: the doubling.
-        assert_eq!(f.next_order(16, &pass([0.5, 0.5, 0.5]), &[1e-9, within, within], &lim), 32);
-        // No decay measured (q = 1, or q = 0: no coefficients), the doubling.
-        assert_eq!(f.next_order(24, &pass([1.0, 0.5, 0.5]), &[1e-14, within, within], &lim), 48);
-        assert_eq!(f.next_order(24, &pass([0.0, 0.5, 0.5]), &[1e-14, within, within], &lim), 48);
-        // A fast decay just above the limit: the next order of the set (24 + 2 -> 32).
-        assert_eq!(f.next_order(24, &pass([1e-4, 0.5, 0.5]), &[2e-15, within, within], &lim), 32);
-        // ln(40) 32/(3 ln 10) = 17.1 -> 50 -> 64.
-        assert_eq!(f.next_order(32, &pass([0.1, 0.5, 0.5]), &[1e-14, within, within], &lim), 64);
-        // A mean exactly at its limit is within it: its slow decay does not count.
-        assert_eq!(f.next_order(16, &pass([0.01, 0.9, 0.5]), &[1e-13, 1e-15, within], &lim), 24);
-    }
 }

@@ -317,7 +317,7 @@ fn ratio_of(total: &Sums, perm_deficit_magnitude: f64, small_mu: bool) -> crate:
         // rounding: of the sums, and of each spring's deficit (a few ulps of
         // its terms, which exceed it where the stick is long).
         let rounding = crate::ratio::rounding_estimate(reduction, total.nodes)
-            + 4.0 * eps * (total.deficit_magnitude + perm_deficit_magnitude) / nn;
+            + 4.0 * eps * (total.magnitude + perm_deficit_magnitude) / nn;
         let truncation = crate::ratio::quotient_error(nn, dd, total.error[NORMAL], total.error[DEFICIT]);
         let estimate = truncation + rounding;
         (Ratio::from_deficit_within(dd, nn, estimate, "power-law contact")?, estimate)
