@@ -12,34 +12,18 @@
 //! `E = 0` is the paraboloid (`G = z^2`, Hertz), `E -> 1` the flat punch.
 //!
 //! # Integration
-//! The flat part `z < E` is `E` springs of the flat punch (`s = 1/amp`). The
-//! curved part is integrated in `t = sqrt(G)`, in which
+//! By the banded integrator over the geometry ([`integrate::mdr`]), along
+//! `p = z` on the flat and `p = E + t` beyond it, `t = sqrt(G)`, in which
 //! `z^2 = (E^2 + sqrt(E^4 + 4 t^4 (1 - E^2)))/2` and
-//! `dz/dt = 2 t^3 (1 - E^2) / (z sqrt(E^4 + 4 t^4 (1 - E^2)))` is smooth for
-//! every `E` (it is 1 at `E = 0`) and turns from `z ~ E` to `z ~ t` around
-//! `t ~ E` (cuts at `E 2^k`, `|k| <= 4`, keep each piece smooth on its scale).
-//! For `amp > 1`, lengths are divided by `sqrt(amp)` (`t`, `z` and `E` alike,
-//! which leaves the form of `z(t)` unchanged and `s = 1/amp - t^2`), so that
-//! huge amplitudes cannot overflow; the ratio is unaffected. It is split at the regime thresholds
-//! `s = (1 - t^2)/amp = 1, +-sqrt(1 - vbar^2), -1`, and each band is integrated
-//! with `t = p + (q - p)(1 - cos theta)/2` (which absorbs the square-root
-//! behaviour of the means at `s = +-1`) by Gauss-Legendre at orders 8, 16, 32,
-//! ... until two successive orders agree to the tolerance (each of the mean
-//! normal force, the deficit and the mean tangential force); their difference
-//! is the band's error estimate. `mu` is the quotient of the tangential and the
-//! normal force where it is the small one (`amp` near or above 1, `vbar -> 0`),
-//! else `1 - ` that of the deficit (`ratio::from_sums`).
+//! `dz/dt = 2 t^3 (1 - E^2) / (z sqrt(E^4 + 4 t^4 (1 - E^2)))` are smooth for
+//! every `E` (`dz/dt = 1` at `E = 0`); `z(t)` turns from `E` to `t` around
+//! `t ~ E`, where the bands beyond a thin flat are graded towards it.
 
 use super::Contact;
 use crate::error::{Error, Result};
-use crate::ratio::Ratio;
+use crate::integrate;
 use crate::shape::Evaluation;
 use std::sync::Arc;
-
-/// First Gauss order per band (then doubled).
-const FIRST_ORDER: usize = 8;
-/// Highest Gauss order tried per band.
-const MAX_ORDER: usize = 512;
 
 /// A sphere worn flat at its tip; `flat_ratio = a/x_c`, the flat's radius over
 /// the contact radius at the mean indentation, in `[0, 1)`.
@@ -92,18 +76,48 @@ impl Curved {
         // dz/dt = 2 t^3 k / (z 2 t^2 root) = k (t/z) / root.
         (z, k * (t / z) / root)
     }
-
-    /// `[int <B> dz, int D dz, int <F> dz]` over the band `t` in `[p, q]` at
-    /// Gauss order `m`, in units of `kz du` times `unit` (`amp` for `amp <= 1`,
-    /// else 1); `s(t)` is the springs' `s`.
-    fn band(&self, p: f64, q: f64, vbar: f64, s_of: &dyn Fn(f64) -> f64, unit: f64, m: usize) -> [f64; 3] {
-        super::cosine_band(p, q, m, vbar, unit, &|t| (s_of(t), self.z_of_t(t).1))
-    }
 }
 
 impl FlatTip {
     fn curved(&self) -> Curved {
-        Curved { e: self.flat_ratio, k: (1.0 - self.flat_ratio) * (1.0 + self.flat_ratio) }
+        Curved { e: self.flat(), k: (1.0 - self.flat_ratio) * (1.0 + self.flat_ratio) }
+    }
+
+    /// The flat's radius as the quadrature takes it: a flat whose square is
+    /// not a normal double (below 1e-154) weighs less than 1e-154 of the
+    /// contact and is dropped (near it `t^2` would underflow where `t` does not).
+    fn flat(&self) -> f64 {
+        let e = self.flat_ratio;
+        if (e * e).is_normal() {
+            e
+        } else {
+            0.0
+        }
+    }
+}
+
+/// The worn tip along `p = z` on the flat (`G = 0`) and `p = E + t` beyond,
+/// `t = sqrt(G)`, in which `z(t)` is smooth ([`Curved::z_of_t`]): in `z`,
+/// `G` starts like `sqrt(z - E)` at the flat's edge, and the levels of the
+/// regime thresholds crowd there (`z - E ~ G^2`), below the resolution of
+/// `z` itself.
+impl integrate::mdr::Profile for FlatTip {
+    fn at(&self, p: f64) -> (f64, f64) {
+        let e = self.flat();
+        if p <= e {
+            (0.0, 1.0)
+        } else {
+            let t = p - e;
+            (t * t, self.curved().z_of_t(t).1)
+        }
+    }
+    fn level(&self, level: f64) -> f64 {
+        self.flat() + level.sqrt()
+    }
+    /// The flat's edge (the bands beyond it are graded towards it where the
+    /// flat is thin: `z(t)` turns from `E` to `t` over a few `E`).
+    fn breakpoints(&self) -> Vec<f64> {
+        vec![self.flat()]
     }
 }
 
@@ -143,86 +157,12 @@ impl Contact for FlatTip {
         2.0 * (depth * zc - w * w.sqrt() / (3.0 * c.k.sqrt()))
     }
 
+    /// The banded integrator over its geometry ([`integrate::mdr`]).
     fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
         crate::error::check_nonneg("vbar", vbar)?;
         crate::error::check_nonneg("amp", amp)?;
-        if amp == 0.0 || vbar >= 1.0 {
-            let ratio = Ratio { mu_ratio: 1.0, reduction: 0.0 };
-            return Ok(Evaluation { ratio, error_estimate: 0.0, interpolation_error: None });
-        }
-        if vbar == 0.0 && amp >= 1.0 {
-            // Every spring loses contact and sticks from contact to loss: none
-            // slides (exactly 0, not 1 minus a rounded reduction).
-            let ratio = Ratio { mu_ratio: 0.0, reduction: 1.0 };
-            return Ok(Evaluation { ratio, error_estimate: 0.0, interpolation_error: None });
-        }
-        let at = crate::contact::VelocityScale::of(vbar, amp);
-        if at.vbar != vbar {
-            let e = self.evaluate(at.vbar, amp, tol)?;
-            let (ratio, error_estimate) = at.back(e.ratio, e.error_estimate);
-            return Ok(Evaluation { ratio, error_estimate, interpolation_error: None });
-        }
-        if amp < crate::contact::AMP_LINEAR {
-            let at = self.evaluate(vbar, crate::contact::AMP_LINEAR, tol)?;
-            let k = amp / crate::contact::AMP_LINEAR;
-            let ratio = at.ratio.scaled(k);
-            return Ok(Evaluation { ratio, error_estimate: at.error_estimate * k, interpolation_error: None });
-        }
-        let tol = tol.max(crate::DEFAULT_TOL);
-        // Forces in units of kz u0 (amp <= 1) or kz du (amp > 1): both finite.
-        let unit = if amp <= 1.0 { amp } else { 1.0 };
-        let flat = crate::flat::spring(vbar, amp, crate::model::spring::Precision::Means);
-        // Lengths scaled by sqrt(amp) for amp > 1 (module docs).
-        let big = amp > 1.0;
-        let scale = if big { amp.sqrt() } else { 1.0 };
-        // A scaled flat below 1e-154 (amp above 1e307) weighs less than 1e-154 of
-        // the contact, and its square would be subnormal: it is dropped.
-        let e = Some(self.flat_ratio / scale).filter(|e| (e * e).is_normal()).unwrap_or(0.0);
-        let curved = Curved { e, k: (1.0 - self.flat_ratio) * (1.0 + self.flat_ratio) };
-        // The flat's <F> as the flat punch's mu times its <B>: for amp <= 1 its
-        // s = 1/amp is rounded, and <F> = s - c + ... would cancel as vbar -> 0.
-        let flat_mu = crate::flat::ratio_of(&flat, amp)?.mu_ratio;
-        let mut sums = [flat.mean_normal, flat.deficit, flat.mean_normal * flat_mu].map(|x| e * unit * x);
-        let c = ((1.0 - vbar) * (1.0 + vbar)).sqrt();
-        // s(t) = (1 - t^2)/amp, or 1/amp - t^2 in scaled lengths; 1 - t^2 = (1 - t)(1 + t).
-        let s_of = move |t: f64| if big { 1.0 / amp - t * t } else { (1.0 - t) * (1.0 + t) / amp };
-        let t_of = |s: f64| if big { (1.0 / amp - s).max(0.0).sqrt() } else { (1.0 - amp * s).max(0.0).sqrt() };
-        let t_max = t_of(-1.0);
-        let mut cuts = vec![0.0, t_of(1.0), t_of(c), t_of(-c), t_max];
-        if e > 0.0 {
-            cuts.extend((-4..=4).map(|k| e * 2f64.powi(k)).filter(|&g| g < t_max));
-        }
-        cuts.sort_by(f64::total_cmp);
-        cuts.dedup();
-        let (mut errors, mut nodes) = ([0.0; 3], 0usize);
-        for w in cuts.windows(2) {
-            let (p, q) = (w[0], w[1]);
-            if q <= p {
-                continue;
-            }
-            let mut m = FIRST_ORDER;
-            let mut prev = curved.band(p, q, vbar, &s_of, unit, m);
-            nodes += m;
-            loop {
-                m *= 2;
-                let cur = curved.band(p, q, vbar, &s_of, unit, m);
-                nodes += m;
-                let d: [f64; 3] = std::array::from_fn(|k| (cur[k] - prev[k]).abs());
-                // Each of the three sums to the tolerance relative to its total
-                // so far (the tangential force too: it gives mu where mu is small).
-                let done = (0..3).all(|k| d[k] <= tol * (sums[k].abs() + cur[k].abs()));
-                if done || m >= MAX_ORDER {
-                    for k in 0..3 {
-                        sums[k] += cur[k];
-                        errors[k] += d[k];
-                    }
-                    break;
-                }
-                prev = cur;
-            }
-        }
-        let (ratio, estimate) = crate::ratio::from_sums(sums, errors, nodes, "flat-tip contact")?;
-        Ok(Evaluation { ratio, error_estimate: estimate, interpolation_error: None })
+        let (ratio, error_estimate) = integrate::mdr::evaluate(self, vbar, amp, tol, "flat-tip contact")?;
+        Ok(Evaluation { ratio, error_estimate, interpolation_error: None })
     }
 
     /// The edge of the flat, where `G` starts like a square root.

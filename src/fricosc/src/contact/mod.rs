@@ -156,37 +156,6 @@ pub(crate) fn grid(contact: &dyn Contact, amp: f64, count: usize) -> Result<(f64
     Ok((dz, move |i: usize| ((1.0 - contact.equivalent_profile((i as f64 + 0.5) * dz)) / amp).min(f64::MAX)))
 }
 
-/// `[int <B> w dx, int D w dx, int <F> w dx]` over `x` in `[p, q]` of the
-/// springs `s(x)` (`spring(x) = (s, w)`, `w` a Jacobian), times `unit`, by
-/// Gauss-Legendre of order `m` in `theta` with `x = p + (q - p)(1 - cos theta)/2`:
-/// the substitution absorbs the square-root behaviour of the means where a band
-/// ends at a contact-loss threshold (`s = +-1`). Each spring's `<F>` is its own
-/// cancellation-free form ([`crate::model::spring::Spring::mean_tangential`]), so the
-/// third sum keeps its relative accuracy where it is small. Shared by the
-/// tabulated and flat-tip contacts.
-pub(crate) fn cosine_band(
-    p: f64,
-    q: f64,
-    m: usize,
-    vbar: f64,
-    unit: f64,
-    spring: &dyn Fn(f64) -> (f64, f64),
-) -> [f64; 3] {
-    let rule = crate::quad::rule(m, 0.0);
-    let half = 0.5 * (q - p);
-    let mut sums = [0.0; 3];
-    for (&x, &w) in rule.nodes.iter().zip(&rule.weights) {
-        let (st, ct) = (0.5 * std::f64::consts::PI * (1.0 + x)).sin_cos();
-        let (s, jac) = spring(p + half * (1.0 - ct));
-        let sp = crate::model::spring::Spring::new(s, vbar);
-        let weight = w * half * st * jac * unit;
-        for (sum, mean) in sums.iter_mut().zip([sp.mean_normal, sp.deficit, sp.mean_tangential()]) {
-            *sum += weight * mean;
-        }
-    }
-    sums.map(|x| 0.5 * std::f64::consts::PI * x)
-}
-
 /// Below this amplitude an MDR contact's spring coordinate `s = (1 - G)/amp`
 /// could overflow. The reduction is linear in `amp` there: every spring inside
 /// the contact is in permanent contact, with a deficit (in units of `amp`) that
@@ -340,8 +309,8 @@ impl Contact for profile::Tabulated {
     fn name(&self) -> String {
         self.name().to_string()
     }
-    fn evaluate(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Evaluation> {
-        let r = profile::evaluate(self, vbar, amp)?;
+    fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
+        let r = profile::evaluate(self, vbar, amp, tol)?;
         Ok(Evaluation {
             ratio: r.ratio,
             error_estimate: r.error_estimate,

@@ -25,7 +25,7 @@
 
 use crate::numerics::quad;
 
-// pub(crate) mod mdr;
+pub(crate) mod mdr;
 
 /// Highest Gauss order a ladder tries by default.
 pub(crate) const MAX_ORDER: usize = 256;
@@ -183,7 +183,12 @@ impl Ladder {
     /// error (its truncation estimate; after a doubling of the order, at most
     /// the difference of the two passes) is within the tolerance relative to
     /// the pass plus `scale`, or the highest order is reached.
-    pub(crate) fn run<const N: usize>(&self, first: usize, pass: impl Fn(usize) -> Pass<N>, scale: [f64; N]) -> Sums<N> {
+    pub(crate) fn run<const N: usize>(
+        &self,
+        first: usize,
+        pass: impl Fn(usize) -> Pass<N>,
+        scale: [f64; N],
+    ) -> Sums<N> {
         let mut m = first;
         let mut nodes = 0;
         let mut prev: Option<(usize, [f64; N])> = None;

@@ -209,9 +209,10 @@ pub(crate) fn mean_normal_of(s: f64, one_minus_s: f64) -> f64 {
 }
 
 /// The contact phase `theta = arccos s` and `sin theta = sqrt((1 - s)(1 + s))`
-/// (no cancellation) of a spring with `|s| < 1`; `(0, 0)` otherwise.
+/// (no cancellation) of a spring with `|s| < 1` (`1 - s > 0`: a spring whose
+/// `s` rounds to 1 is still jumping); `(0, 0)` otherwise.
 fn contact_angles(s: f64, one_minus_s: f64) -> (f64, f64) {
-    if s < 1.0 && s > -1.0 {
+    if one_minus_s > 0.0 && s > -1.0 {
         (contact_phase(s, one_minus_s), (one_minus_s * (1.0 + s)).max(0.0).sqrt())
     } else {
         (0.0, 0.0)
@@ -912,7 +913,9 @@ impl Spring {
     /// for `s > 0`), is `s - sqrt(1 - vbar^2)` computed by the caller from its
     /// exact inputs (the flat punch: `(1 - amp sqrt(1 - vbar^2))/amp`): its sign
     /// decides a jumping spring's start where `s` itself is too rounded to, and
-    /// after a start on the bound it is the start force.
+    /// after a start on the bound (also in permanent contact) it is the start
+    /// force: where it is small (`s -> 1`, `vbar -> 0`), `s` itself is rounded
+    /// by more than it.
     pub(crate) fn with_complement(
         s: f64,
         one_minus_s: f64,
@@ -974,10 +977,11 @@ impl Spring {
             };
             Start::Contact { theta, sin_theta, cos_theta: s, eps }
         };
-        let (start, regime, start_force) = if s >= 1.0 {
+        let (start, regime, start_force) = if one_minus_s <= 0.0 {
             // In permanent contact: s - c = (s - 1) + vbar^2/(1 + c) (no
-            // cancellation of 1 - c as vbar -> 0).
-            (Start::Tangent, Regime::PermanentStickSlip, (s - 1.0) + vbar * vbar / (1.0 + c()))
+            // cancellation of 1 - c as vbar -> 0), or the caller's margin.
+            let s_minus_c = margin.unwrap_or_else(|| (s - 1.0) + vbar * vbar / (1.0 + c()));
+            (Start::Tangent, Regime::PermanentStickSlip, s_minus_c)
         } else if s > 0.0 {
             let s_minus_c = margin.unwrap_or_else(|| square() / (s + c()));
             if s_minus_c >= 0.0 {

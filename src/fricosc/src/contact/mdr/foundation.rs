@@ -3,8 +3,8 @@
 //! orders raised until the truncation error predicted from the pass's own
 //! coefficients is within the tolerance.
 
-use crate::model::spring::{mean_normal_sin_cos, LengthNode, LengthTop, Velocity};
 use crate::integrate::{self, Ladder, LOOSE_TOL, MIN_ORDER};
+use crate::model::spring::{mean_normal_sin_cos, LengthNode, LengthTop, Velocity};
 use crate::quad;
 use std::f64::consts::FRAC_PI_2;
 
@@ -834,5 +834,4 @@ mod tests {
         assert_eq!(count, 8);
         assert!(worst <= 32.0 && own > 1000.0, "{worst} eps, own {own} eps");
     }
-
 }

@@ -28,14 +28,11 @@
 //! of the deficit (`ratio::from_sums`).
 
 use crate::error::{Error, Result};
+use crate::integrate;
 mod transform;
 
 use crate::ratio::Ratio;
 use transform::{mdr_transform_knots, normal_force, Pchip};
-
-/// The two orders of the tabulated quadrature per interval: the higher gives the
-/// value, their difference the error estimate.
-const PASS_ORDERS: (usize, usize) = (16, 32);
 
 /// Most rows of a tabulated profile: the MDR transform is `O(n log n)`
 /// (`transform::mdr_transform_knots`); 1,000,000 rows take about 30 s on two cores.
@@ -331,7 +328,7 @@ pub(crate) struct TabulatedResult {
 /// (an error otherwise). The interpolation error is the difference the coarse
 /// table makes to the sums, propagated through the quotient
 /// (`ratio::sums_difference`).
-pub(crate) fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedResult> {
+pub(crate) fn evaluate(t: &Tabulated, vbar: f64, amp: f64, tol: f64) -> Result<TabulatedResult> {
     crate::error::check_nonneg("vbar", vbar)?;
     crate::error::check_nonneg("amp", amp)?;
     if amp == 0.0 || vbar >= 1.0 {
@@ -340,14 +337,14 @@ pub(crate) fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedRe
     }
     let at = crate::contact::VelocityScale::of(vbar, amp);
     if at.vbar != vbar {
-        let r = evaluate(t, at.vbar, amp)?;
+        let r = evaluate(t, at.vbar, amp, tol)?;
         let (ratio, error_estimate) = at.back(r.ratio, r.error_estimate);
         let interpolation_error = at.back(r.ratio, r.interpolation_error).1;
         return Ok(TabulatedResult { ratio, error_estimate, interpolation_error });
     }
-    let fine = integrate(&t.g, vbar, amp)?;
+    let fine = integrate(&t.g, vbar, amp, tol)?;
     let interpolation_error = match &t.coarse {
-        Some(c) => integrate(c, vbar, amp)
+        Some(c) => integrate(c, vbar, amp, tol)
             .map_or(0.0, |coarse| fine.scale * crate::ratio::sums_difference(fine.sums, coarse.sums)),
         None => 0.0,
     };
@@ -358,7 +355,10 @@ pub(crate) fn evaluate(t: &Tabulated, vbar: f64, amp: f64) -> Result<TabulatedRe
 /// `E* x_c U0` (both sides of the MDR foundation), by the same quadrature.
 pub(crate) fn mean_normal(t: &Tabulated, amp: f64) -> Result<f64> {
     crate::error::check_nonneg("amp", amp)?;
-    Ok(2.0 * integrate(&t.g, 0.5, amp)?.sums[0])
+    // Both sides, in units of E* x_c U0: the sums are in kz u0 up to amp = 1,
+    // in kz du beyond (integrate::mdr::unit).
+    let sums = integrate(&t.g, 0.5, amp, crate::DEFAULT_TOL)?.sums;
+    Ok(2.0 * sums[0] * if amp > 1.0 { amp } else { 1.0 })
 }
 
 /// `G(z)` of a tabulated contact (the cubic interpolant; the end cubics
@@ -408,8 +408,8 @@ pub(crate) fn static_force(t: &Tabulated, depth: f64) -> f64 {
 
 /// One quadrature of a table: the ratio, its error estimate, the sums `[nn,
 /// dd, tt]` of [`crate::ratio::from_sums`] (at [`crate::contact::AMP_LINEAR`]
-/// for an `amp` below it) and the factor `scale` by which that ratio's
-/// reduction was scaled (1 otherwise).
+/// for an `amp` below it; in the units of [`integrate::mdr::unit`]) and the
+/// factor `scale` by which that ratio's reduction was scaled (1 otherwise).
 struct Quadrature {
     ratio: Ratio,
     estimate: f64,
@@ -417,11 +417,26 @@ struct Quadrature {
     scale: f64,
 }
 
-/// The quadrature of the springs of `g` at `(vbar, amp)`; at `amp = 0` only the
-/// sums' normal force is meaningful (one side's static force).
-fn integrate(g: &Pchip, vbar: f64, amp: f64) -> Result<Quadrature> {
+/// A table's profile along `z` itself.
+impl integrate::mdr::Profile for Pchip {
+    fn at(&self, z: f64) -> (f64, f64) {
+        (self.eval(z).0, 1.0)
+    }
+    fn level(&self, level: f64) -> f64 {
+        self.inverse(level)
+    }
+    /// The knots: the interpolant is a cubic between them.
+    fn breakpoints(&self) -> Vec<f64> {
+        self.knots().to_vec()
+    }
+}
+
+/// The quadrature of the springs of `g` at `(vbar, amp)` ([`integrate::mdr`]);
+/// at `amp = 0` only the sums' normal force is meaningful (one side's static
+/// force).
+fn integrate(g: &Pchip, vbar: f64, amp: f64, tol: f64) -> Result<Quadrature> {
     if amp > 0.0 && amp < crate::contact::AMP_LINEAR {
-        let at = integrate(g, vbar, crate::contact::AMP_LINEAR)?;
+        let at = integrate(g, vbar, crate::contact::AMP_LINEAR, tol)?;
         let k = amp / crate::contact::AMP_LINEAR;
         return Ok(Quadrature { ratio: at.ratio.scaled(k), estimate: at.estimate * k, scale: k, ..at });
     }
@@ -439,36 +454,8 @@ fn integrate(g: &Pchip, vbar: f64, amp: f64) -> Result<Quadrature> {
             &format!("the tabulated profile ends at g = {:?} U0, before the contact edge at (1 + amp) U0", gmax),
         ));
     }
-    let c = (1.0 - vbar * vbar).sqrt();
-    let z_of = |s: f64| {
-        let y = 1.0 - amp * s;
-        if y <= 0.0 {
-            0.0
-        } else {
-            g.inverse(y)
-        }
-    };
-    let zmax = z_of(-1.0);
-    let mut cuts: Vec<f64> = g.knots().iter().copied().filter(|&z| z > 0.0 && z < zmax).collect();
-    cuts.extend([0.0, zmax, z_of(1.0), z_of(c), z_of(-c)]);
-    cuts.retain(|&z| (0.0..=zmax).contains(&z));
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
-    let pass = |p: f64, q: f64, m: usize| {
-        crate::contact::cosine_band(p, q, m, vbar, amp, &|z| ((1.0 - g.eval(z).0) / amp, 1.0))
-    };
-    let (mut sums, mut errors) = ([0.0; 3], [0.0; 3]);
-    for w in cuts.windows(2) {
-        let (a, b) = (pass(w[0], w[1], PASS_ORDERS.0), pass(w[0], w[1], PASS_ORDERS.1));
-        for k in 0..3 {
-            sums[k] += b[k];
-            errors[k] += (b[k] - a[k]).abs();
-        }
-    }
-    // Truncation (the 16/32-point difference per interval) plus rounding.
-    let terms = (PASS_ORDERS.0 + PASS_ORDERS.1) * (cuts.len() - 1);
-    let (ratio, estimate) = crate::ratio::from_sums(sums, errors, terms, "tabulated contact")?;
-    Ok(Quadrature { ratio, estimate, sums, scale: 1.0 })
+    let r = integrate::mdr::springs(g, vbar, amp, tol, "tabulated contact")?;
+    Ok(Quadrature { ratio: r.ratio, estimate: r.estimate, sums: r.sums, scale: 1.0 })
 }
 
 #[cfg(test)]
