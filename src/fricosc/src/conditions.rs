@@ -73,7 +73,7 @@ impl Conditions {
 
     /// These conditions with an oscillation in the sliding direction of
     /// amplitude `t` (pre-slip lengths, `>= 0`, at most
-    /// [`MAX_TANGENTIAL_AMP`]) and phase `phase` (radians, finite; reduced to
+    /// 1e6) and phase `phase` (radians, finite; reduced to
     /// `[0, 2 pi)`): the body's position is `vhat tau + t sin(tau + phase)`
     /// while the indentation is `u0 - du cos tau`. The velocity must be `vhat`.
     ///

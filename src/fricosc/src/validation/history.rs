@@ -474,7 +474,7 @@ fn find_origin(last_taus: &[f64], user_normal: Option<&[f64]>, found_omega: Opti
 /// Compare a force history ([`HistoryData`], forces in units of `F0`, module
 /// docs) with the steady state of `shape` at `(vbar, amp)`: exact for the flat
 /// punch; for other shapes the normal force is exact and the tangential force
-/// the sum over [`HISTORY_REFERENCE_SPRINGS`] springs, and events are not
+/// the sum over 20,000 springs, and events are not
 /// compared (the total has none). With a normal column the period (without
 /// `omega`) and the time origin come from it ([`TimeOrigin`]). `tolerance`
 /// decides "on the bound", "no contact" and "periodic" (relative to the peak
