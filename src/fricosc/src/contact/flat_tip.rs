@@ -157,7 +157,7 @@ impl Contact for FlatTip {
         2.0 * (depth * zc - w * w.sqrt() / (3.0 * c.k.sqrt()))
     }
 
-    /// The banded integrator over its geometry ([`integrate::mdr`]).
+    /// The banded integrator over its geometry (`integrate::mdr`).
     fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
         crate::error::check_nonneg("vbar", vbar)?;
         crate::error::check_nonneg("amp", amp)?;

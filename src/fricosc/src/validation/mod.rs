@@ -219,7 +219,7 @@ pub enum FindingKind {
     /// Errors ten times those of the stepping peer at the same resolution.
     WorseThanPeer,
     /// A convergence study's rows whose errors do not decrease at an order of
-    /// at least [`MIN_ORDER`].
+    /// at least 0.5.
     NotConverging,
     /// A convergence study's rows whose errors do not depend on the resolution.
     ResolutionIndependent,
@@ -411,7 +411,7 @@ fn peer_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest, st: Stepping)
 ///
 /// # Errors
 /// [`Error::Parse`] naming the row for a bad value; [`Error::TooLarge`] for a
-/// peer beyond [`MAX_PEER_WORK`]; the solver's errors.
+/// peer beyond 10^11 spring-steps; the solver's errors.
 pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result<Validation> {
     check_rows(shape, rows, check)?;
     let (at_rest, tolerance) = (check.at_rest, check.tolerance);

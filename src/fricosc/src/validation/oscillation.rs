@@ -80,7 +80,7 @@ pub struct OscillationValidation {
 /// # Errors
 /// [`Error::Parse`] naming the first bad row (inputs out of range, a value
 /// that is not finite), [`Error::TooLarge`] for a peer beyond
-/// [`super::MAX_PEER_WORK`], the solver's errors.
+/// 10^11 spring-steps, the solver's errors.
 pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<OscillationValidation> {
     let oscillations = checked(shape, rows, check)?;
     let exact = crate::numerics::par::map(&oscillations, |c| crate::combined::evaluate(shape, c));

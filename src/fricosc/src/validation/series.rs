@@ -57,9 +57,9 @@ pub struct SeriesRow {
 pub enum RowStatus {
     /// Every error at rounding.
     Exact,
-    /// Errors decreasing at an order of at least [`MIN_ORDER`].
+    /// Errors decreasing at an order of at least 0.5.
     Converging,
-    /// Errors not decreasing, or at an order below [`MIN_ORDER`].
+    /// Errors not decreasing, or at an order below 0.5.
     NotConverging,
     /// Errors the same at every resolution.
     ResolutionIndependent,
@@ -71,7 +71,7 @@ pub enum Needed {
     /// This resolution (from the row's fit).
     Resolution(f64),
     /// The row does not converge, or the fit asks for more than
-    /// [`MAX_EXTRAPOLATION`] times the finest resolution.
+    /// 10^6 times the finest resolution.
     Unreachable,
 }
 
