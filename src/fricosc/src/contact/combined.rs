@@ -12,10 +12,12 @@
 //! (a tangency of the force and its bound, found by bisection on the
 //! sequence of phases between `z` samples). Between those edges the means
 //! are smooth in `z` and vanish or turn like a square root at the edges, so each
-//! band is integrated by Gauss-Legendre in `theta`, `z = a + (b - a)(1 - cos
-//! theta)/2`, with the order doubled from 8 until two orders agree to the
-//! tolerance; the error estimate is the sum of the last differences (the
-//! higher order's error is far below it once the rule converges) and rounding.
+//! band is integrated by the shared order ladder ([`crate::integrate`]) in
+//! `theta`, `z = a + (b - a)(1 - cos theta)/2`, the order doubled from 8
+//! until two orders agree to the tolerance relative to the contact's normal
+//! force (or to the springs' rounding); the error estimate is the sum of the
+//! last differences (an event that appears between two samples of the band
+//! search leaves a kink that the coefficients' decay would not see) and rounding.
 //!
 //! # Units
 //! `mu_macro/mu0 = int <f> dz / int <B> dz` over the foundation (`<f>`, `<B>`
@@ -25,6 +27,7 @@
 
 use crate::conditions::Conditions;
 use crate::error::{check_nonneg, Error, Result};
+use crate::integrate::{cosine_pass, Ladder, Sums};
 use crate::ratio::Ratio;
 use crate::shape::Shape;
 use crate::stop::{solve, Bound, Drive, StopKind, StopSpring};
@@ -67,7 +70,7 @@ pub struct CombinedBand {
     pub regime: String,
     /// Its share of `<f>` (of the total; negative where it pushes).
     pub share: f64,
-    /// Springs evaluated (Gauss nodes of the last order).
+    /// Springs evaluated (Gauss nodes of every order tried).
     pub nodes: usize,
 }
 
@@ -259,7 +262,13 @@ pub(crate) fn evaluate(shape: &Shape, c: &Conditions) -> Result<Combined> {
     curved(shape.contact(), &o, tol)
 }
 
-/// Largest Gauss-Legendre order of a band.
+/// First Gauss-Legendre order of a band (the next doubles it; their
+/// difference is the first estimate).
+const FIRST_ORDER: usize = 8;
+
+/// Largest Gauss-Legendre order of a band (the stop operator's means turn
+/// at the bands' edges like square roots, and within a band where an event
+/// just appears; they need more than the power laws' 256).
 const MAX_ORDER: usize = 1024;
 
 /// Samples of the phase sequence per band before bisecting for its changes.
@@ -278,55 +287,30 @@ fn curved(c: &dyn crate::contact::Contact, o: &Oscillation, tol: f64) -> Result<
     // quadrature's own integral of the springs' mean bounds, so that `mu` and
     // the reduction share one normalisation (they add up to 1 to rounding).
     let scale_normal = c.mean_normal(o.amp)?;
+    // Each band on the order ladder, to the tolerance relative to the
+    // contact's normal force, or to the rounding of the springs' means (the
+    // estimate adds that rounding on its own).
+    let ladder = Ladder { tol, max_order: MAX_ORDER, noise: SPRING_ROUNDING * f64::EPSILON, difference: true };
+    let node = |z: f64| {
+        let (s, bd) = spring(z);
+        ([s.mean_force, s.mean_deficit, s.mean_bound], spring_scale(bd, d))
+    };
     let mut bands = vec![];
-    let (mut sum_f, mut sum_d, mut sum_b, mut est, mut scale) = (0.0, 0.0, 0.0, 0.0, 0.0f64);
+    let (mut total, mut est) = (Sums::<3>::default(), 0.0);
     for w in edges.windows(2) {
         let (a, b) = (w[0], w[1]);
         if b <= a {
             continue;
         }
-        let rule = |n: usize| -> (f64, f64, f64, f64) {
-            let r = crate::numerics::quad::rule(n, 0.0);
-            let (mut f, mut dd, mut bb, mut mag) = (0.0, 0.0, 0.0, 0.0);
-            for (&x, &wt) in r.nodes.iter().zip(&r.weights) {
-                // theta in (0, pi): z = a + (b - a)(1 - cos theta)/2, dz = (b - a)/2 sin theta.
-                let th = 0.5 * std::f64::consts::PI * (x + 1.0);
-                let (st, ct) = th.sin_cos();
-                let z = a + (b - a) * 0.5 * (1.0 - ct);
-                let jac = wt * 0.5 * std::f64::consts::PI * 0.5 * (b - a) * st;
-                let (s, bd) = spring(z);
-                f += jac * s.mean_force;
-                dd += jac * s.mean_deficit;
-                bb += jac * s.mean_bound;
-                mag += jac * spring_scale(bd, d);
-            }
-            (f, dd, bb, mag)
-        };
-        let mut n = 8;
-        let mut prev = rule(n);
-        let (mut cur, mut diff);
-        loop {
-            n *= 2;
-            cur = rule(n);
-            // |d mu| <= (|dF| + |dN|)/N for |mu| <= 1 (likewise the reduction's |dD|).
-            diff = (cur.0 - prev.0).abs().max((cur.1 - prev.1).abs()) + (cur.2 - prev.2).abs();
-            // Converged to the tolerance, or to the rounding of the springs'
-            // means (below which the difference of two orders is noise; the
-            // estimate adds that rounding on its own).
-            let noise = SPRING_ROUNDING * f64::EPSILON * cur.3;
-            if diff <= 0.25 * tol * scale_normal || diff <= noise || n >= MAX_ORDER {
-                break;
-            }
-            prev = cur;
-        }
-        sum_f += cur.0;
-        sum_d += cur.1;
-        sum_b += cur.2;
-        est += diff;
-        scale += cur.3;
+        let r = ladder.run(FIRST_ORDER, |m| cosine_pass(a, b, m, [true; 3], &node), [scale_normal; 3]);
+        // |d mu| <= (|dF| + |dN|)/N for |mu| <= 1 (likewise the reduction's |dD|).
+        est += r.error[0].max(r.error[1]) + r.error[2];
         let mid = spring(0.5 * (a + b)).0;
-        bands.push(CombinedBand { from: a, to: b, regime: signature_name(&signature(&mid)), share: cur.0, nodes: n });
+        let regime = signature_name(&signature(&mid));
+        bands.push(CombinedBand { from: a, to: b, regime, share: r.value[0], nodes: r.nodes });
+        total += r;
     }
+    let (sum_f, sum_d, sum_b, scale) = (total.value[0], total.value[1], total.value[2], total.magnitude);
     // Both sides of the foundation (they cancel in the quotients).
     let normal = sum_b;
     if normal.is_nan() || normal <= 0.0 {

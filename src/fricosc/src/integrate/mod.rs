@@ -156,17 +156,29 @@ pub(crate) fn cosine_pass<const N: usize>(
     acc.finish(&rule, 0.5 * std::f64::consts::PI * half)
 }
 
-/// An order ladder: its tolerance (relative) and its highest order.
+/// An order ladder: its tolerance (relative), its highest order, the
+/// rounding floor of its integrand (a band whose estimates are within
+/// `noise` times its magnitude, the size of its terms, is accepted too: the
+/// integrand's own rounding keeps the coefficients from decaying further),
+/// and how a pass's error is estimated.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Ladder {
     pub(crate) tol: f64,
     pub(crate) max_order: usize,
+    pub(crate) noise: f64,
+    /// The error of a pass is its difference from the pass before it, the
+    /// orders doubling: for integrands whose bands may hold a kink (the stop
+    /// operator's, where an event appears between two samples of the band
+    /// search), where the coefficients' decay, which assumes an analytic
+    /// integrand, would claim too much; otherwise the coefficients' estimate.
+    pub(crate) difference: bool,
 }
 
 impl Ladder {
-    /// A ladder to `tol` up to [`MAX_ORDER`].
+    /// A ladder to `tol` up to [`MAX_ORDER`], without a rounding floor, by
+    /// the coefficients' estimate.
     pub(crate) fn new(tol: f64) -> Self {
-        Ladder { tol, max_order: MAX_ORDER }
+        Ladder { tol, max_order: MAX_ORDER, noise: 0.0, difference: false }
     }
 
     /// The first order of a band: [`MIN_ORDER`], or [`LOOSE_ORDER`] at a
@@ -182,7 +194,8 @@ impl Ladder {
     /// Passes `pass(m)` at increasing orders from `first` until every mean's
     /// error (its truncation estimate; after a doubling of the order, at most
     /// the difference of the two passes) is within the tolerance relative to
-    /// the pass plus `scale`, or the highest order is reached.
+    /// the pass plus `scale` (or the rounding floor), or the highest order is
+    /// reached.
     pub(crate) fn run<const N: usize>(
         &self,
         first: usize,
@@ -201,18 +214,19 @@ impl Ladder {
             // averages it). After a smaller step the two errors can be alike,
             // and their difference far below either: not used.
             let err: [f64; N] = std::array::from_fn(|k| {
-                let t = p.truncation.map_or(f64::INFINITY, |t| t[k]);
+                let t = if self.difference { f64::INFINITY } else { p.truncation.map_or(f64::INFINITY, |t| t[k]) };
                 match prev {
                     Some((mp, q)) if m == 2 * mp => t.min((p.sum[k] - q[k]).abs()),
                     _ => t,
                 }
             });
-            let lim: [f64; N] = std::array::from_fn(|k| self.tol * (p.sum[k].abs() + scale[k]));
+            let floor = self.noise * p.magnitude;
+            let lim: [f64; N] = std::array::from_fn(|k| (self.tol * (p.sum[k].abs() + scale[k])).max(floor));
             if (0..N).all(|k| err[k] <= lim[k]) || m >= self.max_order {
                 return Sums { value: p.sum, error: err, magnitude: p.magnitude, nodes };
             }
             prev = Some((m, p.sum));
-            m = self.next_order(m, &p, &err, &lim);
+            m = if self.difference { (2 * m).min(self.max_order) } else { self.next_order(m, &p, &err, &lim) };
         }
     }
 
