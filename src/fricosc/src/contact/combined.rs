@@ -342,9 +342,7 @@ fn band_edges(
     let mut cuts = vec![0.0, zmax];
     if amp > 0.0 && amp < 1.0 {
         let level = 1.0 - amp;
-        cuts.push(
-            crate::numerics::root::bracketed(|z| c.equivalent_profile(z) - level, 0.0, 1.0, 4.0 * f64::EPSILON).x,
-        );
+        cuts.push(c.level(level));
     }
     cuts.extend(c.breakpoints().into_iter().filter(|&z| z > 0.0 && z < zmax));
     cuts.sort_by(f64::total_cmp);

@@ -136,6 +136,11 @@ impl Contact for FlatTip {
         }
     }
 
+    /// In closed form: `z(t)` at `t = sqrt(level)`.
+    fn level(&self, level: f64) -> f64 {
+        self.curved().z_of_t(level.sqrt()).0
+    }
+
     fn reach(&self, amp: f64) -> Result<f64> {
         Ok(self.curved().z_of_t((1.0 + amp).sqrt()).0)
     }

@@ -26,61 +26,55 @@ pub use flat_tip::FlatTip;
 pub use profile::{Table, Tabulated, MAX_TABLE_ROWS};
 pub use shape::Reader;
 
-/// A contact geometry: `mu_macro/mu0` as a function of `vbar` (eq. 3) and
-/// `amp = du/u0`.
+/// A contact: its MDR geometry, and how `mu_macro/mu0` is solved for it.
+///
+/// A new shape describes its geometry ([`Contact::name`],
+/// [`Contact::equivalent_profile`], [`Contact::reach`],
+/// [`Contact::static_force`]; where `G` is not smooth,
+/// [`Contact::breakpoints`]) and is solved by the banded integrator: every
+/// spring's steady state in closed form, the bands between the regime
+/// thresholds and the breakpoints by Gauss rules on the order ladder, with an
+/// error estimate. Contacts with closed forms (the flat punch, power laws)
+/// override the solving methods.
+///
+/// ```
+/// use fricosc::contact::Contact;
+/// use fricosc::{Conditions, Shape};
+/// use std::sync::Arc;
+///
+/// /// The cone, described by its geometry alone: G(z) = z.
+/// #[derive(Debug)]
+/// struct MyCone;
+/// impl Contact for MyCone {
+///     fn name(&self) -> String {
+///         "my-cone".into()
+///     }
+///     fn equivalent_profile(&self, z: f64) -> f64 {
+///         z
+///     }
+///     fn reach(&self, amp: f64) -> fricosc::Result<f64> {
+///         Ok(1.0 + amp)
+///     }
+///     /// 2 int_0^d (d - z) dz.
+///     fn static_force(&self, depth: f64) -> f64 {
+///         depth.max(0.0).powi(2)
+///     }
+/// }
+///
+/// let c = Conditions::vbar(0.3, 0.5)?;
+/// let (mine, cone) = (Shape::from_contact(Arc::new(MyCone)).evaluate(&c)?, Shape::cone().evaluate(&c)?);
+/// assert!((mine.ratio.mu_ratio - cone.ratio.mu_ratio).abs() <= mine.error_estimate + cone.error_estimate);
+/// # Ok::<(), fricosc::Error>(())
+/// ```
 pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     /// The canonical name, as it parses back (`flat-tip:0.5`).
     fn name(&self) -> String;
 
-    /// `mu_macro/mu0` with its error estimate; `vbar`, `amp` finite and `>= 0`,
-    /// `tol` the relative quadrature tolerance.
-    ///
-    /// # Errors
-    /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
-    /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
-    fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation>;
-
-    /// `mu_macro/mu0` alone (checked inputs): [`Contact::evaluate`]'s ratio, by
-    /// default through it. A contact whose error estimate costs work of its own
-    /// skips that work here (the flat punch: a batch of rows wants no estimate).
-    ///
-    /// # Errors
-    /// As [`Contact::evaluate`].
-    fn ratio(&self, vbar: f64, amp: f64, tol: f64) -> Result<crate::ratio::Ratio> {
-        self.evaluate(vbar, amp, tol).map(|e| e.ratio)
-    }
-
-    /// Everything the solver reports about one point (checked inputs). By
-    /// default the evaluation alone; the flat punch adds its events, power laws
-    /// their bands.
-    ///
-    /// # Errors
-    /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
-    /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
-    fn point(&self, vbar: f64, amp: f64, tol: f64) -> Result<Report> {
-        Ok(Report::Other { vbar, amp, evaluation: self.evaluate(vbar, amp, tol)? })
-    }
-
-    /// `mu_static/mu0`, the limit `vbar -> 0+` (the minimum normal force over
-    /// its mean, seed section 4). By default the solver at `vbar = 0`.
-    ///
-    /// # Errors
-    /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
-    /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
-    fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
-        if amp >= 1.0 {
-            // Every spring loses contact (G >= 0 puts every level at or below 1
-            // <= amp) and sticks from contact to loss: exactly 0.
-            crate::error::check_nonneg("amp", amp)?;
-            return Ok(0.0);
-        }
-        Ok(self.evaluate(0.0, amp, tol)?.ratio.mu_ratio)
-    }
-
     /// The MDR equivalent profile in the contact's units, `G(z) = g(x_c z)/u0`
-    /// (`G(1) = 1`, `x_c` the contact radius at the mean indentation `u0`): the
-    /// spring at `z` touches while the indentation exceeds `G(z) u0`. The flat
-    /// punch is 0 on `z <= 1` and infinite beyond.
+    /// (`G(1) = 1`, `x_c` the contact radius at the mean indentation `u0`),
+    /// nondecreasing from `G(0) = 0`: the spring at `z` touches while the
+    /// indentation exceeds `G(z) u0`. The flat punch is 0 on `z <= 1` and
+    /// infinite beyond.
     fn equivalent_profile(&self, z: f64) -> f64;
 
     /// `z_max` with `G(z_max) = 1 + amp`: no spring beyond it ever touches (an
@@ -88,19 +82,32 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
     ///
     /// # Errors
     /// The implementation's; the built-in contacts: [`crate::Error::InvalidParameter`]
-    /// for an amplitude beyond a table's reach, [`crate::Error::Internal`] for a bug.
+    /// for an amplitude beyond a table's reach.
     fn reach(&self, amp: f64) -> Result<f64>;
+
+    /// Static normal force at indentation `depth u0`,
+    /// `2 int_0^inf (depth - G(z))_+ dz`, in units of `E* x_c u0` (both sides of
+    /// the foundation; the flat punch's stiffness is `2 E* x_c`).
+    fn static_force(&self, depth: f64) -> f64;
+
+    /// `z` where `G(z) = level`, for a level the contact reaches: by default
+    /// the root of `G(z) - level` bracketed by `0` and [`Contact::reach`].
+    fn level(&self, level: f64) -> f64 {
+        let hi = self.reach((level - 1.0).max(0.0)).unwrap_or(f64::NAN);
+        crate::numerics::root::bracketed(|z| self.equivalent_profile(z) - level, 0.0, hi, 4.0 * f64::EPSILON).x
+    }
+
+    /// Where `G` is not smooth, or changes its scale (`z` values in `(0,
+    /// reach)`): the bands are cut there. By default none.
+    fn breakpoints(&self) -> Vec<f64> {
+        vec![]
+    }
 
     /// The largest amplitude the contact reaches ([`Contact::reach`] is an
     /// error beyond it): a table's deepest level less 1. By default unbounded.
     fn max_amp(&self) -> f64 {
         f64::INFINITY
     }
-
-    /// Static normal force at indentation `depth u0`,
-    /// `2 int_0^inf (depth - G(z))_+ dz`, in units of `E* x_c u0` (both sides of
-    /// the foundation; the flat punch's stiffness is `2 E* x_c`).
-    fn static_force(&self, depth: f64) -> f64;
 
     /// The normal force averaged over a period at amplitude `amp`, in the units
     /// of [`Contact::static_force`]. By default the phase average
@@ -125,17 +132,75 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
         Ok(sum / PI)
     }
 
+    /// `mu_macro/mu0` with its error estimate; `vbar`, `amp` finite and `>= 0`,
+    /// `tol` the relative quadrature tolerance. By default the banded
+    /// integrator over the geometry, along `z`.
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidParameter`] for an amplitude beyond the contact's
+    /// reach, [`crate::Error::Internal`] for a bug.
+    fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
+        crate::error::check_nonneg("vbar", vbar)?;
+        crate::error::check_nonneg("amp", amp)?;
+        self.reach(amp)?;
+        let (ratio, error_estimate) = crate::integrate::mdr::evaluate(&AlongZ(self), vbar, amp, tol, &self.name())?;
+        Ok(Evaluation { ratio, error_estimate, interpolation_error: None })
+    }
+
+    /// `mu_macro/mu0` alone (checked inputs): [`Contact::evaluate`]'s ratio, by
+    /// default through it. A contact whose error estimate costs work of its own
+    /// skips that work here (the flat punch: a batch of rows wants no estimate).
+    ///
+    /// # Errors
+    /// As [`Contact::evaluate`].
+    fn ratio(&self, vbar: f64, amp: f64, tol: f64) -> Result<crate::ratio::Ratio> {
+        self.evaluate(vbar, amp, tol).map(|e| e.ratio)
+    }
+
+    /// Everything the solver reports about one point (checked inputs). By
+    /// default the evaluation alone; the flat punch adds its events, power laws
+    /// their bands.
+    ///
+    /// # Errors
+    /// As [`Contact::evaluate`].
+    fn point(&self, vbar: f64, amp: f64, tol: f64) -> Result<Report> {
+        Ok(Report::Other { vbar, amp, evaluation: self.evaluate(vbar, amp, tol)? })
+    }
+
+    /// `mu_static/mu0`, the limit `vbar -> 0+` (the minimum normal force over
+    /// its mean, seed section 4). By default the solver at `vbar = 0`.
+    ///
+    /// # Errors
+    /// As [`Contact::evaluate`].
+    fn mu_static(&self, amp: f64, tol: f64) -> Result<f64> {
+        if amp >= 1.0 {
+            // Every spring loses contact (G >= 0 puts every level at or below 1
+            // <= amp) and sticks from contact to loss: exactly 0.
+            crate::error::check_nonneg("amp", amp)?;
+            return Ok(0.0);
+        }
+        Ok(self.evaluate(0.0, amp, tol)?.ratio.mu_ratio)
+    }
+
     /// True if one spring represents the contact exactly (the flat punch): the
     /// time-stepping peer and histories then use one spring.
     fn single_spring(&self) -> bool {
         false
     }
+}
 
-    /// Where the equivalent profile `G` is not smooth (`z` values in
-    /// `(0, reach)`): the combined-oscillation quadrature cuts its bands there
-    /// (oscillation in the sliding direction). By default none.
+/// A contact's profile along `z` itself, as the banded integrator takes it.
+struct AlongZ<'a, C: ?Sized>(&'a C);
+
+impl<C: Contact + ?Sized> crate::integrate::mdr::Profile for AlongZ<'_, C> {
+    fn at(&self, z: f64) -> (f64, f64) {
+        (self.0.equivalent_profile(z), 1.0)
+    }
+    fn level(&self, level: f64) -> f64 {
+        self.0.level(level)
+    }
     fn breakpoints(&self) -> Vec<f64> {
-        vec![]
+        self.0.breakpoints()
     }
 }
 
@@ -322,6 +387,10 @@ impl Contact for profile::Tabulated {
     }
     fn reach(&self, amp: f64) -> Result<f64> {
         profile::reach(self, amp)
+    }
+    /// The interpolant's own inverse.
+    fn level(&self, level: f64) -> f64 {
+        profile::level(self, level)
     }
     fn max_amp(&self) -> f64 {
         profile::max_amp(self)

@@ -383,6 +383,11 @@ pub(crate) fn max_amp(t: &Tabulated) -> f64 {
     amp
 }
 
+/// `z` with `G(z) = level`.
+pub(crate) fn level(t: &Tabulated, level: f64) -> f64 {
+    t.g.inverse(level)
+}
+
 /// `z` with `G(z) = 1 + amp`: an error if the table ends before.
 pub(crate) fn reach(t: &Tabulated, amp: f64) -> Result<f64> {
     crate::error::check_nonneg("amp", amp)?;
