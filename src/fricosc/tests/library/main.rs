@@ -5,6 +5,7 @@
 mod common;
 
 mod combined;
+mod combined_curved;
 mod contact;
 #[allow(clippy::excessive_precision)]
 mod flat;

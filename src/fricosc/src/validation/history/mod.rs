@@ -17,6 +17,10 @@
 use super::*;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
+mod signal;
+
+use signal::{drift, origin_offset, period_from_normal, periodic_mean, SNAP_SAMPLES};
+
 /// The time column of a history.
 #[derive(Debug, Clone, Copy)]
 pub enum TimeAxis<'a> {
@@ -211,128 +215,6 @@ pub(crate) const NORMAL_MEAN_TOLERANCE: f64 = 1e-3;
 /// How far (relative to the peak) the aligned normal force may differ from
 /// the exact one before it is a [`FindingKind::NormalShape`] finding.
 pub(crate) const NORMAL_SHAPE_TOLERANCE: f64 = 1e-2;
-
-/// How close (in sample spacings) a time origin must be to a multiple of
-/// `pi/2` to be taken as that convention exactly.
-const SNAP_SAMPLES: f64 = 0.01;
-
-/// The period of a history (in units of `t`) from its normal force: the mean
-/// spacing of its crossings of the mid-level `(min + max)/2` in the same
-/// direction (interpolated linearly), upward and downward ones pooled.
-fn period_from_normal(t: &[f64], n: &[f64]) -> Result<f64> {
-    let bad = |reason: &str| Error::Parse { context: "history".into(), reason: reason.into() };
-    let (lo, hi) = n.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
-    if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
-        return Err(bad("the normal force is constant: the period cannot be found from it (give omega)"));
-    }
-    let mid = lo + 0.5 * (hi - lo);
-    let (mut up, mut down) = (vec![], vec![]);
-    for i in 1..n.len() {
-        let (a, b) = (n[i - 1] - mid, n[i] - mid);
-        if (a < 0.0) != (b < 0.0) {
-            let at = t[i - 1] + (t[i] - t[i - 1]) * a / (a - b);
-            if a < 0.0 { &mut up } else { &mut down }.push(at);
-        }
-    }
-    let (mut span, mut count) = (0.0, 0usize);
-    for c in [&up, &down] {
-        if c.len() >= 2 {
-            span += c[c.len() - 1] - c[0];
-            count += c.len() - 1;
-        }
-    }
-    if count == 0 || span.is_nan() || span <= 0.0 {
-        return Err(bad(
-            "the normal force crosses its mid-level fewer than twice in the same direction: the history is \
-             shorter than about one period (give omega, or more periods)",
-        ));
-    }
-    Ok(span / count as f64)
-}
-
-/// `(int y cos tau, int y sin tau)` over one period by the periodic trapezoid
-/// rule on samples `(tau_i, y_i)` spanning less than a period (the last
-/// interval wraps round from the last sample to the first plus `2 pi`).
-fn first_harmonic(taus: &[f64], y: &[f64]) -> (f64, f64) {
-    let (mut c, mut s) = (0.0, 0.0);
-    let n = taus.len();
-    for i in 0..n {
-        let j = (i + 1) % n;
-        let width = if j == 0 { taus[0] + TAU - taus[n - 1] } else { taus[j] - taus[i] };
-        let (si, ci) = taus[i].sin_cos();
-        let (sj, cj) = taus[j].sin_cos();
-        c += 0.5 * width * (y[i] * ci + y[j] * cj);
-        s += 0.5 * width * (y[i] * si + y[j] * sj);
-    }
-    (c, s)
-}
-
-/// The periodic trapezoid mean of `y` over one period (as [`first_harmonic`]).
-fn periodic_mean(taus: &[f64], y: &[f64]) -> f64 {
-    let n = taus.len();
-    let mut sum = 0.0;
-    for i in 0..n {
-        let j = (i + 1) % n;
-        let width = if j == 0 { taus[0] + TAU - taus[n - 1] } else { taus[j] - taus[i] };
-        sum += 0.5 * width * (y[i] + y[j]);
-    }
-    sum / TAU
-}
-
-/// The offset `d` with `N_file(tau) = N(tau + d)`: every exact normal force is a
-/// decreasing function of `cos tau`, so its first harmonic is `A cos tau` with
-/// `A < 0` and no sine part; shifted by `d` it becomes
-/// `A cos d cos tau - A sin d sin tau`, whence `d = atan2(b, -a)` from the file's
-/// cosine and sine coefficients `a`, `b`. Snapped to a multiple of `pi/2`
-/// within `snap` (the conventions of [`TimeOrigin::convention`]; 0: never).
-/// `None` if the normal force has no first harmonic (it does not oscillate).
-fn origin_offset(taus: &[f64], normal: &[f64], snap: f64) -> Option<(f64, Option<&'static str>)> {
-    let (a, b) = first_harmonic(taus, normal);
-    let peak = normal.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    let size = a.hypot(b);
-    if size.is_nan() || size <= 1e-9 * peak {
-        return None;
-    }
-    let d = b.atan2(-a);
-    let conventions = [
-        (0.0, "u0 - du cos(omega t)"),
-        (FRAC_PI_2, "u0 + du sin(omega t)"),
-        (PI, "u0 + du cos(omega t)"),
-        (-FRAC_PI_2, "u0 - du sin(omega t)"),
-        (-PI, "u0 + du cos(omega t)"),
-    ];
-    for (at, name) in conventions {
-        if (d - at).abs() <= snap {
-            return Some((if at == -PI { PI } else { at }, Some(name)));
-        }
-    }
-    Some((d, None))
-}
-
-/// Largest `|F(tau) - F(tau - 2 pi)|` over samples in `[from, to]`, the earlier
-/// value interpolated linearly between the user's samples.
-fn drift(taus: &[f64], f: &[f64], from: f64, to: f64) -> Option<f64> {
-    let at = |t: f64| -> Option<f64> {
-        let j = taus.partition_point(|&x| x < t);
-        if j == 0 || j >= taus.len() {
-            return (j < taus.len() && taus[j] == t).then(|| f[j]);
-        }
-        let (t0, t1) = (taus[j - 1], taus[j]);
-        if t1 == t0 {
-            return Some(f[j]);
-        }
-        Some(f[j - 1] + (f[j] - f[j - 1]) * (t - t0) / (t1 - t0))
-    };
-    let mut worst: Option<f64> = None;
-    for (i, &t) in taus.iter().enumerate() {
-        if t > from && t <= to {
-            if let Some(prev) = at(t - TAU) {
-                worst = Some(worst.unwrap_or(0.0).max((f[i] - prev).abs()));
-            }
-        }
-    }
-    worst
-}
 
 /// Check the columns: equal lengths, finite values, time not decreasing.
 fn check_columns(time: &[f64], data: &HistoryData) -> Result<()> {
