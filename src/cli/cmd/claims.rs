@@ -15,7 +15,7 @@ pub struct ClaimsArgs {
 /// Print the claims as Markdown, JSON or CSV.
 pub fn run(a: ClaimsArgs) -> Result<()> {
     let format = Format::parse(&a.format, &[Format::Markdown, Format::Json, Format::Csv])?;
-    let claims = crate::claims::check();
+    let claims = fricosc::seed::claims();
     let text = match format {
         Format::Markdown => crate::claims::markdown(&claims),
         f => export(&claims, f)?,

@@ -237,7 +237,7 @@ fn jumping_figures() -> Result<Vec<Figure>> {
 
     // Fig. 5 inset: the low-velocity slope against the amplitude.
     let aa = grid(1.0, 5.0, 161);
-    let slope_exact: Vec<[f64; 2]> = aa.iter().map(|&a| [a, crate::claims::exact_slope(a)]).collect();
+    let slope_exact: Vec<[f64; 2]> = aa.iter().map(|&a| [a, fricosc::seed::exact_slope(a)]).collect();
     let mut f = figure(
         "fig5-inset",
         "Fig. 5 inset: low-velocity slope against the amplitude, exact, eqs. 21 and 22 as printed and corrected",

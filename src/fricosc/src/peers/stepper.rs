@@ -66,7 +66,7 @@ pub(crate) fn update(f: f64, b: f64, df: f64) -> f64 {
 /// (N/m), friction coefficient `mu0`, sliding velocity `v0` (m/s), angular
 /// frequency `omega` (1/s), mean indentation `u0` and amplitude `du` (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PhysicalSpring {
+pub(crate) struct PhysicalSpring {
     /// Tangential stiffness.
     pub kx: f64,
     /// Normal stiffness.
@@ -86,7 +86,7 @@ pub struct PhysicalSpring {
 /// `mu/mu0` of one spring by the seed's scheme in physical units (no
 /// nondimensionalisation: it checks the seed's claim that the result depends
 /// only on `vbar` and `du/u0`), `m` steps per period, the second of two periods.
-pub fn physical_mu_ratio(p: &PhysicalSpring, m: usize) -> f64 {
+pub(crate) fn physical_mu_ratio(p: &PhysicalSpring, m: usize) -> f64 {
     let PhysicalSpring { kx, kz, mu0, v0, omega, u0, du } = *p;
     let m = m.max(1);
     let dt = TAU / omega / m as f64;

@@ -4,6 +4,7 @@
 
 mod common;
 
+mod claims;
 mod combined;
 mod combined_curved;
 mod contact;

@@ -1,8 +1,13 @@
 //! The seed's approximations, as printed and (where misprinted) corrected, for
-//! comparison with the exact solver (`fricosc claims`, `fricosc figures`).
-//! Each takes `vbar` (eq. 3) and `amp = du/u0`.
+//! comparison with the exact solver; each takes `vbar` (eq. 3) and `amp =
+//! du/u0`. [`claims`] checks every quantitative statement of the seed against
+//! the exact solver (`fricosc claims`).
 
 use std::f64::consts::PI;
+
+mod claims;
+
+pub use claims::{claims, exact_slope, Claim, Verdict};
 
 /// `3/4 (v - 1)^2 + 1/4 (v - 1)^4`, the bracket of eqs. 11, 13-17, 25, 27.
 fn bracket(vbar: f64) -> f64 {
