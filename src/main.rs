@@ -1,6 +1,6 @@
-//! `fricosc`: the command line, a thin layer over the library. The options of
-//! each subcommand live beside it in `src/cli/cmd/`; this file parses them and
-//! decides every exit code:
+//! `fricosc`: the command line, a thin layer over the library. Each
+//! subcommand is one module of `src/cli/` with its options and its run; this
+//! file parses them and decides every exit code:
 //!
 //! - 0: success (also when the reader closes the pipe, as ripgrep does);
 //! - 1: a negative answer (`validate` with a finding or an error above

@@ -1,8 +1,11 @@
 //! `fricosc claims`: the seed's claims checked by the library
 //! ([`fricosc::seed::claims`]) as Markdown or a table.
 
+use crate::cmd::emit;
+use crate::error::Result;
+use crate::export::{export, Format};
+use clap::Args;
 use fricosc::seed::Claim;
-
 /// Width of the Markdown report's lines.
 pub const WIDTH: usize = 100;
 
@@ -50,12 +53,7 @@ pub fn markdown(claims: &[Claim]) -> String {
             None => format!("{} ({}).", c.deviation_is, c.location),
         };
         s += &wrap("- Deviation:", &dev, "  ", WIDTH);
-        s += &wrap(
-            "- Verdict:",
-            &format!("{}, by the criterion: {}.", c.verdict.name(), c.criterion),
-            "  ",
-            WIDTH,
-        );
+        s += &wrap("- Verdict:", &format!("{}, by the criterion: {}.", c.verdict.name(), c.criterion), "  ", WIDTH);
     }
     s
 }
@@ -84,4 +82,22 @@ impl crate::export::Report for Vec<Claim> {
             })
             .collect()
     }
+}
+
+#[derive(Args)]
+pub struct ClaimsArgs {
+    /// markdown (default), json or csv.
+    #[arg(long, default_value = "markdown")]
+    pub format: String,
+}
+
+/// Print the claims as Markdown, JSON or CSV.
+pub fn run(a: ClaimsArgs) -> Result<()> {
+    let format = Format::parse(&a.format, &[Format::Markdown, Format::Json, Format::Csv])?;
+    let claims = fricosc::seed::claims();
+    let text = match format {
+        Format::Markdown => crate::claims::markdown(&claims),
+        f => export(&claims, f)?,
+    };
+    emit(if text.ends_with('\n') { text } else { text + "\n" }.as_str())
 }

@@ -34,7 +34,7 @@ pub enum Format {
     Markdown,
     /// An SVG drawing.
     Svg,
-    /// The SVG drawing rendered as PNG ([`crate::plot::png`]; bytes: see [`export_bytes`]).
+    /// The SVG drawing rendered as PNG ([`crate::chart::png`]; bytes: see [`export_bytes`]).
     Png,
 }
 
@@ -109,7 +109,7 @@ pub fn export(report: &impl Report, format: Format) -> Result<String> {
 /// the SVG drawing rendered.
 pub fn export_bytes(report: &impl Report, format: Format) -> Result<Vec<u8>> {
     match format {
-        Format::Png => crate::plot::png(&export(report, Format::Svg)?)
+        Format::Png => crate::chart::png(&export(report, Format::Svg)?)
             .map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") }),
         f => export(report, f).map(String::into_bytes),
     }

@@ -1,9 +1,11 @@
-//! The `fricosc` command-line tool: its subcommands ([`cmd`]), reports, formats
-//! and I/O, over the library. Behind the `cli` feature; not part of the
-//! library's API (the binary, the fuzz targets and the tests use it).
+//! The `fricosc` command-line tool over the library: one module per
+//! subcommand (its options and its run; [`cmd`] dispatches them and holds what
+//! they share), the readers and writers of tables, and the charts. Not a
+//! library for others: the binary, the fuzz targets and the tool's tests use it.
 
 pub mod batch;
 pub mod bench;
+pub mod chart;
 pub mod claims;
 pub mod cmd;
 pub mod error;
@@ -16,9 +18,11 @@ pub mod json;
 pub mod outdir;
 pub mod output;
 pub mod plot;
+pub mod point;
 pub mod scene;
 pub mod stress;
 pub mod suite;
+pub mod table;
 pub mod tables;
 pub mod twopass;
 pub mod validate;

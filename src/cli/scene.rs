@@ -1,9 +1,12 @@
 //! `fricosc scene`: the core's physical scenes ([`fricosc::scene`]) read
 //! from JSON, with the capped file reader, their schema, and their report.
 
+use crate::cmd::emit;
 use crate::error::{Error, Result};
+use crate::output::Format;
 use fricosc::scene::{solve_with, Scene, SceneResult};
-
+use rayon::prelude::*;
+use std::io::{self, IsTerminal, Write};
 /// Parse a scene from JSON text; `source` names the file in errors. A scene is a
 /// JSON object: serde would also accept its fields as a positional array.
 pub fn parse(text: &str, source: &str) -> Result<Scene> {
@@ -47,8 +50,8 @@ pub fn length_label(m: f64) -> String {
 /// comes with its scene's label; with several scenes the legend names both.
 /// The velocity axis is logarithmic where the velocities are positive and span
 /// two decades or more.
-pub fn family_chart(results: &[(String, SceneResult)]) -> crate::plot::Chart {
-    use crate::plot::{family_color, Axis, Chart, Key, Rule, Series, Style};
+pub fn family_chart(results: &[(String, SceneResult)]) -> crate::chart::Chart {
+    use crate::chart::{family_color, Axis, Chart, Key, Rule, Series, Style};
     let scenes: Vec<&str> = results.iter().fold(vec![], |mut v, (l, _)| {
         if !v.contains(&l.as_str()) {
             v.push(l.as_str());
@@ -92,7 +95,7 @@ pub fn family_chart(results: &[(String, SceneResult)]) -> crate::plot::Chart {
                 points: r.rows.iter().map(|x| (x.velocity_m_per_s, x.mu_macro)).collect(),
                 // A lone velocity is a point: drawn as a marker.
                 style: if r.rows.len() < 2 {
-                    Style::line(family_color(i, n)).marker(crate::plot::Marker::Circle)
+                    Style::line(family_color(i, n)).marker(crate::chart::Marker::Circle)
                 } else {
                     Style::line(family_color(i, n))
                 },
@@ -109,7 +112,7 @@ pub fn family_chart(results: &[(String, SceneResult)]) -> crate::plot::Chart {
         }
     }
     if !rules.is_empty() {
-        key.push(Key::Entry(Style::line(crate::plot::Rgb(0x99, 0x99, 0x99)).width(0.5), "0 (μ_{0})".into()));
+        key.push(Key::Entry(Style::line(crate::chart::Rgb(0x99, 0x99, 0x99)).width(0.5), "0 (μ_{0})".into()));
     }
     Chart {
         title: format!("mu_macro against velocity: {}", scenes.join(", ")),
@@ -156,4 +159,140 @@ pub fn row_cells(x: &fricosc::scene::Row) -> [String; 8] {
         n(x.mean_normal_force_n),
         x.regime.name().to_string(),
     ]
+}
+
+#[derive(clap::Args)]
+pub struct SceneArgs {
+    /// Scene files (run in parallel).
+    pub files: Vec<String>,
+    /// Print the JSON Schema of the scene file instead.
+    #[arg(long)]
+    pub schema: bool,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "json")]
+    pub format: Format,
+    /// Also draw mu_macro against the velocity, one curve per amplitude (the seed's Fig. 9
+    /// layout), to this file: SVG or PNG by its extension.
+    #[arg(long)]
+    pub plot: Option<String>,
+}
+
+pub fn run(a: SceneArgs) -> Result<()> {
+    let SceneArgs { files, schema, format, plot } = a;
+    if schema {
+        return emit(&format!("{}\n", crate::scene::schema()));
+    }
+    if let Some(path) = &plot {
+        crate::cmd::drawing_kind("--plot", path)?;
+    }
+    if files.is_empty() {
+        return Err(Error::Parse { context: "scene".into(), reason: "give a scene file (or --schema)".into() });
+    }
+    // Read and solve everything before the first byte is written.
+    let scenes: Vec<Result<fricosc::scene::Scene>> = files
+        .iter()
+        .map(|f| {
+            let text = crate::input::read_capped(f, crate::input::MAX_SMALL_BYTES)?;
+            crate::scene::parse(&text, f)
+        })
+        .collect();
+    let scenes = scenes.into_iter().collect::<Result<Vec<_>>>()?;
+    // A progress bar on stderr only when it is a terminal and the work is long.
+    let total: usize = scenes.iter().map(fricosc::scene::velocity_count).sum();
+    let bar = (std::io::stderr().is_terminal() && total >= 2000).then(|| Progress::new(total as u64));
+    let tick = |k: u64| {
+        if let Some(b) = &bar {
+            b.inc(k);
+        }
+    };
+    let results: Vec<Result<Vec<fricosc::scene::SceneResult>>> =
+        scenes.par_iter().zip(&files).map(|(s, f)| crate::scene::solve_with_progress(s, f, &tick)).collect();
+    if let Some(b) = &bar {
+        b.finish();
+    }
+    // Each answer (one per amplitude) with its scene's label: its name, or its file.
+    let mut labelled: Vec<(String, fricosc::scene::SceneResult)> = vec![];
+    for (r, f) in results.into_iter().zip(&files) {
+        labelled.extend(r?.into_iter().map(|x| (x.name.clone().unwrap_or_else(|| f.clone()), x)));
+    }
+    for (f, r) in &labelled {
+        for w in &r.warnings {
+            crate::cmd::say(&format!("warning: {f}: {w}"));
+        }
+    }
+    if let Some(path) = &plot {
+        let svg = crate::scene::family_chart(&labelled).svg();
+        crate::cmd::write_drawing("--plot", path, &svg)?;
+    }
+    let results: Vec<&fricosc::scene::SceneResult> = labelled.iter().map(|(_, r)| r).collect();
+    // One shape of output whatever the number of files: a JSON list, and CSV in
+    // long form (one header; each row with its scene and the scene's results).
+    // Everything is computed; now it is written as it is formatted (a row's
+    // text is never held whole).
+    let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
+    match format {
+        Format::Csv => scenes_csv(&mut out, &labelled).map_err(crate::cmd::io_err)?,
+        Format::Json => {
+            serde_json::to_writer_pretty(&mut out, &results).map_err(|e| crate::cmd::io_err(e.into()))?;
+            out.write_all(b"\n").map_err(crate::cmd::io_err)?;
+        }
+    }
+    out.flush().map_err(crate::cmd::io_err)
+}
+
+/// Every scene's rows in one CSV table: the scene (its name, or its file), the
+/// scene-level results repeated on each row (one amplitude of a family each),
+/// then the row's own columns.
+fn scenes_csv(out: &mut dyn Write, results: &[(String, fricosc::scene::SceneResult)]) -> io::Result<()> {
+    use crate::export::Report;
+    let n = crate::output::num;
+    let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(out);
+    let fail = crate::output::io_of;
+    let scene_cols = ["scene", "u0_m", "du_m", "amp", "contact_radius_m", "critical_velocity_m_per_s", "mu_static"];
+    let mut header: Vec<String> = scene_cols.map(String::from).to_vec();
+    if let Some((_, r)) = results.first() {
+        header.extend(r.columns());
+    }
+    w.write_record(&header).map_err(fail)?;
+    for (label, r) in results {
+        let scene = [
+            label.clone(),
+            n(r.mean_indentation_m),
+            n(r.amplitude_m),
+            n(r.amplitude_ratio),
+            n(r.contact_radius_m),
+            n(r.critical_velocity_m_per_s),
+            n(r.mu_static),
+        ];
+        for x in r.rows.iter() {
+            w.write_record(scene.iter().chain(&crate::scene::row_cells(&x))).map_err(fail)?;
+        }
+    }
+    w.flush()
+}
+
+/// A percentage on a terminal's stderr, rewritten in place (whole percents
+/// only); a failed write to stderr is ignored (the answer matters more).
+struct Progress {
+    total: u64,
+    done: std::sync::atomic::AtomicU64,
+}
+
+impl Progress {
+    fn new(total: u64) -> Self {
+        Progress { total: total.max(1), done: std::sync::atomic::AtomicU64::new(0) }
+    }
+
+    fn inc(&self, k: u64) {
+        use std::sync::atomic::Ordering::Relaxed;
+        let before = self.done.fetch_add(k, Relaxed);
+        let (p0, p1) = (100 * before / self.total, 100 * (before + k) / self.total);
+        if p1 > p0 {
+            let _ = write!(std::io::stderr(), "\rscene: {p1:>3} %");
+        }
+    }
+
+    fn finish(&self) {
+        let _ = write!(std::io::stderr(), "\r             \r");
+    }
 }

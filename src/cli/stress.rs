@@ -7,11 +7,13 @@
 //! same value a period of the phase later, and continuity in every parameter
 //! (a relative step of 1e-12 moves the value by at most 1e-5).
 
+use crate::cmd::{emit, to_json, Outcome};
+use crate::error::{Error, Result};
+use clap::Args;
 use fricosc::Shape;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::time::Instant;
-
 /// The edge velocities of issue 8: zero, denormal-small, `1 -+ 2^-52`, huge.
 pub const EDGE_VBAR: [f64; 9] =
     [0.0, 5e-324, 1e-300, 1e-16, 1.0 - f64::EPSILON, 1.0, 1.0 + f64::EPSILON, 1e300, f64::MAX];
@@ -87,7 +89,7 @@ fn line(rng: &mut Rng) -> (f64, Vec<f64>) {
 }
 
 /// Run about `points` points (rounded up to whole lines) over the shapes, in parallel.
-pub fn run(points: usize, seed: u64, shapes: &[Shape]) -> StressReport {
+pub fn check(points: usize, seed: u64, shapes: &[Shape]) -> StressReport {
     let t0 = Instant::now();
     let lines_per_shape = points.div_ceil(LINE * shapes.len().max(1));
     let jobs: Vec<(usize, u64)> =
@@ -227,4 +229,28 @@ pub fn default_shapes() -> Vec<Shape> {
         .iter()
         .filter_map(|s| Shape::parse(s).ok())
         .collect()
+}
+
+#[derive(Args)]
+pub struct StressArgs {
+    /// Points (rounded up to whole lines of 16).
+    #[arg(long, default_value_t = 1_000_000)]
+    pub points: usize,
+    /// Seed of the point generator.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+}
+
+/// Most points one stress run may take.
+pub const MAX_POINTS: usize = 100_000_000;
+
+/// Run and print the report; [`Outcome::Negative`] when any check failed.
+pub fn run(a: StressArgs) -> Result<Outcome> {
+    let (points, seed) = (a.points, a.seed);
+    if points > MAX_POINTS {
+        return Err(Error::TooLarge { what: "stress points".into(), count: points as u128, limit: MAX_POINTS as u128 });
+    }
+    let r = check(points, seed, &crate::stress::default_shapes());
+    emit(&format!("{}\n", to_json(&r)?))?;
+    Ok(if r.failure_count == 0 { Outcome::Done } else { Outcome::Negative })
 }

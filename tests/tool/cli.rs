@@ -369,7 +369,7 @@ fn plot_draws_the_users_curves_and_refuses_bad_requests() {
     let out = fricosc(&["plot", "--shape", "cone", "--amp", "0.5,1,2", "--vbar", "0:1.2:61"], None);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let svg = String::from_utf8(out.stdout).unwrap();
-    assert!(fricosc_cli::plot::parse_size(&svg).is_ok());
+    assert!(fricosc_cli::chart::parse_size(&svg).is_ok());
     assert_eq!(svg.matches("<g data-series=").count(), 3);
     assert!(svg.contains("v\u{304}"));
     // Removed when dropped, also when the test fails.

@@ -3,8 +3,8 @@
 //! parses, tells its curves apart, names its axes' symbols and renders to a PNG
 //! of the stated size.
 use fricosc::Shape;
+use fricosc_cli::chart::{self, Rgb};
 use fricosc_cli::figures::{build, chart, XAxis};
-use fricosc_cli::plot::{self, Rgb};
 
 #[test]
 fn exact_curves_equal_the_solver_and_every_figure_is_there() {
@@ -164,8 +164,8 @@ fn series_styles(svg: &str) -> Vec<(String, Rgb, String, String)> {
 fn every_drawing_parses_tells_curves_apart_and_renders() {
     for f in build().unwrap() {
         let svg = fricosc_cli::export::export(&f, fricosc_cli::export::Format::Svg).unwrap();
-        let (w, h) = plot::parse_size(&svg).unwrap_or_else(|e| panic!("{}: {e}", f.name));
-        assert_eq!(w, plot::WIDTH, "{}: 8.5 cm wide", f.name);
+        let (w, h) = chart::parse_size(&svg).unwrap_or_else(|e| panic!("{}: {e}", f.name));
+        assert_eq!(w, chart::WIDTH, "{}: 8.5 cm wide", f.name);
         // Axis symbols in Unicode, never the ASCII stand-ins.
         let symbol = match f.x {
             XAxis::Vbar => "v\u{304}",
@@ -181,7 +181,7 @@ fn every_drawing_parses_tells_curves_apart_and_renders() {
         }
         // No two series alike: the library's own check, and the same read back from the SVG.
         let c = chart(&f);
-        plot::distinct(&c, 8.0).unwrap_or_else(|e| panic!("{}: {e}", f.name));
+        chart::distinct(&c, 8.0).unwrap_or_else(|e| panic!("{}: {e}", f.name));
         let styles = series_styles(&svg);
         assert_eq!(styles.len(), f.curves.len(), "{}", f.name);
         for (i, a) in styles.iter().enumerate() {
@@ -195,10 +195,10 @@ fn every_drawing_parses_tells_curves_apart_and_renders() {
         let sixth = svg.split(" L").nth(5).or_else(|| svg.split(" x=\"").nth(5));
         assert!(svg.contains(".") && sixth.is_some_and(|s| s.contains('.')), "{}", f.name);
         // The PNG: 300 dpi of the drawing's size in pt.
-        let png = plot::png(&svg).unwrap();
+        let png = chart::png(&svg).unwrap();
         assert_eq!(&png[1..4], b"PNG");
         let be = |k: usize| u32::from_be_bytes([png[k], png[k + 1], png[k + 2], png[k + 3]]);
-        let px = |pt: f64| (pt / 72.0 * plot::DPI).round() as u32;
+        let px = |pt: f64| (pt / 72.0 * chart::DPI).round() as u32;
         assert_eq!((be(16), be(20)), (px(w), px(h)), "{}", f.name);
     }
 }
@@ -207,13 +207,13 @@ fn every_drawing_parses_tells_curves_apart_and_renders() {
 #[test]
 fn distinct_catches_a_repeated_style() {
     let mut c = chart(&build().unwrap()[0]);
-    assert!(plot::distinct(&c, 8.0).is_ok());
+    assert!(chart::distinct(&c, 8.0).is_ok());
     c.series[2].style = c.series[0].style;
-    assert!(plot::distinct(&c, 8.0).is_err());
+    assert!(chart::distinct(&c, 8.0).is_err());
     // Near colours count as the same.
     let s = c.series[0].style;
-    c.series[2].style = plot::Style { color: Rgb(s.color.0.saturating_add(3), s.color.1, s.color.2), ..s };
-    assert!(plot::distinct(&c, 8.0).is_err());
+    c.series[2].style = chart::Style { color: Rgb(s.color.0.saturating_add(3), s.color.1, s.color.2), ..s };
+    assert!(chart::distinct(&c, 8.0).is_err());
 }
 
 /// `plot`'s limit of 12 amplitudes keeps neighbouring colours apart.
@@ -223,7 +223,7 @@ fn the_largest_user_plot_tells_its_curves_apart() {
     let xs: Vec<f64> = (0..=12).map(|k| k as f64 * 0.1).collect();
     let f = fricosc_cli::figures::user(&Shape::flat(), &amps, &xs, false).unwrap();
     assert_eq!(f.curves.len(), 12);
-    plot::distinct(&chart(&f), 8.0).unwrap();
+    chart::distinct(&chart(&f), 8.0).unwrap();
     // With a 13th amplitude the limit is enforced.
     let mut more = amps.clone();
     more.push(9.0);

@@ -287,7 +287,7 @@ fn scene_plot_draws_one_curve_per_amplitude() {
         let bytes = std::fs::read(&path).unwrap();
         if name.ends_with("svg") {
             let svg = String::from_utf8(bytes).unwrap();
-            assert!(fricosc_cli::plot::parse_size(&svg).is_ok());
+            assert!(fricosc_cli::chart::parse_size(&svg).is_ok());
             assert_eq!(svg.matches("<g data-series=").count(), 4);
             for label in ["60 nm", "100 nm", "160 nm", "270 nm", "(m/s)", "μ"] {
                 assert!(svg.contains(label), "{label}");
@@ -308,7 +308,7 @@ fn a_single_velocity_scene_draws() {
     for v in [0.0, 1e-3] {
         let r = run(&sphere(2e11, 5e-3, 1e-6, 1e-7, 1e3, &[v]));
         let svg = fricosc_cli::scene::family_chart(&[("one".to_string(), r)]).svg();
-        assert!(fricosc_cli::plot::parse_size(&svg).is_ok(), "{v}");
+        assert!(fricosc_cli::chart::parse_size(&svg).is_ok(), "{v}");
         assert!(!svg.contains("NaN") && !svg.contains("inf") && svg.contains("<circle"), "{v}");
     }
 }

@@ -1,11 +1,11 @@
 //! Numerical stress: random and edge points, and continuity across every regime boundary.
 use fricosc::DEFAULT_TOL;
-use fricosc_cli::stress::{default_shapes, run};
+use fricosc_cli::stress::{check, default_shapes};
 
 /// A 10^5-point subset of `fricosc stress --points 1000000` (README: Stress).
 #[test]
 fn a_hundred_thousand_random_and_edge_points_pass_every_check() {
-    let r = run(100_000, 7, &default_shapes());
+    let r = check(100_000, 7, &default_shapes());
     assert!(r.points >= 100_000);
     // Oscillation in the sliding direction too: a hundredth as many.
     assert!(r.oscillation_points >= 1_000, "{}", r.oscillation_points);

@@ -250,7 +250,7 @@ pub struct Batch<'a> {
 /// input in errors. The rows are read and checked one after another (the
 /// first at fault is the one named); what is kept of each is its text, its
 /// job and its results, evaluated in parallel once every row is checked.
-pub fn run<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Result<Batch<'a>> {
+pub fn evaluate<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Result<Batch<'a>> {
     let bad = |reason: String| Error::Parse { context: source.into(), reason };
     let mut array = ArrayRows::new(text).map_err(bad)?;
     let mut shapes = Shapes::new(stepping);

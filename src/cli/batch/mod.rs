@@ -21,17 +21,17 @@
 //! The readers are `serde_json` (raw values borrowed from the input) and
 //! `csv`; numbers are `str::parse`'s.
 
+use crate::cmd::{io_err, read_input};
 use crate::error::{Error, Result};
 use fricosc::stepper::Stepping;
 use fricosc::{Conditions, Ratio, Shape};
 use rayon::prelude::*;
 use std::collections::HashMap;
-use std::io::{BufRead, Write};
-
+use std::io::{self, BufRead, Write};
 mod csv_rows;
 mod json_rows;
 
-pub use json_rows::{run, Batch};
+pub use json_rows::{evaluate, Batch};
 
 /// Most rows one JSON array may hold.
 pub const MAX_ROWS: usize = crate::grid::MAX_ROWS;
@@ -386,6 +386,40 @@ mod tests {
             let fault = shapes.check(&rows, &read, &mut jobs).unwrap_err();
             assert_eq!(fault.0, at, "{fault:?}");
             assert_eq!(jobs.len(), 2);
+        }
+    }
+}
+
+#[derive(clap::Args)]
+pub struct BatchArgs {
+    /// Input file; stdin when absent or '-'.
+    pub file: Option<String>,
+    /// Input and output format: json (an array), jsonl (one object per line, streamed) or csv
+    /// (streamed); default: by the file's extension (.jsonl, .ndjson, .csv), else json.
+    #[arg(long)]
+    pub format: Option<String>,
+    #[command(flatten)]
+    pub method: crate::cmd::MethodArgs,
+}
+
+pub fn run(a: BatchArgs) -> Result<()> {
+    let stepping: Option<Stepping> = a.method.stepping()?;
+    let (file, format) = (a.file, a.format);
+    let path = file.clone().unwrap_or_else(|| "-".into());
+    match Format::choose(format.as_deref(), &path)? {
+        Format::Json => {
+            let (text, source) = read_input(file)?;
+            let rows = evaluate(&text, &source, stepping)?;
+            let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
+            rows.write(&mut out).and_then(|()| out.flush()).map_err(io_err)
+        }
+        streamed => {
+            // Streaming reads its input twice (check, then compute and write),
+            // the second time exactly the bytes the first one checked; an input
+            // of one chunk (65,536 rows) once.
+            let input = crate::twopass::TwoPass::open(&path)?;
+            let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
+            stream(streamed, &input, stepping, &mut out).map(|_| ())
         }
     }
 }

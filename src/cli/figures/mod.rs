@@ -2,12 +2,13 @@
 //! with the seed's approximations on each (dashed), as JSON, CSV and SVG.
 //! Every exact point is the solver's value ([`fricosc::Shape::evaluate`]).
 
+use crate::chart::{self, Axis, Chart, Dash, Key, Rule, Series, Style};
+use crate::cmd::emit;
 use crate::error::{Error, Result};
-use crate::plot::{self, Axis, Chart, Dash, Key, Rule, Series, Style};
+use clap::Args;
 use fricosc::seed;
 use fricosc::Shape;
 use serde::Serialize;
-
 mod oscillation;
 use oscillation::{combined_mu, oscillation_figures};
 pub use oscillation::{COMBINED, COMBINED_TS, MAP_T, TANGENTIAL_AMPS};
@@ -53,7 +54,7 @@ pub struct Figure {
     pub title: String,
     /// The horizontal axis' quantity.
     pub x: XAxis,
-    /// Axis label (markup of [`crate::plot`]: `_{}` subscripts).
+    /// Axis label (markup of [`crate::chart`]: `_{}` subscripts).
     pub x_label: String,
     /// Axis label.
     pub y_label: String,
@@ -434,10 +435,10 @@ pub fn chart(f: &Figure) -> Chart {
     amps.sort_by(f64::total_cmp);
     amps.dedup();
     let nonzero: Vec<f64> = amps.iter().copied().filter(|a| *a != 0.0).collect();
-    let other = plot::Rgb(0x99, 0x99, 0x99);
+    let other = chart::Rgb(0x99, 0x99, 0x99);
     let color = |a: f64| match nonzero.iter().position(|x| *x == a) {
-        Some(i) => plot::family_color(i, nonzero.len()),
-        None if a == 0.0 && amps.contains(&0.0) => plot::BLACK,
+        Some(i) => chart::family_color(i, nonzero.len()),
+        None if a == 0.0 && amps.contains(&0.0) => chart::BLACK,
         None => other,
     };
     let bold = |a: f64| if f.bold_critical && a == 1.0 { 2.0 } else { 1.0 };
@@ -461,18 +462,18 @@ pub fn chart(f: &Figure) -> Chart {
     for c in &f.curves {
         let (style, legend) = match c.amp {
             Some(a) if c.kind == "yours" => {
-                (Style { color: color(a), dash: None, width: 1.0, marker: Some(plot::Marker::Circle) }, false)
+                (Style { color: color(a), dash: None, width: 1.0, marker: Some(chart::Marker::Circle) }, false)
             }
             Some(a) => (Style::dashed(color(a), dash(c)).width(if c.kind == "exact" { bold(a) } else { 1.0 }), false),
             None => {
-                let color = plot::OKABE_ITO[loners % plot::OKABE_ITO.len()];
+                let color = chart::OKABE_ITO[loners % chart::OKABE_ITO.len()];
                 // A map's tiles in the light colours (Okabe-Ito after black).
-                let tile = plot::OKABE_ITO[(loners + 1) % plot::OKABE_ITO.len()];
+                let tile = chart::OKABE_ITO[(loners + 1) % chart::OKABE_ITO.len()];
                 let s = match c.kind.as_str() {
                     // A map: markers only.
-                    "regime" => Style { color: tile, dash: None, width: 1.0, marker: Some(plot::Marker::Square) },
+                    "regime" => Style { color: tile, dash: None, width: 1.0, marker: Some(chart::Marker::Square) },
                     "sign change" => {
-                        Style { color: plot::BLACK, dash: None, width: 1.0, marker: Some(plot::Marker::Dot) }
+                        Style { color: chart::BLACK, dash: None, width: 1.0, marker: Some(chart::Marker::Dot) }
                     }
                     _ => Style::dashed(color, dash(c)),
                 };
@@ -493,7 +494,7 @@ pub fn chart(f: &Figure) -> Chart {
         for &a in &amps {
             key.push(Key::Entry(Style::line(color(a)).width(bold(a)), crate::output::num(a)));
         }
-        let grey = plot::Rgb(0x55, 0x55, 0x55);
+        let grey = chart::Rgb(0x55, 0x55, 0x55);
         let family_eqs: Vec<&str> = eqs
             .iter()
             .copied()
@@ -505,7 +506,7 @@ pub fn chart(f: &Figure) -> Chart {
             key.push(Key::Entry(Style::line(grey), "exact".into()));
         }
         if yours {
-            let dots = Style { color: grey, dash: None, width: 1.0, marker: Some(plot::Marker::Circle) };
+            let dots = Style { color: grey, dash: None, width: 1.0, marker: Some(chart::Marker::Circle) };
             key.push(Key::Entry(dots, "yours".into()));
         }
         if !family_eqs.is_empty() {
@@ -566,9 +567,24 @@ pub fn write_all(out: &crate::outdir::OutDir) -> Result<Vec<String>> {
             out.write(&format!("{}.{ext}", f.name), export(&f, format)?.as_bytes())?;
         }
         let png =
-            plot::png(&chart(&f).svg()).map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") })?;
+            chart::png(&chart(&f).svg()).map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") })?;
         out.write(&format!("{}.png", f.name), &png)?;
         names.push(f.name);
     }
     Ok(names)
+}
+
+#[derive(Args)]
+pub struct FiguresArgs {
+    /// Output directory (created if missing).
+    #[arg(long)]
+    pub out: String,
+}
+
+/// Write every figure into `--out`.
+pub fn run(a: FiguresArgs) -> Result<()> {
+    let out = a.out.as_str();
+    let dir = crate::outdir::OutDir::open("--out", out)?;
+    let names = crate::figures::write_all(&dir)?;
+    emit(&format!("wrote {} figures to {out}: {}\n", names.len(), names.join(", ")))
 }

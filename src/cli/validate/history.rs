@@ -1,7 +1,8 @@
 //! `validate --history`: a force history file as read, and the reports of its
 //! comparison ([`fricosc::validation::compare_history`]).
 
-use super::{count, csv_text, findings_text, json_name, wrap};
+use super::table::wrap;
+use super::{count, csv_text, findings_text, json_name};
 use crate::error::{Error, Result};
 use crate::tables::{read_columns, Kind};
 use fricosc::validation::HistoryValidation;

@@ -1,404 +1,481 @@
-//! `validate`: read another code's table or history and compare it with the
-//! exact solver ([`fricosc::validation`]); the reports (summary, JSON, CSV).
-//!
-//! A table has the columns `vbar` or `vhat` (eq. 15, `vbar = vhat / amp`),
-//! `amp`, and `mu_ratio` or `mu` (then `mu_ratio = mu / mu0`, `--mu0`
-//! required), optionally `shape` (one for the whole table); any file
-//! [`crate::tables`] reads (CSV as numpy, pandas or a spreadsheet writes
-//! it, fricosc's or pandas' JSON, JSON Lines). Other columns are listed as not read.
+//! `fricosc validate`: another code's table against the exact values, with
+//! errors by regime and amplitude and findings that point at bugs.
 
 mod history;
 mod series;
+mod table;
 
 pub use history::{history_csv, history_summary, read_history, HistoryColumns};
 pub use series::{series_csv, series_summary, series_svg};
+pub use table::*;
 
+use crate::cmd::{io_err, nonneg, number, positive, read_input, Outcome};
 use crate::error::{Error, Result};
-use crate::tables::{read_columns, Kind};
-use fricosc::validation::{rows_from_columns, AtRest, Finding, Summary, Validation};
+use fricosc::stepper::Stepping;
+use fricosc::validation::{AtRest, Check, Convergence, HistoryData, HistoryValidation, TimeAxis, Validation};
+use fricosc::Shape;
+use std::io::{self, IsTerminal, Write};
 
-/// Most rows one file may hold.
-pub const MAX_ROWS: usize = crate::grid::MAX_ROWS;
-
-/// One row as read: the velocity column (`vbar` or `vhat`) and the friction
-/// column (`mu_ratio` or `mu`) as the file names them.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RawRow {
-    /// `vbar`, or `vhat` if [`RawTable::vhat`].
-    pub velocity: f64,
-    /// Amplitude `du/u0`.
-    pub amp: f64,
-    /// `mu_ratio`, or `mu` if [`RawTable::mu`].
-    pub friction: f64,
-}
-
-/// A table as read.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RawTable {
-    /// The shape the file names (one for the whole table), if any.
+/// The options of `validate`.
+#[derive(clap::Args)]
+pub struct ValidateArgs {
+    /// Shape of the table's contact, where the table names none (a JSON 'shape' field or a
+    /// CSV 'shape' column decides; giving a different one is an error). Default: flat.
+    #[arg(long)]
     pub shape: Option<String>,
-    /// True if the velocities are `vhat`.
-    pub vhat: bool,
-    /// True if the friction column is `mu` (not divided by `mu0`).
-    pub mu: bool,
-    /// The rows.
-    pub rows: Vec<RawRow>,
-    /// Columns that are not read.
-    pub ignored_columns: Vec<String>,
-    /// How the file was read ("CSV (',' delimited)", "pandas 'columns' JSON", ...).
-    pub format: String,
-    /// Under oscillation in the sliding direction: `(tangential_amp, phase)`
-    /// of every row (a missing `phase` column is 0).
-    pub tangential: Option<Vec<(f64, f64)>>,
+    /// Table file (JSON or CSV; columns vbar or vhat, amp, mu_ratio or mu); stdin when '-'.
+    /// With --series: several, each with its resolution (run@1000.csv, or run.csv@1000).
+    #[arg(required = true)]
+    pub files: Vec<String>,
+    /// A convergence study: the same table at several resolutions (e.g. steps per period);
+    /// reports the observed order per row and regime, the error constant, the Richardson value
+    /// and the resolution needed for --target.
+    #[arg(long)]
+    pub series: bool,
+    /// With --series: the target error for the needed resolution.
+    #[arg(long, allow_hyphen_values = true, value_parser = positive, requires = "series")]
+    pub target: Option<f64>,
+    /// With --series: draw the errors against the resolution into this file (.svg or .png).
+    #[arg(long, requires = "series")]
+    pub plot: Option<String>,
+    #[command(flatten)]
+    pub history: HistoryArgs,
+    /// Largest acceptable |mu_ratio - exact| (exit 1 beyond it).
+    #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
+    pub max_error: Option<f64>,
+    /// Exit 0 whatever the findings and errors (the report is printed all the same).
+    #[arg(long)]
+    pub report_only: bool,
+    /// Run fricosc's stepping peer (the seed's scheme) at M steps per period on every row
+    /// and set its error beside yours (findings where yours is ten times its).
+    #[arg(long, value_name = "M", value_parser = clap::value_parser!(u64).range(1..=100_000_000), conflicts_with_all = ["series", "on"])]
+    pub peer: Option<u64>,
+    /// With --peer and a curved shape: the peer's springs (default: M).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=100_000_000), requires = "peer")]
+    pub peer_springs: Option<u64>,
+    /// What a vbar = 0 row is compared with: 'sliding' (the limit vbar -> 0+, mu_static) or
+    /// 'relaxed' (a stepper started from relaxed springs at exactly zero velocity: 0).
+    #[arg(long, default_value = "sliding")]
+    pub at_rest: String,
+    /// Coulomb coefficient, for a table that gives 'mu' (mu_ratio = mu / mu0), or a history in
+    /// your units (tangential / (mu0 F0)).
+    #[arg(long, allow_hyphen_values = true, value_parser = positive)]
+    pub mu0: Option<f64>,
+    /// How far a value may leave [0, 1], differ from 1 above vbar = 1, or decrease in vbar
+    /// before it is reported as a finding.
+    #[arg(long, default_value = "1e-9", allow_hyphen_values = true, value_parser = nonneg)]
+    pub tolerance: f64,
+    /// summary (a short report; the default on a terminal), json (compact; the default
+    /// otherwise) or csv (one line per row; with --history one per sample of the last period).
+    #[arg(long)]
+    pub format: Option<String>,
 }
 
-const TABLE_COLUMNS: [(&str, Kind); 8] = [
-    ("vbar", Kind::Number),
-    ("vhat", Kind::Number),
-    ("amp", Kind::Number),
-    ("mu_ratio", Kind::Number),
-    ("mu", Kind::Number),
-    ("shape", Kind::Label),
-    ("tangential_amp", Kind::Number),
-    ("phase", Kind::Number),
-];
+/// The options of `validate --history`.
+#[derive(clap::Args)]
+pub struct HistoryArgs {
+    /// The file is a force history (columns tau or t, tangential, optionally normal; forces in
+    /// units of the static force F0 and mu0 F0, or yours with --static-force and --mu0) at --vbar
+    /// (or --vhat) and --amp: the time origin from the normal force, errors of both forces over the
+    /// last period, periodicity, and the stick/slip/contact events with timing errors.
+    #[arg(long = "history", requires = "amp")]
+    pub on: bool,
+    /// With --history: the velocity vbar (eq. 3).
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "on", conflicts_with = "vhat")]
+    pub vbar: Option<f64>,
+    /// With --history: the velocity vhat (eq. 15), instead of --vbar.
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "on")]
+    pub vhat: Option<f64>,
+    /// With --history: the amplitude du/u0.
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "on")]
+    pub amp: Option<f64>,
+    /// With --history and a time column t: the angular frequency (tau = omega t); without it
+    /// the period is found from the normal force.
+    #[arg(long, allow_hyphen_values = true, value_parser = positive, requires = "on")]
+    pub omega: Option<f64>,
+    /// With --history: forces in your units, where F0, the normal force at the mean
+    /// indentation u0 without oscillation, is this value (normal / F0; tangential / (mu0 F0)
+    /// with --mu0): kz u0 for the flat punch, (4/3) E* R^1/2 u0^3/2 for the paraboloid (Hertz).
+    /// Default: already normalised.
+    #[arg(long, visible_alias = "kz-u0", allow_hyphen_values = true, value_parser = positive, requires = "on")]
+    pub static_force: Option<f64>,
+}
 
-/// Which of two alternative columns is present (exactly one must be): the second's?
-fn one_of(c: &crate::tables::Columns, k: [usize; 2], what: &str) -> std::result::Result<bool, String> {
-    let [a, b] = k.map(|k| TABLE_COLUMNS[k].0);
-    match (c.has(k[0]), c.has(k[1])) {
-        (true, false) => Ok(false),
-        (false, true) => Ok(true),
-        (true, true) => Err(format!("both '{a}' and '{b}' given: one {what} column only")),
-        (false, false) => Err(format!(
-            "no column '{a}' (or '{b}'): a table needs vbar (or vhat), amp and mu_ratio (or mu); this one \
-             ({}) has {}",
-            c.format,
-            if c.names.is_empty() { "no names".to_string() } else { c.names.join(", ") }
-        )),
+/// Where the shape came from.
+#[derive(serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+enum ShapeSource {
+    File,
+    Option,
+    Default,
+}
+
+#[derive(serde::Serialize)]
+struct Report<'a> {
+    #[serde(flatten)]
+    validation: &'a Validation,
+    shape_source: ShapeSource,
+    format: &'a str,
+    #[serde(skip_serializing_if = "<[String]>::is_empty")]
+    ignored_columns: &'a [String],
+}
+
+/// Compact JSON (one line) of a report, newline-terminated.
+fn compact<T: serde::Serialize>(value: &T) -> Result<String> {
+    serde_json::to_string(value)
+        .map(|s| s + "\n")
+        .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
+}
+
+/// Write a report to stdout.
+fn print(body: &str) -> Result<()> {
+    let mut out = io::BufWriter::new(io::stdout().lock());
+    out.write_all(body.as_bytes()).map_err(io_err)?;
+    out.flush().map_err(io_err)
+}
+
+/// The exit: [`Outcome::Negative`] on findings or an error beyond `--max-error`,
+/// unless `--report-only`.
+fn outcome(a: &ValidateArgs, findings: bool, max_abs_error: f64) -> Outcome {
+    // A NaN error is beyond any bound.
+    let beyond = a.max_error.is_some_and(|e| max_abs_error.is_nan() || max_abs_error > e);
+    if !a.report_only && (findings || beyond) {
+        Outcome::Negative
+    } else {
+        Outcome::Done
     }
 }
 
-/// Read a table (any format of [`crate::tables`]); `source` names it in
-/// errors. Every row is read and checked before anything is compared.
-pub fn read_table(text: &str, source: &str) -> Result<RawTable> {
-    let err = |reason: String| Error::Parse { context: source.into(), reason };
-    let mut c = read_columns(text, source, &TABLE_COLUMNS, MAX_ROWS)?;
-    let vhat = one_of(&c, [0, 1], "velocity").map_err(err)?;
-    let mu = one_of(&c, [3, 4], "friction").map_err(err)?;
-    let amp = c.numbers[2]
-        .take()
-        .ok_or_else(|| err(format!("no column 'amp'; this table ({}) has {}", c.format, c.names.join(", "))))?;
-    let velocity = c.numbers[usize::from(vhat)].take().unwrap_or_default();
-    let friction = c.numbers[3 + usize::from(mu)].take().unwrap_or_default();
-    let mut shapes = c.labels[5].take().unwrap_or_default();
-    if shapes.len() > 1 {
-        return Err(err(format!(
-            "the table names more than one shape ({}): validate one shape at a time",
-            shapes.iter().map(|s| format!("'{s}'")).collect::<Vec<_>>().join(", ")
-        )));
-    }
-    let tangential = match (c.numbers[6].take(), c.numbers[7].take()) {
-        (None, Some(_)) => return Err(err("a column 'phase' without 'tangential_amp'".into())),
-        (None, None) => None,
-        (Some(_), _) if !vhat => {
-            return Err(err(
-                "a table with 'tangential_amp' needs its velocities as 'vhat' (vbar = vhat/amp is undefined \
-                 without normal oscillation)"
-                    .into(),
-            ))
+/// Prints the comparison; [`Outcome::Negative`] on findings or beyond `--max-error`.
+pub fn run(a: ValidateArgs) -> Result<Outcome> {
+    let max_error = a.max_error;
+    let at_rest = match a.at_rest.as_str() {
+        "sliding" => AtRest::Sliding,
+        "relaxed" => AtRest::Relaxed,
+        other => {
+            return Err(Error::Parse {
+                context: "--at-rest".into(),
+                reason: format!("'{other}' is neither 'sliding' nor 'relaxed'"),
+            })
         }
-        (Some(t), p) => Some(t.iter().enumerate().map(|(i, &t)| (t, p.as_ref().map_or(0.0, |p| p[i]))).collect()),
     };
-    let read = [
-        if vhat { "vhat" } else { "vbar" },
-        "amp",
-        if mu { "mu" } else { "mu_ratio" },
-        "shape",
-        "tangential_amp",
-        "phase",
-    ];
-    let ignored_columns = c.names.iter().filter(|h| !read.contains(&h.as_str())).cloned().collect();
-    let rows = (0..c.rows).map(|i| RawRow { velocity: velocity[i], amp: amp[i], friction: friction[i] }).collect();
-    Ok(RawTable { shape: shapes.pop(), vhat, mu, rows, ignored_columns, format: c.format, tangential })
-}
-
-/// `(vbar, amp, mu_ratio)` of every row ([`fricosc::validation::rows_from_columns`]).
-pub fn normalise(table: &RawTable, mu0: Option<f64>, source: &str) -> Result<Vec<(f64, f64, f64)>> {
-    if table.tangential.is_some() {
+    let (mu0, tolerance) = (a.mu0, a.tolerance);
+    let format = match a.format.as_deref() {
+        Some(f @ ("summary" | "json" | "csv")) => f.to_string(),
+        Some(other) => {
+            return Err(Error::Parse {
+                context: "--format".into(),
+                reason: format!("'{other}' is not one of summary, json, csv"),
+            })
+        }
+        // A person at a terminal reads the summary; a pipe gets JSON.
+        None if io::stdout().is_terminal() => "summary".into(),
+        None => "json".into(),
+    };
+    let h = &a.history;
+    let check = Check::default().with_at_rest(at_rest).with_tolerance(tolerance);
+    if a.series {
+        if h.on {
+            return run_history_series(&a, h, mu0, tolerance, &format);
+        }
+        return run_series(&a, &check, mu0, &format);
+    }
+    if h.on {
+        return run_history(&a, h, mu0, tolerance, &format);
+    }
+    if a.files.len() != 1 || a.target.is_some() || a.plot.is_some() {
         return Err(Error::Parse {
-            context: source.into(),
-            reason: "a table under oscillation in the sliding direction (column 'tangential_amp'): only a \
-                     single table's validate compares it"
-                .into(),
+            context: "validate".into(),
+            reason: "several files, --target and --plot need --series".into(),
         });
     }
-    let v: Vec<f64> = table.rows.iter().map(|r| r.velocity).collect();
-    let a: Vec<f64> = table.rows.iter().map(|r| r.amp).collect();
-    let m: Vec<f64> = table.rows.iter().map(|r| r.friction).collect();
-    rows_from_columns(&v, &a, &m, table.vhat, table.mu, mu0)
-        .map_err(|e| Error::Parse { context: source.into(), reason: e.to_string() })
-}
-
-/// `[vhat, amp, tangential_amp, phase, mu_ratio]` of a table under
-/// oscillation in the sliding direction (`mu / mu0` where the column is `mu`).
-pub fn oscillation_rows(table: &RawTable, mu0: Option<f64>, source: &str) -> Result<Vec<[f64; 5]>> {
-    let bad = |reason: &str| Error::Parse { context: source.into(), reason: reason.into() };
-    let tangential = table.tangential.as_ref().ok_or_else(|| bad("no column 'tangential_amp'"))?;
-    let scale = match (table.mu, mu0) {
-        (true, Some(m)) => m,
-        (true, None) => return Err(bad("the column 'mu' needs --mu0 (mu_ratio = mu / mu0)")),
-        (false, Some(_)) => return Err(bad("--mu0 applies to a column 'mu'; this table has 'mu_ratio'")),
-        (false, None) => 1.0,
-    };
-    Ok(table.rows.iter().zip(tangential).map(|(r, &(t, p))| [r.velocity, r.amp, t, p, r.friction / scale]).collect())
-}
-
-/// The summary of an oscillation table's comparison.
-pub fn oscillation_summary(v: &fricosc::validation::OscillationValidation, source: &str) -> String {
-    use std::fmt::Write;
-    let s = &v.summary;
-    let mut out = format!(
-        "{source}: {} rows of {} under oscillation in the sliding direction\n\
-         largest error {:.3e} (row {}), rms {:.3e}, largest relative {:.3e}\n",
-        s.n, v.shape, s.max_abs_error, s.worst_row, s.rms_error, s.max_rel_error
-    );
-    if let Some(p) = &v.peer {
-        let _ = writeln!(
-            out,
-            "stepping peer ({} steps a period, {} springs): largest error {:.3e}, rms {:.3e}",
-            p.steps_per_period, p.springs, p.max_abs_error, p.rms_error
-        );
-    }
-    out.push_str("by regime:\n");
-    for r in &v.by_regime {
-        let _ = writeln!(
-            out,
-            "  {:>5} rows  largest {:.3e}  rms {:.3e}  {}",
-            r.summary.n, r.summary.max_abs_error, r.summary.rms_error, r.regime
-        );
-    }
-    if v.findings.is_empty() {
-        out.push_str("findings: none\n");
-    }
-    for f in &v.findings {
-        let _ = writeln!(out, "finding: {} ({} rows, first {:?}): {}", json_name(f.kind), f.count, f.rows, f.hint);
-    }
-    out
-}
-
-/// Every compared row of an oscillation table as CSV.
-pub fn oscillation_csv(v: &fricosc::validation::OscillationValidation) -> Result<String> {
-    let n = crate::output::num;
-    let header =
-        ["row", "vhat", "amp", "tangential_amp", "phase", "mu_ratio", "exact", "error", "relative_error", "regime"];
-    let rows = v.rows.iter().map(|r| {
-        let cells = vec![
-            r.row.to_string(),
-            n(r.vhat),
-            n(r.amp),
-            n(r.tangential_amp),
-            n(r.phase),
-            n(r.mu_ratio),
-            n(r.exact),
-            n(r.error),
-            r.relative_error.map(n).unwrap_or_default(),
-            r.regime.clone(),
-        ];
-        (cells, r.peer_error)
-    });
-    compared_csv(&header, v.peer.is_some(), rows)
-}
-
-/// CSV of compared rows: `header`, then each row's cells, with a
-/// `peer_error` column where the comparison ran the peer.
-fn compared_csv(header: &[&str], peer: bool, rows: impl Iterator<Item = (Vec<String>, Option<f64>)>) -> Result<String> {
-    let mut head: Vec<String> = header.iter().map(|h| h.to_string()).collect();
-    if peer {
-        head.push("peer_error".into());
-    }
-    let mut records = vec![head];
-    for (mut cells, p) in rows {
-        if peer {
-            cells.push(p.map(crate::output::num).unwrap_or_default());
+    let (text, source) = read_input(Some(a.files[0].clone()))?;
+    let table = crate::validate::read_table(&text, &source)?;
+    drop(text);
+    let (shape, shape_source) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
+    let peer = a.peer.map(|m| Stepping { steps_per_period: m as usize, springs: a.peer_springs.unwrap_or(m) as usize });
+    if table.tangential.is_some() {
+        let rows = crate::validate::oscillation_rows(&table, mu0, &source)?;
+        let v = fricosc::validation::compare_oscillation(&shape, &rows, &check.with_peer(peer))?;
+        #[derive(serde::Serialize)]
+        struct OscillationReport<'a> {
+            #[serde(flatten)]
+            validation: &'a fricosc::validation::OscillationValidation,
+            shape_source: ShapeSource,
+            format: &'a str,
+            #[serde(skip_serializing_if = "<[String]>::is_empty")]
+            ignored_columns: &'a [String],
         }
-        records.push(cells);
+        let report = OscillationReport {
+            validation: &v,
+            shape_source,
+            format: &table.format,
+            ignored_columns: &table.ignored_columns,
+        };
+        let body = match format.as_str() {
+            "json" => compact(&report)?,
+            "csv" => crate::validate::oscillation_csv(&v)?,
+            _ => crate::validate::oscillation_summary(&v, &source),
+        };
+        print(&body)?;
+        return Ok(outcome(&a, !v.findings.is_empty(), max_error.map_or(0.0, |_| v.summary.max_abs_error)));
     }
-    csv_text(&records)
-}
-
-/// A name as JSON writes it.
-pub(crate) fn json_name<T: serde::Serialize>(x: T) -> String {
-    serde_json::to_value(x).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default()
-}
-
-/// Text of a CSV writer's records (or an internal error).
-pub(crate) fn csv_text(records: &[Vec<String>]) -> Result<String> {
-    let fail = |e: String| Error::Internal { what: format!("writing CSV: {e}") };
-    let mut w = csv::Writer::from_writer(vec![]);
-    for r in records {
-        w.write_record(r).map_err(|e| fail(e.to_string()))?;
-    }
-    let bytes = w.into_inner().map_err(|e| fail(e.to_string()))?;
-    String::from_utf8(bytes).map_err(|e| fail(e.to_string()))
-}
-
-/// Every compared row as CSV (one header line).
-pub fn rows_csv(v: &Validation) -> Result<String> {
-    let n = crate::output::num;
-    let header = ["row", "vbar", "amp", "mu_ratio", "exact", "error", "relative_error", "regime", "jumping_share"];
-    let rows = v.rows.iter().map(|r| {
-        let cells = vec![
-            r.row.to_string(),
-            n(r.vbar),
-            n(r.amp),
-            n(r.mu_ratio),
-            n(r.exact),
-            n(r.error),
-            r.relative_error.map(n).unwrap_or_default(),
-            json_name(r.regime),
-            n(r.jumping_share),
-        ];
-        (cells, r.peer_error)
-    });
-    compared_csv(&header, v.peer.is_some(), rows)
-}
-
-/// Words wrapped to lines of at most `width` characters, the first prefixed by
-/// `first` and the rest indented as deep.
-fn wrap(first: &str, text: &str, width: usize) -> String {
-    let indent = " ".repeat(first.chars().count());
-    let mut out = String::new();
-    let mut line = first.to_string();
-    for word in text.split_whitespace() {
-        if line.chars().count() + 1 + word.chars().count() > width && !line.trim().is_empty() && line != first {
-            out.push_str(line.trim_end());
-            out.push('\n');
-            line = indent.clone();
-        } else if !line.ends_with(' ') && !line.is_empty() {
-            line.push(' ');
-        }
-        line.push_str(word);
-    }
-    out.push_str(line.trim_end());
-    out.push('\n');
-    out
-}
-
-/// `n noun`, with the plural where `n != 1`.
-pub(crate) fn count(n: usize, noun: &str) -> String {
-    if n == 1 {
-        format!("1 {noun}")
-    } else {
-        format!("{n} {noun}s")
-    }
-}
-
-/// A regime's label: its name, and for a curved contact the share of the load
-/// on springs that lose contact ("mixed: 38 % jumping", or a range).
-pub(crate) fn regime_label(regime: fricosc::report::ContactRegime, share: [f64; 2]) -> String {
-    use fricosc::report::ContactRegime::{Jumping, Mixed};
-    let pct = |x: f64| format!("{:.0}", 100.0 * x);
-    match regime {
-        Mixed if pct(share[0]) == pct(share[1]) => format!("mixed: {} % jumping", pct(share[0])),
-        Mixed => format!("mixed: {}-{} % jumping", pct(share[0]), pct(share[1])),
-        Jumping => "jumping: 100 %".into(),
-        r => r.name().into(),
-    }
-}
-
-/// Findings as a list for a person, after a blank line: none, or each with its rows and hint.
-pub(crate) fn findings_text(title: &str, findings: &[Finding], none: &str, row_noun: &str) -> String {
-    if findings.is_empty() {
-        return format!("\n{title}: {none}.\n");
-    }
-    let mut s = format!("\n{title}:\n");
-    for f in findings {
-        let rows = f.rows.iter().map(|r| r.to_string()).collect::<Vec<_>>().join(", ");
-        let more = if f.count > f.rows.len() { ", ..." } else { "" };
-        let which =
-            if f.rows.is_empty() { String::new() } else { format!("{} ({rows}{more}): ", count(f.count, row_noun)) };
-        s += &wrap("- ", &format!("{}: {which}{}", json_name(f.kind), f.hint), 100);
-    }
-    s
-}
-
-/// A table of error summaries, one line per group, after a blank line.
-fn summary_table<'a>(title: &str, groups: impl Iterator<Item = (String, &'a Summary)>) -> String {
-    let e = |x: f64| format!("{x:.2e}");
-    let mut s = format!(
-        "\n{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
-        title, "rows", "max |error|", "rms error", "max rel error", "worst row"
-    );
-    for (name, m) in groups {
-        s += &format!(
-            "{:<22}{:>8}{:>14}{:>12}{:>16}{:>11}\n",
-            name,
-            m.n,
-            e(m.max_abs_error),
-            e(m.rms_error),
-            e(m.max_rel_error),
-            m.worst_row
-        );
-    }
-    s
-}
-
-/// A short report for a person (lines of at most 100 characters).
-pub fn summary(v: &Validation, shape_source: &str, table: &RawTable) -> String {
-    let e = |x: f64| format!("{x:.2e}");
-    let w = &v.worst;
-    let at_rest = match v.at_rest {
-        AtRest::Sliding => "the sliding limit vbar -> 0+ (mu_static; --at-rest relaxed for a relaxed start)",
-        AtRest::Relaxed => "a relaxed start (0; --at-rest sliding for the limit vbar -> 0+)",
+    let rows = crate::validate::normalise(&table, mu0, &source)?;
+    let v = fricosc::validation::compare(&shape, &rows, &check.with_peer(peer))?;
+    let report =
+        Report { validation: &v, shape_source, format: &table.format, ignored_columns: &table.ignored_columns };
+    let body = match format.as_str() {
+        "json" => compact(&report)?,
+        "csv" => crate::validate::rows_csv(&v)?,
+        _ => crate::validate::summary(&v, &report_source(&report), &table),
     };
-    let mut s = String::new();
-    s += &wrap(
-        "",
-        &format!(
-            "fricosc validate: {} of shape {} ({shape_source}), read as {}.",
-            count(v.n, "row"),
-            v.shape,
-            table.format
-        ),
-        100,
-    );
-    if v.rows.iter().any(|r| r.vbar == 0.0) {
-        s += &wrap("", &format!("Rows at vbar = 0 are compared with {at_rest}."), 100);
+    print(&body)?;
+    Ok(outcome(&a, !v.findings.is_empty(), max_error.map_or(0.0, |_| v.max_abs_error)))
+}
+
+fn report_source(r: &Report) -> String {
+    match r.shape_source {
+        ShapeSource::File => "named by the table".into(),
+        ShapeSource::Option => "from --shape".into(),
+        ShapeSource::Default => "the default: the table names none and --shape is not given".into(),
     }
-    s += &wrap(
-        "",
-        &format!(
-            "Largest |error| {} at row {} (vbar {}, amp {}: {} against the exact {}); rms {}.",
-            e(v.max_abs_error),
-            w.row,
-            w.vbar,
-            w.amp,
-            w.mu_ratio,
-            w.exact,
-            e(v.rms_error)
-        ),
-        100,
-    );
-    if let Some(p) = &v.peer {
-        s += &wrap(
-            "",
-            &format!(
-                "fricosc's stepping peer (the seed's scheme) at {} steps per period{}: largest |error| {}, rms {} \
-                 (each row's in the JSON and CSV as peer_error).",
-                p.steps_per_period,
-                if p.springs > 1 { format!(" and {} springs", p.springs) } else { String::new() },
-                e(p.max_abs_error),
-                e(p.rms_error)
-            ),
-            100,
-        );
+}
+
+/// The file's shape decides; `--shape` only where the file names none (an
+/// error where the two disagree); the flat punch where neither does.
+fn choose_shape(file: Option<&str>, option: Option<&str>, source: &str) -> Result<(Shape, ShapeSource)> {
+    Ok(match (file, option) {
+        (Some(f), Some(o)) => {
+            let (fs, os) = (crate::input::parse_shape(f)?, crate::input::parse_shape(o)?);
+            if fs.name() != os.name() {
+                return Err(Error::Parse {
+                    context: source.into(),
+                    reason: format!("the table is for shape '{f}', --shape says '{o}'"),
+                });
+            }
+            (fs, ShapeSource::File)
+        }
+        (Some(f), None) => (crate::input::parse_shape(f)?, ShapeSource::File),
+        (None, Some(o)) => (crate::input::parse_shape(o)?, ShapeSource::Option),
+        (None, None) => (Shape::flat(), ShapeSource::Default),
+    })
+}
+
+/// `FILE@N` (the resolution after the last `@`), or a file named like
+/// `run@1000.csv` (the digits after the last `@` of its name).
+fn file_and_resolution(arg: &str) -> Result<(String, f64)> {
+    let bad = || Error::Parse {
+        context: arg.into(),
+        reason: "a series file needs its resolution: run@1000.csv or run.csv@1000".into(),
+    };
+    let (head, tail) = arg.rsplit_once('@').ok_or_else(bad)?;
+    let checked = |n: f64| {
+        if n.is_finite() && n > 0.0 {
+            Ok(n)
+        } else {
+            Err(Error::Parse {
+                context: arg.into(),
+                reason: format!("the resolution {n:?} must be a finite number > 0"),
+            })
+        }
+    };
+    if let Ok(n) = tail.trim().parse::<f64>() {
+        return Ok((head.to_string(), checked(n)?));
     }
-    if !table.ignored_columns.is_empty() {
-        s += &wrap("", &format!("Columns not read: {}.", table.ignored_columns.join(", ")), 100);
+    let digits: String = tail.chars().take_while(|c| c.is_ascii_digit() || *c == '.' || *c == 'e').collect();
+    let n = digits.trim_end_matches('.').parse::<f64>().map_err(|_| bad())?;
+    Ok((arg.to_string(), checked(n)?))
+}
+
+#[derive(serde::Serialize)]
+struct SeriesReport<'a> {
+    #[serde(flatten)]
+    convergence: &'a Convergence,
+    shape_source: ShapeSource,
+}
+
+fn run_series(a: &ValidateArgs, check: &Check, mu0: Option<f64>, format: &str) -> Result<Outcome> {
+    let target = a.target;
+    if let Some(path) = &a.plot {
+        crate::cmd::drawing_kind("--plot", path)?;
     }
-    s += &summary_table("regime", v.by_regime.iter().map(|g| (regime_label(g.regime, g.jumping_share), &g.summary)));
-    s += &summary_table("amp", v.by_amp.iter().map(|g| (g.amp.to_string(), &g.summary)));
-    s += &findings_text(&format!("Findings (value checks to {:?})", v.tolerance), &v.findings, "none", "row");
-    s
+    if a.files.len() < 2 {
+        return Err(Error::Parse { context: "--series".into(), reason: "needs two files or more".into() });
+    }
+    let mut resolutions = vec![];
+    let mut tables = vec![];
+    let mut chosen: Option<(Shape, ShapeSource)> = None;
+    for arg in &a.files {
+        let (file, n) = file_and_resolution(arg)?;
+        let (text, source) = read_input(Some(file))?;
+        let table = crate::validate::read_table(&text, &source)?;
+        let (shape, src) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
+        if let Some((s, _)) = &chosen {
+            if s.name() != shape.name() {
+                return Err(Error::Parse {
+                    context: source,
+                    reason: format!("its shape '{}' differs from the series' '{}'", shape.name(), s.name()),
+                });
+            }
+        }
+        chosen = Some((shape, src));
+        tables.push(crate::validate::normalise(&table, mu0, &source)?);
+        resolutions.push(n);
+    }
+    let (shape, shape_source) = chosen.ok_or_else(|| Error::Internal { what: "an empty series".into() })?;
+    let c = fricosc::validation::convergence(&shape, &resolutions, &tables, check, target)?;
+    if let Some(path) = &a.plot {
+        let svg = crate::validate::series_svg(&c)?;
+        crate::cmd::write_drawing("--plot", path, &svg)?;
+    }
+    let body = match format {
+        "json" => compact(&SeriesReport { convergence: &c, shape_source })?,
+        "csv" => crate::validate::series_csv(&c)?,
+        _ => crate::validate::series_summary(&c),
+    };
+    print(&body)?;
+    let worst = c.rows.iter().filter_map(|r| r.errors.last()).fold(0.0f64, |m, e| m.max(e.abs()));
+    Ok(outcome(a, !c.findings.is_empty(), if a.max_error.is_some() { worst } else { 0.0 }))
+}
+
+/// Read and compare one history file; also how it was read.
+fn history_of(
+    a: &ValidateArgs,
+    h: &HistoryArgs,
+    file: &str,
+    mu0: Option<f64>,
+    tolerance: f64,
+) -> Result<(HistoryValidation, String)> {
+    let shape = match &a.shape {
+        Some(spec) => crate::input::parse_shape(spec)?,
+        None => Shape::flat(),
+    };
+    let amp = h.amp.unwrap_or(0.0);
+    let vbar = match (h.vbar, h.vhat) {
+        (Some(v), None) => v,
+        (None, Some(v)) => fricosc::Conditions::vhat(v, amp)?.as_vbar()?,
+        _ => return Err(Error::Parse { context: "--history".into(), reason: "needs one of --vbar and --vhat".into() }),
+    };
+    let (text, source) = read_input(Some(file.to_string()))?;
+    let c = crate::validate::read_history(&text, &source, h.static_force.unwrap_or(1.0), mu0.unwrap_or(1.0))?;
+    drop(text);
+    let time = if c.is_tau { TimeAxis::Phase(&c.time) } else { TimeAxis::Time { t: &c.time, omega: h.omega } };
+    if c.is_tau && h.omega.is_some() {
+        return Err(Error::Parse {
+            context: source,
+            reason: "--omega is given, but the time column is the phase tau".into(),
+        });
+    }
+    let data = HistoryData { time, tangential: &c.tangential, normal: c.normal.as_deref() };
+    let v = fricosc::validation::compare_history(&shape, vbar, amp, &data, tolerance).map_err(|e| match e {
+        fricosc::Error::Parse { context, reason } => Error::Parse { context: format!("{source}: {context}"), reason },
+        e => Error::Core(e),
+    })?;
+    Ok((v, c.format))
+}
+
+fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f64, format: &str) -> Result<Outcome> {
+    if a.files.len() != 1 {
+        return Err(Error::Parse {
+            context: "--history".into(),
+            reason: "takes one file (several with --series)".into(),
+        });
+    }
+    let (v, read_as) = history_of(a, h, &a.files[0], mu0, tolerance)?;
+    let body = match format {
+        "json" => compact(&v)?,
+        "csv" => crate::validate::history_csv(&v)?,
+        _ => crate::validate::history_summary(&v, &read_as),
+    };
+    print(&body)?;
+    Ok(outcome(a, !v.findings.is_empty(), v.max_abs_error))
+}
+
+/// The convergence of a series of histories: per resolution the largest error
+/// over the last period and each event's timing error, with their observed orders.
+#[derive(serde::Serialize)]
+struct HistorySeries {
+    resolutions: Vec<f64>,
+    max_abs_errors: Vec<f64>,
+    order: Option<f64>,
+    constant: Option<f64>,
+    /// Per event kind: the timing errors (one per resolution) and their order.
+    events: Vec<EventSeries>,
+    /// The findings of the finest history.
+    findings: Vec<fricosc::validation::Finding>,
+}
+
+#[derive(serde::Serialize)]
+struct EventSeries {
+    kind: String,
+    timing_errors: Vec<Option<f64>>,
+    order: Option<f64>,
+}
+
+fn run_history_series(
+    a: &ValidateArgs,
+    h: &HistoryArgs,
+    mu0: Option<f64>,
+    tolerance: f64,
+    format: &str,
+) -> Result<Outcome> {
+    if a.files.len() < 2 {
+        return Err(Error::Parse { context: "--series".into(), reason: "needs two files or more".into() });
+    }
+    let mut runs = vec![];
+    for arg in &a.files {
+        let (file, n) = file_and_resolution(arg)?;
+        runs.push((n, history_of(a, h, &file, mu0, tolerance)?.0));
+    }
+    runs.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let resolutions: Vec<f64> = runs.iter().map(|r| r.0).collect();
+    let max_abs_errors: Vec<f64> = runs.iter().map(|r| r.1.max_abs_error).collect();
+    let (order, constant) = fricosc::validation::observed_order(&resolutions, &max_abs_errors);
+    let mut kinds: Vec<fricosc::spring::EventKind> = runs[0].1.exact_events.iter().map(|e| e.kind).collect();
+    kinds.dedup();
+    let events = kinds
+        .iter()
+        .map(|&k| {
+            let timing_errors: Vec<Option<f64>> =
+                runs.iter().map(|r| r.1.events.iter().find(|e| e.kind == k).and_then(|e| e.timing_error)).collect();
+            let (res, errs): (Vec<f64>, Vec<f64>) =
+                resolutions.iter().zip(&timing_errors).filter_map(|(r, e)| e.map(|e| (*r, e))).unzip();
+            EventSeries {
+                kind: crate::validate::json_name(k),
+                timing_errors,
+                order: fricosc::validation::observed_order(&res, &errs).0,
+            }
+        })
+        .collect();
+    let findings = runs.last().map(|r| r.1.findings.clone()).unwrap_or_default();
+    let report = HistorySeries { resolutions, max_abs_errors, order, constant, events, findings };
+    let body = match format {
+        "csv" => {
+            let mut t = String::from("resolution,max_abs_error\n");
+            for (r, e) in report.resolutions.iter().zip(&report.max_abs_errors) {
+                t += &format!("{},{}\n", crate::output::num(*r), crate::output::num(*e));
+            }
+            t
+        }
+        "json" => compact(&report)?,
+        _ => {
+            let o = |p: Option<f64>| p.map_or("-".into(), |p| format!("{p:.2}"));
+            let mut t = format!(
+                "fricosc validate --series --history: {} histories; the largest error over the last period has \
+                 order {}.\n",
+                report.resolutions.len(),
+                o(report.order)
+            );
+            for (r, e) in report.resolutions.iter().zip(&report.max_abs_errors) {
+                t += &format!("  resolution {r:>10}: largest |error| {e:.2e}\n");
+            }
+            for ev in &report.events {
+                t += &format!("  event {:<16} timing order {}\n", ev.kind, o(ev.order));
+            }
+            t + &crate::validate::findings_text("Findings of the finest history", &report.findings, "none", "sample")
+        }
+    };
+    print(&body)?;
+    let worst = report.max_abs_errors.last().copied().unwrap_or(0.0);
+    Ok(outcome(a, !report.findings.is_empty(), worst))
 }

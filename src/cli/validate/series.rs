@@ -1,6 +1,7 @@
 //! The reports of a convergence study (`validate --series`).
 
-use super::{count, csv_text, findings_text, json_name, regime_label, wrap};
+use super::table::wrap;
+use super::{count, csv_text, findings_text, json_name, regime_label};
 use crate::error::{Error, Result};
 use fricosc::validation::{Convergence, Needed, SeriesRow};
 
@@ -127,7 +128,7 @@ pub fn series_summary(c: &Convergence) -> String {
 /// geometric mean of its rows' errors (solid, circles) and the slope of its
 /// median order through the last point (dashed).
 pub fn series_svg(c: &Convergence) -> Result<String> {
-    use crate::plot::{Axis, Chart, Dash, Marker, Series, Style, OKABE_ITO};
+    use crate::chart::{Axis, Chart, Dash, Marker, Series, Style, OKABE_ITO};
     let mut series = vec![];
     let (mut ylo, mut yhi) = (f64::INFINITY, f64::NEG_INFINITY);
     for (i, g) in c.by_regime.iter().enumerate() {

@@ -167,7 +167,6 @@ fn every_claim_states_its_criterion() {
     assert!(cs.iter().all(|c| names.contains(&c.verdict.name())));
 }
 
-
 /// Eqs. 14/25: the small-amplitude slopes of flat, parabolic and cone against
 /// the flat punch's 40-digit reduction at amp = 1 (for the flat punch in
 /// permanent contact the reduction is exactly linear in the amplitude).
@@ -175,7 +174,8 @@ fn every_claim_states_its_criterion() {
 fn small_amplitude_slopes_match_the_40_digit_flat_values() {
     let cs = claims();
     let c = get(&cs, "eqs. 14, 25");
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/reference-values.json")).unwrap();
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/reference-values.json")).unwrap();
     let refs: serde_json::Value = serde_json::from_str(&text).unwrap();
     for vbar in [0.2, 0.5] {
         let case = refs["cases"]

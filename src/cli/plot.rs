@@ -1,9 +1,8 @@
 //! `fricosc plot`: the user's own curves in the style of the seed's figures.
 
-use super::{drawing_kind, emit, list, write_drawing, List, VelocityList};
+use crate::cmd::{drawing_kind, emit, list, write_drawing, List, VelocityList};
 use crate::error::Result;
 use clap::Args;
-
 #[derive(Args)]
 pub struct PlotArgs {
     /// Indenter shape: flat, parabolic, cone, power:N, flat-tip:E, profile:FILE@U0, gx:FILE@U0.
@@ -24,13 +23,13 @@ pub struct PlotArgs {
     pub overlay: Option<String>,
     /// Amplitude of an oscillation in the sliding direction, dx/l in pre-slip lengths (>= 0, at most 1e6;
     /// needs --vhat): the curves are the combined oscillation's.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::nonneg)]
+    #[arg(long, allow_hyphen_values = true, value_parser = crate::cmd::nonneg)]
     pub tangential_amp: Option<f64>,
     /// Its phase against the normal oscillation, radians (default 0).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::number, requires = "tangential_amp")]
+    #[arg(long, allow_hyphen_values = true, value_parser = crate::cmd::number, requires = "tangential_amp")]
     pub phase: Option<f64>,
     /// With --overlay and a column mu: the Coulomb coefficient (mu_ratio = mu / mu0).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::positive, requires = "overlay")]
+    #[arg(long, allow_hyphen_values = true, value_parser = crate::cmd::positive, requires = "overlay")]
     pub mu0: Option<f64>,
 }
 
@@ -43,7 +42,7 @@ pub fn run(a: PlotArgs) -> Result<()> {
     let tangential = a.tangential_amp.map(|t| (t, a.phase.unwrap_or(0.0)));
     let mut fig = crate::figures::user_with(&shape, &a.amp.0, xs, vhat, tangential)?;
     if let Some(file) = &a.overlay {
-        let (text, source) = super::read_input(Some(file.clone()))?;
+        let (text, source) = crate::cmd::read_input(Some(file.clone()))?;
         let table = crate::validate::read_table(&text, &source)?;
         if let Some(named) = &table.shape {
             if crate::input::parse_shape(named)?.name() != shape.name() {

@@ -1,11 +1,10 @@
 //! `fricosc point`: one point with its regime, events and bands (JSON).
 
-use super::{io_err, number, Common, TangentialPoint, VelocityPoint};
+use crate::cmd::{io_err, number, Common, TangentialPoint, VelocityPoint};
 use crate::error::{Error, Result};
 use clap::Args;
 use fricosc::{Conditions, Shape};
 use std::io::{self, Write};
-
 #[derive(Args)]
 pub struct PointArgs {
     #[command(flatten)]

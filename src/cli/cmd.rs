@@ -1,24 +1,13 @@
-//! The subcommands, one file each, and what they share: the common options
-//! (typed by clap's value parsers), the one checked path to stdout, bounded
-//! input, and the outcome that `main` turns into an exit code.
+//! The subcommands (one module each, beside this file: its options and its
+//! run) and what they share: the common options (typed by clap's value
+//! parsers), the one checked path to stdout, bounded input, and the outcome
+//! that `main` turns into an exit code.
 
 use crate::error::{Error, Result};
+use crate::{batch, bench, claims, figures, history, plot, point, scene, stress, suite, table, validate};
 use clap::{Args, Subcommand};
 use fricosc::stepper::Stepping;
 use std::io::{self, Write};
-
-pub mod batch;
-pub mod bench;
-pub mod claims;
-pub mod figures;
-pub mod history;
-pub mod plot;
-pub mod point;
-pub mod scene;
-pub mod stress;
-pub mod suite;
-pub mod table;
-pub mod validate;
 
 /// What a command found: `main` maps `Negative` to exit code 1.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -349,7 +338,7 @@ pub fn emit_bytes(bytes: &[u8]) -> Result<()> {
 
 /// An SVG document rendered as PNG (an internal error if our own SVG does not render).
 pub fn png_of(svg: &str) -> Result<Vec<u8>> {
-    crate::plot::png(svg).map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") })
+    crate::chart::png(svg).map_err(|e| Error::Internal { what: format!("rendering the PNG: {e}") })
 }
 
 /// Whether a drawing's file name asks for a PNG (`.png`) or an SVG (`.svg`);

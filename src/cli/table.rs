@@ -1,12 +1,11 @@
 //! `fricosc table`: a grid of amplitudes x velocities (JSON or CSV).
 
-use super::{io_err, list, Common, List, TangentialList, VelocityList};
+use crate::cmd::{io_err, list, Common, List, TangentialList, VelocityList};
 use crate::error::{Error, Result};
 use crate::output::{Cell, Format, TableWriter, Text};
 use clap::Args;
 use rayon::prelude::*;
 use std::io;
-
 #[derive(Args)]
 pub struct TableArgs {
     #[command(flatten)]
