@@ -44,7 +44,7 @@ pub fn run(a: PlotArgs) -> Result<()> {
     if let Some(file) = &a.overlay {
         let (text, source) = crate::cmd::read_input(Some(file.clone()))?;
         let table = crate::validate::read_table(&text, &source)?;
-        if let Some(named) = &table.shape {
+        if let Some(named) = table.shape() {
             if crate::input::parse_shape(named)?.name() != shape.name() {
                 return Err(crate::error::Error::Parse {
                     context: source,
@@ -52,7 +52,7 @@ pub fn run(a: PlotArgs) -> Result<()> {
                 });
             }
         }
-        let rows = crate::validate::normalise(&table, a.mu0, &source)?;
+        let rows = table.rows(a.mu0, &source)?;
         let name = std::path::Path::new(&source).file_name().map_or(source.clone(), |n| n.to_string_lossy().into());
         crate::figures::overlay(&mut fig, &rows, &name)?;
     }

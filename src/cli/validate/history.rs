@@ -1,8 +1,7 @@
-//! `validate --history`: a force history file as read, and the reports of its
+//! `validate --history`: a force history file as read, and the CSV of its
 //! comparison ([`fricosc::validation::compare_history`]).
 
-use super::table::wrap;
-use super::{count, csv_text, findings_text, json_name};
+use super::table::csv_text;
 use crate::error::{Error, Result};
 use crate::tables::{read_columns, Kind};
 use fricosc::validation::HistoryValidation;
@@ -69,98 +68,4 @@ pub fn history_csv(v: &HistoryValidation) -> Result<String> {
         ]);
     }
     csv_text(&records)
-}
-
-/// The time origin in words.
-fn origin_text(v: &HistoryValidation) -> String {
-    use fricosc::validation::OriginSource;
-    let o = &v.time_origin;
-    let omega = o
-        .omega
-        .map_or(String::new(), |w| format!(" Angular frequency found from the normal force: {w} rad per unit of t."));
-    match o.source {
-        OriginSource::Assumed => format!(
-            "Time origin: assumed to be the seed's (no normal column to check it): tau = omega t with the \
-             indentation u_z = u0 - du cos(omega t).{omega}"
-        ),
-        OriginSource::NormalForce if o.offset == 0.0 => {
-            format!("Time origin: the seed's (from the normal force: u_z = u0 - du cos(omega t)).{omega}")
-        }
-        OriginSource::NormalForce => {
-            let follows = o.convention.map_or(String::new(), |c| format!(" (the file follows u_z = {c})"));
-            format!(
-                "Time origin of your file: {:+.6} rad ({:+.2} samples) against the seed's u_z = u0 - du \
-                 cos(omega t){follows}, found from the normal force; compared after aligning.{omega}",
-                o.offset, o.offset_samples
-            )
-        }
-    }
-}
-
-/// A history's comparison for a person.
-pub fn history_summary(v: &HistoryValidation, format: &str) -> String {
-    let e = |x: f64| format!("{x:.2e}");
-    let mut s = wrap(
-        "",
-        &format!(
-            "fricosc validate --history: {} at vbar {}, amp {}; {}, {} in the last (read as {format}).",
-            v.shape,
-            v.vbar,
-            v.amp,
-            count(v.periods, "whole period"),
-            count(v.samples, "sample")
-        ),
-        100,
-    );
-    s += &wrap("", &origin_text(v), 100);
-    s += &wrap(
-        "",
-        &format!(
-            "Tangential force over the last period: largest |error| {}, rms {} (units: {}).",
-            e(v.max_abs_error),
-            e(v.rms_error),
-            v.units
-        ),
-        100,
-    );
-    if let Some(nc) = &v.normal {
-        s += &wrap(
-            "",
-            &format!(
-                "Normal force: largest |error| {}, rms {}; its mean over the period is {:.6} times the exact mean.",
-                e(nc.max_abs_error),
-                e(nc.rms_error),
-                nc.mean_ratio
-            ),
-            100,
-        );
-    }
-    s += &wrap(
-        "",
-        &match (v.period_drift, v.periodic) {
-            (Some(d), Some(true)) => {
-                format!("Periodic: the last period differs from the one before by {} at most.", e(d))
-            }
-            (Some(d), _) => format!("Not yet periodic: the last period differs from the one before by up to {}.", e(d)),
-            _ => "One period only: periodicity cannot be judged (give two or more).".into(),
-        },
-        100,
-    );
-    if !v.exact_events.is_empty() || !v.events.is_empty() {
-        s += &format!("\n{:<18}{:>12}{:>12}{:>14}\n", "event", "tau", "exact tau", "timing error");
-        for f in &v.events {
-            let o = |x: Option<f64>| x.map_or("-".into(), |y| format!("{y:.6}"));
-            s += &format!(
-                "{:<18}{:>12.6}{:>12}{:>14}\n",
-                json_name(f.kind),
-                f.tau,
-                o(f.exact_tau),
-                f.timing_error.map_or("-".into(), e)
-            );
-        }
-    } else {
-        s += &wrap("", "Events: not compared (a curved contact's total force has none).", 100);
-    }
-    s += &findings_text("Findings", &v.findings, "none", "sample");
-    s
 }

@@ -5,14 +5,17 @@ mod history;
 mod series;
 mod table;
 
-pub use history::{history_csv, history_summary, read_history, HistoryColumns};
-pub use series::{series_csv, series_summary, series_svg};
-pub use table::*;
+pub use history::{history_csv, read_history, HistoryColumns};
+pub use series::{series_csv, series_svg};
+pub use table::{oscillation_csv, read_table, rows_csv, MAX_ROWS};
 
 use crate::cmd::{io_err, nonneg, number, positive, read_input, Outcome};
 use crate::error::{Error, Result};
 use fricosc::stepper::Stepping;
-use fricosc::validation::{AtRest, Check, Convergence, HistoryData, HistoryValidation, TimeAxis, Validation};
+use fricosc::validation::{
+    AtRest, Check, Convergence, HistoryData, HistorySeries, HistoryValidation, OscillationValidation, TimeAxis,
+    Validation,
+};
 use fricosc::Shape;
 use std::io::{self, IsTerminal, Write};
 
@@ -190,17 +193,17 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
         });
     }
     let (text, source) = read_input(Some(a.files[0].clone()))?;
-    let table = crate::validate::read_table(&text, &source)?;
+    let table = read_table(&text, &source)?;
     drop(text);
-    let (shape, shape_source) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
+    let (shape, shape_source) = choose_shape(table.shape(), a.shape.as_deref(), &source)?;
     let peer = a.peer.map(|m| Stepping { steps_per_period: m as usize, springs: a.peer_springs.unwrap_or(m) as usize });
-    if table.tangential.is_some() {
-        let rows = crate::validate::oscillation_rows(&table, mu0, &source)?;
+    if table.is_oscillation() {
+        let rows = table.oscillation_rows(mu0, &source)?;
         let v = fricosc::validation::compare_oscillation(&shape, &rows, &check.with_peer(peer))?;
         #[derive(serde::Serialize)]
         struct OscillationReport<'a> {
             #[serde(flatten)]
-            validation: &'a fricosc::validation::OscillationValidation,
+            validation: &'a OscillationValidation,
             shape_source: ShapeSource,
             format: &'a str,
             #[serde(skip_serializing_if = "<[String]>::is_empty")]
@@ -209,25 +212,25 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
         let report = OscillationReport {
             validation: &v,
             shape_source,
-            format: &table.format,
-            ignored_columns: &table.ignored_columns,
+            format: table.format(),
+            ignored_columns: table.ignored_columns(),
         };
         let body = match format.as_str() {
             "json" => compact(&report)?,
-            "csv" => crate::validate::oscillation_csv(&v)?,
-            _ => crate::validate::oscillation_summary(&v, &source),
+            "csv" => oscillation_csv(&v)?,
+            _ => v.summary(&source),
         };
         print(&body)?;
         return Ok(outcome(&a, !v.findings.is_empty(), max_error.map_or(0.0, |_| v.summary.max_abs_error)));
     }
-    let rows = crate::validate::normalise(&table, mu0, &source)?;
+    let rows = table.rows(mu0, &source)?;
     let v = fricosc::validation::compare(&shape, &rows, &check.with_peer(peer))?;
     let report =
-        Report { validation: &v, shape_source, format: &table.format, ignored_columns: &table.ignored_columns };
+        Report { validation: &v, shape_source, format: table.format(), ignored_columns: table.ignored_columns() };
     let body = match format.as_str() {
         "json" => compact(&report)?,
-        "csv" => crate::validate::rows_csv(&v)?,
-        _ => crate::validate::summary(&v, &report_source(&report), &table),
+        "csv" => rows_csv(&v)?,
+        _ => v.summary(&table, &report_source(&report)),
     };
     print(&body)?;
     Ok(outcome(&a, !v.findings.is_empty(), max_error.map_or(0.0, |_| v.max_abs_error)))
@@ -308,8 +311,8 @@ fn run_series(a: &ValidateArgs, check: &Check, mu0: Option<f64>, format: &str) -
     for arg in &a.files {
         let (file, n) = file_and_resolution(arg)?;
         let (text, source) = read_input(Some(file))?;
-        let table = crate::validate::read_table(&text, &source)?;
-        let (shape, src) = choose_shape(table.shape.as_deref(), a.shape.as_deref(), &source)?;
+        let table = read_table(&text, &source)?;
+        let (shape, src) = choose_shape(table.shape(), a.shape.as_deref(), &source)?;
         if let Some((s, _)) = &chosen {
             if s.name() != shape.name() {
                 return Err(Error::Parse {
@@ -319,19 +322,19 @@ fn run_series(a: &ValidateArgs, check: &Check, mu0: Option<f64>, format: &str) -
             }
         }
         chosen = Some((shape, src));
-        tables.push(crate::validate::normalise(&table, mu0, &source)?);
+        tables.push(table.rows(mu0, &source)?);
         resolutions.push(n);
     }
     let (shape, shape_source) = chosen.ok_or_else(|| Error::Internal { what: "an empty series".into() })?;
     let c = fricosc::validation::convergence(&shape, &resolutions, &tables, check, target)?;
     if let Some(path) = &a.plot {
-        let svg = crate::validate::series_svg(&c)?;
+        let svg = series_svg(&c)?;
         crate::cmd::write_drawing("--plot", path, &svg)?;
     }
     let body = match format {
         "json" => compact(&SeriesReport { convergence: &c, shape_source })?,
-        "csv" => crate::validate::series_csv(&c)?,
-        _ => crate::validate::series_summary(&c),
+        "csv" => series_csv(&c)?,
+        _ => c.summary(),
     };
     print(&body)?;
     let worst = c.rows.iter().filter_map(|r| r.errors.last()).fold(0.0f64, |m, e| m.max(e.abs()));
@@ -357,7 +360,7 @@ fn history_of(
         _ => return Err(Error::Parse { context: "--history".into(), reason: "needs one of --vbar and --vhat".into() }),
     };
     let (text, source) = read_input(Some(file.to_string()))?;
-    let c = crate::validate::read_history(&text, &source, h.static_force.unwrap_or(1.0), mu0.unwrap_or(1.0))?;
+    let c = read_history(&text, &source, h.static_force.unwrap_or(1.0), mu0.unwrap_or(1.0))?;
     drop(text);
     let time = if c.is_tau { TimeAxis::Phase(&c.time) } else { TimeAxis::Time { t: &c.time, omega: h.omega } };
     if c.is_tau && h.omega.is_some() {
@@ -384,32 +387,11 @@ fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f
     let (v, read_as) = history_of(a, h, &a.files[0], mu0, tolerance)?;
     let body = match format {
         "json" => compact(&v)?,
-        "csv" => crate::validate::history_csv(&v)?,
-        _ => crate::validate::history_summary(&v, &read_as),
+        "csv" => history_csv(&v)?,
+        _ => v.summary(&read_as),
     };
     print(&body)?;
     Ok(outcome(a, !v.findings.is_empty(), v.max_abs_error))
-}
-
-/// The convergence of a series of histories: per resolution the largest error
-/// over the last period and each event's timing error, with their observed orders.
-#[derive(serde::Serialize)]
-struct HistorySeries {
-    resolutions: Vec<f64>,
-    max_abs_errors: Vec<f64>,
-    order: Option<f64>,
-    constant: Option<f64>,
-    /// Per event kind: the timing errors (one per resolution) and their order.
-    events: Vec<EventSeries>,
-    /// The findings of the finest history.
-    findings: Vec<fricosc::validation::Finding>,
-}
-
-#[derive(serde::Serialize)]
-struct EventSeries {
-    kind: String,
-    timing_errors: Vec<Option<f64>>,
-    order: Option<f64>,
 }
 
 fn run_history_series(
@@ -427,28 +409,7 @@ fn run_history_series(
         let (file, n) = file_and_resolution(arg)?;
         runs.push((n, history_of(a, h, &file, mu0, tolerance)?.0));
     }
-    runs.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let resolutions: Vec<f64> = runs.iter().map(|r| r.0).collect();
-    let max_abs_errors: Vec<f64> = runs.iter().map(|r| r.1.max_abs_error).collect();
-    let (order, constant) = fricosc::validation::observed_order(&resolutions, &max_abs_errors);
-    let mut kinds: Vec<fricosc::spring::EventKind> = runs[0].1.exact_events.iter().map(|e| e.kind).collect();
-    kinds.dedup();
-    let events = kinds
-        .iter()
-        .map(|&k| {
-            let timing_errors: Vec<Option<f64>> =
-                runs.iter().map(|r| r.1.events.iter().find(|e| e.kind == k).and_then(|e| e.timing_error)).collect();
-            let (res, errs): (Vec<f64>, Vec<f64>) =
-                resolutions.iter().zip(&timing_errors).filter_map(|(r, e)| e.map(|e| (*r, e))).unzip();
-            EventSeries {
-                kind: crate::validate::json_name(k),
-                timing_errors,
-                order: fricosc::validation::observed_order(&res, &errs).0,
-            }
-        })
-        .collect();
-    let findings = runs.last().map(|r| r.1.findings.clone()).unwrap_or_default();
-    let report = HistorySeries { resolutions, max_abs_errors, order, constant, events, findings };
+    let report = HistorySeries::new(runs);
     let body = match format {
         "csv" => {
             let mut t = String::from("resolution,max_abs_error\n");
@@ -458,22 +419,7 @@ fn run_history_series(
             t
         }
         "json" => compact(&report)?,
-        _ => {
-            let o = |p: Option<f64>| p.map_or("-".into(), |p| format!("{p:.2}"));
-            let mut t = format!(
-                "fricosc validate --series --history: {} histories; the largest error over the last period has \
-                 order {}.\n",
-                report.resolutions.len(),
-                o(report.order)
-            );
-            for (r, e) in report.resolutions.iter().zip(&report.max_abs_errors) {
-                t += &format!("  resolution {r:>10}: largest |error| {e:.2e}\n");
-            }
-            for ev in &report.events {
-                t += &format!("  event {:<16} timing order {}\n", ev.kind, o(ev.order));
-            }
-            t + &crate::validate::findings_text("Findings of the finest history", &report.findings, "none", "sample")
-        }
+        _ => report.summary(),
     };
     print(&body)?;
     let worst = report.max_abs_errors.last().copied().unwrap_or(0.0);

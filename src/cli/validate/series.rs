@@ -1,17 +1,8 @@
 //! The reports of a convergence study (`validate --series`).
 
-use super::table::wrap;
-use super::{count, csv_text, findings_text, json_name, regime_label};
+use super::table::csv_text;
 use crate::error::{Error, Result};
 use fricosc::validation::{Convergence, Needed, SeriesRow};
-
-fn needed_text(n: Option<Needed>, f: &dyn Fn(f64) -> String) -> String {
-    match n {
-        None => String::new(),
-        Some(Needed::Resolution(m)) => f(m),
-        Some(Needed::Unreachable) => "unreachable".into(),
-    }
-}
 
 /// A convergence study as CSV: one line per row, its status, order, constant,
 /// Richardson error and needed resolution, then its error at each resolution.
@@ -38,90 +29,23 @@ pub fn series_csv(c: &Convergence) -> Result<String> {
         let mut rec = vec![
             n(r.vbar),
             n(r.amp),
-            json_name(r.regime),
+            r.regime.name().into(),
             n(r.jumping_share),
-            json_name(r.status),
+            r.status.name().into(),
             n(r.exact),
             opt(r.order),
             opt(r.constant),
             opt(r.richardson_error),
-            needed_text(r.needed_resolution, &n),
+            match r.needed_resolution {
+                None => String::new(),
+                Some(Needed::Resolution(m)) => n(m),
+                Some(Needed::Unreachable) => "unreachable".into(),
+            },
         ];
         rec.extend(r.errors.iter().map(|e| n(*e)));
         records.push(rec);
     }
     csv_text(&records)
-}
-
-/// A convergence study for a person: orders per regime, every row, findings and cautions.
-pub fn series_summary(c: &Convergence) -> String {
-    let e = |x: f64| format!("{x:.2e}");
-    let opt = |x: Option<f64>, f: &dyn Fn(f64) -> String| x.map(f).unwrap_or_else(|| "-".into());
-    let res: Vec<String> = c.resolutions.iter().map(|r| r.to_string()).collect();
-    let mut s = wrap(
-        "",
-        &format!(
-            "fricosc validate --series: {} of {} at resolutions {}.",
-            count(c.rows.len(), "row"),
-            c.shape,
-            res.join(", ")
-        ),
-        100,
-    );
-    s += &wrap(
-        "",
-        "Observed order: the least-squares slope of log |error| against log resolution (errors at rounding left \
-         out). Status: converging (order >= 0.5), not_converging, resolution_independent (the same error at \
-         every resolution), exact (at rounding).",
-        100,
-    );
-    s += &format!("\n{:<26}{:>6}{:>14}{:>8}{:>8}\n", "regime", "rows", "median order", "min", "max");
-    for g in &c.by_regime {
-        s += &format!(
-            "{:<26}{:>6}{:>14.2}{:>8.2}{:>8.2}\n",
-            regime_label(g.regime, share_range(c, g.regime)),
-            g.n,
-            g.median_order,
-            g.min_order,
-            g.max_order
-        );
-    }
-    let with_needed = c.target.is_some();
-    s += &format!(
-        "\n{:>8}{:>6}  {:<22}{:>7}{:>11}{:>13}{:>13}  {:<22}{}\n",
-        "vbar",
-        "amp",
-        "regime",
-        "order",
-        "constant",
-        "last error",
-        "richardson",
-        "status",
-        if with_needed { format!("{:>12}", "needed") } else { String::new() }
-    );
-    for r in &c.rows {
-        s += &format!(
-            "{:>8}{:>6}  {:<22}{:>7}{:>11}{:>13}{:>13}  {:<22}{}\n",
-            r.vbar,
-            r.amp,
-            regime_label(r.regime, [r.jumping_share; 2]),
-            opt(r.order, &|p| format!("{p:.2}")),
-            opt(r.constant, &e),
-            e(*r.errors.last().unwrap_or(&0.0)),
-            opt(r.richardson_error, &e),
-            json_name(r.status),
-            if with_needed {
-                format!("{:>12}", needed_text(r.needed_resolution, &|m| format!("{m:.3e}")))
-            } else {
-                String::new()
-            }
-        );
-    }
-    s += &findings_text("Findings", &c.findings, "none", "row");
-    if !c.cautions.is_empty() {
-        s += &findings_text("Cautions (not findings)", &c.cautions, "none", "row");
-    }
-    s
 }
 
 /// Errors against resolution on log axes, per regime (one colour each): the
@@ -149,7 +73,7 @@ pub fn series_svg(c: &Convergence) -> Result<String> {
         }
         let color = OKABE_ITO[(i + 1) % OKABE_ITO.len()];
         series.push(Series {
-            label: regime_label(g.regime, share_range(c, g.regime)),
+            label: g.regime.label(c.jumping_share(g.regime)),
             points: pts,
             style: Style::line(color).marker(Marker::Circle),
             legend: true,
@@ -174,10 +98,4 @@ pub fn series_svg(c: &Convergence) -> Result<String> {
         rules: vec![],
     }
     .svg())
-}
-
-/// The smallest and largest jumping share of a regime's rows.
-fn share_range(c: &Convergence, g: fricosc::report::ContactRegime) -> [f64; 2] {
-    let share = c.rows.iter().filter(|r| r.regime == g).map(|r| r.jumping_share);
-    [share.clone().fold(f64::INFINITY, f64::min), share.fold(f64::NEG_INFINITY, f64::max)]
 }

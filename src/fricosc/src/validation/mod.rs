@@ -28,14 +28,18 @@
 mod history;
 mod oscillation;
 mod series;
+mod table;
+mod text;
 
 pub use oscillation::{compare_oscillation, OscillationRegime, OscillationRow, OscillationValidation};
 
 pub use history::{
-    compare_history, to_static_units, FoundEvent, HistoryData, HistorySample, HistoryValidation, NormalComparison,
-    OriginSource, TimeAxis, TimeOrigin,
+    compare_history, to_static_units, EventSeries, FoundEvent, HistoryData, HistorySample, HistorySeries,
+    HistoryValidation, NormalComparison, OriginSource, TimeAxis, TimeOrigin,
 };
 pub use series::{convergence, observed_order, Convergence, Needed, RegimeOrder, RowStatus, SeriesRow};
+pub use table::{Column, Table};
+pub(crate) use text::findings_text;
 
 use crate::contact::regime::ContactRegime;
 use crate::error::{Error, Result};

@@ -21,3 +21,4 @@ mod reference;
 #[allow(clippy::excessive_precision)]
 mod report_fields;
 mod stepper;
+mod table;

@@ -134,6 +134,19 @@ pub enum EventKind {
     Slip,
 }
 
+impl EventKind {
+    /// The name reports print (as JSON writes it).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            EventKind::Contact => "contact",
+            EventKind::LossOfContact => "loss_of_contact",
+            EventKind::Stick => "stick",
+            EventKind::Slip => "slip",
+        }
+    }
+}
+
 /// A transition at phase `tau` in `[0, 2 pi)`, with the forces there.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]

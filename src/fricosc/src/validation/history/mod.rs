@@ -17,7 +17,10 @@
 use super::*;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
+mod series;
 mod signal;
+
+pub use series::{EventSeries, HistorySeries};
 
 use signal::{drift, origin_offset, period_from_normal, periodic_mean, SNAP_SAMPLES};
 
@@ -563,7 +566,7 @@ fn history_findings(v: &HistoryValidation, above: &[usize], tolerance: f64) -> V
         .exact_events
         .iter()
         .filter(|x| !found.contains(&x.kind))
-        .map(|x| format!("{} at tau = {:.6}", event_name(x.kind), x.tau))
+        .map(|x| format!("{} at tau = {:.6}", x.kind.name(), x.tau))
         .collect();
     if !missing.is_empty() {
         out.push(general(
@@ -572,15 +575,4 @@ fn history_findings(v: &HistoryValidation, above: &[usize], tolerance: f64) -> V
         ));
     }
     out
-}
-
-/// An event kind's name (as JSON writes it).
-pub(crate) fn event_name(k: crate::model::spring::EventKind) -> &'static str {
-    use crate::model::spring::EventKind;
-    match k {
-        EventKind::Contact => "contact",
-        EventKind::Stick => "stick",
-        EventKind::Slip => "slip",
-        EventKind::LossOfContact => "loss_of_contact",
-    }
 }

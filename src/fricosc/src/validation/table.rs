@@ -1,0 +1,193 @@
+//! Another code's table as its columns name it: the velocity as `vbar` or
+//! `vhat` (eq. 15, `vbar = vhat / amp`), `amp`, the friction as `mu_ratio` or
+//! `mu` (then `mu_ratio = mu / mu0`), optionally `shape` (one for the whole
+//! table) and, under oscillation in the sliding direction, `tangential_amp`
+//! and `phase` (0 where missing). The command line's reader and Python's
+//! DataFrames both end here, so a table means the same in both.
+
+use crate::error::{Error, Result};
+
+/// A table to validate, read from named columns ([`Table::from_columns`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    shape: Option<String>,
+    vhat: bool,
+    mu: bool,
+    velocity: Vec<f64>,
+    amp: Vec<f64>,
+    friction: Vec<f64>,
+    tangential: Option<Vec<(f64, f64)>>,
+    ignored_columns: Vec<String>,
+    format: String,
+}
+
+/// The values of one column of a table.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Column {
+    /// A numeric column, one value per row.
+    Numbers(Vec<f64>),
+    /// The distinct values of a text column (the `shape`).
+    Labels(Vec<String>),
+}
+
+impl Table {
+    /// The columns a table may have; `shape` is text, the others numbers.
+    pub const COLUMNS: [&'static str; 8] =
+        ["vbar", "vhat", "amp", "mu_ratio", "mu", "shape", "tangential_amp", "phase"];
+
+    /// A table from the columns its source has: `names` every column's name
+    /// (those not in [`Table::COLUMNS`] are reported as not read), `columns`
+    /// the values of those in it, `format` how the source was read (`CSV (','
+    /// delimited)`, `pandas 'columns' JSON`, ...); `source` names it in errors.
+    ///
+    /// # Errors
+    /// [`Error::Parse`] where a column is missing or given twice over
+    /// (`vbar` and `vhat`), names more than one shape, `phase` comes without
+    /// `tangential_amp`, or `tangential_amp` with `vbar`; columns of different
+    /// lengths.
+    pub fn from_columns(names: &[String], columns: Vec<(&str, Column)>, format: &str, source: &str) -> Result<Table> {
+        let err = |reason: String| Error::Parse { context: source.into(), reason };
+        let mut numbers: Vec<Option<Vec<f64>>> = vec![None; Table::COLUMNS.len()];
+        let mut shapes = vec![];
+        for (name, column) in columns {
+            let k = Table::COLUMNS.iter().position(|c| *c == name);
+            match (k, column) {
+                (Some(5), Column::Labels(l)) => shapes = l,
+                (Some(k), Column::Numbers(v)) if k != 5 => numbers[k] = Some(v),
+                _ => return Err(err(format!("the column '{name}' is not read as given"))),
+            }
+        }
+        let listed = || if names.is_empty() { "no names".to_string() } else { names.join(", ") };
+        let one_of = |a: usize, b: usize, what: &str| match (numbers[a].is_some(), numbers[b].is_some()) {
+            (true, false) => Ok(false),
+            (false, true) => Ok(true),
+            (true, true) => Err(err(format!(
+                "both '{}' and '{}' given: one {what} column only",
+                Table::COLUMNS[a],
+                Table::COLUMNS[b]
+            ))),
+            (false, false) => Err(err(format!(
+                "no column '{}' (or '{}'): a table needs vbar (or vhat), amp and mu_ratio (or mu); this one ({format}) \
+                 has {}",
+                Table::COLUMNS[a],
+                Table::COLUMNS[b],
+                listed()
+            ))),
+        };
+        let vhat = one_of(0, 1, "velocity")?;
+        let mu = one_of(3, 4, "friction")?;
+        let amp =
+            numbers[2].take().ok_or_else(|| err(format!("no column 'amp'; this table ({format}) has {}", listed())))?;
+        let velocity = numbers[usize::from(vhat)].take().unwrap_or_default();
+        let friction = numbers[3 + usize::from(mu)].take().unwrap_or_default();
+        if shapes.len() > 1 {
+            let named: Vec<String> = shapes.iter().map(|s| format!("'{s}'")).collect();
+            return Err(err(format!(
+                "the table names more than one shape ({}): validate one shape at a time",
+                named.join(", ")
+            )));
+        }
+        let tangential = tangential_of(numbers[6].take(), numbers[7].take(), vhat).map_err(|r| err(r.into()))?;
+        let rows = amp.len();
+        if velocity.len() != rows || friction.len() != rows || tangential.as_ref().is_some_and(|t| t.len() != rows) {
+            return Err(err("the columns differ in length".into()));
+        }
+        let read = [if vhat { "vhat" } else { "vbar" }, "amp", if mu { "mu" } else { "mu_ratio" }, "shape"];
+        let read_also = ["tangential_amp", "phase"];
+        let ignored_columns =
+            names.iter().filter(|h| !read.contains(&h.as_str()) && !read_also.contains(&h.as_str())).cloned().collect();
+        Ok(Table {
+            shape: shapes.pop(),
+            vhat,
+            mu,
+            velocity,
+            amp,
+            friction,
+            tangential,
+            ignored_columns,
+            format: format.into(),
+        })
+    }
+
+    /// The shape the table names, if any.
+    #[must_use]
+    pub fn shape(&self) -> Option<&str> {
+        self.shape.as_deref()
+    }
+
+    /// How the source was read.
+    #[must_use]
+    pub fn format(&self) -> &str {
+        &self.format
+    }
+
+    /// The columns not read.
+    #[must_use]
+    pub fn ignored_columns(&self) -> &[String] {
+        &self.ignored_columns
+    }
+
+    /// Whether the table is under oscillation in the sliding direction (it has
+    /// `tangential_amp`).
+    #[must_use]
+    pub fn is_oscillation(&self) -> bool {
+        self.tangential.is_some()
+    }
+
+    /// `(vbar, amp, mu_ratio)` of every row ([`super::rows_from_columns`]),
+    /// the input of [`super::compare`]; `source` names the table in errors.
+    ///
+    /// # Errors
+    /// [`Error::Parse`] for a table under oscillation in the sliding direction,
+    /// `mu` without `mu0` (or `mu0` with `mu_ratio`), a bad row.
+    pub fn rows(&self, mu0: Option<f64>, source: &str) -> Result<Vec<(f64, f64, f64)>> {
+        if self.tangential.is_some() {
+            return Err(Error::Parse {
+                context: source.into(),
+                reason: "a table under oscillation in the sliding direction (column 'tangential_amp'): only a single \
+                         table's validate compares it"
+                    .into(),
+            });
+        }
+        super::rows_from_columns(&self.velocity, &self.amp, &self.friction, self.vhat, self.mu, mu0)
+            .map_err(|e| Error::Parse { context: source.into(), reason: e.to_string() })
+    }
+
+    /// `[vhat, amp, tangential_amp, phase, mu_ratio]` of every row of a table
+    /// under oscillation in the sliding direction, the input of
+    /// [`super::compare_oscillation`].
+    ///
+    /// # Errors
+    /// [`Error::Parse`] without `tangential_amp`, or for `mu` without `mu0`
+    /// (or `mu0` with `mu_ratio`).
+    pub fn oscillation_rows(&self, mu0: Option<f64>, source: &str) -> Result<Vec<[f64; 5]>> {
+        let bad = |reason: &str| Error::Parse { context: source.into(), reason: reason.into() };
+        let tangential = self.tangential.as_ref().ok_or_else(|| bad("no column 'tangential_amp'"))?;
+        let scale = match (self.mu, mu0) {
+            (true, Some(m)) if m.is_finite() && m > 0.0 => m,
+            (true, Some(m)) => return Err(Error::param("mu0", m, "must be finite and > 0")),
+            (true, None) => return Err(bad("the column 'mu' needs --mu0 (mu_ratio = mu / mu0)")),
+            (false, Some(_)) => return Err(bad("--mu0 applies to a column 'mu'; this table has 'mu_ratio'")),
+            (false, None) => 1.0,
+        };
+        let rows = self.velocity.iter().zip(&self.amp).zip(&self.friction).zip(tangential);
+        Ok(rows.map(|(((&v, &a), &f), &(t, p))| [v, a, t, p, f / scale]).collect())
+    }
+}
+
+/// `(tangential_amp, phase)` of every row, where the table has `tangential_amp`
+/// (a missing `phase` is 0); it needs the velocities as `vhat`.
+fn tangential_of(
+    t: Option<Vec<f64>>,
+    phase: Option<Vec<f64>>,
+    vhat: bool,
+) -> std::result::Result<Option<Vec<(f64, f64)>>, &'static str> {
+    match (t, phase) {
+        (None, Some(_)) => Err("a column 'phase' without 'tangential_amp'"),
+        (None, None) => Ok(None),
+        (Some(_), _) if !vhat => Err("a table with 'tangential_amp' needs its velocities as 'vhat' (vbar = vhat/amp \
+                                      is undefined without normal oscillation)"),
+        (Some(t), Some(p)) if p.len() != t.len() => Err("the columns differ in length"),
+        (Some(t), p) => Ok(Some(t.iter().enumerate().map(|(i, &t)| (t, p.as_ref().map_or(0.0, |p| p[i]))).collect())),
+    }
+}
