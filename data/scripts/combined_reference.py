@@ -1,9 +1,9 @@
 """Independent 40-digit values of one spring (the flat punch) under oscillation
 in the sliding direction, alone or with the normal oscillation
-(shared/MODEL-oscillation.md): mu_macro/mu0 = <f>/<B>, the reduction
+(README.md, "Oscillation in the sliding direction"): mu_macro/mu0 = <f>/<B>, the reduction
 <B - f>/<B>, and the events of one period.
 
-Independent of fricosc's solver (src/model/stop.rs):
+Independent of fricosc's solver (src/fricosc/src/model/stop.rs):
 - the periodic steady state is found by running the stop operator period after
   period from a sliding start (f = B at tau = 0) until the force at the period's
   start repeats to 45 digits (fricosc instead starts from a state it proves);

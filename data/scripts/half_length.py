@@ -1,5 +1,5 @@
 """40-digit values of a stick-first spring given by its stick's half-length h,
-the reference of `Velocity::stick_first_by_half_length` (src/model/spring.rs).
+the reference of `Velocity::stick_first_by_half_length` (src/fricosc/src/model/spring/velocity.rs).
 
 Independently of the closed forms there: for each (vbar, h) the stick's start
 beta is found by mpmath's root finder on the gap H(L) = sin(beta) - sin(beta - L)

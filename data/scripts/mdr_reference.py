@@ -137,7 +137,7 @@ def sphere(u0, vbar, amp, dps):
 def flat_tip(e, vbar, amp, dps):
     """The sphere worn flat at its tip, E = a/x_c: G(z) = 0 on the flat z <= E,
     z sqrt(z^2 - E^2)/sqrt(1 - E^2) beyond (the MDR transform of the
-    paraboloid cut flat; derived in src/contact/flat_tip.rs, checked there
+    paraboloid cut flat; derived in src/fricosc/src/contact/flat_tip.rs, checked there
     against a tabulated profile's numerical transform)."""
     mp.dps = dps
     e = mpf(e)

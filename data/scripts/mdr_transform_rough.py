@@ -1,5 +1,5 @@
 """40-digit MDR transform g(x) = x int_0^x f'(r)/sqrt(x^2 - r^2) dr of a rough
-tabulated profile, at a few knots, for tests/profile.rs.
+tabulated profile, at a few knots, for src/fricosc/src/contact/profile/tests.rs.
 
 The table uses only rational operations, so that Rust rebuilds it bit for bit:
 r_0 = 0, r_i = i + ((7 i) mod 11)/13; f_0 = 0, f_i = f_(i-1) + ((5 i) mod 17)/19

@@ -3,7 +3,7 @@
 A spring in permanent contact (and a jumping one that slips first) starts to
 stick at tau_s = arcsin vbar; its stick length L is the root in (2 alpha, 2 pi)
 of H(x) = S(alpha - x) - S(alpha) + (1 - vbar) x, S(y) = y - sin y,
-alpha = arccos vbar (src/model/spring.rs). It depends on vbar alone, so a fit
+alpha = arccos vbar (src/fricosc/src/model/spring/stick.rs). It depends on vbar alone, so a fit
 good to 1e-9 makes Halley's first step the last one at the means' tolerance.
 
 Two regions, polynomials of degree 10 fitted on 60 Chebyshev points of 40-digit

@@ -16,7 +16,7 @@ use serde::Serialize;
 use std::time::Instant;
 /// The reference values this benchmark uses: `data/reference-values.json`, the
 /// project's public 40-digit values (independent evaluation, cross-checked by a
-/// converged time stepper; `tests/reference.rs` reads and checks them).
+/// converged time stepper; `src/fricosc/tests/library/reference.rs` reads and checks them).
 const REFERENCES: &str = include_str!("../../data/reference-values.json");
 
 /// One benchmarked case.
@@ -274,7 +274,7 @@ pub fn measure(quick: bool) -> Report {
         version: env!("CARGO_PKG_VERSION").into(),
         machine: machine(),
         reference: "40-digit values of data/reference-values.json (independent high-precision evaluation of the \
-                    exact periodic state, cross-checked by a converged time stepper), checked by tests/reference.rs"
+                    exact periodic state, cross-checked by a converged time stepper), checked by src/fricosc/tests/library/reference.rs"
             .into(),
         cases,
         points,

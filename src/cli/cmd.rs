@@ -158,7 +158,7 @@ impl VelocityList {
     }
 }
 
-/// Oscillation in the sliding direction for one point (`fricosc::combined`).
+/// Oscillation in the sliding direction for one point (`Conditions::with_tangential`).
 #[derive(Args)]
 pub struct TangentialPoint {
     /// Amplitude of an oscillation in the sliding direction, dx/l in pre-slip lengths l = mu0 u0 kz/kx

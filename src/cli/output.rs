@@ -81,8 +81,8 @@ impl Text {
 
 /// A cell of a [`TableWriter`] row: a number, or its [`Text`] made once (a grid
 /// value that repeats row after row: the amplitude on every row of its block,
-/// each velocity once per amplitude; formatting costs ~190 instructions a
-/// number, a copy ~10).
+/// each velocity once per amplitude: a copy instead of formatting the same
+/// number again).
 #[derive(Debug, Clone, Copy)]
 pub enum Cell<'a> {
     /// A number, printed as [`num`] prints it.

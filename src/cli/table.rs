@@ -82,8 +82,8 @@ fn combined_table(a: &TableArgs, shape: &fricosc::Shape, ts: &[f64], phases: &[f
 }
 
 /// Rows a rayon task computes in a row: enough that rayon's bookkeeping is
-/// a few instructions a row (a flat row is ~1,300), few enough that a table of
-/// slow curved rows (~70,000 each) still splits over every thread.
+/// small beside a flat row, few enough that a table of slow curved rows
+/// still splits over every thread.
 const ROWS_PER_TASK: usize = 64;
 
 pub fn run(a: TableArgs) -> Result<()> {

@@ -59,9 +59,9 @@ fn the_two_starts_at_zero_velocity() {
     for amp in [0.3, 0.8, 1.5] {
         assert_eq!(stepper(0.0, amp, 1000, 5, true), 0.0);
         let sliding = stepper(0.0, amp, 100_000, 3, false);
-        let exact = fricosc::validation::exact_value(&Shape::flat(), 0.0, amp, AtRest::Sliding).unwrap();
+        // mu_static = N_min / N_mean of the flat punch.
+        let exact = (1.0f64 - amp).max(0.0);
         assert!((sliding - exact).abs() < 1e-4, "amp {amp}: {sliding} vs {exact}");
-        assert_eq!(fricosc::validation::exact_value(&Shape::flat(), 0.0, amp, AtRest::Relaxed).unwrap(), 0.0);
     }
 }
 

@@ -20,7 +20,7 @@ pub(super) fn combined_mu(shape: &Shape, vhat: f64, amp: f64, t: f64, phase: f64
     Ok(shape.ratio(&c)?.mu_ratio)
 }
 
-/// The figures beyond the seed (`shared/MODEL-oscillation.md`): pure
+/// The figures beyond the seed (README: oscillation in the sliding direction): pure
 /// tangential oscillation against `vhat/T` with the rigid-body law (flat punch
 /// and paraboloid), combined oscillation against the phase, and the flat
 /// punch's regime map over phase and normal amplitude.

@@ -1,7 +1,7 @@
 """A time stepper as a tribologist writes one from the seed: numpy, SI units,
 the oscillation written ``u_z = u0 + du cos(omega t)`` (the seed writes
 ``u0 - du cos``), started sliding, the mean taken over the last period. It
-writes the files ``tests/validate.rs`` validates (``data/user-stepper/``), and
+writes the files ``tests/tool/users.rs`` validates (``data/user-stepper/``), and
 plants the bugs ``fricosc validate`` is meant to name:
 
     python3 src/python/examples/user_stepper.py --out data/user-stepper

@@ -2,7 +2,7 @@
 //! JSON array read by `serde_json` (each row's raw text borrowed from the
 //! input, only the wanted fields picked out, duplicate keys refused), the way
 //! the command line read them before it had its own one-pass scanner.
-//! `tests/scan.rs` and the fuzz target `batch_json` compare the two.
+//! `batch_rows.rs` and the fuzz target `batch_json` compare the two.
 #![allow(dead_code)]
 
 use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, Visitor};

@@ -1,5 +1,5 @@
 //! Friction under oscillation in the sliding direction, alone or with the
-//! normal oscillation and a phase between them (`shared/MODEL-oscillation.md`),
+//! normal oscillation and a phase between them (README: oscillation in the sliding direction),
 //! for every contact: the flat punch is one spring ([`crate::stop`]); a curved
 //! contact is its MDR foundation, each spring with its own bound
 //! `(1 - G(z) - amp cos tau)_+` and the same body motion.

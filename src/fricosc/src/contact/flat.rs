@@ -75,7 +75,7 @@ pub fn mean_normal(amp: f64) -> f64 {
 /// Below this `D/<B>` a jumping punch's reduction is the smaller of `mu` and
 /// the reduction without computing `<F>` (its `mu` is above 0.55, where the
 /// comparison `<F>/<B> < 1/2` could not go the other way by rounding): the
-/// same branch as before, ~160 instructions less for such a point.
+/// branch the full comparison takes, without the tangential force's cost.
 const REDUCTION_CLEARLY_SMALL: f64 = 0.45;
 
 /// Whether a spring's `D/<B>` is below [`REDUCTION_CLEARLY_SMALL`] (a NaN is not).

@@ -206,7 +206,7 @@ impl<C: Contact + ?Sized> crate::integrate::mdr::Profile for AlongZ<'_, C> {
 
 /// Gauss-Legendre order of the default [`Contact::mean_normal`]: the graded
 /// integrand is smooth (a depth `c^(3/2)` becomes `theta^3`), and 64 points
-/// reproduce the paraboloid's closed form to 2e-15 (`tests/contact.rs`).
+/// reproduce the paraboloid's closed form to 2e-15 (`src/fricosc/tests/library/contact.rs`).
 const MEAN_NORMAL_ORDER: usize = 64;
 
 /// The foundation of `contact` discretised for the time-stepping peer and force

@@ -300,7 +300,7 @@ impl Report {
 /// Absolute error estimate of the flat punch's `mu_ratio`: the smaller of
 /// `mu_ratio` and the reduction is computed directly with relative error at
 /// most [`crate::ratio::ROUNDING_PER_TERM`] eps (measured: 3.3 eps,
-/// `tests/flat_events.rs`), the other as its complement. So where `mu_ratio` is
+/// `src/fricosc/tests/library/flat_events.rs`), the other as its complement. So where `mu_ratio` is
 /// the small one its error is `16 eps mu_ratio` (relative, down to the smallest
 /// subnormals, whose own spacing is added), else `eps (16 reduction + 1/2)`
 /// (the complement adds half an ulp of 1).

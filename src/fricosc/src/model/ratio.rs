@@ -11,7 +11,7 @@ pub(crate) const ROUNDING_SLACK: f64 = 8.0 * f64::EPSILON;
 
 /// Relative rounding error of one spring's means and one quadrature weight, in
 /// units of the machine epsilon: the closed-form phases are cancellation-free
-/// (a few roundings each; `tests/flat_events.rs` measures at most 3.3 eps) and
+/// (a few roundings each; `src/fricosc/tests/library/flat_events.rs` measures at most 3.3 eps) and
 /// Golub-Welsch weights carry a few more.
 pub(crate) const ROUNDING_PER_TERM: f64 = 16.0;
 

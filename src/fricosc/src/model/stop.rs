@@ -1,5 +1,5 @@
 //! One spring under oscillation in the sliding direction, alone or with the
-//! normal oscillation (`shared/MODEL-oscillation.md`): the exact periodic
+//! normal oscillation (README: oscillation in the sliding direction): the exact periodic
 //! steady state of the stop operator, phase by phase.
 //!
 //! # Model

@@ -40,9 +40,7 @@ pub(crate) struct Rule {
 /// Compute the `m`-point rule for weight `(1 + x)^beta`, `beta > -1`, `m >= 1`
 /// (Golub-Welsch, the weights by Christoffel):
 /// - the nodes are the Jacobi matrix's eigenvalues (nalgebra, without
-///   eigenvectors: the parabolic table's four rules took 2.2 million
-///   instructions with them, 4 % of its work, and take 1.35 million now),
-///   each polished by two Newton steps on `p_m` (the recurrence below): from
+///   eigenvectors, which the weights below do not need), each polished by two Newton steps on `p_m` (the recurrence below): from
 ///   up to 18 eps off (order 256) to within 2 (correctly rounded but where
 ///   beta nears -1);
 /// - the weights are the Christoffel numbers `lambda(x) = 1 / S(x)`,
@@ -122,8 +120,7 @@ fn normalize(weights: &mut [f64], tail: &mut [[f64; TAIL_ROWS]], mu0: f64) {
 /// come in pairs `+-x`: their squares are the eigenvalues of `J^2` on the
 /// even unit vectors `e_0, e_2, ...`, a tridiagonal matrix of half the size
 /// (`(J^2)_(2i,2i) = b_2i^2 + b_(2i+1)^2`, `(J^2)_(2i,2i+2) = b_(2i+1)
-/// b_(2i+2)`, with `b_(k+1) = J_(k,k+1)`), an eighth of the work (the
-/// parabolic table's rules of orders 16 to 48 took 2.3 million instructions).
+/// b_(2i+2)`, with `b_(k+1) = J_(k,k+1)`), an eighth of the work.
 /// The square roots lose accuracy at the smallest nodes (about `eps/x`): the
 /// caller's Newton steps restore it.
 fn eigenvalues(m: usize, beta: f64, diag: &[f64], off: &[f64]) -> Vec<f64> {
@@ -243,7 +240,7 @@ impl Rule {
     /// degrees on, `E1 q^3`). At order 8 no decay is claimed (`q = 1`: two
     /// coefficients a group are too few to show one). Claiming `q^1.5` saved 15 %
     /// of the nodes but left a margin of only 1.1 on the 42,000 checks of
-    /// `tests/mdr.rs` (error 1.09e-13 for an estimate of 1.18e-13); with `q`
+    /// `src/fricosc/tests/library/mdr.rs` (error 1.09e-13 for an estimate of 1.18e-13); with `q`
     /// the largest error is 0.27 of its estimate there (0.09 before the
     /// stick-first bands in the stick's half-length, 0.18 before the band
     /// below the contact centre's threshold went to one piece).
@@ -287,9 +284,9 @@ struct Cache {
 type WordHash = BuildHasherDefault<WordHasher>;
 
 /// A multiply-rotate hash of whole words (FxHash's step) for the cache's keys,
-/// an order and a weight's bits: ~5 instructions a lookup where the standard
-/// SipHash took ~170 (a curved point looks up ~20 rules). The keys are the
-/// program's own, so nothing needs SipHash's resistance to chosen collisions.
+/// an order and a weight's bits: a curved point looks up tens of rules, and
+/// the keys are the program's own, so nothing needs SipHash's resistance to
+/// chosen collisions.
 #[derive(Default)]
 struct WordHasher(u64);
 

@@ -115,8 +115,8 @@ const HALLEY_MAX_STEPS: u32 = 12;
 /// `HALLEY_MAX_STEPS` pass, [`bracketed`] takes over on `[lo, hi]`.
 ///
 /// Written here rather than taken from `roots` (which has Newton but not
-/// Halley): the stick end is every spring's inner loop, and the crate's
-/// Newton spent ~100 instructions a step on its convergence callbacks.
+/// Halley): the stick end is every spring's inner loop, where the crate's
+/// convergence callbacks would cost more than the step.
 ///
 /// `accept`, where not 0, also stops after a Halley step `d` (at most 1e-2
 /// relative) once the next iterate's predicted error is below `accept`

@@ -66,8 +66,7 @@ const SHORT_TERMS: usize = 8;
 
 /// The power series with coefficients `coef` in `y = x^2`, by Horner's rule,
 /// shortened for small `y`. Both lengths are known at compile time, so each
-/// loop is unrolled (over a slice of run-time length the two series took 8 %
-/// of the parabolic table's instructions).
+/// loop is unrolled (these series run at every node of a curved contact).
 fn horner<const N: usize>(coef: &[f64; N], y: f64) -> f64 {
     match coef.first_chunk::<SHORT_TERMS>() {
         Some(short) if y < SHORT_SERIES_SQ => horner_fixed(short, y),
@@ -239,7 +238,7 @@ pub(crate) fn one_minus_a_cos_asin(a: f64, v: f64) -> f64 {
 }
 
 /// `x^e` (`x >= 0`), the exponents the power-law shapes use most without
-/// the library's `powf` (about 125 instructions a call): `1/2` (the
+/// the library's general `powf`: `1/2` (the
 /// paraboloid's `1/n`) as the square root, correctly rounded like `powf`,
 /// and `1` and `2` as exact products.
 pub(crate) fn powf(x: f64, e: f64) -> f64 {

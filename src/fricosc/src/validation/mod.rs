@@ -37,7 +37,8 @@ pub use history::{
     compare_history, to_static_units, EventSeries, FoundEvent, HistoryData, HistorySample, HistorySeries,
     HistoryValidation, NormalComparison, OriginSource, TimeAxis, TimeOrigin,
 };
-pub use series::{convergence, observed_order, Convergence, Needed, RegimeOrder, RowStatus, SeriesRow};
+pub(crate) use series::observed_order;
+pub use series::{convergence, Convergence, Needed, RegimeOrder, RowStatus, SeriesRow};
 pub use table::{Column, Table};
 pub(crate) use text::findings_text;
 
@@ -351,7 +352,7 @@ pub fn rows_from_columns(
 ///
 /// # Errors
 /// The solver's errors for a bad `(vbar, amp)`.
-pub fn exact_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest) -> Result<f64> {
+pub(crate) fn exact_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest) -> Result<f64> {
     if vbar == 0.0 && at_rest == AtRest::Relaxed {
         return Ok(0.0);
     }

@@ -169,7 +169,7 @@ fn line_fit(points: &[(f64, f64)]) -> Option<(f64, f64)> {
 /// least-squares line through `(ln resolution, ln |error|)` over the errors
 /// above rounding (none with fewer than two).
 #[must_use]
-pub fn observed_order(resolutions: &[f64], errors: &[f64]) -> (Option<f64>, Option<f64>) {
+pub(crate) fn observed_order(resolutions: &[f64], errors: &[f64]) -> (Option<f64>, Option<f64>) {
     let points: Vec<(f64, f64)> = resolutions
         .iter()
         .zip(errors)

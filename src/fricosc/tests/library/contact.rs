@@ -43,7 +43,7 @@ fn static_forces_have_their_closed_forms() {
 
 /// The worn tip's static force `2 int (c - G)_+ dz` by an independent
 /// quadrature of its profile `G(z) = z sqrt(z^2 - E^2)/sqrt(1 - E^2)` (written
-/// here from the derivation in `src/contact/flat_tip.rs`, not called).
+/// here from the derivation in `src/fricosc/src/contact/flat_tip.rs`, not called).
 fn worn_tip_force(e: f64, c: f64) -> f64 {
     let g = |z: f64| if z <= e { 0.0 } else { z * (z * z - e * e).sqrt() / (1.0 - e * e).sqrt() };
     // The edge G(zc) = c: z^4 - E^2 z^2 = c^2 (1 - E^2).

@@ -130,7 +130,7 @@ use crate::common::mdr_ref;
 /// Over vbar in [0, 1.2] and amp in [0, 10], including 1 - vbar down to 1e-12:
 /// the solver agrees with a second quadrature in another variable (same spring
 /// means) to 1e-13, and its error estimate bounds the difference (up to the
-/// second quadrature's own accuracy). `tests/mdr_independent.rs` repeats this
+/// second quadrature's own accuracy). `mdr_independent.rs` repeats this
 /// against a reference that shares no code.
 #[test]
 fn agrees_with_a_second_quadrature_in_y_on_a_grid_and_the_estimate_bounds_the_error() {
@@ -284,9 +284,9 @@ fn the_estimate_bounds_the_error_at_every_tolerance_on_a_wide_grid() {
 /// The regime boundary `amp sqrt(1 - vbar^2) = 1`, where the stick-first band
 /// starts within an ulp of the contact centre's threshold `u*`: at every
 /// tolerance the estimate bounds the distance to the default tolerance's value,
-/// and the work stays bounded. (A node's distance from `u*` once came from `u`
-/// rounded to its ulp: the Jacobian jittered, the paraboloid at amp 5/3, vbar 0.8
-/// spent 10,436 nodes and missed the 40-digit value by 1.1e-11, twice its estimate.)
+/// and the work stays bounded. A node's distance from `u*` taken from `u`
+/// rounded to its ulp makes the Jacobian jitter there (the paraboloid at amp
+/// 5/3, vbar 0.8 then misses its 40-digit value by twice its estimate).
 #[test]
 fn the_stick_first_band_starting_at_the_centre_threshold() {
     let mut misses = vec![];

@@ -5,7 +5,7 @@
 //! regime thresholds, two step sizes whose difference is its accuracy).
 //!
 //! At every tolerance from 1e-3 to the default, on the 528-point grid of
-//! `tests/mdr.rs` (which includes amp 0.999 and 1.001, vbar 1e-6 and 1 - 1e-6),
+//! `mdr.rs` (which includes amp 0.999 and 1.001, vbar 1e-6 and 1 - 1e-6),
 //! the solver's `error_estimate` must bound its distance to this reference
 //! (up to the reference's own accuracy).
 

@@ -1,6 +1,6 @@
 //! Tabulated shapes against the power laws they sample, bad tables, tables at
 //! the edges of f64. (The MDR transform itself is unit-tested beside it:
-//! `src/contact/profile/tests.rs`.)
+//! `src/fricosc/src/contact/profile/tests.rs`.)
 
 use std::path::PathBuf;
 use tempfile::TempDir;

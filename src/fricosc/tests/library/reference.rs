@@ -1,4 +1,6 @@
-//! The public 40-digit reference values (`shared/reference-values.json`).
+//! The public 40-digit reference values: the committed copy in
+//! `data/reference-values.json`, equal to the file the project was given
+//! where that sits beside the checkout.
 use crate::common::{reference_cases, tol};
 
 #[test]

@@ -167,8 +167,8 @@ struct Permanent {
     /// Half the stick of a spring in permanent contact (NaN at `vbar >= 1`):
     /// the stick from the tangent, `Velocity::tangent_half_length` (a test's),
     /// which is the top of the stick-first band in the half-length. The spring
-    /// is solved to full precision for it, one root where the band's top took a
-    /// second (~520 instructions a point).
+    /// is solved to full precision for it, so that the band's top needs no
+    /// root of its own.
     tangent_half_length: f64,
 }
 
@@ -546,7 +546,7 @@ pub(crate) fn mean_normal_force(n: f64, amp: f64, tol: f64) -> crate::Result<Opt
 /// contact to loss of contact (losing all its friction) and every permanent one
 /// loses `D(0) = 1`, so what remains is the minimum normal force over its mean,
 /// `int_0^{z1} (1 - amp - z^n) dz / N = (n/(n+1)) (1 - amp)_+^(1 + 1/n) / N`
-/// (the seed's section 4). `tests/mdr.rs` checks it against `power_law` at `vbar = 0`.
+/// (the seed's section 4). `src/fricosc/tests/library/mdr.rs` checks it against `power_law` at `vbar = 0`.
 ///
 /// A failed or non-finite mean normal force is an error, never a value.
 pub(crate) fn mu_static_ratio(n: f64, amp: f64, tol: f64) -> crate::Result<f64> {

@@ -7,7 +7,7 @@ use super::*;
 /// the error). Measured: the parabolic table of `fricosc bench` (10 x 100
 /// points, amp 0 to 3, vbar 0 to 1.2) 20,444 nodes at the default
 /// tolerance and 14,424 at 1e-8; the boundary `amp sqrt(1 - vbar^2) = 1`
-/// at most 1,852 over five exponents (it once took 10,436).
+/// at most 1,852 over five exponents.
 #[test]
 fn the_node_counts_stay_below_their_ceilings() {
     let ceiling = |got: usize, measured: usize, what: &str| {
@@ -59,7 +59,7 @@ fn the_node_counts_stay_below_their_ceilings() {
 /// Where nothing sticks (vbar >= 1), the ratio's own call takes the mean
 /// normal force from its closed form (the cone and the paraboloid; none
 /// for other exponents): against 20-digit values of `2 int_0^pi F(1 -
-/// amp cos tau) dtau / pi` (`tests/library/report_fields.rs`, the same table).
+/// amp cos tau) dtau / pi` (`src/fricosc/tests/library/report_fields.rs`, the same table).
 #[test]
 #[allow(clippy::excessive_precision)]
 fn the_ratio_call_reports_the_closed_form_normal_force() {

@@ -14,7 +14,7 @@ pub struct HistorySeries {
     pub resolutions: Vec<f64>,
     /// The largest error over the last period at each resolution.
     pub max_abs_errors: Vec<f64>,
-    /// Their observed order ([`observed_order`]).
+    /// Their observed order: the least-squares slope of `log |error|` against `log resolution`.
     pub order: Option<f64>,
     /// Their error constant.
     pub constant: Option<f64>,

@@ -1,7 +1,7 @@
 //! A second quadrature for MDR power laws (not independent: it shares
 //! `Spring::new` with the solver; its Gauss rules are the tests' own
 //! (`common/quad.rs`); the independent check is
-//! `tests/mdr_independent.rs`): the integral over `z` is done in
+//! `mdr_independent.rs`): the integral over `z` is done in
 //! the variable `y = z^n` (not the solver's `beta = arcsin s`), with a
 //! `y = p + (q-p)(1 - cos t)/2` substitution for the square-root thresholds,
 //! Gauss-Jacobi at the centre, geometric splitting near it, and fixed high orders

@@ -153,7 +153,7 @@ pub fn shape(spec: &str) -> fricosc::Result<fricosc::Shape> {
     fricosc::Shape::parse_with(spec, &|p| fricosc::io::read_capped(p, fricosc::io::MAX_FILE_BYTES))
 }
 
-/// One case of `data/reference-values.json` (a copy of `shared/reference-values.json`).
+/// One case of `data/reference-values.json` (the committed copy of the public values).
 pub struct Case {
     pub shape: String,
     pub vbar: f64,

@@ -48,27 +48,15 @@ fn slip_first_tangential(u: f64, sin_u: f64, cos_u: f64, delta: f64, excess: f64
 
 /// [`Foundation::band_centre_by_length`] splits a band without cuts towards
 /// its top where the means' singularity below its bottom is closer than this
-/// fraction of its width. Measured on the parabolic table (nodes a point, and
-/// instructions a row of a build that read these settings from the
-/// environment): without the split 26.22 and 29,827; with it from 0.25
-/// (where the phase grades once) 26.22, from 0.125 25.53 and 28,524, from
-/// 0.0625 25.98. Splitting at 0.3, 0.5 or 0.7 of the width costs the same.
+/// fraction of its width (fewest nodes on the parabolic table; from 0.3 of
+/// the width on the split changes nothing).
 const CENTRE_SPLIT_BELOW: f64 = 0.125;
 /// First order of a stick-first band in the stick's half-length
-/// ([`Foundation::band_by_length`]). Measured on the parabolic table (nodes a
-/// point; the phase alone took 29.1): in `h` itself (from vbar 0.02) from
-/// 16, 33.9 (nearly
-/// every band failing at 16: `sin phi` has a square-root branch point just
-/// above the band's top) and from 32, 29.3; in `tau = sqrt(h_b - h)`, which
-/// removes it, from 16, 28.9 (most bands passing at 24), from 24, 26.2, and
-/// from 32, 28.3. With 20 among the [`ORDERS`] (2026-11-26, nodes a point of
-/// the parabolic table and of `tests/mdr.rs`'s wide grid of seven exponents):
-/// from 24, 21.89 and 127.98; from 20, 20.44 and 127.30; from 18, 20.22 and
-/// 128.85 (the bench's point `vbar 0.3, amp 0.4` failing at 18: 38 nodes
-/// where it takes 20). At order 16 that point's estimate is 2.5e-14 for sums
-/// within an ulp of order 48's: the estimate claims the measured decay once, and
-/// claiming it to the power 1.5 for these bands alone missed its bound on the
-/// wide grid (1.34 of it at `n = 3.7, vbar 1e-3, amp 0.5`).
+/// ([`Foundation::band_by_length`]), in `tau = sqrt(h_b - h)`, which removes
+/// the square-root branch point of `sin phi` just above the band's top: the
+/// order at which most bands pass, so that few run a second pass (starting
+/// lower made the estimate's single claim of the measured decay the
+/// binding one, and it missed its bound when raised for these bands alone).
 const LENGTH_FIRST_ORDER: usize = 20;
 /// [`Foundation::band_centre_whole`] takes a band whose singularities lie at
 /// least this fraction of its width (in `tau`) above its top.
@@ -97,27 +85,17 @@ const MAX_PIECES: usize = 100;
 /// Levels of the grading towards the Jacobian's branch point: a band's top can
 /// lie within an ulp of it (where `amp sqrt(1 - vbar^2) = 1`, `u_sf = u*` up to
 /// rounding: `amp = 5/3, vbar = 0.8`), and a piece that holds the branch point
-/// within a fraction of its width converges only algebraically (there the
-/// stick-first band took 9,028 nodes; see [`Foundation::y_sc`] for the rest).
+/// within a fraction of its width converges only algebraically (see
+/// [`Foundation::y_sc`] for the rest).
 /// The distance `u_sf - u*` is at least an ulp of `u_sf`, so 2^-90 of the
 /// width reaches it.
 const JACOBIAN_LEVELS: i32 = 90;
 /// Length in `t` of one segment of a mapped band ([`Foundation::pass_mapped`]).
 /// The integrand is analytic in a strip about the real `t` axis (half-width
 /// about `pi/2` where the Jacobian's complex zeros set it), so a segment's
-/// convergence does not depend on how close the singularities lie; its length
-/// was chosen by measurement (callgrind, the bench's 10 x 100 grid for `n = 2`,
-/// once each order carried its own estimate): 2.0, 2.5, 3.0, 3.5, 4.0, 5.0 and
-/// 7.0 cost 55.8, 56.2, 54.7, 52.8, 50.6, 54.2 and 55.0 million instructions;
-/// 4.0 against 2.5 saves 10 %, 8 % and 2 % for `n` = 1, 3 and 0.5 too. That
-/// was with the ladder starting every segment at order 16, where 270 of the
-/// grid's 281 segments failed (197 of them within the tolerance already, but
-/// their estimate 10^5 times above it: the estimate claims the decay of the
-/// last doubling once, safe for algebraic decays and pessimistic by that decay
-/// again for geometric ones, which the mapped integrand has). With the next
-/// order predicted ([`Foundation::next_order`]), segments of 4.5, 5.0 and 5.5
-/// from [`Foundation::mapped_first_order`]'s 32 took 28.97, 29.08 and 29.24
-/// nodes a point on the grid; 3.5 and 4.0 from 24 took 28.84 and 29.43.
+/// convergence does not depend on how close the singularities lie; the length
+/// is the cheapest of those tried from 2 to 7 with the predicted next order
+/// (`fricosc bench` measures it; a few per cent either side of 5).
 const SEGMENT: f64 = 5.0;
 /// A side of a mapped band whose singularity lies beyond `GRADE_RATIO` of
 /// the width is mapped as if it lay this many widths away (nearly linear there).
@@ -231,8 +209,8 @@ impl Foundation {
     /// `u - u*` as given. A node is `top + d`, rounded to an ulp of `u`; `u - u*`
     /// must come from `(top - u*) + d` instead, or a piece within 1e-10 of `u*`
     /// sees its Jacobian `y^gamma` jitter by 1e-6 (at `amp sqrt(1 - vbar^2) = 1`
-    /// the stick-first band starts there: the paraboloid at amp 5/3, vbar 0.8
-    /// took 10,436 nodes and missed its 40-digit value by 1.1e-11, twice its estimate).
+    /// the stick-first band starts there; the test
+    /// `the_stick_first_band_starting_at_the_centre_threshold` holds it).
     pub(super) fn y_sc(&self, sin_u: f64, cos_u: f64, from_star: f64) -> f64 {
         if self.amp <= 1.0 {
             let one_minus_c = if cos_u > 0.0 { sin_u * sin_u / (1.0 + cos_u) } else { 1.0 - cos_u };
@@ -255,8 +233,7 @@ impl Foundation {
     /// `d = u - u*` in `[0, pi - u*]`, and `cos(d/2)`, from one `sin_cos` (by
     /// its series for small `d`, [`crate::special::sin_cos_small`]): two
     /// non-negative terms (both angles in `[0, pi/2]`), so no cancellation
-    /// (two of glibc's sines took about 130 instructions a node, libm's
-    /// `sin_cos` takes about 80).
+    /// (one shared range reduction instead of two sines).
     fn half_angles(&self, d: f64) -> (f64, f64, f64) {
         let (sin_star, cos_star) = self.star_sin_cos;
         let (s, c) = crate::special::sin_cos_small(0.5 * d);
@@ -308,10 +285,9 @@ impl Foundation {
     }
 
     /// Order-`m` Gauss(-Jacobi) sums `(int amp <B> dz, int amp D dz)` over
-    /// `u` in `[top, bottom]` with the weight of `kind` at the top. (Starting
-    /// Halley from the neighbouring node's stick length was tried: it costs 10 %
-    /// more instructions than the fitted guess, the nodes of a low order being
-    /// far apart.)
+    /// `u` in `[top, bottom]` with the weight of `kind` at the top. Each
+    /// node's stick starts Halley from the fitted guess, not from the
+    /// neighbouring node's length: a low order's nodes lie far apart.
     pub(super) fn pass(&self, top: f64, bottom: f64, kind: Top, means: Means, m: usize) -> Pass {
         let e = self.weight_exponent(kind);
         let r = quad::rule(m, e);
@@ -390,11 +366,10 @@ impl Foundation {
     /// branch point above the top, `near.1` below the bottom), in the mapped
     /// variable of [`Foundation::pass_mapped`], cut into segments of length
     /// [`SEGMENT`] in `t`; a far side is mapped as if [`FAR_SIDE`] widths away.
-    /// On the parabolic table (10 x 100, `amp` 0 to 3) its 323 such bands took
-    /// 19,628 nodes where the graded pieces took 30,824 (the boundary point
-    /// `amp = 5/3, vbar = 0.8`: 252 where it took 1,516). Bands with the
-    /// Jacobian's weight at the top (`amp > 1` from `u*`) stay graded: mapped
-    /// too (with the Jacobi weight in `tau`) the parabolic table cost 3 % more.
+    /// Fewer nodes than graded pieces for such bands, many fewer where the
+    /// singularity is close (the boundary `amp sqrt(1 - vbar^2) = 1`). Bands
+    /// with the Jacobian's weight at the top (`amp > 1` from `u*`) stay
+    /// graded: mapped with the Jacobi weight in `tau` they cost more.
     fn band_mapped(&self, top: f64, bottom: f64, ends: (f64, f64), scale: [f64; MEANS]) -> Sums {
         let (d0, d1) = ends;
         let width = bottom - top;
