@@ -248,16 +248,45 @@ pub struct Batch<'a> {
 
 /// Check and evaluate every row of `text` (a JSON array); `source` names the
 /// input in errors. The rows are read and checked one after another (the
-/// first at fault is the one named); what is kept of each is its text, its
-/// job and its results, evaluated in parallel once every row is checked.
+/// first at fault is the one named, before any fault of an evaluation); each
+/// chunk of them is evaluated in parallel while the next is read.
 pub fn evaluate<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Result<Batch<'a>> {
-    let bad = |reason: String| Error::Parse { context: source.into(), reason };
-    let mut array = ArrayRows::new(text).map_err(bad)?;
+    let mut array = ArrayRows::new(text).map_err(|reason| Error::Parse { context: source.into(), reason })?;
     let mut shapes = Shapes::new(stepping);
-    let (mut raws, mut jobs, mut replace) = (vec![], vec![], vec![]);
+    let mut batch = Batch { rows: vec![], results: vec![], replace: vec![] };
+    let (mut pending, mut failed) = (vec![], None);
+    loop {
+        let (evaluating, first) = (shapes.snapshot(), batch.results.len());
+        let (read, evaluated) = rayon::join(
+            || read_chunk(&mut array, &mut shapes, &mut batch, source),
+            || evaluating.evaluate_all(&pending, source, &|i| format!("row {}", first + i)),
+        );
+        match evaluated {
+            Ok(r) => batch.results.extend(r),
+            Err(e) => failed = failed.or(Some(e)),
+        }
+        pending = read?;
+        if pending.is_empty() {
+            return failed.map_or(Ok(batch), Err);
+        }
+    }
+}
+
+/// The next [`CHUNK`] rows of `array`, read and checked: their text (and
+/// where they give results) appended to `batch`, their jobs returned (none
+/// at the end).
+fn read_chunk<'a>(
+    array: &mut ArrayRows<'a>,
+    shapes: &mut Shapes,
+    batch: &mut Batch<'a>,
+    source: &str,
+) -> Result<Vec<Job>> {
+    let bad = |reason: String| Error::Parse { context: source.into(), reason };
+    let mut jobs = Vec::with_capacity(CHUNK.min(MAX_ROWS));
     let mut last: Option<(Cow<str>, u32)> = None;
-    while let Some(row) = array.next() {
-        let k = raws.len();
+    while jobs.len() < CHUNK {
+        let Some(row) = array.next() else { break };
+        let k = batch.rows.len();
         if k == MAX_ROWS {
             let count = (k + 1 + std::iter::from_fn(|| array.next()).count()) as u128;
             return Err(Error::TooLarge { what: format!("rows of batch {source}"), count, limit: MAX_ROWS as u128 });
@@ -273,13 +302,12 @@ pub fn evaluate<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> 
             }
         };
         jobs.push(shapes.job(id, &row.inputs).map_err(at)?);
-        raws.push(row.raw);
+        batch.rows.push(row.raw);
         if let Some(given) = row.results {
-            replace.push((k, given));
+            batch.replace.push((k, given));
         }
     }
-    let results = shapes.evaluate_all(&jobs, source, &|i| format!("row {i}"))?;
-    Ok(Batch { rows: raws, results, replace })
+    Ok(jobs)
 }
 
 impl Batch<'_> {

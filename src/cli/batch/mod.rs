@@ -132,6 +132,12 @@ impl Shapes {
         Shapes { index: HashMap::new(), list: vec![], stepping }
     }
 
+    /// The shapes as they are now, to evaluate rows already checked while
+    /// more are read (which may add shapes).
+    fn snapshot(&self) -> Shapes {
+        Shapes { index: HashMap::new(), list: self.list.clone(), stepping: self.stepping }
+    }
+
     /// A new chunk of a streamed batch begins: the rows of the last one are done.
     fn new_chunk(&mut self) {
         if self.list.len() > MAX_CACHED_SHAPES {
