@@ -39,7 +39,7 @@ pub use history::{
 };
 pub(crate) use series::observed_order;
 pub use series::{convergence, Convergence, Needed, RegimeOrder, RowStatus, SeriesRow};
-pub use table::{Column, Table};
+pub use table::{rows_from_columns, Column, Table};
 pub(crate) use text::findings_text;
 
 use crate::contact::regime::ContactRegime;
@@ -305,47 +305,6 @@ pub struct PeerSummary {
     pub max_abs_error: f64,
     /// Its root mean square error.
     pub rms_error: f64,
-}
-
-/// `(vbar, amp, mu_ratio)` rows from a table's columns: `velocity` is `vbar`,
-/// or `vhat` (eq. 15) if `vhat` (then `vbar = vhat / amp`); `friction` is
-/// `mu_ratio`, or `mu` if `mu` (then `mu_ratio = mu / mu0`, and `mu0` is
-/// required; refused otherwise, where the values are already ratios).
-///
-/// # Errors
-/// [`Error::Parse`] naming the row for a bad value, columns of different lengths,
-/// or `mu` without `mu0`.
-pub fn rows_from_columns(
-    velocity: &[f64],
-    amp: &[f64],
-    friction: &[f64],
-    vhat: bool,
-    mu: bool,
-    mu0: Option<f64>,
-) -> Result<Vec<(f64, f64, f64)>> {
-    let bad = |reason: &str| Error::Parse { context: "mu0".into(), reason: reason.into() };
-    if velocity.len() != amp.len() || amp.len() != friction.len() {
-        return Err(Error::Parse { context: "columns".into(), reason: "they differ in length".into() });
-    }
-    let mu0 = match (mu, mu0) {
-        (true, Some(m)) if m.is_finite() && m > 0.0 => m,
-        (true, Some(m)) => return Err(Error::param("mu0", m, "must be finite and > 0")),
-        (true, None) => return Err(bad("the table gives 'mu': mu0 is needed (mu_ratio = mu / mu0)")),
-        (false, Some(_)) => return Err(bad("given, but the table gives 'mu_ratio' (already divided by mu0)")),
-        (false, None) => 1.0,
-    };
-    (0..amp.len())
-        .map(|i| {
-            let at = |e: Error| Error::Parse { context: format!("row {i}"), reason: e.to_string() };
-            let a = crate::error::check_nonneg("amp", amp[i]).map_err(at)?;
-            let v = if vhat {
-                crate::Conditions::vhat(velocity[i], a).and_then(|c| c.as_vbar()).map_err(at)?
-            } else {
-                crate::error::check_nonneg("vbar", velocity[i]).map_err(at)?
-            };
-            Ok((v, a, friction[i] / mu0))
-        })
-        .collect()
 }
 
 /// The exact value of row `(vbar, amp)` under `at_rest`.
