@@ -31,34 +31,19 @@ fn text<'a>(v: &'a Value, k: &str) -> &'a str {
     v[k].as_str().unwrap_or_else(|| panic!("{k} in {v}"))
 }
 
-/// One point's oscillation, as the tests name its parts.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Oscillation {
-    pub(crate) vhat: f64,
-    pub(crate) amp: f64,
-    pub(crate) tangential_amp: f64,
-    pub(crate) phase: f64,
-}
+/// One point's oscillation: `[vhat, amp, tangential_amp, phase]`.
+pub(crate) type Oscillation = [f64; 4];
 
-impl Oscillation {
-    /// Checked as the library checks it (`Conditions::with_tangential`).
-    fn new(vhat: f64, amp: f64, tangential_amp: f64, phase: f64) -> fricosc::Result<Oscillation> {
-        crate::common::at::osc([vhat, amp, tangential_amp, phase])?;
-        Ok(Oscillation { vhat, amp, tangential_amp, phase })
-    }
-
-    fn parts(&self) -> [f64; 4] {
-        [self.vhat, self.amp, self.tangential_amp, self.phase]
-    }
-}
-
+/// An oscillation, checked as the library checks it (`Conditions::with_tangential`).
 pub(crate) fn osc(amp: f64, vhat: f64, t: f64, phase: f64) -> Oscillation {
-    Oscillation::new(vhat, amp, t, phase).unwrap()
+    let o = [vhat, amp, t, phase];
+    crate::common::at::osc(o).unwrap();
+    o
 }
 
 /// The solver's answer with the flat punch's spring or the bands.
 pub(crate) fn evaluate(shape: &Shape, o: &Oscillation, tol: f64) -> fricosc::Result<Combined> {
-    crate::common::at::combined(shape, o.parts(), tol)
+    crate::common::at::combined(shape, *o, tol)
 }
 
 /// The stepping peer (three periods from a sliding start).
@@ -69,7 +54,7 @@ pub(crate) fn evaluate_oscillation(
     periods: usize,
 ) -> fricosc::Result<SteppingEvaluation> {
     assert_eq!(periods, 3, "the peer runs three periods");
-    crate::common::at::stepped_osc(shape, o.parts(), st)
+    crate::common::at::stepped_osc(shape, *o, st)
 }
 
 /// The reference's events as `(kind that starts, tau)` in the report's names:
@@ -297,13 +282,13 @@ fn negative_friction_is_an_answer_and_nan_is_refused() {
     let p = evaluate(&Shape::parabolic(), &osc(2.0, 0.6, 3.0, 1.0), DEFAULT_TOL).unwrap();
     assert!(p.ratio.mu_ratio < 0.0, "{:?}", p.ratio);
     for bad in [
-        Oscillation::new(f64::NAN, 0.5, 1.0, 0.0),
-        Oscillation::new(0.1, f64::NAN, 1.0, 0.0),
-        Oscillation::new(0.1, 0.5, f64::NAN, 0.0),
-        Oscillation::new(0.1, 0.5, 1.0, f64::NAN),
-        Oscillation::new(0.1, 0.5, -1.0, 0.0),
-        Oscillation::new(0.1, 0.5, f64::INFINITY, 0.0),
-        Oscillation::new(0.1, 0.5, 2e6, 0.0),
+        crate::common::at::osc([f64::NAN, 0.5, 1.0, 0.0]),
+        crate::common::at::osc([0.1, f64::NAN, 1.0, 0.0]),
+        crate::common::at::osc([0.1, 0.5, f64::NAN, 0.0]),
+        crate::common::at::osc([0.1, 0.5, 1.0, f64::NAN]),
+        crate::common::at::osc([0.1, 0.5, -1.0, 0.0]),
+        crate::common::at::osc([0.1, 0.5, f64::INFINITY, 0.0]),
+        crate::common::at::osc([0.1, 0.5, 2e6, 0.0]),
     ] {
         assert!(bad.is_err(), "{bad:?}");
     }

@@ -20,10 +20,11 @@ fn sequence(b: Bound, d: Drive) -> (fricosc::spring::Touch, Vec<StopKind>) {
 /// 2048-point scan for changes of the phase sequence (bisected to rounding),
 /// tanh-sinh on each piece at two steps; returns the finer and the difference.
 fn independent(n: f64, o: &Oscillation) -> (f64, f64, f64) {
-    let d = Drive { vhat: o.vhat, t: o.tangential_amp, phase: o.phase };
-    let level = |z: f64| Bound { c: 1.0 - z.powf(n), amp: o.amp };
+    let [vhat, amp, t, phase] = *o;
+    let d = Drive { vhat, t, phase };
+    let level = |z: f64| Bound { c: 1.0 - z.powf(n), amp };
     // The deepest indentation 1 + amp reaches z^n = 1 + amp.
-    let zmax = (1.0f64 + o.amp).powf(1.0 / n);
+    let zmax = (1.0f64 + amp).powf(1.0 / n);
     let mut cuts = vec![0.0, zmax];
     let grid = 2048;
     let sig = |z: f64| sequence(level(z), d);
@@ -91,14 +92,15 @@ fn curved_contacts_agree_with_an_independent_quadrature_within_their_estimate() 
             );
             if tol == DEFAULT_TOL {
                 // Each band is named after what the spring at its middle does.
-                let d = Drive { vhat: o.vhat, t: o.tangential_amp, phase: o.phase };
+                let [vhat, amp, t, phase] = o;
+                let d = Drive { vhat, t, phase };
                 assert!(!r.bands.is_empty(), "n {n} {o:?}");
                 // The bands' shares of <f> add up to the whole.
                 let total: f64 = r.bands.iter().map(|b| b.share).sum();
                 assert!((total - 1.0).abs() <= 1e-12, "n {n} {o:?}: shares add up to {total}");
                 for band in &r.bands {
                     let z = 0.5 * (band.from + band.to);
-                    let (contact, kinds) = sequence(Bound { c: 1.0 - z.powf(n), amp: o.amp }, d);
+                    let (contact, kinds) = sequence(Bound { c: 1.0 - z.powf(n), amp }, d);
                     let contact = match contact {
                         fricosc::spring::Touch::Never => "never",
                         fricosc::spring::Touch::Permanent => "permanent",
