@@ -98,7 +98,7 @@ impl Conditions {
                 "must be <= 1e6 pre-slip lengths (the rounding of the phase grows with T; near there the rigid-body law (2/pi) asin(vhat/T) holds to ~1e-6)",
             ));
         }
-        Ok(Conditions { tangential: Some((t + 0.0, phase.rem_euclid(TAU))), ..self })
+        Ok(Conditions { tangential: Some((t + 0.0, reduce_phase(phase))), ..self })
     }
 
     /// These conditions with the relative quadrature tolerance `tol` of
@@ -176,6 +176,25 @@ fn vbar_from_vhat(vhat: f64, amp: f64) -> Result<f64> {
     }
 }
 
+/// `phase mod 2 pi` in `[0, 2 pi)` to an ulp or two of the exact remainder
+/// at every magnitude: `atan2(sin phase, cos phase)`, whose `sin` and `cos`
+/// reduce their argument exactly (libm's Payne-Hanek reduction), where a
+/// remainder taken with the double `2 pi` would be off by `|phase| 2.4e-16 /
+/// 2 pi`. A phase already in `[0, 2 pi)` is kept as given.
+fn reduce_phase(phase: f64) -> f64 {
+    if (0.0..TAU).contains(&phase) {
+        return phase + 0.0;
+    }
+    let r = libm::atan2(libm::sin(phase), libm::cos(phase));
+    let r = if r < 0.0 { r + TAU } else { r + 0.0 };
+    // A remainder within half an ulp below 2 pi rounds to it: the same phase as 0.
+    if r >= TAU {
+        0.0
+    } else {
+        r
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -213,5 +232,26 @@ mod tests {
         let c = Conditions::vhat(-0.0, 0.5).unwrap().with_tangential(1.0, -1.0).unwrap();
         assert_eq!(c.as_vhat().to_bits(), 0);
         assert_eq!(c.tangential(), Some((1.0, TAU - 1.0)));
+    }
+
+    /// The exact remainders `x - 2 pi floor(x / 2 pi)` (mpmath, 400 digits,
+    /// rounded to double): within 2 ulps at every magnitude. The double `2 pi`
+    /// would miss them by 1.6e-11 at 1e6 and by 0.1 at 1e16.
+    #[test]
+    fn a_large_phase_is_reduced_exactly() {
+        let exact = [
+            (1e6, 5.925621140093852),
+            (1e10, 5.773954235013852),
+            (1e16, 2.2474252491623665),
+            (-1e16, 4.03576005801722),
+            (1e300, 4.099312823027354),
+            (f64::MAX, 3.136630678439006),
+            (-3.0, 3.2831853071795867),
+            (7.0, 0.7168146928204135),
+        ];
+        for (x, r) in exact {
+            let (_, got) = Conditions::vhat(0.1, 0.5).unwrap().with_tangential(1.0, x).unwrap().tangential().unwrap();
+            assert!((got - r).abs() <= 2.0 * f64::EPSILON * r, "{x}: {got} against {r}");
+        }
     }
 }

@@ -10,7 +10,7 @@ use thiserror::Error;
 #[non_exhaustive]
 pub enum Error {
     /// A numeric parameter is NaN, infinite or outside its domain.
-    #[error("invalid {name} = {value:?}: {reason}")]
+    #[error("invalid {name} = {}: {reason}", Amount(*value))]
     InvalidParameter {
         /// Parameter name as the user writes it (`vbar`, `amp`, ...).
         name: &'static str,
@@ -67,6 +67,21 @@ pub enum Error {
 
 /// Result alias for fricosc.
 pub type Result<T> = std::result::Result<T, Error>;
+
+/// A number in a message: the shortest text that reads back to it, with an
+/// exponent from 1e6 up and below 1e-4 (`1e15`, not `1000000000000000.0`).
+pub(crate) struct Amount(pub(crate) f64);
+
+impl std::fmt::Display for Amount {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let a = self.0.abs();
+        if a.is_finite() && a != 0.0 && !(1e-4..1e6).contains(&a) {
+            write!(f, "{:e}", self.0)
+        } else {
+            write!(f, "{:?}", self.0)
+        }
+    }
+}
 
 impl Error {
     /// Shorthand for [`Error::InvalidParameter`].

@@ -278,6 +278,15 @@ fn curved(c: &dyn crate::contact::Contact, o: &Oscillation, tol: f64) -> Result<
     check_nonneg("tol", tol)?;
     let d = o.drive();
     let zmax = c.reach(o.amp)?;
+    // The quadrature sums a spring's means (up to its scale) over `[0, z_max]`:
+    // both must stay finite, with room for the ladder's orders.
+    if !(zmax * spring_scale(Bound { c: 1.0, amp: o.amp }, d) * MAX_ORDER as f64).is_finite() {
+        return Err(Error::param(
+            "amp",
+            o.amp,
+            &format!("the force integral over {}'s springs overflows double precision", c.name()),
+        ));
+    }
     let spring = |z: f64| {
         let b = Bound { c: 1.0 - c.equivalent_profile(z), amp: o.amp };
         (solve(b, d), b)

@@ -123,7 +123,12 @@ pub(crate) fn ratio_of(sp: &Spring, amp: f64) -> Result<Ratio> {
 pub fn ratio(vbar: f64, amp: f64) -> Result<Ratio> {
     check_nonneg("vbar", vbar)?;
     check_nonneg("amp", amp)?;
-    ratio_of(&spring(vbar, amp, Precision::Means), amp)
+    // Where the contact is lost, `mu` is linear in `vbar` below VBAR_LINEAR,
+    // and the spring's own terms (`vbar^2/2` ...) would underflow: solved at a
+    // scaled velocity and scaled back (`VelocityScale`, as curved contacts).
+    let at = crate::contact::VelocityScale::of(vbar, amp);
+    let r = ratio_of(&spring(at.vbar, amp, Precision::Means), amp)?;
+    Ok(at.back(r, 0.0).0)
 }
 
 /// `mu_static/mu0` of a flat punch: the minimum normal force over the mean, `(1 - amp)_+`.

@@ -35,6 +35,17 @@
 //! bracketed root search (`numerics::root::bracketed`). Slips end at
 //! the closed-form zeros of `h` (forward) and `h2` (backward). Every integral
 //! of a phase is closed form, written without cancellation for short phases.
+//!
+//! # A force on its bound
+//! `g+ = int h - (B - f)(tau0)` and `g- = int h2 + (f + B)(tau0)` are evaluated
+//! from the closed forms of `h` and `h2`, not as `X - B`: where the drive moves
+//! with the bound (`vhat ~ 0`, `T ~ amp`, phase `~ pi/2` or `3 pi/2`: `h` or `h2`
+//! nearly vanishes) they are as small as `h`, not rounding of `O(T)` terms. A
+//! piece of `g` counts only if `g` moves toward 0 on it, which is read from the
+//! zero of `h` (or `h2`) that ends it: a force that has just left its bound does
+//! not return at once. A phase of zero length is not an event (it is not
+//! recorded; only the state changes), and no two follow each other, so a
+//! period has a handful of phases.
 
 use crate::numerics::root::bracketed;
 use crate::numerics::special::x_minus_sin;
@@ -54,11 +65,6 @@ pub struct Drive {
 }
 
 impl Drive {
-    /// `X'(tau)`.
-    fn v(&self, tau: f64) -> f64 {
-        self.vhat + self.t * (tau + self.phase).cos()
-    }
-
     /// `X(b) - X(a)`, without cancellation for `b` near `a`.
     fn dx(&self, a: f64, b: f64) -> f64 {
         let l = b - a;
@@ -87,11 +93,6 @@ impl Bound {
     /// `B(tau)` where in contact (no clipping).
     fn at(&self, tau: f64) -> f64 {
         self.c - self.amp * tau.cos()
-    }
-
-    /// `B(b) - B(a) = 2 amp sin((a+b)/2) sin((b-a)/2)`.
-    fn db(&self, a: f64, b: f64) -> f64 {
-        2.0 * self.amp * (0.5 * (a + b)).sin() * (0.5 * (b - a)).sin()
     }
 
     /// `int_a^b (B(tau) - B(a)) dtau = amp (cos a (L - sin L) + 2 sin a sin^2(L/2))`.
@@ -233,14 +234,15 @@ pub fn solve(b: Bound, d: Drive) -> StopSpring {
     } else {
         // Contact from tau_c = acos(c/amp) to 2 pi - tau_c, starting relaxed.
         let tc = (b.c / b.amp).clamp(-1.0, 1.0).acos();
-        let s = tc.sin();
         // <B> = (1/pi) (c (pi - tc) + amp sin tc) = (amp/pi) (sin x - x cos x), x = pi - tc.
         let x = PI - tc;
         let sin_x_minus_x_cos_x = 2.0 * x * (0.5 * x).sin().powi(2) - x_minus_sin(x);
         let mean = b.amp / PI * sin_x_minus_x_cos_x;
-        let kind = if d.v(tc) > b.amp * s {
+        // f = B = 0 there: it slips forward if X' > B' (h > 0), backward if
+        // X' < -B' (h2 < 0), from the same closed forms that end the slips.
+        let kind = if wave(d.vhat, r, psi, tc) > 0.0 {
             StopKind::Forward
-        } else if d.v(tc) < -b.amp * s {
+        } else if wave(d.vhat, r2, psi2, tc) < 0.0 {
             StopKind::Backward
         } else {
             StopKind::Stick
@@ -256,7 +258,9 @@ pub fn solve(b: Bound, d: Drive) -> StopSpring {
         _ => (0.0, 0.0),
     };
     let (mut sum_f, mut sum_d) = (0.0, 0.0);
-    // At most a handful of phases a period; the bound keeps a bug from looping.
+    // At most a handful of phases a period (every phase but a zero-length one
+    // ends at a zero of h or h2 or between two of them, and a zero-length phase
+    // is followed by one that is not); the bound keeps a bug from looping.
     for _ in 0..64 {
         if tau >= hi {
             break;
@@ -264,12 +268,16 @@ pub fn solve(b: Bound, d: Drive) -> StopSpring {
         let (end, next) = match kind {
             StopKind::Forward => (crossings(d.vhat, r, psi, tau).map_or(hi, |x| x.0.min(hi)), StopKind::Stick),
             StopKind::Backward => (crossings(d.vhat, r2, psi2, tau).map_or(hi, |x| x.1.min(hi)), StopKind::Stick),
-            StopKind::Stick => stick_end(b, d, tau, margins, hi, (r, psi), (r2, psi2)),
+            StopKind::Stick => stick_end(d.vhat, tau, margins, hi, (r, psi), (r2, psi2)),
         };
-        phases.push(StopPhase { kind, start: tau, end, force });
-        let (f, dd) = phase_integrals(b, d, kind, (tau, end), force, margins.0);
-        sum_f += f;
-        sum_d += dd;
+        // A phase of zero length is not an event: only the state changes.
+        if end > tau {
+            phases.push(StopPhase { kind, start: tau, end, force });
+            let (f, dd) = phase_integrals(b, d, kind, (tau, end), force, margins.0);
+            sum_f += f;
+            sum_d += dd;
+        }
+        tau = end;
         if end >= hi {
             break;
         }
@@ -279,7 +287,10 @@ pub fn solve(b: Bound, d: Drive) -> StopSpring {
             _ => (-bound, (2.0 * bound, 0.0)),
         };
         kind = next;
-        tau = end;
+    }
+    if tau < hi {
+        // Not reached by the argument above; a period left unfinished is not an answer.
+        (sum_f, sum_d) = (f64::NAN, f64::NAN);
     }
     StopSpring {
         contact: if permanent { Touch::Permanent } else { Touch::Jumping },
@@ -297,18 +308,20 @@ pub fn solve(b: Bound, d: Drive) -> StopSpring {
 /// where `f + B` falls through 0, whichever comes first; `(hi, Stick)` if
 /// neither does before `hi`.
 fn stick_end(
-    b: Bound,
-    d: Drive,
+    vhat: f64,
     tau0: f64,
     (up, down): (f64, f64),
     hi: f64,
     (r, psi): (f64, f64),
     (r2, psi2): (f64, f64),
 ) -> (f64, StopKind) {
-    let g_plus = |tau: f64| d.dx(tau0, tau) - b.db(tau0, tau) - up;
-    let g_minus = |tau: f64| d.dx(tau0, tau) + b.db(tau0, tau) + down;
-    let forward = first_crossing(&g_plus, tau0, hi, crossings(d.vhat, r, psi, tau0), true);
-    let backward = first_crossing(&g_minus, tau0, hi, crossings(d.vhat, r2, psi2, tau0), false);
+    // g+ = f - B = int h - up and g- = f + B = int h2 + down, each from the
+    // closed form of its own derivative: where X' and B' nearly cancel (the
+    // degenerate drive) they are as small as h, not rounding of X - B.
+    let g_plus = |tau: f64| wave_integral(vhat, r, psi, tau0, tau) - up;
+    let g_minus = |tau: f64| wave_integral(vhat, r2, psi2, tau0, tau) + down;
+    let forward = first_crossing(&g_plus, (tau0, hi), (vhat, r, psi), true);
+    let backward = first_crossing(&g_minus, (tau0, hi), (vhat, r2, psi2), false);
     match (forward, backward) {
         (Some(x), Some(y)) if y < x => (y, StopKind::Backward),
         (Some(x), _) => (x, StopKind::Forward),
@@ -317,25 +330,50 @@ fn stick_end(
     }
 }
 
+/// `vhat + r cos(tau + psi)` (`h` or `h2`).
+fn wave(vhat: f64, r: f64, psi: f64, tau: f64) -> f64 {
+    vhat + r * (tau + psi).cos()
+}
+
+/// `int_a^b (vhat + r cos(tau + psi)) dtau = vhat L + 2 r cos((a+b)/2 + psi) sin(L/2)`.
+fn wave_integral(vhat: f64, r: f64, psi: f64, a: f64, b: f64) -> f64 {
+    let l = b - a;
+    vhat * l + 2.0 * r * (0.5 * (a + b) + psi).cos() * (0.5 * l).sin()
+}
+
 /// The first point in `(lo, hi]` where `g` rises through 0 (`rising`) or falls
-/// through 0: `g` is monotone between the zeros `z` of its derivative, so the
-/// pieces between them hold one sign change at most.
-fn first_crossing(g: &dyn Fn(f64) -> f64, lo: f64, hi: f64, z: Option<(f64, f64)>, rising: bool) -> Option<f64> {
-    // The zeros are the first at or after `lo`, and `hi - lo <= 2 pi`: their
-    // next turns (`+ 2 pi`) lie at or beyond `hi`.
-    let mut cuts: Vec<f64> = match z {
-        Some((a, b)) => [a, b].into_iter().filter(|&x| x > lo && x < hi).collect(),
+/// through 0, `g' = vhat + r cos(tau + psi)`: `g` is monotone between the
+/// zeros of `g'`, so a piece holds one sign change at most, and only a piece on
+/// which `g` moves the wanted way can hold it. Which way `g` moves on a piece
+/// is read from the zero that ends it (`g'` is positive before a fall through 0
+/// and negative before a rise), not from rounded values of `g'`: a force that
+/// has just left its bound (at a zero of `g'`) does not return to it at once,
+/// and no two phases of zero length follow each other.
+fn first_crossing(g: &dyn Fn(f64) -> f64, (lo, hi): (f64, f64), (vhat, r, psi): (f64, f64, f64), rising: bool) -> Option<f64> {
+    // The zeros, each the first at or after `lo`, labelled `true` where `g'`
+    // falls through 0 (a tie puts the fall first: `g'` only touches 0 there).
+    // `hi - lo <= 2 pi`: their next turns lie at or beyond `hi`.
+    let mut zeros: Vec<(f64, bool)> = match crossings(vhat, r, psi, lo) {
+        Some((down, up)) => vec![(down, true), (up, false)],
         None => vec![],
     };
-    cuts.sort_by(f64::total_cmp);
-    cuts.push(hi);
+    zeros.retain(|&(x, _)| x > lo);
+    zeros.sort_by(|a, b| a.0.total_cmp(&b.0).then(b.1.cmp(&a.1)));
+    // `g'` is positive on a piece that ends where it falls; with no zero at all
+    // (`vhat >= r`) it is positive throughout.
+    let mut increasing = zeros.first().is_none_or(|z| z.1);
     let past = |x: f64| if rising { x > 0.0 } else { x < 0.0 };
     let mut a = lo;
-    for &e in &cuts {
-        if past(g(e)) {
+    for (e, falls) in zeros.into_iter().chain(std::iter::once((f64::INFINITY, false))) {
+        let e = e.min(hi);
+        if increasing == rising && past(g(e)) {
             // g is on the near side at a (or at the crossing's start to rounding).
             return Some(bracketed(g, a, e, RTOL).x);
         }
+        if e >= hi {
+            return None;
+        }
+        increasing = !falls;
         a = e;
     }
     None

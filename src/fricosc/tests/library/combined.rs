@@ -410,13 +410,16 @@ fn the_estimate_bounds_the_error_at_every_tolerance() {
 /// `X' = -B'` for every spring) leaves every spring on `-B`, tied at every
 /// instant between sticking and slipping backward: `mu = -1` exactly, and the
 /// search for band edges, which sees the tie's rounding as changes of regime
-/// at every `z`, stays within its budget (it used to branch without end).
+/// at every `z`, stays within its budget (it used to branch without end): at
+/// most 16 bands and 2,000 springs (measured: 10 and 496 for `flat-tip:0.5`,
+/// the bands where the force leaves `-B` by rounding-sized amounts).
 #[test]
 fn a_drive_that_moves_with_the_bound_pushes_with_full_friction() {
     for spec in ["flat", "parabolic", "cone", "flat-tip:0.5"] {
         let r = evaluate(&crate::common::shape(spec).unwrap(), &osc(1.0, 0.0, 1.0, PI / 2.0), DEFAULT_TOL).unwrap();
         assert!((r.ratio.mu_ratio + 1.0).abs() <= r.error_estimate + 1e-15, "{spec}: {:?}", r.ratio);
-        assert!(r.bands.len() <= 4, "{spec}: {} bands", r.bands.len());
+        let nodes: usize = r.bands.iter().map(|b| b.nodes).sum();
+        assert!(r.bands.len() <= 16 && nodes <= 2000, "{spec}: {} bands, {nodes} springs", r.bands.len());
     }
 }
 

@@ -93,6 +93,21 @@ fn small_velocity_slope_is_the_corrected_eq_21_and_the_printed_one_is_pi_too_sma
     }
 }
 
+/// Down to the smallest subnormal `vbar`, a lost contact's `mu` is the corrected
+/// eq. 21 slope times `vbar`, within an ulp of the subnormals (at `amp = 1`:
+/// `pi vbar`, 1.5e-323 at 5e-324, where the spring's `vbar^2/2` used to
+/// underflow to 0).
+#[test]
+fn subnormal_velocities_keep_the_slope() {
+    for a in [1.0, 1.5, 3.0, 100.0] {
+        for v in [5e-324, 1.5e-323, 1e-320, 1e-310, 2e-300, 1e-272] {
+            let (got, want) = (mu(v, a), slope_eq21(a) * v);
+            let ulp = (4.0 * f64::EPSILON * want).max(2f64.powi(-1074));
+            assert!((got - want).abs() <= ulp, "amp {a}, vbar {v:e}: {got:e} against {want:e}");
+        }
+    }
+}
+
 #[test]
 fn large_amplitude_slope_tends_to_pi_squared_over_4_not_pi_over_4() {
     let a = 1e9;

@@ -8,6 +8,8 @@ mod claims;
 mod combined;
 mod combined_curved;
 mod contact;
+mod degenerate;
+mod edges;
 #[allow(clippy::excessive_precision)]
 mod flat;
 mod flat_events;
