@@ -3,7 +3,9 @@
 //! `reduction >= 0` and `= 1 - mu_ratio` to rounding, and `mu_ratio`
 //! nondecreasing in `vbar` along lines of constant amplitude. Under
 //! oscillation in the sliding direction ([`run_oscillation`]): `-1 <= mu_ratio
-//! <= 1`, `0 <= reduction <= 2`, their sum 1 within the error estimates, the
+//! <= 1`, `0 <= reduction <= 2`, their sum 1 within the error estimates (a
+//! quarter of the points on or near the degenerate drive, where every spring
+//! rides on a bound), the
 //! same value a period of the phase later, and continuity in every parameter
 //! (a relative step of 1e-12 moves the value by at most 1e-5).
 
@@ -161,25 +163,7 @@ pub fn run_oscillation(points: usize, seed: u64, shapes: &[Shape]) -> (usize, Ve
         .flat_map_iter(|&(si, k)| {
             let shape = &shapes[si];
             let mut rng = Rng(!seed ^ k.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ ((si as u64) << 48));
-            let amp = match rng.next() % 4 {
-                0 => rng.pick(&[0.0, 5e-324, 1.0 - 1e-15, 1.0, 1.0 + 1e-15, 1e6]),
-                1 => 1.0 + (rng.unit() - 0.5) * 10f64.powf(-12.0 * rng.unit()),
-                _ => 3.0 * rng.unit(),
-            };
-            let t = match rng.next() % 4 {
-                0 => rng.pick(&EDGE_T),
-                1 => 10f64.powf(-6.0 + 9.0 * rng.unit()),
-                _ => 4.0 * rng.unit(),
-            };
-            let vhat = match rng.next() % 4 {
-                0 => rng.pick(&[0.0, 5e-324, 1e-12, t, 1e6]),
-                1 => (t * (1.0 + (rng.unit() - 0.5) * 10f64.powf(-12.0 * rng.unit()))).min(1e6),
-                _ => 2.0 * rng.unit(),
-            };
-            let phase = match rng.next() % 3 {
-                0 => rng.pick(&[0.0, -1e-300, std::f64::consts::FRAC_PI_2, std::f64::consts::PI, -0.0]),
-                _ => std::f64::consts::TAU * rng.unit(),
-            };
+            let (vhat, amp, t, phase) = if rng.next().is_multiple_of(4) { degenerate(&mut rng) } else { drive(&mut rng) };
             let here = format!("{} vhat={vhat:e} amp={amp:e} T={t:e} phase={phase:e}", shape.name());
             let eval = |v: f64, a: f64, tt: f64, p: f64| {
                 std::panic::catch_unwind(|| {
@@ -220,6 +204,55 @@ pub fn run_oscillation(points: usize, seed: u64, shapes: &[Shape]) -> (usize, Ve
         })
         .collect();
     (jobs.len(), failures)
+}
+
+/// A random drive: edges and random values of each parameter.
+fn drive(rng: &mut Rng) -> (f64, f64, f64, f64) {
+    let amp = match rng.next() % 4 {
+        0 => rng.pick(&[0.0, 5e-324, 1.0 - 1e-15, 1.0, 1.0 + 1e-15, 1e6]),
+        1 => 1.0 + (rng.unit() - 0.5) * 10f64.powf(-12.0 * rng.unit()),
+        _ => 3.0 * rng.unit(),
+    };
+    let t = match rng.next() % 4 {
+        0 => rng.pick(&EDGE_T),
+        1 => 10f64.powf(-6.0 + 9.0 * rng.unit()),
+        _ => 4.0 * rng.unit(),
+    };
+    let vhat = match rng.next() % 4 {
+        0 => rng.pick(&[0.0, 5e-324, 1e-12, t, 1e6]),
+        1 => (t * (1.0 + (rng.unit() - 0.5) * 10f64.powf(-12.0 * rng.unit()))).min(1e6),
+        _ => 2.0 * rng.unit(),
+    };
+    let phase = match rng.next() % 3 {
+        0 => rng.pick(&[0.0, -1e-300, std::f64::consts::FRAC_PI_2, std::f64::consts::PI, -0.0]),
+        _ => std::f64::consts::TAU * rng.unit(),
+    };
+    (vhat, amp, t, phase)
+}
+
+/// A drive on or near the degenerate family (`vhat ~ 0`, `T ~ amp`, phase `~
+/// pi/2` or `3 pi/2`, where every spring rides on a bound): each parameter
+/// exact, a few ulps off, or up to 1e-12 off.
+fn degenerate(rng: &mut Rng) -> (f64, f64, f64, f64) {
+    let ulps = |rng: &mut Rng, x: f64| {
+        let k = (rng.next() % 7) as i64 - 3;
+        f64::from_bits((x.to_bits() as i64 + k) as u64)
+    };
+    let amp = match rng.next() % 3 {
+        0 => rng.pick(&[0.3, 1.0, 2.0]),
+        _ => 3.0 * rng.unit(),
+    };
+    let near = |rng: &mut Rng, x: f64| match rng.next() % 3 {
+        0 => x,
+        1 => ulps(rng, x),
+        _ => x * (1.0 + (rng.unit() - 0.5) * 2e-12),
+    };
+    let t = near(rng, amp);
+    let family = rng.pick(&[std::f64::consts::FRAC_PI_2, 1.5 * std::f64::consts::PI]);
+    let phase = near(rng, family);
+    let small = 1e-12 * rng.unit();
+    let vhat = rng.pick(&[0.0, 5e-324, 1e-15, small]);
+    (vhat, amp, t, phase)
 }
 
 /// The shapes of the stress run: flat, parabolic, cone and two other power laws.

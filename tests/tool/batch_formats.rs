@@ -94,6 +94,23 @@ fn json_lines_keep_bytes_skip_blank_lines_and_replace_results() {
     assert_eq!((second["mu_ratio"].as_f64(), second["reduction"].as_f64()), (Some(1.0), Some(0.0)));
 }
 
+/// A row that already holds `mu_ratio` and `reduction` keeps every other
+/// field byte for byte, in a JSON array and in JSON Lines: a 30-digit integer,
+/// 23 significant digits, `-0`, `1e400`, a lone surrogate and deep nesting (the
+/// fields were re-serialised: `1.2345678901234568e+29`, `0.1`, `-0.0`, and a
+/// failure after output had started).
+#[test]
+fn fields_beside_replaced_results_pass_through_as_written() {
+    let fields = r#""x":123456789012345678901234567890,"y":0.10000000000000000000001,"z":-0,"w":1e400,"s":"\ud800","d":[[[[[[[[{"k":[1]}]]]]]]]]"#;
+    let row = format!(r#"{{"mu_ratio":7,{fields},"shape":"flat","vbar":0.5,"amp":2.0,"reduction":9}}"#);
+    for (format, input) in [("jsonl", format!("{row}\n")), ("json", format!("[{row},{row}]"))] {
+        let out = ok(&["batch", "--format", format], &input);
+        let got = out.matches(fields).count();
+        assert_eq!(got, if format == "json" { 2 } else { 1 }, "{format}: {out}");
+        assert!(!out.contains(":7,") && !out.contains(":9}"), "{format}: results not replaced: {out}");
+    }
+}
+
 #[test]
 fn csv_keeps_columns_and_fills_given_result_columns() {
     let input = "id,shape,note,vbar,amp\n1,flat,\"a, b\",0.3,0.5\n2,cone,\"say \"\"hi\"\"\",0.2,2\n";

@@ -349,7 +349,12 @@ fn wave_integral(vhat: f64, r: f64, psi: f64, a: f64, b: f64) -> f64 {
 /// and negative before a rise), not from rounded values of `g'`: a force that
 /// has just left its bound (at a zero of `g'`) does not return to it at once,
 /// and no two phases of zero length follow each other.
-fn first_crossing(g: &dyn Fn(f64) -> f64, (lo, hi): (f64, f64), (vhat, r, psi): (f64, f64, f64), rising: bool) -> Option<f64> {
+fn first_crossing(
+    g: &dyn Fn(f64) -> f64,
+    (lo, hi): (f64, f64),
+    (vhat, r, psi): (f64, f64, f64),
+    rising: bool,
+) -> Option<f64> {
     // The zeros, each the first at or after `lo`, labelled `true` where `g'`
     // falls through 0 (a tie puts the fall first: `g'` only touches 0 there).
     // `hi - lo <= 2 pi`: their next turns lie at or beyond `hi`.

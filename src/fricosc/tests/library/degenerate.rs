@@ -26,7 +26,10 @@ fn every_point_near_the_degenerate_drive_is_within_its_estimate() {
         // Each from its own integral: their sum is 1 to the estimate too.
         let sum = (mu + red - 1.0).abs();
         if exceeds(e_mu.max(e_red).max(sum), r.error_estimate) {
-            misses.push(format!("{c}: mu {mu:e} ({e_mu:e}), reduction {red:e} ({e_red:e}), estimate {:e}", r.error_estimate));
+            misses.push(format!(
+                "{c}: mu {mu:e} ({e_mu:e}), reduction {red:e} ({e_red:e}), estimate {:e}",
+                r.error_estimate
+            ));
         }
     }
     assert!(misses.is_empty(), "{} misses:\n{}", misses.len(), misses.join("\n"));

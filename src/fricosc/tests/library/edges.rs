@@ -10,7 +10,14 @@ use fricosc::{Error, Shape};
 /// `flat-tip:0.5` at 1e250 was an internal error, NaN).
 #[test]
 fn an_amplitude_beyond_double_precision_is_named() {
-    for (spec, amp) in [("power:0.5", 1e300), ("power:0.05", 1e16), ("power:0.1", 1e50), ("power:0.2", 1e100), ("power:0.3", 1e100), ("flat-tip:0.5", 1e250)] {
+    for (spec, amp) in [
+        ("power:0.5", 1e300),
+        ("power:0.05", 1e16),
+        ("power:0.1", 1e50),
+        ("power:0.2", 1e100),
+        ("power:0.3", 1e100),
+        ("flat-tip:0.5", 1e250),
+    ] {
         let shape = crate::common::shape(spec).unwrap();
         match at::combined(&shape, [0.3, amp, 1.0, 0.0], fricosc::DEFAULT_TOL) {
             Err(Error::InvalidParameter { name: "amp", .. }) => {}

@@ -279,9 +279,9 @@ fn slip_first_width(contact: &Foundation, n: f64, amp: f64, z1: f64, u_sf: f64, 
         let h = (0.5 * u_sf).sin();
         let (dy, y0) = (2.0 * amp * h * h, 1.0 - amp);
         let growth = (dy / y0).ln_1p() / n;
-        // Where the band is wider than z1 the plain difference keeps its
-        // relative accuracy (and z1 e^growth would overflow for a subnormal z1).
-        if growth > 1.0 {
+        // Where e^growth overflows (z1 subnormal: amp an ulp below 1 and n
+        // small) the band is z_sf itself to far beyond double precision.
+        if growth > 700.0 {
             z_sf() - z1
         } else {
             z1 * growth.exp_m1()
