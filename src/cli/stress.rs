@@ -163,7 +163,8 @@ pub fn run_oscillation(points: usize, seed: u64, shapes: &[Shape]) -> (usize, Ve
         .flat_map_iter(|&(si, k)| {
             let shape = &shapes[si];
             let mut rng = Rng(!seed ^ k.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ ((si as u64) << 48));
-            let (vhat, amp, t, phase) = if rng.next().is_multiple_of(4) { degenerate(&mut rng) } else { drive(&mut rng) };
+            let (vhat, amp, t, phase) =
+                if rng.next().is_multiple_of(4) { degenerate(&mut rng) } else { drive(&mut rng) };
             let here = format!("{} vhat={vhat:e} amp={amp:e} T={t:e} phase={phase:e}", shape.name());
             let eval = |v: f64, a: f64, tt: f64, p: f64| {
                 std::panic::catch_unwind(|| {

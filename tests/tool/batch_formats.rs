@@ -111,6 +111,32 @@ fn fields_beside_replaced_results_pass_through_as_written() {
     }
 }
 
+/// A CSV error names the line as an editor counts it: with `\r\n`, lone `\r`,
+/// blank lines and quoted line breaks (they were off by one, not counted, and
+/// always line 1). Column names that differ only in spaces are ambiguous, and
+/// an empty input has no header.
+#[test]
+fn csv_errors_name_the_line_and_the_header() {
+    for (input, line) in [
+        ("shape,vbar,amp\r\nflat,0.3,0.5\r\nflat,x,0.5\r\n", 3),
+        ("shape,vbar,amp\n\nflat,0.3,0.5\n\nflat,x,0.5\n", 5),
+        ("shape,vbar,amp\r\n\r\n\r\nflat,0.3,0.5\r\n\r\nflat,x,0.5\r\n", 6),
+        ("shape,vbar,amp\rflat,0.3,0.5\r\rflat,x,0.5\r", 4),
+        ("shape,note,vbar,amp\r\nflat,\"a\r\nb\nc\",0.3,0.5\r\n\r\nflat,\"x\",x,0.5\n", 6),
+        ("shape,vbar,amp\nflat,x,0.5", 2),
+    ] {
+        refused(&["batch", "--format", "csv"], input, &format!("line {line}: 'vbar' is not a finite number"));
+    }
+    refused(&["batch", "--format", "csv"], "shape,vbar,amp\nflat,0.3,0.5\nflat,0.3\n", "line 3: 2 fields");
+    refused(
+        &["batch", "--format", "csv"],
+        "shape,vbar, vbar,amp\nflat,0.3,0.4,0.5\n",
+        "repeats the column 'vbar' and ' vbar'",
+    );
+    refused(&["batch", "--format", "csv"], "", "the input is empty: no header");
+    refused(&["batch", "--format", "csv"], "\n\n", "the input is empty: no header");
+}
+
 #[test]
 fn csv_keeps_columns_and_fills_given_result_columns() {
     let input = "id,shape,note,vbar,amp\n1,flat,\"a, b\",0.3,0.5\n2,cone,\"say \"\"hi\"\"\",0.2,2\n";

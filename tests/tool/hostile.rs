@@ -65,6 +65,25 @@ fn endless_inputs_stop_at_the_documented_cap() {
     }
 }
 
+/// An endless CSV record (`/dev/zero` has no line end) or a field of 5 MB is
+/// refused at the record cap before it is read whole (a 300 MB field peaked
+/// at 530 MB, `/dev/zero` grew until the process aborted).
+#[test]
+fn a_csv_record_beyond_the_cap_is_refused_before_it_is_in_memory() {
+    let out = bin()
+        .args(["batch", "--format", "csv", "-"])
+        .stdin(std::fs::File::open("/dev/zero").unwrap())
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("line 1: a record of more than 1048576 bytes"), "{err}");
+    let big = format!("shape,vbar,amp\nflat,0.3,\"{}\"\n", "a".repeat(5 << 20));
+    let out = crate::common::run::run(&["batch", "--format", "csv"], Some(&big));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.code() == Some(2) && err.contains("line 2: a record of more than 1048576 bytes"), "{err}");
+}
+
 /// A UTF-8 byte-order mark (written by spreadsheets) is not part of a header.
 #[test]
 fn a_byte_order_mark_is_tolerated() {

@@ -30,8 +30,10 @@ impl Columns {
         let bad = |reason: String| Error::Parse { context: source.into(), reason };
         let find = |name: &str| header.iter().position(|h| h.trim_ascii() == name.as_bytes());
         for (i, h) in header.iter().enumerate() {
-            if header.iter().take(i).any(|g| g == h) {
-                return Err(bad(format!("the header repeats the column '{}'", String::from_utf8_lossy(h))));
+            if let Some(g) = header.iter().take(i).find(|g| g.trim_ascii() == h.trim_ascii()) {
+                let (g, h) = (String::from_utf8_lossy(g), String::from_utf8_lossy(h));
+                let twice = if g == h { format!("'{h}'") } else { format!("'{g}' and '{h}'") };
+                return Err(bad(format!("the header repeats the column {twice}")));
             }
         }
         let shape = find("shape").ok_or_else(|| bad("the header has no column 'shape'".into()))?;
@@ -100,9 +102,83 @@ impl Chunk {
     }
 }
 
+/// What [`Lines`] has seen of the input: where each line ends (a `\n`, a
+/// `\r\n` or a lone `\r`), and the bytes since the last record.
+#[derive(Default)]
+struct Seen {
+    /// Bytes passed on.
+    offset: u64,
+    /// Line ends (where, and 1 or 2 bytes) not yet behind the last record asked about.
+    ends: std::collections::VecDeque<(u64, u64)>,
+    /// Line ends behind it.
+    behind: u64,
+    /// Whether the last byte passed on was a `\r`.
+    cr: bool,
+    /// Bytes passed on since the last record was read.
+    since: u64,
+}
+
+impl Seen {
+    /// The line (from 1) of a record the reader says starts at byte `at`: after
+    /// blank lines (or within a `\r\n`) that is a line end, and no record
+    /// starts with one, so the line ends from there on are passed over too.
+    fn line(&mut self, at: u64) -> u64 {
+        let mut at = at;
+        while let Some(&(e, len)) = self.ends.front() {
+            if e > at {
+                break;
+            }
+            // A line end the reader stopped in or at: the record is after it.
+            at = at.max(e + len);
+            self.ends.pop_front();
+            self.behind += 1;
+        }
+        self.behind + 1
+    }
+}
+
+/// The input as the CSV reader sees it: its line ends counted (the `csv`
+/// crate's own count misses blank lines and lone `\r`), and at most
+/// [`MAX_LINE`] bytes (and the reader's buffer) between two records, so that
+/// a record too long is refused before it is in memory.
+struct Lines {
+    inner: Box<dyn BufRead>,
+    seen: std::rc::Rc<std::cell::RefCell<Seen>>,
+}
+
+/// The CSV reader's own buffer: what it may have read beyond a record.
+const READ_AHEAD: usize = 1 << 13;
+
+impl io::Read for Lines {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        let mut seen = self.seen.borrow_mut();
+        if seen.since > (MAX_LINE + 2 * READ_AHEAD) as u64 {
+            return Err(io::Error::other(format!("a record of more than {MAX_LINE} bytes")));
+        }
+        let n = self.inner.read(buf)?;
+        for (i, &b) in buf[..n].iter().enumerate() {
+            let at = seen.offset + i as u64;
+            match (b, seen.cr) {
+                (b'\n', true) => {
+                    if let Some(last) = seen.ends.back_mut() {
+                        last.1 = 2;
+                    }
+                }
+                (b'\n' | b'\r', _) => seen.ends.push_back((at, 1)),
+                _ => {}
+            }
+            seen.cr = b == b'\r';
+        }
+        seen.offset += n as u64;
+        seen.since += n as u64;
+        Ok(n)
+    }
+}
+
 /// The records of one pass, a chunk at a time.
 struct Records {
-    reader: csv::Reader<Box<dyn BufRead>>,
+    reader: csv::Reader<Lines>,
+    seen: std::rc::Rc<std::cell::RefCell<Seen>>,
     source: String,
     header: csv::ByteRecord,
     columns: Columns,
@@ -111,13 +187,24 @@ struct Records {
 
 impl Records {
     fn new(input: Box<dyn BufRead>, source: &str) -> Result<Records> {
-        let mut reader = csv::ReaderBuilder::new().has_headers(true).from_reader(input);
+        let seen = std::rc::Rc::new(std::cell::RefCell::new(Seen::default()));
+        let lines = Lines { inner: input, seen: seen.clone() };
+        let mut reader = csv::ReaderBuilder::new().has_headers(true).buffer_capacity(READ_AHEAD).from_reader(lines);
         let header = reader
             .byte_headers()
-            .map_err(|e| Error::Parse { context: source.into(), reason: format!("header: {e}") })?
+            .map_err(|e| Error::Parse { context: source.into(), reason: format!("line 1: {e}") })?
             .clone();
+        if header.iter().all(<[u8]>::is_empty) {
+            return Err(Error::Parse { context: source.into(), reason: "the input is empty: no header".into() });
+        }
         let columns = Columns::of(&header, source)?;
-        Ok(Records { reader, source: source.into(), header, columns, record: csv::ByteRecord::new() })
+        Ok(Records { reader, seen, source: source.into(), header, columns, record: csv::ByteRecord::new() })
+    }
+
+    /// The line of the record that starts at `pos`.
+    fn line(&self, pos: Option<&csv::Position>) -> u64 {
+        let at = pos.map_or_else(|| self.reader.position().byte(), csv::Position::byte);
+        self.seen.borrow_mut().line(at)
     }
 
     /// The next chunk of records (at most [`CHUNK`]).
@@ -131,7 +218,8 @@ impl Records {
             if !more {
                 break;
             }
-            let line = self.record.position().map_or(0, csv::Position::line);
+            self.seen.borrow_mut().since = 0;
+            let line = self.line(self.record.position());
             if self.record.as_slice().len() > MAX_LINE {
                 return Err(Error::Parse {
                     context: self.source.clone(),
@@ -149,11 +237,10 @@ impl Records {
 
     fn fault(&self, e: &csv::Error) -> Error {
         let reason = match e.kind() {
-            csv::ErrorKind::UnequalLengths { pos, expected_len, len } => format!(
-                "line {}: {len} fields where the header has {expected_len}",
-                pos.as_ref().map_or(self.reader.position().line(), csv::Position::line)
-            ),
-            _ => format!("line {}: {e}", self.reader.position().line()),
+            csv::ErrorKind::UnequalLengths { pos, expected_len, len } => {
+                format!("line {}: {len} fields where the header has {expected_len}", self.line(pos.as_ref()))
+            }
+            _ => format!("line {}: {e}", self.line(e.position())),
         };
         Error::Parse { context: self.source.clone(), reason }
     }
@@ -255,4 +342,43 @@ pub(super) fn stream_csv(open: &Open, source: &str, stepping: Option<Stepping>, 
         records.write(&mut w, &chunk, &results).map_err(werr)?;
     }
     w.flush().map_err(werr).map(|()| total)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An input whose second reading differs from the first (a file edited
+    /// between the passes: `0.1` became `0.125` in its second chunk) is
+    /// refused before that chunk is written; the same input read twice alike
+    /// gives its rows.
+    #[test]
+    fn an_input_changed_between_the_passes_is_refused() {
+        let text = |last: &str| {
+            let mut t = String::from("shape,vbar,amp\n");
+            for _ in 0..CHUNK + 10 {
+                t.push_str("flat,0.3,0.5\n");
+            }
+            t + &format!("flat,{last},0.5\n")
+        };
+        for edited in [true, false] {
+            let passes = std::cell::Cell::new(0);
+            let open = || -> Result<Box<dyn BufRead>> {
+                passes.set(passes.get() + 1);
+                let t = if edited && passes.get() > 1 { text("0.125") } else { text("0.1") };
+                Ok(Box::new(io::Cursor::new(t.into_bytes())))
+            };
+            let mut out = vec![];
+            let r = stream_csv(&open, "f.csv", None, &mut out);
+            let lines = out.iter().filter(|&&b| b == b'\n').count();
+            if edited {
+                let e = r.unwrap_err().to_string();
+                assert!(e.contains("the input changed while it was read: chunk 2 of 2"), "{e}");
+                assert_eq!(lines, CHUNK + 1, "only the first chunk written");
+            } else {
+                assert_eq!(r.unwrap(), CHUNK as u64 + 11);
+                assert_eq!(lines, CHUNK + 12);
+            }
+        }
+    }
 }
