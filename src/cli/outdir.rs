@@ -1,7 +1,9 @@
 //! Writing files safely: every file through a temporary file in the same
 //! folder, renamed into place (an interrupted run leaves the old file or the
-//! new one, never half of one; a symlink at the target is replaced, not
-//! followed), and output folders that are ours.
+//! new one, never half of one, and the next run removes the temporary file
+//! it left; a symlink at the target is replaced, not followed; a folder,
+//! named pipe or device at the target is refused), and output folders that
+//! are ours.
 //!
 //! An output folder (`suite --out`, `figures --out`, `bench --out`) is created
 //! if missing; an existing one must be empty or carry the marker file
@@ -27,6 +29,16 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     };
     let file =
         path.file_name().ok_or_else(|| Error::Parse { context: name.clone(), reason: "not a file name".into() })?;
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if !m.is_file() && !m.file_type().is_symlink() => {
+            return Err(Error::Parse {
+                context: name.clone(),
+                reason: "exists and is not a regular file (a folder, named pipe or device is not replaced)".into(),
+            })
+        }
+        _ => {}
+    }
+    clean_stale(&dir, &file.to_string_lossy());
     let mut options = std::fs::OpenOptions::new();
     options.write(true).create_new(true);
     for attempt in 0..16 {
@@ -45,6 +57,36 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
         return Ok(());
     }
     Err(werr(std::io::Error::new(std::io::ErrorKind::AlreadyExists, "no free temporary name")))
+}
+
+/// Remove what an earlier run that was killed left of its temporary files
+/// for `file` in `dir` (`.{file}.fricosc-{pid}-{n}.tmp`, the process gone).
+fn clean_stale(dir: &Path, file: &str) {
+    let prefix = format!(".{file}.fricosc-");
+    let Ok(entries) = std::fs::read_dir(dir) else { return };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(rest) = name.to_str().and_then(|n| n.strip_prefix(&prefix)).and_then(|r| r.strip_suffix(".tmp"))
+        else {
+            continue;
+        };
+        let Some((Ok(pid), Ok(_))) = rest.split_once('-').map(|(p, n)| (p.parse::<u32>(), n.parse::<u32>())) else {
+            continue;
+        };
+        if pid != std::process::id() && !alive(pid, &entry) && entry.file_type().is_ok_and(|t| t.is_file()) {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
+}
+
+/// Whether process `pid` may still be writing `entry`: it is running (where
+/// `/proc` tells), or the file is less than a day old (where it does not).
+fn alive(pid: u32, entry: &std::fs::DirEntry) -> bool {
+    if Path::new("/proc/self").exists() {
+        return Path::new("/proc").join(pid.to_string()).exists();
+    }
+    let age = entry.metadata().ok().and_then(|m| m.modified().ok()).and_then(|t| t.elapsed().ok());
+    age.is_none_or(|a| a.as_secs() < 86_400)
 }
 
 /// An output folder of fricosc's (module docs).

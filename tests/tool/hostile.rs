@@ -1,5 +1,6 @@
 //! Hostile input and hostile output: closed pipes, a full disk, endless inputs.
 //! Each case here panicked or ran out of memory before it was fixed.
+use std::os::unix::fs::FileTypeExt;
 use std::process::{Command, Stdio};
 
 fn bin() -> Command {
@@ -82,6 +83,32 @@ fn a_csv_record_beyond_the_cap_is_refused_before_it_is_in_memory() {
     let out = crate::common::run::run(&["batch", "--format", "csv"], Some(&big));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.code() == Some(2) && err.contains("line 2: a record of more than 1048576 bytes"), "{err}");
+}
+
+/// `--out` names a regular file or nothing: a named pipe (or a device, or a
+/// folder) there is refused and left as it was (it was replaced by a regular
+/// file). A temporary file that a killed run left beside the target (its
+/// process gone) is removed by the next run that writes that target; one of
+/// a running process is not.
+#[test]
+fn outputs_replace_only_regular_files_and_clean_what_a_killed_run_left() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("pipe.svg");
+    assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let plot = |out: &std::path::Path| {
+        bin().args(["plot", "--shape", "flat", "--vbar", "0:1:5", "--amp", "0.5", "--out"]).arg(out).output().unwrap()
+    };
+    let out = plot(&fifo);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.code() == Some(2) && err.contains("exists and is not a regular file"), "{err}");
+    assert!(std::fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo());
+    // pid 4294967295 never runs; our own test process does.
+    let stale = dir.path().join(".fig.svg.fricosc-4294967295-0.tmp");
+    let live = dir.path().join(format!(".fig.svg.fricosc-{}-0.tmp", std::process::id()));
+    std::fs::write(&stale, "half").unwrap();
+    std::fs::write(&live, "half").unwrap();
+    assert!(plot(&dir.path().join("fig.svg")).status.success());
+    assert!(!stale.exists() && live.exists());
 }
 
 /// A UTF-8 byte-order mark (written by spreadsheets) is not part of a header.
