@@ -64,8 +64,12 @@ impl Error {
         Error::Write { path: path.into(), source }
     }
 
-    /// An [`Error::Io`] (a failed read) for `path`.
+    /// An [`Error::Io`] (a failed read) for `path`; a spool file that could
+    /// not be written while `path` was read is an [`Error::Write`] of it.
     pub fn read(path: &str, source: std::io::Error) -> Self {
+        if source.get_ref().is_some_and(|e| e.is::<crate::twopass::SpoolFull>()) {
+            return Error::Write { path: "a copy of the input".into(), source };
+        }
         Error::Io { path: path.into(), source }
     }
 

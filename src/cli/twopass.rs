@@ -139,11 +139,29 @@ impl Read for Tee {
                 format!("more than {MAX_SPOOL_BYTES} bytes from a pipe (give a regular file instead)"),
             ));
         }
-        self.spool.write_all(&buf[..n])?;
+        self.spool.write_all(&buf[..n]).map_err(|e| io::Error::new(e.kind(), SpoolFull(e)))?;
         self.count.set(total);
         Ok(n)
     }
 }
+
+/// The spool file could not take what the input brought (a full temporary
+/// folder): a failed write of ours, not a failed read of the input.
+#[derive(Debug)]
+pub struct SpoolFull(io::Error);
+
+impl std::fmt::Display for SpoolFull {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} is full or not writable ({}): give a regular file, or set TMPDIR to a folder with room",
+            std::env::temp_dir().display(),
+            self.0
+        )
+    }
+}
+
+impl std::error::Error for SpoolFull {}
 
 /// The second pass: exactly the bytes of the first, an error if fewer arrive.
 struct Exact<R> {
@@ -210,5 +228,16 @@ mod tests {
         let input = TwoPass { source: "pipe".into(), kind, pass: Cell::new(0), length: Rc::new(Cell::new(0)) };
         assert_eq!(all(input.next_pass().unwrap()).unwrap(), "x\ny\n");
         assert_eq!(all(input.next_pass().unwrap()).unwrap(), "x\ny\n");
+    }
+
+    /// A spool that cannot be written (`/dev/full`: a full temporary folder)
+    /// is a failed write of a copy of the input, naming TMPDIR, not "cannot
+    /// read stdin".
+    #[test]
+    fn a_full_spool_is_named_as_such() {
+        let spool = std::fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
+        let mut tee = Tee { inner: Box::new(io::Cursor::new(b"x\n".to_vec())), spool, count: Rc::new(Cell::new(0)) };
+        let e = Error::read("stdin", tee.read(&mut [0; 16]).unwrap_err()).to_string();
+        assert!(e.starts_with("cannot write a copy of the input: ") && e.contains("TMPDIR"), "{e}");
     }
 }

@@ -240,6 +240,10 @@ impl Records {
             csv::ErrorKind::UnequalLengths { pos, expected_len, len } => {
                 format!("line {}: {len} fields where the header has {expected_len}", self.line(pos.as_ref()))
             }
+            csv::ErrorKind::Io(io) if io.get_ref().is_some_and(|x| x.is::<crate::twopass::SpoolFull>()) => {
+                let full = io.get_ref().map(ToString::to_string).unwrap_or_default();
+                return Error::Write { path: "a copy of the input".into(), source: io::Error::new(io.kind(), full) };
+            }
             _ => format!("line {}: {e}", self.line(e.position())),
         };
         Error::Parse { context: self.source.clone(), reason }

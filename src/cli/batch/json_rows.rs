@@ -380,7 +380,7 @@ impl Lines {
             let limit = (MAX_LINE + 2) as u64;
             let n = io::Read::take(&mut *input, limit)
                 .read_until(b'\n', &mut self.buf)
-                .map_err(|e| Error::Parse { context: source.into(), reason: format!("cannot read: {e}") })?;
+                .map_err(|e| Error::read(source, e))?;
             if n == 0 {
                 break;
             }

@@ -111,3 +111,25 @@ pub fn check_nonneg(name: &'static str, x: f64) -> Result<f64> {
         Ok(x)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Error;
+
+    /// Numbers in messages: an exponent from 1e6 up and below 1e-4, the
+    /// shortest text otherwise (`1e15` was `1000000000000000.0` beside `1e300`).
+    #[test]
+    fn amounts_print_alike() {
+        for (x, text) in [
+            (1e15, "1e15"),
+            (1e300, "1e300"),
+            (-1.0, "-1.0"),
+            (0.3, "0.3"),
+            (1e-7, "1e-7"),
+            (0.0, "0.0"),
+            (f64::NAN, "NaN"),
+        ] {
+            assert_eq!(Error::param("amp", x, "r").to_string(), format!("invalid amp = {text}: r"));
+        }
+    }
+}
