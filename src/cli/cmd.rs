@@ -163,7 +163,7 @@ impl VelocityList {
 pub struct TangentialPoint {
     /// Amplitude of an oscillation in the sliding direction, dx/l in pre-slip lengths l = mu0 u0 kz/kx
     /// (>= 0, at most 1e6; 0 is the seed's problem, bit for bit). Needs the velocity as --vhat.
-    #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
     pub tangential_amp: Option<f64>,
     /// Its phase against the normal oscillation, radians (default 0): the body moves as
     /// vhat tau + T sin(tau + phase) while the indentation is u0 - du cos tau.

@@ -16,7 +16,9 @@ use fricosc::validation::{
     compare, compare_history, convergence, rows_from_columns, to_static_units, AtRest, Check, HistoryData, TimeAxis,
 };
 use fricosc::{Conditions, Error, Report, Shape, DEFAULT_TOL};
-use numpy::{IntoPyArray, PyArray3, PyArrayDyn, PyArrayMethods, PyReadonlyArray1, PyReadonlyArrayDyn};
+use numpy::{
+    IntoPyArray, PyArray3, PyArrayDyn, PyArrayMethods, PyReadonlyArray1, PyReadonlyArrayDyn, PyUntypedArrayMethods,
+};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
@@ -28,8 +30,30 @@ create_exception!(fricosc, InternalError, PyRuntimeError, "A bug of fricosc (ple
 
 /// Elements evaluated between two checks for Ctrl-C at first; the chunk then
 /// grows or shrinks so that each takes about [`CHUNK_SECONDS`] (a flat point
-/// costs 0.2 us, a curved one 5 us: one size does not fit both).
-const FIRST_CHUNK: usize = 4096;
+/// costs 0.2 us, a curved one 5 us, a curved one under a tangential
+/// oscillation up to 5 ms: one size does not fit all, and the first chunk must
+/// be short for the slowest).
+const FIRST_CHUNK: usize = 16;
+
+/// Elements checked between two checks for Ctrl-C while the inputs are
+/// checked (a broadcast of 4e9 elements takes about a minute to check).
+const CHECK_CHUNK: usize = 1 << 20;
+
+/// Check element `i` of the checking pass for Ctrl-C every [`CHECK_CHUNK`] elements.
+fn check_signals_at(py: Python<'_>, i: usize) -> PyResult<()> {
+    if i % CHECK_CHUNK == CHECK_CHUNK - 1 {
+        py.check_signals()?;
+    }
+    Ok(())
+}
+
+/// A new float64 array of shape `dims`, zeroed, by numpy itself: an array too
+/// large for memory raises `MemoryError` (rust-numpy's own constructor panics).
+fn zeros<'py>(py: Python<'py>, dims: &[usize]) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let np = PyModule::import(py, "numpy")?;
+    let a = np.getattr("zeros")?.call1((pyo3::types::PyTuple::new(py, dims)?,))?;
+    a.cast_into::<PyArrayDyn<f64>>().map_err(|e| InternalError::new_err(format!("numpy.zeros: {e}")))
+}
 /// The time one chunk should take: Ctrl-C is answered within about twice it.
 const CHUNK_SECONDS: f64 = 0.04;
 /// Largest chunk (the buffer it needs: 24 bytes an element).
@@ -143,29 +167,32 @@ fn evaluate<'py>(
         return Err(InputError::new_err(format!("vbar and amp differ in shape ({:?} and {:?})", v.shape(), a.shape())));
     }
     Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
+    // The output first: an array too large for memory is refused before the
+    // inputs are checked.
+    let out = zeros(py, v.shape())?;
     for (i, (&vi, &ai)) in v.iter().zip(a.iter()).enumerate() {
         conditions(vi, ai, vhat, tol).map_err(|e| at_index(e, i))?;
+        check_signals_at(py, i)?;
     }
     let shape = &shape.inner;
     let mut inputs = v.iter().zip(a.iter()).map(|(&x, &y)| [x, y]);
-    chunked(py, v.shape(), &mut inputs, &|&[x, y]: &[f64; 2]| {
+    chunked(py, out, &mut inputs, &|&[x, y]: &[f64; 2]| {
         let r = shape.evaluate(&conditions(x, y, vhat, tol)?)?.ratio;
         Ok(if reduction { r.reduction } else { r.mu_ratio })
     })
 }
 
-/// Evaluate `one` at every element of `inputs` (an array of shape `dims`, read
-/// a chunk at a time) into a new array: chunks timed to about
+/// Evaluate `one` at every element of `inputs` (read a chunk at a time) into
+/// `out` (of their shape, C order): chunks timed to about
 /// [`CHUNK_SECONDS`], in parallel from [`PARALLEL_THRESHOLD`] elements, with
 /// the GIL released and Ctrl-C checked between them.
 fn chunked<'py, const N: usize>(
     py: Python<'py>,
-    dims: &[usize],
+    out: Bound<'py, PyArrayDyn<f64>>,
     inputs: &mut dyn Iterator<Item = [f64; N]>,
     one: &(dyn Fn(&[f64; N]) -> fricosc::Result<f64> + Sync),
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let out = PyArrayDyn::<f64>::zeros(py, dims, false);
-    let total: usize = dims.iter().product();
+    let total: usize = out.shape().iter().product();
     let mut done = 0;
     let mut chunk = FIRST_CHUNK;
     let mut buf = Vec::with_capacity(chunk.min(total));
@@ -222,6 +249,7 @@ fn evaluate_oscillation<'py>(
         return Err(InputError::new_err("vhat, amp, tangential_amp and phase differ in shape".to_string()));
     }
     Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
+    let out = zeros(py, arrays[0].shape())?;
     let each = || {
         arrays[0]
             .iter()
@@ -232,9 +260,10 @@ fn evaluate_oscillation<'py>(
     };
     for (i, [v, a, t, p]) in each().enumerate() {
         oscillation(v, a, t, p, tol).map_err(|e| at_index(e, i))?;
+        check_signals_at(py, i)?;
     }
     let shape = &shape.inner;
-    chunked(py, arrays[0].shape(), &mut each(), &|&[v, a, t, p]: &[f64; 4]| {
+    chunked(py, out, &mut each(), &|&[v, a, t, p]: &[f64; 4]| {
         let r = shape.ratio(&oscillation(v, a, t, p, tol)?)?;
         Ok(if reduction { r.reduction } else { r.mu_ratio })
     })

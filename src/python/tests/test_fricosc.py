@@ -270,12 +270,73 @@ def test_ctrl_c_interrupts_a_long_call() -> None:
     assert waited < 1.0, f"KeyboardInterrupt after {waited:.2f} s"
 
 
+def _interrupted_after(code: str) -> float:
+    """Seconds from SIGINT to KeyboardInterrupt in a child running ``code``
+    (after it prints ``ready``)."""
+    import signal
+    import time
+
+    p = _child(
+        "import numpy as np, fricosc, sys\n"
+        "print('ready', flush=True)\n"
+        "try:\n" + "".join(f"    {line}\n" for line in code.splitlines()) + "except KeyboardInterrupt:\n"
+        "    print('interrupted', flush=True)\n"
+        "    sys.exit(3)\n"
+    )
+    assert p.stdout is not None
+    assert p.stdout.readline().strip() == b"ready"
+    time.sleep(0.5)
+    t0 = time.monotonic()
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=300)
+    assert p.returncode == 3 and b"interrupted" in out, (p.returncode, out)
+    return time.monotonic() - t0
+
+
+def test_ctrl_c_interrupts_the_check_and_slow_elements() -> None:
+    """SIGINT while 2 * 10^8 broadcast elements are checked (about 11 s
+    without a look at the signals), and while curved points under a
+    tangential oscillation near the degenerate drive are evaluated (a first
+    chunk of 4,096 of them took 12.9 s): answered at once."""
+    check = "a = np.broadcast_to(np.float64(0.3), (20000, 10000))\nfricosc.mu_ratio('flat', a, np.float64(0.5))"
+    assert _interrupted_after(check) < 1.0
+    slow = (
+        "ph = 4.71238898038469 + np.linspace(-1e-2, 1e-2, 200000)\n"
+        "fricosc.mu_ratio('parabolic', vhat=0.01, amp=1.5, tangential_amp=1.3, phase=ph)"
+    )
+    assert _interrupted_after(slow) < 1.0
+
+
+def test_an_output_beyond_memory_is_a_memory_error() -> None:
+    """A broadcast whose output cannot be allocated (300 GB) raises MemoryError
+    at once, before its inputs are checked (it was a PanicException)."""
+    a = np.broadcast_to(np.float64(0.3), (200_000, 200_000))
+    with pytest.raises(MemoryError):
+        fricosc.mu_ratio("flat", a, 0.5)
+    with pytest.raises(MemoryError):
+        fricosc.mu_ratio("flat", vhat=a, amp=0.5, tangential_amp=1.0)
+
+
+def test_an_empty_table_is_named() -> None:
+    with pytest.raises(fricosc.InputError, match="^table: the table has no rows"):
+        fricosc.validate({"vbar": [], "amp": [], "mu_ratio": []}, "flat")
+
+
 def test_messages_are_the_command_lines() -> None:
     cases: List[Tuple[List[str], Callable[[], object]]] = [
         (["point", "--shape", "nonsense", "--vbar", "0.1", "--amp", "0.5"], lambda: fricosc.point("nonsense", 0.1, 0.5)),
         (["point", "--vbar", "0.1", "--amp", "-1"], lambda: fricosc.point("flat", 0.1, -1.0)),
         (["point", "--vhat", "1e308", "--amp", "1e-10"], lambda: fricosc.point("flat", vhat=1e308, amp=1e-10)),
         (["point", "--shape", "power:0.01", "--vbar", "0.1", "--amp", "0.5"], lambda: fricosc.point("power:0.01", 0.1, 0.5)),
+        # The same wording for a tangential amplitude (the command line's own parser used to word it).
+        (
+            ["point", "--vhat", "0.3", "--amp", "1", "--tangential-amp", "-1"],
+            lambda: fricosc.point("flat", vhat=0.3, amp=1.0, tangential_amp=-1.0),
+        ),
+        (
+            ["point", "--shape", "power:0.05", "--vhat", "0.3", "--amp", "1e15", "--tangential-amp", "1"],
+            lambda: fricosc.point("power:0.05", vhat=0.3, amp=1e15, tangential_amp=1.0),
+        ),
     ]
     for args, py in cases:
         with pytest.raises(ValueError) as e:

@@ -326,7 +326,10 @@ pub(crate) const MAX_PEER_WORK: u128 = crate::stepper::MAX_STEPPING_WORK;
 fn check_rows(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result<()> {
     crate::error::check_nonneg("tolerance", check.tolerance)?;
     if rows.is_empty() {
-        return Err(Error::param("rows", 0.0, "the table has no rows (nothing to validate)"));
+        return Err(Error::Parse {
+            context: "table".into(),
+            reason: "the table has no rows (nothing to compare)".into(),
+        });
     }
     for (i, &(v, a, m)) in rows.iter().enumerate() {
         let at = |e: Error| Error::Parse { context: format!("row {i}"), reason: e.to_string() };

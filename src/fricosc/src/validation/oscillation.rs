@@ -181,7 +181,10 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
 fn checked(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<Vec<Conditions>> {
     crate::error::check_nonneg("tolerance", check.tolerance)?;
     if rows.is_empty() {
-        return Err(Error::param("rows", 0.0, "the table has no rows (nothing to validate)"));
+        return Err(Error::Parse {
+            context: "table".into(),
+            reason: "the table has no rows (nothing to compare)".into(),
+        });
     }
     let mut oscillations = Vec::with_capacity(rows.len());
     for (i, r) in rows.iter().enumerate() {
