@@ -137,6 +137,20 @@ fn csv_errors_name_the_line_and_the_header() {
     refused(&["batch", "--format", "csv"], "\n\n", "the input is empty: no header");
 }
 
+/// A streamed CSV of exactly one chunk (65,536 rows) with more distinct
+/// shapes than the cache holds (5,000 power laws for 4,096 places) gives
+/// every row (it panicked with an index out of bounds).
+#[test]
+fn a_full_chunk_of_more_shapes_than_the_cache_holds() {
+    let mut input = String::from("shape,vbar,amp\n");
+    for i in 0..65_536 {
+        input.push_str(&format!("power:{},0.3,0.5\n", 1.0 + (i % 5000) as f64 / 10_000.0));
+    }
+    let out = ok(&["batch", "--format", "csv"], &input);
+    assert_eq!(out.lines().count(), 65_537);
+    assert!(out.lines().nth(5001).unwrap().starts_with("power:1,0.3,0.5,"), "{:?}", out.lines().nth(5001));
+}
+
 #[test]
 fn csv_keeps_columns_and_fills_given_result_columns() {
     let input = "id,shape,note,vbar,amp\n1,flat,\"a, b\",0.3,0.5\n2,cone,\"say \"\"hi\"\"\",0.2,2\n";
