@@ -9,11 +9,12 @@
 //! index as a second argument, which the Python side turns into an index of
 //! the broadcast shape.
 
-use fricosc::contact::Table;
+use fricosc::contact::Table as ProfileTable;
 use fricosc::history::{history as core_history, HistoryOptions, Sample};
 use fricosc::stepper::Stepping;
 use fricosc::validation::{
-    compare, compare_history, convergence, rows_from_columns, to_static_units, AtRest, Check, HistoryData, TimeAxis,
+    compare, compare_history, compare_oscillation, convergence, to_static_units, AtRest, Check, Column, HistoryData,
+    Table, TimeAxis,
 };
 use fricosc::{Conditions, Error, Report, Shape, DEFAULT_TOL};
 use numpy::{
@@ -116,7 +117,7 @@ impl CoreShape {
         name: &str,
     ) -> PyResult<CoreShape> {
         let (x, v) = (x.as_array().to_vec(), v.as_array().to_vec());
-        let t = Table::from_columns(x, v, profile, name).and_then(|t| t.at(u0)).map_err(to_py)?;
+        let t = ProfileTable::from_columns(x, v, profile, name).and_then(|t| t.at(u0)).map_err(to_py)?;
         Ok(CoreShape { inner: Shape::from_contact(Arc::new(t.named(name))) })
     }
 
@@ -356,19 +357,30 @@ fn history<'py>(
     Ok(d)
 }
 
+/// A table as the command line reads one ([`Table::from_columns`]): every
+/// column's name, and the values of those among [`Table::COLUMNS`] (numbers).
+fn table_of(names: Vec<String>, columns: Vec<(String, PyReadonlyArray1<'_, f64>)>) -> PyResult<Table> {
+    let mut read = vec![];
+    for (name, values) in columns {
+        let known = Table::COLUMNS.iter().find(|&&c| c == name && c != "shape");
+        let name =
+            known.ok_or_else(|| InputError::new_err(format!("table: the column '{name}' is not one fricosc reads")))?;
+        read.push((*name, Column::Numbers(values.as_array().to_vec())));
+    }
+    Table::from_columns(&names, read, "columns", "table").map_err(to_py)
+}
+
 /// A table's comparison with the exact values (`fricosc validate`'s report) as a
-/// dict: columns as [`rows_from_columns`] reads them.
+/// dict: the table read as the command line reads it, compared as it compares
+/// it (under oscillation in the sliding direction where it has `tangential_amp`).
 #[pyfunction]
-#[pyo3(signature = (shape, velocity, amp, friction, vhat, mu, mu0, at_rest, tolerance, peer, peer_springs))]
+#[pyo3(signature = (shape, names, columns, mu0, at_rest, tolerance, peer, peer_springs))]
 #[allow(clippy::too_many_arguments)]
 fn validate<'py>(
     py: Python<'py>,
     shape: &CoreShape,
-    velocity: PyReadonlyArray1<'py, f64>,
-    amp: PyReadonlyArray1<'py, f64>,
-    friction: PyReadonlyArray1<'py, f64>,
-    vhat: bool,
-    mu: bool,
+    names: Vec<String>,
+    columns: Vec<(String, PyReadonlyArray1<'py, f64>)>,
     mu0: Option<f64>,
     at_rest: &str,
     tolerance: f64,
@@ -379,10 +391,22 @@ fn validate<'py>(
         .with_at_rest(at_rest_of(at_rest)?)
         .with_tolerance(tolerance)
         .with_peer(peer.map(|m| Stepping { steps_per_period: m, springs: peer_springs.unwrap_or(m) }));
-    let rows = table_rows(&velocity, &amp, &friction, vhat, mu, mu0)?;
+    let table = table_of(names, columns)?;
     let shape = &shape.inner;
-    let result = py.detach(|| compare(shape, &rows, &check)).map_err(to_py)?;
-    pythonize::pythonize(py, &result).map_err(serialise_err)
+    let result = if table.is_oscillation() {
+        let rows = table.oscillation_rows(mu0, "table").map_err(to_py)?;
+        let v = py.detach(|| compare_oscillation(shape, &rows, &check)).map_err(to_py)?;
+        pythonize::pythonize(py, &v)
+    } else {
+        let rows = table.rows(mu0, "table").map_err(to_py)?;
+        let v = py.detach(|| compare(shape, &rows, &check)).map_err(to_py)?;
+        pythonize::pythonize(py, &v)
+    }
+    .map_err(serialise_err)?;
+    if !table.ignored_columns().is_empty() {
+        result.set_item("ignored_columns", table.ignored_columns().to_vec())?;
+    }
+    Ok(result)
 }
 
 fn at_rest_of(at_rest: &str) -> PyResult<AtRest> {
@@ -393,38 +417,26 @@ fn at_rest_of(at_rest: &str) -> PyResult<AtRest> {
     }
 }
 
-/// `(vbar, amp, mu_ratio)` rows of a table's columns ([`rows_from_columns`]).
-fn table_rows(
-    velocity: &PyReadonlyArray1<'_, f64>,
-    amp: &PyReadonlyArray1<'_, f64>,
-    friction: &PyReadonlyArray1<'_, f64>,
-    vhat: bool,
-    mu: bool,
-    mu0: Option<f64>,
-) -> PyResult<Vec<(f64, f64, f64)>> {
-    let (v, a, m) = (velocity.as_array().to_vec(), amp.as_array().to_vec(), friction.as_array().to_vec());
-    rows_from_columns(&v, &a, &m, vhat, mu, mu0).map_err(to_py)
-}
-
 /// A convergence study (`fricosc validate --series`'s report) as a dict: one
-/// table of columns per resolution.
+/// table of columns per resolution, each read as [`validate`] reads one.
 #[pyfunction]
-#[pyo3(signature = (shape, resolutions, tables, vhat, mu, mu0, at_rest, tolerance, target))]
+#[pyo3(signature = (shape, resolutions, tables, mu0, at_rest, tolerance, target))]
 #[allow(clippy::too_many_arguments)]
 fn validate_series<'py>(
     py: Python<'py>,
     shape: &CoreShape,
     resolutions: Vec<f64>,
-    tables: Vec<(PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>)>,
-    vhat: bool,
-    mu: bool,
+    tables: Vec<(Vec<String>, Vec<(String, PyReadonlyArray1<'py, f64>)>)>,
     mu0: Option<f64>,
     at_rest: &str,
     tolerance: f64,
     target: Option<f64>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let check = Check::default().with_at_rest(at_rest_of(at_rest)?).with_tolerance(tolerance);
-    let rows = tables.iter().map(|(v, a, m)| table_rows(v, a, m, vhat, mu, mu0)).collect::<PyResult<Vec<_>>>()?;
+    let mut rows = vec![];
+    for (names, columns) in tables {
+        rows.push(table_of(names, columns)?.rows(mu0, "table").map_err(to_py)?);
+    }
     let shape = &shape.inner;
     let result = py.detach(|| convergence(shape, &resolutions, &rows, &check, target)).map_err(to_py)?;
     pythonize::pythonize(py, &result).map_err(serialise_err)

@@ -435,6 +435,30 @@ def test_validate_is_the_command_lines() -> None:
         fricosc.validate([1, 2, 3])
 
 
+def test_validate_reads_a_combined_table_as_the_command_line() -> None:
+    """A table under oscillation in the sliding direction (``tangential_amp``,
+    ``phase``), correct to 1e-7: Python compares it as the command line does
+    (it compared the seed's problem instead: max error 1.23, a ``negative``
+    finding), with the same report; a series of such tables is refused alike."""
+    exact = json.loads(cli("table", "--shape", "parabolic", "--vhat", "0.3", "--amp", "0.5,1.5",
+                           "--tangential-amp", "2", "--phase", "0,1.2,4.2", "--format", "json"))["rows"]
+    rows = {k: [float(r[k]) for r in exact] for k in ("vhat", "amp", "tangential_amp", "phase")}
+    rows["mu_ratio"] = [float(r["mu_ratio"]) + 1e-7 * (-1) ** i for i, r in enumerate(exact)]
+    path = ROOT / "target" / "py-combined-ok.csv"
+    path.parent.mkdir(exist_ok=True)
+    names = list(rows)
+    path.write_text(",".join(names) + "\n" + "".join(",".join(repr(rows[n][i]) for n in names) + "\n" for i in range(len(exact))))
+    expected = json.loads(cli("validate", "--shape", "parabolic", str(path), "--format", "json"))
+    expected.pop("format")
+    got = fricosc.validate(rows, "parabolic")
+    assert json.loads(json.dumps(got)) == expected
+    assert 0.9e-7 < got["max_abs_error"] < 1.1e-7 and got["findings"] == []
+    with pytest.raises(fricosc.InputError, match="only a single table's validate compares it"):
+        fricosc.validate_series({100: rows, 200: rows}, "parabolic")
+    cli_message = cli_error("validate", "--series", "--shape", "parabolic", f"{path}@100", f"{path}@200")
+    assert "only a single table's validate compares it" in cli_message
+
+
 def test_scene_is_the_command_lines() -> None:
     """Every example scene through Python (from its path, and as a dict where it
     names no file) gives `fricosc scene`'s JSON."""

@@ -39,7 +39,7 @@ pub use history::{
 };
 pub(crate) use series::observed_order;
 pub use series::{convergence, Convergence, Needed, RegimeOrder, RowStatus, SeriesRow};
-pub use table::{rows_from_columns, Column, Table};
+pub use table::{Column, Table};
 pub(crate) use text::findings_text;
 
 use crate::contact::regime::ContactRegime;

@@ -134,7 +134,7 @@ impl Table {
         self.tangential.is_some()
     }
 
-    /// `(vbar, amp, mu_ratio)` of every row ([`rows_from_columns`]),
+    /// `(vbar, amp, mu_ratio)` of every row (a bad row is named by its index),
     /// the input of [`super::compare`]; `source` names the table in errors.
     ///
     /// # Errors
@@ -200,7 +200,7 @@ fn tangential_of(
 /// # Errors
 /// [`Error::Parse`] naming the row for a bad value, columns of different lengths,
 /// or `mu` without `mu0`.
-pub fn rows_from_columns(
+fn rows_from_columns(
     velocity: &[f64],
     amp: &[f64],
     friction: &[f64],

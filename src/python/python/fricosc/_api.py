@@ -330,32 +330,18 @@ def history(
     return result
 
 
-def _table_columns(table: Any, mu0: Optional[float]) -> Tuple[List[str], bool, bool]:
-    """The columns of a table (a mapping), checked: names, vhat?, mu?"""
+_READ = ("vbar", "vhat", "amp", "mu_ratio", "mu", "tangential_amp", "phase")
+
+
+def _table(table: Any) -> Tuple[List[str], List[Tuple[str, npt.NDArray[np.float64]]]]:
+    """A table (a mapping of columns) as the extension reads it: every column's
+    name, and the numeric columns fricosc reads (it checks them as the command
+    line checks a file's)."""
     try:
-        columns = [str(c) for c in table.keys()]
+        names = [str(c) for c in table.keys()]
     except AttributeError:
         raise TypeError(f"a table is a mapping of columns (a dict of arrays, a DataFrame), not {type(table).__name__}") from None
-    for pair in (("vbar", "vhat"), ("mu_ratio", "mu")):
-        if pair[0] in columns and pair[1] in columns:
-            raise ValueError(f"both '{pair[0]}' and '{pair[1]}' given: one only")
-        if pair[0] not in columns and pair[1] not in columns:
-            raise ValueError(
-                f"the table lacks column '{pair[0]}' (or '{pair[1]}'): it needs vbar (or vhat), amp and mu_ratio "
-                f"(or mu); it has {', '.join(columns)}"
-            )
-    if "amp" not in columns:
-        raise ValueError(f"the table lacks column 'amp'; it has {', '.join(columns)}")
-    return columns, "vhat" in columns, "mu" in columns
-
-
-def _table_arrays(
-    table: Any, is_vhat: bool, is_mu: bool
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]:
-    def column(name: str) -> npt.NDArray[np.float64]:
-        return _column(_floats(table[name], name), name)
-
-    return column("vhat" if is_vhat else "vbar"), column("amp"), column("mu" if is_mu else "mu_ratio")
+    return names, [(n, _column(_floats(table[n], n), n)) for n in _READ if n in names]
 
 
 def _table_shape(tables: List[Any], shape: Optional[ShapeLike]) -> Tuple[ShapeLike, str]:
@@ -385,9 +371,11 @@ def validate(
     regime and by amplitude, findings with hints; a finding means something is
     wrong).
 
-    ``table`` is a mapping of columns (a dict of arrays, a pandas DataFrame):
-    ``vbar`` or ``vhat``, ``amp``, ``mu_ratio`` or ``mu`` (then ``mu0`` is
-    required), and optionally ``shape`` (one value for the whole table; ``shape=``
+    ``table`` is a mapping of columns (a dict of arrays, a pandas DataFrame),
+    read as ``fricosc validate`` reads a file's: ``vbar`` or ``vhat``, ``amp``,
+    ``mu_ratio`` or ``mu`` (then ``mu0`` is required), under oscillation in the
+    sliding direction ``tangential_amp`` and ``phase`` (with ``vhat``; the
+    report is then the oscillation's), and optionally ``shape`` (one value for the whole table; ``shape=``
     only where the table names none, an error where they disagree; the flat
     punch by default). ``at_rest``: ``"sliding"`` or ``"relaxed"`` (what a
     ``vbar = 0`` row is compared with). ``peer=M``: run fricosc's stepping peer
@@ -398,13 +386,12 @@ def validate(
     >>> r["max_abs_error"] > 0.19, [f["kind"] for f in r["findings"]]
     (True, ['above_one', 'not_one_above_critical'])
     """
-    _, is_vhat, is_mu = _table_columns(table, mu0)
+    names, columns = _table(table)
     chosen, source = _table_shape([table], shape)
     result: Dict[str, Any] = _fricosc.validate(
         _core(chosen),
-        *_table_arrays(table, is_vhat, is_mu),
-        is_vhat,
-        is_mu,
+        names,
+        columns,
         None if mu0 is None else float(mu0),
         at_rest,
         float(tolerance),
@@ -449,17 +436,12 @@ def validate_series(
         items = sorted((float(k), v) for k, v in tables.items())
     except (AttributeError, TypeError, ValueError):
         raise TypeError("tables is a mapping from each resolution (a number) to its table") from None
-    flags = [_table_columns(t, mu0)[1:] for _, t in items]
-    if len(set(flags)) > 1:
-        raise ValueError("the tables differ in their columns (vbar or vhat, mu_ratio or mu)")
-    is_vhat, is_mu = flags[0] if flags else (False, False)
+    read = [_table(t) for _, t in items]
     chosen, source = _table_shape([t for _, t in items], shape)
     result: Dict[str, Any] = _fricosc.validate_series(
         _core(chosen),
         [r for r, _ in items],
-        [_table_arrays(t, is_vhat, is_mu) for _, t in items],
-        is_vhat,
-        is_mu,
+        read,
         None if mu0 is None else float(mu0),
         at_rest,
         float(tolerance),

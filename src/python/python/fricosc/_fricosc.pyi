@@ -50,11 +50,8 @@ def history(
 ) -> Dict[str, Any]: ...
 def validate(
     shape: CoreShape,
-    velocity: npt.NDArray[np.float64],
-    amp: npt.NDArray[np.float64],
-    friction: npt.NDArray[np.float64],
-    vhat: bool,
-    mu: bool,
+    names: List[str],
+    columns: List[Tuple[str, npt.NDArray[np.float64]]],
     mu0: Optional[float],
     at_rest: str,
     tolerance: float,
@@ -64,9 +61,7 @@ def validate(
 def validate_series(
     shape: CoreShape,
     resolutions: List[float],
-    tables: List[Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]],
-    vhat: bool,
-    mu: bool,
+    tables: List[Tuple[List[str], List[Tuple[str, npt.NDArray[np.float64]]]]],
     mu0: Optional[float],
     at_rest: str,
     tolerance: float,
