@@ -357,6 +357,9 @@ fn history<'py>(
     Ok(d)
 }
 
+/// A table as Python passes it: every column's name, and the numeric columns read.
+type NamedColumns<'py> = (Vec<String>, Vec<(String, PyReadonlyArray1<'py, f64>)>);
+
 /// A table as the command line reads one ([`Table::from_columns`]): every
 /// column's name, and the values of those among [`Table::COLUMNS`] (numbers).
 fn table_of(names: Vec<String>, columns: Vec<(String, PyReadonlyArray1<'_, f64>)>) -> PyResult<Table> {
@@ -426,7 +429,7 @@ fn validate_series<'py>(
     py: Python<'py>,
     shape: &CoreShape,
     resolutions: Vec<f64>,
-    tables: Vec<(Vec<String>, Vec<(String, PyReadonlyArray1<'py, f64>)>)>,
+    tables: Vec<NamedColumns<'py>>,
     mu0: Option<f64>,
     at_rest: &str,
     tolerance: f64,
