@@ -475,3 +475,74 @@ fn history_series_finds_first_order_in_the_jumping_regime() {
     let slip = doc["events"].as_array().unwrap().iter().find(|e| e["kind"] == "slip").unwrap();
     assert!((0.6..1.4).contains(&slip["order"].as_f64().unwrap()), "{slip}");
 }
+
+/// A combined table computed with a convention other than fricosc's: the
+/// rows' exact values at the convention's inputs, labelled with fricosc's.
+/// Each convention is named (a table with -phase passed with a largest error
+/// of 1.39, no finding, exit 0); a table off by a model bug gets
+/// `large_errors`; the correct table gets nothing.
+#[test]
+fn conventions_of_a_combined_table_are_named() {
+    use fricosc::validation::compare_oscillation;
+    let shape = Shape::parabolic();
+    let exact = |v: f64, a: f64, t: f64, p: f64| {
+        let c = fricosc::Conditions::vhat(v, a).unwrap().with_tangential(t, p).unwrap();
+        shape.ratio(&c).unwrap().mu_ratio
+    };
+    let inputs: Vec<[f64; 4]> =
+        [0.5, 1.5].iter().flat_map(|&a| [0.5, 1.2, 2.5, 4.0].map(|p| [0.3, a, 2.0, p])).collect();
+    let planted: [(&str, fn([f64; 4]) -> [f64; 4], Option<&str>); 6] = [
+        ("correct", |x| x, None),
+        ("-phase", |[v, a, t, p]| [v, a, t, -p], Some("the phase's sign reversed")),
+        ("from the maximum", |[v, a, t, p]| [v, a, t, p + std::f64::consts::PI], Some("normal force's maximum")),
+        ("peak to peak", |[v, a, t, p]| [v, a, 0.5 * t, p], Some("peak to peak")),
+        ("no tangential oscillation", |[v, a, _, p]| [v, a, 0.0, p], None),
+        ("half the velocity", |[v, a, t, p]| [0.5 * v, a, t, p], None),
+    ];
+    for (what, read, named) in planted {
+        let rows: Vec<[f64; 5]> = inputs
+            .iter()
+            .map(|&x| {
+                let [v, a, t, p] = read(x);
+                [x[0], x[1], x[2], x[3], exact(v, a, t, p)]
+            })
+            .collect();
+        let r = compare_oscillation(&shape, &rows, &Check::default()).unwrap();
+        let kinds: Vec<FindingKind> = r.findings.iter().map(|f| f.kind).collect();
+        match (what, named) {
+            ("correct", _) => assert!(kinds.is_empty(), "{what}: {kinds:?}"),
+            (_, Some(name)) => {
+                assert_eq!(kinds, [FindingKind::Convention], "{what}");
+                assert!(r.findings[0].hint.contains(name), "{what}: {}", r.findings[0].hint);
+            }
+            (_, None) => assert!(
+                kinds == [FindingKind::LargeErrors],
+                "{what}: {kinds:?}, {}",
+                r.summary.max_abs_error
+            ),
+        }
+    }
+    // Degrees: phases written as 30, 90, 150.
+    let rows: Vec<[f64; 5]> =
+        [30.0f64, 90.0, 150.0].iter().map(|&d| [0.3, 1.5, 2.0, d, exact(0.3, 1.5, 2.0, d.to_radians())]).collect();
+    let r = compare_oscillation(&shape, &rows, &Check::default()).unwrap();
+    assert!(
+        r.findings.iter().any(|f| f.kind == FindingKind::Convention && f.hint.contains("degrees")),
+        "{:?}",
+        r.findings
+    );
+}
+
+/// A table of the seed's problem whose values are off by O(1) inside [0, 1]
+/// (no other finding fires: 0.6 mu at every row below vbar 1) is not passed
+/// silently.
+#[test]
+fn errors_of_order_one_always_get_a_finding() {
+    let rows: Vec<(f64, f64, f64)> = [0.1, 0.3, 0.5, 0.8]
+        .iter()
+        .map(|&v| {
+            (v, 0.5, 0.6 * fricosc::Shape::flat().ratio(&fricosc::Conditions::vbar(v, 0.5).unwrap()).unwrap().mu_ratio)
+        })
+        .collect();
+    assert_eq!(kinds(&rows, AtRest::Sliding), [FindingKind::LargeErrors]);
+}

@@ -25,6 +25,7 @@
 //! ten times those of the built-in stepping peer at the same resolution). A
 //! finding means something is wrong: the command line exits 1 on any.
 
+mod convention;
 mod history;
 mod oscillation;
 mod series;
@@ -244,6 +245,11 @@ pub enum FindingKind {
     /// Values below -1 (under oscillation in the sliding direction, where
     /// negative values are allowed).
     BelowMinusOne,
+    /// Errors of order one that no other finding explains.
+    LargeErrors,
+    /// Errors of order one that vanish under another convention (the phase's
+    /// sign or origin, degrees, the amplitude's definition).
+    Convention,
 }
 
 /// Something wrong with the table, and where.
@@ -515,6 +521,10 @@ fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64
         "errors ten times (or more) those of fricosc's stepping peer (the seed's scheme) at the same resolution: \
          not the discretisation but a bug (see the peer_error column)",
     ));
+    if out.is_empty() {
+        let worst = rows.iter().fold(0.0f64, |m, r| m.max(r.error.abs()));
+        out.extend(convention::large_errors(convention::large(rows.iter().map(|r| (r.row, r.error))), worst));
+    }
     Ok(out)
 }
 

@@ -166,6 +166,8 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
         "errors ten times (or more) those of fricosc's stepping peer at the same resolution: not the \
          discretisation but a bug (see the peer_error column)",
     ));
+    let errors: Vec<f64> = out.iter().map(|r| r.error).collect();
+    findings.extend(super::convention::oscillation_finding(shape, rows, &errors));
     Ok(OscillationValidation {
         shape: shape.name().to_string(),
         tolerance: tol,

@@ -30,6 +30,8 @@ impl FindingKind {
             FindingKind::AboveBound => "above_bound",
             FindingKind::MissingEvent => "missing_event",
             FindingKind::BelowMinusOne => "below_minus_one",
+            FindingKind::LargeErrors => "large_errors",
+            FindingKind::Convention => "convention",
         }
     }
 }

@@ -1,0 +1,82 @@
+//! Errors of order one (`|mu - exact| > LARGE_ERROR`, where `mu` lies in
+//! `[-1, 1]`) are not a discretisation's: a table that has them gets a
+//! finding whatever else it shows. Under oscillation in the sliding direction
+//! the usual causes are conventions, each cheap to try against the exact
+//! solver: the phase's sign, the phase measured from the normal force's
+//! maximum instead of its minimum (`phase + pi`), a phase in degrees read as
+//! radians, and the tangential amplitude as peak to peak (or half of it). A
+//! convention fits where the table's values, read with it, are within a
+//! tenth of the largest error and within [`LARGE_ERROR`] everywhere; the best
+//! fit is named.
+
+use super::{finding, Finding, FindingKind};
+use crate::conditions::Conditions;
+use crate::shape::Shape;
+use std::f64::consts::PI;
+
+/// The largest error a discretisation is credited with.
+pub(crate) const LARGE_ERROR: f64 = 0.05;
+
+/// A convention: how it reads a row's `[vhat, amp, T, phase]`, and its name.
+type Convention = (fn([f64; 4]) -> [f64; 4], &'static str);
+
+const CONVENTIONS: [Convention; 5] = [
+    (|[v, a, t, p]| [v, a, t, -p], "the phase's sign reversed (-phase)"),
+    (|[v, a, t, p]| [v, a, t, p + PI], "the phase measured from the normal force's maximum (phase + pi)"),
+    (|[v, a, t, p]| [v, a, t, p * (PI / 180.0)], "the phase in degrees (phase pi/180)"),
+    (|[v, a, t, p]| [v, a, 0.5 * t, p], "the tangential amplitude as peak to peak (T/2)"),
+    (|[v, a, t, p]| [v, a, 2.0 * t, p], "the tangential amplitude as half of it (2 T)"),
+];
+
+/// The rows whose error is of order one.
+pub(crate) fn large(errors: impl Iterator<Item = (usize, f64)>) -> Vec<usize> {
+    errors.filter(|&(_, e)| !(e.abs() <= LARGE_ERROR)).map(|(i, _)| i).collect()
+}
+
+/// The finding of a table with errors of order one (none without).
+pub(crate) fn large_errors(rows: Vec<usize>, worst: f64) -> Option<Finding> {
+    let hint = format!(
+        "errors of order one (up to {worst:.3}): not the discretisation but the model or a convention: \
+         the normalisation (mu0 times the period-averaged normal force), the velocity's scaling, the \
+         sign of the tangential force, contact loss (a spring out of contact carries no force and \
+         enters contact relaxed)"
+    );
+    finding(FindingKind::LargeErrors, rows, &hint)
+}
+
+/// Under oscillation in the sliding direction: which convention, if any,
+/// explains errors of order one in `rows` (`[vhat, amp, T, phase, mu_ratio]`,
+/// with their `errors`). `None` when the errors are not of order one.
+pub(crate) fn oscillation_finding(shape: &Shape, rows: &[[f64; 5]], errors: &[f64]) -> Option<Finding> {
+    let bad = large(errors.iter().copied().enumerate());
+    if bad.is_empty() {
+        return None;
+    }
+    let worst = errors.iter().fold(0.0f64, |m, e| m.max(e.abs()));
+    let bar = (0.1 * worst).min(LARGE_ERROR);
+    let fit = |(read, _): &Convention| -> Option<f64> {
+        let errs = crate::numerics::par::map(rows, |r| {
+            let [v, a, t, p] = read([r[0], r[1], r[2], r[3]]);
+            let c = Conditions::vhat(v, a).and_then(|c| c.with_tangential(t, p))?;
+            shape.ratio(&c).map(|x| (r[4] - x.mu_ratio).abs())
+        });
+        let mut m = 0.0f64;
+        for e in errs {
+            m = m.max(e.ok()?);
+        }
+        (m <= bar).then_some(m)
+    };
+    let best = CONVENTIONS.iter().filter_map(|c| fit(c).map(|m| (m, c.1))).min_by(|x, y| x.0.total_cmp(&y.0));
+    match best {
+        Some((m, name)) => finding(
+            FindingKind::Convention,
+            bad,
+            &format!(
+                "your values match the exact ones read with {name}: largest error {m:.1e} there, {worst:.3} \
+                 as read; fricosc's body moves as vhat tau + T sin(tau + phase) while the indentation is \
+                 u0 - du cos tau (phase in radians, T the amplitude)"
+            ),
+        ),
+        None => large_errors(bad, worst),
+    }
+}
