@@ -30,7 +30,7 @@ const CONVENTIONS: [Convention; 5] = [
 
 /// The rows whose error is of order one.
 pub(crate) fn large(errors: impl Iterator<Item = (usize, f64)>) -> Vec<usize> {
-    errors.filter(|&(_, e)| !(e.abs() <= LARGE_ERROR)).map(|(i, _)| i).collect()
+    errors.filter(|&(_, e)| e.is_nan() || e.abs() > LARGE_ERROR).map(|(i, _)| i).collect()
 }
 
 /// The finding of a table with errors of order one (none without).
