@@ -476,6 +476,9 @@ fn history_series_finds_first_order_in_the_jumping_regime() {
     assert!((0.6..1.4).contains(&slip["order"].as_f64().unwrap()), "{slip}");
 }
 
+/// A planted convention: its name, how it reads a row, the name it should get.
+type Planted = (&'static str, fn([f64; 4]) -> [f64; 4], Option<&'static str>);
+
 /// A combined table computed with a convention other than fricosc's: the
 /// rows' exact values at the convention's inputs, labelled with fricosc's.
 /// Each convention is named (a table with -phase passed with a largest error
@@ -491,7 +494,7 @@ fn conventions_of_a_combined_table_are_named() {
     };
     let inputs: Vec<[f64; 4]> =
         [0.5, 1.5].iter().flat_map(|&a| [0.5, 1.2, 2.5, 4.0].map(|p| [0.3, a, 2.0, p])).collect();
-    let planted: [(&str, fn([f64; 4]) -> [f64; 4], Option<&str>); 6] = [
+    let planted: [Planted; 6] = [
         ("correct", |x| x, None),
         ("-phase", |[v, a, t, p]| [v, a, t, -p], Some("the phase's sign reversed")),
         ("from the maximum", |[v, a, t, p]| [v, a, t, p + std::f64::consts::PI], Some("normal force's maximum")),
