@@ -548,10 +548,14 @@ fn decreasing(rows: &[Row], amps: &[f64], tol: f64) -> Vec<usize> {
 /// Rows whose errors are far larger at low velocity than at the same
 /// amplitude's higher velocities (below the critical one): the transient.
 /// Compared within one amplitude, so that a scheme's larger error in the
-/// jumping regimes is not mistaken for it.
+/// jumping regimes is not mistaken for it. Only where some spring never loses
+/// contact (`amp < 1`): a spring that loses contact enters it relaxed every
+/// period, so its steady state is reached in the first; and with a peer, only
+/// rows ten times worse than the peer at the same resolution (a peer as far
+/// off has the same discretisation, not a transient).
 fn not_steady(rows: &[Row], amps: &[f64], tol: f64) -> Vec<usize> {
     let mut slow = vec![];
-    for &a in amps {
+    for &a in amps.iter().filter(|&&a| a < 1.0) {
         let rest: Vec<f64> =
             rows.iter().filter(|r| r.amp == a && r.vbar >= LOW_VBAR && r.vbar < 1.0).map(|r| r.error.abs()).collect();
         if rest.is_empty() {
@@ -561,6 +565,7 @@ fn not_steady(rows: &[Row], amps: &[f64], tol: f64) -> Vec<usize> {
         slow.extend(
             rows.iter()
                 .filter(|r| r.amp == a && r.vbar > 0.0 && r.vbar < LOW_VBAR && r.error.abs() > bar)
+                .filter(|r| r.peer_error.is_none_or(|p| r.error.abs() > 10.0 * p.abs()))
                 .map(|r| r.row),
         );
     }
