@@ -564,3 +564,26 @@ fn a_converged_run_where_contact_is_lost_is_not_called_unsteady() {
     assert!(!kinds(&rows(1.2), AtRest::Sliding).contains(&FindingKind::NotSteady));
     assert!(kinds(&rows(0.5), AtRest::Sliding).contains(&FindingKind::NotSteady));
 }
+
+/// A series whose row is exact but for rounding (errors 2.5e-15, 0, 9.7e-15,
+/// 2.2e-16, 3.8e-14, 9.4e-16 at resolutions 100 to 3200) is `exact`, needs no
+/// more resolution and gets no finding (it was `not_converging`,
+/// `unreachable`, exit 1); a converging row beside it keeps its order.
+#[test]
+fn rounding_level_errors_in_a_series_are_exact() {
+    use fricosc::validation::{convergence, Needed, RowStatus};
+    let res = [100.0, 200.0, 400.0, 800.0, 1600.0, 3200.0];
+    let noise = [2.5e-15, 0.0, 9.7e-15, 2.2e-16, 3.8e-14, 9.4e-16];
+    let exact = |v: f64| Shape::flat().ratio(&fricosc::Conditions::vbar(v, 0.5).unwrap()).unwrap().mu_ratio;
+    let tables: Vec<Vec<(f64, f64, f64)>> = res
+        .iter()
+        .zip(noise)
+        .map(|(&m, e)| vec![(0.3, 0.5, exact(0.3) + e), (0.6, 0.5, exact(0.6) + 1.0 / m)])
+        .collect();
+    let c = convergence(&Shape::flat(), &res, &tables, &Check::default(), Some(1e-6)).unwrap();
+    assert_eq!(c.rows[0].status, RowStatus::Exact, "{:?}", c.rows[0]);
+    assert_eq!(c.rows[0].needed_resolution, Some(Needed::Resolution(100.0)));
+    assert_eq!(c.rows[1].status, RowStatus::Converging);
+    assert!((c.rows[1].order.unwrap() - 1.0).abs() < 1e-6);
+    assert!(c.findings.is_empty(), "{:?}", c.findings);
+}
