@@ -210,7 +210,7 @@ def mu_ratio(
     >>> mu_ratio("flat", [0.0, 0.5, 1.0], 0.5).tolist()
     [0.5, 0.8992738983331656, 1.0]
     >>> mu_ratio("flat", vhat=0.6, amp=2.0, tangential_amp=3.0, phase=1.0)
-    -0.9271222646980091
+    -0.9271222646980088
     """
     return _evaluate(shape, vbar, amp, vhat, tol, False, tangential_amp, phase)
 
