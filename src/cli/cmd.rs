@@ -176,7 +176,9 @@ impl TangentialPoint {
     pub fn oscillation(&self, velocity: &VelocityPoint) -> Result<Option<(f64, f64)>> {
         let Some(t) = self.tangential_amp else { return Ok(None) };
         vhat_for_tangential(velocity.vbar.is_some(), velocity.vhat)?;
-        Ok(Some((t, self.phase.unwrap_or(0.0))))
+        let phase = self.phase.unwrap_or(0.0);
+        warn_degrees(&[phase]);
+        Ok(Some((t, phase)))
     }
 }
 
@@ -211,7 +213,21 @@ impl TangentialList {
         if !is_vhat {
             vhat_for_tangential(true, None)?;
         }
-        Ok(Some((t.0.clone(), self.phase.as_ref().map_or(vec![0.0], |p| p.0.clone()))))
+        let phases = self.phase.as_ref().map_or(vec![0.0], |p| p.0.clone());
+        warn_degrees(&phases);
+        Ok(Some((t.0.clone(), phases)))
+    }
+}
+
+/// A warning on stderr (the work goes on) where a phase is beyond `2 pi` in
+/// size: phases are radians, and 90 is more likely meant as degrees.
+fn warn_degrees(phases: &[f64]) {
+    if let Some(p) = phases.iter().find(|p| p.abs() > std::f64::consts::TAU) {
+        let turns = p / std::f64::consts::TAU;
+        say(&format!(
+            "warning: --phase {p} is radians ({turns:.2} periods); if degrees were meant, give {}",
+            crate::output::num(p.to_radians())
+        ));
     }
 }
 

@@ -169,3 +169,18 @@ fn readme_example_is_what_the_command_prints() {
     ];
     assert_eq!(ok(&cli::run(&args, None)), block);
 }
+
+/// A phase beyond `2 pi` is taken as radians, with a warning on stderr that
+/// names the radians of the same number of degrees (`--phase 90` was
+/// silently 90 rad); the answer is unchanged and the exit code 0.
+#[test]
+fn a_phase_beyond_two_pi_is_warned_about() {
+    let out = cli::run(&["point", "--vhat", "0.3", "--amp", "0.5", "--tangential-amp", "1", "--phase", "90"], None);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success() && err.contains("warning: --phase 90 is radians") && err.contains("1.5707963267948966"),
+        "{err}"
+    );
+    let quiet = cli::run(&["point", "--vhat", "0.3", "--amp", "0.5", "--tangential-amp", "1", "--phase", "1.5"], None);
+    assert!(quiet.stderr.is_empty());
+}

@@ -92,9 +92,10 @@ impl Conditions {
             return Err(Error::param("phase", phase, "must be finite"));
         }
         if t > MAX_TANGENTIAL_AMP || vhat > MAX_TANGENTIAL_AMP {
+            let (name, value) = if vhat > MAX_TANGENTIAL_AMP { ("vhat", vhat) } else { ("tangential-amp", t) };
             return Err(Error::param(
-                if vhat > MAX_TANGENTIAL_AMP { "vhat" } else { "tangential-amp" },
-                t.max(vhat),
+                name,
+                value,
                 "must be <= 1e6 pre-slip lengths (the rounding of the phase grows with T; near there the rigid-body law (2/pi) asin(vhat/T) holds to ~1e-6)",
             ));
         }
@@ -253,5 +254,15 @@ mod tests {
             let (_, got) = Conditions::vhat(0.1, 0.5).unwrap().with_tangential(1.0, x).unwrap().tangential().unwrap();
             assert!((got - r).abs() <= 2.0 * f64::EPSILON * r, "{x}: {got} against {r}");
         }
+    }
+
+    /// A value beyond the limit is named with its own value (`vhat = 3e6`
+    /// was reported with `T`'s 1e7).
+    #[test]
+    fn the_input_beyond_the_limit_is_named_with_its_value() {
+        let e = Conditions::vhat(3e6, 0.0).unwrap().with_tangential(1e7, 0.0).unwrap_err().to_string();
+        assert!(e.starts_with("invalid vhat = 3e6: must be <= 1e6"), "{e}");
+        let e = Conditions::vhat(0.3, 0.0).unwrap().with_tangential(1e7, 0.0).unwrap_err().to_string();
+        assert!(e.starts_with("invalid tangential-amp = 1e7: must be <= 1e6"), "{e}");
     }
 }

@@ -322,6 +322,11 @@ def test_an_empty_table_is_named() -> None:
         fricosc.validate({"vbar": [], "amp": [], "mu_ratio": []}, "flat")
 
 
+def test_one_version() -> None:
+    """The package and the command line carry one version (the workspace's)."""
+    assert cli("--version").strip() == f"fricosc {fricosc.__version__}"
+
+
 def test_messages_are_the_command_lines() -> None:
     cases: List[Tuple[List[str], Callable[[], object]]] = [
         (["point", "--shape", "nonsense", "--vbar", "0.1", "--amp", "0.5"], lambda: fricosc.point("nonsense", 0.1, 0.5)),

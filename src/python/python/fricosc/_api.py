@@ -156,7 +156,7 @@ def _evaluate(
     if phase is not None and tangential_amp is None:
         raise TypeError("phase needs tangential_amp")
     if tangential_amp is not None and not is_vhat:
-        raise TypeError("tangential_amp needs the velocity as vhat (vbar = vhat / amp is undefined at amp 0)")
+        raise TypeError("tangential_amp needs the velocity as vhat= (eq. 15), not vbar")
     try:
         if tangential_amp is not None:
             h_arr, a_arr, t_arr, p_arr = np.broadcast_arrays(
@@ -265,7 +265,7 @@ def point(
         raise TypeError("phase needs tangential_amp")
     if tangential_amp is not None:
         if not is_vhat:
-            raise TypeError("tangential_amp needs the velocity as vhat (vbar = vhat / amp is undefined at amp 0)")
+            raise TypeError("tangential_amp needs the velocity as vhat= (eq. 15), not vbar")
         osc: Dict[str, Any] = _fricosc.point_oscillation(
             _core(shape),
             _scalar(v, "vhat"),
