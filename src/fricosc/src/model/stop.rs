@@ -162,6 +162,20 @@ pub struct StopSpring {
     pub mean_deficit: f64,
 }
 
+impl StopSpring {
+    /// A spring that never touches.
+    fn never() -> StopSpring {
+        StopSpring {
+            contact: Touch::Never,
+            phases: vec![],
+            window: (0.0, 0.0),
+            mean_force: 0.0,
+            mean_bound: 0.0,
+            mean_deficit: 0.0,
+        }
+    }
+}
+
 /// Relative width of every event's bracket at the end of its search.
 const RTOL: f64 = 4.0 * f64::EPSILON;
 
@@ -201,16 +215,8 @@ pub fn always_forward(amp: f64, d: Drive) -> bool {
 /// finite; `b.amp, d.vhat, d.t >= 0`).
 #[must_use]
 pub fn solve(b: Bound, d: Drive) -> StopSpring {
-    let never = b.c <= -b.amp || (b.amp == 0.0 && b.c <= 0.0);
-    if never {
-        return StopSpring {
-            contact: Touch::Never,
-            phases: vec![],
-            window: (0.0, 0.0),
-            mean_force: 0.0,
-            mean_bound: 0.0,
-            mean_deficit: 0.0,
-        };
+    if b.c <= -b.amp || (b.amp == 0.0 && b.c <= 0.0) {
+        return StopSpring::never();
     }
     // h = X' - B' and h2 = X' + B' (B' = amp sin tau in contact).
     let (r, psi) = amplitude(d.t, d.phase, -b.amp);
