@@ -587,3 +587,45 @@ fn rounding_level_errors_in_a_series_are_exact() {
     assert!((c.rows[1].order.unwrap() - 1.0).abs() < 1e-6);
     assert!(c.findings.is_empty(), "{:?}", c.findings);
 }
+
+/// A history at `amp = 1.5` (the contact opens each period) whose stepper
+/// never lets the contact open (the normal force down to -0.5 of F0, the
+/// force kept) gets `negative_normal`, not `normal_scale`; one whose spring
+/// keeps its tangential force out of contact gets `force_out_of_contact`, not
+/// `above_bound`; the correct one neither.
+#[test]
+fn contact_loss_bugs_in_a_history_are_named() {
+    let (v, a, m) = (0.3, 1.5, 2000usize);
+    let step = std::f64::consts::TAU / m as f64;
+    let s = 1.0 / a;
+    let run = |clip: bool, relax: bool| {
+        let mut f: f64 = 0.0;
+        let (mut t, mut ft, mut nn) = (vec![], vec![], vec![]);
+        for k in 0..=20 * m {
+            let tau = step * k as f64;
+            let raw = s - tau.cos();
+            let b = if clip { raw.max(0.0) } else { raw };
+            if k > 0 {
+                f = if b > 0.0 {
+                    (f + v * step).min(b)
+                } else if relax {
+                    0.0
+                } else {
+                    f
+                };
+            }
+            t.push(tau);
+            ft.push(f * a);
+            nn.push(b * a);
+        }
+        let h = compare_history(&Shape::flat(), v, a, &t, &ft, Some(&nn));
+        h.findings.iter().map(|f| f.kind).collect::<Vec<_>>()
+    };
+    assert!(run(true, true).is_empty(), "{:?}", run(true, true));
+    let no_loss = run(false, false);
+    assert!(no_loss.contains(&FindingKind::NegativeNormal), "{no_loss:?}");
+    assert!(!no_loss.contains(&FindingKind::NormalScale), "{no_loss:?}");
+    let kept = run(true, false);
+    assert!(kept.contains(&FindingKind::ForceOutOfContact), "{kept:?}");
+    assert!(!kept.contains(&FindingKind::AboveBound), "{kept:?}");
+}

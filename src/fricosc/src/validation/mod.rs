@@ -245,6 +245,11 @@ pub enum FindingKind {
     /// Values below -1 (under oscillation in the sliding direction, where
     /// negative values are allowed).
     BelowMinusOne,
+    /// A history's normal force below 0: contact loss not modelled.
+    NegativeNormal,
+    /// A history's tangential force where the normal force is 0: the spring
+    /// not relaxed out of contact.
+    ForceOutOfContact,
     /// Errors of order one that no other finding explains.
     LargeErrors,
     /// Errors of order one that vanish under another convention (the phase's

@@ -30,6 +30,8 @@ impl FindingKind {
             FindingKind::AboveBound => "above_bound",
             FindingKind::MissingEvent => "missing_event",
             FindingKind::BelowMinusOne => "below_minus_one",
+            FindingKind::NegativeNormal => "negative_normal",
+            FindingKind::ForceOutOfContact => "force_out_of_contact",
             FindingKind::LargeErrors => "large_errors",
             FindingKind::Convention => "convention",
         }

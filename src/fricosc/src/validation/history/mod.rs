@@ -430,7 +430,14 @@ pub fn compare_history(
         _ => None,
     };
     let exact_events = if exact.flat { crate::flat::point(vbar, amp)?.events } else { vec![] };
-    let above: Vec<usize> = last.iter().copied().filter(|&i| data.tangential[i] > bound(i) + bar).collect();
+    // Out of contact (the bound at 0 or below) a force is the spring's not
+    // relaxing, not a missed slip; a normal force below 0 is contact loss not modelled.
+    let loose = |i: usize| bound(i) <= bar && data.tangential[i].abs() > bar;
+    let out_of_contact: Vec<usize> = last.iter().copied().filter(|&i| loose(i)).collect();
+    let above: Vec<usize> =
+        last.iter().copied().filter(|&i| !loose(i) && data.tangential[i] > bound(i) + bar).collect();
+    let lowest = data.normal.map(|x| last.iter().map(|&i| x[i]).fold(f64::INFINITY, f64::min));
+    let contact = Contact { out_of_contact, negative: lowest.filter(|&m| m < -bar) };
     let events = if exact.flat {
         find_events(&last, &taus, offset, data.tangential, &bound, bar, &exact_events)
     } else {
@@ -459,7 +466,7 @@ pub fn compare_history(
         findings: vec![],
         last_period: samples,
     };
-    v.findings = history_findings(&v, &above, tolerance);
+    v.findings = history_findings(&v, &above, &contact, tolerance);
     Ok(v)
 }
 
@@ -513,10 +520,35 @@ fn find_events(
     found
 }
 
-fn history_findings(v: &HistoryValidation, above: &[usize], tolerance: f64) -> Vec<Finding> {
+/// What a history shows of contact loss: samples with a tangential force
+/// where the normal force is 0 (or below), and the lowest normal force where
+/// it goes below 0.
+struct Contact {
+    out_of_contact: Vec<usize>,
+    negative: Option<f64>,
+}
+
+fn history_findings(v: &HistoryValidation, above: &[usize], contact: &Contact, tolerance: f64) -> Vec<Finding> {
     let mut out = vec![];
     let e = |x: f64| format!("{x:.3e}");
-    if let Some(nc) = &v.normal {
+    if let Some(low) = contact.negative {
+        out.push(general(
+            FindingKind::NegativeNormal,
+            format!(
+                "the normal force goes below 0 (down to {}): contact loss is not modelled; a spring pulled \
+                 out of contact carries no force (neither normal nor tangential) and enters contact again \
+                 relaxed",
+                e(low)
+            ),
+        ));
+    }
+    out.extend(finding(
+        FindingKind::ForceOutOfContact,
+        contact.out_of_contact.clone(),
+        "a tangential force while the normal force is 0: the spring is not relaxed when it loses contact \
+         (out of contact it carries no force, and it enters contact again at 0)",
+    ));
+    if let Some(nc) = v.normal.as_ref().filter(|_| contact.negative.is_none()) {
         let peak = v.last_period.iter().filter_map(|s| s.normal_yours).fold(0.0f64, f64::max);
         if (nc.mean_ratio - 1.0).abs() > NORMAL_MEAN_TOLERANCE || !nc.mean_ratio.is_finite() {
             out.push(general(
