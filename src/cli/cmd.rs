@@ -145,16 +145,25 @@ pub struct VelocityList {
     /// start:stop:count.
     #[arg(long, allow_hyphen_values = true, value_parser = list)]
     pub vhat: Option<List>,
+    /// table: velocities as ratios vhat/T = v0/(omega dx) to the tangential amplitude, each row's
+    /// vhat = this times its --tangential-amp (the rigid-body limit T -> infinity at fixed vhat/T).
+    #[arg(long, allow_hyphen_values = true, value_parser = list, requires = "tangential_amp")]
+    pub vhat_over_t: Option<List>,
 }
 
 impl VelocityList {
-    /// The values and whether they are `vhat`.
+    /// The values and whether they are `vhat` (or `vhat/T`: [`VelocityList::over_t`]).
     pub fn values(&self) -> (&[f64], bool) {
-        match (&self.vbar, &self.vhat) {
-            (Some(v), _) => (&v.0, false),
-            (None, Some(h)) => (&h.0, true),
-            (None, None) => (&[], false),
+        match (&self.vbar, &self.vhat, &self.vhat_over_t) {
+            (Some(v), ..) => (&v.0, false),
+            (None, Some(h), _) | (None, None, Some(h)) => (&h.0, true),
+            (None, None, None) => (&[], false),
         }
+    }
+
+    /// Whether the values are `vhat/T`.
+    pub fn over_t(&self) -> bool {
+        self.vhat_over_t.is_some()
     }
 }
 
@@ -221,7 +230,7 @@ impl TangentialList {
 
 /// A warning on stderr (the work goes on) where a phase is beyond `2 pi` in
 /// size: phases are radians, and 90 is more likely meant as degrees.
-fn warn_degrees(phases: &[f64]) {
+pub fn warn_degrees(phases: &[f64]) {
     if let Some(p) = phases.iter().find(|p| p.abs() > std::f64::consts::TAU) {
         let turns = p / std::f64::consts::TAU;
         say(&format!(
@@ -307,18 +316,28 @@ impl Common {
         amp: f64,
         tangential: Option<(f64, f64)>,
     ) -> Result<fricosc::Conditions> {
-        let c = match velocity {
-            fricosc::Velocity::Vbar(v) => fricosc::Conditions::vbar(v, amp)?,
-            fricosc::Velocity::Vhat(v) => fricosc::Conditions::vhat(v, amp)?,
-        };
-        let c = match tangential {
-            Some((t, phase)) => c.with_tangential(t, phase)?,
-            None => {
-                c.as_vbar()?;
-                c
-            }
-        };
-        Ok(c.with_tol(self.tol())?)
+        Ok(conditions(velocity, amp, tangential)?.with_tol(self.tol())?)
+    }
+}
+
+/// The conditions of one point: `velocity` and `amp`, with a tangential
+/// oscillation `(T, phase)` if given (the default tolerance); `vbar` must be
+/// defined without one.
+pub fn conditions(
+    velocity: fricosc::Velocity,
+    amp: f64,
+    tangential: Option<(f64, f64)>,
+) -> Result<fricosc::Conditions> {
+    let c = match velocity {
+        fricosc::Velocity::Vbar(v) => fricosc::Conditions::vbar(v, amp)?,
+        fricosc::Velocity::Vhat(v) => fricosc::Conditions::vhat(v, amp)?,
+    };
+    match tangential {
+        Some((t, phase)) => Ok(c.with_tangential(t, phase)?),
+        None => {
+            c.as_vbar()?;
+            Ok(c)
+        }
     }
 }
 

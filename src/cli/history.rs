@@ -1,7 +1,7 @@
 //! `fricosc history`: the force histories of [`fricosc::history`] as a
 //! report (CSV, JSON, the seed's Fig. 2 as SVG).
 
-use crate::cmd::{emit_bytes, list, number, List, MethodArg, VelocityPoint, DEFAULT_STEPPING};
+use crate::cmd::{emit_bytes, list, number, List, MethodArg, TangentialPoint, VelocityPoint, DEFAULT_STEPPING};
 use crate::error::{Error, Result};
 use crate::export::{export_bytes, Format};
 use clap::Args;
@@ -13,8 +13,8 @@ impl crate::export::Report for History {
 
     fn comment(&self) -> Option<String> {
         Some(format!(
-            "fricosc history of {} at vbar {}, du/u0 {}: tau = omega t with the indentation u0 - du cos(tau); {}",
-            self.shape, self.vbar, self.amp, self.units
+            "fricosc history of {} at {}: tau = omega t with the indentation u0 - du cos(tau); {}",
+            self.shape, self.point, self.units
         ))
     }
 
@@ -36,6 +36,8 @@ impl crate::export::Report for History {
         use crate::chart::{Axis, Chart, Series, Style, OKABE_ITO};
         let pts = |f: fn(&Sample) -> f64| self.samples.iter().map(|x| (x.tau, f(x))).collect::<Vec<_>>();
         let ymax = self.samples.iter().map(|x| x.normal).fold(0.0, f64::max) * 1.05 + 1e-12;
+        // A backward slip (a tangential oscillation) takes the force below 0.
+        let ymin = self.samples.iter().map(|x| x.tangential).fold(0.0, f64::min) * 1.05;
         let series = vec![
             Series {
                 label: "μ_{0} × normal force".into(),
@@ -53,9 +55,9 @@ impl crate::export::Report for History {
         let tmax = self.samples.last().map_or(1.0, |x| x.tau);
         let unit = "force / (μ_{0} F_{0})";
         Some(Ok(Chart {
-            title: format!("{}: forces at vbar = {}, du/u0 = {} ({})", self.shape, self.vbar, self.amp, self.units),
+            title: format!("{}: forces at {} ({})", self.shape, self.point, self.units),
             x: Axis::linear("phase ωt (rad)", (0.0, tmax)),
-            y: Axis::linear(unit, (0.0, ymax)),
+            y: Axis::linear(unit, (ymin, ymax)),
             series,
             key: vec![],
             rules: vec![],
@@ -74,6 +76,8 @@ pub struct HistoryArgs {
     /// Amplitude du/u0.
     #[arg(long, allow_hyphen_values = true, value_parser = number)]
     pub amp: f64,
+    #[command(flatten)]
+    pub tangential: TangentialPoint,
     /// Periods to sample.
     #[arg(long, default_value_t = 1)]
     pub periods: usize,
@@ -111,12 +115,8 @@ pub fn run(a: HistoryArgs) -> Result<()> {
     };
     let chosen = a.spring_at.map(|l| l.0).unwrap_or_default();
     let shape = crate::input::parse_shape(&a.shape)?;
-    let amp = a.amp;
-    let vbar = match a.velocity.velocity()? {
-        fricosc::Velocity::Vbar(v) => fricosc::Conditions::vbar(v, amp)?,
-        fricosc::Velocity::Vhat(v) => fricosc::Conditions::vhat(v, amp)?,
-    }
-    .as_vbar()?;
+    let tangential = a.tangential.oscillation(&a.velocity)?;
+    let c = crate::cmd::conditions(a.velocity.velocity()?, a.amp, tangential)?;
     let format = Format::parse(&a.format, &[Format::Json, Format::Csv, Format::Svg, Format::Png])?;
     // A drawing holds at most as many points as a plot (checked before any work).
     let drawn = match stepping {
@@ -138,7 +138,7 @@ pub fn run(a: HistoryArgs) -> Result<()> {
                 .with_samples(a.samples)
                 .with_springs(a.springs)
                 .with_spring_at(chosen);
-            fricosc::history::history(&shape, vbar, amp, &opts)?
+            fricosc::history::history(&shape, &c, &opts)?
         }
         Some(m) => {
             if !shape.is_flat() || !chosen.is_empty() {
@@ -148,7 +148,7 @@ pub fn run(a: HistoryArgs) -> Result<()> {
                 }
                 .into());
             }
-            fricosc::history::stepped_history(vbar, amp, a.periods, m)?
+            fricosc::history::stepped_history(&c, a.periods, m)?
         }
     };
     let mut bytes = export_bytes(&h, format)?;

@@ -25,9 +25,10 @@ pub struct PlotArgs {
     /// needs --vhat): the curves are the combined oscillation's.
     #[arg(long, allow_hyphen_values = true, value_parser = crate::cmd::nonneg)]
     pub tangential_amp: Option<f64>,
-    /// Its phase against the normal oscillation, radians (default 0).
-    #[arg(long, allow_hyphen_values = true, value_parser = crate::cmd::number, requires = "tangential_amp")]
-    pub phase: Option<f64>,
+    /// Its phase against the normal oscillation, radians (default 0). Several (a comma list or
+    /// start:stop:count) at one --vhat: the curves are drawn against the phase.
+    #[arg(long, allow_hyphen_values = true, value_parser = list, requires = "tangential_amp")]
+    pub phase: Option<List>,
     /// With --overlay and a column mu: the Coulomb coefficient (mu_ratio = mu / mu0).
     #[arg(long, allow_hyphen_values = true, value_parser = crate::cmd::positive, requires = "overlay")]
     pub mu0: Option<f64>,
@@ -38,9 +39,30 @@ pub fn run(a: PlotArgs) -> Result<()> {
         drawing_kind("--out", path)?;
     }
     let shape = crate::input::parse_shape(&a.shape)?;
+    if a.velocity.over_t() {
+        return Err(crate::error::Error::Parse {
+            context: "--vhat-over-t".into(),
+            reason: "applies to table; plot draws against --vhat (or the phase)".into(),
+        });
+    }
     let (xs, vhat) = a.velocity.values();
-    let tangential = a.tangential_amp.map(|t| (t, a.phase.unwrap_or(0.0)));
-    let mut fig = crate::figures::user_with(&shape, &a.amp.0, xs, vhat, tangential)?;
+    let phases = a.phase.as_ref().map_or(&[0.0][..], |p| &p.0[..]);
+    crate::cmd::warn_degrees(phases);
+    let (mut fig, fixed) = match (a.tangential_amp, phases, xs) {
+        (Some(t), [_, _, ..], &[v]) if vhat => {
+            (crate::figures::against_phase(&shape, &a.amp.0, v, t, phases)?, Fixed::Vhat(v))
+        }
+        (Some(_), [_, _, ..], _) => {
+            return Err(crate::error::Error::Parse {
+                context: "--phase".into(),
+                reason: "several phases are drawn against the phase at one --vhat".into(),
+            })
+        }
+        (t, _, _) => {
+            let tangential = t.map(|t| (t, phases[0]));
+            (crate::figures::user_with(&shape, &a.amp.0, xs, vhat, tangential)?, Fixed::Phase(phases[0]))
+        }
+    };
     if let Some(file) = &a.overlay {
         let (text, source) = crate::cmd::read_input(Some(file.clone()))?;
         let table = crate::validate::read_table(&text, &source)?;
@@ -52,13 +74,64 @@ pub fn run(a: PlotArgs) -> Result<()> {
                 });
             }
         }
-        let rows = table.rows(a.mu0, &source)?;
         let name = std::path::Path::new(&source).file_name().map_or(source.clone(), |n| n.to_string_lossy().into());
-        crate::figures::overlay(&mut fig, &rows, &name)?;
+        let (rows, x_as_is) = match a.tangential_amp {
+            Some(t) if table.is_oscillation() => {
+                (oscillation_points(&table.oscillation_rows(a.mu0, &source)?, t, fixed, &source)?, true)
+            }
+            None if table.is_oscillation() => {
+                return Err(crate::error::Error::Parse {
+                    context: source,
+                    reason: "its rows are under oscillation in the sliding direction (column 'tangential_amp'): \
+                             plot them with --vhat, --tangential-amp and --phase"
+                        .into(),
+                })
+            }
+            _ => (table.rows(a.mu0, &source)?, false),
+        };
+        crate::figures::overlay(&mut fig, &rows, x_as_is, &name)?;
     }
     let svg = crate::figures::chart(&fig).svg();
     match &a.out {
         Some(path) => write_drawing("--out", path, &svg),
         None => emit(&svg),
+    }
+}
+
+/// What a combined plot holds fixed besides `T`: the phase (curves against
+/// `vhat`) or `vhat` (curves against the phase).
+#[derive(Clone, Copy)]
+enum Fixed {
+    Phase(f64),
+    Vhat(f64),
+}
+
+/// `(x, amp, mu_ratio)` of a table under oscillation in the sliding direction
+/// on the plot's axis (`vhat`, or the phase reduced to `[0, 2 pi)` as the
+/// solver reduces it), every row at the plot's `T` and fixed value.
+fn oscillation_points(rows: &[[f64; 5]], t: f64, fixed: Fixed, source: &str) -> Result<Vec<(f64, f64, f64)>> {
+    let reduce = |p: f64| {
+        let c = fricosc::Conditions::vhat(0.0, 0.0).and_then(|c| c.with_tangential(1.0, p));
+        c.ok().and_then(|c| c.tangential()).map_or(p, |x| x.1)
+    };
+    let (other, plot) = match fixed {
+        Fixed::Phase(p) => ("phase", reduce(p)),
+        Fixed::Vhat(v) => ("vhat", v),
+    };
+    let held = |r: &[f64; 5]| match fixed {
+        Fixed::Phase(_) => (reduce(r[3]), r[0]),
+        Fixed::Vhat(_) => (r[0], reduce(r[3])),
+    };
+    match rows.iter().position(|r| r[2] != t || held(r).0 != plot) {
+        Some(i) => Err(crate::error::Error::Parse {
+            context: source.into(),
+            reason: format!(
+                "row {i} is at tangential_amp {}, {other} {}; the plot is at --tangential-amp {t}, --{other} {plot} \
+                 (overlay one oscillation at a time)",
+                rows[i][2],
+                held(&rows[i]).0
+            ),
+        }),
+        None => Ok(rows.iter().map(|r| (held(r).1, r[1], r[4])).collect()),
     }
 }

@@ -137,8 +137,7 @@ pub fn files() -> Result<Vec<SuiteFile>> {
     for (v, a) in HISTORIES {
         let h = fricosc::history::history(
             &Shape::flat(),
-            v,
-            a,
+            &fricosc::Conditions::vbar(v, a)?,
             &fricosc::history::HistoryOptions::default().with_samples(HISTORY_SAMPLES),
         )?;
         let event = |e: Option<fricosc::spring::EventKind>| {

@@ -26,6 +26,7 @@ pub struct TableArgs {
 /// vhat), columns vhat, amp, tangential_amp, phase, mu_ratio, reduction.
 fn combined_table(a: &TableArgs, shape: &fricosc::Shape, ts: &[f64], phases: &[f64]) -> Result<()> {
     let (vels, _) = a.velocity.values();
+    let over_t = a.velocity.over_t();
     let amps = &a.amp.0;
     let total = [amps.len(), ts.len(), phases.len(), vels.len()].iter().map(|&n| n as u128).product::<u128>();
     if total > crate::grid::MAX_LIST {
@@ -41,7 +42,8 @@ fn combined_table(a: &TableArgs, shape: &fricosc::Shape, ts: &[f64], phases: &[f
             for &phase in phases {
                 for &v in vels {
                     // Checked before any work (and the phase printed as given).
-                    points.push(a.common.conditions(fricosc::Velocity::Vhat(v), amp, Some((t, phase)))?);
+                    let vhat = if over_t { v * t } else { v };
+                    points.push(a.common.conditions(fricosc::Velocity::Vhat(vhat), amp, Some((t, phase)))?);
                 }
             }
         }
@@ -50,17 +52,20 @@ fn combined_table(a: &TableArgs, shape: &fricosc::Shape, ts: &[f64], phases: &[f
     if let Some(st) = stepping {
         st.check(shape)?;
     }
-    let rows: Vec<[f64; 2]> = points
+    let rows: Vec<[f64; 3]> = points
         .par_iter()
         .map(|c| {
             let r = match stepping {
                 Some(st) => fricosc::stepper::evaluate(shape, c, st)?.ratio,
                 None => shape.ratio(c)?,
             };
-            Ok([r.mu_ratio, r.reduction])
+            Ok([c.as_vhat(), r.mu_ratio, r.reduction])
         })
         .collect::<Result<Vec<_>>>()?;
-    let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "reduction"];
+    let mut cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "reduction"];
+    if over_t {
+        cols.insert(0, "vhat_over_t");
+    }
     let mut w =
         TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols).map_err(io_err)?;
     // The grid's values printed once each, in the order the rows were made.
@@ -71,9 +76,13 @@ fn combined_table(a: &TableArgs, shape: &fricosc::Shape, ts: &[f64], phases: &[f
         for t in &t_t {
             for phase in &phase_t {
                 for (v, r) in vel_t.iter().zip(rows.by_ref()) {
-                    let (mu, reduction) = (Cell::Num(r[0]), Cell::Num(r[1]));
-                    w.row(&[Cell::Text(v), Cell::Text(amp), Cell::Text(t), Cell::Text(phase), mu, reduction])
-                        .map_err(io_err)?;
+                    let (mu, reduction) = (Cell::Num(r[1]), Cell::Num(r[2]));
+                    let rest = [Cell::Text(amp), Cell::Text(t), Cell::Text(phase), mu, reduction];
+                    match over_t {
+                        true => w.row(&[&[Cell::Text(v), Cell::Num(r[0])][..], &rest].concat()),
+                        false => w.row(&[&[Cell::Text(v)][..], &rest].concat()),
+                    }
+                    .map_err(io_err)?;
                 }
             }
         }

@@ -9,6 +9,7 @@ mod batch_rows;
 mod claims;
 mod cli;
 mod combined_cli;
+mod combined_history;
 mod figures;
 mod fuzz_mirror;
 mod hostile;

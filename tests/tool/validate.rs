@@ -40,7 +40,7 @@ fn table(mu: impl Fn(f64, f64) -> f64) -> Vec<(f64, f64, f64)> {
 /// A history on the seed's phase axis against the exact one (tolerance 1e-9).
 fn compare_history(shape: &Shape, v: f64, a: f64, t: &[f64], f: &[f64], n: Option<&[f64]>) -> HistoryValidation {
     let data = HistoryData { time: TimeAxis::Phase(t), tangential: f, normal: n };
-    fricosc::validation::compare_history(shape, v, a, &data, 1e-9).unwrap()
+    fricosc::validation::compare_history(shape, &fricosc::Conditions::vbar(v, a).unwrap(), &data, 1e-9).unwrap()
 }
 
 fn kinds(rows: &[(f64, f64, f64)], at_rest: AtRest) -> Vec<FindingKind> {
@@ -274,7 +274,7 @@ fn the_series_finds_the_orders_of_the_seeds_scheme() {
 fn history_events_of_the_peer_are_within_one_step() {
     for (v, a) in [(0.3, 1.5), (0.3, 0.5), (0.9, 1.5)] {
         for m in [250usize, 1000, 4000, 16000] {
-            let h = fricosc::history::stepped_history(v, a, 3, m).unwrap();
+            let h = fricosc::history::stepped_history(&fricosc::Conditions::vbar(v, a).unwrap(), 3, m).unwrap();
             let (t, f, n): (Vec<f64>, Vec<f64>, Vec<f64>) = (
                 h.samples.iter().map(|s| s.tau).collect(),
                 h.samples.iter().map(|s| s.tangential).collect(),
@@ -334,7 +334,7 @@ fn history_bugs_are_named() {
 /// the normal force; the summary names the events.
 #[test]
 fn validate_history_reads_time_columns() {
-    let h = fricosc::history::stepped_history(0.3, 1.5, 3, 1000).unwrap();
+    let h = fricosc::history::stepped_history(&fricosc::Conditions::vbar(0.3, 1.5).unwrap(), 3, 1000).unwrap();
     let omega = 2.0 * std::f64::consts::PI * 50.0; // 50 Hz
     let mut text = String::from("t,normal,tangential\n");
     for s in &h.samples {
@@ -382,9 +382,12 @@ fn a_missed_stick_end_is_named() {
     let r = compare_history(&Shape::flat(), v, a, &t, &ft, Some(&nn));
     assert!(r.above_bound_count > 100 && !r.above_bound.is_empty(), "{}", r.above_bound_count);
     // The exact history never is above its bound.
-    let exact =
-        fricosc::history::history(&Shape::flat(), v, a, &HistoryOptions::default().with_periods(2).with_samples(500))
-            .unwrap();
+    let exact = fricosc::history::history(
+        &Shape::flat(),
+        &fricosc::Conditions::vbar(v, a).unwrap(),
+        &HistoryOptions::default().with_periods(2).with_samples(500),
+    )
+    .unwrap();
     let (t, f, n): (Vec<f64>, Vec<f64>, Vec<f64>) = (
         exact.samples.iter().map(|s| s.tau).collect(),
         exact.samples.iter().map(|s| s.tangential).collect(),
@@ -398,7 +401,7 @@ fn a_missed_stick_end_is_named() {
 /// Forces in newtons: --static-force (and its alias --kz-u0) and --mu0 normalise them.
 #[test]
 fn history_forces_in_physical_units() {
-    let h = fricosc::history::stepped_history(0.3, 0.5, 2, 800).unwrap();
+    let h = fricosc::history::stepped_history(&fricosc::Conditions::vbar(0.3, 0.5).unwrap(), 2, 800).unwrap();
     let (kz_u0, mu0) = (250.0, 0.4);
     let mut text = String::from("tau,normal,tangential\n");
     let mut plain = String::from("tau,normal,tangential\n");
@@ -428,8 +431,7 @@ fn curved_histories_are_compared_with_the_reference_grid() {
     let cols = |springs: usize| {
         let h = fricosc::history::history(
             &shape,
-            0.3,
-            1.3,
+            &fricosc::Conditions::vbar(0.3, 1.3).unwrap(),
             &HistoryOptions::default().with_periods(2).with_samples(300).with_springs(springs),
         )
         .unwrap();
@@ -459,7 +461,7 @@ fn history_series_finds_first_order_in_the_jumping_regime() {
             .map(String::from)
             .to_vec();
     for m in [250usize, 500, 1000, 2000, 4000, 8000, 16000] {
-        let h = fricosc::history::stepped_history(0.3, 1.5, 2, m).unwrap();
+        let h = fricosc::history::stepped_history(&fricosc::Conditions::vbar(0.3, 1.5).unwrap(), 2, m).unwrap();
         let text: String = std::iter::once("tau,tangential\n".to_string())
             .chain(h.samples.iter().map(|s| format!("{:?},{:?}\n", s.tau, s.tangential)))
             .collect();

@@ -10,8 +10,8 @@ use fricosc::seed;
 use fricosc::Shape;
 use serde::Serialize;
 mod oscillation;
+pub use oscillation::{against_phase, COMBINED, COMBINED_TS, MAP_T, TANGENTIAL_AMPS};
 use oscillation::{combined_mu, oscillation_figures};
-pub use oscillation::{COMBINED, COMBINED_TS, MAP_T, TANGENTIAL_AMPS};
 
 /// One curve of a figure.
 #[derive(Debug, Clone, Serialize)]
@@ -66,6 +66,8 @@ pub struct Figure {
     pub family: String,
     /// Curves.
     pub curves: Vec<Curve>,
+    /// What the curves hold fixed, drawn below the key (e.g. `Δx/l = 1.5`).
+    pub notes: Vec<String>,
 }
 
 /// Axis label of `vbar`.
@@ -97,6 +99,7 @@ fn figure(name: &str, title: &str, x: XAxis, range: [f64; 4], curves: Vec<Curve>
         bold_critical: false,
         family: "amp".into(),
         curves,
+        notes: vec![],
     }
 }
 
@@ -311,24 +314,8 @@ pub fn user_with(
             reason: "give the velocities as --vhat (vbar = vhat/amp is undefined without normal oscillation)".into(),
         });
     }
-    if amps.len() > MAX_CURVES {
-        return Err(Error::TooLarge {
-            what: "amplitudes in one plot".into(),
-            count: amps.len() as u128,
-            limit: MAX_CURVES as u128,
-        });
-    }
-    if xs.len() > MAX_POINTS {
-        return Err(Error::TooLarge {
-            what: "velocities in one plot".into(),
-            count: xs.len() as u128,
-            limit: MAX_POINTS as u128,
-        });
-    }
+    check_family(amps, xs.len(), "velocities")?;
     let what = if vhat { "vhat" } else { "vbar" };
-    for &a in amps {
-        fricosc::check_nonneg("amp", a)?;
-    }
     for &x in xs {
         fricosc::check_nonneg(what, x)?;
     }
@@ -383,19 +370,46 @@ pub fn user_with(
     };
     let mut f = figure("plot", &title, x, [lo, hi, if negative { -1.05 } else { 0.0 }, 1.05], curves);
     f.bold_critical = amps.len() > 1 && amps.contains(&1.0);
+    if let Some((t, p)) = tangential {
+        f.notes = vec![format!("Δx/l = {t}"), format!("φ = {p}")];
+    }
     Ok(f)
+}
+
+/// The limits of a `plot` (at most [`MAX_CURVES`] amplitudes, each `>= 0`, and
+/// [`MAX_POINTS`] points of `what` a curve), checked before any work.
+fn check_family(amps: &[f64], points: usize, what: &str) -> Result<()> {
+    if amps.len() > MAX_CURVES {
+        return Err(Error::TooLarge {
+            what: "amplitudes in one plot".into(),
+            count: amps.len() as u128,
+            limit: MAX_CURVES as u128,
+        });
+    }
+    if points > MAX_POINTS {
+        return Err(Error::TooLarge {
+            what: format!("{what} in one plot"),
+            count: points as u128,
+            limit: MAX_POINTS as u128,
+        });
+    }
+    for &a in amps {
+        fricosc::check_nonneg("amp", a)?;
+    }
+    Ok(())
 }
 
 /// Most points of a `plot --overlay` file.
 pub const MAX_OVERLAY: usize = 100_000;
 
-/// Add another code's points `(vbar, amp, mu_ratio)` to a `plot` figure, one
-/// marker curve per amplitude (`kind` `yours`): drawn in the colour of the
+/// Add another code's points `(vbar, amp, mu_ratio)` (or `(x, amp,
+/// mu_ratio)` on the figure's own axis where `x_as_is`) to a `plot` figure,
+/// one marker curve per amplitude (`kind` `yours`): drawn in the colour of the
 /// plot's curve of that amplitude, grey where the plot has none.
 ///
 /// # Errors
 /// [`Error::TooLarge`] beyond [`MAX_OVERLAY`] points.
-pub fn overlay(f: &mut Figure, rows: &[(f64, f64, f64)], name: &str) -> Result<()> {
+pub fn overlay(f: &mut Figure, rows: &[(f64, f64, f64)], x_as_is: bool, name: &str) -> Result<()> {
     if rows.len() > MAX_OVERLAY {
         return Err(Error::TooLarge {
             what: "points of --overlay".into(),
@@ -408,8 +422,8 @@ pub fn overlay(f: &mut Figure, rows: &[(f64, f64, f64)], name: &str) -> Result<(
     amps.dedup();
     let vhat = f.x == XAxis::Vhat;
     for a in amps {
-        let points =
-            rows.iter().filter(|r| r.1 == a).map(|&(v, amp, mu)| [if vhat { v * amp } else { v }, mu]).collect();
+        let x = |v: f64, amp: f64| if vhat && !x_as_is { v * amp } else { v };
+        let points = rows.iter().filter(|r| r.1 == a).map(|&(v, amp, mu)| [x(v, amp), mu]).collect();
         f.curves.push(Curve {
             label: format!("{name}, du/u0 = {a}"),
             kind: "yours".into(),
@@ -516,6 +530,10 @@ pub fn chart(f: &Figure) -> Chart {
             }
         }
     }
+    if !f.notes.is_empty() {
+        key.push(Key::Heading(String::new()));
+        key.extend(f.notes.iter().map(|n| Key::Heading(n.clone())));
+    }
     let ratio_axis = f.y_label == MU_LABEL;
     Chart {
         title: f.title.clone(),
@@ -523,7 +541,12 @@ pub fn chart(f: &Figure) -> Chart {
         y: Axis::linear(&f.y_label, (f.range[2], f.range[3])),
         series,
         key,
-        rules: if ratio_axis { vec![Rule { horizontal: true, at: 1.0 }] } else { vec![] },
+        // mu/mu0 = 1 (no reduction), and 0 where the friction changes sign.
+        rules: [(ratio_axis, 1.0), (ratio_axis && f.range[2] < 0.0, 0.0)]
+            .into_iter()
+            .filter(|r| r.0)
+            .map(|(_, at)| Rule { horizontal: true, at })
+            .collect(),
     }
 }
 

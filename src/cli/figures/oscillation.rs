@@ -2,7 +2,7 @@
 //! (`Conditions::with_tangential`), alone and with the normal oscillation.
 
 use super::{approx, figure, grid, Curve, Figure, XAxis};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use fricosc::Shape;
 
 /// The tangential amplitudes of the pure-tangential figures.
@@ -177,5 +177,44 @@ fn regime_map() -> Result<Figure> {
         curves,
     );
     f.y_label = "oscillation amplitude Δu_{z}/u_{z0}".into();
+    Ok(f)
+}
+
+/// `fricosc plot --phase LIST`: `mu/mu0` against the phase of the tangential
+/// oscillation at one `vhat` and `T = t`, one curve per amplitude; `vhat`, `T`
+/// and the range of phases in the title.
+///
+/// # Errors
+/// Bad inputs (named), fewer than two phases, the size limits of a plot.
+pub fn against_phase(shape: &Shape, amps: &[f64], vhat: f64, t: f64, phases: &[f64]) -> Result<Figure> {
+    super::check_family(amps, phases.len(), "phases")?;
+    let mut xs = phases.to_vec();
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let (lo, hi) = match (xs.first(), xs.last()) {
+        (Some(&lo), Some(&hi)) if hi > lo => (lo, hi),
+        _ => {
+            return Err(Error::Parse { context: "--phase".into(), reason: "needs two different phases or more".into() })
+        }
+    };
+    let mut curves = vec![];
+    for (i, &a) in amps.iter().enumerate() {
+        if amps[..i].contains(&a) {
+            continue;
+        }
+        let points = xs.iter().map(|&p| Ok([p, combined_mu(shape, vhat, a, t, p)?])).collect::<Result<Vec<_>>>()?;
+        curves.push(Curve {
+            label: format!("exact, du/u0 = {a}"),
+            kind: "exact".into(),
+            equation: None,
+            amp: Some(a),
+            points,
+        });
+    }
+    let negative = curves.iter().flat_map(|c| &c.points).any(|p| p[1] < 0.0);
+    let title =
+        format!("{}: mu/mu0 against the phase at vhat = {vhat}, tangential oscillation dx/l = {t}", shape.name());
+    let mut f = figure("plot", &title, XAxis::Phase, [lo, hi, if negative { -1.05 } else { 0.0 }, 1.05], curves);
+    f.notes = vec![format!("v\u{302} = {vhat}"), format!("Δx/l = {t}")];
     Ok(f)
 }

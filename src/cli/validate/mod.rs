@@ -92,6 +92,13 @@ pub struct HistoryArgs {
     /// With --history: the amplitude du/u0.
     #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "on")]
     pub amp: Option<f64>,
+    /// With --history and --vhat: the amplitude of an oscillation in the sliding direction,
+    /// dx/l (as `point --tangential-amp`).
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "vhat")]
+    pub tangential_amp: Option<f64>,
+    /// With --history and --tangential-amp: its phase, radians (default 0).
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "tangential_amp")]
+    pub phase: Option<f64>,
     /// With --history and a time column t: the angular frequency (tau = omega t); without it
     /// the period is found from the normal force.
     #[arg(long, allow_hyphen_values = true, value_parser = positive, requires = "on")]
@@ -353,12 +360,16 @@ fn history_of(
         Some(spec) => crate::input::parse_shape(spec)?,
         None => Shape::flat(),
     };
-    let amp = h.amp.unwrap_or(0.0);
-    let vbar = match (h.vbar, h.vhat) {
-        (Some(v), None) => v,
-        (None, Some(v)) => fricosc::Conditions::vhat(v, amp)?.as_vbar()?,
+    let velocity = match (h.vbar, h.vhat) {
+        (Some(v), None) => fricosc::Velocity::Vbar(v),
+        (None, Some(v)) => fricosc::Velocity::Vhat(v),
         _ => return Err(Error::Parse { context: "--history".into(), reason: "needs one of --vbar and --vhat".into() }),
     };
+    let tangential = h.tangential_amp.map(|t| (t, h.phase.unwrap_or(0.0)));
+    if let Some((_, phase)) = tangential {
+        crate::cmd::warn_degrees(&[phase]);
+    }
+    let conditions = crate::cmd::conditions(velocity, h.amp.unwrap_or(0.0), tangential)?;
     let (text, source) = read_input(Some(file.to_string()))?;
     let c = read_history(&text, &source, h.static_force.unwrap_or(1.0), mu0.unwrap_or(1.0))?;
     drop(text);
@@ -370,7 +381,7 @@ fn history_of(
         });
     }
     let data = HistoryData { time, tangential: &c.tangential, normal: c.normal.as_deref() };
-    let v = fricosc::validation::compare_history(&shape, vbar, amp, &data, tolerance).map_err(|e| match e {
+    let v = fricosc::validation::compare_history(&shape, &conditions, &data, tolerance).map_err(|e| match e {
         fricosc::Error::Parse { context, reason } => Error::Parse { context: format!("{source}: {context}"), reason },
         e => Error::Core(e),
     })?;

@@ -136,10 +136,13 @@ fn conditions(v: f64, a: f64, vhat: bool, tol: f64) -> fricosc::Result<Condition
     c.with_tol(tol)
 }
 
-/// `(vbar, amp)` of one element: checked, `vbar` from `vhat` if asked.
-fn velocity(v: f64, a: f64, vhat: bool) -> fricosc::Result<(f64, f64)> {
-    let c = conditions(v, a, vhat, DEFAULT_TOL)?;
-    Ok((c.as_vbar()?, c.amp()))
+/// The conditions of a history: `(v, a)` as `vbar` or `vhat`, with a
+/// tangential oscillation `(T, phase)` if given (then `v` is `vhat`).
+fn history_conditions(v: f64, a: f64, vhat: bool, tangential: Option<(f64, f64)>) -> fricosc::Result<Conditions> {
+    match tangential {
+        Some((t, p)) => oscillation(v, a, t, p, DEFAULT_TOL),
+        None => conditions(v, a, vhat, DEFAULT_TOL),
+    }
 }
 
 /// The conditions of one element under a tangential oscillation.
@@ -309,7 +312,7 @@ fn point<'py>(py: Python<'py>, shape: &CoreShape, v: f64, a: f64, vhat: bool, to
 
 /// A force history (`fricosc history`) as a dict of numpy arrays.
 #[pyfunction]
-#[pyo3(signature = (shape, v, a, vhat, periods, samples, springs, spring_at))]
+#[pyo3(signature = (shape, v, a, vhat, tangential, periods, samples, springs, spring_at))]
 #[allow(clippy::too_many_arguments)]
 fn history<'py>(
     py: Python<'py>,
@@ -317,23 +320,33 @@ fn history<'py>(
     v: f64,
     a: f64,
     vhat: bool,
+    tangential: Option<(f64, f64)>,
     periods: usize,
     samples: usize,
     springs: usize,
     spring_at: Vec<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (v, a) = velocity(v, a, vhat).map_err(to_py)?;
+    let c = history_conditions(v, a, vhat, tangential).map_err(to_py)?;
     let shape = &shape.inner;
     let opts = HistoryOptions::default()
         .with_periods(periods)
         .with_samples(samples)
         .with_springs(springs)
         .with_spring_at(spring_at);
-    let h = py.detach(|| core_history(shape, v, a, &opts)).map_err(to_py)?;
+    let h = py.detach(|| core_history(shape, &c, &opts)).map_err(to_py)?;
     let d = PyDict::new(py);
     d.set_item("shape", &h.shape)?;
-    d.set_item("vbar", h.vbar)?;
-    d.set_item("amp", h.amp)?;
+    for (key, value) in [
+        ("vbar", h.point.vbar),
+        ("vhat", h.point.vhat),
+        ("amp", Some(h.point.amp)),
+        ("tangential_amp", h.point.tangential_amp),
+        ("phase", h.point.phase),
+    ] {
+        if let Some(x) = value {
+            d.set_item(key, x)?;
+        }
+    }
     d.set_item("units", &h.units)?;
     let col = |f: fn(&Sample) -> f64| h.samples.iter().map(f).collect::<Vec<f64>>();
     d.set_item("tau", col(|s| s.tau).into_pyarray(py))?;
@@ -448,7 +461,7 @@ fn validate_series<'py>(
 /// A force history against the exact one (`fricosc validate --history`'s
 /// report) as a dict.
 #[pyfunction]
-#[pyo3(signature = (shape, time, is_tau, tangential, normal, v, a, vhat, omega, tolerance, static_force, mu0))]
+#[pyo3(signature = (shape, time, is_tau, tangential, normal, v, a, vhat, oscillation, omega, tolerance, static_force, mu0))]
 #[allow(clippy::too_many_arguments)]
 fn validate_history<'py>(
     py: Python<'py>,
@@ -460,12 +473,13 @@ fn validate_history<'py>(
     v: f64,
     a: f64,
     vhat: bool,
+    oscillation: Option<(f64, f64)>,
     omega: Option<f64>,
     tolerance: f64,
     static_force: f64,
     mu0: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let (v, a) = velocity(v, a, vhat).map_err(to_py)?;
+    let c = history_conditions(v, a, vhat, oscillation).map_err(to_py)?;
     let t = time.as_array().to_vec();
     let mut f = tangential.as_array().to_vec();
     let mut n: Option<Vec<f64>> = normal.map(|x| x.as_array().to_vec());
@@ -473,7 +487,7 @@ fn validate_history<'py>(
     let time = if is_tau { TimeAxis::Phase(&t) } else { TimeAxis::Time { t: &t, omega } };
     let data = HistoryData { time, tangential: &f, normal: n.as_deref() };
     let shape = &shape.inner;
-    let result = py.detach(|| compare_history(shape, v, a, &data, tolerance)).map_err(to_py)?;
+    let result = py.detach(|| compare_history(shape, &c, &data, tolerance)).map_err(to_py)?;
     pythonize::pythonize(py, &result).map_err(serialise_err)
 }
 

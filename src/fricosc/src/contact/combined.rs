@@ -52,7 +52,7 @@ impl Oscillation {
         Oscillation { vhat: c.as_vhat(), amp: c.amp(), tangential_amp: t, phase }
     }
 
-    fn drive(&self) -> Drive {
+    pub(crate) fn drive(&self) -> Drive {
         Drive { vhat: self.vhat, t: self.tangential_amp, phase: self.phase }
     }
 }
@@ -166,7 +166,7 @@ fn signature_name(sig: &(crate::stop::Touch, Vec<StopKind>)) -> String {
 }
 
 /// The flat punch's spring for a report: phases and events.
-fn report(s: &StopSpring, b: Bound) -> SpringReport {
+pub(crate) fn report(s: &StopSpring, b: Bound) -> SpringReport {
     use std::f64::consts::TAU;
     let mut events = vec![];
     if s.contact == crate::stop::Touch::Jumping {

@@ -160,7 +160,8 @@ pub fn point(vbar: f64, amp: f64) -> Result<FlatPoint> {
             let f = match e.kind {
                 EventKind::Contact | EventKind::LossOfContact => 0.0,
                 EventKind::Stick => start,
-                EventKind::Slip => start + amp * vbar * length,
+                // The seed's spring never slips backward.
+                EventKind::Slip | EventKind::BackwardSlip => start + amp * vbar * length,
             };
             Event { normal: f, tangential: f, ..e }
         })

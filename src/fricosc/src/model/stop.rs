@@ -66,7 +66,7 @@ pub struct Drive {
 
 impl Drive {
     /// `X(b) - X(a)`, without cancellation for `b` near `a`.
-    fn dx(&self, a: f64, b: f64) -> f64 {
+    pub(crate) fn dx(&self, a: f64, b: f64) -> f64 {
         let l = b - a;
         self.vhat * l + 2.0 * self.t * (0.5 * (a + b) + self.phase).cos() * (0.5 * l).sin()
     }
@@ -413,7 +413,8 @@ fn phase_integrals(b: Bound, d: Drive, kind: StopKind, (a, e): (f64, f64), f0: f
     }
 }
 
-/// The force at phase `tau` (any real; reduced to the period) in the steady state.
+/// The force at phase `tau` (any real; reduced to the period) in the steady
+/// state, within its bound `[-B, B]`.
 #[must_use]
 pub fn force_at(s: &StopSpring, b: Bound, d: Drive, tau: f64) -> f64 {
     if s.contact == Touch::Never {
@@ -426,7 +427,11 @@ pub fn force_at(s: &StopSpring, b: Bound, d: Drive, tau: f64) -> f64 {
             return match p.kind {
                 StopKind::Forward => b.at(t).max(0.0),
                 StopKind::Backward => -b.at(t).max(0.0),
-                StopKind::Stick => p.force + d.dx(p.start, t),
+                // |f| <= B: at the stick's end the two differ by rounding only.
+                StopKind::Stick => {
+                    let bound = b.at(t).max(0.0);
+                    (p.force + d.dx(p.start, t)).clamp(-bound, bound)
+                }
             };
         }
     }

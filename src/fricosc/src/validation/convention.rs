@@ -17,8 +17,11 @@ use std::f64::consts::PI;
 /// The largest error a discretisation is credited with.
 pub(crate) const LARGE_ERROR: f64 = 0.05;
 
-/// A convention: how it reads a row's `[vhat, amp, T, phase]`, and its name.
-type Convention = (fn([f64; 4]) -> [f64; 4], &'static str);
+/// How a convention reads a row's `[vhat, amp, T, phase]`.
+type Read = fn([f64; 4]) -> [f64; 4];
+
+/// A convention: how it reads a row, and its name.
+type Convention = (Read, &'static str);
 
 const CONVENTIONS: [Convention; 5] = [
     (|[v, a, t, p]| [v, a, t, -p], "the phase's sign reversed (-phase)"),
@@ -53,30 +56,54 @@ pub(crate) fn oscillation_finding(shape: &Shape, rows: &[[f64; 5]], errors: &[f6
         return None;
     }
     let worst = errors.iter().fold(0.0f64, |m, e| m.max(e.abs()));
-    let bar = (0.1 * worst).min(LARGE_ERROR);
-    let fit = |(read, _): &Convention| -> Option<f64> {
+    let fit = |read: Read| -> Option<f64> {
         let errs = crate::numerics::par::map(rows, |r| {
-            let [v, a, t, p] = read([r[0], r[1], r[2], r[3]]);
-            let c = Conditions::vhat(v, a).and_then(|c| c.with_tangential(t, p))?;
+            let c = conditions(read, [r[0], r[1], r[2], r[3]])?;
             shape.ratio(&c).map(|x| (r[4] - x.mu_ratio).abs())
         });
         let mut m = 0.0f64;
         for e in errs {
             m = m.max(e.ok()?);
         }
-        (m <= bar).then_some(m)
+        Some(m)
     };
-    let best = CONVENTIONS.iter().filter_map(|c| fit(c).map(|m| (m, c.1))).min_by(|x, y| x.0.total_cmp(&y.0));
-    match best {
-        Some((m, name)) => finding(
-            FindingKind::Convention,
-            bad,
-            &format!(
-                "your values match the exact ones read with {name}: largest error {m:.1e} there, {worst:.3} \
+    named(&bad, worst, &fit).or_else(|| large_errors(bad, worst))
+}
+
+/// A history under the conditions `c` with errors of order one at the samples
+/// `bad` (largest `worst`): the convention that explains them, given the
+/// largest error of the history against the exact one under other conditions.
+pub(crate) fn history_finding(
+    c: &Conditions,
+    bad: &[usize],
+    worst: f64,
+    error_under: &dyn Fn(&Conditions) -> Option<f64>,
+) -> Option<Finding> {
+    let (t, phase) = c.tangential()?;
+    let point = [c.as_vhat(), c.amp(), t, phase];
+    named(bad, worst, &|read| error_under(&conditions(read, point).ok()?))
+}
+
+/// `[vhat, amp, T, phase]` read with a convention, as conditions.
+fn conditions(read: Read, point: [f64; 4]) -> crate::error::Result<Conditions> {
+    let [v, a, t, p] = read(point);
+    Conditions::vhat(v, a)?.with_tangential(t, p)
+}
+
+/// The finding naming the convention with the smallest largest error
+/// (`error(read)`), if that is within a tenth of `worst` and within
+/// [`LARGE_ERROR`].
+fn named(bad: &[usize], worst: f64, error: &dyn Fn(Read) -> Option<f64>) -> Option<Finding> {
+    let bar = (0.1 * worst).min(LARGE_ERROR);
+    let fits = CONVENTIONS.iter().filter_map(|&(read, name)| error(read).filter(|&m| m <= bar).map(|m| (m, name)));
+    let (m, name) = fits.min_by(|x, y| x.0.total_cmp(&y.0))?;
+    finding(
+        FindingKind::Convention,
+        bad.to_vec(),
+        &format!(
+            "your values match the exact ones read with {name}: largest error {m:.1e} there, {worst:.3} \
                  as read; fricosc's body moves as vhat tau + T sin(tau + phase) while the indentation is \
                  u0 - du cos tau (phase in radians, T the amplitude)"
-            ),
         ),
-        None => large_errors(bad, worst),
-    }
+    )
 }

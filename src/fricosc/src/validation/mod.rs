@@ -26,6 +26,7 @@
 //! finding means something is wrong: the command line exits 1 on any.
 
 mod convention;
+mod findings;
 mod history;
 mod oscillation;
 mod series;
@@ -45,7 +46,6 @@ pub(crate) use text::findings_text;
 
 use crate::contact::regime::ContactRegime;
 use crate::error::{Error, Result};
-use crate::model::spring::Spring;
 use crate::shape::Shape;
 use crate::stepper::Stepping;
 
@@ -250,6 +250,9 @@ pub enum FindingKind {
     /// A history's tangential force where the normal force is 0: the spring
     /// not relaxed out of contact.
     ForceOutOfContact,
+    /// Rows where the contact opens (`du/u0 > 1`) far off while the others agree:
+    /// contact loss not modelled as the seed does.
+    ContactLoss,
     /// Errors of order one that no other finding explains.
     LargeErrors,
     /// Errors of order one that vanish under another convention (the phase's
@@ -443,7 +446,7 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result
         .iter()
         .filter_map(|&a| Summary::of(out.iter().filter(|r| r.amp == a)).map(|summary| AmpSummary { amp: a, summary }))
         .collect();
-    let findings = findings(shape, &out, &amps, at_rest, tolerance)?;
+    let findings = findings::findings(shape, &out, &amps, at_rest, tolerance)?;
     let peer = check.peer.map(|st| PeerSummary {
         steps_per_period: st.steps_per_period,
         springs: if shape.is_flat() { 1 } else { st.springs },
@@ -478,206 +481,4 @@ pub(crate) fn finding(kind: FindingKind, rows: Vec<usize>, hint: &str) -> Option
         rows: rows.into_iter().take(FINDING_ROWS).collect(),
         hint: hint.into(),
     })
-}
-
-/// A vbar below which errors are compared with those at the same amplitude
-/// above it (and below 1) for [`FindingKind::NotSteady`].
-const LOW_VBAR: f64 = 0.3;
-/// How much larger the errors at low vbar must be than elsewhere to be a finding.
-const NOT_STEADY_FACTOR: f64 = 10.0;
-
-fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64) -> Result<Vec<Finding>> {
-    let pick = |f: &dyn Fn(&Row) -> bool| rows.iter().filter(|r| f(r)).map(|r| r.row).collect::<Vec<_>>();
-    let mut out = vec![];
-    out.extend(finding(
-        FindingKind::AboveOne,
-        pick(&|r| r.mu_ratio > 1.0 + tol),
-        "values above 1: check the normalisation by the mean normal force (mu0 times the period-averaged \
-         normal force, not the static one or its value at one instant)",
-    ));
-    out.extend(finding(
-        FindingKind::Negative,
-        pick(&|r| r.mu_ratio < -tol),
-        "negative values: check the sign of the tangential force and that every average spans whole periods",
-    ));
-    out.extend(finding(
-        FindingKind::NotOneAboveCritical,
-        pick(&|r| r.vbar >= 1.0 && (r.mu_ratio - 1.0).abs() > tol),
-        "at vbar >= 1 no spring sticks and mu/mu0 = 1 exactly: check the velocity's normalisation (eq. 3: \
-         vbar = (kx/kz) v0 / (mu0 omega du)) and the Coulomb bound",
-    ));
-    out.extend(finding(
-        FindingKind::NotMonotone,
-        decreasing(rows, amps, tol),
-        "mu/mu0 decreases with velocity at these rows (the exact curve never does): check convergence there \
-         (time step, number of periods, springs)",
-    ));
-    out.extend(finding(
-        FindingKind::NotSteady,
-        not_steady(rows, amps, tol),
-        "errors grow towards vbar -> 0, ten times those at the same amplitude's higher velocities: the \
-         steady state takes longer to reach at low velocity (the tangential force builds up at a rate \
-         proportional to vbar); run more periods and average the last one",
-    ));
-    at_rest_findings(shape, rows, amps, at_rest, tol, &mut out)?;
-    out.extend(finding(
-        FindingKind::WorseThanPeer,
-        worse_than_peer(rows, amps, tol),
-        "errors ten times (or more) those of fricosc's stepping peer (the seed's scheme) at the same resolution: \
-         not the discretisation but a bug (see the peer_error column)",
-    ));
-    if out.is_empty() {
-        let worst = rows.iter().fold(0.0f64, |m, r| m.max(r.error.abs()));
-        out.extend(convention::large_errors(convention::large(rows.iter().map(|r| (r.row, r.error))), worst));
-    }
-    Ok(out)
-}
-
-/// Rows where `mu` decreases in `vbar` at one amplitude (rows sorted by vbar;
-/// vbar = 0 rows follow the chosen convention, so a relaxed 0 is not a decrease).
-fn decreasing(rows: &[Row], amps: &[f64], tol: f64) -> Vec<usize> {
-    let mut decreasing = vec![];
-    for &a in amps {
-        let mut line: Vec<&Row> = rows.iter().filter(|r| r.amp == a).collect();
-        line.sort_by(|x, y| x.vbar.total_cmp(&y.vbar));
-        for w in line.windows(2) {
-            if w[1].vbar > w[0].vbar && w[1].mu_ratio < w[0].mu_ratio - tol {
-                decreasing.push(w[1].row);
-            }
-        }
-    }
-    decreasing.sort_unstable();
-    decreasing
-}
-
-/// Rows whose errors are far larger at low velocity than at the same
-/// amplitude's higher velocities (below the critical one): the transient.
-/// Compared within one amplitude, so that a scheme's larger error in the
-/// jumping regimes is not mistaken for it. Only where some spring never loses
-/// contact (`amp < 1`): a spring that loses contact enters it relaxed every
-/// period, so its steady state is reached in the first; and with a peer, only
-/// rows ten times worse than the peer at the same resolution (a peer as far
-/// off has the same discretisation, not a transient).
-fn not_steady(rows: &[Row], amps: &[f64], tol: f64) -> Vec<usize> {
-    let mut slow = vec![];
-    for &a in amps.iter().filter(|&&a| a < 1.0) {
-        let rest: Vec<f64> =
-            rows.iter().filter(|r| r.amp == a && r.vbar >= LOW_VBAR && r.vbar < 1.0).map(|r| r.error.abs()).collect();
-        if rest.is_empty() {
-            continue;
-        }
-        let bar = (NOT_STEADY_FACTOR * rest.iter().sum::<f64>() / rest.len() as f64).max(tol);
-        slow.extend(
-            rows.iter()
-                .filter(|r| r.amp == a && r.vbar > 0.0 && r.vbar < LOW_VBAR && r.error.abs() > bar)
-                .filter(|r| r.peer_error.is_none_or(|p| r.error.abs() > 10.0 * p.abs()))
-                .map(|r| r.row),
-        );
-    }
-    slow.sort_unstable();
-    slow
-}
-
-/// The findings about `vbar = 0` rows: those that match the other convention
-/// rather than the chosen one, and those off by as much as the sliding rows.
-fn at_rest_findings(
-    shape: &Shape,
-    rows: &[Row],
-    amps: &[f64],
-    at_rest: AtRest,
-    tol: f64,
-    out: &mut Vec<Finding>,
-) -> Result<()> {
-    let other = match at_rest {
-        AtRest::Sliding => AtRest::Relaxed,
-        AtRest::Relaxed => AtRest::Sliding,
-    };
-    let mut mismatched = vec![];
-    for r in rows.iter().filter(|r| r.vbar == 0.0) {
-        let alt = exact_value(shape, 0.0, r.amp, other)?;
-        if r.error.abs() > tol && (r.mu_ratio - alt).abs() <= tol.max(1e-12) {
-            mismatched.push(r.row);
-        }
-    }
-    let hint = match other {
-        AtRest::Relaxed => {
-            "at vbar = 0 these values equal 0, what a stepper started from relaxed springs gives at exactly zero \
-             velocity (not the limit vbar -> 0+ of a sliding contact): compare with --at-rest relaxed"
-        }
-        AtRest::Sliding => {
-            "at vbar = 0 these values equal the limit vbar -> 0+ of a sliding contact (mu_static), not the relaxed \
-             start: compare with --at-rest sliding"
-        }
-    };
-    out.extend(finding(FindingKind::AtRestConvention, mismatched.clone(), hint));
-    out.extend(finding(
-        FindingKind::StaticLimit,
-        static_limit(rows, amps, at_rest, tol, &mismatched),
-        "at vbar = 0 nothing sticks or slips (mu/mu0 is the closed form N_min/N_mean: 1 - amp for the flat \
-         punch up to amp = 1), so a stepper gets these rows far more accurately than the rows at sliding \
-         velocities, yet they are as far off: the error is in what every row shares: the averaging (over whole \
-         periods?), the normalisation by the mean normal force, or the start",
-    ));
-    Ok(())
-}
-
-/// A `vbar = 0` row's error is a finding when it exceeds this share of the
-/// median error of the same amplitude's rows at `0 < vbar < 1`: a stepper's
-/// error there is the spring grid's alone (none for the flat punch), which
-/// enters every other row too, on top of the stick-slip's.
-const STATIC_SHARE: f64 = 0.25;
-
-/// [`FindingKind::StaticLimit`]: `vbar = 0` rows (compared with the sliding
-/// limit, and not already explained by the other convention) off by more than
-/// [`STATIC_SHARE`] of the median error at the same amplitude's sliding
-/// velocities below 1 (or by more than the tolerance, where there are none).
-fn static_limit(rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64, explained: &[usize]) -> Vec<usize> {
-    if at_rest != AtRest::Sliding {
-        return vec![];
-    }
-    let mut out = vec![];
-    for &a in amps {
-        let mut moving: Vec<f64> =
-            rows.iter().filter(|r| r.amp == a && r.vbar > 0.0 && r.vbar < 1.0).map(|r| r.error.abs()).collect();
-        moving.sort_by(f64::total_cmp);
-        let bar = match moving.len() {
-            0 => tol,
-            n => (STATIC_SHARE * moving[n / 2]).max(tol),
-        };
-        out.extend(
-            rows.iter()
-                .filter(|r| r.amp == a && r.vbar == 0.0 && r.error.abs() > bar && !explained.contains(&r.row))
-                .map(|r| r.row),
-        );
-    }
-    out.sort_unstable();
-    out
-}
-
-/// How many times the peer's error a row's error may be before it is a
-/// [`FindingKind::WorseThanPeer`] finding.
-const PEER_FACTOR: f64 = 10.0;
-
-/// [`FindingKind::WorseThanPeer`]: rows whose error exceeds [`PEER_FACTOR`]
-/// times the peer's there or (where the peer happens to be near a zero of its
-/// error) the median of the peer's errors at the same amplitude.
-fn worse_than_peer(rows: &[Row], amps: &[f64], tol: f64) -> Vec<usize> {
-    let mut out = vec![];
-    for &a in amps {
-        let mut peer: Vec<f64> =
-            rows.iter().filter(|r| r.amp == a).filter_map(|r| r.peer_error.map(f64::abs)).collect();
-        if peer.is_empty() {
-            continue;
-        }
-        peer.sort_by(f64::total_cmp);
-        let median = peer[peer.len() / 2];
-        out.extend(
-            rows.iter()
-                .filter(|r| r.amp == a)
-                .filter(|r| r.peer_error.is_some_and(|p| r.error.abs() > (PEER_FACTOR * p.abs().max(median)).max(tol)))
-                .map(|r| r.row),
-        );
-    }
-    out.sort_unstable();
-    out
 }

@@ -32,6 +32,7 @@ impl FindingKind {
             FindingKind::BelowMinusOne => "below_minus_one",
             FindingKind::NegativeNormal => "negative_normal",
             FindingKind::ForceOutOfContact => "force_out_of_contact",
+            FindingKind::ContactLoss => "contact_loss",
             FindingKind::LargeErrors => "large_errors",
             FindingKind::Convention => "convention",
         }
@@ -177,10 +178,9 @@ impl HistoryValidation {
         let mut s = wrap(
             "",
             &format!(
-                "fricosc validate --history: {} at vbar {}, amp {}; {}, {} in the last (read as {format}).",
+                "fricosc validate --history: {} at {}; {}, {} in the last (read as {format}).",
                 v.shape,
-                v.vbar,
-                v.amp,
+                v.point,
                 count(v.periods, "whole period"),
                 count(v.samples, "sample")
             ),

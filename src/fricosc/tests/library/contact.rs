@@ -121,7 +121,7 @@ fn histories_work_for_every_contact() {
         [(table_of_squares(), &hertz), (Shape::parse("flat-tip:0.5").unwrap(), &worn)];
     for (shape, force) in cases {
         let opts = HistoryOptions::default().with_samples(16).with_springs(2000).with_spring_at(vec![0.5]);
-        let h = history(&shape, 0.3, 1.4, &opts).unwrap();
+        let h = history(&shape, &fricosc::Conditions::vbar(0.3, 1.4).unwrap(), &opts).unwrap();
         let top = h.samples.iter().map(|s| s.normal).fold(0.0, f64::max);
         for s in &h.samples {
             let depth = 1.0 - 1.4 * s.tau.cos();

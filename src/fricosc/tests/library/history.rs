@@ -11,7 +11,12 @@ fn mean(samples: &[(f64, f64)]) -> f64 {
 #[test]
 fn flat_history_is_bounded_by_the_normal_force_and_averages_to_mu() {
     for (v, a) in [(0.3, 0.5), (0.3, 1.5), (0.95, 2.0), (1.2, 0.7)] {
-        let h = history(&Shape::flat(), v, a, &HistoryOptions::default().with_samples(20000).with_springs(1)).unwrap();
+        let h = history(
+            &Shape::flat(),
+            &fricosc::Conditions::vbar(v, a).unwrap(),
+            &HistoryOptions::default().with_samples(20000).with_springs(1),
+        )
+        .unwrap();
         for s in &h.samples {
             assert!(s.tangential <= s.normal + 1e-15 && s.tangential >= 0.0);
         }
@@ -28,8 +33,7 @@ fn mdr_history_averages_to_the_exact_mu() {
     let (v, a) = (0.3, 0.4);
     let h = history(
         &Shape::parabolic(),
-        v,
-        a,
+        &fricosc::Conditions::vbar(v, a).unwrap(),
         &HistoryOptions::default().with_samples(2000).with_springs(4000).with_spring_at(vec![0.0, 1.1]),
     )
     .unwrap();
@@ -47,7 +51,7 @@ fn mdr_history_averages_to_the_exact_mu() {
 
 /// The limit a request exceeds, with its count and limit, or `None`.
 fn too_large(shape: &Shape, amp: f64, o: &HistoryOptions) -> Option<(u128, u128)> {
-    match history(shape, 0.3, amp, o) {
+    match history(shape, &fricosc::Conditions::vbar(0.3, amp).unwrap(), o) {
         Err(fricosc::Error::TooLarge { count, limit, .. }) => Some((count, limit)),
         Err(e) => panic!("{e}"),
         Ok(_) => None,
@@ -94,7 +98,12 @@ fn every_history_limit_is_enforced_with_its_count() {
 #[test]
 fn history_samples_and_the_curved_amplitudes_refused() {
     use fricosc::history::MIN_CURVED_AMP;
-    let h = history(&Shape::flat(), 0.3, 0.5, &HistoryOptions::default().with_periods(2).with_samples(8)).unwrap();
+    let h = history(
+        &Shape::flat(),
+        &fricosc::Conditions::vbar(0.3, 0.5).unwrap(),
+        &HistoryOptions::default().with_periods(2).with_samples(8),
+    )
+    .unwrap();
     let uniform: Vec<f64> = h.samples.iter().filter(|s| s.event.is_none()).map(|s| s.tau).collect();
     assert_eq!(uniform.len(), 9);
     for (j, tau) in uniform.iter().enumerate() {
@@ -109,7 +118,10 @@ fn history_samples_and_the_curved_amplitudes_refused() {
     }
     assert!(h.samples.iter().all(|s| (0.0..=4.0 * std::f64::consts::PI).contains(&s.tau)));
     let refused = |shape: &Shape, amp: f64| {
-        matches!(history(shape, 0.3, amp, &HistoryOptions::default()), Err(fricosc::Error::InvalidParameter { .. }))
+        matches!(
+            history(shape, &fricosc::Conditions::vbar(0.3, amp).unwrap(), &HistoryOptions::default()),
+            Err(fricosc::Error::InvalidParameter { .. })
+        )
     };
     let para = Shape::parabolic();
     assert!(refused(&para, MIN_CURVED_AMP / 2.0));
@@ -117,7 +129,12 @@ fn history_samples_and_the_curved_amplitudes_refused() {
     assert!(!refused(&para, 0.0));
     // Without oscillation every spring slides: the tangential force is the normal one,
     // for the contact and for a chosen spring.
-    let still = history(&para, 0.3, 0.0, &HistoryOptions::default().with_samples(4).with_spring_at(vec![0.3])).unwrap();
+    let still = history(
+        &para,
+        &fricosc::Conditions::vbar(0.3, 0.0).unwrap(),
+        &HistoryOptions::default().with_samples(4).with_spring_at(vec![0.3]),
+    )
+    .unwrap();
     for s in &still.samples {
         assert_eq!(s.tangential, s.normal);
         assert_eq!(s.springs[0][1], s.springs[0][0]);
@@ -140,7 +157,7 @@ fn chosen_springs_are_flat_punches_at_their_level() {
     let (vbar, amp) = (0.3, 0.6);
     let xs = vec![0.0, 0.5, 0.8];
     let o = HistoryOptions::default().with_samples(20_000).with_springs(50).with_spring_at(xs.clone());
-    let h = history(&Shape::parabolic(), vbar, amp, &o).unwrap();
+    let h = history(&Shape::parabolic(), &fricosc::Conditions::vbar(vbar, amp).unwrap(), &o).unwrap();
     assert_eq!(h.spring_positions, xs);
     for (k, &x) in xs.iter().enumerate() {
         let level = 1.0 - x * x;
@@ -171,7 +188,7 @@ fn the_stepped_history_converges_to_the_exact_mu() {
     let (vbar, amp) = (0.3, 0.5);
     let mu = crate::common::at::eval(&Shape::flat(), vbar, amp).unwrap().ratio.mu_ratio;
     let err = |steps: usize| {
-        let h = stepped_history(vbar, amp, 3, steps).unwrap();
+        let h = stepped_history(&fricosc::Conditions::vbar(vbar, amp).unwrap(), 3, steps).unwrap();
         assert_eq!(h.samples.len(), 3 * steps + 1);
         for (k, s) in h.samples.iter().enumerate() {
             let tau = std::f64::consts::TAU * k as f64 / steps as f64;
@@ -187,13 +204,69 @@ fn the_stepped_history_converges_to_the_exact_mu() {
     let (e1, e2) = (err(2000), err(4000));
     // Observed 1.9e-8 and -5.2e-9: the scheme and the trapezoid rule converge together.
     assert!(e1.abs() < 2e-7 && e2.abs() < 5e-8 && e2.abs() < e1.abs(), "{e1:e} then {e2:e}");
-    assert!(stepped_history(vbar, 0.0, 3, 100).is_err());
-    assert!(stepped_history(vbar, amp, 0, 100).is_err());
-    assert!(stepped_history(vbar, amp, 3, 0).is_err());
-    match stepped_history(vbar, amp, 10, MAX_SAMPLES / 10) {
+    assert!(stepped_history(&fricosc::Conditions::vbar(vbar, 0.0).unwrap(), 3, 100).is_err());
+    assert!(stepped_history(&fricosc::Conditions::vbar(vbar, amp).unwrap(), 0, 100).is_err());
+    assert!(stepped_history(&fricosc::Conditions::vbar(vbar, amp).unwrap(), 3, 0).is_err());
+    match stepped_history(&fricosc::Conditions::vbar(vbar, amp).unwrap(), 10, MAX_SAMPLES / 10) {
         Err(fricosc::Error::TooLarge { count, limit, .. }) => {
             assert_eq!((count, limit), (MAX_SAMPLES as u128 + 1, MAX_SAMPLES as u128))
         }
         other => panic!("{other:?}"),
     }
+}
+
+/// Under a tangential oscillation the flat punch's history is the stop
+/// operator's phases: against the same problem stepped (`stepped_history`: the
+/// force moved with the body and held in `[-B, B]` step by step, no phases and
+/// no events) within its first-order error, and its trapezoidal mean over the
+/// samples (events included) is the solver's `mu` from its closed-form means.
+/// Points: both slip directions (a), contact loss (b), no normal oscillation
+/// (c), the body always forward (d).
+#[test]
+fn a_combined_history_agrees_with_time_stepping_and_with_mu() {
+    use fricosc::history::stepped_history;
+    let steps = 100_000;
+    // Each with ten times the stepper's largest difference at 10^5 steps a
+    // period (5.9e-10, 2.0e-5 with contact loss, 2.2e-11, 6.2e-15).
+    let cases = [
+        (0.2, 0.5, 1.5, 1.3, 6e-9),
+        (0.6, 2.0, 3.0, 1.0, 2e-4),
+        (0.05, 0.0, 1.0, 0.0, 2e-10),
+        (2.0, 1.5, 0.5, 4.0, 6e-14),
+    ];
+    for (v, a, t, p, bar) in cases {
+        let c = fricosc::Conditions::vhat(v, a).unwrap().with_tangential(t, p).unwrap();
+        let h = history(&Shape::flat(), &c, &HistoryOptions::default().with_samples(steps)).unwrap();
+        let tn: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.tangential)).collect();
+        let nn: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.normal)).collect();
+        let mu = Shape::flat().ratio(&c).unwrap().mu_ratio;
+        assert!((mean(&tn) / mean(&nn) - mu).abs() < 1e-9, "{c:?}: {} vs {mu}", mean(&tn) / mean(&nn));
+        let stepped = stepped_history(&c, 3, steps).unwrap();
+        let uniform: Vec<f64> = h.samples.iter().filter(|s| s.event.is_none()).map(|s| s.tangential).collect();
+        let last = &stepped.samples[2 * steps..];
+        let worst = uniform.iter().zip(last).map(|(x, s)| (x - s.tangential).abs()).fold(0.0, f64::max);
+        assert!(worst < bar, "{c:?}: {worst}");
+        // The force never leaves its bound, and slips both ways where T is large enough.
+        assert!(h.samples.iter().all(|s| s.tangential.abs() <= s.normal));
+    }
+}
+
+/// A curved contact under a tangential oscillation: the grid's trapezoidal
+/// mean is the solver's `mu` (second order in the springs' spacing and the samples).
+#[test]
+fn a_curved_combined_history_averages_to_the_exact_mu() {
+    let c = fricosc::Conditions::vhat(0.2, 0.5).unwrap().with_tangential(1.5, 1.3).unwrap();
+    let o = HistoryOptions::default().with_samples(2000).with_springs(4000).with_spring_at(vec![0.0]);
+    let h = history(&Shape::parabolic(), &c, &o).unwrap();
+    let t: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.tangential)).collect();
+    let n: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.normal)).collect();
+    let mu = Shape::parabolic().ratio(&c).unwrap().mu_ratio;
+    // 5.3e-9 off at 4000 springs and 2000 samples.
+    assert!((mean(&t) / mean(&n) - mu).abs() < 5e-8, "{} vs {mu}", mean(&t) / mean(&n));
+    // The centre spring is a flat punch of the same drive.
+    let centre: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.springs[0][1])).collect();
+    let centre_n: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.springs[0][0])).collect();
+    let flat = Shape::flat().ratio(&c).unwrap().mu_ratio;
+    assert!((mean(&centre) / mean(&centre_n) - flat).abs() < 1e-6);
+    assert_eq!(h.point.tangential_amp, Some(1.5));
 }

@@ -261,22 +261,25 @@ def point(
     if amp is None:
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
-    if phase is not None and tangential_amp is None:
-        raise TypeError("phase needs tangential_amp")
-    if tangential_amp is not None:
-        if not is_vhat:
-            raise TypeError("tangential_amp needs the velocity as vhat= (eq. 15), not vbar")
+    tangential = _tangential(tangential_amp, phase, is_vhat)
+    if tangential is not None:
         osc: Dict[str, Any] = _fricosc.point_oscillation(
-            _core(shape),
-            _scalar(v, "vhat"),
-            _scalar(amp, "amp"),
-            _scalar(tangential_amp, "tangential_amp"),
-            _scalar(0.0 if phase is None else phase, "phase"),
-            _tol(tol),
+            _core(shape), _scalar(v, "vhat"), _scalar(amp, "amp"), tangential[0], tangential[1], _tol(tol)
         )
         return osc
     result: Dict[str, Any] = _fricosc.point(_core(shape), _scalar(v, "vbar"), _scalar(amp, "amp"), is_vhat, _tol(tol))
     return result
+
+
+def _tangential(tangential_amp: Optional[float], phase: Optional[float], is_vhat: bool) -> Optional[Tuple[float, float]]:
+    """``(T, phase)`` of a single point's tangential oscillation, if given; it needs ``vhat``."""
+    if phase is not None and tangential_amp is None:
+        raise TypeError("phase needs tangential_amp")
+    if tangential_amp is None:
+        return None
+    if not is_vhat:
+        raise TypeError("tangential_amp needs the velocity as vhat= (eq. 15), not vbar")
+    return _scalar(tangential_amp, "tangential_amp"), _scalar(0.0 if phase is None else phase, "phase")
 
 
 def _scalar(x: Any, what: str) -> float:
@@ -294,6 +297,8 @@ def history(
     amp: Optional[float] = None,
     *,
     vhat: Optional[float] = None,
+    tangential_amp: Optional[float] = None,
+    phase: Optional[float] = None,
     periods: int = 1,
     samples: int = 400,
     springs: int = 4000,
@@ -307,10 +312,18 @@ def history(
     arrays), ``event`` (a list: the event at each sample or None), ``units``,
     and for ``spring_at`` positions ``x/x_c`` the chosen springs' forces
     ``springs`` (shape ``(samples, len(spring_at), 2)``: normal, tangential).
+    With ``tangential_amp`` (and ``phase``, ``vhat``) as ``fricosc history
+    --tangential-amp``: the body also oscillates in the sliding direction, and
+    the force slips both ways (events ``slip`` and ``backward_slip``).
+
+    >>> h = history("flat", vhat=0.2, amp=0.5, tangential_amp=1.5, phase=1.3, samples=100)
+    >>> [e for e in h["event"] if e]
+    ['stick', 'backward_slip', 'stick', 'slip']
     """
     if amp is None:
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
+    tangential = _tangential(tangential_amp, phase, is_vhat)
     for name, value in (("periods", periods), ("samples", samples), ("springs", springs)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
             raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
@@ -322,6 +335,7 @@ def history(
         _scalar(v, "vbar"),
         _scalar(amp, "amp"),
         is_vhat,
+        tangential,
         int(periods),
         int(samples),
         int(springs),
@@ -483,6 +497,8 @@ def validate_history(
     *,
     shape: ShapeLike = "flat",
     vhat: Optional[float] = None,
+    tangential_amp: Optional[float] = None,
+    phase: Optional[float] = None,
     omega: Optional[float] = None,
     static_force: Optional[float] = None,
     mu0: Optional[float] = None,
@@ -503,7 +519,10 @@ def validate_history(
     and optionally ``normal``: forces in units of ``mu0 F0`` and ``F0``, where
     ``F0`` is the normal force at depth u0 without oscillation (``kz u0`` for
     the flat punch, Hertz's ``(4/3) E* R^1/2 u0^3/2`` for the paraboloid), or
-    in yours with ``static_force`` (``F0`` in them) and ``mu0``.
+    in yours with ``static_force`` (``F0`` in them) and ``mu0``. A history
+    under a tangential oscillation is compared at ``vhat``, ``amp``,
+    ``tangential_amp`` and ``phase``, as ``fricosc validate --history
+    --tangential-amp``.
 
     >>> h = history("flat", 0.3, 1.5, periods=2, samples=2000)
     >>> r = validate_history({"tau": h["tau"], "tangential": h["tangential"]}, 0.3, 1.5)
@@ -517,6 +536,7 @@ def validate_history(
     if amp is None:
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
+    oscillation = _tangential(tangential_amp, phase, is_vhat)
     if ("tau" in columns) == ("t" in columns):
         raise ValueError("give exactly one time column: 'tau' (phase) or 't' (time)")
     if "tangential" not in columns:
@@ -532,6 +552,7 @@ def validate_history(
         _scalar(v, "vbar"),
         _scalar(amp, "amp"),
         is_vhat,
+        oscillation,
         None if omega is None else float(omega),
         float(tolerance),
         1.0 if static_force is None else _scalar(static_force, "static_force"),

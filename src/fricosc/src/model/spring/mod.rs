@@ -129,8 +129,11 @@ pub enum EventKind {
     LossOfContact,
     /// Slip (or contact) turns into stick.
     Stick,
-    /// Stick turns into slip.
+    /// Stick turns into slip (in the sliding direction: `f = +B`).
     Slip,
+    /// Stick turns into slip against the sliding direction (`f = -B`; only
+    /// under a tangential oscillation).
+    BackwardSlip,
 }
 
 impl EventKind {
@@ -142,6 +145,7 @@ impl EventKind {
             EventKind::LossOfContact => "loss_of_contact",
             EventKind::Stick => "stick",
             EventKind::Slip => "slip",
+            EventKind::BackwardSlip => "backward_slip",
         }
     }
 }

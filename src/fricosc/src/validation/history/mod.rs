@@ -17,11 +17,13 @@
 use super::*;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
+mod exact;
 mod series;
 mod signal;
 
 pub use series::{EventSeries, HistorySeries};
 
+use exact::Exact;
 use signal::{drift, origin_offset, period_from_normal, periodic_mean, SNAP_SAMPLES};
 
 /// The time column of a history.
@@ -138,10 +140,9 @@ pub struct HistoryValidation {
     pub shape: String,
     /// Units of the forces compared.
     pub units: String,
-    /// Dimensionless velocity.
-    pub vbar: f64,
-    /// Amplitude.
-    pub amp: f64,
+    /// The point: velocity and oscillation.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub point: crate::history::HistoryPoint,
     /// The file's phase against the seed's.
     pub time_origin: TimeOrigin,
     /// Whole periods in the history (counted from its span, one sample's
@@ -259,50 +260,6 @@ fn file_phases(data: &HistoryData) -> Result<(Vec<f64>, Option<f64>)> {
     }
 }
 
-/// The exact forces of `shape` at `(vbar, amp)` in units of `F0` (module docs):
-/// the flat punch's in closed form; a curved contact's normal force from the
-/// static force at each depth, its tangential force summed over
-/// [`HISTORY_REFERENCE_SPRINGS`] springs.
-struct Exact {
-    flat: bool,
-    amp: f64,
-    spring: Spring,
-    springs: Vec<Spring>,
-    /// `2 amp dz / F(1)`: a spring's force (units `mu0 E* du` a unit length) to `mu0 F0`.
-    scale: f64,
-    f0: f64,
-}
-
-impl Exact {
-    fn new(shape: &Shape, vbar: f64, amp: f64) -> Result<Exact> {
-        let flat = shape.is_flat();
-        let spring = crate::flat::spring(vbar, amp, crate::model::spring::Precision::Events);
-        if flat {
-            return Ok(Exact { flat, amp, spring, springs: vec![], scale: 1.0, f0: 1.0 });
-        }
-        let f0 = shape.contact().static_force(1.0);
-        let (dz, s_of) = crate::contact::grid(shape.contact(), amp, HISTORY_REFERENCE_SPRINGS)?;
-        let springs = (0..HISTORY_REFERENCE_SPRINGS).map(|i| Spring::with_events(s_of(i), vbar)).collect();
-        Ok(Exact { flat, amp, spring, springs, scale: 2.0 * amp * dz / f0, f0 })
-    }
-
-    fn normal(&self, shape: &Shape, tau: f64) -> f64 {
-        if self.flat {
-            crate::flat::forces_at(&self.spring, self.amp, tau).0
-        } else {
-            shape.contact().static_force(1.0 - self.amp * tau.cos()) / self.f0
-        }
-    }
-
-    fn tangential(&self, tau: f64) -> f64 {
-        if self.flat {
-            crate::flat::forces_at(&self.spring, self.amp, tau).1
-        } else {
-            self.scale * self.springs.iter().map(|s| crate::contact::history::spring_force(s, tau)).sum::<f64>()
-        }
-    }
-}
-
 /// The whole periods a history spans (with one sample's spacing of slack: a
 /// run of two periods recorded from one step past a period's start spans
 /// `2 pi - h`), and its last period: start, end and the samples in it.
@@ -370,13 +327,11 @@ fn find_origin(last_taus: &[f64], user_normal: Option<&[f64]>, found_omega: Opti
 /// period; the solver's errors for bad `(vbar, amp)`.
 pub fn compare_history(
     shape: &Shape,
-    vbar: f64,
-    amp: f64,
+    c: &crate::Conditions,
     data: &HistoryData,
     tolerance: f64,
 ) -> Result<HistoryValidation> {
-    crate::error::check_nonneg("vbar", vbar)?;
-    crate::error::check_nonneg("amp", amp)?;
+    let amp = c.amp();
     crate::error::check_nonneg("tolerance", tolerance)?;
     if amp == 0.0 {
         return Err(Error::param("amp", amp, "a history without oscillation has no period"));
@@ -393,7 +348,7 @@ pub fn compare_history(
     let user_normal: Option<Vec<f64>> = data.normal.map(|x| last.iter().map(|&i| x[i]).collect());
     let time_origin = find_origin(&last_taus, user_normal.as_deref(), found_omega, spacing);
     let offset = time_origin.offset;
-    let exact = Exact::new(shape, vbar, amp)?;
+    let exact = Exact::new(shape, c)?;
     let seed_tau = |i: usize| taus[i] + offset;
     let exact_t: Vec<f64> = crate::numerics::par::map(&last, |&i| exact.tangential(seed_tau(i)));
     let exact_n: Vec<f64> = last.iter().map(|&i| exact.normal(shape, seed_tau(i))).collect();
@@ -429,13 +384,13 @@ pub fn compare_history(
         (Some(d), Some(p)) if d < p && d > 0.0 => Some(((bar / d).ln() / (d / p).ln()).ceil()),
         _ => None,
     };
-    let exact_events = if exact.flat { crate::flat::point(vbar, amp)?.events } else { vec![] };
+    let exact_events = exact.events(c)?;
     // Out of contact (the bound at 0 or below) a force is the spring's not
     // relaxing, not a missed slip; a normal force below 0 is contact loss not modelled.
     let loose = |i: usize| bound(i) <= bar && data.tangential[i].abs() > bar;
     let out_of_contact: Vec<usize> = last.iter().copied().filter(|&i| loose(i)).collect();
     let above: Vec<usize> =
-        last.iter().copied().filter(|&i| !loose(i) && data.tangential[i] > bound(i) + bar).collect();
+        last.iter().copied().filter(|&i| !loose(i) && data.tangential[i].abs() > bound(i) + bar).collect();
     let lowest = data.normal.map(|x| last.iter().map(|&i| x[i]).fold(f64::INFINITY, f64::min));
     let contact = Contact { out_of_contact, negative: lowest.filter(|&m| m < -bar) };
     let events = if exact.flat {
@@ -447,8 +402,7 @@ pub fn compare_history(
     let mut v = HistoryValidation {
         shape: shape.name().to_string(),
         units,
-        vbar,
-        amp,
+        point: crate::history::HistoryPoint::of(c),
         time_origin,
         periods,
         samples: last.len(),
@@ -467,6 +421,23 @@ pub fn compare_history(
         last_period: samples,
     };
     v.findings = history_findings(&v, &above, &contact, tolerance);
+    // Errors of order one: beyond LARGE_ERROR of the peak and beyond what a
+    // step's timing could explain (four of the file's largest steps in force).
+    let step = last.windows(2).map(|w| (data.tangential[w[1]] - data.tangential[w[0]]).abs()).fold(0.0, f64::max);
+    let large = (super::convention::LARGE_ERROR * peak).max(4.0 * step);
+    let bad: Vec<usize> =
+        v.last_period.iter().filter(|s| s.error.is_nan() || s.error.abs() > large).map(|s| s.index).collect();
+    if !bad.is_empty() {
+        let under = |other: &crate::Conditions| -> Option<f64> {
+            let e = Exact::new(shape, other).ok()?;
+            Some(last.iter().map(|&i| (data.tangential[i] - e.tangential(seed_tau(i))).abs()).fold(0.0, f64::max))
+        };
+        match super::convention::history_finding(c, &bad, v.max_abs_error, &under) {
+            Some(f) => v.findings.push(f),
+            None if v.findings.is_empty() => v.findings.extend(super::convention::large_errors(bad, v.max_abs_error)),
+            None => {}
+        }
+    }
     Ok(v)
 }
 
@@ -483,12 +454,15 @@ fn find_events(
     exact_events: &[crate::model::spring::Event],
 ) -> Vec<FoundEvent> {
     use crate::model::spring::EventKind;
+    // 0 no contact, 1 on the bound, 2 below it, 3 on the bound's negative (a backward slip).
     let state = |i: usize| {
         let b = bound(i);
         if b <= bar {
             0
         } else if (tangential[i] - b).abs() <= bar {
             1
+        } else if (tangential[i] + b).abs() <= bar {
+            3
         } else {
             2
         }
@@ -500,9 +474,11 @@ fn find_events(
         let kinds: &[EventKind] = match (prev, s) {
             (Some(0), 1) => &[EventKind::Contact],
             (Some(0), 2) => &[EventKind::Contact, EventKind::Stick],
-            (Some(1 | 2), 0) => &[EventKind::LossOfContact],
-            (Some(1), 2) => &[EventKind::Stick],
-            (Some(2), 1) => &[EventKind::Slip],
+            (Some(0), 3) => &[EventKind::Contact, EventKind::BackwardSlip],
+            (Some(1..=3), 0) => &[EventKind::LossOfContact],
+            (Some(1 | 3), 2) => &[EventKind::Stick],
+            (Some(2 | 3), 1) => &[EventKind::Slip],
+            (Some(1 | 2), 3) => &[EventKind::BackwardSlip],
             _ => &[],
         };
         // The event lies between the two samples: their midpoint.

@@ -12,6 +12,11 @@
 //! from the phase switches); chosen springs are reported per unit length of the
 //! foundation, in units of `E* u0` (and `mu0 E* u0`).
 
+mod combined;
+
+pub(crate) use combined::event_kind;
+
+use crate::conditions::Conditions;
 use crate::error::{check_nonneg, Error, Result};
 use crate::model::spring::{EventKind, Spring};
 use crate::shape::Shape;
@@ -43,10 +48,9 @@ pub struct Sample {
 pub struct History {
     /// Shape name.
     pub shape: String,
-    /// Dimensionless velocity.
-    pub vbar: f64,
-    /// Amplitude.
-    pub amp: f64,
+    /// The point: velocity and oscillation.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub point: HistoryPoint,
     /// Units of the forces.
     pub units: String,
     /// Positions `x/x_c` of the chosen springs (MDR shapes).
@@ -54,6 +58,60 @@ pub struct History {
     pub spring_positions: Vec<f64>,
     /// The samples, in phase order.
     pub samples: Vec<Sample>,
+}
+
+/// The point a history is taken at: `vbar` and `amp`, or under a tangential
+/// oscillation `vhat`, `amp`, `T` and the phase.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct HistoryPoint {
+    /// Dimensionless velocity `vbar` (eq. 3); `None` under a tangential
+    /// oscillation, whose velocity is `vhat`.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub vbar: Option<f64>,
+    /// `vhat` (eq. 15) under a tangential oscillation.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub vhat: Option<f64>,
+    /// Amplitude `du/u0`.
+    pub amp: f64,
+    /// The tangential amplitude `T = dx/l`, if the body oscillates in the sliding direction.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub tangential_amp: Option<f64>,
+    /// Its phase against the normal oscillation (radians in `[0, 2 pi)`).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub phase: Option<f64>,
+}
+
+impl HistoryPoint {
+    /// The point of the conditions `c`.
+    #[must_use]
+    pub fn of(c: &Conditions) -> HistoryPoint {
+        let tangential = c.tangential();
+        HistoryPoint {
+            vbar: if tangential.is_some() { None } else { c.as_vbar().ok() },
+            vhat: tangential.map(|_| c.as_vhat()),
+            amp: c.amp(),
+            tangential_amp: tangential.map(|x| x.0),
+            phase: tangential.map(|x| x.1),
+        }
+    }
+}
+
+impl std::fmt::Display for HistoryPoint {
+    /// `vbar 0.3, du/u0 0.5`, or `vhat 0.3, du/u0 0.5, T 1.5, phase 1.3`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match (self.vbar, self.vhat, self.tangential_amp, self.phase) {
+            (_, Some(v), Some(t), Some(p)) => write!(f, "vhat {v}, du/u0 {}, T {t}, phase {p}", self.amp),
+            (Some(v), ..) => write!(f, "vbar {v}, du/u0 {}", self.amp),
+            _ => write!(f, "du/u0 {}", self.amp),
+        }
+    }
+}
+
+impl History {
+    fn new(shape: &Shape, c: &Conditions, units: String, spring_positions: Vec<f64>, samples: Vec<Sample>) -> History {
+        History { shape: shape.name().into(), point: HistoryPoint::of(c), units, spring_positions, samples }
+    }
 }
 
 /// Tangential force of one spring at phase `tau`, units `mu0 kz du`, from its phases.
@@ -88,7 +146,7 @@ pub const MAX_SAMPLES: usize = 10_000_000;
 /// ```
 /// use fricosc::history::{history, HistoryOptions};
 /// let opts = HistoryOptions::default().with_samples(100);
-/// let h = history(&fricosc::Shape::flat(), 0.3, 0.5, &opts)?;
+/// let h = history(&fricosc::Shape::flat(), &fricosc::Conditions::vbar(0.3, 0.5)?, &opts)?;
 /// assert_eq!(h.samples.len(), 101 + 2); // 100 intervals, and the stick and slip events
 /// # Ok::<(), fricosc::Error>(())
 /// ```
@@ -192,24 +250,46 @@ pub(crate) const UNITS: &str = "normal: F0 (the static normal force at depth u0)
 /// springs' coordinate `s = (1 - G)/amp` overflows.
 pub const MIN_CURVED_AMP: f64 = 1e-300;
 
-/// The force history of `shape` at `(vbar, amp)`: `opts.periods` periods with
-/// `opts.samples` uniform samples, plus the flat punch's events.
+/// The force history of `shape` under the conditions `c` (their tolerance is
+/// not used): `opts.periods` periods with `opts.samples` uniform samples, plus
+/// the flat punch's events. Under a tangential oscillation every spring is the
+/// stop operator's ([`crate::spring::solve`]), with `vhat`, `T` and the phase of `c`.
+///
+/// ```
+/// use fricosc::history::{history, HistoryOptions};
+/// use fricosc::{Conditions, Shape};
+/// let c = Conditions::vhat(0.2, 0.5)?.with_tangential(1.5, 1.3)?;
+/// let h = history(&Shape::flat(), &c, &HistoryOptions::default().with_samples(100))?;
+/// // The force slips both ways: it reaches -B where the body moves back.
+/// assert!(h.samples.iter().any(|s| s.tangential < 0.0 && s.tangential == -s.normal));
+/// # Ok::<(), fricosc::Error>(())
+/// ```
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] for bad inputs, [`Error::TooLarge`] beyond the
+/// [`Error::InvalidParameter`] for bad inputs (`vhat` without a tangential
+/// oscillation at `amp = 0`), [`Error::TooLarge`] beyond the
 /// limits ([`MAX_SAMPLES`] rows, [`MAX_SPRINGS`] springs, [`MAX_SPRING_WORK`]).
-pub fn history(shape: &Shape, vbar: f64, amp: f64, opts: &HistoryOptions) -> Result<History> {
+pub fn history(shape: &Shape, c: &Conditions, opts: &HistoryOptions) -> Result<History> {
+    let amp = c.amp();
+    let vbar = if c.tangential().is_some() { 0.0 } else { c.as_vbar()? };
     check_history(shape, vbar, amp, opts)?;
     let total = TAU * opts.periods as f64;
     let samples = opts.samples;
     let mut taus: Vec<(f64, Option<EventKind>)> =
         (0..=samples).map(|j| (total * j as f64 / samples as f64, None)).collect();
-    let (units, out) = if shape.is_flat() {
-        (UNITS.to_string(), flat_samples(vbar, amp, opts.periods, taus))
-    } else {
-        taus.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let units = format!("{UNITS}; chosen springs per unit length: E* u0 and mu0 E* u0");
-        (units, foundation_samples(shape.contact(), vbar, amp, opts, &taus)?)
+    let (units, out) = match (shape.is_flat(), c.tangential().is_some()) {
+        (true, false) => (UNITS.to_string(), flat_samples(vbar, amp, opts.periods, taus)),
+        (true, true) => (UNITS.to_string(), combined::flat_samples(c, opts.periods, taus)),
+        (false, tangential) => {
+            taus.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let units = format!("{UNITS}; chosen springs per unit length: E* u0 and mu0 E* u0");
+            let out = if tangential {
+                combined::foundation_samples(shape.contact(), c, opts, &taus)?
+            } else {
+                foundation_samples(shape.contact(), vbar, amp, opts, &taus)?
+            };
+            (units, out)
+        }
     };
     // Every force is a number: never NaN or inf as an answer.
     let finite = |s: &Sample| {
@@ -225,7 +305,7 @@ pub fn history(shape: &Shape, vbar: f64, amp: f64, opts: &HistoryOptions) -> Res
             &format!("the forces of {} overflow double precision at tau = {:?}", shape.name(), s.tau),
         ));
     }
-    Ok(History { shape: shape.name().into(), vbar, amp, units, spring_positions: opts.spring_at.clone(), samples: out })
+    Ok(History::new(shape, c, units, opts.spring_at.clone(), out))
 }
 
 /// The flat punch's samples at `taus`, with its events added.
@@ -291,18 +371,18 @@ fn foundation_samples(
         .collect())
 }
 
-/// The flat punch's history by the seed's time-stepping scheme (the peer),
-/// every step of `periods` periods at `steps_per_period` steps, in the units of
-/// [`history`]: the same columns as the exact history, so that a stepper's
-/// output can be checked against it (`validate --history`). The spring starts
-/// sliding (on its bound), as the peer does.
+/// The flat punch's history by time stepping (the peer): the seed's scheme,
+/// or under a tangential oscillation the stop operator's
+/// ([`crate::stepper`]), every step of `periods` periods at `steps_per_period`
+/// steps, in the units of [`history`]: the same columns as the exact history,
+/// so that a stepper's output can be checked against it (`validate
+/// --history`). The spring starts sliding (on its bound), as the peer does.
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] for bad inputs or `amp = 0`, [`Error::TooLarge`]
-/// beyond [`MAX_SAMPLES`] rows.
-pub fn stepped_history(vbar: f64, amp: f64, periods: usize, steps_per_period: usize) -> Result<History> {
-    check_nonneg("vbar", vbar)?;
-    check_nonneg("amp", amp)?;
+/// [`Error::InvalidParameter`] for bad inputs or no oscillation at all,
+/// [`Error::TooLarge`] beyond [`MAX_SAMPLES`] rows.
+pub fn stepped_history(c: &Conditions, periods: usize, steps_per_period: usize) -> Result<History> {
+    let amp = c.amp();
     for (name, v) in [("periods", periods), ("steps-per-period", steps_per_period)] {
         if v == 0 {
             return Err(Error::param(name, 0.0, "must be >= 1"));
@@ -316,28 +396,28 @@ pub fn stepped_history(vbar: f64, amp: f64, periods: usize, steps_per_period: us
             limit: MAX_SAMPLES as u128,
         });
     }
-    if amp == 0.0 {
-        return Err(Error::param("amp", amp, "a stepped history needs an oscillation (amp > 0)"));
+    if amp == 0.0 && c.tangential().is_none() {
+        return Err(Error::param("amp", amp, "a stepped history needs an oscillation (amp > 0 or a tangential one)"));
     }
-    // The seed's scheme in units of kz u0 (the bound (1 - amp cos tau)_+, the
-    // drive amp vbar h a step), so that no 1/amp overflows at tiny amplitudes.
+    // In units of kz u0 (the bound (1 - amp cos tau)_+, the drive's step
+    // X(tau_k) - X(tau_k-1) in mu0 kz u0), so that no 1/amp overflows at tiny
+    // amplitudes: the seed's drive is amp vbar h a step.
     let h = TAU / steps_per_period as f64;
+    let drive = c.tangential().map(|(t, phase)| crate::stop::Drive { vhat: c.as_vhat(), t, phase });
+    let df = if drive.is_none() { amp * c.as_vbar()? * h } else { 0.0 };
     let mut f = (1.0 - amp).max(0.0);
     let mut samples = Vec::with_capacity(rows as usize);
     for k in 0..rows as usize {
         let tau = h * k as f64;
         let b = (1.0 - amp * tau.cos()).max(0.0);
         if k > 0 {
-            f = crate::stepper::update(f, b, amp * vbar * h);
+            f = match drive {
+                Some(d) => crate::stepper::update_two_way(f, b, d.dx(h * (k - 1) as f64, tau)),
+                None => crate::stepper::update(f, b, df),
+            };
         }
         samples.push(Sample { tau, normal: b, tangential: f, event: None, springs: vec![] });
     }
-    Ok(History {
-        shape: "flat".into(),
-        vbar,
-        amp,
-        units: format!("{UNITS} (time stepping)"),
-        spring_positions: vec![],
-        samples,
-    })
+    let units = format!("{UNITS} (time stepping)");
+    Ok(History::new(&Shape::flat(), c, units, vec![], samples))
 }
