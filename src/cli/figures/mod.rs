@@ -67,6 +67,7 @@ pub struct Figure {
     /// Curves.
     pub curves: Vec<Curve>,
     /// What the curves hold fixed, drawn below the key (e.g. `Δx/l = 1.5`).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub notes: Vec<String>,
 }
 
