@@ -326,18 +326,7 @@ pub fn user_with(
             fricosc::Conditions::vhat(top, a)?.as_vbar()?;
         }
     }
-    let mut xs = xs.to_vec();
-    xs.sort_by(f64::total_cmp);
-    xs.dedup();
-    let (lo, hi) = match (xs.first(), xs.last()) {
-        (Some(&lo), Some(&hi)) if hi > lo => (lo, hi),
-        _ => {
-            return Err(Error::Parse {
-                context: format!("--{what}"),
-                reason: "needs two different velocities or more".into(),
-            })
-        }
-    };
+    let (xs, lo, hi) = span(xs, what, "velocities")?;
     let mut seen = vec![];
     let curves = amps
         .iter()
@@ -375,6 +364,20 @@ pub fn user_with(
         f.notes = vec![format!("Δx/l = {t}"), format!("φ = {p}")];
     }
     Ok(f)
+}
+
+/// The values of a plot's axis (option `--{option}`), sorted without repeats,
+/// and their range: at least two different `what`.
+fn span(xs: &[f64], option: &str, what: &str) -> Result<(Vec<f64>, f64, f64)> {
+    let mut xs = xs.to_vec();
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    match (xs.first(), xs.last()) {
+        (Some(&lo), Some(&hi)) if hi > lo => Ok((xs, lo, hi)),
+        _ => {
+            Err(Error::Parse { context: format!("--{option}"), reason: format!("needs two different {what} or more") })
+        }
+    }
 }
 
 /// The limits of a `plot` (at most [`MAX_CURVES`] amplitudes, each `>= 0`, and

@@ -2,7 +2,7 @@
 //! (`Conditions::with_tangential`), alone and with the normal oscillation.
 
 use super::{approx, figure, grid, Curve, Figure, XAxis};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use fricosc::Shape;
 
 /// The tangential amplitudes of the pure-tangential figures.
@@ -188,15 +188,7 @@ fn regime_map() -> Result<Figure> {
 /// Bad inputs (named), fewer than two phases, the size limits of a plot.
 pub fn against_phase(shape: &Shape, amps: &[f64], vhat: f64, t: f64, phases: &[f64]) -> Result<Figure> {
     super::check_family(amps, phases.len(), "phases")?;
-    let mut xs = phases.to_vec();
-    xs.sort_by(f64::total_cmp);
-    xs.dedup();
-    let (lo, hi) = match (xs.first(), xs.last()) {
-        (Some(&lo), Some(&hi)) if hi > lo => (lo, hi),
-        _ => {
-            return Err(Error::Parse { context: "--phase".into(), reason: "needs two different phases or more".into() })
-        }
-    };
+    let (xs, lo, hi) = super::span(phases, "phase", "phases")?;
     let mut curves = vec![];
     for (i, &a) in amps.iter().enumerate() {
         if amps[..i].contains(&a) {
