@@ -191,6 +191,30 @@ impl TangentialPoint {
     }
 }
 
+/// The system's mass and stiffness for one point (`fricosc::system`).
+#[derive(Args)]
+pub struct SystemPoint {
+    /// The system's tangential stiffness over the contact's, kappa = K/kx (> 0; without it the
+    /// system is stiff, the seed's problem). Flat punch.
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    pub system_stiffness: Option<f64>,
+    /// With --system-stiffness: omega over the contact's natural frequency sqrt(kx/m) (default 0:
+    /// a massless body).
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "system_stiffness")]
+    pub frequency_ratio: Option<f64>,
+    /// With --system-stiffness: the system's damping ratio zeta (default 0).
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "system_stiffness")]
+    pub damping: Option<f64>,
+}
+
+impl SystemPoint {
+    /// The system, if given.
+    pub fn system(&self) -> Result<Option<fricosc::system::System>> {
+        let Some(k) = self.system_stiffness else { return Ok(None) };
+        Ok(Some(fricosc::system::System::new(k, self.frequency_ratio.unwrap_or(0.0), self.damping.unwrap_or(0.0))?))
+    }
+}
+
 /// `--tangential-amp` needs `--vhat`: `vbar = vhat/amp` is not defined without normal oscillation.
 fn vhat_for_tangential(has_vbar: bool, vhat: Option<f64>) -> Result<f64> {
     match (has_vbar, vhat) {

@@ -1,6 +1,6 @@
 //! `fricosc point`: one point with its regime, events and bands (JSON).
 
-use crate::cmd::{io_err, number, Common, TangentialPoint, VelocityPoint};
+use crate::cmd::{io_err, number, Common, SystemPoint, TangentialPoint, VelocityPoint};
 use crate::error::{Error, Result};
 use clap::Args;
 use fricosc::{Conditions, Shape};
@@ -16,16 +16,28 @@ pub struct PointArgs {
     pub amp: f64,
     #[command(flatten)]
     pub tangential: TangentialPoint,
+    #[command(flatten)]
+    pub system: SystemPoint,
 }
 
 pub fn run(a: PointArgs) -> Result<()> {
     let shape = crate::input::parse_shape(&a.common.shape)?;
     let tangential = a.tangential.oscillation(&a.velocity)?;
     let c = a.common.conditions(a.velocity.velocity()?, a.amp, tangential)?;
-    let body = match a.common.method.stepping()? {
-        Some(st) => stepped(&shape, &c, st)?,
-        None => serde_json::to_value(shape.report(&c)?)
-            .map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })?,
+    let body = match (a.common.method.stepping()?, a.system.system()?) {
+        (Some(_), Some(_)) => {
+            return Err(Error::Parse { context: "--system-stiffness".into(), reason: "is solved exactly only".into() })
+        }
+        (None, Some(sys)) if shape.is_flat() => on_system(&c, &sys)?,
+        (None, Some(_)) => {
+            return Err(fricosc::Error::InvalidShape {
+                spec: shape.name().into(),
+                reason: "the system's mass and stiffness are solved for the flat punch".into(),
+            }
+            .into())
+        }
+        (Some(st), None) => stepped(&shape, &c, st)?,
+        (None, None) => to_json(&shape.report(&c)?)?,
     };
     let mut obj = serde_json::Map::new();
     obj.insert("shape".into(), shape.name().into());
@@ -53,4 +65,21 @@ fn stepped(shape: &Shape, c: &Conditions, st: fricosc::stepper::Stepping) -> Res
         m.extend(b);
     }
     Ok(v)
+}
+
+/// The flat punch on a system: the inputs and the attractor's report.
+fn on_system(c: &Conditions, sys: &fricosc::system::System) -> Result<serde_json::Value> {
+    let r = fricosc::system::flat(c, sys)?;
+    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+    let mut v = serde_json::json!({"vhat": c.as_vhat(), "amp": c.amp(), "tangential_amp": t, "phase": phase,
+        "system_stiffness": sys.stiffness, "frequency_ratio": sys.frequency_ratio, "damping": sys.damping});
+    let body = to_json(&r)?;
+    if let (serde_json::Value::Object(m), serde_json::Value::Object(b)) = (&mut v, body) {
+        m.extend(b);
+    }
+    Ok(v)
+}
+
+fn to_json(v: &impl serde::Serialize) -> Result<serde_json::Value> {
+    serde_json::to_value(v).map_err(|e| Error::Internal { what: format!("serialising the output: {e}") })
 }

@@ -394,3 +394,32 @@ fn plot_draws_the_users_curves_and_refuses_bad_requests() {
         assert!(out.stdout.is_empty() && err.contains(message) && err.lines().count() == 1, "{args:?}: {err}");
     }
 }
+
+/// `point` on a system with mass and stiffness: the library's attractor bit
+/// for bit (its period, multipliers and events); a curved shape and the
+/// stepping method are refused, as is a system without stiffness.
+#[test]
+fn point_on_a_system_reports_the_attractor() {
+    let args = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--frequency-ratio", "0.5"];
+    let v = json(&fricosc(&[&args[..], &["--damping", "0.3"]].concat(), None));
+    let sys = fricosc::system::System::new(1.0, 0.5, 0.3).unwrap();
+    let r = fricosc::system::flat(&fricosc::Conditions::vhat(0.3, 0.5).unwrap(), &sys).unwrap();
+    assert_eq!(v["mu_ratio"].as_f64().unwrap(), r.mu_ratio);
+    assert_eq!(v["period"], 1);
+    assert_eq!(v["events"].as_array().unwrap().len(), r.events.len());
+    let zero = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "0"];
+    for run in [
+        [&args[..], &["--shape", "parabolic"]].concat(),
+        [&args[..], &["--method", "stepping"]].concat(),
+        zero.to_vec(),
+    ] {
+        let out = fricosc(&run, None);
+        assert_eq!(out.status.code(), Some(2), "{run:?}");
+        assert!(out.stdout.is_empty());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("flat punch") || err.contains("exactly only") || err.contains("system-stiffness = 0"),
+            "{err}"
+        );
+    }
+}

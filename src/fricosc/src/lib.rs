@@ -65,6 +65,7 @@ mod numerics;
 mod peers;
 pub mod report;
 pub mod scene;
+pub mod system;
 pub mod validation;
 
 pub use conditions::{Conditions, Velocity, DEFAULT_TOL};

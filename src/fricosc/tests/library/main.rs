@@ -23,4 +23,5 @@ mod reference;
 #[allow(clippy::excessive_precision)]
 mod report_fields;
 mod stepper;
+mod system;
 mod table;

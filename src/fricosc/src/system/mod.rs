@@ -1,0 +1,264 @@
+//! Friction on a tribometer with mass and stiffness (Part II of the seed's
+//! series): the flat punch's body, of mass `m`, is pulled by the drive
+//! through a system spring `K` with a dashpot beside it, and holds the
+//! contact spring `kx` (README: the system's mass and stiffness). In the
+//! seed's units (`tau = omega t`, lengths in `l = mu0 kz u0/kx`, forces in
+//! `mu0 kz u0`):
+//!
+//! `Omega^2 x'' = kappa (X_d - x) - 2 zeta sqrt(kappa) Omega (x' - X_d') - f`,
+//!
+//! `kappa = K/kx`, `Omega = omega / sqrt(kx/m)`, `zeta = c / (2 sqrt(K m))`,
+//! `X_d = vhat tau + T sin(tau + phase)`, `f` the stop operator of `x` with
+//! the bound `(1 - amp cos tau)_+`.
+//!
+//! # The answer
+//! From the stated start (the body at the drive's position with its
+//! velocity, the spring relaxed) the period map is iterated until its state
+//! `(x - 2 pi vhat n, x', f)` and phase repeat after `k` periods (to
+//! [`REPEAT`]); that orbit is then refined by Newton on `P^k(s) = s` (the
+//! Jacobian by central differences of the exact map), its stability read
+//! from the eigenvalues of that Jacobian (the Floquet multipliers), and `mu`
+//! is `int f / int B` over its `k` periods. Where nothing repeats within
+//! [`MAX_PERIODS`], the answer is no period: the mean of the last half's
+//! per-period values with its standard error (of batches of 10 periods).
+//!
+//! A massless body (`Omega = 0`) is the stiff problem with the drive scaled
+//! by `kappa/(1 + kappa)` (the springs in series): answered by the stiff
+//! solver exactly.
+
+mod period;
+mod phase;
+
+pub use period::SystemEvent;
+pub use phase::Kind;
+
+use crate::conditions::Conditions;
+use crate::error::{Error, Result};
+use nalgebra::{Matrix3, Vector3};
+use period::Phases;
+use phase::{Params, State, INT_F, V, X, Y0};
+
+/// The system's parameters (module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct System {
+    /// `kappa = K/kx`, the system's over the contact's tangential stiffness (> 0).
+    pub stiffness: f64,
+    /// `Omega`, the excitation over the contact's natural frequency `sqrt(kx/m)`
+    /// (`>= 0`; 0 is a massless body).
+    pub frequency_ratio: f64,
+    /// `zeta`, the system's damping ratio (`>= 0`).
+    pub damping: f64,
+}
+
+impl System {
+    /// A checked system.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] unless `stiffness` is finite and `> 0`, and
+    /// the others finite and `>= 0` (each at most 1e6).
+    pub fn new(stiffness: f64, frequency_ratio: f64, damping: f64) -> Result<System> {
+        for (name, v) in [("system-stiffness", stiffness), ("frequency-ratio", frequency_ratio), ("damping", damping)] {
+            if !(v.is_finite() && (0.0..=1e6).contains(&v)) {
+                return Err(Error::param(name, v, "must be finite, >= 0 and <= 1e6"));
+            }
+        }
+        if stiffness == 0.0 {
+            return Err(Error::param(
+                "system-stiffness",
+                0.0,
+                "must be > 0 (without a system spring nothing drives the body)",
+            ));
+        }
+        Ok(System { stiffness, frequency_ratio, damping })
+    }
+}
+
+/// Two states repeat where they differ by at most this (relative to 1 and the state).
+pub const REPEAT: f64 = 1e-9;
+/// Most periods run from the start before the answer is "no period".
+pub const MAX_PERIODS: usize = 4000;
+/// Most sampling steps run from the start (about two seconds); fewer
+/// periods than [`MAX_PERIODS`] where a period takes many (at least 20).
+pub const MAX_STEPS: f64 = 2e7;
+/// Longest period of an attractor looked for.
+pub const MAX_ORBIT: usize = 8;
+/// Most near-repeats refined by Newton before the search goes on without.
+const NEWTON_ATTEMPTS: usize = 3;
+
+/// The flat punch's steady state on a system.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SystemReport {
+    /// `mu_macro/mu0`: over the attractor's period, or the long-time mean.
+    pub mu_ratio: f64,
+    /// The attractor's period in periods of the drive (`None`: none found
+    /// within [`MAX_PERIODS`]; then `mu_ratio` is a mean).
+    pub period: Option<usize>,
+    /// The standard error of the mean where there is no period.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub standard_error: Option<f64>,
+    /// Periods run from the start before the orbit repeated (or all).
+    pub periods_run: usize,
+    /// The Floquet multipliers `[re, im]` of the orbit (stable: all inside the unit circle).
+    pub multipliers: Vec<[f64; 2]>,
+    /// The events of the orbit's first period.
+    pub events: Vec<SystemEvent>,
+}
+
+/// The reduced state of the period map: `(x, x', f)` at `tau = 0` and the phase.
+type Reduced = (Kind, Vector3<f64>);
+
+fn reduce(p: &Params, kind: Kind, z: &State) -> Reduced {
+    (kind, Vector3::new(z[X], z[V], p.force(kind, z)))
+}
+
+fn expand(p: &Params, (kind, s): &Reduced) -> State {
+    let mut z = p.start();
+    (z[X], z[V]) = (s[0], s[1]);
+    z[Y0] = s[0] - s[2];
+    if *kind != phase::Kind::Stick {
+        z[Y0] = z[X];
+    }
+    z
+}
+
+/// `k` periods of the map from `s`: the state after them and `int f` over them.
+fn map_k(ph: &Phases, s: &Reduced, k: usize) -> (Reduced, f64) {
+    let (mut kind, mut z) = (s.0, expand(&ph.p, s));
+    let mut int_f = 0.0;
+    for _ in 0..k {
+        (kind, z, _) = ph.period(kind, z);
+        int_f += z[INT_F];
+    }
+    (reduce(&ph.p, kind, &z), int_f)
+}
+
+/// The steady state of the flat punch at `c` on the system `sys`.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] for bad inputs.
+pub fn flat(c: &Conditions, sys: &System) -> Result<SystemReport> {
+    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+    let (vhat, amp, kappa) = (c.as_vhat(), c.amp(), sys.stiffness);
+    if sys.frequency_ratio == 0.0 {
+        let scale = kappa / (1.0 + kappa);
+        let stiff = Conditions::vhat(vhat * scale, amp)?.with_tangential(t * scale, phase)?.with_tol(c.tol())?;
+        let r = crate::shape::Shape::flat().ratio(&stiff)?;
+        return Ok(SystemReport {
+            mu_ratio: r.mu_ratio,
+            period: Some(1),
+            standard_error: None,
+            periods_run: 0,
+            multipliers: vec![],
+            events: vec![],
+        });
+    }
+    let p = Params { kappa, omega: sys.frequency_ratio, zeta: sys.damping, vhat, amp, t, phase };
+    let ph = Phases::new(p);
+    let start = p.start();
+    let mut s = reduce(&p, if amp < 1.0 { Kind::Stick } else { Kind::Free }, &start);
+    let mut seen: Vec<Reduced> = vec![s];
+    let mut per_period = vec![];
+    let mut attempts = 0;
+    // At most MAX_STEPS sampling steps in all (a fast, undamped body takes many a period).
+    let periods = MAX_PERIODS.min((MAX_STEPS / ph.steps_per_period()).max(20.0) as usize);
+    for n in 1..=periods {
+        let (next, int_f) = map_k(&ph, &s, 1);
+        per_period.push(int_f);
+        s = next;
+        let back = |k: usize| &seen[seen.len() - k];
+        // A near-repeat that Newton cannot close is not an orbit (a slow
+        // quasi-periodic drift): look on, at most NEWTON_ATTEMPTS times.
+        if let Some(k) =
+            (1..=MAX_ORBIT.min(n)).find(|&k| close(back(k), &s, REPEAT)).filter(|_| attempts < NEWTON_ATTEMPTS)
+        {
+            attempts += 1;
+            if let Some(r) = orbit(&ph, s, k, n) {
+                return Ok(r);
+            }
+        }
+        seen.push(s);
+    }
+    let mean_b = crate::flat::mean_normal(amp) * std::f64::consts::TAU;
+    let tail: Vec<f64> = per_period[periods / 2..].iter().map(|x| x / mean_b).collect();
+    let (mean, error) = batch_mean(&tail, 10);
+    Ok(SystemReport {
+        mu_ratio: mean,
+        period: None,
+        standard_error: Some(error),
+        periods_run: periods,
+        multipliers: vec![],
+        events: vec![],
+    })
+}
+
+/// Whether two states are the same phase and within `tol` (relative to 1 and the state).
+fn close(a: &Reduced, b: &Reduced, tol: f64) -> bool {
+    a.0 == b.0 && (a.1 - b.1).iter().zip(b.1.iter()).all(|(d, x)| d.abs() <= tol * (1.0 + x.abs()))
+}
+
+/// How closely Newton's orbit must close (the same measure as [`REPEAT`]).
+const CLOSED: f64 = 1e-10;
+
+/// The mean of `xs` and its standard error from batches of `size`.
+fn batch_mean(xs: &[f64], size: usize) -> (f64, f64) {
+    let batches: Vec<f64> = xs.chunks_exact(size).map(|c| c.iter().sum::<f64>() / size as f64).collect();
+    let n = batches.len() as f64;
+    let mean = batches.iter().sum::<f64>() / n;
+    let var = batches.iter().map(|b| (b - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
+    (mean, (var / n).sqrt())
+}
+
+/// The period-`k` orbit through (near) `s`, refined by Newton, with its
+/// multipliers, `mu` and events; `None` if Newton does not close it to 1e-10.
+fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<SystemReport> {
+    let residual = |s: &Reduced| map_k(ph, s, k).0 .1 - s.1;
+    let mut jac = Matrix3::identity();
+    for _ in 0..12 {
+        jac = jacobian(ph, &s, k);
+        let r = residual(&s);
+        let Some(step) = (jac - Matrix3::identity()).lu().solve(&(-r)) else { break };
+        s.1 += step;
+        if step.iter().zip(s.1.iter()).all(|(d, x)| d.abs() <= 4.0 * f64::EPSILON * (1.0 + x.abs())) {
+            break;
+        }
+    }
+    let (end, int_f) = map_k(ph, &s, k);
+    let closes = |a: &Reduced, b: &Reduced| close(a, b, CLOSED);
+    if !closes(&end, &s) {
+        return None;
+    }
+    // The least period: an orbit of period d also closes after k = m d.
+    if let Some(d) = (1..k).find(|&d| k.is_multiple_of(d) && closes(&map_k(ph, &s, d).0, &s)) {
+        return orbit(ph, s, d, run);
+    }
+    // nalgebra's Schur iteration, capped (it may not converge on a Jacobian
+    // taken across a change of the sequence of phases).
+    let schur = jac.iter().all(|x| x.is_finite()).then(|| jac.try_schur(f64::EPSILON, 10_000)).flatten();
+    let multipliers = schur.map_or(vec![], |s| s.complex_eigenvalues().iter().map(|l| [l.re, l.im]).collect());
+    let events = ph.period(s.0, expand(&ph.p, &s)).2;
+    let mean_b = crate::flat::mean_normal(ph.p.amp) * std::f64::consts::TAU * k as f64;
+    Some(SystemReport {
+        mu_ratio: int_f / mean_b,
+        period: Some(k),
+        standard_error: None,
+        periods_run: run,
+        multipliers,
+        events,
+    })
+}
+
+/// The Jacobian of `P^k` at `s` by central differences (steps `1e-6 (1 + |s_i|)`).
+fn jacobian(ph: &Phases, s: &Reduced, k: usize) -> Matrix3<f64> {
+    let mut j = Matrix3::zeros();
+    for i in 0..3 {
+        let h = 1e-6 * (1.0 + s.1[i].abs());
+        let (mut a, mut b) = (*s, *s);
+        a.1[i] += h;
+        b.1[i] -= h;
+        let d = (map_k(ph, &a, k).0 .1 - map_k(ph, &b, k).0 .1) / (2.0 * h);
+        j.set_column(i, &d);
+    }
+    j
+}

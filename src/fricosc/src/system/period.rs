@@ -1,0 +1,146 @@
+//! One period of the flat punch on a system: the phases from `tau = 0` to
+//! `2 pi`, each advanced in closed form ([`super::phase`]), every event the
+//! first sign change of its function. Functions are sampled at steps of at
+//! most a quarter of the fastest time scale of the phase (the drive's
+//! `2 pi / 256`, the inverse of the body's largest rate `|lambda|`), so a
+//! step holds at most one extremum of each; a sign change is bracketed by
+//! its step, and a minimum that dips below 0 between two positive samples
+//! (a grazing event) is found from the derivative's sign change. Contact is
+//! lost and regained at the closed-form zeros of `B`.
+
+use super::phase::{advance, Generator, Kind, Params, State, COS, INT_F, SIN, TAU, X, Y0};
+use crate::numerics::root::bracketed;
+use std::f64::consts::TAU as TWO_PI;
+
+/// A transition inside a period.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SystemEvent {
+    /// The phase that starts.
+    pub kind: Kind,
+    /// Where, in `[0, 2 pi)`.
+    pub tau: f64,
+    /// The contact force there (units `mu0 kz u0`).
+    pub force: f64,
+}
+
+/// The generators of the four kinds of phase and their sampling steps.
+pub(crate) struct Phases {
+    pub(crate) p: Params,
+    gens: [Generator; 4],
+    steps: [(f64, Generator); 4],
+}
+
+fn index(kind: Kind) -> usize {
+    match kind {
+        Kind::Stick => 0,
+        Kind::Forward => 1,
+        Kind::Backward => 2,
+        Kind::Free => 3,
+    }
+}
+
+impl Phases {
+    /// Sampling steps a period takes at most (the finest kind's).
+    pub(crate) fn steps_per_period(&self) -> f64 {
+        self.steps.iter().map(|(h, _)| TWO_PI / h).fold(0.0, f64::max)
+    }
+
+    pub(crate) fn new(p: Params) -> Phases {
+        let kinds = [Kind::Stick, Kind::Forward, Kind::Backward, Kind::Free];
+        let gens = kinds.map(|k| p.generator(k));
+        let steps = kinds.map(|k| {
+            let a = gens[index(k)];
+            // The body's rates: roots of Omega^2 r^2 + damp r + k = 0.
+            let (c, k2) = (-a[(1, 1)], -a[(1, 0)]);
+            let fastest = 0.5 * (c + (c * c + 4.0 * k2.abs()).sqrt());
+            let h = (TWO_PI / 256.0).min(0.25 / fastest.max(1e-300));
+            (h, (a * h).exp())
+        });
+        Phases { p, gens, steps }
+    }
+
+    /// The first event of `kind` within `h` of `z` (inputs: the start of a
+    /// step, the step's end state): offset, the kind that follows.
+    fn event_in(&self, kind: Kind, z: &State, h: f64, end: &State) -> Option<(f64, Kind)> {
+        let a = &self.gens[index(kind)];
+        let mut first: Option<(f64, Kind)> = None;
+        for (w, next) in self.p.events(kind) {
+            let g = |d: f64| (w * advance(a, z, d))[0];
+            let slope = |d: f64| (w * a * advance(a, z, d))[0];
+            let (g0, g1) = ((w * z)[0], (w * end)[0]);
+            let root = if g0 >= 0.0 && g1 < 0.0 {
+                Some(bracketed(g, 0.0, h, 4.0 * f64::EPSILON).x)
+            } else if g0 > 0.0 && g1 >= 0.0 && (w * a * z)[0] < 0.0 && (w * a * end)[0] > 0.0 {
+                // A minimum inside the step: an event if it dips below 0.
+                let m = bracketed(slope, 0.0, h, 4.0 * f64::EPSILON).x;
+                (g(m) < 0.0).then(|| bracketed(g, 0.0, m, 4.0 * f64::EPSILON).x)
+            } else {
+                None
+            };
+            if let Some(d) = root {
+                if first.is_none_or(|f| d < f.0) {
+                    first = Some((d, next));
+                }
+            }
+        }
+        first
+    }
+
+    /// One period from `tau = 0` in phase `kind` (the state's `tau` 0):
+    /// the kind at `2 pi`, the state there shifted back by a period of the
+    /// drive (`tau` 0, positions less `2 pi vhat`; `int f` over the period
+    /// kept), and the events.
+    pub(crate) fn period(&self, mut kind: Kind, mut z: State) -> (Kind, State, Vec<SystemEvent>) {
+        let contact = (self.p.amp > 1.0).then(|| {
+            let a = (1.0 / self.p.amp).acos();
+            (a, TWO_PI - a)
+        });
+        let mut events = vec![];
+        z[INT_F] = 0.0;
+        let mut tau = 0.0;
+        while tau < TWO_PI {
+            let (step, e) = &self.steps[index(kind)];
+            let rest = TWO_PI - tau;
+            let mut h = step.min(rest);
+            let mut stop = None;
+            if let Some((gain, loss)) = contact {
+                for (when, what) in [(gain, true), (loss, false)] {
+                    if tau < when && when <= tau + h {
+                        (h, stop) = (when - tau, Some(what));
+                    }
+                }
+            }
+            let a = &self.gens[index(kind)];
+            let end = if h == *step { e * z } else { advance(a, &z, h) };
+            if let Some((d, next)) = self.event_in(kind, &z, h, &end) {
+                z = advance(a, &z, d);
+                tau += d;
+                if next == Kind::Stick {
+                    z[Y0] = z[X] - self.p.force(kind, &z);
+                }
+                events.push(SystemEvent { kind: next, tau, force: self.p.force(kind, &z) });
+                kind = next;
+                continue;
+            }
+            (z, tau) = (end, if h == rest { TWO_PI } else { tau + h });
+            match stop {
+                Some(false) => {
+                    kind = Kind::Free;
+                    events.push(SystemEvent { kind, tau, force: 0.0 });
+                }
+                Some(true) => {
+                    kind = self.p.on_contact(&z);
+                    z[Y0] = z[X];
+                    events.push(SystemEvent { kind, tau, force: 0.0 });
+                }
+                None => {}
+            }
+        }
+        let shift = TWO_PI * self.p.vhat;
+        z[X] -= shift;
+        z[Y0] -= shift;
+        (z[TAU], z[COS], z[SIN]) = (0.0, 1.0, 0.0);
+        (kind, z, events)
+    }
+}

@@ -1,0 +1,167 @@
+//! One phase of the flat punch on a system with mass and stiffness, in
+//! closed form: the augmented state `z = (x, x', int f, y0, 1, tau, cos tau,
+//! sin tau)` obeys `z' = A z` with `A` constant within a phase, so
+//! `z(tau0 + h) = exp(A h) z(tau0)` (nalgebra's Pade matrix exponential,
+//! to a few ulps of its entries). The body's equation
+//!
+//! `Omega^2 x'' = kappa (X_d - x) - 2 zeta sqrt(kappa) Omega (x' - X_d') - f`,
+//!
+//! `X_d = vhat tau + T sin(tau + phase)`, is linear in `z` in every phase:
+//! stick `f = x - y0`, slip `f = +-B = +-(1 - amp cos tau)`, out of contact
+//! `f = 0`; so is `(int f)' = f`.
+
+use nalgebra::{SMatrix, SVector};
+
+/// The augmented state.
+pub(crate) type State = SVector<f64, 8>;
+/// Its generator in one phase.
+pub(crate) type Generator = SMatrix<f64, 8, 8>;
+
+/// Components of [`State`].
+pub(crate) const X: usize = 0;
+pub(crate) const V: usize = 1;
+pub(crate) const INT_F: usize = 2;
+pub(crate) const Y0: usize = 3;
+const ONE: usize = 4;
+pub(crate) const TAU: usize = 5;
+pub(crate) const COS: usize = 6;
+pub(crate) const SIN: usize = 7;
+
+/// What the contact spring does in a phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum Kind {
+    /// The contact point holds (`|f| < B`).
+    Stick,
+    /// It slips forward (`f = B`).
+    Forward,
+    /// It slips backward (`f = -B`).
+    Backward,
+    /// Out of contact (`B = 0`, the spring relaxed).
+    Free,
+}
+
+/// The parameters of the body and the drive (module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Params {
+    pub(crate) kappa: f64,
+    pub(crate) omega: f64,
+    pub(crate) zeta: f64,
+    pub(crate) vhat: f64,
+    pub(crate) amp: f64,
+    pub(crate) t: f64,
+    pub(crate) phase: f64,
+}
+
+impl Params {
+    /// `A` of a phase of kind `kind`.
+    pub(crate) fn generator(&self, kind: Kind) -> Generator {
+        let (kappa, om2) = (self.kappa, self.omega * self.omega);
+        let damp = 2.0 * self.zeta * kappa.sqrt() * self.omega;
+        let (sp, cp) = self.phase.sin_cos();
+        let mut a = Generator::zeros();
+        a[(X, V)] = 1.0;
+        // Omega^2 x'' = kappa X_d + damp X_d' - damp x' - k x (+ y0; -+ B).
+        let mut row = [0.0; 8];
+        row[X] = -(if kind == Kind::Stick { kappa + 1.0 } else { kappa });
+        row[V] = -damp;
+        row[ONE] = damp * self.vhat;
+        row[TAU] = kappa * self.vhat;
+        row[COS] = self.t * (kappa * sp + damp * cp);
+        row[SIN] = self.t * (kappa * cp - damp * sp);
+        match kind {
+            Kind::Stick => row[Y0] = 1.0,
+            Kind::Forward => {
+                row[ONE] -= 1.0;
+                row[COS] += self.amp;
+            }
+            Kind::Backward => {
+                row[ONE] += 1.0;
+                row[COS] -= self.amp;
+            }
+            Kind::Free => {}
+        }
+        for (j, r) in row.iter().enumerate() {
+            a[(V, j)] = r / om2;
+        }
+        // (int f)' = f.
+        match kind {
+            Kind::Stick => (a[(INT_F, X)], a[(INT_F, Y0)]) = (1.0, -1.0),
+            Kind::Forward => (a[(INT_F, ONE)], a[(INT_F, COS)]) = (1.0, -self.amp),
+            Kind::Backward => (a[(INT_F, ONE)], a[(INT_F, COS)]) = (-1.0, self.amp),
+            Kind::Free => {}
+        }
+        a[(TAU, ONE)] = 1.0;
+        a[(COS, SIN)] = -1.0;
+        a[(SIN, COS)] = 1.0;
+        a
+    }
+
+    /// The bound `1 - amp cos tau` (unclipped) of the state `z`.
+    pub(crate) fn bound(&self, z: &State) -> f64 {
+        1.0 - self.amp * z[COS]
+    }
+
+    /// The contact force in a phase of kind `kind`.
+    pub(crate) fn force(&self, kind: Kind, z: &State) -> f64 {
+        match kind {
+            Kind::Stick => z[X] - z[Y0],
+            Kind::Forward => self.bound(z),
+            Kind::Backward => -self.bound(z),
+            Kind::Free => 0.0,
+        }
+    }
+
+    /// The event functions of a phase as rows `w` (the function is `w z`,
+    /// positive inside the phase) with the kind that follows where it falls
+    /// through 0: a stick ends where `f` reaches `+-B`, a slip where the
+    /// contact point stops (`x' -+ B' = 0`).
+    pub(crate) fn events(&self, kind: Kind) -> Vec<(SMatrix<f64, 1, 8>, Kind)> {
+        let mut to_forward = SMatrix::<f64, 1, 8>::zeros();
+        let mut to_backward = SMatrix::<f64, 1, 8>::zeros();
+        match kind {
+            Kind::Stick => {
+                // B - f = 1 - amp cos - x + y0; f + B = x - y0 + 1 - amp cos.
+                (to_forward[ONE], to_forward[COS], to_forward[X], to_forward[Y0]) = (1.0, -self.amp, -1.0, 1.0);
+                (to_backward[ONE], to_backward[COS], to_backward[X], to_backward[Y0]) = (1.0, -self.amp, 1.0, -1.0);
+                vec![(to_forward, Kind::Forward), (to_backward, Kind::Backward)]
+            }
+            Kind::Forward => {
+                (to_forward[V], to_forward[SIN]) = (1.0, -self.amp);
+                vec![(to_forward, Kind::Stick)]
+            }
+            Kind::Backward => {
+                (to_backward[V], to_backward[SIN]) = (-1.0, -self.amp);
+                vec![(to_backward, Kind::Stick)]
+            }
+            Kind::Free => vec![],
+        }
+    }
+
+    /// The state at the stated start (`tau = 0`): the body at the drive's
+    /// position with its velocity, the spring relaxed (`y0 = x`).
+    pub(crate) fn start(&self) -> State {
+        let (sp, cp) = self.phase.sin_cos();
+        let x = self.t * sp;
+        State::from([x, self.vhat + self.t * cp, 0.0, x, 1.0, 0.0, 1.0, 0.0])
+    }
+
+    /// The phase a relaxed spring enters at contact (`f = B = 0`): a stick,
+    /// unless the body outruns the bound's growth `B' = amp sin tau`.
+    pub(crate) fn on_contact(&self, z: &State) -> Kind {
+        let rise = self.amp * z[SIN];
+        if z[V] > rise {
+            Kind::Forward
+        } else if z[V] < -rise {
+            Kind::Backward
+        } else {
+            Kind::Stick
+        }
+    }
+}
+
+/// `exp(a h) z`.
+pub(crate) fn advance(a: &Generator, z: &State, h: f64) -> State {
+    (a * h).exp() * z
+}

@@ -1,0 +1,81 @@
+//! The flat punch on a system with mass and stiffness (`fricosc::system`)
+//! against `data/system-reference.json` (`data/scripts/system_reference.py`:
+//! 40 digits, each phase by mpmath's matrix exponential, events by bisection,
+//! the state iterated period after period, not Newton) and the limits: a
+//! stiff system is the seed's answer (the difference falls like `1/kappa`), a
+//! light body with damping the massless one (like `Omega^2`).
+use crate::common::{data_cases, exact_error, exceeds};
+use fricosc::system::{flat, System};
+use fricosc::Conditions;
+
+/// The published bar, and ten times the largest error observed (1.8e-14).
+const PUBLISHED: f64 = 1e-12;
+const REGRESSION: f64 = 2e-13;
+
+fn at(vhat: f64, amp: f64, t: f64, phase: f64) -> Conditions {
+    Conditions::vhat(vhat, amp).unwrap().with_tangential(t, phase).unwrap()
+}
+
+#[test]
+fn the_reference_values_at_forty_digits() {
+    let cases = data_cases("system-reference.json");
+    assert_eq!(cases.len(), 6);
+    for c in cases {
+        let f = |k: &str| c[k].as_f64().unwrap();
+        let sys = System::new(f("kappa"), f("frequency_ratio"), f("damping")).unwrap();
+        let r = flat(&at(f("vhat"), f("amp"), f("tangential_amp"), f("phase")), &sys).unwrap();
+        let err = exact_error(r.mu_ratio, c["mu_ratio"].as_str().unwrap());
+        assert!(!exceeds(err, PUBLISHED.min(REGRESSION)), "{c}: {} off by {err:e}", r.mu_ratio);
+        assert_eq!(r.period, Some(1), "{c}");
+        // A stable orbit: every Floquet multiplier inside the unit circle.
+        assert!(!r.multipliers.is_empty() && r.multipliers.iter().all(|[re, im]| re.hypot(*im) < 1.0), "{c}");
+    }
+}
+
+/// `kappa -> infinity`: the seed's answer, with a difference like `1/kappa`
+/// (0.198/kappa here).
+#[test]
+fn a_stiff_system_is_the_seeds_problem() {
+    let c = Conditions::vhat(0.3, 0.5).unwrap();
+    let stiff = fricosc::Shape::flat().ratio(&c).unwrap().mu_ratio;
+    let d = |k: f64| flat(&c, &System::new(k, 0.5, 0.3).unwrap()).unwrap().mu_ratio - stiff;
+    let (d4, d6) = (d(1e4), d(1e6));
+    assert!(d6.abs() < 3e-7, "{d6:e}");
+    assert!((80.0..120.0).contains(&(d4 / d6)), "{d4:e} {d6:e}");
+}
+
+/// A light, damped body (`zeta = 0.5`): the massless answer (the stiff one at
+/// the drive scaled by `kappa/(1 + kappa)`), the difference like `Omega^2`
+/// (3.9e-4 at 0.1, 3.9e-6 at 0.01).
+#[test]
+fn a_light_body_is_the_massless_one() {
+    let c = Conditions::vhat(0.3, 0.5).unwrap();
+    let scaled = fricosc::Shape::flat().ratio(&Conditions::vhat(0.15, 0.5).unwrap()).unwrap().mu_ratio;
+    assert_eq!(flat(&c, &System::new(1.0, 0.0, 0.0).unwrap()).unwrap().mu_ratio, scaled);
+    let d = |om: f64| flat(&c, &System::new(1.0, om, 0.5).unwrap()).unwrap().mu_ratio - scaled;
+    let (d1, d2) = (d(0.1), d(0.01));
+    assert!(d2.abs() < 5e-6, "{d2:e}");
+    assert!((80.0..120.0).contains(&(d1 / d2)), "{d1:e} {d2:e}");
+}
+
+/// Near resonance with little damping the transient beats for hundreds of
+/// periods; the orbit found is reported with its least period (a period-1
+/// orbit also closes after 7 periods).
+#[test]
+fn the_least_period_is_reported() {
+    let r = flat(&Conditions::vhat(0.3, 0.5).unwrap(), &System::new(1.0, 1.41, 0.01).unwrap()).unwrap();
+    assert_eq!(r.period, Some(1));
+    assert!(r.periods_run > 100, "{}", r.periods_run);
+}
+
+#[test]
+fn bad_systems_are_named() {
+    let name = |e: fricosc::Error| match e {
+        fricosc::Error::InvalidParameter { name, .. } => name,
+        _ => "",
+    };
+    assert_eq!(name(System::new(0.0, 1.0, 0.1).unwrap_err()), "system-stiffness");
+    assert_eq!(name(System::new(1.0, -1.0, 0.1).unwrap_err()), "frequency-ratio");
+    assert_eq!(name(System::new(1.0, 1.0, f64::NAN).unwrap_err()), "damping");
+    assert_eq!(name(System::new(f64::INFINITY, 1.0, 0.1).unwrap_err()), "system-stiffness");
+}
