@@ -1,6 +1,6 @@
 //! `fricosc table`: a grid of amplitudes x velocities (JSON or CSV).
 
-use crate::cmd::{io_err, list, Common, List, TangentialList, VelocityList};
+use crate::cmd::{io_err, list, Common, List, SystemPoint, TangentialList, VelocityList};
 use crate::error::{Error, Result};
 use crate::output::{Cell, Format, TableWriter, Text};
 use clap::Args;
@@ -17,6 +17,8 @@ pub struct TableArgs {
     pub amp: List,
     #[command(flatten)]
     pub tangential: TangentialList,
+    #[command(flatten)]
+    pub system: SystemPoint,
     /// Output format.
     #[arg(long, value_enum, default_value = "json")]
     pub format: Format,
@@ -100,6 +102,9 @@ pub fn run(a: TableArgs) -> Result<()> {
     let tol = a.common.tol();
     let amps = &a.amp.0;
     let (vels, is_vhat) = a.velocity.values();
+    if let Some(sys) = a.system.system()? {
+        return system_table(&a, &shape, &sys);
+    }
     if let Some((ts, phases)) = a.tangential.values(is_vhat)? {
         return combined_table(&a, &shape, &ts, &phases);
     }
@@ -165,3 +170,49 @@ pub fn run(a: TableArgs) -> Result<()> {
     }
     w.finish().map_err(io_err)
 }
+
+/// A table of the flat punch on a system (`fricosc::system`): every (amp, T,
+/// phase, velocity), columns vhat, amp, tangential_amp, phase, mu_ratio,
+/// period (empty where none was found), standard_error (where none).
+fn system_table(a: &TableArgs, shape: &fricosc::Shape, sys: &fricosc::system::System) -> Result<()> {
+    if !shape.is_flat() || a.common.method.stepping()?.is_some() || a.velocity.over_t() {
+        return Err(Error::Parse {
+            context: "--system-stiffness".into(),
+            reason: "is solved exactly for the flat punch, at --vbar or --vhat".into(),
+        });
+    }
+    let (vels, is_vhat) = a.velocity.values();
+    let (ts, phases) = a.tangential.values(is_vhat)?.unwrap_or((vec![0.0], vec![0.0]));
+    let amps = &a.amp.0;
+    let total = [amps.len(), ts.len(), phases.len(), vels.len()].iter().map(|&n| n as u128).product::<u128>();
+    if total > MAX_SYSTEM_ROWS {
+        return Err(Error::TooLarge { what: "table rows on a system".into(), count: total, limit: MAX_SYSTEM_ROWS });
+    }
+    let mut points = vec![];
+    for &amp in amps {
+        for &t in &ts {
+            for &phase in &phases {
+                for &v in vels {
+                    let velocity = if is_vhat { fricosc::Velocity::Vhat(v) } else { fricosc::Velocity::Vbar(v) };
+                    let c = a.common.conditions(velocity, amp, None)?;
+                    points.push(fricosc::Conditions::vhat(c.as_vhat(), amp)?.with_tangential(t, phase)?);
+                }
+            }
+        }
+    }
+    let rows = points.par_iter().map(|c| Ok(fricosc::system::flat(c, sys)?)).collect::<Result<Vec<_>>>()?;
+    let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "period", "standard_error"];
+    let mut w =
+        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols).map_err(io_err)?;
+    for (c, r) in points.iter().zip(&rows) {
+        let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+        let period = r.period.map_or(Cell::Num(f64::NAN), |k| Cell::Num(k as f64));
+        let se = Cell::Num(r.standard_error.unwrap_or(f64::NAN));
+        let row = [Cell::Num(c.as_vhat()), Cell::Num(c.amp()), Cell::Num(t), Cell::Num(phase), Cell::Num(r.mu_ratio)];
+        w.row(&[&row[..], &[period, se]].concat()).map_err(io_err)?;
+    }
+    w.finish().map_err(io_err)
+}
+
+/// Most rows of a table on a system (each up to about two seconds).
+const MAX_SYSTEM_ROWS: u128 = 100_000;

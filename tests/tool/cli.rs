@@ -407,6 +407,17 @@ fn point_on_a_system_reports_the_attractor() {
     assert_eq!(v["mu_ratio"].as_f64().unwrap(), r.mu_ratio);
     assert_eq!(v["period"], 1);
     assert_eq!(v["events"].as_array().unwrap().len(), r.events.len());
+    // A table on the system: each row the library's attractor.
+    let table = ["table", "--vbar", "0.6,1.2", "--amp", "0.5", "--system-stiffness", "1", "--frequency-ratio", "0.5"];
+    let out = fricosc(&[&table[..], &["--damping", "0.3", "--format", "csv"]].concat(), None);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let rows: Vec<Vec<&str>> = text.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2);
+    for (row, vhat) in rows.iter().zip([0.3, 0.6]) {
+        let c = fricosc::Conditions::vhat(vhat, 0.5).unwrap();
+        assert_eq!(row[5].parse::<f64>().unwrap(), fricosc::system::flat(&c, &sys).unwrap().mu_ratio);
+    }
     let zero = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "0"];
     for run in [
         [&args[..], &["--shape", "parabolic"]].concat(),

@@ -297,6 +297,27 @@ fn point_oscillation<'py>(
     pythonize::pythonize(py, &Named { shape: shape.inner.name(), point: p }).map_err(serialise_err)
 }
 
+/// The flat punch on a system with mass and stiffness, as `fricosc point
+/// --system-stiffness` reports it: a dict.
+#[pyfunction]
+#[pyo3(signature = (vhat, amp, t, phase, stiffness, frequency_ratio, damping))]
+#[allow(clippy::too_many_arguments)]
+fn point_system<'py>(
+    py: Python<'py>,
+    vhat: f64,
+    amp: f64,
+    t: f64,
+    phase: f64,
+    stiffness: f64,
+    frequency_ratio: f64,
+    damping: f64,
+) -> PyResult<Bound<'py, PyAny>> {
+    let c = oscillation(vhat, amp, t, phase, DEFAULT_TOL).map_err(to_py)?;
+    let sys = fricosc::system::System::new(stiffness, frequency_ratio, damping).map_err(to_py)?;
+    let r = py.detach(|| fricosc::system::flat(&c, &sys)).map_err(to_py)?;
+    pythonize::pythonize(py, &r).map_err(serialise_err)
+}
+
 /// One point as `fricosc point` reports it: a dict.
 #[pyfunction]
 fn point<'py>(py: Python<'py>, shape: &CoreShape, v: f64, a: f64, vhat: bool, tol: f64) -> PyResult<Bound<'py, PyAny>> {
@@ -531,6 +552,7 @@ fn _fricosc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(point, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate_oscillation, m)?)?;
     m.add_function(wrap_pyfunction!(point_oscillation, m)?)?;
+    m.add_function(wrap_pyfunction!(point_system, m)?)?;
     m.add_function(wrap_pyfunction!(history, m)?)?;
     m.add_function(wrap_pyfunction!(validate, m)?)?;
     m.add_function(wrap_pyfunction!(scene, m)?)?;

@@ -256,8 +256,11 @@ def _interrupted_after(code: str) -> float:
     import signal
     import time
 
+    # Python's own SIGINT handler, also where the test runs with SIGINT
+    # ignored (a shell's background job: Python then installs none).
     p = _child(
-        "import numpy as np, fricosc, sys\n"
+        "import numpy as np, fricosc, signal, sys\n"
+        "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
         "print('ready', flush=True)\n"
         "try:\n" + "".join(f"    {line}\n" for line in code.splitlines()) + "except KeyboardInterrupt:\n"
         "    print('interrupted', flush=True)\n"
@@ -584,3 +587,13 @@ def test_oscillation_in_the_sliding_direction_is_the_command_lines() -> None:
 def test_bad_oscillation_input(call: Callable[[], object], message: str) -> None:
     with pytest.raises((TypeError, fricosc.InputError), match=message):
         call()
+
+
+def test_point_on_a_system_is_the_command_lines() -> None:
+    """``point(system_stiffness=...)``: the same attractor as ``fricosc point --system-stiffness``."""
+    mine = fricosc.point("flat", vhat=0.3, amp=0.5, system_stiffness=1.0, frequency_ratio=0.5, damping=0.3)
+    theirs = json.loads(cli("point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1",
+                            "--frequency-ratio", "0.5", "--damping", "0.3"))
+    assert mine["mu_ratio"] == theirs["mu_ratio"] and mine["period"] == theirs["period"] == 1
+    with pytest.raises(ValueError):
+        fricosc.point("parabolic", vhat=0.3, amp=0.5, system_stiffness=1.0)

@@ -197,3 +197,4 @@ def test_a_series_with_an_exact_row_converges(tmp_path: pathlib.Path) -> None:
     paths = [f"{write_csv(tmp_path / f'run{m}.csv', t)}@{m}" for m, t in tables.items()]
     theirs = json.loads(cli("validate", "--series", *paths, "--format", "json", status=1 if r["findings"] else 0))
     assert kinds(theirs) == kinds(r)
+

@@ -244,12 +244,17 @@ def point(
     tol: Optional[float] = None,
     tangential_amp: Optional[float] = None,
     phase: Optional[float] = None,
+    system_stiffness: Optional[float] = None,
+    frequency_ratio: float = 0.0,
+    damping: float = 0.0,
 ) -> Dict[str, Any]:
     """Everything the solver reports at one point, as ``fricosc point`` prints it:
     the regime and events of the flat punch, the bands of a power law, the
     error estimates. With ``tangential_amp`` (and ``phase``, ``vhat``) as
     ``fricosc point --tangential-amp``: the spring's phases and events of one
-    period (flat punch) or the bands.
+    period (flat punch) or the bands. With ``system_stiffness`` (and
+    ``frequency_ratio``, ``damping``) as ``fricosc point --system-stiffness``:
+    the flat punch on a system with mass and stiffness, its attractor.
 
     >>> p = point("flat", 0.3, 0.5)
     >>> p["regime"], p["mu_ratio"], [e["kind"] for e in p["events"]]
@@ -261,6 +266,17 @@ def point(
     if amp is None:
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
+    if system_stiffness is not None:
+        if _core(shape).name != "flat":
+            raise ValueError("the system's mass and stiffness are solved for the flat punch")
+        t, ph = _tangential(tangential_amp, phase, is_vhat) or (0.0, 0.0)
+        a = _scalar(amp, "amp")
+        vh = _scalar(v, "vhat") if is_vhat else _scalar(v, "vbar") * a
+        sys_point: Dict[str, Any] = _fricosc.point_system(
+            vh, a, t, ph, _scalar(system_stiffness, "system_stiffness"),
+            _scalar(frequency_ratio, "frequency_ratio"), _scalar(damping, "damping"),
+        )
+        return sys_point
     tangential = _tangential(tangential_amp, phase, is_vhat)
     if tangential is not None:
         osc: Dict[str, Any] = _fricosc.point_oscillation(

@@ -5,7 +5,7 @@ from typing import Any, Dict, List, Optional, Tuple, final
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "point_oscillation", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "__version__"]
+__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "point_oscillation", "point_system", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "__version__"]
 __version__: str
 
 class InputError(ValueError): ...
@@ -48,6 +48,15 @@ def history(
     samples: int,
     springs: int,
     spring_at: List[float],
+) -> Dict[str, Any]: ...
+def point_system(
+    vhat: float,
+    amp: float,
+    t: float,
+    phase: float,
+    stiffness: float,
+    frequency_ratio: float,
+    damping: float,
 ) -> Dict[str, Any]: ...
 def validate(
     shape: CoreShape,
