@@ -23,7 +23,8 @@ fn exact_curves_equal_the_solver_and_every_figure_is_there() {
             "tangential-flat",
             "tangential-parabolic",
             "combined-phase",
-            "combined-regimes"
+            "combined-regimes",
+            "system-resonance"
         ]
     );
     for f in figs.iter().filter(|f| f.name.starts_with("fig")) {
@@ -62,7 +63,8 @@ fn oscillation_figures_are_the_solvers_values() {
     let figs = build().unwrap();
     for f in &figs {
         let shape = if f.name.ends_with("parabolic") { Shape::parabolic() } else { Shape::flat() };
-        for c in f.curves.iter().filter(|c| c.kind == "exact" && !f.name.starts_with("fig")) {
+        let beyond = !f.name.starts_with("fig") && f.name != "system-resonance";
+        for c in f.curves.iter().filter(|c| c.kind == "exact" && beyond) {
             let t = c.amp.unwrap();
             assert_eq!(f.family, "tangential_amp", "{}", f.name);
             for p in c.points.iter().step_by(5) {
@@ -94,6 +96,28 @@ fn oscillation_figures_are_the_solvers_values() {
             let both = s.phases.iter().any(|q| q.kind == fricosc::spring::StopKind::Backward && q.end > q.start);
             assert_eq!(c.label.starts_with("jumping"), jumping, "{} at {p:?}", c.label);
             assert_eq!(c.label.ends_with("both ways"), both, "{} at {p:?}", c.label);
+        }
+    }
+}
+
+/// The resonance figure's points are `fricosc::system`'s attractors: at
+/// `Omega = 0` the stiff answer at `vbar kappa/(1 + kappa)`.
+#[test]
+fn the_resonance_figure_is_the_systems_values() {
+    use fricosc_cli::figures::RESONANCE;
+    let (kappa, zeta, amp) = RESONANCE;
+    let figs = build().unwrap();
+    let f = figs.iter().find(|f| f.name == "system-resonance").unwrap();
+    assert_eq!(f.family, "frequency_ratio");
+    for c in &f.curves {
+        let sys = fricosc::system::System::new(kappa, c.amp.unwrap(), zeta).unwrap();
+        for p in c.points.iter().step_by(9) {
+            let r = fricosc::system::flat(&fricosc::Conditions::vbar(p[0], amp).unwrap(), &sys).unwrap();
+            assert_eq!(p[1], r.mu_ratio, "{} at {}", c.label, p[0]);
+            if c.amp == Some(0.0) {
+                let stiff = crate::common::eval(&Shape::flat(), p[0] * kappa / (1.0 + kappa), amp).unwrap();
+                assert!((p[1] - stiff.ratio.mu_ratio).abs() < 1e-15, "{}", p[0]);
+            }
         }
     }
 }
@@ -131,6 +155,7 @@ fn approximations_are_drawn_where_the_seed_uses_them() {
             "fig3-inset" => &[1.0],
             "tangential-flat" | "tangential-parabolic" => &fricosc_cli::figures::TANGENTIAL_AMPS,
             "combined-phase" => &fricosc_cli::figures::COMBINED_TS,
+            "system-resonance" => &fricosc_cli::figures::OMEGAS,
             _ => &[],
         };
         assert_eq!(amps("exact"), expected, "{}", f.name);

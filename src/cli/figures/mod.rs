@@ -10,8 +10,10 @@ use fricosc::seed;
 use fricosc::Shape;
 use serde::Serialize;
 mod oscillation;
+mod system;
 pub use oscillation::{against_phase, COMBINED, COMBINED_TS, MAP_T, TANGENTIAL_AMPS};
 use oscillation::{combined_mu, oscillation_figures};
+pub use system::{OMEGAS, RESONANCE};
 
 /// One curve of a figure.
 #[derive(Debug, Clone, Serialize)]
@@ -81,6 +83,8 @@ pub const MU_LABEL: &str = "friction coefficient μ_{macro}/μ_{0}";
 pub const AMP_LABEL: &str = "Δu_{z}/u_{z0}";
 /// Legend heading of a tangential-amplitude family (pre-slip lengths `l`).
 pub const T_LABEL: &str = "Δx/l";
+/// Legend heading of a family of frequency ratios `Omega = omega / sqrt(kx/m)`.
+pub const OMEGA_LABEL: &str = "ω/ω_{c}";
 
 fn figure(name: &str, title: &str, x: XAxis, range: [f64; 4], curves: Vec<Curve>) -> Figure {
     let x_label = match x {
@@ -157,6 +161,7 @@ pub fn build() -> Result<Vec<Figure>> {
     let mut figs = flat_figures()?;
     figs.extend(jumping_figures()?);
     figs.extend(oscillation_figures()?);
+    figs.push(system::resonance()?);
     Ok(figs)
 }
 
@@ -508,7 +513,12 @@ pub fn chart(f: &Figure) -> Chart {
     }
     let mut key = vec![];
     if !amps.is_empty() {
-        key.push(Key::Heading(if f.family == "amp" { AMP_LABEL } else { T_LABEL }.into()));
+        let heading = match f.family.as_str() {
+            "amp" => AMP_LABEL,
+            "frequency_ratio" => OMEGA_LABEL,
+            _ => T_LABEL,
+        };
+        key.push(Key::Heading(heading.into()));
         for &a in &amps {
             key.push(Key::Entry(Style::line(color(a)).width(bold(a)), crate::output::num(a)));
         }
