@@ -5,12 +5,17 @@
 //! `2 pi / 256`, the inverse of the body's largest rate `|lambda|`), so a
 //! step holds at most one extremum of each; a sign change is bracketed by
 //! its step, and a minimum that dips below 0 between two positive samples
-//! (a grazing event) is found from the derivative's sign change. Contact is
-//! lost and regained at the closed-form zeros of `B`.
+//! (a grazing event) is found from the derivative's sign change. A function
+//! already below 0 where a step starts (a force a rounding beyond its bound
+//! after a switch) ends its phase at once. Contact is lost and regained at
+//! the closed-form zeros of `B`.
 
 use super::phase::{advance, Generator, Kind, Params, State, COS, INT_F, SIN, TAU, X, Y0};
 use crate::numerics::root::bracketed;
 use std::f64::consts::TAU as TWO_PI;
+
+/// Most phases of zero length in a row before a phase is held for a step.
+const MAX_FLIPS: usize = 8;
 
 /// A transition inside a period.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -69,8 +74,11 @@ impl Phases {
             let g = |d: f64| (w * advance(a, z, d))[0];
             let slope = |d: f64| (w * a * advance(a, z, d))[0];
             let (g0, g1) = ((w * z)[0], (w * end)[0]);
-            let root = if g0 >= 0.0 && g1 < 0.0 {
-                Some(bracketed(g, 0.0, h, 4.0 * f64::EPSILON).x)
+            let root = if g1 < 0.0 {
+                // Below 0 at the step's start too: the phase is already over (a
+                // force a rounding beyond its bound, a contact point a rounding
+                // past turning): it ends at once.
+                Some(if g0 >= 0.0 { bracketed(g, 0.0, h, 4.0 * f64::EPSILON).x } else { 0.0 })
             } else if g0 > 0.0 && g1 >= 0.0 && (w * a * z)[0] < 0.0 && (w * a * end)[0] > 0.0 {
                 // A minimum inside the step: an event if it dips below 0.
                 let m = bracketed(slope, 0.0, h, 4.0 * f64::EPSILON).x;
@@ -99,6 +107,10 @@ impl Phases {
         let mut events = vec![];
         z[INT_F] = 0.0;
         let mut tau = 0.0;
+        // Phases of zero length in a row at one instant (a force grazing its
+        // bound as the contact point turns): after MAX_FLIPS the phase holds
+        // for a step.
+        let mut flips = 0;
         while tau < TWO_PI {
             let (step, e) = &self.steps[index(kind)];
             let rest = TWO_PI - tau;
@@ -113,7 +125,9 @@ impl Phases {
             }
             let a = &self.gens[index(kind)];
             let end = if h == *step { e * z } else { advance(a, &z, h) };
-            if let Some((d, next)) = self.event_in(kind, &z, h, &end) {
+            let event = if flips < MAX_FLIPS { self.event_in(kind, &z, h, &end) } else { None };
+            if let Some((d, next)) = event {
+                flips = if d == 0.0 { flips + 1 } else { 0 };
                 z = advance(a, &z, d);
                 tau += d;
                 if next == Kind::Stick {
@@ -123,6 +137,7 @@ impl Phases {
                 kind = next;
                 continue;
             }
+            flips = 0;
             (z, tau) = (end, if h == rest { TWO_PI } else { tau + h });
             match stop {
                 Some(false) => {

@@ -96,3 +96,18 @@ fn the_stepping_peer_converges_to_the_exact_value() {
         assert!(e4 < 7e-4 && (7.0..14.0).contains(&(e3 / e4)), "{c:?}: {e3:e} then {e4:e}");
     }
 }
+
+/// `|f| <= B` at every instant, so `mu` lies in `[-1, 1]` whatever the
+/// response (periodic or not): 16 points without damping and with a little,
+/// through the resonances, with and without contact loss. (An event missed
+/// at a grazing slip-stick switch once let `f` grow to 1600 `B`.)
+#[test]
+fn mu_is_within_its_bounds_through_the_resonances() {
+    for om in [0.7, 1.2, 1.7, 2.5] {
+        for (zeta, amp) in [(0.0, 0.5), (0.0, 1.5), (0.02, 0.5), (0.02, 1.5)] {
+            let r = flat(&Conditions::vhat(0.3, amp).unwrap(), &System::new(1.0, om, zeta).unwrap()).unwrap();
+            assert!(r.mu_ratio.abs() <= 1.0 + 1e-12, "Omega {om} zeta {zeta} amp {amp}: {}", r.mu_ratio);
+            assert_eq!(r.period.is_none(), r.standard_error.is_some());
+        }
+    }
+}
