@@ -1,7 +1,9 @@
 //! `fricosc history`: the force histories of [`fricosc::history`] as a
 //! report (CSV, JSON, the seed's Fig. 2 as SVG).
 
-use crate::cmd::{emit_bytes, list, number, List, MethodArg, TangentialPoint, VelocityPoint, DEFAULT_STEPPING};
+use crate::cmd::{
+    emit_bytes, list, number, List, MethodArg, SystemPoint, TangentialPoint, VelocityPoint, DEFAULT_STEPPING,
+};
 use crate::error::{Error, Result};
 use crate::export::{export_bytes, Format};
 use clap::Args;
@@ -78,6 +80,8 @@ pub struct HistoryArgs {
     pub amp: f64,
     #[command(flatten)]
     pub tangential: TangentialPoint,
+    #[command(flatten)]
+    pub system: SystemPoint,
     /// Periods to sample.
     #[arg(long, default_value_t = 1)]
     pub periods: usize,
@@ -138,6 +142,10 @@ pub fn run(a: HistoryArgs) -> Result<()> {
                 .with_samples(a.samples)
                 .with_springs(a.springs)
                 .with_spring_at(chosen);
+            let opts = match a.system.system()? {
+                Some(sys) => opts.with_system(sys),
+                None => opts,
+            };
             fricosc::history::history(&shape, &c, &opts)?
         }
         Some(m) => {

@@ -139,20 +139,47 @@ fn map_k(ph: &Phases, s: &Reduced, k: usize) -> (Reduced, f64) {
 /// # Errors
 /// [`Error::InvalidParameter`] for bad inputs.
 pub fn flat(c: &Conditions, sys: &System) -> Result<SystemReport> {
+    Ok(attractor(c, sys)?.0)
+}
+
+/// The contact force at the phases `taus` (ascending, in `[0, 2 pi)`) over
+/// the first period of the attractor [`flat`] reports (over the last period
+/// run where it found none), in units of `mu0 kz u0`.
+///
+/// # Errors
+/// As [`flat`]; [`Error::InvalidParameter`] for a massless body (its forces
+/// are the stiff problem's at the scaled drive) or phases not ascending in `[0, 2 pi)`.
+pub fn forces(c: &Conditions, sys: &System, taus: &[f64]) -> Result<(SystemReport, Vec<f64>)> {
+    if !taus.windows(2).all(|w| w[0] <= w[1]) || taus.iter().any(|t| !(0.0..std::f64::consts::TAU).contains(t)) {
+        return Err(Error::param("tau", f64::NAN, "phases must ascend in [0, 2 pi)"));
+    }
+    match attractor(c, sys)? {
+        (r, Some((ph, s))) => {
+            let f = ph.sampled(s.0, expand(&ph.p, &s), taus).3;
+            Ok((r, f))
+        }
+        (_, None) => Err(Error::param("frequency-ratio", 0.0, "a massless body's forces are the stiff problem's")),
+    }
+}
+
+/// The attractor from the stated start, and (for a body with mass) the
+/// phases and the state at `tau = 0` of its first period.
+fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, Option<(Phases, Reduced)>)> {
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
     let (vhat, amp, kappa) = (c.as_vhat(), c.amp(), sys.stiffness);
     if sys.frequency_ratio == 0.0 {
         let scale = kappa / (1.0 + kappa);
         let stiff = Conditions::vhat(vhat * scale, amp)?.with_tangential(t * scale, phase)?.with_tol(c.tol())?;
         let r = crate::shape::Shape::flat().ratio(&stiff)?;
-        return Ok(SystemReport {
+        let report = SystemReport {
             mu_ratio: r.mu_ratio,
             period: Some(1),
             standard_error: None,
             periods_run: 0,
             multipliers: vec![],
             events: vec![],
-        });
+        };
+        return Ok((report, None));
     }
     let p = Params { kappa, omega: sys.frequency_ratio, zeta: sys.damping, vhat, amp, t, phase };
     let ph = Phases::new(p);
@@ -174,8 +201,8 @@ pub fn flat(c: &Conditions, sys: &System) -> Result<SystemReport> {
             (1..=MAX_ORBIT.min(n)).find(|&k| close(back(k), &s, REPEAT)).filter(|_| attempts < NEWTON_ATTEMPTS)
         {
             attempts += 1;
-            if let Some(r) = orbit(&ph, s, k, n) {
-                return Ok(r);
+            if let Some((r, at)) = orbit(&ph, s, k, n) {
+                return Ok((r, Some((ph, at))));
             }
         }
         seen.push(s);
@@ -183,14 +210,15 @@ pub fn flat(c: &Conditions, sys: &System) -> Result<SystemReport> {
     let mean_b = crate::flat::mean_normal(amp) * std::f64::consts::TAU;
     let tail: Vec<f64> = per_period[periods / 2..].iter().map(|x| x / mean_b).collect();
     let (mean, error) = batch_mean(&tail, 10);
-    Ok(SystemReport {
+    let report = SystemReport {
         mu_ratio: mean,
         period: None,
         standard_error: Some(error),
         periods_run: periods,
         multipliers: vec![],
         events: vec![],
-    })
+    };
+    Ok((report, Some((ph, s))))
 }
 
 /// Whether two states are the same phase and within `tol` (relative to 1 and the state).
@@ -212,7 +240,7 @@ fn batch_mean(xs: &[f64], size: usize) -> (f64, f64) {
 
 /// The period-`k` orbit through (near) `s`, refined by Newton, with its
 /// multipliers, `mu` and events; `None` if Newton does not close it to 1e-10.
-fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<SystemReport> {
+fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<(SystemReport, Reduced)> {
     let residual = |s: &Reduced| map_k(ph, s, k).0 .1 - s.1;
     let mut jac = Matrix3::identity();
     for _ in 0..12 {
@@ -239,14 +267,15 @@ fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<SystemRepo
     let multipliers = schur.map_or(vec![], |s| s.complex_eigenvalues().iter().map(|l| [l.re, l.im]).collect());
     let events = ph.period(s.0, expand(&ph.p, &s)).2;
     let mean_b = crate::flat::mean_normal(ph.p.amp) * std::f64::consts::TAU * k as f64;
-    Some(SystemReport {
+    let report = SystemReport {
         mu_ratio: int_f / mean_b,
         period: Some(k),
         standard_error: None,
         periods_run: run,
         multipliers,
         events,
-    })
+    };
+    Some((report, s))
 }
 
 /// The Jacobian of `P^k` at `s` by central differences (steps `1e-6 (1 + |s_i|)`).

@@ -99,7 +99,20 @@ impl Phases {
     /// the kind at `2 pi`, the state there shifted back by a period of the
     /// drive (`tau` 0, positions less `2 pi vhat`; `int f` over the period
     /// kept), and the events.
-    pub(crate) fn period(&self, mut kind: Kind, mut z: State) -> (Kind, State, Vec<SystemEvent>) {
+    pub(crate) fn period(&self, kind: Kind, z: State) -> (Kind, State, Vec<SystemEvent>) {
+        let (kind, z, events, _) = self.sampled(kind, z, &[]);
+        (kind, z, events)
+    }
+
+    /// [`Phases::period`], and the contact force at each of `samples`
+    /// (ascending, in `[0, 2 pi)`).
+    pub(crate) fn sampled(
+        &self,
+        mut kind: Kind,
+        mut z: State,
+        samples: &[f64],
+    ) -> (Kind, State, Vec<SystemEvent>, Vec<f64>) {
+        let mut forces = Vec::with_capacity(samples.len());
         let contact = (self.p.amp > 1.0).then(|| {
             let a = (1.0 / self.p.amp).acos();
             (a, TWO_PI - a)
@@ -126,6 +139,10 @@ impl Phases {
             let a = &self.gens[index(kind)];
             let end = if h == *step { e * z } else { advance(a, &z, h) };
             let event = if flips < MAX_FLIPS { self.event_in(kind, &z, h, &end) } else { None };
+            let reach = tau + event.map_or(h, |e| e.0);
+            while let Some(&at) = samples.get(forces.len()).filter(|&&at| at <= reach) {
+                forces.push(self.p.force(kind, &advance(a, &z, (at - tau).max(0.0))));
+            }
             if let Some((d, next)) = event {
                 flips = if d == 0.0 { flips + 1 } else { 0 };
                 z = advance(a, &z, d);
@@ -156,6 +173,6 @@ impl Phases {
         z[X] -= shift;
         z[Y0] -= shift;
         (z[TAU], z[COS], z[SIN]) = (0.0, 1.0, 0.0);
-        (kind, z, events)
+        (kind, z, events, forces)
     }
 }

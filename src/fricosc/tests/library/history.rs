@@ -270,3 +270,36 @@ fn a_curved_combined_history_averages_to_the_exact_mu() {
     assert!((mean(&centre) / mean(&centre_n) - flat).abs() < 1e-6);
     assert_eq!(h.point.tangential_amp, Some(1.5));
 }
+
+/// On a system with mass and stiffness the history is one period of the
+/// attractor: its trapezoidal mean (the period closed by its first sample,
+/// events included) is the attractor's `mu`, the force within its bound;
+/// a massless body's is the stiff one at the scaled drive.
+#[test]
+fn a_history_on_a_system_averages_to_its_mu() {
+    use fricosc::system::{flat, System};
+    for (om, amp) in [(0.5, 0.5), (0.5, 1.5), (1.2, 0.5)] {
+        let c = fricosc::Conditions::vhat(0.3, amp).unwrap();
+        let sys = System::new(1.0, om, 0.3).unwrap();
+        let h = history(&Shape::flat(), &c, &HistoryOptions::default().with_samples(20_000).with_system(sys)).unwrap();
+        let close = |f: fn(&fricosc::history::Sample) -> f64| {
+            let mut v: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, f(s))).collect();
+            v.push((std::f64::consts::TAU, v[0].1));
+            v
+        };
+        let mu = mean(&close(|s| s.tangential)) / mean(&close(|s| s.normal));
+        let exact = flat(&c, &sys).unwrap().mu_ratio;
+        assert!((mu - exact).abs() < 1e-7, "Omega {om} amp {amp}: {mu} vs {exact}");
+        assert!(h.samples.iter().all(|s| s.tangential.abs() <= s.normal));
+    }
+    let c = fricosc::Conditions::vhat(0.3, 0.5).unwrap();
+    let massless = HistoryOptions::default().with_samples(50).with_system(System::new(1.0, 0.0, 0.0).unwrap());
+    let stiff = history(
+        &Shape::flat(),
+        &fricosc::Conditions::vhat(0.15, 0.5).unwrap().with_tangential(0.0, 0.0).unwrap(),
+        &HistoryOptions::default().with_samples(50),
+    )
+    .unwrap();
+    let h = history(&Shape::flat(), &c, &massless).unwrap();
+    assert!(h.samples.iter().zip(&stiff.samples).all(|(a, b)| a.tangential == b.tangential));
+}

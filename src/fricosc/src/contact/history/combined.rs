@@ -85,3 +85,61 @@ pub(super) fn foundation_samples(
     });
     Ok(rows)
 }
+
+/// The flat punch on a system with mass and stiffness: one period of the
+/// attractor ([`crate::system::forces`]), its events among the samples; a
+/// massless body is the stiff problem at the drive scaled by `kappa/(1 + kappa)`.
+pub(super) fn on_system(
+    shape: &crate::shape::Shape,
+    c: &Conditions,
+    sys: &crate::system::System,
+    opts: &HistoryOptions,
+) -> Result<super::History> {
+    use crate::error::Error;
+    use crate::system::Kind;
+    if !shape.is_flat() || opts.periods != 1 || !opts.spring_at.is_empty() {
+        return Err(Error::InvalidShape {
+            spec: shape.name().into(),
+            reason: "a history on a system is the flat punch's, one period".into(),
+        });
+    }
+    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+    if sys.frequency_ratio == 0.0 {
+        let k = sys.stiffness / (1.0 + sys.stiffness);
+        let stiff = Conditions::vhat(c.as_vhat() * k, c.amp())?.with_tangential(t * k, phase)?;
+        let opts = HistoryOptions { system: None, ..opts.clone() };
+        return super::history(shape, &stiff, &opts);
+    }
+    super::check_history(shape, 0.0, c.amp(), opts)?;
+    let report = crate::system::flat(c, sys)?;
+    let mut taus: Vec<(f64, Option<EventKind>)> =
+        (0..opts.samples).map(|j| (TAU * j as f64 / opts.samples as f64, None)).collect();
+    for e in &report.events {
+        let kind = match e.kind {
+            Kind::Stick => EventKind::Stick,
+            Kind::Forward => EventKind::Slip,
+            Kind::Backward => EventKind::BackwardSlip,
+            Kind::Free => EventKind::LossOfContact,
+        };
+        taus.push((e.tau.rem_euclid(TAU), Some(kind)));
+    }
+    taus.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let at: Vec<f64> = taus.iter().map(|x| x.0).collect();
+    let (_, forces) = crate::system::forces(c, sys, &at)?;
+    let samples = taus
+        .iter()
+        .zip(forces)
+        .map(|(&(tau, event), f)| {
+            let normal = (1.0 - c.amp() * tau.cos()).max(0.0);
+            Sample { tau, normal, tangential: f.clamp(-normal, normal), event, springs: vec![] }
+        })
+        .collect();
+    let units = format!(
+        "{}; on a system: K/kx {}, omega/omega_c {}, zeta {}",
+        super::UNITS,
+        sys.stiffness,
+        sys.frequency_ratio,
+        sys.damping
+    );
+    Ok(super::History::new(shape, c, units, vec![], samples))
+}

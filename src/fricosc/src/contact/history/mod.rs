@@ -109,7 +109,13 @@ impl std::fmt::Display for HistoryPoint {
 }
 
 impl History {
-    fn new(shape: &Shape, c: &Conditions, units: String, spring_positions: Vec<f64>, samples: Vec<Sample>) -> History {
+    pub(crate) fn new(
+        shape: &Shape,
+        c: &Conditions,
+        units: String,
+        spring_positions: Vec<f64>,
+        samples: Vec<Sample>,
+    ) -> History {
         History { shape: shape.name().into(), point: HistoryPoint::of(c), units, spring_positions, samples }
     }
 }
@@ -161,11 +167,14 @@ pub struct HistoryOptions {
     pub springs: usize,
     /// Positions `x/x_c >= 0` of springs of a curved shape reported one by one.
     pub spring_at: Vec<f64>,
+    /// The flat punch on a system with mass and stiffness ([`crate::system`]):
+    /// one period of its attractor.
+    pub system: Option<crate::system::System>,
 }
 
 impl Default for HistoryOptions {
     fn default() -> Self {
-        HistoryOptions { periods: 1, samples: 400, springs: 4000, spring_at: vec![] }
+        HistoryOptions { periods: 1, samples: 400, springs: 4000, spring_at: vec![], system: None }
     }
 }
 
@@ -184,6 +193,11 @@ impl HistoryOptions {
     #[must_use]
     pub fn with_springs(self, springs: usize) -> Self {
         HistoryOptions { springs, ..self }
+    }
+    /// On the system `system` (the flat punch, one period).
+    #[must_use]
+    pub fn with_system(self, system: crate::system::System) -> Self {
+        HistoryOptions { system: Some(system), ..self }
     }
     /// With these springs reported one by one (positions `x/x_c`, curved shapes).
     #[must_use]
@@ -270,6 +284,9 @@ pub const MIN_CURVED_AMP: f64 = 1e-300;
 /// oscillation at `amp = 0`), [`Error::TooLarge`] beyond the
 /// limits ([`MAX_SAMPLES`] rows, [`MAX_SPRINGS`] springs, [`MAX_SPRING_WORK`]).
 pub fn history(shape: &Shape, c: &Conditions, opts: &HistoryOptions) -> Result<History> {
+    if let Some(sys) = &opts.system {
+        return combined::on_system(shape, c, sys, opts);
+    }
     let amp = c.amp();
     let vbar = if c.tangential().is_some() { 0.0 } else { c.as_vbar()? };
     check_history(shape, vbar, amp, opts)?;
