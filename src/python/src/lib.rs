@@ -333,7 +333,7 @@ fn point<'py>(py: Python<'py>, shape: &CoreShape, v: f64, a: f64, vhat: bool, to
 
 /// A force history (`fricosc history`) as a dict of numpy arrays.
 #[pyfunction]
-#[pyo3(signature = (shape, v, a, vhat, tangential, periods, samples, springs, spring_at))]
+#[pyo3(signature = (shape, v, a, vhat, tangential, periods, samples, springs, spring_at, system=None))]
 #[allow(clippy::too_many_arguments)]
 fn history<'py>(
     py: Python<'py>,
@@ -346,6 +346,7 @@ fn history<'py>(
     samples: usize,
     springs: usize,
     spring_at: Vec<f64>,
+    system: Option<(f64, f64, f64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let c = history_conditions(v, a, vhat, tangential).map_err(to_py)?;
     let shape = &shape.inner;
@@ -354,6 +355,10 @@ fn history<'py>(
         .with_samples(samples)
         .with_springs(springs)
         .with_spring_at(spring_at);
+    let opts = match system {
+        Some((k, om, z)) => opts.with_system(fricosc::system::System::new(k, om, z).map_err(to_py)?),
+        None => opts,
+    };
     let h = py.detach(|| core_history(shape, &c, &opts)).map_err(to_py)?;
     let d = PyDict::new(py);
     d.set_item("shape", &h.shape)?;

@@ -597,3 +597,7 @@ def test_point_on_a_system_is_the_command_lines() -> None:
     assert mine["mu_ratio"] == theirs["mu_ratio"] and mine["period"] == theirs["period"] == 1
     with pytest.raises(ValueError):
         fricosc.point("parabolic", vhat=0.3, amp=0.5, system_stiffness=1.0)
+    h = fricosc.history("flat", vhat=0.3, amp=0.5, system_stiffness=1.0, frequency_ratio=0.5, damping=0.3, samples=8)
+    csv_text = cli("history", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--frequency-ratio", "0.5",
+                   "--damping", "0.3", "--samples", "8", "--format", "csv")
+    assert [float(r["tangential"]) for r in csv_rows(csv_text)] == list(h["tangential"])

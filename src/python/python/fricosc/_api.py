@@ -319,6 +319,9 @@ def history(
     samples: int = 400,
     springs: int = 4000,
     spring_at: Sequence[float] = (),
+    system_stiffness: Optional[float] = None,
+    frequency_ratio: float = 0.0,
+    damping: float = 0.0,
 ) -> Dict[str, Any]:
     """The normal force (times mu0) and the tangential force over ``periods``
     periods (the seed's Fig. 2), as ``fricosc history`` computes them: exact,
@@ -330,7 +333,9 @@ def history(
     ``springs`` (shape ``(samples, len(spring_at), 2)``: normal, tangential).
     With ``tangential_amp`` (and ``phase``, ``vhat``) as ``fricosc history
     --tangential-amp``: the body also oscillates in the sliding direction, and
-    the force slips both ways (events ``slip`` and ``backward_slip``).
+    the force slips both ways (events ``slip`` and ``backward_slip``). With
+    ``system_stiffness`` (``frequency_ratio``, ``damping``): the flat punch
+    on a system with mass and stiffness, one period of its attractor.
 
     >>> h = history("flat", vhat=0.2, amp=0.5, tangential_amp=1.5, phase=1.3, samples=100)
     >>> [e for e in h["event"] if e]
@@ -356,6 +361,13 @@ def history(
         int(samples),
         int(springs),
         positions,
+        None
+        if system_stiffness is None
+        else (
+            _scalar(system_stiffness, "system_stiffness"),
+            _scalar(frequency_ratio, "frequency_ratio"),
+            _scalar(damping, "damping"),
+        ),
     )
     return result
 

@@ -48,6 +48,7 @@ def history(
     samples: int,
     springs: int,
     spring_at: List[float],
+    system: Optional[Tuple[float, float, float]] = None,
 ) -> Dict[str, Any]: ...
 def point_system(
     vhat: float,
