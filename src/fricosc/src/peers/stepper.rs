@@ -376,7 +376,7 @@ pub(crate) fn evaluate_oscillation(
 /// velocity, the spring relaxed) `periods` periods of `steps_per_period`
 /// steps, each the body's velocity then position (semi-implicit Euler, first
 /// order) and the contact force moved by the body's step and held in
-/// `[-B, B]` ([`update_two_way`]); the mean over the last period. The
+/// `[-B, B]` (as under a tangential oscillation); the mean over the last period. The
 /// attractor must be reached within the periods run (a period-1 orbit is
 /// assumed: the last period is the answer).
 ///
