@@ -467,11 +467,9 @@ pub fn chart(f: &Figure) -> Chart {
     let bold = |a: f64| if f.bold_critical && a == 1.0 { 2.0 } else { 1.0 };
     // The approximations' equations in order of appearance: dash patterns.
     let mut eqs: Vec<&str> = vec![];
-    for c in &f.curves {
-        if let Some(e) = &c.equation {
-            if !eqs.contains(&e.as_str()) {
-                eqs.push(e);
-            }
+    for e in f.curves.iter().filter_map(|c| c.equation.as_deref()) {
+        if !eqs.contains(&e) {
+            eqs.push(e);
         }
     }
     let dash = |c: &Curve| match c.equation.as_deref().and_then(|e| eqs.iter().position(|x| *x == e)) {
@@ -513,12 +511,7 @@ pub fn chart(f: &Figure) -> Chart {
     }
     let mut key = vec![];
     if !amps.is_empty() {
-        let heading = match f.family.as_str() {
-            "amp" => AMP_LABEL,
-            "frequency_ratio" => OMEGA_LABEL,
-            _ => T_LABEL,
-        };
-        key.push(Key::Heading(heading.into()));
+        key.push(Key::Heading(family_heading(f).into()));
         for &a in &amps {
             key.push(Key::Entry(Style::line(color(a)).width(bold(a)), crate::output::num(a)));
         }
@@ -544,24 +537,38 @@ pub fn chart(f: &Figure) -> Chart {
             }
         }
     }
-    if !f.notes.is_empty() {
-        key.push(Key::Heading(String::new()));
-        key.extend(f.notes.iter().map(|n| Key::Heading(n.clone())));
-    }
-    let ratio_axis = f.y_label == MU_LABEL;
+    key.extend(f.notes.iter().enumerate().flat_map(|(i, n)| {
+        // A blank line above the notes.
+        (i == 0).then(|| Key::Heading(String::new())).into_iter().chain([Key::Heading(n.clone())])
+    }));
     Chart {
         title: f.title.clone(),
         x: Axis::linear(&f.x_label, (f.range[0], f.range[1])),
         y: Axis::linear(&f.y_label, (f.range[2], f.range[3])),
         series,
         key,
-        // mu/mu0 = 1 (no reduction), and 0 where the friction changes sign.
-        rules: [(ratio_axis, 1.0), (ratio_axis && f.range[2] < 0.0, 0.0)]
-            .into_iter()
-            .filter(|r| r.0)
-            .map(|(_, at)| Rule { horizontal: true, at })
-            .collect(),
+        rules: rules(f),
     }
+}
+
+/// The legend's heading of a figure's family.
+fn family_heading(f: &Figure) -> &'static str {
+    match f.family.as_str() {
+        "amp" => AMP_LABEL,
+        "frequency_ratio" => OMEGA_LABEL,
+        _ => T_LABEL,
+    }
+}
+
+/// On a `mu/mu0` axis: a line at 1 (no reduction), and at 0 where the axis
+/// reaches below it (where the friction changes sign).
+fn rules(f: &Figure) -> Vec<Rule> {
+    let ratio_axis = f.y_label == MU_LABEL;
+    [(ratio_axis, 1.0), (ratio_axis && f.range[2] < 0.0, 0.0)]
+        .into_iter()
+        .filter(|r| r.0)
+        .map(|(_, at)| Rule { horizontal: true, at })
+        .collect()
 }
 
 impl crate::export::Report for Figure {

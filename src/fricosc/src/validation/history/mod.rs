@@ -421,8 +421,23 @@ pub fn compare_history(
         last_period: samples,
     };
     v.findings = history_findings(&v, &above, &contact, tolerance);
-    // Errors of order one: beyond LARGE_ERROR of the peak and beyond what a
-    // step's timing could explain (four of the file's largest steps in force).
+    large_error_findings(&mut v, shape, c, data, &last, &seed_tau, peak);
+    Ok(v)
+}
+
+/// Errors of order one in a history: beyond `LARGE_ERROR` of the `peak` and
+/// beyond what a step's timing could explain (four of the file's largest
+/// steps in force): the convention that explains them, or `large_errors`
+/// where nothing else is named.
+fn large_error_findings(
+    v: &mut HistoryValidation,
+    shape: &Shape,
+    c: &crate::Conditions,
+    data: &HistoryData,
+    last: &[usize],
+    seed_tau: &dyn Fn(usize) -> f64,
+    peak: f64,
+) {
     let step = last.windows(2).map(|w| (data.tangential[w[1]] - data.tangential[w[0]]).abs()).fold(0.0, f64::max);
     let large = (super::convention::LARGE_ERROR * peak).max(4.0 * step);
     let bad: Vec<usize> =
@@ -438,7 +453,6 @@ pub fn compare_history(
             None => {}
         }
     }
-    Ok(v)
 }
 
 /// The events between consecutive samples of the last period: the state (0 no
