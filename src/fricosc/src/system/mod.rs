@@ -107,7 +107,7 @@ pub struct SystemReport {
 }
 
 /// The reduced state of the period map: `(x, x', f)` at `tau = 0` and the phase.
-type Reduced = (Kind, Vector3<f64>);
+pub(crate) type Reduced = (Kind, Vector3<f64>);
 
 fn reduce(p: &Params, kind: Kind, z: &State) -> Reduced {
     (kind, Vector3::new(z[X], z[V], p.force(kind, z)))
@@ -154,17 +154,20 @@ pub fn forces(c: &Conditions, sys: &System, taus: &[f64]) -> Result<(SystemRepor
         return Err(Error::param("tau", f64::NAN, "phases must ascend in [0, 2 pi)"));
     }
     match attractor(c, sys)? {
-        (r, Some((ph, s))) => {
-            let f = ph.sampled(s.0, expand(&ph.p, &s), taus).3;
-            Ok((r, f))
-        }
+        (r, Some(orbit)) => Ok((r, sample(&orbit, taus))),
         (_, None) => Err(Error::param("frequency-ratio", 0.0, "a massless body's forces are the stiff problem's")),
     }
 }
 
+/// The contact force at `taus` (ascending, in `[0, 2 pi)`) over one period
+/// from the state `s` at `tau = 0` ([`attractor`]'s).
+pub(crate) fn sample((ph, s): &(Phases, Reduced), taus: &[f64]) -> Vec<f64> {
+    ph.sampled(s.0, expand(&ph.p, s), taus).3
+}
+
 /// The attractor from the stated start, and (for a body with mass) the
 /// phases and the state at `tau = 0` of its first period.
-fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, Option<(Phases, Reduced)>)> {
+pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, Option<(Phases, Reduced)>)> {
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
     let (vhat, amp, kappa) = (c.as_vhat(), c.amp(), sys.stiffness);
     if sys.frequency_ratio == 0.0 {

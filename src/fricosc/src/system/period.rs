@@ -12,6 +12,7 @@
 
 use super::phase::{advance, Generator, Kind, Params, State, COS, INT_F, SIN, TAU, X, Y0};
 use crate::numerics::root::bracketed;
+use nalgebra::SMatrix;
 use std::f64::consts::TAU as TWO_PI;
 
 /// Most phases of zero length in a row before a phase is held for a step.
@@ -34,6 +35,8 @@ pub(crate) struct Phases {
     pub(crate) p: Params,
     gens: [Generator; 4],
     steps: [(f64, Generator); 4],
+    /// Each kind's event functions (made once: they are checked every step).
+    events: [Vec<(SMatrix<f64, 1, 8>, Kind)>; 4],
 }
 
 fn index(kind: Kind) -> usize {
@@ -62,7 +65,7 @@ impl Phases {
             let h = (TWO_PI / 256.0).min(0.25 / fastest.max(1e-300));
             (h, (a * h).exp())
         });
-        Phases { p, gens, steps }
+        Phases { p, gens, steps, events: kinds.map(|k| p.events(k)) }
     }
 
     /// The first event of `kind` within `h` of `z` (inputs: the start of a
@@ -70,7 +73,7 @@ impl Phases {
     fn event_in(&self, kind: Kind, z: &State, h: f64, end: &State) -> Option<(f64, Kind)> {
         let a = &self.gens[index(kind)];
         let mut first: Option<(f64, Kind)> = None;
-        for (w, next) in self.p.events(kind) {
+        for &(w, next) in &self.events[index(kind)] {
             let g = |d: f64| (w * advance(a, z, d))[0];
             let slope = |d: f64| (w * a * advance(a, z, d))[0];
             let (g0, g1) = ((w * z)[0], (w * end)[0]);

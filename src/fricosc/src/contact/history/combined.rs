@@ -111,7 +111,9 @@ pub(super) fn on_system(
         return super::history(shape, &stiff, &opts);
     }
     super::check_history(shape, 0.0, c.amp(), opts)?;
-    let report = crate::system::flat(c, sys)?;
+    // The attractor once: its events among the samples, then its forces.
+    let (report, orbit) = crate::system::attractor(c, sys)?;
+    let orbit = orbit.ok_or_else(|| Error::Internal { what: "a body with mass has an orbit".into() })?;
     let mut taus: Vec<(f64, Option<EventKind>)> =
         (0..opts.samples).map(|j| (TAU * j as f64 / opts.samples as f64, None)).collect();
     for e in &report.events {
@@ -125,7 +127,7 @@ pub(super) fn on_system(
     }
     taus.sort_by(|x, y| x.0.total_cmp(&y.0));
     let at: Vec<f64> = taus.iter().map(|x| x.0).collect();
-    let (_, forces) = crate::system::forces(c, sys, &at)?;
+    let forces = crate::system::sample(&orbit, &at);
     let samples = taus
         .iter()
         .zip(forces)
