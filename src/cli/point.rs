@@ -28,14 +28,7 @@ pub fn run(a: PointArgs) -> Result<()> {
         (Some(_), Some(_)) => {
             return Err(Error::Parse { context: "--system-stiffness".into(), reason: "is solved exactly only".into() })
         }
-        (None, Some(sys)) if shape.is_flat() => on_system(&c, &sys)?,
-        (None, Some(_)) => {
-            return Err(fricosc::Error::InvalidShape {
-                spec: shape.name().into(),
-                reason: "the system's mass and stiffness are solved for the flat punch".into(),
-            }
-            .into())
-        }
+        (None, Some(sys)) => on_system(&shape, &c, &sys)?,
         (Some(st), None) => stepped(&shape, &c, st)?,
         (None, None) => to_json(&shape.report(&c)?)?,
     };
@@ -67,9 +60,9 @@ fn stepped(shape: &Shape, c: &Conditions, st: fricosc::stepper::Stepping) -> Res
     Ok(v)
 }
 
-/// The flat punch on a system: the inputs and the attractor's report.
-fn on_system(c: &Conditions, sys: &fricosc::system::System) -> Result<serde_json::Value> {
-    let r = fricosc::system::flat(c, sys)?;
+/// A body on a system: the inputs and the attractor's report.
+fn on_system(shape: &Shape, c: &Conditions, sys: &fricosc::system::System) -> Result<serde_json::Value> {
+    let r = fricosc::system::solve(shape, c, sys)?;
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
     let mut v = serde_json::json!({"vhat": c.as_vhat(), "amp": c.amp(), "tangential_amp": t, "phase": phase,
         "system_stiffness": sys.stiffness, "frequency_ratio": sys.frequency_ratio, "damping": sys.damping});

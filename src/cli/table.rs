@@ -200,7 +200,7 @@ fn system_table(a: &TableArgs, shape: &fricosc::Shape, sys: &fricosc::system::Sy
             }
         }
     }
-    let rows = points.par_iter().map(|c| Ok(fricosc::system::flat(c, sys)?)).collect::<Result<Vec<_>>>()?;
+    let rows = points.par_iter().map(|c| Ok(fricosc::system::solve(&fricosc::Shape::flat(), c, sys)?)).collect::<Result<Vec<_>>>()?;
     let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "period", "standard_error"];
     let mut w =
         TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols).map_err(io_err)?;

@@ -403,7 +403,7 @@ fn point_on_a_system_reports_the_attractor() {
     let args = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--frequency-ratio", "0.5"];
     let v = json(&fricosc(&[&args[..], &["--damping", "0.3"]].concat(), None));
     let sys = fricosc::system::System::new(1.0, 0.5, 0.3).unwrap();
-    let r = fricosc::system::flat(&fricosc::Conditions::vhat(0.3, 0.5).unwrap(), &sys).unwrap();
+    let r = fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vhat(0.3, 0.5).unwrap(), &sys).unwrap();
     assert_eq!(v["mu_ratio"].as_f64().unwrap(), r.mu_ratio);
     assert_eq!(v["period"], 1);
     assert_eq!(v["events"].as_array().unwrap().len(), r.events.len());
@@ -416,7 +416,7 @@ fn point_on_a_system_reports_the_attractor() {
     assert_eq!(rows.len(), 2);
     for (row, vhat) in rows.iter().zip([0.3, 0.6]) {
         let c = fricosc::Conditions::vhat(vhat, 0.5).unwrap();
-        assert_eq!(row[5].parse::<f64>().unwrap(), fricosc::system::flat(&c, &sys).unwrap().mu_ratio);
+        assert_eq!(row[5].parse::<f64>().unwrap(), fricosc::system::solve(&fricosc::Shape::flat(), &c, &sys).unwrap().mu_ratio);
     }
     let zero = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "0"];
     for run in [

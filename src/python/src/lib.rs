@@ -314,7 +314,7 @@ fn point_system<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let c = oscillation(vhat, amp, t, phase, DEFAULT_TOL).map_err(to_py)?;
     let sys = fricosc::system::System::new(stiffness, frequency_ratio, damping).map_err(to_py)?;
-    let r = py.detach(|| fricosc::system::flat(&c, &sys)).map_err(to_py)?;
+    let r = py.detach(|| fricosc::system::solve(&fricosc::Shape::flat(), &c, &sys)).map_err(to_py)?;
     pythonize::pythonize(py, &r).map_err(serialise_err)
 }
 

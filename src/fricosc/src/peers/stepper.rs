@@ -370,20 +370,23 @@ pub(crate) fn evaluate_oscillation(
     })
 }
 
-/// `mu_macro/mu0` of the flat punch on a system with mass and stiffness
+/// `mu_macro/mu0` of `shape` on a system with mass and stiffness
 /// ([`crate::system`]) by time stepping, the independent check of its exact
 /// solver: from the stated start (the body at the drive's position with its
-/// velocity, the spring relaxed) `periods` periods of `steps_per_period`
+/// velocity, every spring relaxed) `periods` periods of `steps_per_period`
 /// steps, each the body's velocity then position (semi-implicit Euler, first
-/// order) and the contact force moved by the body's step and held in
-/// `[-B, B]` (as under a tangential oscillation); the mean over the last period. The
-/// attractor must be reached within the periods run (a period-1 orbit is
-/// assumed: the last period is the answer).
+/// order) and every contact force moved by the body's step and held in
+/// `[-B, B]` (as under a tangential oscillation); the mean over the last
+/// period. A curved body is the same [`crate::system::System::springs`]
+/// springs as the exact solver's finer discretisation. The attractor must be
+/// reached within the periods run (a period-1 orbit is assumed: the last
+/// period is the answer).
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] for a massless body (`Omega = 0`: no
 /// dynamics to step) or resolutions beyond the limits.
-pub fn system_flat(
+pub fn system(
+    shape: &crate::Shape,
     c: &crate::Conditions,
     sys: &crate::system::System,
     steps_per_period: usize,
@@ -393,8 +396,10 @@ pub fn system_flat(
     if om == 0.0 {
         return Err(Error::param("frequency-ratio", om, "stepping needs a body with mass (> 0)"));
     }
-    if steps_per_period == 0 || periods == 0 || steps_per_period as u128 * periods as u128 > MAX_STEPPING_WORK {
-        return Err(Error::param("steps-per-period", steps_per_period as f64, "steps x periods must be in 1..=1e11"));
+    let springs = crate::system::springs(shape, c.amp(), sys.springs)?;
+    let work = steps_per_period as u128 * periods as u128 * springs.len() as u128;
+    if steps_per_period == 0 || periods == 0 || work > MAX_STEPPING_WORK {
+        return Err(Error::param("steps-per-period", steps_per_period as f64, "steps x periods x springs must be in 1..=1e11"));
     }
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
     let (vhat, amp, kappa) = (c.as_vhat(), c.amp(), sys.stiffness);
@@ -402,18 +407,21 @@ pub fn system_flat(
     let drive = |tau: f64| (vhat * tau + t * (tau + phase).sin(), vhat + t * (tau + phase).cos());
     let h = TAU / steps_per_period as f64;
     let (mut x, mut v) = drive(0.0);
-    let mut f = 0.0;
+    let mut f = vec![0.0; springs.len()];
     let (mut sum_f, mut sum_b) = (0.0, 0.0);
     for k in 1..=steps_per_period * periods {
         let tau = h * (k - 1) as f64;
         let (xd, vd) = drive(tau);
-        v += h * (kappa * (xd - x) - damp * (v - vd) - f) / (om * om);
+        let total: f64 = springs.iter().zip(&f).map(|((w, _), fi)| w * fi).sum();
+        v += h * (kappa * (xd - x) - damp * (v - vd) - total) / (om * om);
         x += h * v;
-        let b = 1.0 - amp * (h * k as f64).cos();
-        f = update_two_way(f, b, h * v);
-        if k > steps_per_period * (periods - 1) {
-            sum_f += f;
-            sum_b += b.max(0.0);
+        let cos = amp * (h * k as f64).cos();
+        for ((w, b), fi) in springs.iter().zip(f.iter_mut()) {
+            *fi = update_two_way(*fi, b - cos, h * v);
+            if k > steps_per_period * (periods - 1) {
+                sum_f += w * *fi;
+                sum_b += w * (b - cos).max(0.0);
+            }
         }
     }
     Ok(sum_f / sum_b)

@@ -26,9 +26,12 @@
 //! by `kappa/(1 + kappa)` (the springs in series): answered by the stiff
 //! solver exactly.
 
+mod curved;
 mod period;
 mod phase;
+mod springs;
 
+pub use curved::{DEFAULT_SPRINGS, MAX_CURVED_PERIODS, MAX_SPRINGS};
 pub use period::SystemEvent;
 pub use phase::Kind;
 
@@ -49,6 +52,9 @@ pub struct System {
     pub frequency_ratio: f64,
     /// `zeta`, the system's damping ratio (`>= 0`).
     pub damping: f64,
+    /// A curved body's springs (the finer of the two discretisations; the
+    /// flat punch is one spring).
+    pub springs: usize,
 }
 
 impl System {
@@ -70,13 +76,26 @@ impl System {
                 "must be > 0 (without a system spring nothing drives the body)",
             ));
         }
-        Ok(System { stiffness, frequency_ratio, damping })
+        Ok(System { stiffness, frequency_ratio, damping, springs: DEFAULT_SPRINGS })
+    }
+
+    /// The system with a curved body discretised into `springs` springs
+    /// (compared with half as many; more springs: a smaller error, `N^-2`, at
+    /// a cost about proportional to `N`).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] unless `springs` is in `4..=`[`MAX_SPRINGS`].
+    pub fn with_springs(self, springs: usize) -> Result<System> {
+        if !(4..=MAX_SPRINGS).contains(&springs) {
+            return Err(Error::param("springs", springs as f64, "must be in 4..=16384"));
+        }
+        Ok(System { springs, ..self })
     }
 }
 
 /// Two states repeat where they differ by at most this (relative to 1 and the state).
 pub const REPEAT: f64 = 1e-9;
-/// Most periods run from the start before the answer is "no period".
+/// Most periods run from the start before the answer is "no period" (the flat punch).
 pub const MAX_PERIODS: usize = 4000;
 /// Most sampling steps run from the start (about two seconds); fewer
 /// periods than [`MAX_PERIODS`] where a period takes many (at least 20).
@@ -102,8 +121,14 @@ pub struct SystemReport {
     pub periods_run: usize,
     /// The Floquet multipliers `[re, im]` of the orbit (stable: all inside the unit circle).
     pub multipliers: Vec<[f64; 2]>,
-    /// The events of the orbit's first period.
+    /// The events of the orbit's first period (the flat punch).
     pub events: Vec<SystemEvent>,
+    /// A curved body's error estimate of `mu_ratio` (its springs' discretisation and the orbit's closure).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub error_estimate: Option<f64>,
+    /// The springs of a curved body's finest discretisation.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub springs: Option<usize>,
 }
 
 /// The reduced state of the period map: `(x, x', f)` at `tau = 0` and the phase.
@@ -134,20 +159,96 @@ fn map_k(ph: &Phases, s: &Reduced, k: usize) -> (Reduced, f64) {
     (reduce(&ph.p, kind, &z), int_f)
 }
 
-/// The steady state of the flat punch at `c` on the system `sys`.
+/// The steady state of `shape` at `c` on the system `sys`: the flat punch
+/// exactly, a curved body by its springs (the foundation as
+/// [`System::springs`] springs, each with its exact events, and as half as
+/// many: the Richardson value, with an error estimate).
+///
+/// ```
+/// use fricosc::system::{solve, System};
+/// use fricosc::{Conditions, Shape};
+///
+/// let sys = System::new(1.0, 0.5, 0.05)?;
+/// let r = solve(&Shape::flat(), &Conditions::vbar(0.3, 0.5)?, &sys)?;
+/// assert_eq!(r.period, Some(1));
+/// assert!(r.mu_ratio > 0.0 && r.mu_ratio < 1.0);
+/// # Ok::<(), fricosc::Error>(())
+/// ```
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] for bad inputs.
-pub fn flat(c: &Conditions, sys: &System) -> Result<SystemReport> {
-    Ok(attractor(c, sys)?.0)
+/// [`Error::InvalidParameter`] for bad inputs, and for a massless body
+/// (`frequency_ratio` 0) on a curved contact.
+pub fn solve(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<SystemReport> {
+    if shape.contact().single_spring() {
+        return Ok(attractor(c, sys)?.0);
+    }
+    curved::solve(shape, params(shape, c, sys)?, sys.springs)
+}
+
+/// The springs `(weight, 1 - G)` of `shape`'s discretisation into about
+/// `n` (the `curved` module's; the flat punch's one).
+pub(crate) fn springs(shape: &crate::Shape, amp: f64, n: usize) -> Result<Vec<(f64, f64)>> {
+    curved::discretise(shape, amp, n)
+}
+
+/// One period of a curved body's attractor on `sys` ([`System::springs`]
+/// springs, `curved::history`): the report and the normal and tangential
+/// forces at `taus`.
+pub(crate) fn curved_history(
+    shape: &crate::Shape,
+    c: &Conditions,
+    sys: &System,
+    taus: &[f64],
+) -> Result<(SystemReport, Vec<[f64; 2]>)> {
+    curved::history(shape, params(shape, c, sys)?, sys.springs, taus)
+}
+
+/// The checked parameters of a curved body's problem.
+fn params(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<Params> {
+    shape.check_amp(c.amp())?;
+    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+    Ok(Params {
+        kappa: sys.stiffness,
+        omega: sys.frequency_ratio,
+        zeta: sys.damping,
+        vhat: c.as_vhat(),
+        amp: c.amp(),
+        t,
+        phase,
+    })
+}
+
+/// The steady state of `shape` discretised into about `springs` springs
+/// (midpoints of equal cells, `curved` module docs), each spring's events
+/// exact: the problem a code with that many springs solves, its answer
+/// without an error estimate (the attractor found as [`solve`] finds it,
+/// without Newton).
+///
+/// # Errors
+/// As [`solve`]; [`Error::InvalidParameter`] for `springs` 0 or above 2^16.
+pub fn solve_discretised(shape: &crate::Shape, c: &Conditions, sys: &System, springs: usize) -> Result<SystemReport> {
+    if !(1..=1 << 16).contains(&springs) {
+        return Err(Error::param("springs", springs as f64, "must be in 1..=65536"));
+    }
+    let (mu_ratio, period, periods_run, standard_error, n) = curved::discretised(shape, params(shape, c, sys)?, springs)?;
+    Ok(SystemReport {
+        mu_ratio,
+        period,
+        standard_error,
+        periods_run,
+        multipliers: vec![],
+        events: vec![],
+        error_estimate: None,
+        springs: Some(n),
+    })
 }
 
 /// The contact force at the phases `taus` (ascending, in `[0, 2 pi)`) over
-/// the first period of the attractor [`flat`] reports (over the last period
+/// the first period of the attractor [`solve`] reports for the flat punch (over the last period
 /// run where it found none), in units of `mu0 kz u0`.
 ///
 /// # Errors
-/// As [`flat`]; [`Error::InvalidParameter`] for a massless body (its forces
+/// As [`solve`]; [`Error::InvalidParameter`] for a massless body (its forces
 /// are the stiff problem's at the scaled drive) or phases not ascending in `[0, 2 pi)`.
 pub fn forces(c: &Conditions, sys: &System, taus: &[f64]) -> Result<(SystemReport, Vec<f64>)> {
     if !taus.windows(2).all(|w| w[0] <= w[1]) || taus.iter().any(|t| !(0.0..std::f64::consts::TAU).contains(t)) {
@@ -181,6 +282,8 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
             periods_run: 0,
             multipliers: vec![],
             events: vec![],
+            error_estimate: None,
+            springs: None,
         };
         return Ok((report, None));
     }
@@ -220,6 +323,8 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
         periods_run: periods,
         multipliers: vec![],
         events: vec![],
+        error_estimate: None,
+        springs: None,
     };
     Ok((report, Some((ph, s))))
 }
@@ -233,7 +338,7 @@ fn close(a: &Reduced, b: &Reduced, tol: f64) -> bool {
 const CLOSED: f64 = 1e-10;
 
 /// The mean of `xs` and its standard error from batches of `size`.
-fn batch_mean(xs: &[f64], size: usize) -> (f64, f64) {
+pub(crate) fn batch_mean(xs: &[f64], size: usize) -> (f64, f64) {
     let batches: Vec<f64> = xs.chunks_exact(size).map(|c| c.iter().sum::<f64>() / size as f64).collect();
     let n = batches.len() as f64;
     let mean = batches.iter().sum::<f64>() / n;
@@ -277,6 +382,8 @@ fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<(SystemRep
         periods_run: run,
         multipliers,
         events,
+        error_estimate: None,
+        springs: None,
     };
     Some((report, s))
 }

@@ -36,7 +36,7 @@ pub(crate) struct Phases {
     gens: [Generator; 4],
     steps: [(f64, Generator); 4],
     /// Each kind's event functions (made once: they are checked every step).
-    events: [Vec<(SMatrix<f64, 1, 8>, Kind)>; 4],
+    events: [Vec<Event<Kind>>; 4],
 }
 
 fn index(kind: Kind) -> usize {
@@ -59,10 +59,7 @@ impl Phases {
         let gens = kinds.map(|k| p.generator(k));
         let steps = kinds.map(|k| {
             let a = gens[index(k)];
-            // The body's rates: roots of Omega^2 r^2 + damp r + k = 0.
-            let (c, k2) = (-a[(1, 1)], -a[(1, 0)]);
-            let fastest = 0.5 * (c + (c * c + 4.0 * k2.abs()).sqrt());
-            let h = (TWO_PI / 256.0).min(0.25 / fastest.max(1e-300));
+            let h = super::springs::sampling_step(&a);
             (h, (a * h).exp())
         });
         Phases { p, gens, steps, events: kinds.map(|k| p.events(k)) }
@@ -71,31 +68,7 @@ impl Phases {
     /// The first event of `kind` within `h` of `z` (inputs: the start of a
     /// step, the step's end state): offset, the kind that follows.
     fn event_in(&self, kind: Kind, z: &State, h: f64, end: &State) -> Option<(f64, Kind)> {
-        let a = &self.gens[index(kind)];
-        let mut first: Option<(f64, Kind)> = None;
-        for &(w, next) in &self.events[index(kind)] {
-            let g = |d: f64| (w * advance(a, z, d))[0];
-            let slope = |d: f64| (w * a * advance(a, z, d))[0];
-            let (g0, g1) = ((w * z)[0], (w * end)[0]);
-            let root = if g1 < 0.0 {
-                // Below 0 at the step's start too: the phase is already over (a
-                // force a rounding beyond its bound, a contact point a rounding
-                // past turning): it ends at once.
-                Some(if g0 >= 0.0 { bracketed(g, 0.0, h, 4.0 * f64::EPSILON).x } else { 0.0 })
-            } else if g0 > 0.0 && g1 >= 0.0 && (w * a * z)[0] < 0.0 && (w * a * end)[0] > 0.0 {
-                // A minimum inside the step: an event if it dips below 0.
-                let m = bracketed(slope, 0.0, h, 4.0 * f64::EPSILON).x;
-                (g(m) < 0.0).then(|| bracketed(g, 0.0, m, 4.0 * f64::EPSILON).x)
-            } else {
-                None
-            };
-            if let Some(d) = root {
-                if first.is_none_or(|f| d < f.0) {
-                    first = Some((d, next));
-                }
-            }
-        }
-        first
+        first_event(&self.gens[index(kind)], &self.events[index(kind)], z, h, end)
     }
 
     /// One period from `tau = 0` in phase `kind` (the state's `tau` 0):
@@ -178,4 +151,44 @@ impl Phases {
         (z[TAU], z[COS], z[SIN]) = (0.0, 1.0, 0.0);
         (kind, z, events, forces)
     }
+}
+
+/// An event function: the row `w` (the function is `w z`, positive inside
+/// the phase) and what its zero means.
+pub(crate) type Event<T> = (SMatrix<f64, 1, 8>, T);
+
+/// The first zero within `h` of `z` among `events` of the phase with
+/// generator `a` (`end` the state after `h`): its offset and tag. A
+/// function below 0 at the step's end has a zero in the step (bracketed),
+/// or is already below 0 at its start (a force a rounding beyond its bound
+/// after a switch, a contact point a rounding past turning): the phase ends
+/// at once. A minimum inside the step that dips below 0 between positive
+/// ends (a grazing event) is found from the derivative's sign change.
+pub(crate) fn first_event<T: Copy>(
+    a: &Generator,
+    events: &[Event<T>],
+    z: &State,
+    h: f64,
+    end: &State,
+) -> Option<(f64, T)> {
+    let mut first: Option<(f64, T)> = None;
+    for &(w, next) in events {
+        let g = |d: f64| (w * advance(a, z, d))[0];
+        let slope = |d: f64| (w * a * advance(a, z, d))[0];
+        let (g0, g1) = ((w * z)[0], (w * end)[0]);
+        let root = if g1 < 0.0 {
+            Some(if g0 >= 0.0 { bracketed(g, 0.0, h, 4.0 * f64::EPSILON).x } else { 0.0 })
+        } else if g0 > 0.0 && g1 >= 0.0 && (w * a * z)[0] < 0.0 && (w * a * end)[0] > 0.0 {
+            let m = bracketed(slope, 0.0, h, 4.0 * f64::EPSILON).x;
+            (g(m) < 0.0).then(|| bracketed(g, 0.0, m, 4.0 * f64::EPSILON).x)
+        } else {
+            None
+        };
+        if let Some(d) = root {
+            if first.as_ref().is_none_or(|f| d < f.0) {
+                first = Some((d, next));
+            }
+        }
+    }
+    first
 }

@@ -22,7 +22,7 @@ pub(crate) const X: usize = 0;
 pub(crate) const V: usize = 1;
 pub(crate) const INT_F: usize = 2;
 pub(crate) const Y0: usize = 3;
-const ONE: usize = 4;
+pub(crate) const ONE: usize = 4;
 pub(crate) const TAU: usize = 5;
 pub(crate) const COS: usize = 6;
 pub(crate) const SIN: usize = 7;
@@ -42,6 +42,15 @@ pub enum Kind {
     Free,
 }
 
+/// A contact force linear in the state: `x x + y0 y0 + one + cos cos tau`.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct Linear {
+    pub(crate) x: f64,
+    pub(crate) y0: f64,
+    pub(crate) one: f64,
+    pub(crate) cos: f64,
+}
+
 /// The parameters of the body and the drive (module docs).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Params {
@@ -55,43 +64,42 @@ pub(crate) struct Params {
 }
 
 impl Params {
+    /// The contact force of a phase of kind `kind` as a [`Linear`] form.
+    pub(crate) fn linear(&self, kind: Kind) -> Linear {
+        match kind {
+            Kind::Stick => Linear { x: 1.0, y0: -1.0, ..Linear::default() },
+            Kind::Forward => Linear { one: 1.0, cos: -self.amp, ..Linear::default() },
+            Kind::Backward => Linear { one: -1.0, cos: self.amp, ..Linear::default() },
+            Kind::Free => Linear::default(),
+        }
+    }
+
     /// `A` of a phase of kind `kind`.
     pub(crate) fn generator(&self, kind: Kind) -> Generator {
+        self.generator_of(self.linear(kind))
+    }
+
+    /// `A` of a phase whose contact force is `f`: the body's row
+    /// `Omega^2 x'' = kappa X_d + damp X_d' - damp x' - kappa x - f`, and
+    /// `(int f)' = f`.
+    pub(crate) fn generator_of(&self, f: Linear) -> Generator {
         let (kappa, om2) = (self.kappa, self.omega * self.omega);
         let damp = 2.0 * self.zeta * kappa.sqrt() * self.omega;
         let (sp, cp) = self.phase.sin_cos();
         let mut a = Generator::zeros();
         a[(X, V)] = 1.0;
-        // Omega^2 x'' = kappa X_d + damp X_d' - damp x' - k x (+ y0; -+ B).
         let mut row = [0.0; 8];
-        row[X] = -(if kind == Kind::Stick { kappa + 1.0 } else { kappa });
+        row[X] = -kappa - f.x;
         row[V] = -damp;
-        row[ONE] = damp * self.vhat;
+        row[Y0] = -f.y0;
+        row[ONE] = damp * self.vhat - f.one;
         row[TAU] = kappa * self.vhat;
-        row[COS] = self.t * (kappa * sp + damp * cp);
+        row[COS] = self.t * (kappa * sp + damp * cp) - f.cos;
         row[SIN] = self.t * (kappa * cp - damp * sp);
-        match kind {
-            Kind::Stick => row[Y0] = 1.0,
-            Kind::Forward => {
-                row[ONE] -= 1.0;
-                row[COS] += self.amp;
-            }
-            Kind::Backward => {
-                row[ONE] += 1.0;
-                row[COS] -= self.amp;
-            }
-            Kind::Free => {}
-        }
         for (j, r) in row.iter().enumerate() {
             a[(V, j)] = r / om2;
         }
-        // (int f)' = f.
-        match kind {
-            Kind::Stick => (a[(INT_F, X)], a[(INT_F, Y0)]) = (1.0, -1.0),
-            Kind::Forward => (a[(INT_F, ONE)], a[(INT_F, COS)]) = (1.0, -self.amp),
-            Kind::Backward => (a[(INT_F, ONE)], a[(INT_F, COS)]) = (-1.0, self.amp),
-            Kind::Free => {}
-        }
+        (a[(INT_F, X)], a[(INT_F, Y0)], a[(INT_F, ONE)], a[(INT_F, COS)]) = (f.x, f.y0, f.one, f.cos);
         a[(TAU, ONE)] = 1.0;
         a[(COS, SIN)] = -1.0;
         a[(SIN, COS)] = 1.0;
@@ -117,7 +125,7 @@ impl Params {
     /// positive inside the phase) with the kind that follows where it falls
     /// through 0: a stick ends where `f` reaches `+-B`, a slip where the
     /// contact point stops (`x' -+ B' = 0`).
-    pub(crate) fn events(&self, kind: Kind) -> Vec<(SMatrix<f64, 1, 8>, Kind)> {
+    pub(crate) fn events(&self, kind: Kind) -> Vec<super::period::Event<Kind>> {
         let mut to_forward = SMatrix::<f64, 1, 8>::zeros();
         let mut to_backward = SMatrix::<f64, 1, 8>::zeros();
         match kind {

@@ -277,7 +277,7 @@ fn a_curved_combined_history_averages_to_the_exact_mu() {
 /// a massless body's is the stiff one at the scaled drive.
 #[test]
 fn a_history_on_a_system_averages_to_its_mu() {
-    use fricosc::system::{flat, System};
+    use fricosc::system::{solve, System};
     for (om, amp) in [(0.5, 0.5), (0.5, 1.5), (1.2, 0.5)] {
         let c = fricosc::Conditions::vhat(0.3, amp).unwrap();
         let sys = System::new(1.0, om, 0.3).unwrap();
@@ -288,7 +288,7 @@ fn a_history_on_a_system_averages_to_its_mu() {
             v
         };
         let mu = mean(&close(|s| s.tangential)) / mean(&close(|s| s.normal));
-        let exact = flat(&c, &sys).unwrap().mu_ratio;
+        let exact = solve(&Shape::flat(), &c, &sys).unwrap().mu_ratio;
         assert!((mu - exact).abs() < 1e-7, "Omega {om} amp {amp}: {mu} vs {exact}");
         assert!(h.samples.iter().all(|s| s.tangential.abs() <= s.normal));
     }
@@ -302,4 +302,29 @@ fn a_history_on_a_system_averages_to_its_mu() {
     .unwrap();
     let h = history(&Shape::flat(), &c, &massless).unwrap();
     assert!(h.samples.iter().zip(&stiff.samples).all(|(a, b)| a.tangential == b.tangential));
+}
+
+/// A curved body's history on a system is one period of its springs'
+/// attractor: its trapezoidal mean is that discretisation's `mu` (the
+/// springs' own events are not samples: the trapezoid's error is second
+/// order, observed below 1e-8 at 20,000 samples), the force within its bound.
+#[test]
+fn a_curved_history_on_a_system_averages_to_its_springs_mu() {
+    use fricosc::system::{solve_discretised, System};
+    for (shape, amp) in [(Shape::parabolic(), 0.5), (Shape::cone(), 1.5)] {
+        let c = fricosc::Conditions::vhat(0.3, amp).unwrap();
+        let sys = System::new(1.0, 0.5, 0.3).unwrap().with_springs(64).unwrap();
+        let h = history(&shape, &c, &HistoryOptions::default().with_samples(20_000).with_system(sys)).unwrap();
+        let close = |f: fn(&fricosc::history::Sample) -> f64| {
+            let mut v: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, f(s))).collect();
+            v.push((std::f64::consts::TAU, v[0].1));
+            v
+        };
+        let mu = mean(&close(|s| s.tangential)) / mean(&close(|s| s.normal));
+        let exact = solve_discretised(&shape, &c, &sys, 64).unwrap().mu_ratio;
+        assert!((mu - exact).abs() < 1e-7, "{} amp {amp}: {mu} vs {exact}", shape.name());
+        let excess = h.samples.iter().map(|s| s.tangential.abs() - s.normal).fold(f64::MIN, f64::max);
+        // Rounding of a sum of 64 springs (observed 1.0e-14).
+        assert!(excess <= 1e-13, "{} amp {amp}: above the bound by {excess:e}", shape.name());
+    }
 }

@@ -24,4 +24,5 @@ mod reference;
 mod report_fields;
 mod stepper;
 mod system;
+mod system_curved;
 mod table;

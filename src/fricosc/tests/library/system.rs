@@ -5,8 +5,13 @@
 //! stiff system is the seed's answer (the difference falls like `1/kappa`), a
 //! light body with damping the massless one (like `Omega^2`).
 use crate::common::{data_cases, exact_error, exceeds};
-use fricosc::system::{flat, System};
-use fricosc::Conditions;
+use fricosc::system::{solve, System, SystemReport};
+use fricosc::{Conditions, Shape};
+
+/// The flat punch on `sys`.
+fn flat(c: &Conditions, sys: &System) -> fricosc::Result<SystemReport> {
+    solve(&Shape::flat(), c, sys)
+}
 
 /// The published bar, and ten times the largest error observed (1.8e-14).
 const PUBLISHED: f64 = 1e-12;
@@ -80,7 +85,7 @@ fn bad_systems_are_named() {
     assert_eq!(name(System::new(f64::INFINITY, 1.0, 0.1).unwrap_err()), "system-stiffness");
 }
 
-/// The time-stepping peer with the body (`stepper::system_flat`, semi-implicit
+/// The time-stepping peer with the body (`stepper::system`, semi-implicit
 /// Euler and the stop operator step by step, 40 periods) converges to the
 /// exact attractor like the step: 10x the steps, a tenth of the error.
 #[test]
@@ -90,7 +95,7 @@ fn the_stepping_peer_converges_to_the_exact_value() {
     for (k, om, z, v, a, t, p) in cases {
         let (c, sys) = (at(v, a, t, p), System::new(k, om, z).unwrap());
         let exact = flat(&c, &sys).unwrap().mu_ratio;
-        let err = |m: usize| (fricosc::stepper::system_flat(&c, &sys, m, 40).unwrap() - exact).abs();
+        let err = |m: usize| (fricosc::stepper::system(&Shape::flat(), &c, &sys, m, 40).unwrap() - exact).abs();
         let (e3, e4) = (err(1_000), err(10_000));
         // Observed: 1.0e-5, 6.4e-5, 3.7e-5 at 10^4 steps; ratios 10.0, 10.0, 11.5.
         assert!(e4 < 7e-4 && (7.0..14.0).contains(&(e3 / e4)), "{c:?}: {e3:e} then {e4:e}");

@@ -86,9 +86,12 @@ pub(super) fn foundation_samples(
     Ok(rows)
 }
 
-/// The flat punch on a system with mass and stiffness: one period of the
-/// attractor ([`crate::system::forces`]), its events among the samples; a
-/// massless body is the stiff problem at the drive scaled by `kappa/(1 + kappa)`.
+/// A body on a system with mass and stiffness: one period of the attractor.
+/// The flat punch's exactly ([`crate::system::forces`]), its events among
+/// the samples, a massless body the stiff problem at the drive scaled by
+/// `kappa/(1 + kappa)`; a curved body's as its springs
+/// ([`crate::system::System::springs`]), every spring's events exact (not
+/// listed), the forces over the normal force at the mean indentation.
 pub(super) fn on_system(
     shape: &crate::shape::Shape,
     c: &Conditions,
@@ -97,13 +100,31 @@ pub(super) fn on_system(
 ) -> Result<super::History> {
     use crate::error::Error;
     use crate::system::Kind;
-    if !shape.is_flat() || opts.periods != 1 || !opts.spring_at.is_empty() {
+    if opts.periods != 1 || !opts.spring_at.is_empty() {
         return Err(Error::InvalidShape {
             spec: shape.name().into(),
-            reason: "a history on a system is the flat punch's, one period".into(),
+            reason: "a history on a system is one period of the contact's total force".into(),
         });
     }
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+    let units = format!(
+        "{}; on a system: K/kx {}, omega/omega_c {}, zeta {}",
+        super::UNITS,
+        sys.stiffness,
+        sys.frequency_ratio,
+        sys.damping
+    );
+    if !shape.is_flat() {
+        super::check_history(shape, 0.0, c.amp(), opts)?;
+        let taus: Vec<f64> = (0..opts.samples).map(|j| TAU * j as f64 / opts.samples as f64).collect();
+        let (_, forces) = crate::system::curved_history(shape, c, sys, &taus)?;
+        let samples = taus
+            .iter()
+            .zip(forces)
+            .map(|(&tau, [normal, f])| Sample { tau, normal, tangential: f, event: None, springs: vec![] })
+            .collect();
+        return Ok(super::History::new(shape, c, units, vec![], samples));
+    }
     if sys.frequency_ratio == 0.0 {
         let k = sys.stiffness / (1.0 + sys.stiffness);
         let stiff = Conditions::vhat(c.as_vhat() * k, c.amp())?.with_tangential(t * k, phase)?;
@@ -136,12 +157,5 @@ pub(super) fn on_system(
             Sample { tau, normal, tangential: f.clamp(-normal, normal), event, springs: vec![] }
         })
         .collect();
-    let units = format!(
-        "{}; on a system: K/kx {}, omega/omega_c {}, zeta {}",
-        super::UNITS,
-        sys.stiffness,
-        sys.frequency_ratio,
-        sys.damping
-    );
     Ok(super::History::new(shape, c, units, vec![], samples))
 }

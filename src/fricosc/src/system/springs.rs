@@ -1,0 +1,259 @@
+//! A curved body on a system: the MDR foundation as `N` springs, each with
+//! its exact events. Spring `i` (weight `w_i`, its share of the contact's
+//! tangential stiffness) has the bound `B_i = (b_i - amp cos tau)_+`,
+//! `b_i = 1 - G(z_i)`. In a phase where the sets of stuck, forward- and
+//! backward-slipping and free springs are fixed, the total force
+//!
+//! `F = sum_stuck w_i (x - y_i) + sum_fwd w_i B_i - sum_bwd w_i B_i`
+//!
+//! is linear in `(x, 1, cos tau)`, so the phase is the flat punch's linear
+//! system ([`super::phase`]) with other coefficients, advanced in closed
+//! form. A stuck spring slips forward where `x + amp cos tau` reaches its
+//! level `l_i = y_i + b_i`, backward where `x - amp cos tau` falls to
+//! `m_i = y_i - b_i`: only the extreme level of the stuck set is an event
+//! function. All forward-slipping springs stick again together, where the
+//! contact point stops (`x' = B_i' = amp sin tau`, the same for every
+//! spring), with the common level `x + amp cos tau` (kept as one number, so
+//! the group slips again as one); likewise backward. Contact is gained and
+//! lost at the closed-form zeros of `B_i`.
+
+use super::period::{first_event, Event};
+use super::phase::{advance, Generator, Linear, Params, State, COS, INT_F, ONE, SIN, V, X};
+use nalgebra::SMatrix;
+use std::f64::consts::TAU as TWO_PI;
+
+/// Most transitions of zero length in a row before a phase is held for a step.
+const MAX_FLIPS: usize = 8;
+
+/// What one spring does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Spring {
+    /// Holding: it slips forward where `x + amp cos tau = l`, backward where
+    /// `x - amp cos tau = m` (`l - m = 2 b`).
+    Stuck { l: f64, m: f64 },
+    /// Slipping forward (`f = B`).
+    Forward,
+    /// Slipping backward (`f = -B`).
+    Backward,
+    /// Out of contact.
+    Free,
+}
+
+/// The transitions inside a phase.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Transition {
+    /// The stuck springs at the lowest level `l` slip forward.
+    SlipForward(f64),
+    /// Those at the highest `m` slip backward.
+    SlipBackward(f64),
+    /// The forward-slipping springs stick.
+    StopForward,
+    /// The backward-slipping ones stick.
+    StopBackward,
+}
+
+/// The springs of one discretisation and the drive.
+pub(crate) struct Foundation {
+    pub(crate) p: Params,
+    /// Weights and base bounds `b_i = 1 - G(z_i)`.
+    pub(crate) w: Vec<f64>,
+    pub(crate) b: Vec<f64>,
+    /// Contact gains and losses in a period: `(tau, spring, gained)`, by `tau`.
+    contacts: Vec<(f64, usize, bool)>,
+    /// `sum w_i <B_i>`: the mean normal force.
+    pub(crate) mean_b: f64,
+}
+
+impl Foundation {
+    /// Springs `(w_i, b_i)` (each `b_i > -amp`: it touches in a period).
+    pub(crate) fn new(p: Params, springs: &[(f64, f64)]) -> Foundation {
+        let (w, b): (Vec<f64>, Vec<f64>) = springs.iter().copied().unzip();
+        let mut contacts = vec![];
+        for (i, &bi) in b.iter().enumerate() {
+            if p.amp > 0.0 && bi < p.amp {
+                let gain = (bi / p.amp).clamp(-1.0, 1.0).acos();
+                contacts.push((gain, i, true));
+                contacts.push((TWO_PI - gain, i, false));
+            }
+        }
+        contacts.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mean = |bi: f64| if p.amp == 0.0 { bi } else { p.amp * crate::model::spring::mean_normal(bi / p.amp) };
+        let mean_b = w.iter().zip(&b).map(|(wi, &bi)| wi * mean(bi)).sum();
+        Foundation { p, w, b, contacts, mean_b }
+    }
+
+    /// The state at the stated start: springs in contact at `tau = 0` stuck
+    /// and relaxed at the body's position `x`, the others free.
+    pub(crate) fn start(&self, x: f64) -> Vec<Spring> {
+        self.b
+            .iter()
+            .map(|&bi| if bi - self.p.amp > 0.0 { Spring::Stuck { l: x + bi, m: x - bi } } else { Spring::Free })
+            .collect()
+    }
+
+    /// The total force of `springs` as a linear form.
+    fn linear(&self, springs: &[Spring]) -> Linear {
+        let mut f = Linear::default();
+        for ((s, &wi), &bi) in springs.iter().zip(&self.w).zip(&self.b) {
+            match *s {
+                Spring::Stuck { l, .. } => {
+                    f.x += wi;
+                    f.one += wi * (bi - l);
+                }
+                Spring::Forward => {
+                    f.one += wi * bi;
+                    f.cos -= wi * self.p.amp;
+                }
+                Spring::Backward => {
+                    f.one -= wi * bi;
+                    f.cos += wi * self.p.amp;
+                }
+                Spring::Free => {}
+            }
+        }
+        f
+    }
+
+    /// The event functions of the phase of `springs`.
+    fn events(&self, springs: &[Spring]) -> Vec<Event<Transition>> {
+        let amp = self.p.amp;
+        let mut out = vec![];
+        let stuck = springs.iter().filter_map(|s| if let Spring::Stuck { l, m } = *s { Some((l, m)) } else { None });
+        let (lo, hi) = stuck.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), (l, m)| (lo.min(l), hi.max(m)));
+        let row = |entries: &[(usize, f64)]| {
+            let mut w = SMatrix::<f64, 1, 8>::zeros();
+            for &(j, v) in entries {
+                w[j] = v;
+            }
+            w
+        };
+        if lo.is_finite() {
+            out.push((row(&[(ONE, lo), (X, -1.0), (COS, -amp)]), Transition::SlipForward(lo)));
+            out.push((row(&[(ONE, -hi), (X, 1.0), (COS, -amp)]), Transition::SlipBackward(hi)));
+        }
+        if springs.contains(&Spring::Forward) {
+            out.push((row(&[(V, 1.0), (SIN, -amp)]), Transition::StopForward));
+        }
+        if springs.contains(&Spring::Backward) {
+            out.push((row(&[(V, -1.0), (SIN, -amp)]), Transition::StopBackward));
+        }
+        out
+    }
+
+    fn apply(&self, t: Transition, springs: &mut [Spring], z: &State) {
+        let amp = self.p.amp;
+        for (s, &bi) in springs.iter_mut().zip(&self.b) {
+            *s = match (t, *s) {
+                (Transition::SlipForward(level), Spring::Stuck { l, .. }) if l <= level => Spring::Forward,
+                (Transition::SlipBackward(level), Spring::Stuck { m, .. }) if m >= level => Spring::Backward,
+                (Transition::StopForward, Spring::Forward) => {
+                    let l = z[X] + amp * z[COS];
+                    Spring::Stuck { l, m: l - 2.0 * bi }
+                }
+                (Transition::StopBackward, Spring::Backward) => {
+                    let m = z[X] - amp * z[COS];
+                    Spring::Stuck { l: m + 2.0 * bi, m }
+                }
+                (_, s) => s,
+            };
+        }
+    }
+
+    /// Spring `i` touches (`gained`) or leaves: a spring touching is stuck at
+    /// `f = 0`, unless the body outruns the bound's growth `amp sin tau`.
+    fn contact(&self, i: usize, gained: bool, spring: &mut Spring, z: &State) {
+        let rise = self.p.amp * z[SIN];
+        *spring = if !gained {
+            Spring::Free
+        } else if z[V] > rise {
+            Spring::Forward
+        } else if z[V] < -rise {
+            Spring::Backward
+        } else {
+            Spring::Stuck { l: z[X] + self.b[i], m: z[X] - self.b[i] }
+        };
+    }
+
+    /// Each spring's force at `tau = 0` of the state `(x, springs)`, with its kind.
+    pub(crate) fn forces_at_start(&self, x: f64, springs: &[Spring]) -> Vec<(u8, f64)> {
+        let amp = self.p.amp;
+        springs
+            .iter()
+            .zip(&self.b)
+            .map(|(s, &bi)| match *s {
+                Spring::Stuck { l, .. } => (0, x - l + bi),
+                Spring::Forward => (1, bi - amp),
+                Spring::Backward => (2, amp - bi),
+                Spring::Free => (3, 0.0),
+            })
+            .collect()
+    }
+
+    /// One period from `tau = 0` of the body `(x, x')` and `springs`
+    /// (updated): the body's state at `2 pi` shifted back by a period of the
+    /// drive, `int F` over the period, and `F` at each of `samples`
+    /// (ascending in `[0, 2 pi)`).
+    pub(crate) fn period(&self, x: f64, v: f64, springs: &mut [Spring], samples: &[f64]) -> (f64, f64, f64, Vec<f64>) {
+        let mut z = self.p.start();
+        (z[X], z[V], z[INT_F]) = (x, v, 0.0);
+        let mut forces = Vec::with_capacity(samples.len());
+        let (mut tau, mut next, mut flips) = (0.0, 0, 0);
+        while tau < TWO_PI {
+            let f = self.linear(springs);
+            let a = self.p.generator_of(f);
+            let step = sampling_step(&a);
+            let e = (a * step).exp();
+            let events = self.events(springs);
+            loop {
+                let rest = TWO_PI - tau;
+                let mut h = step.min(rest);
+                let contact = self.contacts.get(next).map(|c| c.0).filter(|&t| t <= tau + h);
+                if let Some(t) = contact {
+                    h = (t - tau).max(0.0);
+                }
+                let end = if h == step { e * z } else { advance(&a, &z, h) };
+                let event = if flips < MAX_FLIPS { first_event(&a, &events, &z, h, &end) } else { None };
+                let reach = tau + event.map_or(h, |e| e.0);
+                while let Some(&at) = samples.get(forces.len()).filter(|&&at| at <= reach) {
+                    let zs = advance(&a, &z, (at - tau).max(0.0));
+                    forces.push(f.x * zs[X] + f.one + f.cos * zs[COS]);
+                }
+                if let Some((d, t)) = event {
+                    flips = if d == 0.0 { flips + 1 } else { 0 };
+                    z = advance(&a, &z, d);
+                    tau += d;
+                    self.apply(t, springs, &z);
+                    break;
+                }
+                flips = 0;
+                (z, tau) = (end, if h == rest { TWO_PI } else { tau + h });
+                if let Some(t) = contact {
+                    while let Some(&(_, i, gained)) = self.contacts.get(next).filter(|c| c.0 == t) {
+                        self.contact(i, gained, &mut springs[i], &z);
+                        next += 1;
+                    }
+                    break;
+                }
+                if tau >= TWO_PI {
+                    break;
+                }
+            }
+        }
+        let shift = TWO_PI * self.p.vhat;
+        for s in springs.iter_mut() {
+            if let Spring::Stuck { l, m } = s {
+                (*l, *m) = (*l - shift, *m - shift);
+            }
+        }
+        (z[X] - shift, z[V], z[INT_F], forces)
+    }
+}
+
+/// A quarter of the fastest time scale of the phase `a` (at most the
+/// drive's `2 pi/256`): the body's rates are the roots of
+/// `Omega^2 r^2 + damp r + k = 0`.
+pub(crate) fn sampling_step(a: &Generator) -> f64 {
+    let (c, k2) = (-a[(V, V)], -a[(V, X)]);
+    let fastest = 0.5 * (c + (c * c + 4.0 * k2.abs()).sqrt());
+    (TWO_PI / 256.0).min(0.25 / fastest.max(1e-300))
+}
