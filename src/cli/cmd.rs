@@ -195,7 +195,7 @@ impl TangentialPoint {
 #[derive(Args)]
 pub struct SystemPoint {
     /// The system's tangential stiffness over the contact's, kappa = K/kx (> 0; without it the
-    /// system is stiff, the seed's problem). Flat punch.
+    /// system is stiff, the seed's problem).
     #[arg(long, allow_hyphen_values = true, value_parser = number)]
     pub system_stiffness: Option<f64>,
     /// With --system-stiffness: omega over the contact's natural frequency sqrt(kx/m) (default 0:
@@ -208,10 +208,15 @@ pub struct SystemPoint {
 }
 
 impl SystemPoint {
-    /// The system, if given.
-    pub fn system(&self) -> Result<Option<fricosc::system::System>> {
+    /// The system, if given, with a curved body's `springs` (by default
+    /// [`fricosc::system::DEFAULT_SPRINGS`]).
+    pub fn system(&self, springs: Option<usize>) -> Result<Option<fricosc::system::System>> {
         let Some(k) = self.system_stiffness else { return Ok(None) };
-        Ok(Some(fricosc::system::System::new(k, self.frequency_ratio.unwrap_or(0.0), self.damping.unwrap_or(0.0))?))
+        let sys = fricosc::system::System::new(k, self.frequency_ratio.unwrap_or(0.0), self.damping.unwrap_or(0.0))?;
+        Ok(Some(match springs {
+            Some(n) => sys.with_springs(n)?,
+            None => sys,
+        }))
     }
 }
 
@@ -282,7 +287,9 @@ pub struct MethodArgs {
     /// Time steps per period, 1 to 1e8 (only with --method stepping; default 1000).
     #[arg(long, allow_hyphen_values = true)]
     pub steps_per_period: Option<usize>,
-    /// Springs of an MDR foundation, 1 to 1e8 (only with --method stepping; default 1000).
+    /// Springs of an MDR foundation: with --method stepping 1 to 1e8 (default 1000); on a system
+    /// (--system-stiffness) 4 to 16384 (default 256; compared with half as many for the error
+    /// estimate, which falls like 1/N^2).
     #[arg(long, allow_hyphen_values = true)]
     pub springs: Option<usize>,
 }
@@ -293,8 +300,19 @@ pub const DEFAULT_STEPPING: usize = 1000;
 impl MethodArgs {
     /// The stepping resolution, or an error for stepping options without `--method stepping`.
     pub fn stepping(&self) -> Result<Option<Stepping>> {
+        self.stepping_with(false)
+    }
+
+    /// The springs of a curved body on a system (`--springs` with the exact method).
+    pub fn system_springs(&self) -> Option<usize> {
+        self.springs.filter(|_| self.method == MethodArg::Exact)
+    }
+
+    /// [`MethodArgs::stepping`], where `--springs` also serves a system's curved body (`on_system`).
+    pub fn stepping_with(&self, on_system: bool) -> Result<Option<Stepping>> {
         if self.method != MethodArg::Stepping {
-            if let Some(name) = [("--steps-per-period", self.steps_per_period), ("--springs", self.springs)]
+            let springs = self.springs.filter(|_| !on_system);
+            if let Some(name) = [("--steps-per-period", self.steps_per_period), ("--springs", springs)]
                 .iter()
                 .find(|(_, v)| v.is_some())
                 .map(|(n, _)| *n)

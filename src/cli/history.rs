@@ -88,9 +88,9 @@ pub struct HistoryArgs {
     /// Uniform samples over all periods (event times are added).
     #[arg(long, default_value_t = 400)]
     pub samples: usize,
-    /// Springs summed for curved shapes.
-    #[arg(long, default_value_t = 4000)]
-    pub springs: usize,
+    /// Springs summed for curved shapes (default 4000; on a system 256, 4 to 16384).
+    #[arg(long)]
+    pub springs: Option<usize>,
     /// Curved shapes: report these springs too (positions x/x_c, comma list; JSON only).
     #[arg(long, allow_hyphen_values = true, value_parser = list)]
     pub spring_at: Option<List>,
@@ -105,6 +105,9 @@ pub struct HistoryArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub steps_per_period: Option<usize>,
 }
+
+/// Springs a stiff curved history sums by default.
+const DEFAULT_HISTORY_SPRINGS: usize = 4000;
 
 pub fn run(a: HistoryArgs) -> Result<()> {
     let stepping = match (a.method, a.steps_per_period) {
@@ -140,9 +143,9 @@ pub fn run(a: HistoryArgs) -> Result<()> {
             let opts = fricosc::history::HistoryOptions::default()
                 .with_periods(a.periods)
                 .with_samples(a.samples)
-                .with_springs(a.springs)
+                .with_springs(a.springs.unwrap_or(DEFAULT_HISTORY_SPRINGS))
                 .with_spring_at(chosen);
-            let opts = match a.system.system()? {
+            let opts = match a.system.system(a.springs)? {
                 Some(sys) => opts.with_system(sys),
                 None => opts,
             };

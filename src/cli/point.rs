@@ -24,7 +24,8 @@ pub fn run(a: PointArgs) -> Result<()> {
     let shape = crate::input::parse_shape(&a.common.shape)?;
     let tangential = a.tangential.oscillation(&a.velocity)?;
     let c = a.common.conditions(a.velocity.velocity()?, a.amp, tangential)?;
-    let body = match (a.common.method.stepping()?, a.system.system()?) {
+    let with_system = a.system.system_stiffness.is_some();
+    let body = match (a.common.method.stepping_with(with_system)?, a.system.system(a.common.method.system_springs())?) {
         (Some(_), Some(_)) => {
             return Err(Error::Parse { context: "--system-stiffness".into(), reason: "is solved exactly only".into() })
         }

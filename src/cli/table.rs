@@ -102,7 +102,7 @@ pub fn run(a: TableArgs) -> Result<()> {
     let tol = a.common.tol();
     let amps = &a.amp.0;
     let (vels, is_vhat) = a.velocity.values();
-    if let Some(sys) = a.system.system()? {
+    if let Some(sys) = a.system.system(a.common.method.system_springs())? {
         return system_table(&a, &shape, &sys);
     }
     if let Some((ts, phases)) = a.tangential.values(is_vhat)? {
@@ -171,14 +171,15 @@ pub fn run(a: TableArgs) -> Result<()> {
     w.finish().map_err(io_err)
 }
 
-/// A table of the flat punch on a system (`fricosc::system`): every (amp, T,
-/// phase, velocity), columns vhat, amp, tangential_amp, phase, mu_ratio,
-/// period (empty where none was found), standard_error (where none).
+/// A table of a body on a system (`fricosc::system`): every (amp, T, phase,
+/// velocity), columns vhat, amp, tangential_amp, phase, mu_ratio, period
+/// (empty where none was found), standard_error (where none), error_estimate
+/// (a curved body's).
 fn system_table(a: &TableArgs, shape: &fricosc::Shape, sys: &fricosc::system::System) -> Result<()> {
-    if !shape.is_flat() || a.common.method.stepping()?.is_some() || a.velocity.over_t() {
+    if a.common.method.stepping_with(true)?.is_some() || a.velocity.over_t() {
         return Err(Error::Parse {
             context: "--system-stiffness".into(),
-            reason: "is solved exactly for the flat punch, at --vbar or --vhat".into(),
+            reason: "is solved exactly, at --vbar or --vhat".into(),
         });
     }
     let (vels, is_vhat) = a.velocity.values();
@@ -200,16 +201,17 @@ fn system_table(a: &TableArgs, shape: &fricosc::Shape, sys: &fricosc::system::Sy
             }
         }
     }
-    let rows = points.par_iter().map(|c| Ok(fricosc::system::solve(&fricosc::Shape::flat(), c, sys)?)).collect::<Result<Vec<_>>>()?;
-    let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "period", "standard_error"];
+    let rows = points.par_iter().map(|c| Ok(fricosc::system::solve(shape, c, sys)?)).collect::<Result<Vec<_>>>()?;
+    let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "period", "standard_error", "error_estimate"];
     let mut w =
         TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols).map_err(io_err)?;
     for (c, r) in points.iter().zip(&rows) {
         let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
         let period = r.period.map_or(Cell::Num(f64::NAN), |k| Cell::Num(k as f64));
         let se = Cell::Num(r.standard_error.unwrap_or(f64::NAN));
+        let est = Cell::Num(r.error_estimate.unwrap_or(f64::NAN));
         let row = [Cell::Num(c.as_vhat()), Cell::Num(c.amp()), Cell::Num(t), Cell::Num(phase), Cell::Num(r.mu_ratio)];
-        w.row(&[&row[..], &[period, se]].concat()).map_err(io_err)?;
+        w.row(&[&row[..], &[period, se, est]].concat()).map_err(io_err)?;
     }
     w.finish().map_err(io_err)
 }

@@ -396,8 +396,9 @@ fn plot_draws_the_users_curves_and_refuses_bad_requests() {
 }
 
 /// `point` on a system with mass and stiffness: the library's attractor bit
-/// for bit (its period, multipliers and events); a curved shape and the
-/// stepping method are refused, as is a system without stiffness.
+/// for bit (its period, multipliers and events; a curved body's error
+/// estimate and springs); the stepping method is refused, as are a system
+/// without stiffness and a massless curved body.
 #[test]
 fn point_on_a_system_reports_the_attractor() {
     let args = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--frequency-ratio", "0.5"];
@@ -418,9 +419,16 @@ fn point_on_a_system_reports_the_attractor() {
         let c = fricosc::Conditions::vhat(vhat, 0.5).unwrap();
         assert_eq!(row[5].parse::<f64>().unwrap(), fricosc::system::solve(&fricosc::Shape::flat(), &c, &sys).unwrap().mu_ratio);
     }
+    let curved = json(&fricosc(&[&args[..], &["--damping", "0.3", "--shape", "cone", "--springs", "32"]].concat(), None));
+    let r = fricosc::system::solve(&fricosc::Shape::cone(), &fricosc::Conditions::vhat(0.3, 0.5).unwrap(), &sys.with_springs(32).unwrap())
+        .unwrap();
+    assert_eq!(curved["mu_ratio"].as_f64().unwrap(), r.mu_ratio);
+    assert_eq!(curved["error_estimate"].as_f64(), r.error_estimate);
+    assert_eq!(curved["springs"].as_u64(), r.springs.map(|n| n as u64));
     let zero = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "0"];
+    let massless = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--shape", "cone"];
     for run in [
-        [&args[..], &["--shape", "parabolic"]].concat(),
+        massless.to_vec(),
         [&args[..], &["--method", "stepping"]].concat(),
         zero.to_vec(),
     ] {
@@ -429,7 +437,7 @@ fn point_on_a_system_reports_the_attractor() {
         assert!(out.stdout.is_empty());
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(
-            err.contains("flat punch") || err.contains("exactly only") || err.contains("system-stiffness = 0"),
+            err.contains("massless body") || err.contains("exactly only") || err.contains("system-stiffness = 0"),
             "{err}"
         );
     }

@@ -16,5 +16,6 @@ mod hostile;
 mod scene;
 mod stress;
 mod suite;
+mod system_cli;
 mod users;
 mod validate;

@@ -101,6 +101,9 @@ impl<'de> Visitor<'de> for Fields {
                 "vhat" => Some(2),
                 "tangential_amp" => Some(3),
                 "phase" => Some(4),
+                "system_stiffness" => Some(5),
+                "frequency_ratio" => Some(6),
+                "damping" => Some(7),
                 _ => None,
             };
             match (key.as_ref(), slot) {

@@ -88,17 +88,18 @@ impl Format {
 /// numbers are refused where they are read). Eight bytes each, as rows are
 /// moved by the million.
 #[derive(Debug, Clone, Copy)]
-struct Inputs([f64; 5]);
+struct Inputs([f64; 8]);
 
 impl Default for Inputs {
     fn default() -> Self {
-        Inputs([f64::NAN; 5])
+        Inputs([f64::NAN; 8])
     }
 }
 
 impl Inputs {
     /// The numeric fields a row is read for.
-    const NAMES: [&'static str; 5] = ["vbar", "amp", "vhat", "tangential_amp", "phase"];
+    const NAMES: [&'static str; 8] =
+        ["vbar", "amp", "vhat", "tangential_amp", "phase", "system_stiffness", "frequency_ratio", "damping"];
 
     /// The slot of the field `name`, if it is one of [`Inputs::NAMES`].
     fn slot(&mut self, name: &str) -> Option<&mut f64> {
@@ -113,11 +114,12 @@ impl Inputs {
 /// A row as read: its shape's text and its inputs, or why it is malformed.
 type Read<'a> = std::result::Result<(&'a str, &'a Inputs), &'a str>;
 
-/// One checked row: its shape (an index into [`Shapes`]) and conditions.
+/// One checked row: its shape (an index into [`Shapes`]), conditions and system.
 #[derive(Debug, Clone, Copy)]
 struct Job {
     shape: u32,
     conditions: Conditions,
+    system: Option<fricosc::system::System>,
 }
 
 /// The shapes of a batch, each distinct string parsed (and checked) once.
@@ -166,7 +168,7 @@ impl Shapes {
     /// `vhat`) an optional `phase`; the shape must reach the amplitude.
     fn job(&self, shape: u32, i: &Inputs) -> std::result::Result<Job, String> {
         let err = |e: fricosc::Error| e.to_string();
-        let [vbar, amp, vhat, tangential_amp, phase] = std::array::from_fn(|k| i.get(k));
+        let [vbar, amp, vhat, tangential_amp, phase, kappa, omega, zeta] = std::array::from_fn(|k| i.get(k));
         let amp = amp.ok_or("missing field 'amp'")?;
         if phase.is_some() && tangential_amp.is_none() {
             return Err("'phase' needs 'tangential_amp'".into());
@@ -192,14 +194,29 @@ impl Shapes {
         // A tabulated profile must reach the deepest indentation (else the
         // evaluation would refuse the row after output had begun).
         self.list[shape as usize].check_amp(amp).map_err(err)?;
-        Ok(Job { shape, conditions })
+        let system = match kappa {
+            None if omega.is_some() || zeta.is_some() => {
+                return Err("'frequency_ratio' and 'damping' need 'system_stiffness'".into())
+            }
+            None => None,
+            Some(_) if self.stepping.is_some() => return Err("rows on a system are solved exactly only".into()),
+            Some(k) => {
+                let sys = fricosc::system::System::new(k, omega.unwrap_or(0.0), zeta.unwrap_or(0.0)).map_err(err)?;
+                if sys.frequency_ratio == 0.0 && !self.list[shape as usize].is_flat() {
+                    return Err("a massless body (frequency_ratio 0) on a curved contact is not solved".into());
+                }
+                Some(sys)
+            }
+        };
+        Ok(Job { shape, conditions, system })
     }
 
     fn evaluate(&self, j: &Job) -> fricosc::Result<Ratio> {
         let shape = &self.list[j.shape as usize];
-        match self.stepping {
-            Some(st) => fricosc::stepper::evaluate(shape, &j.conditions, st).map(|e| e.ratio),
-            None => shape.ratio(&j.conditions),
+        match (self.stepping, j.system) {
+            (_, Some(sys)) => fricosc::system::solve(shape, &j.conditions, &sys).map(|r| r.ratio()),
+            (Some(st), None) => fricosc::stepper::evaluate(shape, &j.conditions, st).map(|e| e.ratio),
+            (None, None) => shape.ratio(&j.conditions),
         }
     }
 
@@ -247,7 +264,8 @@ impl Shapes {
             }
         }
         let this = &*self;
-        let filler = Job { shape: 0, conditions: Conditions::vbar(0.0, 0.0).map_err(|e| (0, e.to_string()))? };
+        let filler =
+            Job { shape: 0, conditions: Conditions::vbar(0.0, 0.0).map_err(|e| (0, e.to_string()))?, system: None };
         let job = |j: usize, row: &T| match read(row) {
             Ok((_, inputs)) => this.job(ids[j], inputs),
             Err(e) => Err(e.to_string()),

@@ -131,6 +131,14 @@ pub struct SystemReport {
     pub springs: Option<usize>,
 }
 
+impl SystemReport {
+    /// `mu_ratio` as a [`crate::Ratio`] (its reduction `1 - mu_ratio`).
+    #[must_use]
+    pub fn ratio(&self) -> crate::Ratio {
+        crate::Ratio { mu_ratio: self.mu_ratio, reduction: 1.0 - self.mu_ratio }
+    }
+}
+
 /// The reduced state of the period map: `(x, x', f)` at `tau = 0` and the phase.
 pub(crate) type Reduced = (Kind, Vector3<f64>);
 

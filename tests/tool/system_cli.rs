@@ -1,0 +1,85 @@
+//! The system's mass and stiffness through the command line: `batch` rows
+//! with `system_stiffness`, `frequency_ratio`, `damping` (each row the
+//! library's `system::solve`, bit for bit), histories of curved bodies on a
+//! system, and the refusals (one line, exit 2, nothing on stdout).
+use crate::common::run::run as fricosc;
+use fricosc::system::{solve, System};
+use fricosc::{Conditions, Shape};
+
+fn stdout(args: &[&str], stdin: Option<&str>) -> String {
+    let out = fricosc(args, stdin);
+    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    String::from_utf8(out.stdout).unwrap()
+}
+
+fn refused(args: &[&str], stdin: Option<&str>, says: &str) {
+    let out = fricosc(args, stdin);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert!(out.stdout.is_empty() && err.lines().count() == 1 && err.contains(says), "{args:?}: {err}");
+}
+
+/// Batch rows on a system are the library's answers (its reduction `1 - mu`),
+/// in JSON Lines and CSV; rows without a system are unchanged beside them.
+#[test]
+fn batch_rows_on_a_system_are_the_librarys() {
+    let dir = tempfile::tempdir().unwrap();
+    let rows = dir.path().join("rows.jsonl");
+    let text = concat!(
+        r#"{"shape":"flat","vhat":0.3,"amp":0.5,"system_stiffness":1,"frequency_ratio":0.5,"damping":0.3,"id":7}"#,
+        "\n",
+        r#"{"shape":"cone","vbar":0.3,"amp":1.5,"system_stiffness":2,"frequency_ratio":0.8,"damping":0.1}"#,
+        "\n",
+        r#"{"shape":"flat","vbar":0.3,"amp":0.5}"#,
+        "\n"
+    );
+    std::fs::write(&rows, text).unwrap();
+    let out = stdout(&["batch", rows.to_str().unwrap()], None);
+    let v: Vec<serde_json::Value> = out.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let flat = solve(&Shape::flat(), &Conditions::vhat(0.3, 0.5).unwrap(), &System::new(1.0, 0.5, 0.3).unwrap()).unwrap();
+    let cone = solve(&Shape::cone(), &Conditions::vbar(0.3, 1.5).unwrap(), &System::new(2.0, 0.8, 0.1).unwrap()).unwrap();
+    assert_eq!(v[0]["mu_ratio"].as_f64(), Some(flat.mu_ratio));
+    assert_eq!(v[0]["reduction"].as_f64(), Some(1.0 - flat.mu_ratio));
+    assert_eq!(v[0]["id"], 7);
+    assert_eq!(v[1]["mu_ratio"].as_f64(), Some(cone.mu_ratio));
+    assert_eq!(v[2]["mu_ratio"].as_f64(), Some(Shape::flat().ratio(&Conditions::vbar(0.3, 0.5).unwrap()).unwrap().mu_ratio));
+    let csv = "shape,vhat,amp,system_stiffness,frequency_ratio,damping\nflat,0.3,0.5,1,0.5,0.3\n";
+    let out = stdout(&["batch", "--format", "csv", "-"], Some(csv));
+    let last: Vec<&str> = out.lines().nth(1).unwrap().split(',').collect();
+    assert_eq!(last[6].parse::<f64>().unwrap(), flat.mu_ratio);
+}
+
+/// A row's system is checked before any output, by name.
+#[test]
+fn bad_system_rows_are_named() {
+    let csv = |row: &str| format!("shape,vbar,amp,system_stiffness,frequency_ratio,damping\n{row}\n");
+    let cases = [
+        ("flat,0.3,0.5,,0.5,", "need 'system_stiffness'"),
+        ("flat,0.3,0.5,-1,0.5,0", "system-stiffness"),
+        ("flat,0.3,0.5,1,nan,0", "frequency_ratio"),
+        ("flat,0.3,0.5,1,0.5,1e7", "damping"),
+        ("cone,0.3,0.5,1,0,0", "massless"),
+    ];
+    for (row, says) in cases {
+        refused(&["batch", "--format", "csv", "-"], Some(&csv(row)), says);
+    }
+    refused(&["batch", "--format", "csv", "--method", "stepping", "-"], Some(&csv("flat,0.3,0.5,1,0.5,0")), "exactly");
+}
+
+/// `history` of a curved body on a system: one period of its springs'
+/// attractor, its mean that discretisation's `mu` (within the trapezoid's
+/// error); `--springs` sets their number.
+#[test]
+fn a_curved_history_on_a_system() {
+    let args = ["history", "--shape", "parabolic", "--vhat", "0.15", "--amp", "0.5", "--system-stiffness", "1"];
+    let more = ["--frequency-ratio", "0.5", "--damping", "0.05", "--springs", "32", "--samples", "4000", "--format", "csv"];
+    let out = stdout(&[&args[..], &more[..]].concat(), None);
+    let rows: Vec<Vec<f64>> =
+        out.lines().skip(2).map(|l| l.split(',').filter_map(|x| x.parse().ok()).collect()).collect();
+    let mean = |k: usize| rows.iter().map(|r| r[k]).sum::<f64>() / rows.len() as f64;
+    let sys = System::new(1.0, 0.5, 0.05).unwrap();
+    let c = Conditions::vhat(0.15, 0.5).unwrap();
+    let exact = fricosc::system::solve_discretised(&Shape::parabolic(), &c, &sys, 32).unwrap().mu_ratio;
+    assert!((mean(2) / mean(1) - exact).abs() < 1e-6, "{} vs {exact}", mean(2) / mean(1));
+    refused(&["history", "--shape", "cone", "--vhat", "0.1", "--amp", "0.5", "--system-stiffness", "1"], None, "massless");
+}
