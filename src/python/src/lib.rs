@@ -297,13 +297,14 @@ fn point_oscillation<'py>(
     pythonize::pythonize(py, &Named { shape: shape.inner.name(), point: p }).map_err(serialise_err)
 }
 
-/// The flat punch on a system with mass and stiffness, as `fricosc point
+/// A body on a system with mass and stiffness, as `fricosc point
 /// --system-stiffness` reports it: a dict.
 #[pyfunction]
-#[pyo3(signature = (vhat, amp, t, phase, stiffness, frequency_ratio, damping))]
+#[pyo3(signature = (shape, vhat, amp, t, phase, stiffness, frequency_ratio, damping, springs=None))]
 #[allow(clippy::too_many_arguments)]
 fn point_system<'py>(
     py: Python<'py>,
+    shape: &CoreShape,
     vhat: f64,
     amp: f64,
     t: f64,
@@ -311,10 +312,14 @@ fn point_system<'py>(
     stiffness: f64,
     frequency_ratio: f64,
     damping: f64,
+    springs: Option<usize>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let c = oscillation(vhat, amp, t, phase, DEFAULT_TOL).map_err(to_py)?;
-    let sys = fricosc::system::System::new(stiffness, frequency_ratio, damping).map_err(to_py)?;
-    let r = py.detach(|| fricosc::system::solve(&fricosc::Shape::flat(), &c, &sys)).map_err(to_py)?;
+    let mut sys = fricosc::system::System::new(stiffness, frequency_ratio, damping).map_err(to_py)?;
+    if let Some(n) = springs {
+        sys = sys.with_springs(n).map_err(to_py)?;
+    }
+    let r = py.detach(|| fricosc::system::solve(&shape.inner, &c, &sys)).map_err(to_py)?;
     pythonize::pythonize(py, &r).map_err(serialise_err)
 }
 
@@ -356,7 +361,9 @@ fn history<'py>(
         .with_springs(springs)
         .with_spring_at(spring_at);
     let opts = match system {
-        Some((k, om, z)) => opts.with_system(fricosc::system::System::new(k, om, z).map_err(to_py)?),
+        Some((k, om, z)) => {
+            opts.with_system(fricosc::system::System::new(k, om, z).and_then(|s| s.with_springs(springs)).map_err(to_py)?)
+        }
         None => opts,
     };
     let h = py.detach(|| core_history(shape, &c, &opts)).map_err(to_py)?;

@@ -595,8 +595,16 @@ def test_point_on_a_system_is_the_command_lines() -> None:
     theirs = json.loads(cli("point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1",
                             "--frequency-ratio", "0.5", "--damping", "0.3"))
     assert mine["mu_ratio"] == theirs["mu_ratio"] and mine["period"] == theirs["period"] == 1
-    with pytest.raises(ValueError):
+    cone = fricosc.point("cone", vhat=0.3, amp=0.5, system_stiffness=1.0, frequency_ratio=0.5, springs=32)
+    theirs = json.loads(cli("point", "--shape", "cone", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1",
+                            "--frequency-ratio", "0.5", "--springs", "32"))
+    assert cone["mu_ratio"] == theirs["mu_ratio"] and cone["error_estimate"] == theirs["error_estimate"]
+    with pytest.raises(fricosc.InputError, match="massless"):
         fricosc.point("parabolic", vhat=0.3, amp=0.5, system_stiffness=1.0)
+    curved = fricosc.history("cone", vhat=0.3, amp=0.5, system_stiffness=1.0, frequency_ratio=0.5, samples=8)
+    csv_text = cli("history", "--shape", "cone", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1",
+                   "--frequency-ratio", "0.5", "--samples", "8", "--format", "csv")
+    assert [float(r["tangential"]) for r in csv_rows(csv_text)] == list(curved["tangential"])
     h = fricosc.history("flat", vhat=0.3, amp=0.5, system_stiffness=1.0, frequency_ratio=0.5, damping=0.3, samples=8)
     csv_text = cli("history", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--frequency-ratio", "0.5",
                    "--damping", "0.3", "--samples", "8", "--format", "csv")

@@ -247,6 +247,7 @@ def point(
     system_stiffness: Optional[float] = None,
     frequency_ratio: float = 0.0,
     damping: float = 0.0,
+    springs: Optional[int] = None,
 ) -> Dict[str, Any]:
     """Everything the solver reports at one point, as ``fricosc point`` prints it:
     the regime and events of the flat punch, the bands of a power law, the
@@ -254,7 +255,8 @@ def point(
     ``fricosc point --tangential-amp``: the spring's phases and events of one
     period (flat punch) or the bands. With ``system_stiffness`` (and
     ``frequency_ratio``, ``damping``) as ``fricosc point --system-stiffness``:
-    the flat punch on a system with mass and stiffness, its attractor.
+    the body on a system with mass and stiffness, its attractor (a curved
+    body's as ``springs`` springs, default 256, with an error estimate).
 
     >>> p = point("flat", 0.3, 0.5)
     >>> p["regime"], p["mu_ratio"], [e["kind"] for e in p["events"]]
@@ -267,14 +269,13 @@ def point(
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
     if system_stiffness is not None:
-        if _core(shape).name != "flat":
-            raise ValueError("the system's mass and stiffness are solved for the flat punch")
         t, ph = _tangential(tangential_amp, phase, is_vhat) or (0.0, 0.0)
         a = _scalar(amp, "amp")
         vh = _scalar(v, "vhat") if is_vhat else _scalar(v, "vbar") * a
         sys_point: Dict[str, Any] = _fricosc.point_system(
-            vh, a, t, ph, _scalar(system_stiffness, "system_stiffness"),
+            _core(shape), vh, a, t, ph, _scalar(system_stiffness, "system_stiffness"),
             _scalar(frequency_ratio, "frequency_ratio"), _scalar(damping, "damping"),
+            None if springs is None else _count(springs, "springs"),
         )
         return sys_point
     tangential = _tangential(tangential_amp, phase, is_vhat)
@@ -285,6 +286,15 @@ def point(
         return osc
     result: Dict[str, Any] = _fricosc.point(_core(shape), _scalar(v, "vbar"), _scalar(amp, "amp"), is_vhat, _tol(tol))
     return result
+
+
+def _count(value: Any, name: str) -> int:
+    """A count >= 1 (an integer, not a bool)."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
+    if value < 1:
+        raise ValueError(f"invalid {name} = {value}: must be >= 1")
+    return int(value)
 
 
 def _tangential(tangential_amp: Optional[float], phase: Optional[float], is_vhat: bool) -> Optional[Tuple[float, float]]:
@@ -317,7 +327,7 @@ def history(
     phase: Optional[float] = None,
     periods: int = 1,
     samples: int = 400,
-    springs: int = 4000,
+    springs: Optional[int] = None,
     spring_at: Sequence[float] = (),
     system_stiffness: Optional[float] = None,
     frequency_ratio: float = 0.0,
@@ -334,8 +344,10 @@ def history(
     With ``tangential_amp`` (and ``phase``, ``vhat``) as ``fricosc history
     --tangential-amp``: the body also oscillates in the sliding direction, and
     the force slips both ways (events ``slip`` and ``backward_slip``). With
-    ``system_stiffness`` (``frequency_ratio``, ``damping``): the flat punch
-    on a system with mass and stiffness, one period of its attractor.
+    ``system_stiffness`` (``frequency_ratio``, ``damping``): the body on a
+    system with mass and stiffness, one period of its attractor (a curved
+    body's as its springs). ``springs``: a curved body's, default 4000 (256
+    on a system).
 
     >>> h = history("flat", vhat=0.2, amp=0.5, tangential_amp=1.5, phase=1.3, samples=100)
     >>> [e for e in h["event"] if e]
@@ -345,11 +357,10 @@ def history(
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
     tangential = _tangential(tangential_amp, phase, is_vhat)
+    if springs is None:
+        springs = 4000 if system_stiffness is None else 256
     for name, value in (("periods", periods), ("samples", samples), ("springs", springs)):
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
-            raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
-        if value < 1:
-            raise ValueError(f"invalid {name} = {value}: must be >= 1")
+        _count(value, name)
     positions = [_scalar(x, "spring_at") for x in spring_at]
     result: Dict[str, Any] = _fricosc.history(
         _core(shape),

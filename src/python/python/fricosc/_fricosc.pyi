@@ -51,6 +51,7 @@ def history(
     system: Optional[Tuple[float, float, float]] = None,
 ) -> Dict[str, Any]: ...
 def point_system(
+    shape: CoreShape,
     vhat: float,
     amp: float,
     t: float,
@@ -58,6 +59,7 @@ def point_system(
     stiffness: float,
     frequency_ratio: float,
     damping: float,
+    springs: Optional[int] = None,
 ) -> Dict[str, Any]: ...
 def validate(
     shape: CoreShape,
