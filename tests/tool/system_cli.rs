@@ -83,3 +83,38 @@ fn a_curved_history_on_a_system() {
     assert!((mean(2) / mean(1) - exact).abs() < 1e-6, "{} vs {exact}", mean(2) / mean(1));
     refused(&["history", "--shape", "cone", "--vhat", "0.1", "--amp", "0.5", "--system-stiffness", "1"], None, "massless");
 }
+
+/// `validate --system-stiffness`: a stepper's table on the system (the
+/// library's stepping peer with the body, 1000 steps a period: first order)
+/// is within 1e-3 of the attractors, with no finding; the same rows solved
+/// without the system (a stepper that forgot the body) are beyond it (exit
+/// 1), and a value above 1 is named.
+#[test]
+fn validate_compares_a_table_on_a_system() {
+    let sys = System::new(1.0, 0.5, 0.1).unwrap();
+    let rows: Vec<(f64, f64)> = vec![(0.1, 0.5), (0.3, 0.5), (1.0, 0.5), (0.1, 1.5), (0.5, 1.5)];
+    let table = |mu: &dyn Fn(&Conditions) -> f64| {
+        let mut t = String::from("vbar,amp,mu_ratio\n");
+        for &(vbar, amp) in &rows {
+            t += &format!("{vbar},{amp},{}\n", mu(&Conditions::vbar(vbar, amp).unwrap()));
+        }
+        t
+    };
+    let stepped = table(&|c| fricosc::stepper::system(&Shape::flat(), c, &sys, 1000, 40).unwrap());
+    let forgot = table(&|c| Shape::flat().ratio(c).unwrap().mu_ratio);
+    let args = ["validate", "-", "--system-stiffness", "1", "--frequency-ratio", "0.5", "--damping", "0.1"];
+    let run = |t: &str, extra: &[&str]| fricosc(&[&args[..], extra].concat(), Some(t));
+    let out = run(&stepped, &["--format", "json", "--max-error", "1e-3"]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let largest = v["max_abs_error"].as_f64().unwrap();
+    assert!(largest > 1e-6 && largest < 1e-3 && v["findings"].as_array().unwrap().is_empty(), "{v}");
+    assert_eq!(v["system"]["stiffness"], 1.0);
+    let out = run(&forgot, &["--format", "json", "--max-error", "1e-3"]);
+    assert_eq!(out.status.code(), Some(1));
+    let above: Vec<&str> = stepped.lines().map(|l| if l.starts_with("0.1,0.5,") { "0.1,0.5,1.5" } else { l }).collect();
+    let out = run(&(above.join("\n") + "\n"), &["--format", "json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["findings"][0]["kind"], "above_one", "{v}");
+    refused(&[&args[..], &["--series"]].concat(), Some(&stepped), "one table on a system");
+}

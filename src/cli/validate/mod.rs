@@ -43,6 +43,9 @@ pub struct ValidateArgs {
     pub plot: Option<String>,
     #[command(flatten)]
     pub history: HistoryArgs,
+    /// A table on a system with mass and stiffness (one table: compared with the attractors).
+    #[command(flatten)]
+    pub system: crate::cmd::SystemPoint,
     /// Largest acceptable |mu_ratio - exact| (exit 1 beyond it).
     #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
     pub max_error: Option<f64>,
@@ -183,7 +186,14 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
         None => "json".into(),
     };
     let h = &a.history;
-    let check = Check::default().with_at_rest(at_rest).with_tolerance(tolerance);
+    let system = a.system.system(None)?;
+    let check = Check::default().with_at_rest(at_rest).with_tolerance(tolerance).with_system(system);
+    if system.is_some() && (a.series || h.on) {
+        return Err(Error::Parse {
+            context: "--system-stiffness".into(),
+            reason: "validate compares one table on a system (not --series or --history)".into(),
+        });
+    }
     if a.series {
         if h.on {
             return run_history_series(&a, h, mu0, tolerance, &format);
@@ -204,8 +214,8 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
     drop(text);
     let (shape, shape_source) = choose_shape(table.shape(), a.shape.as_deref(), &source)?;
     let peer = a.peer.map(|m| Stepping { steps_per_period: m as usize, springs: a.peer_springs.unwrap_or(m) as usize });
-    if table.is_oscillation() {
-        let rows = table.oscillation_rows(mu0, &source)?;
+    if table.is_oscillation() || system.is_some() {
+        let rows = table.rows_as_oscillation(mu0, &source)?;
         let v = fricosc::validation::compare_oscillation(&shape, &rows, &check.with_peer(peer))?;
         #[derive(serde::Serialize)]
         struct OscillationReport<'a> {

@@ -73,11 +73,14 @@ pub struct Check {
     /// Run the built-in stepping peer at this resolution on every row and set
     /// its error beside the table's ([`FindingKind::WorseThanPeer`]).
     pub peer: Option<Stepping>,
+    /// The body on this system with mass and stiffness ([`crate::system`]):
+    /// the table is compared with its attractors ([`compare_oscillation`]).
+    pub system: Option<crate::system::System>,
 }
 
 impl Default for Check {
     fn default() -> Self {
-        Check { at_rest: AtRest::Sliding, tolerance: 1e-9, peer: None }
+        Check { at_rest: AtRest::Sliding, tolerance: 1e-9, peer: None, system: None }
     }
 }
 
@@ -96,6 +99,11 @@ impl Check {
     #[must_use]
     pub fn with_peer(self, peer: Option<Stepping>) -> Self {
         Check { peer, ..self }
+    }
+    /// On this system (or stiff: `None`).
+    #[must_use]
+    pub fn with_system(self, system: Option<crate::system::System>) -> Self {
+        Check { system, ..self }
     }
 }
 

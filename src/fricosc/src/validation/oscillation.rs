@@ -37,6 +37,33 @@ pub struct OscillationRow {
     pub regime: String,
     /// With a peer: the stepping peer's error on the same row.
     pub peer_error: Option<f64>,
+    /// On a system, a curved body: the exact value's error estimate.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub exact_error_estimate: Option<f64>,
+}
+
+/// The periods the stepping peer runs on a system (the attractor must be
+/// reached within them; the last period is its answer).
+pub const SYSTEM_PEER_PERIODS: usize = 40;
+
+/// One row's exact answer: `mu`, its regime, a curved system's error estimate.
+fn exact_row(shape: &Shape, c: &Conditions, system: Option<&crate::system::System>) -> Result<(f64, String, Option<f64>)> {
+    if let Some(sys) = system {
+        let r = crate::system::solve(shape, c, sys)?;
+        let regime = match r.period {
+            Some(k) => format!("period {k}"),
+            None => "no period (a long-time mean)".into(),
+        };
+        return Ok((r.mu_ratio, regime, r.error_estimate));
+    }
+    let e = crate::combined::evaluate(shape, c)?;
+    let regime = match &e.spring {
+        Some(s) => s.regime.clone(),
+        None if c.tangential().is_none_or(|t| t.0 == 0.0) => "no tangential oscillation (the seed's problem)".into(),
+        None if e.bands.is_empty() => "slides forward all the time".into(),
+        None => e.bands.iter().map(|b| b.regime.as_str()).collect::<Vec<_>>().join(" | "),
+    };
+    Ok((e.ratio.mu_ratio, regime, None))
 }
 
 /// The errors of one regime.
@@ -67,15 +94,20 @@ pub struct OscillationValidation {
     pub findings: Vec<super::Finding>,
     /// The stepping peer's resolution and errors, with a peer.
     pub peer: Option<super::PeerSummary>,
+    /// The system the rows were compared on, if any.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub system: Option<crate::system::System>,
     /// Every row.
     pub rows: Vec<OscillationRow>,
 }
 
 /// Compare `rows` of `[vhat, amp, tangential_amp, phase, mu_ratio]` with the
-/// exact values of `shape` (at [`crate::DEFAULT_TOL`]); `check.peer` runs the
-/// stepping peer ([`crate::stepper::evaluate`], three periods) on
-/// every row too. `check.at_rest` does not apply (a `vhat = 0` row is the limit
-/// `vhat -> 0+`).
+/// exact values of `shape` (at [`crate::DEFAULT_TOL`]), or on `check.system`
+/// with its attractors ([`crate::system::solve`]; the regime is the period);
+/// `check.peer` runs the stepping peer ([`crate::stepper::evaluate`], three
+/// periods; on a system [`crate::stepper::system`], [`SYSTEM_PEER_PERIODS`])
+/// on every row too. `check.at_rest` does not apply (a `vhat = 0` row is the
+/// limit `vhat -> 0+`).
 ///
 /// # Errors
 /// [`Error::Parse`] naming the first bad row (inputs out of range, a value
@@ -83,11 +115,16 @@ pub struct OscillationValidation {
 /// 10^11 spring-steps, the solver's errors.
 pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<OscillationValidation> {
     let oscillations = checked(shape, rows, check)?;
-    let exact = crate::numerics::par::map(&oscillations, |c| crate::combined::evaluate(shape, c));
+    let system = check.system.as_ref();
+    let exact = crate::numerics::par::map(&oscillations, |c| exact_row(shape, c, system));
     let peer: Option<Vec<f64>> = match check.peer {
         Some(st) => Some(
-            crate::numerics::par::map(&oscillations, |o| {
-                crate::stepper::evaluate(shape, o, st).map(|e| e.ratio.mu_ratio)
+            crate::numerics::par::map(&oscillations, |o| match system {
+                Some(sys) => {
+                    let sys = sys.with_springs(st.springs.max(4))?;
+                    crate::stepper::system(shape, o, &sys, st.steps_per_period, SYSTEM_PEER_PERIODS)
+                }
+                None => crate::stepper::evaluate(shape, o, st).map(|e| e.ratio.mu_ratio),
             })
             .into_iter()
             .collect::<Result<Vec<f64>>>()?,
@@ -96,14 +133,7 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
     };
     let mut out = Vec::with_capacity(rows.len());
     for (i, (r, e)) in rows.iter().zip(exact).enumerate() {
-        let e = e?;
-        let x = e.ratio.mu_ratio;
-        let regime = match &e.spring {
-            Some(s) => s.regime.clone(),
-            None if r[2] == 0.0 => "no tangential oscillation (the seed's problem)".into(),
-            None if e.bands.is_empty() => "slides forward all the time".into(),
-            None => e.bands.iter().map(|b| b.regime.as_str()).collect::<Vec<_>>().join(" | "),
-        };
+        let (x, regime, estimate) = e?;
         out.push(OscillationRow {
             row: i,
             vhat: r[0],
@@ -116,6 +146,7 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
             relative_error: (x != 0.0).then(|| (r[4] - x) / x.abs()),
             regime,
             peer_error: peer.as_ref().map(|p| p[i] - x),
+            exact_error_estimate: estimate,
         });
     }
     let errors = |rows: &[&OscillationRow]| {
@@ -166,8 +197,10 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
         "errors ten times (or more) those of fricosc's stepping peer at the same resolution: not the \
          discretisation but a bug (see the peer_error column)",
     ));
-    let errors: Vec<f64> = out.iter().map(|r| r.error).collect();
-    findings.extend(super::convention::oscillation_finding(shape, rows, &errors));
+    if system.is_none() {
+        let errors: Vec<f64> = out.iter().map(|r| r.error).collect();
+        findings.extend(super::convention::oscillation_finding(shape, rows, &errors));
+    }
     Ok(OscillationValidation {
         shape: shape.name().to_string(),
         tolerance: tol,
@@ -175,6 +208,7 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
         by_regime,
         findings,
         peer: peer_summary,
+        system: check.system,
         rows: out,
     })
 }
@@ -198,5 +232,9 @@ fn checked(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<Vec
         }
     }
     super::check_peer_work(shape, rows.len(), check.peer)?;
+    if let (Some(_), Some(st)) = (&check.system, check.peer) {
+        // The peer on a system runs SYSTEM_PEER_PERIODS periods, not three.
+        super::check_peer_work(shape, rows.len() * SYSTEM_PEER_PERIODS.div_ceil(3), Some(st))?;
+    }
     Ok(oscillations)
 }

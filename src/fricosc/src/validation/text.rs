@@ -139,11 +139,21 @@ impl OscillationValidation {
     pub fn summary(&self, source: &str) -> String {
         let v = self;
         let s = &v.summary;
+        let setting = match &v.system {
+            Some(sys) => format!(
+                "on a system (K/kx {}, omega/omega_c {}, zeta {})",
+                sys.stiffness, sys.frequency_ratio, sys.damping
+            ),
+            None => "under oscillation in the sliding direction".into(),
+        };
         let mut out = format!(
-            "{source}: {} rows of {} under oscillation in the sliding direction\n\
+            "{source}: {} rows of {} {setting}\n\
              largest error {:.3e} (row {}), rms {:.3e}, largest relative {:.3e}\n",
             s.n, v.shape, s.max_abs_error, s.worst_row, s.rms_error, s.max_rel_error
         );
+        if let Some(e) = v.rows.iter().filter_map(|r| r.exact_error_estimate).reduce(f64::max) {
+            let _ = writeln!(out, "the exact values' largest error estimate {e:.3e} (the curved body's springs)");
+        }
         if let Some(p) = &v.peer {
             let _ = writeln!(
                 out,
