@@ -100,6 +100,48 @@ pub const MAX_PERIODS: usize = 4000;
 /// Most sampling steps run from the start (about two seconds); fewer
 /// periods than [`MAX_PERIODS`] where a period takes many (at least 20).
 pub const MAX_STEPS: f64 = 2e7;
+/// Most sampling steps a period of the drive may take: a body whose fastest
+/// time scale (its stick frequency, or its damping rate) is shorter is
+/// refused, by name, before any work.
+pub const MAX_STEPS_PER_PERIOD: f64 = 1e6;
+
+/// The body's fastest time scale resolvable in [`MAX_STEPS_PER_PERIOD`]
+/// steps, with the contact's springs all stuck (`contact` their stiffness).
+fn check_resolvable(p: &Params, contact: f64) -> Result<()> {
+    let a = p.generator_of(phase::Linear { x: contact, ..phase::Linear::default() });
+    let steps = std::f64::consts::TAU / springs::sampling_step(&a);
+    if steps > MAX_STEPS_PER_PERIOD {
+        let reason = format!(
+            "with stiffness {} and damping {} the body's fastest time scale needs {steps:.1e} sampling steps a \
+             period (at most 1e6): the body is too light or too damped for the drive (a lighter one tends to the \
+             massless body, frequency-ratio 0, the flat punch's exact limit)",
+            crate::error::Amount(p.kappa),
+            crate::error::Amount(p.zeta)
+        );
+        return Err(Error::param("frequency-ratio", p.omega, &reason));
+    }
+    Ok(())
+}
+
+/// The system spring builds a force of 1 (the Coulomb bound without
+/// oscillation) only after about `1/(2 pi kappa vhat)` periods of the drive;
+/// where that exceeds a quarter of the periods run (`limit`), the attractor
+/// cannot be reached and the system is refused by name (a sliding drive; at
+/// `vhat = 0` the answer is the relaxed one, 0).
+fn check_settles(p: &Params, limit: usize) -> Result<()> {
+    let periods = 1.0 / (std::f64::consts::TAU * p.kappa * p.vhat);
+    if p.vhat > 0.0 && periods > limit as f64 / 4.0 {
+        let reason = format!(
+            "the system spring pulls the body into steady sliding only after about {} periods of the drive \
+             (vhat {}); fricosc runs at most {limit}",
+            crate::error::Amount(periods.round()),
+            crate::error::Amount(p.vhat)
+        );
+        return Err(Error::param("system-stiffness", p.kappa, &reason));
+    }
+    Ok(())
+}
+
 /// Longest period of an attractor looked for.
 pub const MAX_ORBIT: usize = 8;
 /// Most near-repeats refined by Newton before the search goes on without.
@@ -215,7 +257,7 @@ pub(crate) fn curved_history(
 fn params(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<Params> {
     shape.check_amp(c.amp())?;
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
-    Ok(Params {
+    let p = Params {
         kappa: sys.stiffness,
         omega: sys.frequency_ratio,
         zeta: sys.damping,
@@ -223,7 +265,12 @@ fn params(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<Params> 
         amp: c.amp(),
         t,
         phase,
-    })
+    };
+    if p.omega > 0.0 {
+        check_resolvable(&p, springs(shape, p.amp, 4)?.iter().map(|s| s.0).sum())?;
+        check_settles(&p, MAX_CURVED_PERIODS)?;
+    }
+    Ok(p)
 }
 
 /// The steady state of `shape` discretised into about `springs` springs
@@ -296,6 +343,8 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
         return Ok((report, None));
     }
     let p = Params { kappa, omega: sys.frequency_ratio, zeta: sys.damping, vhat, amp, t, phase };
+    check_resolvable(&p, 1.0)?;
+    check_settles(&p, MAX_PERIODS)?;
     let ph = Phases::new(p);
     let start = p.start();
     let mut s = reduce(&p, if amp < 1.0 { Kind::Stick } else { Kind::Free }, &start);

@@ -103,3 +103,36 @@ fn a_massless_curved_body_is_refused() {
     assert!(e.to_string().contains("frequency-ratio"), "{e}");
     assert!(System::new(1.0, 0.5, 0.0).unwrap().with_springs(3).is_err());
 }
+
+/// Extreme ratios answer or are refused by name before any work: never a
+/// panic, a NaN or a hang. The body's fastest time scale must fit 1e6
+/// sampling steps a period (a light or heavily damped body: frequency-ratio);
+/// the system spring must pull the body into sliding within a quarter of
+/// the periods run (a soft system: system-stiffness); a heavy body on a stiff
+/// spring answers, within `[-1, 1]`.
+#[test]
+fn extreme_ratios_answer_or_are_refused_by_name() {
+    let c = Conditions::vbar(0.3, 0.5).unwrap();
+    let cases = [
+        (1e-12, 1.0, 0.0, Some("system-stiffness")),
+        (1e-3, 1.0, 0.0, Some("system-stiffness")),
+        (1.0, 1e-12, 0.0, Some("frequency-ratio")),
+        (1e6, 1e-12, 1e6, Some("frequency-ratio")),
+        (1.0, 1.0, 1e6, Some("frequency-ratio")),
+        (1e6, 1e6, 0.0, None),
+        (1e-2, 1e6, 0.0, None),
+    ];
+    for shape in [Shape::flat(), Shape::cone()] {
+        for (kappa, omega, zeta, refused) in cases {
+            let sys = System::new(kappa, omega, zeta).unwrap().with_springs(16).unwrap();
+            match (solve(&shape, &c, &sys), refused) {
+                (Ok(r), None) => assert!(r.mu_ratio.is_finite() && r.mu_ratio.abs() <= 1.0 + 1e-9, "{sys:?}: {r:?}"),
+                (Err(e), Some(name)) => assert!(e.to_string().contains(name), "{sys:?}: {e}"),
+                (r, _) => panic!("{} {sys:?}: {r:?}", shape.name()),
+            }
+        }
+    }
+    assert!(System::new(1e12, 1.0, 0.0).unwrap_err().to_string().contains("system-stiffness"));
+    assert!(System::new(1.0, -1.0, 0.0).unwrap_err().to_string().contains("frequency-ratio"));
+    assert!(System::new(1.0, 1.0, f64::NAN).unwrap_err().to_string().contains("damping"));
+}
