@@ -29,6 +29,12 @@ pub struct PlotArgs {
     /// start:stop:count) at one --vhat: the curves are drawn against the phase.
     #[arg(long, allow_hyphen_values = true, value_parser = list, requires = "tangential_amp")]
     pub phase: Option<List>,
+    /// The body on a system with mass and stiffness: the curves are its attractors'.
+    #[command(flatten)]
+    pub system: crate::cmd::SystemPoint,
+    /// With --system-stiffness, a curved body: its springs (4 to 16384, default 256).
+    #[arg(long, requires = "system_stiffness")]
+    pub springs: Option<usize>,
     /// With --overlay and a column mu: the Coulomb coefficient (mu_ratio = mu / mu0).
     #[arg(long, allow_hyphen_values = true, value_parser = crate::cmd::positive, requires = "overlay")]
     pub mu0: Option<f64>,
@@ -48,6 +54,13 @@ pub fn run(a: PlotArgs) -> Result<()> {
     let (xs, vhat) = a.velocity.values();
     let phases = a.phase.as_ref().map_or(&[0.0][..], |p| &p.0[..]);
     crate::cmd::warn_degrees(phases);
+    let system = a.system.system(a.springs)?;
+    if system.is_some() && phases.len() > 1 {
+        return Err(crate::error::Error::Parse {
+            context: "--system-stiffness".into(),
+            reason: "a plot on a system draws against the velocity (one --phase)".into(),
+        });
+    }
     let (mut fig, fixed) = match (a.tangential_amp, phases, xs) {
         (Some(t), [_, _, ..], &[v]) if vhat => {
             (crate::figures::against_phase(&shape, &a.amp.0, v, t, phases)?, Fixed::Vhat(v))
@@ -60,7 +73,10 @@ pub fn run(a: PlotArgs) -> Result<()> {
         }
         (t, _, _) => {
             let tangential = t.map(|t| (t, phases[0]));
-            (crate::figures::user_with(&shape, &a.amp.0, xs, vhat, tangential)?, Fixed::Phase(phases[0]))
+            (
+                crate::figures::user_with(&shape, &a.amp.0, xs, vhat, tangential, system.as_ref())?,
+                Fixed::Phase(phases[0]),
+            )
         }
     };
     if let Some(file) = &a.overlay {

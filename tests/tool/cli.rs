@@ -404,7 +404,8 @@ fn point_on_a_system_reports_the_attractor() {
     let args = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--frequency-ratio", "0.5"];
     let v = json(&fricosc(&[&args[..], &["--damping", "0.3"]].concat(), None));
     let sys = fricosc::system::System::new(1.0, 0.5, 0.3).unwrap();
-    let r = fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vhat(0.3, 0.5).unwrap(), &sys).unwrap();
+    let r =
+        fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vhat(0.3, 0.5).unwrap(), &sys).unwrap();
     assert_eq!(v["mu_ratio"].as_f64().unwrap(), r.mu_ratio);
     assert_eq!(v["period"], 1);
     assert_eq!(v["events"].as_array().unwrap().len(), r.events.len());
@@ -417,21 +418,25 @@ fn point_on_a_system_reports_the_attractor() {
     assert_eq!(rows.len(), 2);
     for (row, vhat) in rows.iter().zip([0.3, 0.6]) {
         let c = fricosc::Conditions::vhat(vhat, 0.5).unwrap();
-        assert_eq!(row[5].parse::<f64>().unwrap(), fricosc::system::solve(&fricosc::Shape::flat(), &c, &sys).unwrap().mu_ratio);
+        assert_eq!(
+            row[5].parse::<f64>().unwrap(),
+            fricosc::system::solve(&fricosc::Shape::flat(), &c, &sys).unwrap().mu_ratio
+        );
     }
-    let curved = json(&fricosc(&[&args[..], &["--damping", "0.3", "--shape", "cone", "--springs", "32"]].concat(), None));
-    let r = fricosc::system::solve(&fricosc::Shape::cone(), &fricosc::Conditions::vhat(0.3, 0.5).unwrap(), &sys.with_springs(32).unwrap())
-        .unwrap();
+    let curved =
+        json(&fricosc(&[&args[..], &["--damping", "0.3", "--shape", "cone", "--springs", "32"]].concat(), None));
+    let r = fricosc::system::solve(
+        &fricosc::Shape::cone(),
+        &fricosc::Conditions::vhat(0.3, 0.5).unwrap(),
+        &sys.with_springs(32).unwrap(),
+    )
+    .unwrap();
     assert_eq!(curved["mu_ratio"].as_f64().unwrap(), r.mu_ratio);
     assert_eq!(curved["error_estimate"].as_f64(), r.error_estimate);
     assert_eq!(curved["springs"].as_u64(), r.springs.map(|n| n as u64));
     let zero = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "0"];
     let massless = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--shape", "cone"];
-    for run in [
-        massless.to_vec(),
-        [&args[..], &["--method", "stepping"]].concat(),
-        zero.to_vec(),
-    ] {
+    for run in [massless.to_vec(), [&args[..], &["--method", "stepping"]].concat(), zero.to_vec()] {
         let out = fricosc(&run, None);
         assert_eq!(out.status.code(), Some(2), "{run:?}");
         assert!(out.stdout.is_empty());

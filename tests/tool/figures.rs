@@ -112,7 +112,9 @@ fn the_resonance_figure_is_the_systems_values() {
     for c in &f.curves {
         let sys = fricosc::system::System::new(kappa, c.amp.unwrap(), zeta).unwrap();
         for p in c.points.iter().step_by(9) {
-            let r = fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vbar(p[0], amp).unwrap(), &sys).unwrap();
+            let r =
+                fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vbar(p[0], amp).unwrap(), &sys)
+                    .unwrap();
             assert_eq!(p[1], r.mu_ratio, "{} at {}", c.label, p[0]);
             if c.amp == Some(0.0) {
                 let stiff = crate::common::eval(&Shape::flat(), p[0] * kappa / (1.0 + kappa), amp).unwrap();

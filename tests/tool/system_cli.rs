@@ -36,13 +36,18 @@ fn batch_rows_on_a_system_are_the_librarys() {
     std::fs::write(&rows, text).unwrap();
     let out = stdout(&["batch", rows.to_str().unwrap()], None);
     let v: Vec<serde_json::Value> = out.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
-    let flat = solve(&Shape::flat(), &Conditions::vhat(0.3, 0.5).unwrap(), &System::new(1.0, 0.5, 0.3).unwrap()).unwrap();
-    let cone = solve(&Shape::cone(), &Conditions::vbar(0.3, 1.5).unwrap(), &System::new(2.0, 0.8, 0.1).unwrap()).unwrap();
+    let flat =
+        solve(&Shape::flat(), &Conditions::vhat(0.3, 0.5).unwrap(), &System::new(1.0, 0.5, 0.3).unwrap()).unwrap();
+    let cone =
+        solve(&Shape::cone(), &Conditions::vbar(0.3, 1.5).unwrap(), &System::new(2.0, 0.8, 0.1).unwrap()).unwrap();
     assert_eq!(v[0]["mu_ratio"].as_f64(), Some(flat.mu_ratio));
     assert_eq!(v[0]["reduction"].as_f64(), Some(1.0 - flat.mu_ratio));
     assert_eq!(v[0]["id"], 7);
     assert_eq!(v[1]["mu_ratio"].as_f64(), Some(cone.mu_ratio));
-    assert_eq!(v[2]["mu_ratio"].as_f64(), Some(Shape::flat().ratio(&Conditions::vbar(0.3, 0.5).unwrap()).unwrap().mu_ratio));
+    assert_eq!(
+        v[2]["mu_ratio"].as_f64(),
+        Some(Shape::flat().ratio(&Conditions::vbar(0.3, 0.5).unwrap()).unwrap().mu_ratio)
+    );
     let csv = "shape,vhat,amp,system_stiffness,frequency_ratio,damping\nflat,0.3,0.5,1,0.5,0.3\n";
     let out = stdout(&["batch", "--format", "csv", "-"], Some(csv));
     let last: Vec<&str> = out.lines().nth(1).unwrap().split(',').collect();
@@ -72,7 +77,8 @@ fn bad_system_rows_are_named() {
 #[test]
 fn a_curved_history_on_a_system() {
     let args = ["history", "--shape", "parabolic", "--vhat", "0.15", "--amp", "0.5", "--system-stiffness", "1"];
-    let more = ["--frequency-ratio", "0.5", "--damping", "0.05", "--springs", "32", "--samples", "4000", "--format", "csv"];
+    let more =
+        ["--frequency-ratio", "0.5", "--damping", "0.05", "--springs", "32", "--samples", "4000", "--format", "csv"];
     let out = stdout(&[&args[..], &more[..]].concat(), None);
     let rows: Vec<Vec<f64>> =
         out.lines().skip(2).map(|l| l.split(',').filter_map(|x| x.parse().ok()).collect()).collect();
@@ -81,7 +87,11 @@ fn a_curved_history_on_a_system() {
     let c = Conditions::vhat(0.15, 0.5).unwrap();
     let exact = fricosc::system::solve_discretised(&Shape::parabolic(), &c, &sys, 32).unwrap().mu_ratio;
     assert!((mean(2) / mean(1) - exact).abs() < 1e-6, "{} vs {exact}", mean(2) / mean(1));
-    refused(&["history", "--shape", "cone", "--vhat", "0.1", "--amp", "0.5", "--system-stiffness", "1"], None, "massless");
+    refused(
+        &["history", "--shape", "cone", "--vhat", "0.1", "--amp", "0.5", "--system-stiffness", "1"],
+        None,
+        "massless",
+    );
 }
 
 /// `validate --system-stiffness`: a stepper's table on the system (the
@@ -117,4 +127,27 @@ fn validate_compares_a_table_on_a_system() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["findings"][0]["kind"], "above_one", "{v}");
     refused(&[&args[..], &["--series"]].concat(), Some(&stepped), "one table on a system");
+}
+
+/// `plot --system-stiffness`: each curve's points are the library's
+/// attractors (a curved body's at the given springs); the drawing names the
+/// system; several phases on a system are refused.
+#[test]
+fn plot_on_a_system_draws_the_attractors() {
+    let sys = System::new(1.0, 1.0, 0.05).unwrap().with_springs(16).unwrap();
+    let fig = fricosc_cli::figures::user_with(&Shape::cone(), &[0.5, 1.5], &[0.1, 0.5, 1.0], false, None, Some(&sys))
+        .unwrap();
+    for curve in &fig.curves {
+        let amp = curve.amp.unwrap();
+        for p in &curve.points {
+            assert_eq!(p[1], solve(&Shape::cone(), &Conditions::vbar(p[0], amp).unwrap(), &sys).unwrap().mu_ratio);
+        }
+    }
+    let args = ["plot", "--shape", "cone", "--vbar", "0.1,0.5,1", "--amp", "0.5,1.5", "--system-stiffness", "1"];
+    let svg = stdout(&[&args[..], &["--frequency-ratio", "1", "--damping", "0.05", "--springs", "16"]].concat(), None);
+    assert_eq!(svg.matches("<g data-series=").count(), 2);
+    assert!(svg.contains("on a system K/kx = 1, Ω = 1, ζ = 0.05"));
+    let phases =
+        ["plot", "--vhat", "0.1", "--amp", "0.5", "--tangential-amp", "1", "--phase", "0,1", "--system-stiffness", "1"];
+    refused(&[&phases[..], &["--frequency-ratio", "1"]].concat(), None, "one --phase");
 }

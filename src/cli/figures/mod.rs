@@ -302,7 +302,7 @@ pub const MAX_POINTS: usize = 100_000;
 /// `shape` at each amplitude over the velocities `xs` (`vbar`, or `vhat` where
 /// `vhat` is set), in the style of the seed's figures.
 pub fn user(shape: &Shape, amps: &[f64], xs: &[f64], vhat: bool) -> Result<Figure> {
-    user_with(shape, amps, xs, vhat, None)
+    user_with(shape, amps, xs, vhat, None, None)
 }
 
 /// [`user`], under an oscillation in the sliding direction `(T, phase)` where
@@ -313,6 +313,7 @@ pub fn user_with(
     xs: &[f64],
     vhat: bool,
     tangential: Option<(f64, f64)>,
+    system: Option<&fricosc::system::System>,
 ) -> Result<Figure> {
     if tangential.is_some() && !vhat {
         return Err(Error::Parse {
@@ -340,9 +341,10 @@ pub fn user_with(
             seen.push(**a);
             new
         })
-        .map(|&a| match tangential {
-            None => exact(shape, a, &xs, vhat),
-            Some((t, p)) => {
+        .map(|&a| match (tangential, system) {
+            (_, Some(sys)) => on_system(shape, a, &xs, vhat, tangential, sys),
+            (None, None) => exact(shape, a, &xs, vhat),
+            (Some((t, p)), None) => {
                 let points =
                     xs.iter().map(|&x| Ok([x, combined_mu(shape, x, a, t, p)?])).collect::<Result<Vec<_>>>()?;
                 Ok(Curve {
@@ -368,7 +370,37 @@ pub fn user_with(
     if let Some((t, p)) = tangential {
         f.notes = vec![format!("Δx/l = {t}"), format!("φ = {p}")];
     }
+    if let Some(sys) = system {
+        f.title += &format!(", on a system K/kx = {}, Ω = {}, ζ = {}", sys.stiffness, sys.frequency_ratio, sys.damping);
+        let notes = [("K/k_{x}", sys.stiffness), ("Ω", sys.frequency_ratio), ("ζ", sys.damping)];
+        f.notes.extend(notes.iter().map(|(n, v)| format!("{n} = {v}")));
+    }
     Ok(f)
+}
+
+/// One amplitude's curve on a system ([`fricosc::system::solve`], the points on every core).
+fn on_system(
+    shape: &Shape,
+    amp: f64,
+    xs: &[f64],
+    vhat: bool,
+    tangential: Option<(f64, f64)>,
+    sys: &fricosc::system::System,
+) -> Result<Curve> {
+    use rayon::prelude::*;
+    let (t, p) = tangential.unwrap_or((0.0, 0.0));
+    let points = xs
+        .par_iter()
+        .map(|&x| {
+            let c = if vhat {
+                fricosc::Conditions::vhat(x, amp)?.with_tangential(t, p)?
+            } else {
+                fricosc::Conditions::vbar(x, amp)?
+            };
+            Ok([x, fricosc::system::solve(shape, &c, sys)?.mu_ratio])
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Curve { label: format!("exact, du/u0 = {amp}"), kind: "exact".into(), equation: None, amp: Some(amp), points })
 }
 
 /// The values of a plot's axis (option `--{option}`), sorted without repeats,

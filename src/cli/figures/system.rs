@@ -20,7 +20,13 @@ pub(super) fn resonance() -> Result<Figure> {
         let sys = fricosc::system::System::new(kappa, om, zeta)?;
         let points = xs
             .iter()
-            .map(|&v| Ok([v, fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vbar(v, amp)?, &sys)?.mu_ratio]))
+            .map(|&v| {
+                Ok([
+                    v,
+                    fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vbar(v, amp)?, &sys)?
+                        .mu_ratio,
+                ])
+            })
             .collect::<Result<Vec<_>>>()?;
         curves.push(Curve {
             label: format!("exact, Ω = {om}"),

@@ -46,6 +46,9 @@ pub struct ValidateArgs {
     /// A table on a system with mass and stiffness (one table: compared with the attractors).
     #[command(flatten)]
     pub system: crate::cmd::SystemPoint,
+    /// With --system-stiffness, a curved body: its springs (4 to 16384, default 256).
+    #[arg(long, requires = "system_stiffness")]
+    pub springs: Option<usize>,
     /// Largest acceptable |mu_ratio - exact| (exit 1 beyond it).
     #[arg(long, allow_hyphen_values = true, value_parser = nonneg)]
     pub max_error: Option<f64>,
@@ -186,7 +189,7 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
         None => "json".into(),
     };
     let h = &a.history;
-    let system = a.system.system(None)?;
+    let system = a.system.system(a.springs)?;
     let check = Check::default().with_at_rest(at_rest).with_tolerance(tolerance).with_system(system);
     if system.is_some() && (a.series || h.on) {
         return Err(Error::Parse {

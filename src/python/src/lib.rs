@@ -361,9 +361,8 @@ fn history<'py>(
         .with_springs(springs)
         .with_spring_at(spring_at);
     let opts = match system {
-        Some((k, om, z)) => {
-            opts.with_system(fricosc::system::System::new(k, om, z).and_then(|s| s.with_springs(springs)).map_err(to_py)?)
-        }
+        Some((k, om, z)) => opts
+            .with_system(fricosc::system::System::new(k, om, z).and_then(|s| s.with_springs(springs)).map_err(to_py)?),
         None => opts,
     };
     let h = py.detach(|| core_history(shape, &c, &opts)).map_err(to_py)?;

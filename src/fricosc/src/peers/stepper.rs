@@ -399,7 +399,11 @@ pub fn system(
     let springs = crate::system::springs(shape, c.amp(), sys.springs)?;
     let work = steps_per_period as u128 * periods as u128 * springs.len() as u128;
     if steps_per_period == 0 || periods == 0 || work > MAX_STEPPING_WORK {
-        return Err(Error::param("steps-per-period", steps_per_period as f64, "steps x periods x springs must be in 1..=1e11"));
+        return Err(Error::param(
+            "steps-per-period",
+            steps_per_period as f64,
+            "steps x periods x springs must be in 1..=1e11",
+        ));
     }
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
     let (vhat, amp, kappa) = (c.as_vhat(), c.amp(), sys.stiffness);

@@ -152,7 +152,11 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
 
 /// The attractor of `shape` discretised into about `n` springs: `mu`, the
 /// period, the periods run, the standard error of a mean, the springs.
-pub(crate) fn discretised(shape: &Shape, p: Params, n: usize) -> Result<(f64, Option<usize>, usize, Option<f64>, usize)> {
+pub(crate) fn discretised(
+    shape: &Shape,
+    p: Params,
+    n: usize,
+) -> Result<(f64, Option<usize>, usize, Option<f64>, usize)> {
     let springs = discretise(shape, p.amp, n)?;
     let f = attractor(&Foundation::new(p, &springs)).0;
     Ok((f.mu, f.period, f.periods_run, f.period.is_none().then_some(f.error), springs.len()))
@@ -213,5 +217,9 @@ pub(crate) fn history(shape: &Shape, p: Params, n: usize, taus: &[f64]) -> Resul
 }
 
 fn massless() -> Error {
-    Error::param("frequency-ratio", 0.0, "a massless body on a curved contact is not solved: give a frequency ratio > 0")
+    Error::param(
+        "frequency-ratio",
+        0.0,
+        "a massless body on a curved contact is not solved: give a frequency ratio > 0",
+    )
 }

@@ -285,7 +285,8 @@ pub fn solve_discretised(shape: &crate::Shape, c: &Conditions, sys: &System, spr
     if !(1..=1 << 16).contains(&springs) {
         return Err(Error::param("springs", springs as f64, "must be in 1..=65536"));
     }
-    let (mu_ratio, period, periods_run, standard_error, n) = curved::discretised(shape, params(shape, c, sys)?, springs)?;
+    let (mu_ratio, period, periods_run, standard_error, n) =
+        curved::discretised(shape, params(shape, c, sys)?, springs)?;
     Ok(SystemReport {
         mu_ratio,
         period,

@@ -47,7 +47,11 @@ pub struct OscillationRow {
 pub const SYSTEM_PEER_PERIODS: usize = 40;
 
 /// One row's exact answer: `mu`, its regime, a curved system's error estimate.
-fn exact_row(shape: &Shape, c: &Conditions, system: Option<&crate::system::System>) -> Result<(f64, String, Option<f64>)> {
+fn exact_row(
+    shape: &Shape,
+    c: &Conditions,
+    system: Option<&crate::system::System>,
+) -> Result<(f64, String, Option<f64>)> {
     if let Some(sys) = system {
         let r = crate::system::solve(shape, c, sys)?;
         let regime = match r.period {

@@ -16,7 +16,8 @@ fn one_spring_meets_the_flat_references() {
     for c in data_cases("system-reference.json") {
         let f = |k: &str| c[k].as_f64().unwrap();
         let sys = System::new(f("kappa"), f("frequency_ratio"), f("damping")).unwrap();
-        let at = Conditions::vhat(f("vhat"), f("amp")).unwrap().with_tangential(f("tangential_amp"), f("phase")).unwrap();
+        let at =
+            Conditions::vhat(f("vhat"), f("amp")).unwrap().with_tangential(f("tangential_amp"), f("phase")).unwrap();
         let r = solve_discretised(&Shape::flat(), &at, &sys, 1).unwrap();
         let err = exact_error(r.mu_ratio, c["mu_ratio"].as_str().unwrap());
         assert!(!exceeds(err, 4e-13), "{c}: {} off by {err:e}", r.mu_ratio);
