@@ -24,7 +24,8 @@ fn exact_curves_equal_the_solver_and_every_figure_is_there() {
             "tangential-parabolic",
             "combined-phase",
             "combined-regimes",
-            "system-resonance"
+            "system-resonance",
+            "system-frequency"
         ]
     );
     for f in figs.iter().filter(|f| f.name.starts_with("fig")) {
@@ -63,7 +64,7 @@ fn oscillation_figures_are_the_solvers_values() {
     let figs = build().unwrap();
     for f in &figs {
         let shape = if f.name.ends_with("parabolic") { Shape::parabolic() } else { Shape::flat() };
-        let beyond = !f.name.starts_with("fig") && f.name != "system-resonance";
+        let beyond = !f.name.starts_with("fig") && !f.name.starts_with("system-");
         for c in f.curves.iter().filter(|c| c.kind == "exact" && beyond) {
             let t = c.amp.unwrap();
             assert_eq!(f.family, "tangential_amp", "{}", f.name);
@@ -124,6 +125,36 @@ fn the_resonance_figure_is_the_systems_values() {
     }
 }
 
+/// The frequency figure's points are the attractors (the stated start); at
+/// `Omega = 0` the massless identity; the reduction vanishes (`mu > 0.98`)
+/// within 10 % of the stick resonance `sqrt(1 + kappa)` for `kappa <= 4`, and
+/// nowhere below 0.85 of it (where the friction is reduced: below 0.76 there).
+#[test]
+fn the_frequency_figure_is_the_systems_values() {
+    use fricosc_cli::figures::FREQUENCY;
+    let (vbar, amp, zeta) = FREQUENCY;
+    let figs = build().unwrap();
+    let f = figs.iter().find(|f| f.name == "system-frequency").unwrap();
+    assert_eq!(f.family, "system_stiffness");
+    let c = fricosc::Conditions::vbar(vbar, amp).unwrap();
+    for curve in &f.curves {
+        let kappa = curve.amp.unwrap();
+        for p in curve.points.iter().step_by(10) {
+            let sys = fricosc::system::System::new(kappa, p[0], zeta).unwrap();
+            assert_eq!(p[1], fricosc::system::solve(&Shape::flat(), &c, &sys).unwrap().mu_ratio, "{}", curve.label);
+        }
+        let massless = crate::common::eval(&Shape::flat(), vbar * kappa / (1.0 + kappa), amp).unwrap();
+        assert_eq!(curve.points[0][1], massless.ratio.mu_ratio);
+        let resonance = (1.0 + kappa).sqrt();
+        let near = curve.points.iter().filter(|p| (p[0] / resonance - 1.0).abs() <= 0.1).map(|p| p[1]);
+        let below = curve.points.iter().filter(|p| p[0] < 0.85 * resonance).map(|p| p[1]);
+        if kappa <= 4.0 {
+            assert!(near.fold(0.0, f64::max) > 0.98, "{}", curve.label);
+            assert!(below.fold(0.0, f64::max) < 0.9, "{}", curve.label);
+        }
+    }
+}
+
 /// The seed's approximations where it uses them: eq. 16 (eq. 11 in vhat) only
 /// without jumping, eq. 17 for jumping; no approximation at du/u0 = 0 (mu = mu0
 /// is exact there); the seed's amplitudes and the line at du/u0 = 0 where it has them.
@@ -158,6 +189,7 @@ fn approximations_are_drawn_where_the_seed_uses_them() {
             "tangential-flat" | "tangential-parabolic" => &fricosc_cli::figures::TANGENTIAL_AMPS,
             "combined-phase" => &fricosc_cli::figures::COMBINED_TS,
             "system-resonance" => &fricosc_cli::figures::OMEGAS,
+            "system-frequency" => &fricosc_cli::figures::KAPPAS,
             _ => &[],
         };
         assert_eq!(amps("exact"), expected, "{}", f.name);
@@ -199,6 +231,7 @@ fn every_drawing_parses_tells_curves_apart_and_renders() {
             XAxis::Vhat => "v\u{302}",
             XAxis::Amp => "Δu",
             XAxis::SlidingRatio => "ω Δx",
+            XAxis::FrequencyRatio => "Ω",
             XAxis::Phase => "φ",
         };
         let text: String = svg.split("<text").skip(1).map(|t| t.split("</text>").next().unwrap()).collect();

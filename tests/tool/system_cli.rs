@@ -151,3 +151,44 @@ fn plot_on_a_system_draws_the_attractors() {
         ["plot", "--vhat", "0.1", "--amp", "0.5", "--tangential-amp", "1", "--phase", "0,1", "--system-stiffness", "1"];
     refused(&[&phases[..], &["--frequency-ratio", "1"]].concat(), None, "one --phase");
 }
+
+/// A scene with a `system` (mass, stiffness, damping in SI units): its
+/// parameters in the contact's units (`kappa = K/kx`, `Omega = omega
+/// sqrt(m/kx)`, `zeta = c/(2 sqrt(K m))`, from the scene's own `kx`), every
+/// row the library's attractor there; bad values are named.
+#[test]
+fn a_scene_on_a_system() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("pin.json");
+    let scene = |system: &str| {
+        format!(
+            r#"{{"materials": {{"e1_pa": 2.1e11, "nu1": 0.3, "e2_pa": 7.0e10, "nu2": 0.33}}, "mu0": 0.3,
+            "indenter": {{"flat_punch": {{"radius_m": 0.001}}}}, "loading": {{"mean_indentation_m": 1e-6}},
+            "oscillation": {{"amplitude_fraction": 0.5, "frequency_hz": 1000}},
+            "velocity": {{"values_m_per_s": [1e-3, 3e-3]}}, "system": {system}}}"#
+        )
+    };
+    std::fs::write(&path, scene(r#"{"mass_kg": 0.01, "stiffness_n_per_m": 1e7, "damping_n_s_per_m": 30}"#)).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&stdout(&["scene", path.to_str().unwrap()], None)).unwrap();
+    let r = &v[0];
+    let (kx, omega) = (r["kx_n_per_m"].as_f64().unwrap(), 2.0 * std::f64::consts::PI * 1000.0);
+    let sys = &r["system"];
+    assert_eq!(sys["stiffness"].as_f64().unwrap(), 1e7 / kx);
+    assert_eq!(sys["frequency_ratio"].as_f64().unwrap(), omega * (0.01 / kx).sqrt());
+    assert_eq!(sys["damping"].as_f64().unwrap(), 30.0 / (2.0 * (1e7f64 * 0.01).sqrt()));
+    let system = System::new(1e7 / kx, omega * (0.01 / kx).sqrt(), 30.0 / (2.0 * (1e7f64 * 0.01).sqrt())).unwrap();
+    for row in r["rows"].as_array().unwrap() {
+        let c = Conditions::vbar(row["vbar"].as_f64().unwrap(), 0.5).unwrap();
+        assert_eq!(row["mu_ratio"].as_f64().unwrap(), solve(&Shape::flat(), &c, &system).unwrap().mu_ratio);
+    }
+    for (bad, says) in [
+        (r#"{"mass_kg": 0, "stiffness_n_per_m": 1e7}"#, "system.mass_kg"),
+        (r#"{"mass_kg": 1, "stiffness_n_per_m": -1}"#, "system.stiffness_n_per_m"),
+        (r#"{"mass_kg": 1, "stiffness_n_per_m": 1e7, "damping_n_s_per_m": -1}"#, "system.damping_n_s_per_m"),
+        (r#"{"mass_kg": 1, "stiffness_n_per_m": 1e20}"#, "system-stiffness"),
+        (r#"{"mass": 1, "stiffness_n_per_m": 1e7}"#, "mass"),
+    ] {
+        std::fs::write(&path, scene(bad)).unwrap();
+        refused(&["scene", path.to_str().unwrap()], None, says);
+    }
+}

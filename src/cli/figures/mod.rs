@@ -13,7 +13,7 @@ mod oscillation;
 mod system;
 pub use oscillation::{against_phase, COMBINED, COMBINED_TS, MAP_T, TANGENTIAL_AMPS};
 use oscillation::{combined_mu, oscillation_figures};
-pub use system::{OMEGAS, RESONANCE};
+pub use system::{FREQUENCY, KAPPAS, OMEGAS, RESONANCE};
 
 /// One curve of a figure.
 #[derive(Debug, Clone, Serialize)]
@@ -45,6 +45,8 @@ pub enum XAxis {
     SlidingRatio,
     /// The phase of the tangential oscillation against the normal one (radians).
     Phase,
+    /// The frequency ratio `Omega = omega / sqrt(kx/m)` (a system with mass).
+    FrequencyRatio,
 }
 
 /// One figure.
@@ -85,6 +87,8 @@ pub const AMP_LABEL: &str = "Δu_{z}/u_{z0}";
 pub const T_LABEL: &str = "Δx/l";
 /// Legend heading of a family of frequency ratios `Omega = omega / sqrt(kx/m)`.
 pub const OMEGA_LABEL: &str = "ω/ω_{c}";
+/// The legend heading of a family over the system stiffness ratio.
+pub const KAPPA_LABEL: &str = "K/k_{x}";
 
 fn figure(name: &str, title: &str, x: XAxis, range: [f64; 4], curves: Vec<Curve>) -> Figure {
     let x_label = match x {
@@ -93,6 +97,7 @@ fn figure(name: &str, title: &str, x: XAxis, range: [f64; 4], curves: Vec<Curve>
         XAxis::Amp => "oscillation amplitude Δu_{z}/u_{z0}",
         XAxis::SlidingRatio => "sliding over oscillation velocity v_{0}/(ω Δx)",
         XAxis::Phase => "phase φ of the tangential oscillation (rad)",
+        XAxis::FrequencyRatio => "frequency ratio Ω = ω/√(k_{x}/m)",
     };
     Figure {
         name: name.into(),
@@ -162,6 +167,7 @@ pub fn build() -> Result<Vec<Figure>> {
     figs.extend(jumping_figures()?);
     figs.extend(oscillation_figures()?);
     figs.push(system::resonance()?);
+    figs.push(system::frequency()?);
     Ok(figs)
 }
 
@@ -588,6 +594,7 @@ fn family_heading(f: &Figure) -> &'static str {
     match f.family.as_str() {
         "amp" => AMP_LABEL,
         "frequency_ratio" => OMEGA_LABEL,
+        "system_stiffness" => KAPPA_LABEL,
         _ => T_LABEL,
     }
 }

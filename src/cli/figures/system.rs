@@ -50,3 +50,48 @@ pub(super) fn resonance() -> Result<Figure> {
     f.notes = vec![format!("K/k_{{x}} = {kappa}"), format!("ζ = {zeta}")];
     Ok(f)
 }
+
+/// `vbar`, `du/u0` and `zeta` of the frequency figure.
+pub const FREQUENCY: (f64, f64, f64) = (0.3, 0.5, 0.05);
+/// Its stiffness ratios `kappa = K/kx` (stick resonances at `Omega = sqrt(1 + kappa)`:
+/// 1.12, 1.41, 2.24, 4.12).
+pub const KAPPAS: [f64; 4] = [0.25, 1.0, 4.0, 16.0];
+
+/// `mu/mu0` against the frequency ratio `Omega` for the stiffness ratios
+/// [`KAPPAS`]: the reduction vanishes (`mu = 1`) around each stick resonance,
+/// with weaker features at its sub-harmonics. The response's regime (the
+/// attractor's period) is in the notes.
+pub(super) fn frequency() -> Result<Figure> {
+    let (vbar, amp, zeta) = FREQUENCY;
+    let omegas = grid(0.0, 3.0, 121);
+    let c = fricosc::Conditions::vbar(vbar, amp)?;
+    let mut curves = vec![];
+    let mut other = vec![];
+    for kappa in KAPPAS {
+        let mut points = vec![];
+        for &om in &omegas {
+            let r = fricosc::system::solve(&fricosc::Shape::flat(), &c, &fricosc::system::System::new(kappa, om, zeta)?)?;
+            if r.period != Some(1) {
+                other.push(format!("K/k_{{x}} {kappa}, Ω {om}: period {:?}", r.period));
+            }
+            points.push([om, r.mu_ratio]);
+        }
+        let label = format!("exact, K/kx = {kappa}");
+        curves.push(Curve { label, kind: "exact".into(), equation: None, amp: Some(kappa), points });
+    }
+    let mut f = figure(
+        "system-frequency",
+        &format!(
+            "Flat punch on a system with mass and stiffness (v̄ = {vbar}, Δu/u0 = {amp}, damping ratio {zeta}): \
+             friction against the excitation frequency for several system stiffnesses; the reduction vanishes \
+             around each stick resonance Ω = √(1 + K/k_x)"
+        ),
+        XAxis::FrequencyRatio,
+        [0.0, 3.0, 0.0, 1.05],
+        curves,
+    );
+    f.family = "system_stiffness".into();
+    f.notes = vec![format!("v̄ = {vbar}"), format!("ζ = {zeta}")];
+    f.notes.push(if other.is_empty() { "period 1 throughout".into() } else { other.join("; ") });
+    Ok(f)
+}

@@ -48,6 +48,29 @@ pub struct Scene {
     pub oscillation: Oscillation,
     /// Sliding velocities (exactly one of `values_m_per_s`, `sweep`).
     pub velocity: VelocitySpec,
+    /// The tribometer's pin: its mass on a tangential system spring (absent: a
+    /// stiff system, the seed's problem). Every row is then the attractor of
+    /// [`crate::system::solve`].
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub system: Option<SystemSpec>,
+}
+
+/// The body's mass, the system's tangential stiffness and its damping: in
+/// the contact's units `kappa = K/kx`, `Omega = omega / sqrt(kx/m)`, `zeta =
+/// c/(2 sqrt(K m))`, with `kx` the contact's tangential stiffness at the mean
+/// indentation.
+#[derive(Debug, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Deserialize))]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct SystemSpec {
+    /// The body's mass (kg), > 0.
+    pub mass_kg: f64,
+    /// The system's tangential stiffness `K` (N/m), > 0.
+    pub stiffness_n_per_m: f64,
+    /// The dashpot beside it `c` (N s/m), >= 0 (default 0).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub damping_n_s_per_m: f64,
 }
 
 /// Young's moduli, Poisson ratios and optional shear moduli (else `E/(2(1 + nu))`).
@@ -330,6 +353,9 @@ pub struct SceneResult {
     pub jumping: bool,
     /// Notes on the loading.
     pub note: String,
+    /// On a system: its parameters in the contact's units.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub system: Option<crate::system::System>,
     /// Where the scene leaves the model's range of validity (also printed on stderr).
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Vec::is_empty"))]
     pub warnings: Vec<String>,

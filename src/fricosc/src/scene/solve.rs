@@ -329,12 +329,18 @@ fn solve_amplitude(
             ),
         });
     }
+    let system = s.system.as_ref().map(|spec| system_of(spec, kz * ratio, c.omega, source)).transpose()?;
     let mut mu_ratio = Vec::with_capacity(c.velocities.len());
     for chunk in c.velocities.chunks(1024) {
         let mus = crate::numerics::par::map(chunk, |&v0| -> Result<f64> {
             let vbar = v0 / v_crit;
-            // At or above the critical velocity no spring is computed.
-            Ok(if vbar >= 1.0 { 1.0 } else { shape.ratio(&crate::Conditions::vbar(vbar, amp)?)?.mu_ratio })
+            let at = crate::Conditions::vbar(vbar, amp)?;
+            Ok(match &system {
+                Some(sys) => crate::system::solve(&shape, &at, sys)?.mu_ratio,
+                // At or above the critical velocity no spring is computed.
+                None if vbar >= 1.0 => 1.0,
+                None => shape.ratio(&at)?.mu_ratio,
+            })
         });
         for m in mus {
             mu_ratio.push(m?);
@@ -392,9 +398,31 @@ fn solve_amplitude(
         mean_normal_force_n: fbar,
         jumping: amp > 1.0,
         note,
+        system,
         warnings,
         rows,
     })
+}
+
+/// The system in the contact's units (`kx` its tangential stiffness, `omega`
+/// the drive's angular frequency): `kappa = K/kx`, `Omega = omega
+/// sqrt(m/kx)`, `zeta = c/(2 sqrt(K m))`, each checked as
+/// [`crate::system::System::new`] checks it.
+fn system_of(spec: &super::SystemSpec, kx: f64, omega: f64, source: &str) -> Result<crate::system::System> {
+    let (m, k, c) = (spec.mass_kg, spec.stiffness_n_per_m, spec.damping_n_s_per_m);
+    for (name, v, low) in [("system.mass_kg", m, 0.0), ("system.stiffness_n_per_m", k, 0.0)] {
+        if !(v.is_finite() && v > low) {
+            return Err(Error::Parse { context: source.into(), reason: format!("{name} = {v:?}: must be finite and > 0") });
+        }
+    }
+    if !(c.is_finite() && c >= 0.0) {
+        return Err(Error::Parse {
+            context: source.into(),
+            reason: format!("system.damping_n_s_per_m = {c:?}: must be finite and >= 0"),
+        });
+    }
+    crate::system::System::new(k / kx, omega * (m / kx).sqrt(), c / (2.0 * (k * m).sqrt()))
+        .map_err(|e| Error::Parse { context: source.into(), reason: format!("system: {e}") })
 }
 
 /// The mean indentation: given, or solved from the mean normal force (with a note saying so).

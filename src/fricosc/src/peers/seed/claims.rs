@@ -564,6 +564,7 @@ fn two_parameters() -> Claim {
             loading: Loading { mean_indentation_m: Some(u), mean_normal_force_n: None },
             oscillation: Oscillation { amplitude_m: Some(Values::One(d)), amplitude_fraction: None, frequency_hz: f },
             velocity: VelocitySpec { values_m_per_s: Some(vec![v]), sweep: None },
+            system: None,
         };
         let no_files = |_: &str| Err(std::io::Error::other("a sphere reads no file"));
         crate::scene::solve_with(&s, "claim", &no_files, &|_| {})
