@@ -70,7 +70,8 @@ pub(super) fn frequency() -> Result<Figure> {
     for kappa in KAPPAS {
         let mut points = vec![];
         for &om in &omegas {
-            let r = fricosc::system::solve(&fricosc::Shape::flat(), &c, &fricosc::system::System::new(kappa, om, zeta)?)?;
+            let r =
+                fricosc::system::solve(&fricosc::Shape::flat(), &c, &fricosc::system::System::new(kappa, om, zeta)?)?;
             if r.period != Some(1) {
                 other.push(format!("K/k_{{x}} {kappa}, Ω {om}: period {:?}", r.period));
             }

@@ -412,7 +412,10 @@ fn system_of(spec: &super::SystemSpec, kx: f64, omega: f64, source: &str) -> Res
     let (m, k, c) = (spec.mass_kg, spec.stiffness_n_per_m, spec.damping_n_s_per_m);
     for (name, v, low) in [("system.mass_kg", m, 0.0), ("system.stiffness_n_per_m", k, 0.0)] {
         if !(v.is_finite() && v > low) {
-            return Err(Error::Parse { context: source.into(), reason: format!("{name} = {v:?}: must be finite and > 0") });
+            return Err(Error::Parse {
+                context: source.into(),
+                reason: format!("{name} = {v:?}: must be finite and > 0"),
+            });
         }
     }
     if !(c.is_finite() && c >= 0.0) {

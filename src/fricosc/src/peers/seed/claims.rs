@@ -71,7 +71,7 @@ impl Claim {
     }
 }
 
-fn named(pairs: &[(&str, f64)]) -> Vec<(String, f64)> {
+pub(super) fn named(pairs: &[(&str, f64)]) -> Vec<(String, f64)> {
     pairs.iter().map(|&(n, v)| (n.to_string(), v)).collect()
 }
 
@@ -165,6 +165,9 @@ pub fn claims() -> Vec<Claim> {
         two_parameters(),
         eq14_small_amplitude(),
         static_friction_minimum_normal(),
+        super::part_two::stiff_system(),
+        super::part_two::heavy_soft_system(),
+        super::part_two::resonance_removes_critical_velocity(),
     ]
 }
 

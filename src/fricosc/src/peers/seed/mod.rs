@@ -6,6 +6,7 @@
 use std::f64::consts::PI;
 
 mod claims;
+mod part_two;
 
 pub use claims::{claims, exact_slope, Claim, Verdict};
 
