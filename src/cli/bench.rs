@@ -518,7 +518,15 @@ fn table_counts() -> Vec<crate::bench::InstructionCount> {
             "csv",
         ]
     };
-    let tables: [(&str, Vec<&str>, Vec<&str>, usize); 4] = [
+    let system = |shape: &'static str, vbar: &'static str, springs: &'static str| {
+        let mut args = seed(shape, vbar, "0.5");
+        args.extend(["--system-stiffness", "1", "--frequency-ratio", "0.5", "--damping", "0.05"]);
+        if shape != "flat" {
+            args.extend(["--springs", springs]);
+        }
+        args
+    };
+    let tables: [(&str, Vec<&str>, Vec<&str>, usize); 6] = [
         ("table, 100 x 100 flat", seed("flat", "0:1.2:100", "0:3:100"), seed("flat", "0.6", "1.5"), 10_000),
         ("table, 10 x 100 parabolic", seed("parabolic", "0:1.2:100", "0:3:10"), seed("parabolic", "0.6", "1.5"), 1_000),
         (
@@ -532,6 +540,18 @@ fn table_counts() -> Vec<crate::bench::InstructionCount> {
             oscillation("parabolic", "0.1:1.2:5", "0.1:4:5", "0:6:4"),
             oscillation("parabolic", "0.6", "2", "1"),
             100,
+        ),
+        (
+            "table on a system (K/kx 1, Omega 0.5, zeta 0.05), flat: 50 vbar at du/u0 = 0.5",
+            system("flat", "0.02:1:50", ""),
+            system("flat", "0.6", ""),
+            50,
+        ),
+        (
+            "table on a system (K/kx 1, Omega 0.5, zeta 0.05), parabolic, 64 springs: 4 vbar at du/u0 = 0.5",
+            system("parabolic", "0.1:1:4", "64"),
+            system("parabolic", "0.6", "64"),
+            4,
         ),
     ];
     let mut out = vec![];
