@@ -393,8 +393,9 @@ mod tests {
     #[test]
     fn a_chunk_at_fault_appends_nothing() {
         type Row = std::result::Result<(&'static str, Inputs), &'static str>;
-        let row =
-            |shape: &'static str, vbar: f64| -> Row { Ok((shape, Inputs([vbar, 1.0, f64::NAN, f64::NAN, f64::NAN]))) };
+        let row = |shape: &'static str, vbar: f64| -> Row {
+            Ok((shape, Inputs([vbar, 1.0, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN])))
+        };
         let mut shapes = Shapes::new(None);
         let mut jobs = vec![];
         fn read<'r>(r: &'r Row) -> Read<'r> {

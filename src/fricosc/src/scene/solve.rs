@@ -334,12 +334,11 @@ fn solve_amplitude(
     for chunk in c.velocities.chunks(1024) {
         let mus = crate::numerics::par::map(chunk, |&v0| -> Result<f64> {
             let vbar = v0 / v_crit;
-            let at = crate::Conditions::vbar(vbar, amp)?;
             Ok(match &system {
-                Some(sys) => crate::system::solve(&shape, &at, sys)?.mu_ratio,
+                Some(sys) => crate::system::solve(&shape, &crate::Conditions::vbar(vbar, amp)?, sys)?.mu_ratio,
                 // At or above the critical velocity no spring is computed.
                 None if vbar >= 1.0 => 1.0,
-                None => shape.ratio(&at)?.mu_ratio,
+                None => shape.ratio(&crate::Conditions::vbar(vbar, amp)?)?.mu_ratio,
             })
         });
         for m in mus {

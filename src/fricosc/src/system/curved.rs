@@ -150,16 +150,26 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
     (Found { mu: mean, period: None, periods_run: n, error }, (x, v, state))
 }
 
-/// The attractor of `shape` discretised into about `n` springs: `mu`, the
-/// period, the periods run, the standard error of a mean, the springs.
-pub(crate) fn discretised(
-    shape: &Shape,
-    p: Params,
-    n: usize,
-) -> Result<(f64, Option<usize>, usize, Option<f64>, usize)> {
+/// The attractor of `shape` discretised into about `n` springs, without an
+/// error estimate.
+pub(crate) fn discretised(shape: &Shape, p: Params, n: usize) -> Result<SystemReport> {
     let springs = discretise(shape, p.amp, n)?;
     let f = attractor(&Foundation::new(p, &springs)).0;
-    Ok((f.mu, f.period, f.periods_run, f.period.is_none().then_some(f.error), springs.len()))
+    Ok(report(&f, None, springs.len()))
+}
+
+/// The report of an attractor `f` of `springs` springs.
+fn report(f: &Found, error_estimate: Option<f64>, springs: usize) -> SystemReport {
+    SystemReport {
+        mu_ratio: f.mu,
+        period: f.period,
+        standard_error: f.period.is_none().then_some(f.error),
+        periods_run: f.periods_run,
+        multipliers: vec![],
+        events: vec![],
+        error_estimate,
+        springs: Some(springs),
+    }
 }
 
 /// The steady state of a curved body at `c` on the system `p` with at most
@@ -175,16 +185,8 @@ pub(crate) fn solve(shape: &Shape, p: Params, springs: usize) -> Result<SystemRe
     // Richardson on the N^-2 error where both are the same orbit.
     let extrapolate = fine.period.is_some() && fine.period == coarse.period;
     let closure = if fine.period.is_some() { fine.error + coarse.error } else { 0.0 };
-    Ok(SystemReport {
-        mu_ratio: if extrapolate { fine.mu + change / 3.0 } else { fine.mu },
-        period: fine.period,
-        standard_error: fine.period.is_none().then_some(fine.error),
-        periods_run: fine.periods_run,
-        multipliers: vec![],
-        events: vec![],
-        error_estimate: Some(change.abs() + closure),
-        springs: Some(nodes.len()),
-    })
+    let mu = if extrapolate { fine.mu + change / 3.0 } else { fine.mu };
+    Ok(report(&Found { mu, ..fine }, Some(change.abs() + closure), nodes.len()))
 }
 
 /// One period of the attractor of `shape` discretised into about `n`
@@ -203,17 +205,7 @@ pub(crate) fn history(shape: &Shape, p: Params, n: usize, taus: &[f64]) -> Resul
     let norm: f64 = nodes.iter().map(|(w, b)| w * b.max(0.0)).sum();
     let normal = |tau: f64| nodes.iter().map(|(w, b)| w * (b - p.amp * tau.cos()).max(0.0)).sum::<f64>() / norm;
     let forces = taus.iter().zip(tangential).map(|(&tau, f)| [normal(tau), f / norm]).collect();
-    let report = SystemReport {
-        mu_ratio: found.mu,
-        period: found.period,
-        standard_error: found.period.is_none().then_some(found.error),
-        periods_run: found.periods_run,
-        multipliers: vec![],
-        events: vec![],
-        error_estimate: None,
-        springs: Some(nodes.len()),
-    };
-    Ok((report, forces))
+    Ok((report(&found, None, nodes.len()), forces))
 }
 
 fn massless() -> Error {

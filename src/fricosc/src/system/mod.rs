@@ -229,10 +229,15 @@ fn map_k(ph: &Phases, s: &Reduced, k: usize) -> (Reduced, f64) {
 /// [`Error::InvalidParameter`] for bad inputs, and for a massless body
 /// (`frequency_ratio` 0) on a curved contact.
 pub fn solve(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<SystemReport> {
-    if shape.contact().single_spring() {
-        return Ok(attractor(c, sys)?.0);
-    }
-    curved::solve(shape, params(shape, c, sys)?, sys.springs)
+    let mut r = if shape.contact().single_spring() {
+        attractor(c, sys)?.0
+    } else {
+        curved::solve(shape, params(shape, c, sys)?, sys.springs)?
+    };
+    // Every spring's force is within its bound, so |mu| <= 1: a rounding (or
+    // an extrapolation) beyond is put back onto it.
+    r.mu_ratio = r.mu_ratio.clamp(-1.0, 1.0);
+    Ok(r)
 }
 
 /// The springs `(weight, 1 - G)` of `shape`'s discretisation into about
@@ -285,18 +290,7 @@ pub fn solve_discretised(shape: &crate::Shape, c: &Conditions, sys: &System, spr
     if !(1..=1 << 16).contains(&springs) {
         return Err(Error::param("springs", springs as f64, "must be in 1..=65536"));
     }
-    let (mu_ratio, period, periods_run, standard_error, n) =
-        curved::discretised(shape, params(shape, c, sys)?, springs)?;
-    Ok(SystemReport {
-        mu_ratio,
-        period,
-        standard_error,
-        periods_run,
-        multipliers: vec![],
-        events: vec![],
-        error_estimate: None,
-        springs: Some(n),
-    })
+    curved::discretised(shape, params(shape, c, sys)?, springs)
 }
 
 /// The contact force at the phases `taus` (ascending, in `[0, 2 pi)`) over

@@ -275,7 +275,7 @@ def point(
         sys_point: Dict[str, Any] = _fricosc.point_system(
             _core(shape), vh, a, t, ph, _scalar(system_stiffness, "system_stiffness"),
             _scalar(frequency_ratio, "frequency_ratio"), _scalar(damping, "damping"),
-            None if springs is None else _count(springs, "springs"),
+            None if springs is None else _whole(springs, "springs"),
         )
         return sys_point
     tangential = _tangential(tangential_amp, phase, is_vhat)
@@ -288,7 +288,7 @@ def point(
     return result
 
 
-def _count(value: Any, name: str) -> int:
+def _whole(value: Any, name: str) -> int:
     """A count >= 1 (an integer, not a bool)."""
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
         raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
@@ -360,7 +360,7 @@ def history(
     if springs is None:
         springs = 4000 if system_stiffness is None else 256
     for name, value in (("periods", periods), ("samples", samples), ("springs", springs)):
-        _count(value, name)
+        _whole(value, name)
     positions = [_scalar(x, "spring_at") for x in spring_at]
     result: Dict[str, Any] = _fricosc.history(
         _core(shape),
