@@ -36,7 +36,7 @@ pub(crate) struct Phases {
     gens: [Generator; 4],
     steps: [(f64, Generator); 4],
     /// Each kind's event functions (made once: they are checked every step).
-    events: [Vec<Event<Kind>>; 4],
+    events: [Vec<Sloped<Kind>>; 4],
 }
 
 fn index(kind: Kind) -> usize {
@@ -62,7 +62,7 @@ impl Phases {
             let h = super::springs::sampling_step(&a);
             (h, (a * h).exp())
         });
-        Phases { p, gens, steps, events: kinds.map(|k| p.events(k)) }
+        Phases { p, gens, steps, events: kinds.map(|k| with_slopes(&gens[index(k)], p.events(k))) }
     }
 
     /// The first event of `kind` within `h` of `z` (inputs: the start of a
@@ -157,32 +157,50 @@ impl Phases {
 /// the phase) and what its zero means.
 pub(crate) type Event<T> = (SMatrix<f64, 1, 8>, T);
 
+/// An event function with the row of its derivative in the phase (`w A`).
+pub(crate) type Sloped<T> = (SMatrix<f64, 1, 8>, SMatrix<f64, 1, 8>, T);
+
+/// `events` of the phase with generator `a`, each with its derivative's row.
+pub(crate) fn with_slopes<T>(a: &Generator, events: Vec<Event<T>>) -> Vec<Sloped<T>> {
+    events.into_iter().map(|(w, tag)| (w, w * a, tag)).collect()
+}
+
 /// The first zero within `h` of `z` among `events` of the phase with
 /// generator `a` (`end` the state after `h`): its offset and tag. A
 /// function below 0 at the step's end has a zero in the step (bracketed),
 /// or is already below 0 at its start (a force a rounding beyond its bound
 /// after a switch, a contact point a rounding past turning): the phase ends
 /// at once. A minimum inside the step that dips below 0 between positive
-/// ends (a grazing event) is found from the derivative's sign change.
+/// ends (a grazing event) is found from the derivative's sign change. The
+/// roots are sought on the step's Taylor polynomial ([`Taylor`]).
 pub(crate) fn first_event<T: Copy>(
     a: &Generator,
-    events: &[Event<T>],
+    events: &[Sloped<T>],
     z: &State,
     h: f64,
     end: &State,
 ) -> Option<(f64, T)> {
     let mut first: Option<(f64, T)> = None;
-    for &(w, next) in events {
-        let g = |d: f64| (w * advance(a, z, d))[0];
-        let slope = |d: f64| (w * a * advance(a, z, d))[0];
-        let (g0, g1) = ((w * z)[0], (w * end)[0]);
-        let root = if g1 < 0.0 {
-            Some(if g0 >= 0.0 { bracketed(g, 0.0, h, 4.0 * f64::EPSILON).x } else { 0.0 })
-        } else if g0 > 0.0 && g1 >= 0.0 && (w * a * z)[0] < 0.0 && (w * a * end)[0] > 0.0 {
-            let m = bracketed(slope, 0.0, h, 4.0 * f64::EPSILON).x;
-            (g(m) < 0.0).then(|| bracketed(g, 0.0, m, 4.0 * f64::EPSILON).x)
+    let mut taylor: Option<Taylor> = None;
+    for &(w, wa, next) in events {
+        let (g0, g1) = (w.dot(&z.transpose()), w.dot(&end.transpose()));
+        let below = g1 < 0.0;
+        let grazing = !below && g0 > 0.0 && wa.dot(&z.transpose()) < 0.0 && wa.dot(&end.transpose()) > 0.0;
+        if !(below || grazing) {
+            continue;
+        }
+        if below && g0 < 0.0 {
+            first = Some((0.0, next));
+            continue;
+        }
+        let c = taylor.get_or_insert_with(|| Taylor::new(a, z, h)).row(&w);
+        let g = |d: f64| horner(&c, d);
+        let root = if below {
+            Some(bracketed(g, 0.0, h, 4.0 * f64::EPSILON).x)
         } else {
-            None
+            let slope: Vec<f64> = c.iter().enumerate().skip(1).map(|(k, ck)| k as f64 * ck).collect();
+            let m = bracketed(|d| horner(&slope, d), 0.0, h, 4.0 * f64::EPSILON).x;
+            (g(m) < 0.0).then(|| bracketed(g, 0.0, m, 4.0 * f64::EPSILON).x)
         };
         if let Some(d) = root {
             if first.as_ref().is_none_or(|f| d < f.0) {
@@ -191,4 +209,44 @@ pub(crate) fn first_event<T: Copy>(
         }
     }
     first
+}
+
+/// Most terms of a step's Taylor polynomial.
+const MAX_TERMS: usize = 60;
+
+/// `exp(A d) z` on `0 <= d <= h` as its Taylor polynomial `sum_k A^k z d^k/k!`,
+/// summed until a term is below 1e-18 of the state (a sampling step is at
+/// most a quarter of the fastest time scale, so the terms fall at least like
+/// `4^-k/k!`): an event function along the step is a polynomial, its roots
+/// cheap to bracket.
+pub(crate) struct Taylor {
+    terms: Vec<State>,
+}
+
+impl Taylor {
+    pub(crate) fn new(a: &Generator, z: &State, h: f64) -> Taylor {
+        let scale = 1.0 + z.amax();
+        let mut terms = vec![*z];
+        let mut t = *z;
+        let mut hk = 1.0;
+        for k in 1..=MAX_TERMS {
+            t = a * t / k as f64;
+            hk *= h;
+            terms.push(t);
+            if k >= 4 && t.amax() * hk <= 1e-18 * scale {
+                break;
+            }
+        }
+        Taylor { terms }
+    }
+
+    /// The polynomial's coefficients of the function `w z`.
+    pub(crate) fn row(&self, w: &SMatrix<f64, 1, 8>) -> Vec<f64> {
+        self.terms.iter().map(|t| (w * t)[0]).collect()
+    }
+}
+
+/// `sum_k c_k d^k`.
+fn horner(c: &[f64], d: f64) -> f64 {
+    c.iter().rev().fold(0.0, |acc, ck| acc * d + ck)
 }

@@ -203,7 +203,7 @@ impl Foundation {
             let a = self.p.generator_of(f);
             let step = sampling_step(&a);
             let e = (a * step).exp();
-            let events = self.events(springs);
+            let events = super::period::with_slopes(&a, self.events(springs));
             loop {
                 let rest = TWO_PI - tau;
                 let mut h = step.min(rest);
