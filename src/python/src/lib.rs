@@ -420,9 +420,10 @@ fn table_of(names: Vec<String>, columns: Vec<(String, PyReadonlyArray1<'_, f64>)
 
 /// A table's comparison with the exact values (`fricosc validate`'s report) as a
 /// dict: the table read as the command line reads it, compared as it compares
-/// it (under oscillation in the sliding direction where it has `tangential_amp`).
+/// it (under oscillation in the sliding direction where it has `tangential_amp`;
+/// on a system `(kappa, Omega, zeta)` with its attractors).
 #[pyfunction]
-#[pyo3(signature = (shape, names, columns, mu0, at_rest, tolerance, peer, peer_springs))]
+#[pyo3(signature = (shape, names, columns, mu0, at_rest, tolerance, peer, peer_springs, system=None))]
 #[allow(clippy::too_many_arguments)]
 fn validate<'py>(
     py: Python<'py>,
@@ -434,15 +435,18 @@ fn validate<'py>(
     tolerance: f64,
     peer: Option<usize>,
     peer_springs: Option<usize>,
+    system: Option<(f64, f64, f64)>,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let system = system.map(|(k, om, z)| fricosc::system::System::new(k, om, z)).transpose().map_err(to_py)?;
     let check = Check::default()
         .with_at_rest(at_rest_of(at_rest)?)
         .with_tolerance(tolerance)
-        .with_peer(peer.map(|m| Stepping { steps_per_period: m, springs: peer_springs.unwrap_or(m) }));
+        .with_peer(peer.map(|m| Stepping { steps_per_period: m, springs: peer_springs.unwrap_or(m) }))
+        .with_system(system);
     let table = table_of(names, columns)?;
     let shape = &shape.inner;
-    let result = if table.is_oscillation() {
-        let rows = table.oscillation_rows(mu0, "table").map_err(to_py)?;
+    let result = if table.is_oscillation() || system.is_some() {
+        let rows = table.rows_as_oscillation(mu0, "table").map_err(to_py)?;
         let v = py.detach(|| compare_oscillation(shape, &rows, &check)).map_err(to_py)?;
         pythonize::pythonize(py, &v)
     } else {

@@ -15,6 +15,7 @@ import math
 import os
 import pathlib
 import subprocess
+import tempfile
 from decimal import Decimal
 from typing import Any, Callable, Dict, List, Tuple
 
@@ -601,6 +602,16 @@ def test_point_on_a_system_is_the_command_lines() -> None:
     assert cone["mu_ratio"] == theirs["mu_ratio"] and cone["error_estimate"] == theirs["error_estimate"]
     with pytest.raises(fricosc.InputError, match="massless"):
         fricosc.point("parabolic", vhat=0.3, amp=0.5, system_stiffness=1.0)
+    table = {"vbar": [0.1, 0.5], "amp": [0.5, 0.5], "mu_ratio": [0.6, 0.9]}
+    mine_v = fricosc.validate(table, system_stiffness=1.0, frequency_ratio=0.5, damping=0.3)
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "t.csv")
+        with open(path, "w") as f:
+            f.write("vbar,amp,mu_ratio\n0.1,0.5,0.6\n0.5,0.5,0.9\n")
+        theirs_v = json.loads(cli("validate", path, "--system-stiffness", "1", "--frequency-ratio", "0.5",
+                                  "--damping", "0.3", "--format", "json", "--report-only"))
+    assert [r["exact"] for r in mine_v["rows"]] == [r["exact"] for r in theirs_v["rows"]]
+    assert mine_v["system"]["stiffness"] == 1.0 and mine_v["by_regime"][0]["regime"] == "period 1"
     curved = fricosc.history("cone", vhat=0.3, amp=0.5, system_stiffness=1.0, frequency_ratio=0.5, samples=8)
     csv_text = cli("history", "--shape", "cone", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1",
                    "--frequency-ratio", "0.5", "--samples", "8", "--format", "csv")

@@ -418,6 +418,9 @@ def validate(
     tolerance: float = 1e-9,
     peer: Optional[int] = None,
     peer_springs: Optional[int] = None,
+    system_stiffness: Optional[float] = None,
+    frequency_ratio: float = 0.0,
+    damping: float = 0.0,
 ) -> Dict[str, Any]:
     """Compare another code's table with the exact values, as ``fricosc validate``
     does: the same JSON report as a dict (per-row errors and regimes, errors by
@@ -434,6 +437,9 @@ def validate(
     ``vbar = 0`` row is compared with). ``peer=M``: run fricosc's stepping peer
     at ``M`` steps per period (and ``peer_springs`` springs, default ``M``) on
     every row and set its error beside yours (``peer_error``).
+    ``system_stiffness`` (``frequency_ratio``, ``damping``): the table is on a
+    system with mass and stiffness, compared with its attractors (as
+    ``fricosc validate --system-stiffness``).
 
     >>> r = validate({"vbar": [0.2, 1.1], "amp": [0.5, 0.5], "mu_ratio": [0.7145, 1.2]})
     >>> r["max_abs_error"] > 0.19, [f["kind"] for f in r["findings"]]
@@ -450,6 +456,13 @@ def validate(
         float(tolerance),
         None if peer is None else _count(peer, "peer"),
         None if peer_springs is None else _count(peer_springs, "peer_springs"),
+        None
+        if system_stiffness is None
+        else (
+            _scalar(system_stiffness, "system_stiffness"),
+            _scalar(frequency_ratio, "frequency_ratio"),
+            _scalar(damping, "damping"),
+        ),
     )
     result["shape_source"] = source
     return result

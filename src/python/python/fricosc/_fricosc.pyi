@@ -70,6 +70,7 @@ def validate(
     tolerance: float,
     peer: Optional[int],
     peer_springs: Optional[int],
+    system: Optional[Tuple[float, float, float]] = None,
 ) -> Dict[str, Any]: ...
 def validate_series(
     shape: CoreShape,
