@@ -330,22 +330,8 @@ fn solve_amplitude(
         });
     }
     let system = s.system.as_ref().map(|spec| system_of(spec, kz * ratio, c.omega, source)).transpose()?;
-    let mut mu_ratio = Vec::with_capacity(c.velocities.len());
-    for chunk in c.velocities.chunks(1024) {
-        let mus = crate::numerics::par::map(chunk, |&v0| -> Result<f64> {
-            let vbar = v0 / v_crit;
-            Ok(match &system {
-                Some(sys) => crate::system::solve(&shape, &crate::Conditions::vbar(vbar, amp)?, sys)?.mu_ratio,
-                // At or above the critical velocity no spring is computed.
-                None if vbar >= 1.0 => 1.0,
-                None => shape.ratio(&crate::Conditions::vbar(vbar, amp)?)?.mu_ratio,
-            })
-        });
-        for m in mus {
-            mu_ratio.push(m?);
-        }
-        progress(chunk.len() as u64);
-    }
+    let vbars: Vec<f64> = c.velocities.iter().map(|v0| v0 / v_crit).collect();
+    let mu_ratio = mu_ratios(&shape, &vbars, amp, system.as_ref(), progress)?;
     let rows =
         Rows { velocity: c.velocities.clone(), mu_ratio, v_crit, amp, mu0: c.mu0, normal: fbar, flat: shape.is_flat() };
     // Every number of the answer must be finite: an overflow names its field.
@@ -401,6 +387,33 @@ fn solve_amplitude(
         warnings,
         rows,
     })
+}
+
+/// `mu/mu0` at every `vbar` (on every core, in chunks that report `progress`),
+/// on `system` if any.
+fn mu_ratios(
+    shape: &crate::Shape,
+    vbars: &[f64],
+    amp: f64,
+    system: Option<&crate::system::System>,
+    progress: &(dyn Fn(u64) + Sync),
+) -> Result<Vec<f64>> {
+    let mut mu_ratio = Vec::with_capacity(vbars.len());
+    for chunk in vbars.chunks(1024) {
+        let mus = crate::numerics::par::map(chunk, |&vbar| -> Result<f64> {
+            Ok(match system {
+                Some(sys) => crate::system::solve(shape, &crate::Conditions::vbar(vbar, amp)?, sys)?.mu_ratio,
+                // At or above the critical velocity no spring is computed.
+                None if vbar >= 1.0 => 1.0,
+                None => shape.ratio(&crate::Conditions::vbar(vbar, amp)?)?.mu_ratio,
+            })
+        });
+        for m in mus {
+            mu_ratio.push(m?);
+        }
+        progress(chunk.len() as u64);
+    }
+    Ok(mu_ratio)
 }
 
 /// The system in the contact's units (`kx` its tangential stiffness, `omega`
