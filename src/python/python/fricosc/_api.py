@@ -288,6 +288,17 @@ def point(
     return result
 
 
+def _system(stiffness: Optional[float], frequency_ratio: float, damping: float) -> Optional[Tuple[float, float, float]]:
+    """``(kappa, Omega, zeta)`` of a system with mass and stiffness, if ``stiffness`` is given."""
+    if stiffness is None:
+        return None
+    return (
+        _scalar(stiffness, "system_stiffness"),
+        _scalar(frequency_ratio, "frequency_ratio"),
+        _scalar(damping, "damping"),
+    )
+
+
 def _whole(value: Any, name: str) -> int:
     """A count >= 1 (an integer, not a bool)."""
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
@@ -372,13 +383,7 @@ def history(
         int(samples),
         int(springs),
         positions,
-        None
-        if system_stiffness is None
-        else (
-            _scalar(system_stiffness, "system_stiffness"),
-            _scalar(frequency_ratio, "frequency_ratio"),
-            _scalar(damping, "damping"),
-        ),
+        _system(system_stiffness, frequency_ratio, damping),
     )
     return result
 
@@ -456,13 +461,7 @@ def validate(
         float(tolerance),
         None if peer is None else _count(peer, "peer"),
         None if peer_springs is None else _count(peer_springs, "peer_springs"),
-        None
-        if system_stiffness is None
-        else (
-            _scalar(system_stiffness, "system_stiffness"),
-            _scalar(frequency_ratio, "frequency_ratio"),
-            _scalar(damping, "damping"),
-        ),
+        _system(system_stiffness, frequency_ratio, damping),
     )
     result["shape_source"] = source
     return result
