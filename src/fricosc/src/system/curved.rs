@@ -95,6 +95,22 @@ fn distance(a: &Snapshot, b: &Snapshot) -> f64 {
     springs.fold(rel(a.0, b.0).max(rel(a.1, b.1)), f64::max)
 }
 
+/// The least period of an orbit closed after `k` periods to `closed`: the
+/// first divisor `p` of `k` after which the state is back within ten times
+/// that (a period-1 orbit found while a decaying transient still made the
+/// state after `k` periods the nearest).
+fn least_period(fd: &Foundation, (x, v, state): (f64, f64, &[Spring]), k: usize, closed: f64) -> usize {
+    let start = (x, v, fd.forces_at_start(x, state));
+    let (mut y, mut w, mut s) = (x, v, state.to_vec());
+    for p in 1..k {
+        (y, w, _, _) = fd.period(y, w, &mut s, &[]);
+        if k.is_multiple_of(p) && distance(&start, &(y, w, fd.forces_at_start(y, &s))) <= 10.0 * closed {
+            return p;
+        }
+    }
+    k
+}
+
 /// The attractor of one discretisation from the stated start: the period map
 /// iterated until its state repeats after `k <= MAX_ORBIT` periods (to
 /// [`REPEAT`]), then orbit after orbit until it closes to [`TIGHT`]; the
@@ -138,6 +154,7 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
             }
             if rate < 1.0 || d <= TIGHT {
                 let closure = if d <= TIGHT { change } else { change * rate / (1.0 - rate) };
+                let k = least_period(&fd, (x, v, &state), k, d.max(TIGHT));
                 return (Found { mu, period: Some(k), periods_run: n, error: closure }, (x, v, state));
             }
         }

@@ -163,3 +163,14 @@ fn mu_is_continuous_in_every_parameter() {
         }
     }
 }
+
+/// The least period is reported: on a paraboloid at the stick resonance every
+/// spring slips (`mu = 1`) while the body's free motion decays; the state
+/// after three periods was once the nearest, and a period-1 orbit was
+/// reported as period 3.
+#[test]
+fn a_curved_orbit_reports_its_least_period() {
+    let c = Conditions::vbar(0.3, 0.5).unwrap();
+    let r = solve(&Shape::parabolic(), &c, &System::new(1.0, 1.41, 0.05).unwrap()).unwrap();
+    assert_eq!((r.period, r.mu_ratio), (Some(1), 1.0), "{r:?}");
+}
