@@ -154,7 +154,7 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
             }
             if rate < 1.0 || d <= TIGHT {
                 let closure = if d <= TIGHT { change } else { change * rate / (1.0 - rate) };
-                let k = least_period(&fd, (x, v, &state), k, d.max(TIGHT));
+                let k = least_period(fd, (x, v, &state), k, d.max(TIGHT));
                 return (Found { mu, period: Some(k), periods_run: n, error: closure }, (x, v, state));
             }
         }
