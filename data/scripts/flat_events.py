@@ -70,28 +70,33 @@ def state(vbar, amp):
     return mu, events
 
 
-if "--near-one" in sys.argv:
-    cases = []
-    vbars = [10.0 ** -k for k in range(16, 1, -1)] + [3e-16, 3e-13, 3e-9, 3e-5]
-    amps = [1.0] + [1.0 - 10.0 ** -k for k in (12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2)] + [1.0 + 10.0 ** -k for k in (12, 8, 4)]
-    for amp in amps:
-        for vbar in sorted(vbars):
-            mu, _ = state(vbar, amp)
-            cases.append({"vbar": vbar, "amp": amp, "mu_ratio": nstr(mu, 40), "reduction": nstr(1 - mu, 40)})
-    print(json.dumps({"source": "data/scripts/flat_events.py --near-one (mpmath, 50 digits)", "cases": cases}, indent=1))
-    sys.exit(0)
+def main():
+    if "--near-one" in sys.argv:
+        cases = []
+        vbars = [10.0 ** -k for k in range(16, 1, -1)] + [3e-16, 3e-13, 3e-9, 3e-5]
+        amps = [1.0] + [1.0 - 10.0 ** -k for k in (12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2)] + [1.0 + 10.0 ** -k for k in (12, 8, 4)]
+        for amp in amps:
+            for vbar in sorted(vbars):
+                mu, _ = state(vbar, amp)
+                cases.append({"vbar": vbar, "amp": amp, "mu_ratio": nstr(mu, 40), "reduction": nstr(1 - mu, 40)})
+        print(json.dumps({"source": "data/scripts/flat_events.py --near-one (mpmath, 50 digits)", "cases": cases}, indent=1))
+        return
 
-cases = []
-vbars = [1e-15, 1.719072201858571e-16, 1e-13, 1e-12, 1e-10, 1e-8, 1e-6, 1e-4, 1e-3, 1e-2, 0.1, 0.5]
-amps = [0.5, 1.0, 1.0000000075128732, 1 + 1e-9, 1 + 1e-6, 1.01, 1.5, 2.0, 10.0, 1e3]
-for amp in amps:
-    for vbar in vbars:
-        mu, ev = state(vbar, amp)
-        cases.append({
-            "vbar": vbar,
-            "amp": amp,
-            "mu_ratio": nstr(mu, 40),
-            "reduction": nstr(1 - mu, 40),
-            "events": [{"kind": k, "tau": nstr(t, 40), "force": nstr(f, 40)} for k, t, f in ev],
-        })
-print(json.dumps({"source": "data/scripts/flat_events.py (mpmath, 50 digits)", "cases": cases}, indent=1))
+    cases = []
+    vbars = [1e-15, 1.719072201858571e-16, 1e-13, 1e-12, 1e-10, 1e-8, 1e-6, 1e-4, 1e-3, 1e-2, 0.1, 0.5]
+    amps = [0.5, 1.0, 1.0000000075128732, 1 + 1e-9, 1 + 1e-6, 1.01, 1.5, 2.0, 10.0, 1e3]
+    for amp in amps:
+        for vbar in vbars:
+            mu, ev = state(vbar, amp)
+            cases.append({
+                "vbar": vbar,
+                "amp": amp,
+                "mu_ratio": nstr(mu, 40),
+                "reduction": nstr(1 - mu, 40),
+                "events": [{"kind": k, "tau": nstr(t, 40), "force": nstr(f, 40)} for k, t, f in ev],
+            })
+    print(json.dumps({"source": "data/scripts/flat_events.py (mpmath, 50 digits)", "cases": cases}, indent=1))
+
+
+if __name__ == "__main__":
+    main()

@@ -58,6 +58,7 @@
 mod conditions;
 pub mod contact;
 mod error;
+pub mod fit;
 mod integrate;
 pub mod io;
 mod model;

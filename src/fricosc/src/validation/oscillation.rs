@@ -109,7 +109,7 @@ pub struct OscillationValidation {
 /// exact values of `shape` (at [`crate::DEFAULT_TOL`]), or on `check.system`
 /// with its attractors ([`crate::system::solve`]; the regime is the period);
 /// `check.peer` runs the stepping peer ([`crate::stepper::evaluate`], three
-/// periods; on a system [`crate::stepper::system`], [`SYSTEM_PEER_PERIODS`])
+/// periods; on a system [`crate::stepper::system`], 40 periods)
 /// on every row too. `check.at_rest` does not apply (a `vhat = 0` row is the
 /// limit `vhat -> 0+`).
 ///

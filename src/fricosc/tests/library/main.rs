@@ -10,6 +10,7 @@ mod combined_curved;
 mod contact;
 mod degenerate;
 mod edges;
+mod fit;
 #[allow(clippy::excessive_precision)]
 mod flat;
 mod flat_events;

@@ -1,0 +1,35 @@
+"""Exact synthetic measurements for `fricosc fit`: the flat punch's mu_macro at
+chosen (mu0, kx/kz, u0), from the independent 50-digit steady state of
+`flat_events.py` (bisection on the stick's gap, mpmath quadratures), not from
+fricosc.
+
+Each row's v0, du and frequency are written as given (6 significant digits);
+mu = mu0 * mu_ratio(vbar, du/u0) with vbar = (kx/kz) v0 / (mu0 omega du), omega
+= 2 pi frequency, computed at exactly those values and printed to 17 digits.
+
+Run: python3 data/scripts/fit_synthetic.py > data/fit-synthetic-flat.csv   (needs mpmath; about 20 s)
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from flat_events import state  # noqa: E402
+from mpmath import mp, mpf, pi, nstr  # noqa: E402
+
+mp.dps = 50
+MU0, RATIO, U0, FREQUENCY = mpf("0.35"), mpf("0.8"), mpf("1e-6"), mpf(200)
+
+
+def mu_at(v0, du):
+    vbar = RATIO * v0 / (MU0 * 2 * pi * FREQUENCY * du)
+    if vbar >= 1:
+        return MU0
+    mu, _ = state(vbar, du / U0)
+    return MU0 * mu
+
+
+print("v0,du,frequency,mu")
+for du in ("3e-7", "6e-7", "1.2e-6"):
+    for vbar in (0.05, 0.1, 0.2, 0.3, 0.45, 0.6, 0.75, 0.9, 1.1):
+        v0 = float(nstr(mpf(vbar) * MU0 * 2 * pi * FREQUENCY * mpf(du) / RATIO, 6))
+        print(f"{v0!r},{du},{int(FREQUENCY)},{nstr(mu_at(mpf(repr(v0)), mpf(du)), 17)}")

@@ -1,0 +1,375 @@
+//! The model fitted to measured friction: `mu = mu0 * mu_ratio(shape, vbar,
+//! amp)` with `vbar = (kx/kz) v0 / (mu0 omega du)` and `amp = du/u0` (the
+//! seed's eqs. 1-3, the same for every MDR spring), for the parameters
+//! `mu0`, `kx/kz` (the stiffness ratio) and `u0`, each fitted or fixed.
+//!
+//! # Method
+//! Weighted least squares (`sigma` per row, else 1) by Levenberg-Marquardt
+//! in the logarithms of the free parameters (which keeps them positive), the
+//! Jacobian by central differences of the exact solver (a relative step of
+//! 1e-5: the solver's 1e-15 error makes the derivative good to about 1e-10).
+//! The start needs no user input: `mu0` is the largest measured `mu` (the
+//! plateau at `vbar >= 1`), then `u0` and `kx/kz` are the best of a
+//! logarithmic grid. The covariance is `(J^T W J)^-1`, scaled by the reduced
+//! chi-square where no row gives `sigma` (the residuals then estimate it). A
+//! direction the data do not determine (a scaled Jacobian with a condition
+//! number beyond 1e8, or a parameter nothing depends on) is named, and its
+//! parameters get no standard error.
+
+use crate::error::{Error, Result};
+use crate::shape::Shape;
+use crate::Conditions;
+use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
+
+/// One measured row.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Measurement {
+    /// Sliding velocity `v0` (m/s), `>= 0`.
+    pub v0: f64,
+    /// Normal oscillation amplitude `du` (m), `> 0`.
+    pub du: f64,
+    /// Angular frequency `omega` (rad/s), `> 0`.
+    pub omega: f64,
+    /// Measured macroscopic friction coefficient.
+    pub mu: f64,
+    /// Its standard uncertainty (`> 0`), if known.
+    pub sigma: Option<f64>,
+}
+
+/// Parameters held fixed (the others are fitted).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Fixed {
+    /// `mu0`.
+    pub mu0: Option<f64>,
+    /// `kx/kz`.
+    pub stiffness_ratio: Option<f64>,
+    /// `u0` (m).
+    pub u0: Option<f64>,
+}
+
+/// One parameter's value and standard error.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Parameter {
+    /// The fitted (or fixed) value.
+    pub value: f64,
+    /// Its standard error (0 for a fixed parameter; `None` where the data do
+    /// not determine it).
+    pub stderr: Option<f64>,
+    /// Held fixed.
+    pub fixed: bool,
+}
+
+/// A fit's answer.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
+pub struct FitReport {
+    /// `mu0`, `kx/kz`, `u0` (m).
+    pub mu0: Parameter,
+    /// `kx/kz`.
+    pub stiffness_ratio: Parameter,
+    /// `u0` (m).
+    pub u0: Parameter,
+    /// Covariance of `(mu0, kx/kz, u0)` (rows and columns of fixed or
+    /// undetermined parameters 0).
+    pub covariance: [[f64; 3]; 3],
+    /// Correlation matrix (1 on the diagonal of fitted parameters).
+    pub correlation: [[f64; 3]; 3],
+    /// `sum ((model - mu)/sigma)^2`.
+    pub chi2: f64,
+    /// Rows less fitted parameters.
+    pub dof: usize,
+    /// `chi2 / dof`.
+    pub reduced_chi2: f64,
+    /// Per row `mu - model`.
+    pub residuals: Vec<f64>,
+    /// Per row `vbar` and `amp` at the fitted parameters.
+    pub points: Vec<[f64; 2]>,
+    /// Whether the rows gave `sigma` (else the covariance is scaled by `reduced_chi2`).
+    pub weighted: bool,
+    /// What the data cannot determine, in words (empty: every fitted parameter is determined).
+    pub verdicts: Vec<String>,
+    /// Levenberg-Marquardt iterations.
+    pub iterations: usize,
+}
+
+/// Most iterations of Levenberg-Marquardt.
+const MAX_ITERATIONS: usize = 200;
+/// Largest condition number of the scaled Jacobian that determines every parameter.
+const MAX_CONDITION: f64 = 1e8;
+const NAMES: [&str; 3] = ["mu0", "stiffness_ratio", "u0"];
+
+/// `mu` of the model at `p = (mu0, kx/kz, u0)` for each row, with `(vbar, amp)`.
+fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f64, [f64; 2])>> {
+    rows.iter()
+        .map(|r| {
+            let (vbar, amp) = (p[1] * r.v0 / (p[0] * r.omega * r.du), r.du / p[2]);
+            let ratio = if vbar >= 1.0 { 1.0 } else { shape.ratio(&Conditions::vbar(vbar, amp)?)?.mu_ratio };
+            Ok((p[0] * ratio, [vbar, amp]))
+        })
+        .collect()
+}
+
+/// Checked rows: finite, positive where they must be, at least as many as the fitted parameters.
+fn check(rows: &[Measurement], free: usize) -> Result<()> {
+    for (i, r) in rows.iter().enumerate() {
+        let bad = |name: &'static str, v: f64, why: &str| Error::param(name, v, &format!("row {i}: {why}"));
+        if !(r.v0.is_finite() && r.v0 >= 0.0) {
+            return Err(bad("v0", r.v0, "a sliding velocity must be finite and >= 0"));
+        }
+        if !(r.du.is_finite() && r.du > 0.0) {
+            return Err(bad("du", r.du, "an amplitude must be finite and > 0"));
+        }
+        if !(r.omega.is_finite() && r.omega > 0.0) {
+            return Err(bad("omega", r.omega, "a frequency must be finite and > 0"));
+        }
+        if !r.mu.is_finite() {
+            return Err(bad("mu", r.mu, "must be finite"));
+        }
+        if let Some(s) = r.sigma.filter(|s| !(s.is_finite() && *s > 0.0)) {
+            return Err(bad("sigma", s, "must be finite and > 0"));
+        }
+    }
+    if rows.len() <= free {
+        return Err(Error::param("rows", rows.len() as f64, &format!("a fit of {free} parameters needs more rows")));
+    }
+    Ok(())
+}
+
+/// Fit `shape`'s model to `rows` with `fixed` parameters held (module docs).
+///
+/// # Errors
+/// [`Error::InvalidParameter`] for a bad row (named), fixed values that are
+/// not finite and positive, fewer rows than fitted parameters plus one, or a
+/// mix of rows with and without `sigma`; the solver's errors.
+pub fn fit(shape: &Shape, rows: &[Measurement], fixed: &Fixed) -> Result<FitReport> {
+    let given = [fixed.mu0, fixed.stiffness_ratio, fixed.u0];
+    for (name, v) in NAMES.iter().zip(given) {
+        if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
+            return Err(Error::param(name, v, "a fixed parameter must be finite and > 0"));
+        }
+    }
+    let free: Vec<usize> = (0..3).filter(|&k| given[k].is_none()).collect();
+    check(rows, free.len())?;
+    let weighted = rows.iter().any(|r| r.sigma.is_some());
+    if weighted && rows.iter().any(|r| r.sigma.is_none()) {
+        return Err(Error::param("sigma", f64::NAN, "give sigma on every row or on none"));
+    }
+    let sigma: Vec<f64> = rows.iter().map(|r| r.sigma.unwrap_or(1.0)).collect();
+    let residuals = |p: &Vector3<f64>| -> Result<DVector<f64>> {
+        let m = model(shape, rows, p)?;
+        Ok(DVector::from_iterator(rows.len(), m.iter().zip(rows).zip(&sigma).map(|((m, r), s)| (m.0 - r.mu) / s)))
+    };
+    let start = start(shape, rows, &given, &residuals)?;
+    let (p, iterations) = levenberg_marquardt(start, &free, &residuals)?;
+    report(shape, rows, p, &free, weighted, iterations, &residuals)
+}
+
+type Residuals<'a> = dyn Fn(&Vector3<f64>) -> Result<DVector<f64>> + 'a;
+
+/// The start: `mu0` the largest `mu` (or fixed), then the best `(u0, kx/kz)`
+/// of a logarithmic grid (the fixed ones as given): `u0` from 0.2 to 20 times
+/// the largest `du`, `kx/kz` where the median row's `vbar` runs from 0.01 to 10.
+fn start(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3], res: &Residuals) -> Result<Vector3<f64>> {
+    let mu0 = given[0].unwrap_or_else(|| rows.iter().map(|r| r.mu).fold(f64::MIN, f64::max).max(1e-12));
+    let du_max = rows.iter().map(|r| r.du).fold(0.0, f64::max);
+    let mut scales: Vec<f64> = rows.iter().filter(|r| r.v0 > 0.0).map(|r| mu0 * r.omega * r.du / r.v0).collect();
+    scales.sort_by(f64::total_cmp);
+    let scale = scales.get(scales.len() / 2).copied().unwrap_or(1.0);
+    let u0s: Vec<f64> = match given[2] {
+        Some(u) => vec![u],
+        None => (0..=20).map(|k| du_max * 0.2 * 10f64.powf(2.0 * k as f64 / 20.0)).collect(),
+    };
+    let ratios: Vec<f64> = match given[1] {
+        Some(r) => vec![r],
+        None => (0..=24).map(|k| scale * 10f64.powf(-2.0 + 3.0 * k as f64 / 24.0)).collect(),
+    };
+    let mut best = (f64::INFINITY, Vector3::new(mu0, ratios[0], u0s[0]));
+    for &u0 in &u0s {
+        for &r in &ratios {
+            let p = Vector3::new(mu0, r, u0);
+            if shape.check_amp(du_max / u0).is_err() {
+                continue;
+            }
+            let chi2 = res(&p)?.norm_squared();
+            if chi2 < best.0 {
+                best = (chi2, p);
+            }
+        }
+    }
+    Ok(best.1)
+}
+
+/// The Jacobian of the residuals in the logarithms of the `free` parameters.
+fn jacobian(p: &Vector3<f64>, free: &[usize], res: &Residuals) -> Result<DMatrix<f64>> {
+    let n = res(p)?.len();
+    let mut j = DMatrix::zeros(n, free.len());
+    for (c, &k) in free.iter().enumerate() {
+        let h: f64 = 1e-5;
+        let (mut a, mut b) = (*p, *p);
+        a[k] *= h.exp();
+        b[k] *= (-h).exp();
+        j.set_column(c, &((res(&a)? - res(&b)?) / (2.0 * h)));
+    }
+    Ok(j)
+}
+
+/// Levenberg-Marquardt in the logarithms of the free parameters from `p`.
+fn levenberg_marquardt(mut p: Vector3<f64>, free: &[usize], res: &Residuals) -> Result<(Vector3<f64>, usize)> {
+    let mut r = res(&p)?;
+    let mut chi2 = r.norm_squared();
+    let mut lambda = 1e-3;
+    for it in 1..=MAX_ITERATIONS {
+        let j = jacobian(&p, free, res)?;
+        let jtj = j.transpose() * &j;
+        let g = j.transpose() * &r;
+        let mut improved = false;
+        while lambda < 1e16 {
+            let mut a = jtj.clone();
+            for d in 0..free.len() {
+                a[(d, d)] += lambda * jtj[(d, d)].max(1e-300);
+            }
+            let Some(step) = a.lu().solve(&(-&g)) else { break };
+            let mut q = p;
+            for (c, &k) in free.iter().enumerate() {
+                q[k] *= step[c].exp();
+            }
+            let rq = match res(&q) {
+                Ok(rq) => rq,
+                Err(_) => {
+                    lambda *= 10.0;
+                    continue;
+                }
+            };
+            let chi2q = rq.norm_squared();
+            if chi2q <= chi2 {
+                let small = step.amax() < 1e-12 || chi2 - chi2q <= 1e-15 * chi2;
+                (p, r, chi2, improved) = (q, rq, chi2q, true);
+                lambda = (lambda / 10.0).max(1e-12);
+                if small {
+                    return Ok((p, it));
+                }
+                break;
+            }
+            lambda *= 10.0;
+        }
+        if !improved {
+            return Ok((p, it));
+        }
+    }
+    Ok((p, MAX_ITERATIONS))
+}
+
+/// The covariance, standard errors and verdicts at the fitted `p`.
+fn report(
+    shape: &Shape,
+    rows: &[Measurement],
+    p: Vector3<f64>,
+    free: &[usize],
+    weighted: bool,
+    iterations: usize,
+    res: &Residuals,
+) -> Result<FitReport> {
+    let fitted = model(shape, rows, &p)?;
+    let chi2 = res(&p)?.norm_squared();
+    let dof = rows.len() - free.len();
+    let reduced_chi2 = chi2 / dof as f64;
+    let j = jacobian(&p, free, res)?;
+    let mut verdicts = vec![];
+    let determined = determined(&j, free, &fitted, &mut verdicts);
+    let mut cov = Matrix3::zeros();
+    let kept: Vec<usize> = (0..free.len()).filter(|&c| determined[c]).collect();
+    if !kept.is_empty() {
+        let jk = j.select_columns(&kept);
+        if let Some(inv) = (jk.transpose() * &jk).try_inverse() {
+            let scale = if weighted { 1.0 } else { reduced_chi2 };
+            for (a, &ca) in kept.iter().enumerate() {
+                for (b, &cb) in kept.iter().enumerate() {
+                    let (ka, kb) = (free[ca], free[cb]);
+                    cov[(ka, kb)] = inv[(a, b)] * scale * p[ka] * p[kb];
+                }
+            }
+        }
+    }
+    let param = |k: usize| {
+        let c = free.iter().position(|&f| f == k);
+        let stderr = match c {
+            None => Some(0.0),
+            Some(c) if determined[c] => Some(cov[(k, k)].sqrt()),
+            Some(_) => None,
+        };
+        Parameter { value: p[k], stderr, fixed: c.is_none() }
+    };
+    let mut correlation = [[0.0; 3]; 3];
+    for (a, row) in correlation.iter_mut().enumerate() {
+        for (b, x) in row.iter_mut().enumerate() {
+            let d = (cov[(a, a)] * cov[(b, b)]).sqrt();
+            *x = if d > 0.0 { cov[(a, b)] / d } else { 0.0 };
+        }
+    }
+    Ok(FitReport {
+        mu0: param(0),
+        stiffness_ratio: param(1),
+        u0: param(2),
+        covariance: std::array::from_fn(|a| std::array::from_fn(|b| cov[(a, b)])),
+        correlation,
+        chi2,
+        dof,
+        reduced_chi2,
+        residuals: rows.iter().zip(&fitted).map(|(r, m)| r.mu - m.0).collect(),
+        points: fitted.iter().map(|m| m.1).collect(),
+        weighted,
+        verdicts,
+        iterations,
+    })
+}
+
+/// Which free parameters the data determine (per column of `j`), with the
+/// verdicts in words: all rows at `vbar >= 1` leave `kx/kz` and `u0` free; a
+/// column of zeros or a scaled Jacobian beyond [`MAX_CONDITION`] names the
+/// parameters of its weakest direction.
+fn determined(j: &DMatrix<f64>, free: &[usize], fitted: &[(f64, [f64; 2])], verdicts: &mut Vec<String>) -> Vec<bool> {
+    let mut ok = vec![true; free.len()];
+    if fitted.iter().all(|m| m.1[0] >= 1.0) {
+        verdicts.push("all rows have vbar >= 1 (no reduction: mu = mu0 there): kx/kz and u0 are not determined".into());
+        for (c, &k) in free.iter().enumerate() {
+            ok[c] = k == 0;
+        }
+        return ok;
+    }
+    let norms: Vec<f64> = (0..free.len()).map(|c| j.column(c).norm()).collect();
+    let top = norms.iter().copied().fold(0.0, f64::max);
+    for (c, &n) in norms.iter().enumerate() {
+        if !(n > 1e-12 * top) {
+            ok[c] = false;
+            verdicts.push(format!("{}: the rows do not depend on it", NAMES[free[c]]));
+        }
+    }
+    let live: Vec<usize> = (0..free.len()).filter(|&c| ok[c]).collect();
+    if live.len() > 1 {
+        let mut scaled = j.select_columns(&live);
+        for (c, &l) in live.iter().enumerate() {
+            scaled.column_mut(c).scale_mut(1.0 / norms[l]);
+        }
+        let svd = scaled.svd(false, true);
+        let s = &svd.singular_values;
+        let (smax, smin) = (s.max(), s.min());
+        if smin * MAX_CONDITION < smax {
+            if let Some(vt) = svd.v_t {
+                let weakest = (0..s.len()).min_by(|&a, &b| s[a].total_cmp(&s[b])).unwrap_or(0);
+                let names: Vec<&str> =
+                    (0..live.len()).filter(|&c| vt[(weakest, c)].abs() > 0.1).map(|c| NAMES[free[live[c]]]).collect();
+                for c in (0..live.len()).filter(|&c| vt[(weakest, c)].abs() > 0.1) {
+                    ok[live[c]] = false;
+                }
+                verdicts.push(format!(
+                    "{} are not determined separately by these rows (the scaled Jacobian's condition number is {:.1e})",
+                    names.join(" and "),
+                    smax / smin
+                ));
+            }
+        }
+    }
+    ok
+}
