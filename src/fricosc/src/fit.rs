@@ -341,7 +341,7 @@ fn determined(j: &DMatrix<f64>, free: &[usize], fitted: &[(f64, [f64; 2])], verd
     let norms: Vec<f64> = (0..free.len()).map(|c| j.column(c).norm()).collect();
     let top = norms.iter().copied().fold(0.0, f64::max);
     for (c, &n) in norms.iter().enumerate() {
-        if !(n > 1e-12 * top) {
+        if n.is_nan() || n <= 1e-12 * top {
             ok[c] = false;
             verdicts.push(format!("{}: the rows do not depend on it", NAMES[free[c]]));
         }
