@@ -4,7 +4,7 @@
 //! that `main` turns into an exit code.
 
 use crate::error::{Error, Result};
-use crate::{batch, bench, claims, figures, history, plot, point, scene, stress, suite, table, validate};
+use crate::{batch, bench, claims, figures, fit, history, plot, point, scene, stress, suite, table, validate};
 use clap::{Args, Subcommand};
 use fricosc::stepper::Stepping;
 use std::io::{self, Write};
@@ -31,6 +31,9 @@ pub enum Command {
     /// Compare another code's table (vbar, amp, mu_ratio; CSV or JSON), force history or convergence
     /// series with the exact values. Exit 1 on a finding or an error above --max-error.
     Validate(validate::ValidateArgs),
+    /// Fit the model to measured friction (v0, du, frequency or omega, mu, sigma): mu0, kx/kz and u0
+    /// with standard errors, the covariance and chi-square.
+    Fit(fit::FitArgs),
     /// The reference suite: canonical cases with error bounds, a manifest and a README (--out),
     /// or verify a copy of it (--check; exit 1 when a file differs).
     Suite(suite::SuiteArgs),
@@ -61,6 +64,7 @@ impl Command {
             Command::Table(a) => done(table::run(a)),
             Command::Plot(a) => done(plot::run(a)),
             Command::Validate(a) => validate::run(a),
+            Command::Fit(a) => done(fit::run(a)),
             Command::Suite(a) => suite::run(a),
             Command::Bench(a) => done(bench::run(a)),
             Command::Stress(a) => stress::run(a),

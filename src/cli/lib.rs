@@ -11,6 +11,7 @@ pub mod cmd;
 pub mod error;
 pub mod export;
 pub mod figures;
+pub mod fit;
 pub mod grid;
 pub mod history;
 pub mod input;

@@ -11,6 +11,7 @@ mod cli;
 mod combined_cli;
 mod combined_history;
 mod figures;
+mod fit_cli;
 mod fuzz_mirror;
 mod hostile;
 mod scene;
