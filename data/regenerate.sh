@@ -27,6 +27,7 @@ emit data/claims.md $B claims
 emit data/scene-steel-sphere-fig9.out.json $B scene data/scenes/steel-sphere-fig9.json
 emit data/scene.schema.json $B scene --schema
 emit data/scene-tribometer-pin.out.json $B scene data/scenes/tribometer-pin.json
+emit data/fit-example.out.json $B fit data/fit-example.csv --format json
 emit data/history-flat.csv $B history --shape flat --vbar 0.3 --amp 0.5 --samples 200 --format csv
 emit data/history-flat.svg $B history --shape flat --vbar 0.3 --amp 0.5 --samples 400 --format svg
 emit data/history-flat.png $B history --shape flat --vbar 0.3 --amp 0.5 --samples 400 --format png

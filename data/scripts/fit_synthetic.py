@@ -7,9 +7,13 @@ Each row's v0, du and frequency are written as given (6 significant digits);
 mu = mu0 * mu_ratio(vbar, du/u0) with vbar = (kx/kz) v0 / (mu0 omega du), omega
 = 2 pi frequency, computed at exactly those values and printed to 17 digits.
 
-Run: python3 data/scripts/fit_synthetic.py > data/fit-synthetic-flat.csv   (needs mpmath; about 20 s)
+Run: python3 data/scripts/fit_synthetic.py > data/fit-synthetic-flat.csv   (needs mpmath; a second)
+     python3 data/scripts/fit_synthetic.py --noisy > data/fit-example.csv
+The second is measured-style: each mu with Gaussian noise of standard deviation
+0.004 (Python's random, seed 2026) and that sigma as a column.
 """
 import os
+import random
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -28,8 +32,15 @@ def mu_at(v0, du):
     return MU0 * mu
 
 
-print("v0,du,frequency,mu")
+NOISY = "--noisy" in sys.argv
+SIGMA = 0.004
+noise = random.Random(2026)
+print("v0,du,frequency,mu" + (",sigma" if NOISY else ""))
 for du in ("3e-7", "6e-7", "1.2e-6"):
     for vbar in (0.05, 0.1, 0.2, 0.3, 0.45, 0.6, 0.75, 0.9, 1.1):
         v0 = float(nstr(mpf(vbar) * MU0 * 2 * pi * FREQUENCY * mpf(du) / RATIO, 6))
-        print(f"{v0!r},{du},{int(FREQUENCY)},{nstr(mu_at(mpf(repr(v0)), mpf(du)), 17)}")
+        mu = mu_at(mpf(repr(v0)), mpf(du))
+        if NOISY:
+            print(f"{v0!r},{du},{int(FREQUENCY)},{float(mu) + noise.gauss(0, SIGMA):.5f},{SIGMA}")
+        else:
+            print(f"{v0!r},{du},{int(FREQUENCY)},{nstr(mu, 17)}")

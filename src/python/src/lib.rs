@@ -461,6 +461,42 @@ fn validate<'py>(
     Ok(result)
 }
 
+/// `fricosc fit`'s report as a dict: the model fitted to the rows `(v0, du,
+/// omega, mu, sigma)` with the `fixed` parameters `(mu0, kx/kz, u0)` held.
+#[pyfunction]
+#[pyo3(signature = (shape, v0, du, omega, mu, sigma, fixed))]
+#[allow(clippy::too_many_arguments)]
+fn fit<'py>(
+    py: Python<'py>,
+    shape: &CoreShape,
+    v0: PyReadonlyArray1<'py, f64>,
+    du: PyReadonlyArray1<'py, f64>,
+    omega: PyReadonlyArray1<'py, f64>,
+    mu: PyReadonlyArray1<'py, f64>,
+    sigma: Option<PyReadonlyArray1<'py, f64>>,
+    fixed: (Option<f64>, Option<f64>, Option<f64>),
+) -> PyResult<Bound<'py, PyAny>> {
+    let (v0, du, omega, mu) = (v0.as_slice()?, du.as_slice()?, omega.as_slice()?, mu.as_slice()?);
+    let sigma = sigma.as_ref().map(|s| s.as_slice()).transpose()?;
+    let n = v0.len();
+    if [du.len(), omega.len(), mu.len(), sigma.map_or(n, |s| s.len())].iter().any(|&k| k != n) {
+        return Err(InputError::new_err("fit: the columns differ in length"));
+    }
+    let rows: Vec<fricosc::fit::Measurement> = (0..n)
+        .map(|i| fricosc::fit::Measurement {
+            v0: v0[i],
+            du: du[i],
+            omega: omega[i],
+            mu: mu[i],
+            sigma: sigma.map(|s| s[i]),
+        })
+        .collect();
+    let fixed = fricosc::fit::Fixed { mu0: fixed.0, stiffness_ratio: fixed.1, u0: fixed.2 };
+    let shape = &shape.inner;
+    let r = py.detach(|| fricosc::fit::fit(shape, &rows, &fixed)).map_err(to_py)?;
+    pythonize::pythonize(py, &r).map_err(serialise_err)
+}
+
 fn at_rest_of(at_rest: &str) -> PyResult<AtRest> {
     match at_rest {
         "sliding" => Ok(AtRest::Sliding),
@@ -574,6 +610,7 @@ fn _fricosc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(validate_history, m)?)?;
     m.add_function(wrap_pyfunction!(validate_series, m)?)?;
     m.add_function(wrap_pyfunction!(default_tol, m)?)?;
+    m.add_function(wrap_pyfunction!(fit, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -620,3 +620,21 @@ def test_point_on_a_system_is_the_command_lines() -> None:
     csv_text = cli("history", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--frequency-ratio", "0.5",
                    "--damping", "0.3", "--samples", "8", "--format", "csv")
     assert [float(r["tangential"]) for r in csv_rows(csv_text)] == list(h["tangential"])
+
+
+def test_fit_is_the_command_lines() -> None:
+    """``fit(table)``: the exact synthetic rows' parameters back (as ``fricosc fit``, bit for bit),
+    a DataFrame as a dict, a held parameter, a missing column named."""
+    pd = pytest.importorskip("pandas")
+    path = ROOT / "data" / "fit-synthetic-flat.csv"
+    frame = pd.read_csv(path)
+    mine = fricosc.fit(frame)
+    theirs = json.loads(cli("fit", str(path), "--format", "json"))
+    for name in fricosc.FitResult.NAMES:
+        assert mine.params[name] == theirs["parameters"][name]["value"]
+        assert mine.stderr[name] == theirs["parameters"][name]["stderr"]
+    assert abs(mine.params["stiffness_ratio"] / 0.8 - 1) < 1e-7 and mine.dof == 24 and mine.cov.shape == (3, 3)
+    held = fricosc.fit({k: frame[k].to_numpy() for k in frame.columns}, "flat", mu0=0.35)
+    assert held.stderr["mu0"] == 0.0 and held.dof == 25
+    with pytest.raises(fricosc.InputError, match="'du'"):
+        fricosc.fit({"v0": [1.0], "frequency": [1.0], "mu": [0.3]})

@@ -5,7 +5,7 @@ from typing import Any, Dict, List, Optional, Tuple, final
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "point_oscillation", "point_system", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "__version__"]
+__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "point_oscillation", "point_system", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "fit", "__version__"]
 __version__: str
 
 class InputError(ValueError): ...
@@ -98,3 +98,12 @@ def validate_history(
     mu0: float,
 ) -> Dict[str, Any]: ...
 def default_tol() -> float: ...
+def fit(
+    shape: CoreShape,
+    v0: npt.NDArray[np.float64],
+    du: npt.NDArray[np.float64],
+    omega: npt.NDArray[np.float64],
+    mu: npt.NDArray[np.float64],
+    sigma: Optional[npt.NDArray[np.float64]],
+    fixed: Tuple[Optional[float], Optional[float], Optional[float]],
+) -> Dict[str, Any]: ...
