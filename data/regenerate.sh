@@ -44,6 +44,7 @@ emit_to() { # emit_to FILE command...
 }
 emit_to data/plot-parabolic.png $B plot --shape parabolic --amp 0:3:7 --vhat 0:2:201 --out
 emit_to data/scene-steel-sphere-fig9.png $B scene data/scenes/steel-sphere-fig9.json --plot
+emit_to data/fit-example.png $B fit data/fit-example.csv --format json --plot
 if [ "$check" = "--check" ]; then
   tmp=$(mktemp -d)
   $B figures --out "$tmp" > /dev/null

@@ -27,6 +27,10 @@ pub struct FitArgs {
     /// summary or json (default: summary at a terminal, else json).
     #[arg(long)]
     pub format: Option<String>,
+    /// Draw the data (sigma as error bars), the fitted curves and the residuals into this file
+    /// (.svg or .png).
+    #[arg(long)]
+    pub plot: Option<String>,
 }
 
 /// The columns `fit` reads, in order.
@@ -51,11 +55,17 @@ pub fn run(a: FitArgs) -> Result<()> {
         }
         None => !std::io::stdout().is_terminal(),
     };
+    if let Some(path) = &a.plot {
+        crate::cmd::drawing_kind("--plot", path)?;
+    }
     let shape = crate::input::parse_shape(&a.shape)?;
     let (text, source) = read_input(Some(a.file.clone()))?;
     let rows = measurements(&text, &source)?;
     let fixed = Fixed { mu0: a.mu0, stiffness_ratio: a.stiffness_ratio, u0: a.u0 };
     let r = fricosc::fit::fit(&shape, &rows, &fixed)?;
+    if let Some(path) = &a.plot {
+        crate::cmd::write_drawing("--plot", path, &drawing(&shape, &rows, &r)?)?;
+    }
     let out = if json { to_json(shape.name(), &rows, &r)? + "\n" } else { summary(shape.name(), &source, &r) };
     emit(&out)
 }
@@ -125,4 +135,104 @@ fn summary(shape: &str, source: &str, r: &FitReport) -> String {
         out += &format!("not determined: {v}\n");
     }
     out
+}
+
+/// The fit's drawing: the data (with their `sigma` as error bars) and the
+/// fitted curve of each amplitude and frequency against `v0`, the residuals
+/// below; one SVG of the two charts.
+fn drawing(shape: &fricosc::Shape, rows: &[Measurement], r: &FitReport) -> Result<String> {
+    use crate::chart::{viridis, Axis, Chart, Key, Marker, Rule, Series, Style};
+    let mut groups: Vec<(f64, f64)> = rows.iter().map(|m| (m.du, m.omega)).collect();
+    groups.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    groups.dedup();
+    let vmax = rows.iter().map(|m| m.v0).fold(0.0, f64::max) * 1.05;
+    let colour = |k: usize| viridis(if groups.len() > 1 { k as f64 / (groups.len() - 1) as f64 } else { 0.0 });
+    let (mut top, mut bottom, mut ymax, mut rmax) = (vec![], vec![], 0.0f64, 0.0f64);
+    for (k, &(du, omega)) in groups.iter().enumerate() {
+        let style = Style::line(colour(k));
+        let curve = (0..=200)
+            .map(|i| {
+                let v0 = vmax * i as f64 / 200.0;
+                Ok((v0, r.predict(shape, v0, du, omega)?))
+            })
+            .collect::<Result<Vec<_>>>()?;
+        let label = format!("Δu = {du:e} m, f = {} Hz", crate::output::num(omega / std::f64::consts::TAU));
+        ymax = curve.iter().fold(ymax, |m, p| m.max(p.1));
+        top.push(Series { label: label.clone(), points: curve, style, legend: true });
+        let mine: Vec<(&Measurement, f64)> = rows
+            .iter()
+            .zip(&r.residuals)
+            .filter(|(m, _)| (m.du, m.omega) == (du, omega))
+            .map(|(m, e)| (m, *e))
+            .collect();
+        let bars = |centre: &dyn Fn(&Measurement, f64) -> f64| {
+            let mut pts = vec![];
+            for (m, e) in &mine {
+                let s = m.sigma.unwrap_or(0.0);
+                pts.extend([(m.v0, centre(m, *e) - s), (m.v0, centre(m, *e) + s), (f64::NAN, f64::NAN)]);
+            }
+            pts
+        };
+        let dots = Style { dash: None, ..style }.marker(Marker::Circle);
+        for (charts, centre) in [
+            (&mut top, &(|m: &Measurement, _| m.mu) as &dyn Fn(&Measurement, f64) -> f64),
+            (&mut bottom, &|_: &Measurement, e: f64| e),
+        ] {
+            let points = mine.iter().map(|(m, e)| (m.v0, centre(m, *e))).collect();
+            charts.push(Series { label: format!("{label}, measured"), points, style: dots, legend: false });
+            charts.push(Series {
+                label: format!("{label}, sigma"),
+                points: bars(centre),
+                style: style.width(0.5),
+                legend: false,
+            });
+        }
+        for (m, e) in &mine {
+            ymax = ymax.max(m.mu + m.sigma.unwrap_or(0.0));
+            rmax = rmax.max(e.abs() + m.sigma.unwrap_or(0.0));
+        }
+    }
+    let x = Axis::linear("sliding velocity v_{0} (m/s)", (0.0, vmax));
+    let fit = Chart {
+        title: format!(
+            "{}: mu against v0, fitted (mu0 {}, kx/kz {}, u0 {} m)",
+            shape.name(),
+            crate::output::num(r.mu0.value),
+            crate::output::num(r.stiffness_ratio.value),
+            crate::output::num(r.u0.value)
+        ),
+        x: x.clone(),
+        y: Axis::linear("friction coefficient μ", (0.0, 1.05 * ymax)),
+        series: top,
+        key: vec![Key::Heading("fitted model, measured ± σ".into())],
+        rules: vec![],
+    };
+    let residuals = Chart {
+        title: "residuals".into(),
+        x,
+        y: Axis::linear("residual μ - model", (-1.1 * rmax.max(1e-300), 1.1 * rmax.max(1e-300))),
+        series: bottom,
+        key: vec![],
+        rules: vec![Rule { horizontal: true, at: 0.0 }],
+    };
+    Ok(stack(&fit.svg(), &residuals.svg()))
+}
+
+/// Two SVG drawings of the chart module, the second below the first.
+fn stack(upper: &str, lower: &str) -> String {
+    let height = |svg: &str| crate::chart::parse_size(svg).map_or(0.0, |s| s.1);
+    let inner = |svg: &str| {
+        let start = svg.find('>').map_or(0, |i| i + 1);
+        let end = svg.rfind("</svg>").unwrap_or(svg.len());
+        svg[start..end].to_string()
+    };
+    let (h1, h2) = (height(upper), height(lower));
+    let width = crate::chart::WIDTH;
+    let lower = inner(lower).replace("id=\"plot\"", "id=\"plot2\"").replace("url(#plot)", "url(#plot2)");
+    format!(
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{width}pt" height="{h}pt" viewBox="0 0 {width} {h}" font-family="DejaVu Sans, Verdana, sans-serif">{}<g transform="translate(0 {h1})">{lower}</g></svg>
+"#,
+        inner(upper),
+        h = h1 + h2
+    )
 }

@@ -29,6 +29,26 @@ fn fit_gives_the_parameters_back() {
     assert!(text.contains("27 rows fitted with the flat model") && text.contains("kx/kz"), "{text}");
 }
 
+/// `--plot`: the data with their error bars, the fitted curves and the
+/// residuals, one series each per amplitude (five per amplitude: the curve,
+/// the points and their bars above, the residuals and their bars below), as
+/// SVG or PNG; a plot of another kind is refused before the fit.
+#[test]
+fn fit_plot_draws_data_curves_and_residuals() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("fit.svg");
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/data/fit-example.csv");
+    let out = fricosc(&["fit", example, "--format", "json", "--plot", svg.to_str().unwrap()], None);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(fricosc_cli::chart::parse_size(&text).is_ok());
+    assert_eq!(text.matches("<g data-series=").count(), 15);
+    assert!(text.contains("residual"));
+    let out = fricosc(&["fit", example, "--plot", "fit.pdf"], None);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("must end in .svg or .png"));
+}
+
 /// Bad input: a missing column, both frequency and omega, a negative
 /// velocity, fewer rows than parameters, a bad fixed value.
 #[test]

@@ -111,6 +111,18 @@ fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f
         .collect()
 }
 
+impl FitReport {
+    /// The fitted model's `mu` at one row's conditions (`v0` m/s, `du` m, `omega` rad/s).
+    ///
+    /// # Errors
+    /// The solver's, for conditions it refuses (e.g. an amplitude a tabulated shape does not reach).
+    pub fn predict(&self, shape: &Shape, v0: f64, du: f64, omega: f64) -> Result<f64> {
+        let p = Vector3::new(self.mu0.value, self.stiffness_ratio.value, self.u0.value);
+        let row = Measurement { v0, du, omega, mu: 0.0, sigma: None };
+        Ok(model(shape, &[row], &p)?[0].0)
+    }
+}
+
 /// Checked rows: finite, positive where they must be, at least as many as the fitted parameters.
 fn check(rows: &[Measurement], free: usize) -> Result<()> {
     for (i, r) in rows.iter().enumerate() {
