@@ -51,7 +51,9 @@ fn the_estimate_bounds_the_error_against_finer_springs() {
         let (fine, coarser) = (m2048 + (m2048 - m1024) / 3.0, m1024 + (m1024 - m512) / 3.0);
         assert!((fine - coarser).abs() < 0.02 * est, "{name}: the reference moved by {:e}", fine - coarser);
         let err = (r.mu_ratio - fine).abs();
-        assert!(err <= est && est < 1e-4, "{name}: error {err:e}, estimate {est:e}");
+        // The contract: within the estimate. The regression bar: a tenth of it
+        // (observed at most 3.2 %; a Richardson weight of 1/2 for 1/3 gives 17 %).
+        assert!(err <= 0.1 * est && est < 1e-4, "{name}: error {err:e}, estimate {est:e}");
         assert_eq!((r.period, r.springs.map(|n| n > 128)), (Some(1), Some(true)), "{name}");
     }
 }
