@@ -214,8 +214,7 @@ fn start(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3], res: &Re
 }
 
 /// The Jacobian of the residuals in the logarithms of the `free` parameters.
-fn jacobian(p: &Vector3<f64>, free: &[usize], res: &Residuals) -> Result<DMatrix<f64>> {
-    let n = res(p)?.len();
+fn jacobian(p: &Vector3<f64>, free: &[usize], n: usize, res: &Residuals) -> Result<DMatrix<f64>> {
     let mut j = DMatrix::zeros(n, free.len());
     for (c, &k) in free.iter().enumerate() {
         let h: f64 = 1e-5;
@@ -233,7 +232,7 @@ fn levenberg_marquardt(mut p: Vector3<f64>, free: &[usize], res: &Residuals) -> 
     let mut chi2 = r.norm_squared();
     let mut lambda = 1e-3;
     for it in 1..=MAX_ITERATIONS {
-        let j = jacobian(&p, free, res)?;
+        let j = jacobian(&p, free, r.len(), res)?;
         let jtj = j.transpose() * &j;
         let g = j.transpose() * &r;
         let mut improved = false;
@@ -287,7 +286,7 @@ fn report(
     let chi2 = res(&p)?.norm_squared();
     let dof = rows.len() - free.len();
     let reduced_chi2 = chi2 / dof as f64;
-    let j = jacobian(&p, free, res)?;
+    let j = jacobian(&p, free, rows.len(), res)?;
     let mut verdicts = vec![];
     let determined = determined(&j, free, &fitted, &mut verdicts);
     let mut cov = Matrix3::zeros();
