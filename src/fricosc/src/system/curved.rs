@@ -22,7 +22,8 @@
 //! `N = 128` the extrapolated value's error was below 0.05 of it, and below
 //! 0.4 on `power:0.5`, which at `N = 64` was still far from the asymptote)
 //! plus the orbits' closure (`attractor`). Without a period the answer is
-//! `mu_N`'s long-time mean, its standard error apart.
+//! `mu_N`'s long-time mean, whose error estimate (standard error and drift)
+//! is added to `|mu_N - mu_{N/2}|`.
 
 use super::springs::{Foundation, Spring};
 use super::{batch_mean, Params, SystemReport, MAX_ORBIT, REPEAT};
@@ -78,8 +79,10 @@ struct Found {
     /// `None`: no repeat within the budget (then `mu` is a mean).
     period: Option<usize>,
     periods_run: usize,
-    /// The mean's standard error (no period), else a bound on the orbit's closure.
+    /// A bound on the orbit's closure, or the mean's error estimate where there is no period.
     error: f64,
+    /// The mean's standard error where there is no period.
+    standard_error: Option<f64>,
 }
 
 /// Orbits closed beyond this (relative, as [`REPEAT`]) are exact to rounding.
@@ -157,7 +160,7 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
             if rate < 1.0 || d <= TIGHT {
                 let closure = if d <= TIGHT { change } else { change * rate / (1.0 - rate) };
                 let k = least_period(fd, (x, v, &state), k, d.max(TIGHT));
-                return (Found { mu, period: Some(k), periods_run: n, error: closure }, (x, v, state));
+                return (Found { mu, period: Some(k), periods_run: n, error: closure, standard_error: None }, (x, v, state));
             }
         }
         if seen.len() == MAX_ORBIT {
@@ -165,8 +168,9 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
         }
         seen.push(now);
     }
-    let (mean, error) = batch_mean(&per_period[per_period.len() / 2..], 10);
-    (Found { mu: mean, period: None, periods_run: n, error }, (x, v, state))
+    let m = batch_mean(&per_period[per_period.len() / 2..], 10);
+    let found = Found { mu: m.mean, period: None, periods_run: n, error: m.error_estimate(), standard_error: Some(m.standard_error) };
+    (found, (x, v, state))
 }
 
 /// The attractor of `shape` discretised into about `n` springs, without an
@@ -182,7 +186,7 @@ fn report(f: &Found, error_estimate: Option<f64>, springs: usize) -> SystemRepor
     SystemReport {
         mu_ratio: f.mu,
         period: f.period,
-        standard_error: f.period.is_none().then_some(f.error),
+        standard_error: f.standard_error,
         periods_run: f.periods_run,
         multipliers: vec![],
         events: vec![],
@@ -203,7 +207,7 @@ pub(crate) fn solve(shape: &Shape, p: Params, springs: usize) -> Result<SystemRe
     let change = fine.mu - coarse.mu;
     // Richardson on the N^-2 error where both are the same orbit.
     let extrapolate = fine.period.is_some() && fine.period == coarse.period;
-    let closure = if fine.period.is_some() { fine.error + coarse.error } else { 0.0 };
+    let closure = fine.error + coarse.error;
     let mu = if extrapolate { fine.mu + change / 3.0 } else { fine.mu };
     Ok(report(&Found { mu, ..fine }, Some(change.abs() + closure), nodes.len()))
 }

@@ -20,7 +20,9 @@
 //! from the eigenvalues of that Jacobian (the Floquet multipliers), and `mu`
 //! is `int f / int B` over its `k` periods. Where nothing repeats within
 //! [`MAX_PERIODS`], the answer is no period: the mean of the last half's
-//! per-period values with its standard error (of batches of 10 periods).
+//! per-period values with its standard error (of batches of 10 periods) and
+//! an error estimate that also counts the drift of a transient not yet
+//! settled (`Mean::error_estimate`).
 //!
 //! A massless body (`Omega = 0`) is the stiff problem with the drive scaled
 //! by `kappa/(1 + kappa)` (the springs in series): answered by the stiff
@@ -165,7 +167,9 @@ pub struct SystemReport {
     pub multipliers: Vec<[f64; 2]>,
     /// The events of the orbit's first period (the flat punch).
     pub events: Vec<SystemEvent>,
-    /// A curved body's error estimate of `mu_ratio` (its springs' discretisation and the orbit's closure).
+    /// The error estimate of `mu_ratio`: a curved body's (its springs' discretisation and the orbit's
+    /// closure), or a mean's without period (twice its standard error plus three times the drift
+    /// between the halves of the periods averaged). `None`: the flat punch's exact orbit.
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub error_estimate: Option<f64>,
     /// The springs of a curved body's finest discretisation.
@@ -367,15 +371,15 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
     }
     let mean_b = crate::flat::mean_normal(amp) * std::f64::consts::TAU;
     let tail: Vec<f64> = per_period[periods / 2..].iter().map(|x| x / mean_b).collect();
-    let (mean, error) = batch_mean(&tail, 10);
+    let m = batch_mean(&tail, 10);
     let report = SystemReport {
-        mu_ratio: mean,
+        mu_ratio: m.mean,
         period: None,
-        standard_error: Some(error),
+        standard_error: Some(m.standard_error),
         periods_run: periods,
         multipliers: vec![],
         events: vec![],
-        error_estimate: None,
+        error_estimate: Some(m.error_estimate()),
         springs: None,
     };
     Ok((report, Some((ph, s))))
@@ -389,13 +393,39 @@ fn close(a: &Reduced, b: &Reduced, tol: f64) -> bool {
 /// How closely Newton's orbit must close (the same measure as [`REPEAT`]).
 const CLOSED: f64 = 1e-10;
 
-/// The mean of `xs` and its standard error from batches of `size`.
-pub(crate) fn batch_mean(xs: &[f64], size: usize) -> (f64, f64) {
-    let batches: Vec<f64> = xs.chunks_exact(size).map(|c| c.iter().sum::<f64>() / size as f64).collect();
+/// The long-time mean of a response without period.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Mean {
+    pub mean: f64,
+    /// The standard error of `mean` from the batches' scatter.
+    pub standard_error: f64,
+    /// `|m2 - m1|`, the means of the batches' later and earlier halves: a
+    /// transient not yet settled shows here, not in the scatter.
+    pub drift: f64,
+}
+
+impl Mean {
+    /// The error estimate: twice the standard error plus three drifts.
+    /// A transient decaying like `c/t` leaves the mean over `[T/2, T]` at
+    /// `2 ln 2 c/T` from its limit, while its halves' means are
+    /// `4 ln(3/2) c/T` and `4 ln(4/3) c/T`: a drift of `0.47 c/T`, so three
+    /// drifts cover it, and any faster decay. A stationary response's drift
+    /// is about 1.6 standard errors, so there the estimate is about 7 of them.
+    pub fn error_estimate(&self) -> f64 {
+        2.0 * self.standard_error + 3.0 * self.drift
+    }
+}
+
+/// The mean of `xs` from batches of `size`: its standard error and drift ([`Mean`]).
+pub(crate) fn batch_mean(xs: &[f64], size: usize) -> Mean {
+    let avg = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let batches: Vec<f64> = xs.chunks_exact(size).map(avg).collect();
     let n = batches.len() as f64;
-    let mean = batches.iter().sum::<f64>() / n;
+    let mean = avg(&batches);
     let var = batches.iter().map(|b| (b - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
-    (mean, (var / n).sqrt())
+    let (early, late) = batches.split_at(batches.len() / 2);
+    let drift = if early.is_empty() { 0.0 } else { (avg(late) - avg(early)).abs() };
+    Mean { mean, standard_error: (var / n).sqrt(), drift }
 }
 
 /// The period-`k` orbit through (near) `s`, refined by Newton, with its
@@ -452,4 +482,36 @@ fn jacobian(ph: &Phases, s: &Reduced, k: usize) -> Matrix3<f64> {
         j.set_column(i, &d);
     }
     j
+}
+
+#[cfg(test)]
+mod tests {
+    use super::batch_mean;
+
+    /// A transient decaying like `1/t` over the tail `[1000, 2000)`: the
+    /// mean is 2.94 drifts from its limit (derivation at `Mean::error_estimate`),
+    /// within the estimate; with two drifts it would not be.
+    #[test]
+    fn the_estimate_covers_a_transient_decaying_like_one_over_t() {
+        let xs: Vec<f64> = (1000..2000).map(|t| 1.0 - 1e-3 / t as f64).collect();
+        let m = batch_mean(&xs, 10);
+        let error = 1.0 - m.mean;
+        assert!(error <= m.error_estimate() && error > 2.9 * m.drift, "{m:?}");
+    }
+
+    /// A stationary response (a fixed pseudo-random sequence): the estimate
+    /// covers the mean's error and is a few standard errors, not more.
+    #[test]
+    fn a_stationary_response_is_a_few_standard_errors() {
+        let mut s = 12345u64;
+        let xs: Vec<f64> = (0..2000)
+            .map(|_| {
+                s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                0.5 + ((s >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 1e-3
+            })
+            .collect();
+        let m = batch_mean(&xs, 10);
+        assert!((m.mean - 0.5).abs() <= m.error_estimate(), "{m:?}");
+        assert!(m.error_estimate() <= 12.0 * m.standard_error && m.standard_error < 1e-5, "{m:?}");
+    }
 }

@@ -113,6 +113,7 @@ fn mu_is_within_its_bounds_through_the_resonances() {
             let r = flat(&Conditions::vhat(0.3, amp).unwrap(), &System::new(1.0, om, zeta).unwrap()).unwrap();
             assert!(r.mu_ratio.abs() <= 1.0 + 1e-12, "Omega {om} zeta {zeta} amp {amp}: {}", r.mu_ratio);
             assert_eq!(r.period.is_none(), r.standard_error.is_some());
+            assert_eq!(r.period.is_none(), r.error_estimate.is_some());
         }
     }
 }

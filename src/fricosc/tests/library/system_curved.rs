@@ -88,14 +88,23 @@ fn the_stepping_peer_converges_to_the_discretised_answer() {
 }
 
 /// A response that never repeats is said: undamped near the stick resonance
-/// the springs all slip (mu = 1) while the body rings at its own frequency.
+/// the springs come to slip for good (mu -> 1) while the body rings at its
+/// own frequency; the sticks that remain die out slowly (the last quarters
+/// of the flat punch's 4,000 periods: 1 - mu 2.6e-8, 1.8e-8, 1.3e-8,
+/// 1.1e-8). The mean is reported with an estimate that covers the distance
+/// to 1 (observed: flat 1.7e-8 within 3.3e-8, paraboloid 9.1e-7 within
+/// 3.5e-6), where the standard error alone (1.5e-9 for the flat punch) does not.
 #[test]
-fn a_response_without_period_is_a_mean() {
+fn a_response_without_period_is_a_mean_within_its_estimate() {
     let c = Conditions::vbar(0.3, 0.5).unwrap();
-    let r = solve(&Shape::parabolic(), &c, &System::new(1.0, 1.41, 0.0).unwrap()).unwrap();
-    assert_eq!(r.period, None);
-    let se = r.standard_error.unwrap();
-    assert!(se < 1e-5 && (r.mu_ratio - 1.0).abs() < 1e-5 + 4.0 * se, "{r:?}");
+    let sys = System::new(1.0, 1.41, 0.0).unwrap();
+    for (shape, bar) in [(Shape::flat(), 1e-7), (Shape::parabolic(), 1e-5)] {
+        let r = solve(&shape, &c, &sys).unwrap();
+        assert_eq!(r.period, None);
+        let (se, estimate) = (r.standard_error.unwrap(), r.error_estimate.unwrap());
+        let error = 1.0 - r.mu_ratio;
+        assert!(error > 0.0 && error <= estimate && estimate < bar && se < estimate / 4.0, "{r:?}");
+    }
 }
 
 /// A massless body on a curved contact is refused, by name.
