@@ -4,7 +4,7 @@
 //!
 //! - 0: success (also when the reader closes the pipe, as ripgrep does);
 //! - 1: a negative answer (`validate` with a finding or an error above
-//!   `--max-error`, a failed `stress` check, a stale suite);
+//!   `--max-error`, a stale suite);
 //! - 2: bad input or a failed read/write (one line on stderr, nothing on stdout);
 //! - 3: an internal error (a bug to report, never printed as a number).
 //!

@@ -4,7 +4,7 @@
 //! that `main` turns into an exit code.
 
 use crate::error::{Error, Result};
-use crate::{batch, bench, claims, figures, fit, history, plot, point, scene, stress, suite, table, validate};
+use crate::{batch, bench, claims, figures, fit, history, plot, point, scene, suite, table, validate};
 use clap::{Args, Subcommand};
 use fricosc::stepper::Stepping;
 use std::io::{self, Write};
@@ -15,7 +15,7 @@ pub enum Outcome {
     /// Success (exit 0).
     Done,
     /// A negative answer: `validate` with findings or beyond `--max-error`, a
-    /// failed `stress` check, a stale suite (exit 1).
+    /// stale suite (exit 1).
     Negative,
 }
 
@@ -39,8 +39,6 @@ pub enum Command {
     Suite(suite::SuiteArgs),
     /// Work-precision benchmark: exact solver vs time stepping; writes JSON, CSV, SVG and PNG to DIR.
     Bench(bench::BenchArgs),
-    /// Stress test: many random and edge points; exit 1 if any check fails.
-    Stress(stress::StressArgs),
     /// Every quantitative claim of the seed, checked against the exact solver.
     Claims(claims::ClaimsArgs),
     /// Normal and tangential force over time (the seed's Fig. 2), exact: JSON, CSV, SVG or PNG.
@@ -67,7 +65,6 @@ impl Command {
             Command::Fit(a) => done(fit::run(a)),
             Command::Suite(a) => suite::run(a),
             Command::Bench(a) => done(bench::run(a)),
-            Command::Stress(a) => stress::run(a),
             Command::Claims(a) => done(claims::run(a)),
             Command::History(a) => done(history::run(a)),
             Command::Figures(a) => done(figures::run(a)),

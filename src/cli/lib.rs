@@ -21,7 +21,6 @@ pub mod output;
 pub mod plot;
 pub mod point;
 pub mod scene;
-pub mod stress;
 pub mod suite;
 pub mod table;
 pub mod tables;

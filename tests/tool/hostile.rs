@@ -11,7 +11,6 @@ const COMMANDS: &[&[&str]] = &[
     &["claims"],
     &["claims", "--format", "json"],
     &["scene", "--schema"],
-    &["stress", "--points", "16"],
     &["table", "--amp", "0.5", "--vbar", "0:1:20001"],
     &["point", "--vbar", "0.3", "--amp", "0.5"],
     &["--help"],

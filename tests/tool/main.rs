@@ -15,7 +15,6 @@ mod fit_cli;
 mod fuzz_mirror;
 mod hostile;
 mod scene;
-mod stress;
 mod suite;
 mod system_cli;
 mod users;

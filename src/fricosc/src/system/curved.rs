@@ -160,7 +160,10 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
             if rate < 1.0 || d <= TIGHT {
                 let closure = if d <= TIGHT { change } else { change * rate / (1.0 - rate) };
                 let k = least_period(fd, (x, v, &state), k, d.max(TIGHT));
-                return (Found { mu, period: Some(k), periods_run: n, error: closure, standard_error: None }, (x, v, state));
+                return (
+                    Found { mu, period: Some(k), periods_run: n, error: closure, standard_error: None },
+                    (x, v, state),
+                );
             }
         }
         if seen.len() == MAX_ORBIT {
@@ -169,7 +172,13 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
         seen.push(now);
     }
     let m = batch_mean(&per_period[per_period.len() / 2..], 10);
-    let found = Found { mu: m.mean, period: None, periods_run: n, error: m.error_estimate(), standard_error: Some(m.standard_error) };
+    let found = Found {
+        mu: m.mean,
+        period: None,
+        periods_run: n,
+        error: m.error_estimate(),
+        standard_error: Some(m.standard_error),
+    };
     (found, (x, v, state))
 }
 

@@ -24,6 +24,7 @@ mod reference;
 #[allow(clippy::excessive_precision)]
 mod report_fields;
 mod stepper;
+mod stress;
 mod system;
 mod system_curved;
 mod table;
