@@ -495,73 +495,60 @@ fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::bench::Inst
     Ok(out)
 }
 
-/// Instructions per row of `table` (the seed's problem and oscillation in the
-/// sliding direction), against a one-point table.
+/// The `table` workloads: what runs, the table's options and those of its
+/// one-point counterpart, and its rows.
+const TABLES: [(&str, &str, &str, usize); 6] = [
+    (
+        "table, 100 x 100 flat",
+        "--shape flat --vbar 0:1.2:100 --amp 0:3:100",
+        "--shape flat --vbar 0.6 --amp 1.5",
+        10_000,
+    ),
+    (
+        "table, 10 x 100 parabolic",
+        "--shape parabolic --vbar 0:1.2:100 --amp 0:3:10",
+        "--shape parabolic --vbar 0.6 --amp 1.5",
+        1_000,
+    ),
+    (
+        "table, oscillation in the sliding direction, flat: 10 vhat x 10 T x 10 phases at du/u0 = 1.5",
+        "--shape flat --vhat 0.1:1.2:10 --amp 1.5 --tangential-amp 0.1:4:10 --phase 0:6:10",
+        "--shape flat --vhat 0.6 --amp 1.5 --tangential-amp 2 --phase 1",
+        1_000,
+    ),
+    (
+        "table, oscillation in the sliding direction, parabolic: 5 vhat x 5 T x 4 phases at du/u0 = 1.5",
+        "--shape parabolic --vhat 0.1:1.2:5 --amp 1.5 --tangential-amp 0.1:4:5 --phase 0:6:4",
+        "--shape parabolic --vhat 0.6 --amp 1.5 --tangential-amp 2 --phase 1",
+        100,
+    ),
+    (
+        "table on a system (K/kx 1, Omega 0.5, zeta 0.05), flat: 50 vbar at du/u0 = 0.5",
+        "--shape flat --vbar 0.02:1:50 --amp 0.5 --system-stiffness 1 --frequency-ratio 0.5 --damping 0.05",
+        "--shape flat --vbar 0.6 --amp 0.5 --system-stiffness 1 --frequency-ratio 0.5 --damping 0.05",
+        50,
+    ),
+    (
+        "table on a system (K/kx 1, Omega 0.5, zeta 0.05), parabolic, 64 springs: 4 vbar at du/u0 = 0.5",
+        "--shape parabolic --vbar 0.1:1:4 --amp 0.5 --system-stiffness 1 --frequency-ratio 0.5 --damping 0.05 \
+         --springs 64",
+        "--shape parabolic --vbar 0.6 --amp 0.5 --system-stiffness 1 --frequency-ratio 0.5 --damping 0.05 --springs 64",
+        4,
+    ),
+];
+
+/// Instructions per row of `table` ([`TABLES`]), against a one-point table.
 fn table_counts() -> Vec<crate::bench::InstructionCount> {
-    let seed = |shape: &'static str, vbar: &'static str, amp: &'static str| {
-        vec!["table", "--shape", shape, "--vbar", vbar, "--amp", amp, "--format", "csv"]
-    };
-    let oscillation = |shape: &'static str, vhat: &'static str, t: &'static str, phase: &'static str| {
-        vec![
-            "table",
-            "--shape",
-            shape,
-            "--vhat",
-            vhat,
-            "--amp",
-            "1.5",
-            "--tangential-amp",
-            t,
-            "--phase",
-            phase,
-            "--format",
-            "csv",
-        ]
-    };
-    let system = |shape: &'static str, vbar: &'static str, springs: &'static str| {
-        let mut args = seed(shape, vbar, "0.5");
-        args.extend(["--system-stiffness", "1", "--frequency-ratio", "0.5", "--damping", "0.05"]);
-        if shape != "flat" {
-            args.extend(["--springs", springs]);
-        }
-        args
-    };
-    let tables: [(&str, Vec<&str>, Vec<&str>, usize); 6] = [
-        ("table, 100 x 100 flat", seed("flat", "0:1.2:100", "0:3:100"), seed("flat", "0.6", "1.5"), 10_000),
-        ("table, 10 x 100 parabolic", seed("parabolic", "0:1.2:100", "0:3:10"), seed("parabolic", "0.6", "1.5"), 1_000),
-        (
-            "table, oscillation in the sliding direction, flat: 10 vhat x 10 T x 10 phases at du/u0 = 1.5",
-            oscillation("flat", "0.1:1.2:10", "0.1:4:10", "0:6:10"),
-            oscillation("flat", "0.6", "2", "1"),
-            1_000,
-        ),
-        (
-            "table, oscillation in the sliding direction, parabolic: 5 vhat x 5 T x 4 phases at du/u0 = 1.5",
-            oscillation("parabolic", "0.1:1.2:5", "0.1:4:5", "0:6:4"),
-            oscillation("parabolic", "0.6", "2", "1"),
-            100,
-        ),
-        (
-            "table on a system (K/kx 1, Omega 0.5, zeta 0.05), flat: 50 vbar at du/u0 = 0.5",
-            system("flat", "0.02:1:50", ""),
-            system("flat", "0.6", ""),
-            50,
-        ),
-        (
-            "table on a system (K/kx 1, Omega 0.5, zeta 0.05), parabolic, 64 springs: 4 vbar at du/u0 = 0.5",
-            system("parabolic", "0.1:1:4", "64"),
-            system("parabolic", "0.6", "64"),
-            4,
-        ),
-    ];
     let mut out = vec![];
-    for (workload, args, single, rows) in tables {
-        if let (Some(t), Some(s)) = (callgrind(&args), callgrind(&single)) {
+    for (workload, table, single, rows) in TABLES {
+        let args = |options: &str| format!("table {options} --format csv");
+        let count = |options: &str| callgrind(&args(options).split_whitespace().collect::<Vec<_>>());
+        if let (Some(t), Some(s)) = (count(table), count(single)) {
             out.push(crate::bench::InstructionCount {
                 workload: workload.into(),
                 rows,
                 instructions_per_row: (t - s) / (rows - 1) as f64,
-                command: format!("valgrind --tool=callgrind fricosc {} (minus 1 point)", args.join(" ")),
+                command: format!("valgrind --tool=callgrind fricosc {} (minus 1 point)", args(table)),
             });
         }
     }
