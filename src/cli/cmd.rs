@@ -221,6 +221,27 @@ impl SystemPoint {
     }
 }
 
+/// One point's drive: its velocity, amplitude, tangential oscillation and system.
+#[derive(Args)]
+pub struct Drive {
+    #[command(flatten)]
+    pub velocity: VelocityPoint,
+    /// Amplitude du/u0 (>= 0).
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    pub amp: f64,
+    #[command(flatten)]
+    pub tangential: TangentialPoint,
+    #[command(flatten)]
+    pub system: SystemPoint,
+}
+
+impl Drive {
+    /// The conditions of the point at the default tolerance ([`conditions`]).
+    pub fn conditions(&self) -> Result<fricosc::Conditions> {
+        conditions(self.velocity.velocity()?, self.amp, self.tangential.oscillation(&self.velocity)?)
+    }
+}
+
 /// `--tangential-amp` needs `--vhat`: `vbar = vhat/amp` is not defined without normal oscillation.
 fn vhat_for_tangential(has_vbar: bool, vhat: Option<f64>) -> Result<f64> {
     match (has_vbar, vhat) {

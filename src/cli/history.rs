@@ -1,9 +1,7 @@
 //! `fricosc history`: the force histories of [`fricosc::history`] as a
 //! report (CSV, JSON, the seed's Fig. 2 as SVG).
 
-use crate::cmd::{
-    emit_bytes, list, number, List, MethodArg, SystemPoint, TangentialPoint, VelocityPoint, DEFAULT_STEPPING,
-};
+use crate::cmd::{emit_bytes, list, Drive, List, MethodArg, DEFAULT_STEPPING};
 use crate::error::{Error, Result};
 use crate::export::{export_bytes, Format};
 use clap::Args;
@@ -74,14 +72,7 @@ pub struct HistoryArgs {
     #[arg(long, default_value = "flat")]
     pub shape: String,
     #[command(flatten)]
-    pub velocity: VelocityPoint,
-    /// Amplitude du/u0.
-    #[arg(long, allow_hyphen_values = true, value_parser = number)]
-    pub amp: f64,
-    #[command(flatten)]
-    pub tangential: TangentialPoint,
-    #[command(flatten)]
-    pub system: SystemPoint,
+    pub drive: Drive,
     /// Periods to sample.
     #[arg(long, default_value_t = 1)]
     pub periods: usize,
@@ -122,8 +113,7 @@ pub fn run(a: HistoryArgs) -> Result<()> {
     };
     let chosen = a.spring_at.map(|l| l.0).unwrap_or_default();
     let shape = crate::input::parse_shape(&a.shape)?;
-    let tangential = a.tangential.oscillation(&a.velocity)?;
-    let c = crate::cmd::conditions(a.velocity.velocity()?, a.amp, tangential)?;
+    let c = a.drive.conditions()?;
     let format = Format::parse(&a.format, &[Format::Json, Format::Csv, Format::Svg, Format::Png])?;
     // A drawing holds at most as many points as a plot (checked before any work).
     let drawn = match stepping {
@@ -145,7 +135,7 @@ pub fn run(a: HistoryArgs) -> Result<()> {
                 .with_samples(a.samples)
                 .with_springs(a.springs.unwrap_or(DEFAULT_HISTORY_SPRINGS))
                 .with_spring_at(chosen);
-            let opts = match a.system.system(a.springs)? {
+            let opts = match a.drive.system.system(a.springs)? {
                 Some(sys) => opts.with_system(sys),
                 None => opts,
             };

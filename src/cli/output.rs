@@ -23,18 +23,29 @@ pub fn csv_field(s: &str) -> String {
     String::from_utf8_lossy(&bytes).trim_end_matches('\n').to_string()
 }
 
-/// A whole CSV document (header and rows) by the `csv` crate.
+/// A whole CSV document by the `csv` crate, a line per record (writing to
+/// memory cannot fail).
+pub fn csv_records<I, R, T>(records: I) -> String
+where
+    I: IntoIterator<Item = R>,
+    R: IntoIterator<Item = T>,
+    T: AsRef<[u8]>,
+{
+    let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(vec![]);
+    for r in records {
+        let _ = w.write_record(r);
+    }
+    String::from_utf8_lossy(&w.into_inner().unwrap_or_default()).into_owned()
+}
+
+/// A whole CSV document: `header`, then `rows`.
 pub fn csv_table<I, R>(header: &[&str], rows: I) -> String
 where
     I: IntoIterator<Item = R>,
     R: IntoIterator<Item = String>,
 {
-    let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(vec![]);
-    let _ = w.write_record(header);
-    for r in rows {
-        let _ = w.write_record(r.into_iter().collect::<Vec<String>>());
-    }
-    String::from_utf8_lossy(&w.into_inner().unwrap_or_default()).into_owned()
+    let head = header.iter().map(|h| h.to_string()).collect::<Vec<_>>();
+    csv_records(std::iter::once(head).chain(rows.into_iter().map(|r| r.into_iter().collect())))
 }
 
 /// Append the shortest text of `x` to `line` (`null` where not finite): the one

@@ -1,6 +1,6 @@
 //! `fricosc point`: one point with its regime, events and bands (JSON).
 
-use crate::cmd::{io_err, number, Common, SystemPoint, TangentialPoint, VelocityPoint};
+use crate::cmd::{io_err, Common, Drive};
 use crate::error::{Error, Result};
 use clap::Args;
 use fricosc::{Conditions, Shape};
@@ -10,22 +10,15 @@ pub struct PointArgs {
     #[command(flatten)]
     pub common: Common,
     #[command(flatten)]
-    pub velocity: VelocityPoint,
-    /// Amplitude du/u0 (>= 0).
-    #[arg(long, allow_hyphen_values = true, value_parser = number)]
-    pub amp: f64,
-    #[command(flatten)]
-    pub tangential: TangentialPoint,
-    #[command(flatten)]
-    pub system: SystemPoint,
+    pub drive: Drive,
 }
 
 pub fn run(a: PointArgs) -> Result<()> {
     let shape = crate::input::parse_shape(&a.common.shape)?;
-    let tangential = a.tangential.oscillation(&a.velocity)?;
-    let c = a.common.conditions(a.velocity.velocity()?, a.amp, tangential)?;
-    let with_system = a.system.system_stiffness.is_some();
-    let body = match (a.common.method.stepping_with(with_system)?, a.system.system(a.common.method.system_springs())?) {
+    let c = a.drive.conditions()?.with_tol(a.common.tol())?;
+    let system = &a.drive.system;
+    let with_system = system.system_stiffness.is_some();
+    let body = match (a.common.method.stepping_with(with_system)?, system.system(a.common.method.system_springs())?) {
         (Some(_), Some(_)) => {
             return Err(Error::Parse { context: "--system-stiffness".into(), reason: "is solved exactly only".into() })
         }

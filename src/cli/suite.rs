@@ -60,17 +60,6 @@ fn list(xs: &[f64]) -> String {
     xs.iter().map(|&x| num(x)).collect::<Vec<_>>().join(",")
 }
 
-fn csv(header: &[&str], rows: &[Vec<String>]) -> Result<String> {
-    let fail = |e: csv::Error| Error::Internal { what: format!("writing CSV: {e}") };
-    let mut w = csv::Writer::from_writer(vec![]);
-    w.write_record(header).map_err(fail)?;
-    for r in rows {
-        w.write_record(r).map_err(fail)?;
-    }
-    let bytes = w.into_inner().map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })?;
-    String::from_utf8(bytes).map_err(|e| Error::Internal { what: format!("writing CSV: {e}") })
-}
-
 fn value_row(shape: &Shape, spec: &str, vbar: f64, amp: f64) -> Result<Vec<String>> {
     let e = shape.evaluate(&fricosc::Conditions::vbar(vbar, amp)?)?;
     let bound = e.error_estimate + e.interpolation_error.unwrap_or(0.0);
@@ -118,7 +107,7 @@ pub fn files() -> Result<Vec<SuiteFile>> {
         });
         out.push(SuiteFile {
             path: format!("tables/{name}.csv"),
-            text: csv(&VALUE_HEADER, &rows)?,
+            text: crate::output::csv_table(&VALUE_HEADER, rows.iter().cloned()),
             command: format!("{command} --format csv"),
         });
     }
@@ -131,7 +120,7 @@ pub fn files() -> Result<Vec<SuiteFile>> {
     }
     out.push(SuiteFile {
         path: "limits.csv".into(),
-        text: csv(&VALUE_HEADER, &rows)?,
+        text: crate::output::csv_table(&VALUE_HEADER, rows.iter().cloned()),
         command: "fricosc point --shape S --vbar V --amp A (each row)".into(),
     });
     for (v, a) in HISTORIES {
@@ -163,7 +152,7 @@ pub fn files() -> Result<Vec<SuiteFile>> {
             p.events.iter().map(|e| vec![num(e.tau), event(Some(e.kind)), num(e.normal), num(e.tangential)]).collect();
         out.push(SuiteFile {
             path: format!("{stem}-events.csv"),
-            text: csv(&["tau", "kind", "normal", "tangential"], &rows)?,
+            text: crate::output::csv_table(&["tau", "kind", "normal", "tangential"], rows.iter().cloned()),
             command: format!("fricosc point --shape flat --vbar {} --amp {} (events)", num(v), num(a)),
         });
     }

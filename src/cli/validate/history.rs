@@ -1,8 +1,8 @@
 //! `validate --history`: a force history file as read, and the CSV of its
 //! comparison ([`fricosc::validation::compare_history`]).
 
-use super::table::csv_text;
 use crate::error::{Error, Result};
+use crate::output::csv_records;
 use crate::tables::{read_columns, Kind};
 use fricosc::validation::HistoryValidation;
 
@@ -67,5 +67,5 @@ pub fn history_csv(v: &HistoryValidation) -> Result<String> {
             opt(s.normal_error),
         ]);
     }
-    csv_text(&records)
+    Ok(csv_records(&records))
 }

@@ -1,7 +1,7 @@
 //! The reports of a convergence study (`validate --series`).
 
-use super::table::csv_text;
 use crate::error::{Error, Result};
+use crate::output::csv_records;
 use fricosc::validation::{Convergence, Needed, SeriesRow};
 
 /// A convergence study as CSV: one line per row, its status, order, constant,
@@ -45,7 +45,7 @@ pub fn series_csv(c: &Convergence) -> Result<String> {
         rec.extend(r.errors.iter().map(|e| n(*e)));
         records.push(rec);
     }
-    csv_text(&records)
+    Ok(csv_records(&records))
 }
 
 /// Errors against resolution on log axes, per regime (one colour each): the

@@ -3,7 +3,8 @@
 //! JSON Lines; its columns as [`fricosc::validation::Table`] names them), and
 //! the CSV of its comparison.
 
-use crate::error::{Error, Result};
+use crate::error::Result;
+use crate::output::csv_records;
 use crate::tables::{read_columns, Kind};
 use fricosc::validation::{Column, OscillationValidation, Table, Validation};
 
@@ -74,18 +75,7 @@ fn compared_csv(header: &[&str], peer: bool, rows: impl Iterator<Item = (Vec<Str
         }
         records.push(cells);
     }
-    csv_text(&records)
-}
-
-/// Text of a CSV writer's records (or an internal error).
-pub(super) fn csv_text(records: &[Vec<String>]) -> Result<String> {
-    let fail = |e: String| Error::Internal { what: format!("writing CSV: {e}") };
-    let mut w = csv::Writer::from_writer(vec![]);
-    for r in records {
-        w.write_record(r).map_err(|e| fail(e.to_string()))?;
-    }
-    let bytes = w.into_inner().map_err(|e| fail(e.to_string()))?;
-    String::from_utf8(bytes).map_err(|e| fail(e.to_string()))
+    Ok(csv_records(&records))
 }
 
 /// Every compared row as CSV (one header line).
