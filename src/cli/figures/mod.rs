@@ -330,7 +330,12 @@ pub fn user_with(
     check_family(amps, xs.len(), "velocities")?;
     let what = if vhat { "vhat" } else { "vbar" };
     for &x in xs {
-        fricosc::check_nonneg(what, x)?;
+        // The conditions' own check and message of a velocity (and below, of an amplitude).
+        if vhat {
+            fricosc::Conditions::vhat(x, 0.0)?;
+        } else {
+            fricosc::Conditions::vbar(x, 0.0)?;
+        }
     }
     // vbar = vhat / amp must be a number at every amplitude (the message names both).
     if let (true, Some(&top)) = (vhat, xs.iter().max_by(|a, b| a.total_cmp(b))) {
@@ -441,7 +446,7 @@ fn check_family(amps: &[f64], points: usize, what: &str) -> Result<()> {
         });
     }
     for &a in amps {
-        fricosc::check_nonneg("amp", a)?;
+        fricosc::Conditions::vbar(0.0, a)?;
     }
     Ok(())
 }

@@ -102,7 +102,7 @@ impl Error {
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] naming `name` otherwise.
-pub fn check_nonneg(name: &'static str, x: f64) -> Result<f64> {
+pub(crate) fn check_nonneg(name: &'static str, x: f64) -> Result<f64> {
     if !x.is_finite() {
         Err(Error::param(name, x, "must be finite"))
     } else if x < 0.0 {

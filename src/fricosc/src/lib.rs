@@ -71,7 +71,7 @@ pub mod validation;
 
 pub use conditions::{Conditions, Velocity, DEFAULT_TOL};
 pub use contact::shape::{Evaluation, Report, Shape, MAX_EXPONENT, MIN_EXPONENT};
-pub use error::{check_nonneg, Error, Result};
+pub use error::{Error, Result};
 pub use model::ratio::Ratio;
 pub use numerics::decimal::spaced;
 pub use peers::{seed, stepper};

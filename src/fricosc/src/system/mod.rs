@@ -15,7 +15,7 @@
 //! From the stated start (the body at the drive's position with its
 //! velocity, the spring relaxed) the period map is iterated until its state
 //! `(x - 2 pi vhat n, x', f)` and phase repeat after `k` periods (to
-//! [`REPEAT`]); that orbit is then refined by Newton on `P^k(s) = s` (the
+//! `REPEAT`); that orbit is then refined by Newton on `P^k(s) = s` (the
 //! Jacobian by central differences of the exact map), its stability read
 //! from the eigenvalues of that Jacobian (the Floquet multipliers), and `mu`
 //! is `int f / int B` over its `k` periods. Where nothing repeats within
@@ -96,12 +96,12 @@ impl System {
 }
 
 /// Two states repeat where they differ by at most this (relative to 1 and the state).
-pub const REPEAT: f64 = 1e-9;
+pub(crate) const REPEAT: f64 = 1e-9;
 /// Most periods run from the start before the answer is "no period" (the flat punch).
 pub const MAX_PERIODS: usize = 4000;
 /// Most sampling steps run from the start (about two seconds); fewer
 /// periods than [`MAX_PERIODS`] where a period takes many (at least 20).
-pub const MAX_STEPS: f64 = 2e7;
+pub(crate) const MAX_STEPS: f64 = 2e7;
 /// Most sampling steps a period of the drive may take: a body whose fastest
 /// time scale (its stick frequency, or its damping rate) is shorter is
 /// refused, by name, before any work.
@@ -145,7 +145,7 @@ fn check_settles(p: &Params, limit: usize) -> Result<()> {
 }
 
 /// Longest period of an attractor looked for.
-pub const MAX_ORBIT: usize = 8;
+pub(crate) const MAX_ORBIT: usize = 8;
 /// Most near-repeats refined by Newton before the search goes on without.
 const NEWTON_ATTEMPTS: usize = 3;
 
@@ -295,23 +295,6 @@ pub fn solve_discretised(shape: &crate::Shape, c: &Conditions, sys: &System, spr
         return Err(Error::param("springs", springs as f64, "must be in 1..=65536"));
     }
     curved::discretised(shape, params(shape, c, sys)?, springs)
-}
-
-/// The contact force at the phases `taus` (ascending, in `[0, 2 pi)`) over
-/// the first period of the attractor [`solve`] reports for the flat punch (over the last period
-/// run where it found none), in units of `mu0 kz u0`.
-///
-/// # Errors
-/// As [`solve`]; [`Error::InvalidParameter`] for a massless body (its forces
-/// are the stiff problem's at the scaled drive) or phases not ascending in `[0, 2 pi)`.
-pub fn forces(c: &Conditions, sys: &System, taus: &[f64]) -> Result<(SystemReport, Vec<f64>)> {
-    if !taus.windows(2).all(|w| w[0] <= w[1]) || taus.iter().any(|t| !(0.0..std::f64::consts::TAU).contains(t)) {
-        return Err(Error::param("tau", f64::NAN, "phases must ascend in [0, 2 pi)"));
-    }
-    match attractor(c, sys)? {
-        (r, Some(orbit)) => Ok((r, sample(&orbit, taus))),
-        (_, None) => Err(Error::param("frequency-ratio", 0.0, "a massless body's forces are the stiff problem's")),
-    }
 }
 
 /// The contact force at `taus` (ascending, in `[0, 2 pi)`) over one period

@@ -87,7 +87,7 @@ pub(super) fn foundation_samples(
 }
 
 /// A body on a system with mass and stiffness: one period of the attractor.
-/// The flat punch's exactly ([`crate::system::forces`]), its events among
+/// The flat punch's exactly (the attractor's phases sampled), its events among
 /// the samples, a massless body the stiff problem at the drive scaled by
 /// `kappa/(1 + kappa)`; a curved body's as its springs
 /// ([`crate::system::System::springs`]), every spring's events exact (not
