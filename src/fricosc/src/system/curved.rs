@@ -85,6 +85,9 @@ struct Found {
     standard_error: Option<f64>,
 }
 
+/// The body `(x, x')` and its springs' states at `tau = 0`.
+type Body = (f64, f64, Vec<Spring>);
+
 /// Orbits closed beyond this (relative, as [`REPEAT`]) are exact to rounding.
 const TIGHT: f64 = 1e-13;
 /// Most orbits run to refine one near-repeat.
@@ -123,7 +126,7 @@ fn least_period(fd: &Foundation, (x, v, state): (f64, f64, &[Spring]), k: usize,
 /// geometric series with the measured contraction of the state. A
 /// near-repeat that does not contract is not an orbit (a slow drift): the
 /// search goes on.
-fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
+fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
     let p = fd.p;
     let start = p.start();
     let (mut x, mut v) = (start[super::phase::X], start[super::phase::V]);
@@ -140,6 +143,9 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
     while n < MAX_CURVED_PERIODS {
         n += 1;
         let now = run(&mut x, &mut v, &mut state, &mut per_period);
+        if fd.chattered() {
+            return Err(super::chattering());
+        }
         let repeat = (1..=MAX_ORBIT.min(seen.len())).find(|&k| distance(&seen[seen.len() - k], &now) <= REPEAT);
         if let Some(k) = repeat {
             let block = |per: &[f64]| per[per.len() - k..].iter().sum::<f64>() / k as f64;
@@ -160,10 +166,13 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
             if rate < 1.0 || d <= TIGHT {
                 let closure = if d <= TIGHT { change } else { change * rate / (1.0 - rate) };
                 let k = least_period(fd, (x, v, &state), k, d.max(TIGHT));
-                return (
+                if fd.chattered() {
+                    return Err(super::chattering());
+                }
+                return Ok((
                     Found { mu, period: Some(k), periods_run: n, error: closure, standard_error: None },
                     (x, v, state),
-                );
+                ));
             }
         }
         if seen.len() == MAX_ORBIT {
@@ -179,14 +188,14 @@ fn attractor(fd: &Foundation) -> (Found, (f64, f64, Vec<Spring>)) {
         error: m.error_estimate(),
         standard_error: Some(m.standard_error),
     };
-    (found, (x, v, state))
+    Ok((found, (x, v, state)))
 }
 
 /// The attractor of `shape` discretised into about `n` springs, without an
 /// error estimate.
 pub(crate) fn discretised(shape: &Shape, p: Params, n: usize) -> Result<SystemReport> {
     let springs = discretise(shape, p.amp, n)?;
-    let f = attractor(&Foundation::new(p, &springs)).0;
+    let f = attractor(&Foundation::new(p, &springs))?.0;
     Ok(report(&f, None, springs.len()))
 }
 
@@ -210,9 +219,9 @@ pub(crate) fn solve(shape: &Shape, p: Params, springs: usize) -> Result<SystemRe
     if p.omega == 0.0 {
         return Err(massless());
     }
-    let coarse = attractor(&Foundation::new(p, &discretise(shape, p.amp, springs / 2)?)).0;
+    let coarse = attractor(&Foundation::new(p, &discretise(shape, p.amp, springs / 2)?))?.0;
     let nodes = discretise(shape, p.amp, springs)?;
-    let fine = attractor(&Foundation::new(p, &nodes)).0;
+    let fine = attractor(&Foundation::new(p, &nodes))?.0;
     let change = fine.mu - coarse.mu;
     // Richardson on the N^-2 error where both are the same orbit.
     let extrapolate = fine.period.is_some() && fine.period == coarse.period;
@@ -232,8 +241,11 @@ pub(crate) fn history(shape: &Shape, p: Params, n: usize, taus: &[f64]) -> Resul
     }
     let nodes = discretise(shape, p.amp, n)?;
     let fd = Foundation::new(p, &nodes);
-    let (found, (x, v, mut state)) = attractor(&fd);
+    let (found, (x, v, mut state)) = attractor(&fd)?;
     let tangential = fd.period(x, v, &mut state, taus).3;
+    if fd.chattered() {
+        return Err(super::chattering());
+    }
     let norm: f64 = nodes.iter().map(|(w, b)| w * b.max(0.0)).sum();
     let normal = |tau: f64| nodes.iter().map(|(w, b)| w * (b - p.amp * tau.cos()).max(0.0)).sum::<f64>() / norm;
     let forces = taus.iter().zip(tangential).map(|(&tau, f)| [normal(tau), f / norm]).collect();

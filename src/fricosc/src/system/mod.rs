@@ -337,6 +337,9 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
     let periods = MAX_PERIODS.min((MAX_STEPS / ph.steps_per_period()).max(20.0) as usize);
     for n in 1..=periods {
         let (next, int_f) = map_k(&ph, &s, 1);
+        if ph.chattered() {
+            return Err(chattering());
+        }
         per_period.push(int_f);
         s = next;
         let back = |k: usize| &seen[seen.len() - k];
@@ -347,7 +350,7 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
         {
             attempts += 1;
             if let Some((r, at)) = orbit(&ph, s, k, n) {
-                return Ok((r, Some((ph, at))));
+                return if ph.chattered() { Err(chattering()) } else { Ok((r, Some((ph, at)))) };
             }
         }
         seen.push(s);
@@ -366,6 +369,17 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
         springs: None,
     };
     Ok((report, Some((ph, s))))
+}
+
+/// The refusal of a solve whose period ran out of events (a defect of the
+/// phase machine, never a property of the inputs).
+pub(crate) fn chattering() -> Error {
+    Error::Internal {
+        what: format!(
+            "a phase chattered: more than {} events in a row (a spring) within one sampling step",
+            period::MAX_EVENTS_IN_A_STEP
+        ),
+    }
 }
 
 /// Whether two states are the same phase and within `tol` (relative to 1 and the state).

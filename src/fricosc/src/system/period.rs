@@ -17,6 +17,13 @@ use std::f64::consts::TAU as TWO_PI;
 
 /// Most phases of zero length in a row before a phase is held for a step.
 const MAX_FLIPS: usize = 8;
+/// Most events in a row within one sampling step, and per spring of a
+/// curved body. In a step each event function has at most one extremum, so
+/// it changes sign at most twice: a correct phase machine meets a few events
+/// a step. More is a phase chattering at a switch (a defect): the step is
+/// finished without events and the solve refused ([`Phases::chattered`]),
+/// never left to run on.
+pub(crate) const MAX_EVENTS_IN_A_STEP: usize = 64;
 
 /// A transition inside a period.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,6 +44,8 @@ pub(crate) struct Phases {
     steps: [(f64, Generator); 4],
     /// Each kind's event functions (made once: they are checked every step).
     events: [Vec<Sloped<Kind>>; 4],
+    /// Whether a step ran out of events ([`MAX_EVENTS_IN_A_STEP`]).
+    chattered: std::cell::Cell<bool>,
 }
 
 fn index(kind: Kind) -> usize {
@@ -62,7 +71,14 @@ impl Phases {
             let h = super::springs::sampling_step(&a);
             (h, (a * h).exp())
         });
-        Phases { p, gens, steps, events: kinds.map(|k| with_slopes(&gens[index(k)], p.events(k))) }
+        let events = kinds.map(|k| with_slopes(&gens[index(k)], p.events(k)));
+        Phases { p, gens, steps, events, chattered: std::cell::Cell::new(false) }
+    }
+
+    /// Whether a step run so far held more events than [`MAX_EVENTS_IN_A_STEP`]
+    /// (its answer is not to be trusted).
+    pub(crate) fn chattered(&self) -> bool {
+        self.chattered.get()
     }
 
     /// The first event of `kind` within `h` of `z` (inputs: the start of a
@@ -94,6 +110,7 @@ impl Phases {
             (a, TWO_PI - a)
         });
         let mut events = vec![];
+        let mut in_step = 0;
         z[INT_F] = 0.0;
         let mut tau = 0.0;
         // Phases of zero length in a row at one instant (a force grazing its
@@ -114,12 +131,15 @@ impl Phases {
             }
             let a = &self.gens[index(kind)];
             let end = if h == *step { e * z } else { advance(a, &z, h) };
-            let event = if flips < MAX_FLIPS { self.event_in(kind, &z, h, &end) } else { None };
+            let budget = in_step < MAX_EVENTS_IN_A_STEP;
+            self.chattered.set(self.chattered.get() || !budget);
+            let event = if flips < MAX_FLIPS && budget { self.event_in(kind, &z, h, &end) } else { None };
             let reach = tau + event.map_or(h, |e| e.0);
             while let Some(&at) = samples.get(forces.len()).filter(|&&at| at <= reach) {
                 forces.push(self.p.force(kind, &advance(a, &z, (at - tau).max(0.0))));
             }
             if let Some((d, next)) = event {
+                in_step += 1;
                 flips = if d == 0.0 { flips + 1 } else { 0 };
                 z = advance(a, &z, d);
                 tau += d;
@@ -130,6 +150,7 @@ impl Phases {
                 kind = next;
                 continue;
             }
+            in_step = 0;
             flips = 0;
             (z, tau) = (end, if h == rest { TWO_PI } else { tau + h });
             match stop {

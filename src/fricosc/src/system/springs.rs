@@ -17,7 +17,7 @@
 //! the group slips again as one); likewise backward. Contact is gained and
 //! lost at the closed-form zeros of `B_i`.
 
-use super::period::{first_event, Event};
+use super::period::{first_event, Event, MAX_EVENTS_IN_A_STEP};
 use super::phase::{advance, Generator, Linear, Params, State, COS, INT_F, ONE, SIN, V, X};
 use nalgebra::SMatrix;
 use std::cell::RefCell;
@@ -66,6 +66,8 @@ pub(crate) struct Foundation {
     pub(crate) mean_b: f64,
     /// The sampling step and its exponential of each set of springs met ([`Foundation::step_of`]).
     steps: RefCell<HashMap<[u64; 3], (f64, Generator)>>,
+    /// Whether a step ran out of events ([`Foundation::chattered`]).
+    chattered: std::cell::Cell<bool>,
 }
 
 impl Foundation {
@@ -83,7 +85,7 @@ impl Foundation {
         contacts.sort_by(|x, y| x.0.total_cmp(&y.0));
         let mean = |bi: f64| if p.amp == 0.0 { bi } else { p.amp * crate::model::spring::mean_normal(bi / p.amp) };
         let mean_b = w.iter().zip(&b).map(|(wi, &bi)| wi * mean(bi)).sum();
-        Foundation { p, w, b, contacts, mean_b, steps: RefCell::default() }
+        Foundation { p, w, b, contacts, mean_b, steps: RefCell::default(), chattered: std::cell::Cell::new(false) }
     }
 
     /// The state at the stated start: springs in contact at `tau = 0` stuck
@@ -155,6 +157,13 @@ impl Foundation {
             }
         }
         sum
+    }
+
+    /// Whether a step run so far held more events in a row than
+    /// [`MAX_EVENTS_IN_A_STEP`] and that many a spring allow: then its events
+    /// were dropped to finish it, and its answer is not to be trusted.
+    pub(crate) fn chattered(&self) -> bool {
+        self.chattered.get()
     }
 
     /// The event functions of the phase of `springs`.
@@ -240,7 +249,8 @@ impl Foundation {
         let mut z = self.p.start();
         (z[X], z[V], z[INT_F]) = (x, v, 0.0);
         let mut forces = Vec::with_capacity(samples.len());
-        let (mut tau, mut next, mut flips) = (0.0, 0, 0);
+        let (mut tau, mut next, mut flips, mut in_step) = (0.0, 0, 0, 0);
+        let limit = MAX_EVENTS_IN_A_STEP * (springs.len() + 1);
         while tau < TWO_PI {
             let f = self.linear(springs);
             let a = self.p.generator_of(f);
@@ -260,20 +270,23 @@ impl Foundation {
                 } else {
                     advance(&a, &z, h)
                 };
-                let event = if flips < MAX_FLIPS { first_event(&a, &events, &z, h, &end) } else { None };
+                let budget = in_step < limit;
+                self.chattered.set(self.chattered.get() || !budget);
+                let event = if flips < MAX_FLIPS && budget { first_event(&a, &events, &z, h, &end) } else { None };
                 let reach = tau + event.map_or(h, |e| e.0);
                 while let Some(&at) = samples.get(forces.len()).filter(|&&at| at <= reach) {
                     let zs = advance(&a, &z, (at - tau).max(0.0));
                     forces.push(f.x * zs[X] + f.one + f.cos * zs[COS]);
                 }
                 if let Some((d, t)) = event {
+                    in_step += 1;
                     flips = if d == 0.0 { flips + 1 } else { 0 };
                     z = advance(&a, &z, d);
                     tau += d;
                     self.apply(t, springs, &z);
                     break;
                 }
-                flips = 0;
+                (flips, in_step) = (0, 0);
                 (z, tau) = (end, if h == rest { TWO_PI } else { tau + h });
                 if let Some(t) = contact {
                     while let Some(&(_, i, gained)) = self.contacts.get(next).filter(|c| c.0 == t) {
