@@ -37,7 +37,8 @@ pub struct OscillationRow {
     pub regime: String,
     /// With a peer: the stepping peer's error on the same row.
     pub peer_error: Option<f64>,
-    /// On a system, a curved body: the exact value's error estimate.
+    /// On a system: the exact value's error estimate (a curved body's, or a
+    /// mean's where the response has no period).
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub exact_error_estimate: Option<f64>,
 }
@@ -46,7 +47,7 @@ pub struct OscillationRow {
 /// reached within them; the last period is its answer).
 pub const SYSTEM_PEER_PERIODS: usize = 40;
 
-/// One row's exact answer: `mu`, its regime, a curved system's error estimate.
+/// One row's exact answer: `mu`, its regime, its error estimate on a system.
 fn exact_row(
     shape: &Shape,
     c: &Conditions,

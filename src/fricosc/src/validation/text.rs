@@ -152,7 +152,10 @@ impl OscillationValidation {
             s.n, v.shape, s.max_abs_error, s.worst_row, s.rms_error, s.max_rel_error
         );
         if let Some(e) = v.rows.iter().filter_map(|r| r.exact_error_estimate).reduce(f64::max) {
-            let _ = writeln!(out, "the exact values' largest error estimate {e:.3e} (the curved body's springs)");
+            let _ = writeln!(
+                out,
+                "the exact values' largest error estimate {e:.3e} (a curved body's springs, a mean without period)"
+            );
         }
         if let Some(p) = &v.peer {
             let _ = writeln!(
