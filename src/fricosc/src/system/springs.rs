@@ -97,27 +97,33 @@ impl Foundation {
             .collect()
     }
 
-    /// The total force of `springs` as a linear form.
-    fn linear(&self, springs: &[Spring]) -> Linear {
+    /// The phase of `springs`, in one pass over them: their total force as a
+    /// linear form, and the event functions ([`Foundation::events`]).
+    fn phase(&self, springs: &[Spring]) -> (Linear, Vec<Event<Transition>>) {
+        let amp = self.p.amp;
         let mut f = Linear::default();
+        let (mut lo, mut hi, mut forward, mut backward) = (f64::INFINITY, f64::NEG_INFINITY, false, false);
         for ((s, &wi), &bi) in springs.iter().zip(&self.w).zip(&self.b) {
             match *s {
-                Spring::Stuck { l, .. } => {
+                Spring::Stuck { l, m } => {
                     f.x += wi;
                     f.one += wi * (bi - l);
+                    (lo, hi) = (lo.min(l), hi.max(m));
                 }
                 Spring::Forward => {
                     f.one += wi * bi;
-                    f.cos -= wi * self.p.amp;
+                    f.cos -= wi * amp;
+                    forward = true;
                 }
                 Spring::Backward => {
                     f.one -= wi * bi;
-                    f.cos += wi * self.p.amp;
+                    f.cos += wi * amp;
+                    backward = true;
                 }
                 Spring::Free => {}
             }
         }
-        f
+        (f, self.events(lo, hi, forward, backward))
     }
 
     /// The sampling step of the phase whose force is `f` (its generator
@@ -166,12 +172,14 @@ impl Foundation {
         self.chattered.get()
     }
 
-    /// The event functions of the phase of `springs`.
-    fn events(&self, springs: &[Spring]) -> Vec<Event<Transition>> {
+    /// The event functions of a phase whose stuck springs' levels span
+    /// `[lo, hi]` (none stuck: infinite), and which has springs slipping
+    /// `forward` or `backward`: the lowest stuck one slips forward where the
+    /// body reaches `lo - amp cos tau`, the highest backward where it reaches
+    /// `hi + amp cos tau`; a slipping group stops where `x' = amp sin tau`.
+    fn events(&self, lo: f64, hi: f64, forward: bool, backward: bool) -> Vec<Event<Transition>> {
         let amp = self.p.amp;
         let mut out = vec![];
-        let stuck = springs.iter().filter_map(|s| if let Spring::Stuck { l, m } = *s { Some((l, m)) } else { None });
-        let (lo, hi) = stuck.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), (l, m)| (lo.min(l), hi.max(m)));
         let row = |entries: &[(usize, f64)]| {
             let mut w = SMatrix::<f64, 1, 8>::zeros();
             for &(j, v) in entries {
@@ -183,10 +191,10 @@ impl Foundation {
             out.push((row(&[(ONE, lo), (X, -1.0), (COS, -amp)]), Transition::SlipForward(lo)));
             out.push((row(&[(ONE, -hi), (X, 1.0), (COS, -amp)]), Transition::SlipBackward(hi)));
         }
-        if springs.contains(&Spring::Forward) {
+        if forward {
             out.push((row(&[(V, 1.0), (SIN, -amp)]), Transition::StopForward));
         }
-        if springs.contains(&Spring::Backward) {
+        if backward {
             out.push((row(&[(V, -1.0), (SIN, -amp)]), Transition::StopBackward));
         }
         out
@@ -252,12 +260,12 @@ impl Foundation {
         let (mut tau, mut next, mut flips, mut in_step) = (0.0, 0, 0, 0);
         let limit = MAX_EVENTS_IN_A_STEP * (springs.len() + 1);
         while tau < TWO_PI {
-            let f = self.linear(springs);
+            let (f, events) = self.phase(springs);
             let a = self.p.generator_of(f);
             let (step, e0) = self.step_of(f, &a);
             // Made at the phase's first full step.
             let mut response = None;
-            let events = super::period::with_slopes(&a, self.events(springs));
+            let events = super::period::with_slopes(&a, events);
             loop {
                 let rest = TWO_PI - tau;
                 let mut h = step.min(rest);
