@@ -484,6 +484,29 @@ fn jacobian(ph: &Phases, s: &Reduced, k: usize) -> Matrix3<f64> {
 #[cfg(test)]
 mod tests {
     use super::batch_mean;
+    use super::phase::{series, Kind, Linear, Params, State, ONE};
+
+    /// The series a sampling step is advanced by against nalgebra's Pade
+    /// exponential of the whole generator: `exp(a h) z`, and `h phi_1(a0 h) u`
+    /// (`u` the constant state's column, `a0` the generator without it) as
+    /// `exp(a h) e_1 - e_1`. Observed: 5.6e-17 relative to the state at most.
+    #[test]
+    fn the_step_series_meet_the_pade_exponential() {
+        let p = Params { kappa: 1.5, omega: 0.4, zeta: 0.05, vhat: 0.3, amp: 0.7, t: 0.8, phase: 0.6 };
+        let close = |x: &State, y: &State| (x - y).amax() <= 5e-16 * (1.0 + y.amax());
+        for f in [p.linear(Kind::Stick), p.linear(Kind::Forward), Linear { x: 3.0, one: 0.7, cos: -0.2, y0: 0.0 }] {
+            let a = p.generator_of(f);
+            let h = super::springs::sampling_step(&a);
+            let pade = (a * h).exp();
+            let z = p.start();
+            assert!(close(&series(&a, &z, h, 0).unwrap(), &(pade * z)), "{f:?}");
+            let mut a0 = a;
+            a0.set_column(ONE, &State::zeros());
+            let mut want = pade.column(ONE).into_owned();
+            want[ONE] -= 1.0;
+            assert!(close(&series(&a0, &(a.column(ONE) * h), h, 1).unwrap(), &want), "{f:?}");
+        }
+    }
 
     /// A transient decaying like `1/t` over the tail `[1000, 2000)`: the
     /// mean is 2.94 drifts from its limit (derivation at `Mean::error_estimate`),

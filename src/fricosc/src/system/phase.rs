@@ -171,23 +171,29 @@ impl Params {
     }
 }
 
-/// Most terms of [`advance`]'s series before it falls back on the Pade exponential.
+/// Most terms of [`series`] (`None` beyond).
 const MAX_TERMS: usize = 40;
 
-/// `exp(a h) z` as its Taylor series `sum_k (a h)^k z / k!`, summed until a
-/// term is below `2^-60` of the sum (within a sampling step, a quarter of the
-/// fastest time scale, the terms fall at least like `4^-k/k!`: about 20 terms,
-/// each a product of the 8 x 8 generator with a vector, where the matrix
-/// exponential costs about six products of matrices). Beyond [`MAX_TERMS`]
-/// (a longer step) it is nalgebra's Pade exponential.
-pub(crate) fn advance(a: &Generator, z: &State, h: f64) -> State {
+/// `sum_k (a h)^k z j!/(k + j)!`, summed until a term is below `2^-60` of
+/// the sum: for `j = 0` it is `exp(a h) z`, for `j = 1` `phi_1(a h) z`, where
+/// `phi_1(x) = (e^x - 1)/x`. Within a sampling step (a quarter of the fastest
+/// time scale) the terms fall at least like `4^-k/k!`: about 20 terms, each a
+/// product of the 8 x 8 generator with a vector, where the matrix exponential
+/// costs about six products of matrices. `None` if [`MAX_TERMS`] do not do.
+pub(crate) fn series(a: &Generator, z: &State, h: f64, j: usize) -> Option<State> {
     let (mut term, mut sum) = (*z, *z);
     for k in 1..=MAX_TERMS {
-        term = a * term * (h / k as f64);
+        term = a * term * (h / (k + j) as f64);
         sum += term;
         if term.amax() <= sum.amax() * f64::EPSILON / 256.0 {
-            return sum;
+            return Some(sum);
         }
     }
-    (a * h).exp() * z
+    None
+}
+
+/// `exp(a h) z`: its [`series`], or beyond it (a longer step) nalgebra's Pade
+/// exponential.
+pub(crate) fn advance(a: &Generator, z: &State, h: f64) -> State {
+    series(a, z, h, 0).unwrap_or_else(|| (a * h).exp() * z)
 }

@@ -18,7 +18,7 @@
 //! lost at the closed-form zeros of `B_i`.
 
 use super::period::{first_event, Event, MAX_EVENTS_IN_A_STEP};
-use super::phase::{advance, Generator, Linear, Params, State, COS, INT_F, ONE, SIN, V, X};
+use super::phase::{advance, series, Generator, Linear, Params, State, COS, INT_F, ONE, SIN, V, X};
 use nalgebra::SMatrix;
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -132,7 +132,7 @@ impl Foundation {
     /// enter (`f.one`); the others depend on which springs stick and which
     /// slip, a set met again and again (on a paraboloid of 64 springs 221 sets
     /// in 5,021 phases), so each set's exponential is made once. A full step
-    /// is then `z -> exp(a0 h) z + z_1 Phi u` ([`Foundation::full_step`]).
+    /// is then `z -> exp(a0 h) z + z_1 Phi u` ([`Foundation::constant_response`]).
     fn step_of(&self, f: Linear, a: &Generator) -> (f64, Generator) {
         let key = [f.x.to_bits(), f.y0.to_bits(), f.cos.to_bits()];
         let mut steps = self.steps.borrow_mut();
@@ -141,28 +141,20 @@ impl Foundation {
         }
         *steps.entry(key).or_insert_with(|| {
             let step = sampling_step(a);
-            let mut a0 = *a;
-            a0.set_column(ONE, &State::zeros());
-            (step, (a0 * step).exp())
+            (step, (without_constant(a) * step).exp())
         })
     }
 
-    /// `Phi u = int_0^h exp(a0 s) ds u` for `u` the column of `1` in `a`
-    /// (`a0` that generator without it): the series `sum_k a0^k u h^(k+1)/(k+1)!`.
+    /// `Phi u = int_0^h exp(a0 s) ds u = h phi_1(a0 h) u` for `u` the column
+    /// of `1` in `a` (`a0` that generator without it). Beyond the series it is
+    /// `exp(a h) e_1 - e_1`, the same by the Pade exponential of `a`.
     fn constant_response(a: &Generator, h: f64) -> State {
         let u = a.column(ONE).into_owned();
-        let mut a0 = *a;
-        a0.set_column(ONE, &State::zeros());
-        let mut term = u * h;
-        let mut sum = term;
-        for k in 1..=MAX_TERMS {
-            term = a0 * term * (h / (k + 1) as f64);
-            sum += term;
-            if term.amax() <= sum.amax() * f64::EPSILON / 256.0 {
-                break;
-            }
-        }
-        sum
+        series(&without_constant(a), &(u * h), h, 1).unwrap_or_else(|| {
+            let mut d = (a * h).exp().column(ONE).into_owned();
+            d[ONE] -= 1.0;
+            d
+        })
     }
 
     /// Whether a step run so far held more events in a row than
@@ -320,9 +312,12 @@ impl Foundation {
 
 /// Most sets of springs whose step is kept (beyond, the cache starts anew).
 const MAX_CACHED_SETS: usize = 1 << 14;
-/// Most terms of [`Foundation::constant_response`]'s series (a sampling step
-/// is a quarter of the fastest time scale: about 20 are taken).
-const MAX_TERMS: usize = 60;
+/// `a` with its column of the constant state `1` zeroed.
+fn without_constant(a: &Generator) -> Generator {
+    let mut a0 = *a;
+    a0.set_column(ONE, &State::zeros());
+    a0
+}
 
 /// A quarter of the fastest time scale of the phase `a` (at most the
 /// drive's `2 pi/256`): the body's rates are the roots of
