@@ -31,21 +31,24 @@ where
     R: IntoIterator<Item = T>,
     T: AsRef<[u8]>,
 {
+    csv_table(&[], records)
+}
+
+/// A whole CSV document: `header` (none if empty), then `rows`.
+pub fn csv_table<I, R, T>(header: &[&str], rows: I) -> String
+where
+    I: IntoIterator<Item = R>,
+    R: IntoIterator<Item = T>,
+    T: AsRef<[u8]>,
+{
     let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(vec![]);
-    for r in records {
+    if !header.is_empty() {
+        let _ = w.write_record(header);
+    }
+    for r in rows {
         let _ = w.write_record(r);
     }
     String::from_utf8_lossy(&w.into_inner().unwrap_or_default()).into_owned()
-}
-
-/// A whole CSV document: `header`, then `rows`.
-pub fn csv_table<I, R>(header: &[&str], rows: I) -> String
-where
-    I: IntoIterator<Item = R>,
-    R: IntoIterator<Item = String>,
-{
-    let head = header.iter().map(|h| h.to_string()).collect::<Vec<_>>();
-    csv_records(std::iter::once(head).chain(rows.into_iter().map(|r| r.into_iter().collect())))
 }
 
 /// Append the shortest text of `x` to `line` (`null` where not finite): the one

@@ -107,7 +107,7 @@ pub fn files() -> Result<Vec<SuiteFile>> {
         });
         out.push(SuiteFile {
             path: format!("tables/{name}.csv"),
-            text: crate::output::csv_table(&VALUE_HEADER, rows.iter().cloned()),
+            text: crate::output::csv_table(&VALUE_HEADER, &rows),
             command: format!("{command} --format csv"),
         });
     }
@@ -120,7 +120,7 @@ pub fn files() -> Result<Vec<SuiteFile>> {
     }
     out.push(SuiteFile {
         path: "limits.csv".into(),
-        text: crate::output::csv_table(&VALUE_HEADER, rows.iter().cloned()),
+        text: crate::output::csv_table(&VALUE_HEADER, &rows),
         command: "fricosc point --shape S --vbar V --amp A (each row)".into(),
     });
     for (v, a) in HISTORIES {
@@ -152,7 +152,7 @@ pub fn files() -> Result<Vec<SuiteFile>> {
             p.events.iter().map(|e| vec![num(e.tau), event(Some(e.kind)), num(e.normal), num(e.tangential)]).collect();
         out.push(SuiteFile {
             path: format!("{stem}-events.csv"),
-            text: crate::output::csv_table(&["tau", "kind", "normal", "tangential"], rows.iter().cloned()),
+            text: crate::output::csv_table(&["tau", "kind", "normal", "tangential"], &rows),
             command: format!("fricosc point --shape flat --vbar {} --amp {} (events)", num(v), num(a)),
         });
     }
