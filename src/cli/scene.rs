@@ -198,7 +198,7 @@ pub fn run(a: SceneArgs) -> Result<()> {
         .collect();
     let scenes = scenes.into_iter().collect::<Result<Vec<_>>>()?;
     // A progress bar on stderr only when it is a terminal and the work is long.
-    let total: usize = scenes.iter().map(fricosc::scene::velocity_count).sum();
+    let total: usize = scenes.iter().map(Scene::rows).sum();
     let bar = (std::io::stderr().is_terminal() && total >= 2000).then(|| Progress::new(total as u64));
     let tick = |k: u64| {
         if let Some(b) = &bar {

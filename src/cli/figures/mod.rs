@@ -6,7 +6,9 @@ use crate::chart::{self, Axis, Chart, Dash, Key, Rule, Series, Style};
 use crate::cmd::emit;
 use crate::error::{Error, Result};
 use clap::Args;
-use fricosc::seed;
+use fricosc::seed::Approximation::{
+    Eq11, Eq12, Eq16, Eq17, Eq21Slope, Eq21SlopePrinted, Eq22Corrected, Eq22Printed, Eq27,
+};
 use fricosc::Shape;
 use serde::Serialize;
 mod oscillation;
@@ -188,7 +190,7 @@ fn flat_figures() -> Result<Vec<Figure>> {
     for &a in &small {
         c.push(exact(&flat, a, &vb, false)?);
         if a > 0.0 {
-            c.push(approx("eq. 11", Some(a), &vb, |v| seed::eq11(v, a)));
+            c.push(approx("eq. 11", Some(a), &vb, |v| Eq11 { amp: a }.value(v)));
         }
     }
     figs.push(figure(
@@ -206,7 +208,7 @@ fn flat_figures() -> Result<Vec<Figure>> {
         "Fig. 3 inset: flat punch at du/u0 = 1, low velocity, exact and eq. 12",
         XAxis::Vbar,
         [0.0, 0.1, 0.0, 0.3],
-        vec![exact(&flat, 1.0, &vs, false)?, approx("eq. 12", Some(1.0), &vs, |v| seed::eq12(v, 1.0))],
+        vec![exact(&flat, 1.0, &vs, false)?, approx("eq. 12", Some(1.0), &vs, |v| Eq12 { amp: 1.0 }.value(v))],
     ));
 
     // Fig. 4: flat punch against vhat = vbar amp; eq. 16 up to amp 1, eq. 17 beyond.
@@ -215,9 +217,9 @@ fn flat_figures() -> Result<Vec<Figure>> {
     for &a in small.iter().chain(&jumping) {
         c.push(exact(&flat, a, &vh, true)?);
         if a > 1.0 {
-            c.push(approx("eq. 17", Some(a), &vh, |x| seed::eq17(x / a)));
+            c.push(approx("eq. 17", Some(a), &vh, |x| Eq17.value(x / a)));
         } else if a > 0.0 {
-            c.push(approx("eq. 16", Some(a), &vh, |x| seed::eq16(x, a)));
+            c.push(approx("eq. 16", Some(a), &vh, |x| Eq16 { amp: a }.value(x)));
         }
     }
     figs.push(against_vhat(
@@ -242,7 +244,7 @@ fn jumping_figures() -> Result<Vec<Figure>> {
         let a = (10 + k) as f64 / 10.0;
         c.push(exact(&flat, a, &vb, false)?);
     }
-    c.push(approx("eq. 17", None, &vb, seed::eq17));
+    c.push(approx("eq. 17", None, &vb, |v| Eq17.value(v)));
     figs.push(figure(
         "fig5",
         "Fig. 5: flat punch, jumping, du/u0 = 1 to 2, exact and eq. 17",
@@ -261,16 +263,16 @@ fn jumping_figures() -> Result<Vec<Figure>> {
         [1.0, 5.0, 0.0, 3.5],
         vec![
             Curve {
-                label: "exact (the solver at v\u{304} = 10^{−9})".into(),
+                label: "exact (the solver at v\u{304} = 10^{−10})".into(),
                 kind: "exact".into(),
                 equation: None,
                 amp: None,
                 points: slope_exact,
             },
-            approx("eq. 21 corrected", None, &aa, seed::eq21_slope),
-            approx("eq. 21 as printed (π too small)", None, &aa, seed::eq21_slope_printed),
-            approx("eq. 22 corrected, π²/4", None, &aa, |_| seed::EQ22_CORRECTED),
-            approx("eq. 22 as printed, π/4", None, &aa, |_| seed::EQ22_PRINTED),
+            approx("eq. 21 corrected", None, &aa, |a| Eq21Slope.value(a)),
+            approx("eq. 21 as printed (π too small)", None, &aa, |a| Eq21SlopePrinted.value(a)),
+            approx("eq. 22 corrected, π²/4", None, &aa, |a| Eq22Corrected.value(a)),
+            approx("eq. 22 as printed, π/4", None, &aa, |a| Eq22Printed.value(a)),
         ],
     );
     f.y_label = "low-velocity slope μ_{macro}/(μ_{0} v\u{304})".into();
@@ -282,7 +284,7 @@ fn jumping_figures() -> Result<Vec<Figure>> {
         let ms = parabolic.mu_static(a, fricosc::DEFAULT_TOL)?;
         c.push(exact(&parabolic, a, &vb, false)?);
         if a > 0.0 {
-            c.push(approx("eq. 27", Some(a), &vb, |v| seed::eq27(v, ms)));
+            c.push(approx("eq. 27", Some(a), &vb, |v| Eq27 { mu_static: ms }.value(v)));
         }
     }
     figs.push(figure("fig7", "Fig. 7: parabolic indenter, exact and eq. 27", XAxis::Vbar, [0.0, 1.2, 0.0, 1.05], c));
@@ -291,7 +293,7 @@ fn jumping_figures() -> Result<Vec<Figure>> {
         let ms = parabolic.mu_static(a, fricosc::DEFAULT_TOL)?;
         c.push(exact(&parabolic, a, &vh, true)?);
         if a > 0.0 {
-            c.push(approx("eq. 27", Some(a), &vh, |x| seed::eq27(x / a, ms)));
+            c.push(approx("eq. 27", Some(a), &vh, |x| Eq27 { mu_static: ms }.value(x / a)));
         }
     }
     figs.push(against_vhat("fig8", "Fig. 8: parabolic indenter against v\u{302}, exact and eq. 27", c));

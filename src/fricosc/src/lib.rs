@@ -81,9 +81,7 @@ pub use peers::{seed, stepper};
 /// moving bound ([`spring::StopSpring`]: oscillation in the sliding direction).
 pub mod spring {
     pub use crate::model::spring::{mean_normal, Event, EventKind, Regime, Spring, Stick};
-    pub use crate::model::stop::{
-        always_forward, force_at, solve, Bound, Drive, StopKind, StopPhase, StopSpring, Touch,
-    };
+    pub use crate::model::stop::{solve, Bound, Drive, StopKind, StopPhase, StopSpring, Touch};
 }
 
 /// Force histories over a period: the normal and tangential force of a

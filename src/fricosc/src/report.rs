@@ -5,4 +5,4 @@
 pub use crate::contact::combined::{Combined, CombinedBand, SpringReport, StopEvent, Tangential};
 pub use crate::contact::flat::FlatPoint;
 pub use crate::contact::mdr::{Band, BandKind, MdrPoint, MdrResult};
-pub use crate::contact::regime::{jumping_share, regime, ContactRegime};
+pub use crate::contact::regime::ContactRegime;

@@ -250,7 +250,7 @@ pub(crate) fn evaluate(shape: &Shape, c: &Conditions) -> Result<Combined> {
         let ratio = Ratio::signed(s.mean_force / nb, s.mean_deficit / nb, est, "flat punch, combined oscillation")?;
         return Ok(Combined { ratio, error_estimate: est, spring: Some(report(&s, b)), bands: vec![] });
     }
-    if crate::stop::always_forward(o.amp, d) {
+    if d.always_forward(o.amp) {
         // Every spring slips forward whenever it touches: f = B (skip the bands).
         return Ok(Combined {
             ratio: Ratio { mu_ratio: 1.0, reduction: 0.0 },

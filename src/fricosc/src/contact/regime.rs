@@ -5,7 +5,7 @@
 //! The flat punch is one spring, so its regime is that spring's. A curved
 //! contact always has springs at its edge that lose contact (those whose
 //! profile lies between `u0 - du` and `u0 + du`), so its regime says how much of
-//! the load they carry ([`jumping_share`]): `mixed` below `amp = 1` (the centre
+//! the load they carry ([`Shape::jumping_share`]): `mixed` below `amp = 1` (the centre
 //! stays in contact), `jumping` from `amp = 1` on (every spring loses contact).
 
 use crate::error::{check_nonneg, Result};
@@ -28,7 +28,7 @@ pub enum ContactRegime {
     /// Flat punch, `amp > 1`: it sticks from the moment of contact.
     JumpingStickFirst,
     /// Curved contact, `amp < 1`: the centre stays in contact, the springs at
-    /// the edge lose it (a share [`jumping_share`] of the load).
+    /// the edge lose it (a share [`Shape::jumping_share`] of the load).
     Mixed,
     /// Curved contact, `amp >= 1`: every spring loses contact in each period.
     Jumping,
@@ -50,17 +50,7 @@ impl ContactRegime {
     }
 }
 
-/// The regime of `shape` at `(vbar, amp)` (both finite and `>= 0`).
-///
-/// # Errors
-/// [`crate::Error::InvalidParameter`] for a negative or non-finite input.
-pub fn regime(shape: &Shape, vbar: f64, amp: f64) -> Result<ContactRegime> {
-    check_nonneg("vbar", vbar)?;
-    check_nonneg("amp", amp)?;
-    Ok(regime_of(shape.is_flat(), vbar, amp))
-}
-
-/// [`regime`] of checked inputs (finite, `>= 0`), for the flat punch or a curved contact.
+/// [`Shape::regime`] of checked inputs (finite, `>= 0`), for the flat punch or a curved contact.
 pub(crate) fn regime_of(flat: bool, vbar: f64, amp: f64) -> ContactRegime {
     if vbar == 0.0 {
         ContactRegime::AtRest
@@ -81,30 +71,42 @@ pub(crate) fn regime_of(flat: bool, vbar: f64, amp: f64) -> ContactRegime {
     }
 }
 
-/// The share of the period-mean normal force carried by springs that lose
-/// contact during the period, in `[0, 1]`: 0 or 1 for the flat punch (`amp <= 1`
-/// or not); for a curved contact `1 - P/<N>`, where `<N>` is
-/// [`crate::contact::Contact::mean_normal`] and `P` the mean force of the springs that
-/// never lose contact, those with `G(z) <= 1 - amp`. Each has the mean force
-/// `2 (1 - G(z))` (the oscillation averages out), so
-/// `P = 2 int_0^{z_p} (1 - G) dz = F(1 - amp) + 2 amp z_p`, with `F` the static
-/// force and `G(z_p) = 1 - amp` (found by bisection; `G` is nondecreasing).
-///
-/// # Errors
-/// [`crate::Error::InvalidParameter`] for a bad `amp` or one beyond a table's reach.
-pub fn jumping_share(shape: &Shape, amp: f64) -> Result<f64> {
-    check_nonneg("amp", amp)?;
-    if amp == 0.0 {
-        return Ok(0.0);
+impl Shape {
+    /// The regime of this shape at `(vbar, amp)` (both finite and `>= 0`).
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidParameter`] for a negative or non-finite input.
+    pub fn regime(&self, vbar: f64, amp: f64) -> Result<ContactRegime> {
+        check_nonneg("vbar", vbar)?;
+        check_nonneg("amp", amp)?;
+        Ok(regime_of(self.is_flat(), vbar, amp))
     }
-    if shape.is_flat() || amp >= 1.0 {
-        return Ok(if amp > 1.0 || (amp == 1.0 && !shape.is_flat()) { 1.0 } else { 0.0 });
+
+    /// The share of the period-mean normal force carried by springs that lose
+    /// contact during the period, in `[0, 1]`: 0 or 1 for the flat punch (`amp <= 1`
+    /// or not); for a curved contact `1 - P/<N>`, where `<N>` is
+    /// [`crate::contact::Contact::mean_normal`] and `P` the mean force of the springs that
+    /// never lose contact, those with `G(z) <= 1 - amp`. Each has the mean force
+    /// `2 (1 - G(z))` (the oscillation averages out), so
+    /// `P = 2 int_0^{z_p} (1 - G) dz = F(1 - amp) + 2 amp z_p`, with `F` the static
+    /// force and `G(z_p) = 1 - amp` (found by bisection; `G` is nondecreasing).
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidParameter`] for a bad `amp` or one beyond a table's reach.
+    pub fn jumping_share(&self, amp: f64) -> Result<f64> {
+        check_nonneg("amp", amp)?;
+        if amp == 0.0 {
+            return Ok(0.0);
+        }
+        if self.is_flat() || amp >= 1.0 {
+            return Ok(if amp > 1.0 || (amp == 1.0 && !self.is_flat()) { 1.0 } else { 0.0 });
+        }
+        let c = self.contact();
+        let mean = c.mean_normal(amp)?;
+        let level = 1.0 - amp;
+        // G(0) = 0 <= level < 1 = G(1): the bracket holds the root.
+        let z = crate::numerics::root::bracketed(|z| c.equivalent_profile(z) - level, 0.0, 1.0, 4.0 * f64::EPSILON).x;
+        let permanent = c.static_force(level) + 2.0 * amp * z;
+        Ok((1.0 - permanent / mean).clamp(0.0, 1.0))
     }
-    let c = shape.contact();
-    let mean = c.mean_normal(amp)?;
-    let level = 1.0 - amp;
-    // G(0) = 0 <= level < 1 = G(1): the bracket holds the root.
-    let z = crate::numerics::root::bracketed(|z| c.equivalent_profile(z) - level, 0.0, 1.0, 4.0 * f64::EPSILON).x;
-    let permanent = c.static_force(level) + 2.0 * amp * z;
-    Ok((1.0 - permanent / mean).clamp(0.0, 1.0))
 }

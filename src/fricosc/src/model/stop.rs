@@ -202,13 +202,15 @@ fn amplitude(t: f64, phase: f64, k: f64) -> (f64, f64) {
     (x.hypot(y), y.atan2(x))
 }
 
-/// Whether every spring, whatever its level `c`, slips forward whenever it
-/// touches: `h = X' - B' = vhat + T cos(tau + phase) - amp sin tau` never
-/// falls below 0, i.e. `vhat >= R`, `R` the amplitude of its oscillating part.
-/// Then `f = B` all the time and `mu_macro/mu0 = 1` for every contact.
-#[must_use]
-pub fn always_forward(amp: f64, d: Drive) -> bool {
-    d.vhat >= amplitude(d.t, d.phase, -amp).0
+impl Drive {
+    /// Whether every spring, whatever its level `c`, slips forward whenever it
+    /// touches: `h = X' - B' = vhat + T cos(tau + phase) - amp sin tau` never
+    /// falls below 0, i.e. `vhat >= R`, `R` the amplitude of its oscillating part.
+    /// Then `f = B` all the time and `mu_macro/mu0 = 1` for every contact.
+    #[must_use]
+    pub fn always_forward(self, amp: f64) -> bool {
+        self.vhat >= amplitude(self.t, self.phase, -amp).0
+    }
 }
 
 /// The steady state of the spring with bound `b` under drive `d` (inputs
@@ -413,27 +415,29 @@ fn phase_integrals(b: Bound, d: Drive, kind: StopKind, (a, e): (f64, f64), f0: f
     }
 }
 
-/// The force at phase `tau` (any real; reduced to the period) in the steady
-/// state, within its bound `[-B, B]`.
-#[must_use]
-pub fn force_at(s: &StopSpring, b: Bound, d: Drive, tau: f64) -> f64 {
-    if s.contact == Touch::Never {
-        return 0.0;
-    }
-    let (lo, _) = s.window;
-    let t = lo + (tau - lo).rem_euclid(TAU);
-    for p in &s.phases {
-        if t >= p.start && t <= p.end {
-            return match p.kind {
-                StopKind::Forward => b.at(t).max(0.0),
-                StopKind::Backward => -b.at(t).max(0.0),
-                // |f| <= B: at the stick's end the two differ by rounding only.
-                StopKind::Stick => {
-                    let bound = b.at(t).max(0.0);
-                    (p.force + d.dx(p.start, t)).clamp(-bound, bound)
-                }
-            };
+impl StopSpring {
+    /// The force at phase `tau` (any real; reduced to the period) in the steady
+    /// state (bound `b`, drive `d`), within its bound `[-B, B]`.
+    #[must_use]
+    pub fn force_at(&self, b: Bound, d: Drive, tau: f64) -> f64 {
+        if self.contact == Touch::Never {
+            return 0.0;
         }
+        let (lo, _) = self.window;
+        let t = lo + (tau - lo).rem_euclid(TAU);
+        for p in &self.phases {
+            if t >= p.start && t <= p.end {
+                return match p.kind {
+                    StopKind::Forward => b.at(t).max(0.0),
+                    StopKind::Backward => -b.at(t).max(0.0),
+                    // |f| <= B: at the stick's end the two differ by rounding only.
+                    StopKind::Stick => {
+                        let bound = b.at(t).max(0.0);
+                        (p.force + d.dx(p.start, t)).clamp(-bound, bound)
+                    }
+                };
+            }
+        }
+        0.0
     }
-    0.0
 }

@@ -21,7 +21,7 @@
 
 mod solve;
 
-pub use solve::{solve_with, velocity_count};
+pub use solve::solve_with;
 
 use crate::error::{Error, Result};
 use crate::shape::{Shape, MAX_EXPONENT, MIN_EXPONENT};
@@ -257,7 +257,7 @@ pub struct Row {
     pub mean_friction_force_n: f64,
     /// Mean normal force (N).
     pub mean_normal_force_n: f64,
-    /// What the springs do ([`crate::report::regime`]: `sliding` at or above the
+    /// What the springs do ([`crate::Shape::regime`]: `sliding` at or above the
     /// critical velocity; below it `permanent_contact`, `jumping_slip_first` or
     /// `jumping_stick_first` for the flat punch, `mixed` or `jumping` for a curved contact).
     pub regime: crate::report::ContactRegime,

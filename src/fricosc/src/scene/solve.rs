@@ -255,21 +255,23 @@ fn contact(c: &Checked, u0: f64, du: f64) -> Result<(f64, f64, f64)> {
     Ok((xc, kz, kz * u0 * (m / 2.0)))
 }
 
-/// Number of rows of a scene (velocities times amplitudes, for progress reporting), if it parses.
-#[must_use]
-pub fn velocity_count(s: &Scene) -> usize {
-    let v = match (&s.velocity.values_m_per_s, &s.velocity.sweep) {
-        (Some(v), _) => v.len(),
-        (None, Some(sw)) => sw.count,
-        _ => 0,
-    };
-    let count = |a: &Values| match a {
-        Values::One(_) => 1,
-        Values::List(l) => l.len(),
-        Values::Sweep(sw) => sw.count,
-    };
-    let o = &s.oscillation;
-    v.saturating_mul(o.amplitude_m.as_ref().or(o.amplitude_fraction.as_ref()).map_or(1, count))
+impl Scene {
+    /// Number of rows of the scene (velocities times amplitudes, for progress reporting), if it parses.
+    #[must_use]
+    pub fn rows(&self) -> usize {
+        let v = match (&self.velocity.values_m_per_s, &self.velocity.sweep) {
+            (Some(v), _) => v.len(),
+            (None, Some(sw)) => sw.count,
+            _ => 0,
+        };
+        let count = |a: &Values| match a {
+            Values::One(_) => 1,
+            Values::List(l) => l.len(),
+            Values::Sweep(sw) => sw.count,
+        };
+        let o = &self.oscillation;
+        v.saturating_mul(o.amplitude_m.as_ref().or(o.amplitude_fraction.as_ref()).map_or(1, count))
+    }
 }
 
 /// Solve a scene, one answer per amplitude (in the order given); `source` is

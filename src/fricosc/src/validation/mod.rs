@@ -125,10 +125,10 @@ pub struct Row {
     pub error: f64,
     /// `error / exact` (absent where the exact value is 0).
     pub relative_error: Option<f64>,
-    /// What the contact's springs do there ([`crate::report::regime`]).
+    /// What the contact's springs do there ([`crate::Shape::regime`]).
     pub regime: ContactRegime,
     /// The share of the mean normal force carried by springs that lose contact
-    /// ([`crate::contact::regime::jumping_share`]).
+    /// ([`crate::Shape::jumping_share`]).
     pub jumping_share: f64,
     /// The stepping peer's error at the same point and resolution (with a peer).
     pub peer_error: Option<f64>,
@@ -416,8 +416,7 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result
     let mut amps: Vec<f64> = rows.iter().map(|r| r.1).collect();
     amps.sort_by(f64::total_cmp);
     amps.dedup();
-    let shares: Vec<f64> =
-        amps.iter().map(|&a| crate::contact::regime::jumping_share(shape, a)).collect::<Result<Vec<f64>>>()?;
+    let shares: Vec<f64> = amps.iter().map(|&a| shape.jumping_share(a)).collect::<Result<Vec<f64>>>()?;
     let share_of = |a: f64| shares[amps.partition_point(|&x| x < a)];
     let mut out = Vec::with_capacity(rows.len());
     for (i, (&(vbar, amp, mu_ratio), e)) in rows.iter().zip(exact).enumerate() {
@@ -432,7 +431,7 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result
             exact,
             error,
             relative_error: (exact != 0.0).then(|| error / exact),
-            regime: crate::contact::regime::regime(shape, vbar, amp)?,
+            regime: shape.regime(vbar, amp)?,
             jumping_share: share_of(amp),
             peer_error,
         });

@@ -33,7 +33,7 @@ pub struct SeriesRow {
     pub vbar: f64,
     /// Amplitude.
     pub amp: f64,
-    /// What the contact's springs do there ([`crate::report::regime`]).
+    /// What the contact's springs do there ([`crate::Shape::regime`]).
     pub regime: ContactRegime,
     /// The share of the mean normal force carried by springs that lose contact.
     pub jumping_share: f64,
@@ -254,8 +254,8 @@ pub fn convergence(
         rows.push(SeriesRow {
             vbar,
             amp,
-            regime: crate::contact::regime::regime(shape, vbar, amp)?,
-            jumping_share: crate::contact::regime::jumping_share(shape, amp)?,
+            regime: shape.regime(vbar, amp)?,
+            jumping_share: shape.jumping_share(amp)?,
             status,
             exact,
             values,

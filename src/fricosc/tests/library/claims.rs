@@ -7,7 +7,7 @@
 //! gives.
 // Reference values keep their published digits.
 #![allow(clippy::excessive_precision)]
-use fricosc::seed::{self, claims, Claim, Verdict};
+use fricosc::seed::{claims, Approximation, Claim, Verdict};
 use std::f64::consts::PI;
 
 fn get<'a>(cs: &'a [Claim], prefix: &str) -> &'a Claim {
@@ -53,7 +53,7 @@ fn eq_11_error_matches_a_converged_time_stepper() {
     .unwrap()
     .ratio
     .mu_ratio;
-    let err = (seed::eq11(v, a) - stepped).abs() / a;
+    let err = (Approximation::Eq11 { amp: a }.value(v) - stepped).abs() / a;
     assert!((m(c, "max_error_over_amp") - err).abs() < 1e-6, "{} vs {err}", m(c, "max_error_over_amp"));
     // Off by up to 0.0144 amp near vbar 0.1 (verified against the converged stepper above).
     assert!((0.09..0.12).contains(&v) && (0.0142..0.0146).contains(&err));
@@ -65,7 +65,7 @@ fn eq_12_errors_match_the_40_digit_values() {
     let cs = claims();
     let c = get(&cs, "eq. 12");
     for (name, v) in [("error_1e-3", 1e-3), ("error_1e-4", 1e-4)] {
-        let exact = (seed::eq12(v, 1.0) - mpmath_mu(v, 1.0)).abs();
+        let exact = (Approximation::Eq12 { amp: 1.0 }.value(v) - mpmath_mu(v, 1.0)).abs();
         assert!((m(c, name) - exact).abs() < 2e-16, "{name}: {} vs {exact}", m(c, name));
     }
     assert!(m(c, "order") > 2.0);
@@ -79,14 +79,14 @@ fn eq_21_and_22_slopes_match_40_digit_values_and_the_corrected_closed_form() {
         let exact = mpmath_mu(1e-10, a) / 1e-10;
         assert!((m(c, name) / exact - 1.0).abs() < 1e-13, "{name}");
         // The corrected eq. 21 is the vbar -> 0 limit: at vbar = 1e-10 within 1e-9 relative.
-        assert!((exact / seed::eq21_slope(a) - 1.0).abs() < 1e-9, "{name}");
+        assert!((exact / Approximation::Eq21Slope.value(a) - 1.0).abs() < 1e-9, "{name}");
     }
     // corrected / printed = pi exactly (the two closed forms).
     assert!((m(c, "ratio_to_printed") - PI).abs() < 1e-8);
     assert_eq!(c.verdict, Verdict::Misprint);
     let c = get(&cs, "eq. 22");
-    assert!((m(c, "slope_amp_1e8") / seed::eq21_slope(1e8) - 1.0).abs() < 1e-8);
-    assert!((seed::eq21_slope(1e8) - PI * PI / 4.0).abs() < 1e-6);
+    assert!((m(c, "slope_amp_1e8") / Approximation::Eq21Slope.value(1e8) - 1.0).abs() < 1e-8);
+    assert!((Approximation::Eq21Slope.value(1e8) - PI * PI / 4.0).abs() < 1e-6);
     assert_eq!(c.verdict, Verdict::Misprint);
 }
 
@@ -98,7 +98,7 @@ fn the_slope_drop_matches_the_corrected_closed_form() {
     assert!((m(c, "drop_limit") - (1.0 - PI / 4.0)).abs() < 1e-5, "{}", m(c, "drop_limit"));
     assert!((m(c, "slope_amp_1") - PI).abs() < 1e-4);
     // The deepest slope from the corrected eq. 21 on a fine grid of amplitudes.
-    let min = (1..=40000).map(|k| seed::eq21_slope(1.0 + k as f64 * 1e-4)).fold(f64::INFINITY, f64::min);
+    let min = (1..=40000).map(|k| Approximation::Eq21Slope.value(1.0 + k as f64 * 1e-4)).fold(f64::INFINITY, f64::min);
     assert!((m(c, "min_slope") - min).abs() < 1e-4, "{} vs {min}", m(c, "min_slope"));
     assert_eq!(c.verdict, Verdict::Overstated);
 }
@@ -112,7 +112,9 @@ fn eq_28_difference_matches_a_fine_grid_search() {
         let ms = i as f64 / 200.0;
         for j in 0..=4000 {
             let v = j as f64 / 4000.0;
-            worst = worst.max((seed::eq28(v, ms) - seed::eq27(v, ms)).abs());
+            worst = worst.max(
+                (Approximation::Eq28 { mu_static: ms }.value(v) - Approximation::Eq27 { mu_static: ms }.value(v)).abs(),
+            );
         }
     }
     let got = m(c, "max_difference");

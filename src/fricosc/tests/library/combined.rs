@@ -445,11 +445,7 @@ fn always_forward_is_where_the_drive_outruns_the_bound() {
                     }
                     let d = Drive { vhat, t, phase };
                     let expect = vhat + min_osc > 0.0;
-                    assert_eq!(
-                        fricosc::spring::always_forward(amp, d),
-                        expect,
-                        "amp {amp} T {t} phase {phase} vhat {vhat}"
-                    );
+                    assert_eq!(d.always_forward(amp), expect, "amp {amp} T {t} phase {phase} vhat {vhat}");
                     checked += 1;
                     if expect {
                         forward += 1;
@@ -474,7 +470,7 @@ fn a_spring_below_the_trough_never_touches() {
         assert_eq!(s.contact, fricosc::spring::Touch::Never, "c {c} amp {amp}");
         assert!(s.phases.is_empty());
         assert_eq!((s.mean_force, s.mean_bound, s.mean_deficit), (0.0, 0.0, 0.0));
-        assert_eq!(fricosc::spring::force_at(&s, Bound { c, amp }, d, 2.0), 0.0);
+        assert_eq!(s.force_at(Bound { c, amp }, d, 2.0), 0.0);
     }
     // Just above the trough it touches, briefly.
     assert_eq!(solve(Bound { c: -0.999, amp: 1.0 }, d).contact, fricosc::spring::Touch::Jumping);
@@ -490,7 +486,7 @@ fn a_spring_below_the_trough_never_touches() {
 /// first check, a wrong slip the third, a wrong phase integral the last.
 #[test]
 fn every_spring_obeys_coulombs_law_at_every_instant() {
-    use fricosc::spring::{force_at, Touch};
+    use fricosc::spring::Touch;
     const GRID: usize = 4000;
     let mut cases = 0;
     for c in [-0.5, 0.2, 0.9, 1.0, 1.7] {
@@ -511,14 +507,14 @@ fn every_spring_obeys_coulombs_law_at_every_instant() {
                         let mut sum = 0.0;
                         for i in 0..=GRID {
                             let tau = lo + (hi - lo) * i as f64 / GRID as f64;
-                            let f = force_at(&s, b, d, tau);
+                            let f = s.force_at(b, d, tau);
                             // Within the rounding of B itself (`force_at` reduces tau to the window).
                             let slack = 4.0 * f64::EPSILON * (c.abs() + amp);
                             assert!(f.abs() <= bound(tau) + slack, "{what}: f {f} beyond B {} at {tau}", bound(tau));
                             if i % 97 == 1 {
                                 // Any phase is reduced to the period.
                                 for k in [-2.0, 3.0] {
-                                    let g = force_at(&s, b, d, tau + k * TAU);
+                                    let g = s.force_at(b, d, tau + k * TAU);
                                     assert!((g - f).abs() < 1e-9, "{what}: {g} at {tau} + {k} periods, {f} at {tau}");
                                 }
                             }
@@ -527,12 +523,12 @@ fn every_spring_obeys_coulombs_law_at_every_instant() {
                         let mean = sum * (hi - lo) / GRID as f64 / TAU;
                         assert!((mean - s.mean_force).abs() < 1e-5, "{what}: mean {} vs grid {mean}", s.mean_force);
                         for w in s.phases.windows(2) {
-                            let end = force_at(&s, b, d, w[1].start - 1e-13);
+                            let end = s.force_at(b, d, w[1].start - 1e-13);
                             assert!((end - w[1].force).abs() < 1e-9, "{what}: {end} then {}", w[1].force);
                         }
                         if s.contact == Touch::Permanent {
                             let (first, last) = (s.phases[0], s.phases[s.phases.len() - 1]);
-                            let end = force_at(&s, b, d, last.end - 1e-13);
+                            let end = s.force_at(b, d, last.end - 1e-13);
                             assert!((end - first.force).abs() < 1e-9, "{what}: not periodic: {end} vs {}", first.force);
                         }
                         for p in s.phases.iter().filter(|p| p.kind != StopKind::Stick) {

@@ -143,11 +143,10 @@ fn histories_work_for_every_contact() {
 /// contact: 1 from `amp = 1` on.
 #[test]
 fn jumping_share_matches_closed_forms() {
-    use fricosc::report::jumping_share;
     let (x, w) = crate::common::quad::gauss_legendre(64);
     for a in [1e-6, 0.01, 0.3, 0.5, 0.9, 0.999] {
         let cone = 1.0 - (1.0 - a * a) / (1.0 + 0.5 * a * a);
-        let got = jumping_share(&Shape::cone(), a).unwrap();
+        let got = Shape::cone().jumping_share(a).unwrap();
         assert!((got - cone).abs() <= 4e-15, "cone {a}: {got} vs {cone}");
         let mean: f64 = x
             .iter()
@@ -159,12 +158,12 @@ fn jumping_share_matches_closed_forms() {
             .sum();
         let zp = (1.0 - a).sqrt();
         let para = 1.0 - 2.0 * (zp - zp * zp * zp / 3.0) / mean;
-        let got = jumping_share(&Shape::parabolic(), a).unwrap();
+        let got = Shape::parabolic().jumping_share(a).unwrap();
         assert!((got - para).abs() <= 1e-13 * para.max(1e-3), "parabolic {a}: {got} vs {para}");
     }
     for (a, flat, curved) in [(0.0, 0.0, 0.0), (0.5, 0.0, 0.156), (1.0, 0.0, 1.0), (1.5, 1.0, 1.0)] {
-        assert_eq!(jumping_share(&Shape::flat(), a).unwrap(), flat);
-        let c = jumping_share(&Shape::parabolic(), a).unwrap();
+        assert_eq!(Shape::flat().jumping_share(a).unwrap(), flat);
+        let c = Shape::parabolic().jumping_share(a).unwrap();
         assert!((c - curved).abs() < 1e-3, "{a}: {c}");
     }
 }
@@ -175,19 +174,18 @@ fn jumping_share_matches_closed_forms() {
 /// jumping from it on; at rest at vbar = 0, sliding from vbar = 1 or at amp = 0.
 #[test]
 fn regimes_of_points() {
-    use fricosc::report::regime;
     use fricosc::report::ContactRegime as R;
     let (flat, para) = (Shape::flat(), Shape::parabolic());
-    assert_eq!(regime(&flat, 0.0, 0.5).unwrap(), R::AtRest);
-    assert_eq!(regime(&flat, 1.0, 0.5).unwrap(), R::Sliding);
-    assert_eq!(regime(&flat, 0.5, 0.0).unwrap(), R::Sliding);
-    assert_eq!(regime(&flat, 0.5, 1.0).unwrap(), R::PermanentContact);
+    assert_eq!(flat.regime(0.0, 0.5).unwrap(), R::AtRest);
+    assert_eq!(flat.regime(1.0, 0.5).unwrap(), R::Sliding);
+    assert_eq!(flat.regime(0.5, 0.0).unwrap(), R::Sliding);
+    assert_eq!(flat.regime(0.5, 1.0).unwrap(), R::PermanentContact);
     // 1/amp against sqrt(1 - 0.6^2) = 0.8: amp 1.2 slips first, 1.3 sticks first.
-    assert_eq!(regime(&flat, 0.6, 1.2).unwrap(), R::JumpingSlipFirst);
-    assert_eq!(regime(&flat, 0.6, 1.3).unwrap(), R::JumpingStickFirst);
-    assert_eq!(regime(&para, 0.6, 0.999).unwrap(), R::Mixed);
-    assert_eq!(regime(&para, 0.6, 1.0).unwrap(), R::Jumping);
-    assert!(regime(&para, -0.1, 0.5).is_err() && regime(&para, 0.1, f64::NAN).is_err());
+    assert_eq!(flat.regime(0.6, 1.2).unwrap(), R::JumpingSlipFirst);
+    assert_eq!(flat.regime(0.6, 1.3).unwrap(), R::JumpingStickFirst);
+    assert_eq!(para.regime(0.6, 0.999).unwrap(), R::Mixed);
+    assert_eq!(para.regime(0.6, 1.0).unwrap(), R::Jumping);
+    assert!(para.regime(-0.1, 0.5).is_err() && para.regime(0.1, f64::NAN).is_err());
 }
 
 /// A shape through the library's `Shape` API alone (what the Python package and
@@ -293,12 +291,12 @@ fn regime_names_are_their_serialised_names() {
 fn jumping_shares_at_their_limits() {
     let (flat, par) = (Shape::parse("flat").unwrap(), Shape::parse("parabolic").unwrap());
     for (amp, want) in [(0.0, 0.0), (0.5, 0.0), (1.0, 0.0), (1.5, 1.0)] {
-        assert_eq!(fricosc::report::jumping_share(&flat, amp).unwrap(), want, "flat {amp}");
+        assert_eq!(flat.jumping_share(amp).unwrap(), want, "flat {amp}");
     }
     for (amp, want) in [(0.0, 0.0), (1.0, 1.0), (1.5, 1.0)] {
-        assert_eq!(fricosc::report::jumping_share(&par, amp).unwrap(), want, "parabolic {amp}");
+        assert_eq!(par.jumping_share(amp).unwrap(), want, "parabolic {amp}");
     }
-    let shares: Vec<f64> = [0.1, 0.5, 0.9].iter().map(|&a| fricosc::report::jumping_share(&par, a).unwrap()).collect();
+    let shares: Vec<f64> = [0.1, 0.5, 0.9].iter().map(|&a| par.jumping_share(a).unwrap()).collect();
     assert!(shares[0] > 0.0 && shares[2] < 1.0 && shares.windows(2).all(|w| w[0] < w[1]), "{shares:?}");
 }
 

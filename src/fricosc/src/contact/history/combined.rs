@@ -11,7 +11,7 @@ use crate::combined::{report, Oscillation};
 use crate::conditions::Conditions;
 use crate::error::Result;
 use crate::model::spring::EventKind;
-use crate::stop::{force_at, solve, Bound, StopSpring};
+use crate::stop::{solve, Bound, StopSpring};
 use std::f64::consts::TAU;
 
 /// A stop event's kind as a history's event (`forward` is the seed's `slip`).
@@ -43,7 +43,7 @@ pub(super) fn flat_samples(c: &Conditions, periods: usize, mut taus: Vec<(f64, O
             // The force on its bound is the bound, to the bit (the solver reads
             // the bound at tau reduced to the period, a rounding apart).
             let normal = (1.0 - o.amp * tau.cos()).max(0.0);
-            let tangential = force_at(&sp, b, d, tau).clamp(-normal, normal);
+            let tangential = sp.force_at(b, d, tau).clamp(-normal, normal);
             Sample { tau, normal, tangential, event, springs: vec![] }
         })
         .collect()
@@ -78,9 +78,9 @@ pub(super) fn foundation_samples(
     let f0 = contact.static_force(1.0);
     let scale = 2.0 * dz / f0;
     let rows = crate::numerics::par::map(taus, |&(tau, _)| {
-        let tangential = scale * springs.iter().map(|(b, s)| force_at(s, *b, d, tau)).sum::<f64>();
+        let tangential = scale * springs.iter().map(|(b, s)| s.force_at(*b, d, tau)).sum::<f64>();
         let springs =
-            picked.iter().map(|(b, s)| [(b.c - b.amp * tau.cos()).max(0.0), force_at(s, *b, d, tau)]).collect();
+            picked.iter().map(|(b, s)| [(b.c - b.amp * tau.cos()).max(0.0), s.force_at(*b, d, tau)]).collect();
         Sample { tau, normal: contact.static_force(1.0 - o.amp * tau.cos()) / f0, tangential, event: None, springs }
     });
     Ok(rows)

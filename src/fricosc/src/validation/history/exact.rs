@@ -4,7 +4,7 @@ use super::HISTORY_REFERENCE_SPRINGS;
 use crate::error::Result;
 use crate::model::spring::{Event, Spring};
 use crate::shape::Shape;
-use crate::stop::{force_at, solve, Bound, Drive, StopSpring};
+use crate::stop::{solve, Bound, Drive, StopSpring};
 
 /// The exact forces of `shape` under `c` in units of `F0` (module docs), from
 /// [`crate::history::history`]'s springs: the flat punch's in closed form; a
@@ -72,7 +72,7 @@ impl Exact {
             Springs::Seed(sp) => {
                 self.scale * sp.iter().map(|s| crate::contact::history::spring_force(s, tau)).sum::<f64>()
             }
-            Springs::Stop(sp, d) => self.scale * sp.iter().map(|(b, s)| force_at(s, *b, *d, tau)).sum::<f64>(),
+            Springs::Stop(sp, d) => self.scale * sp.iter().map(|(b, s)| s.force_at(*b, *d, tau)).sum::<f64>(),
         }
     }
 
