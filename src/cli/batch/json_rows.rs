@@ -95,29 +95,38 @@ impl<'de> Visitor<'de> for Fields {
         // A field read twice would be ambiguous: refused (a field already set).
         let twice = |key: &str| de::Error::custom(format!("duplicate key '{key}'"));
         while let Some(Text(key)) = map.next_key::<Text<'de>>()? {
-            let slot = match key.as_ref() {
-                "vbar" => Some(0),
-                "amp" => Some(1),
-                "vhat" => Some(2),
-                "tangential_amp" => Some(3),
-                "phase" => Some(4),
-                "system_stiffness" => Some(5),
-                "frequency_ratio" => Some(6),
-                "damping" => Some(7),
-                _ => None,
+            // The fields rows give most often first: one match a key.
+            let k = match key.as_ref() {
+                "shape" if out.shape.is_none() => {
+                    out.shape = Some(map.next_value_seed(StringOf("shape"))?);
+                    continue;
+                }
+                "vbar" => 0,
+                "amp" => 1,
+                "vhat" => 2,
+                "tangential_amp" => 3,
+                "phase" => 4,
+                "system_stiffness" => 5,
+                "frequency_ratio" => 6,
+                "damping" => 7,
+                "mu_ratio" | "reduction" => {
+                    let r = usize::from(key.as_ref() == "reduction");
+                    if out.results[r].is_some() {
+                        return Err(twice(&key));
+                    }
+                    out.results[r] = Some(map.next_value::<&'de RawValue>()?.get());
+                    continue;
+                }
+                "shape" => return Err(twice(&key)),
+                _ => {
+                    map.next_value::<de::IgnoredAny>()?;
+                    continue;
+                }
             };
-            match (key.as_ref(), slot) {
-                (name, Some(k)) if out.inputs.0[k].is_nan() => out.inputs.0[k] = map.next_value_seed(NumberOf(name))?,
-                ("shape", _) if out.shape.is_none() => out.shape = Some(map.next_value_seed(StringOf("shape"))?),
-                ("mu_ratio", _) if out.results[0].is_none() => {
-                    out.results[0] = Some(map.next_value::<&'de RawValue>()?.get());
-                }
-                ("reduction", _) if out.results[1].is_none() => {
-                    out.results[1] = Some(map.next_value::<&'de RawValue>()?.get());
-                }
-                ("shape" | "mu_ratio" | "reduction", _) | (_, Some(_)) => return Err(twice(&key)),
-                _ => map.next_value::<de::IgnoredAny>().map(drop)?,
+            if !out.inputs.0[k].is_nan() {
+                return Err(twice(&key));
             }
+            out.inputs.0[k] = map.next_value_seed(NumberOf(Inputs::NAMES[k]))?;
         }
         Ok(out)
     }
