@@ -1,4 +1,4 @@
-//! Gauss-Jacobi rules by Golub-Welsch (eigenvalues of the Jacobi matrix, nalgebra),
+//! Gauss-Jacobi rules by Golub-Welsch (eigenvalues of the Jacobi matrix),
 //! cached per thread: at most [`MAX_CACHED`] rules, the least recently used
 //! evicted (a batch of many power-law exponents would otherwise keep a rule per
 //! exponent and order for ever).
@@ -10,7 +10,6 @@
 //! `b_k = sqrt(4 k^2 (k + beta)^2 / ((2k + beta)^2 (2k + beta + 1)(2k + beta - 1)))`;
 //! the weights sum to `mu0 = 2^(beta + 1) / (beta + 1)`.
 
-use nalgebra::DMatrix;
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
@@ -39,7 +38,7 @@ pub(crate) struct Rule {
 
 /// Compute the `m`-point rule for weight `(1 + x)^beta`, `beta > -1`, `m >= 1`
 /// (Golub-Welsch, the weights by Christoffel):
-/// - the nodes are the Jacobi matrix's eigenvalues (nalgebra, without
+/// - the nodes are the Jacobi matrix's eigenvalues (implicit QL, without
 ///   eigenvectors, which the weights below do not need), each polished by two Newton steps on `p_m` (the recurrence below): from
 ///   up to 18 eps off (order 256) to within 2 (correctly rounded but where
 ///   beta nears -1);
@@ -114,30 +113,21 @@ fn normalize(weights: &mut [f64], tail: &mut [[f64; TAIL_ROWS]], mu0: f64) {
     }
 }
 
-/// The eigenvalues of the Jacobi matrix (nalgebra's symmetric eigensolver,
-/// whose Householder reduction of the dense matrix costs `O(m^3)`). For
+/// The eigenvalues of the Jacobi matrix ([`tridiagonal_eigenvalues`]). For
 /// Gauss-Legendre (`beta = 0`, even `m`) the diagonal is zero and the nodes
 /// come in pairs `+-x`: their squares are the eigenvalues of `J^2` on the
 /// even unit vectors `e_0, e_2, ...`, a tridiagonal matrix of half the size
 /// (`(J^2)_(2i,2i) = b_2i^2 + b_(2i+1)^2`, `(J^2)_(2i,2i+2) = b_(2i+1)
-/// b_(2i+2)`, with `b_(k+1) = J_(k,k+1)`), an eighth of the work.
+/// b_(2i+2)`, with `b_(k+1) = J_(k,k+1)`).
 /// The square roots lose accuracy at the smallest nodes (about `eps/x`): the
 /// caller's Newton steps restore it.
 fn eigenvalues(m: usize, beta: f64, diag: &[f64], off: &[f64]) -> Vec<f64> {
     if beta == 0.0 && m.is_multiple_of(2) {
         let h = m / 2;
-        let sq = DMatrix::<f64>::from_fn(h, h, |r, c| {
-            let (i, k) = (r.min(c), r.max(c));
-            if r == c {
-                let below = if i > 0 { off[2 * i - 1] } else { 0.0 };
-                below * below + off[2 * i] * off[2 * i]
-            } else if k == i + 1 {
-                off[2 * i] * off[2 * i + 1]
-            } else {
-                0.0
-            }
-        });
-        sq.symmetric_eigenvalues()
+        let below = |i: usize| if i > 0 { off[2 * i - 1] } else { 0.0 };
+        let d = (0..h).map(|i| below(i) * below(i) + off[2 * i] * off[2 * i]).collect();
+        let e = (0..h - 1).map(|i| off[2 * i] * off[2 * i + 1]).collect();
+        tridiagonal_eigenvalues(d, e)
             .iter()
             .flat_map(|&l| {
                 let x = l.max(0.0).sqrt();
@@ -145,13 +135,65 @@ fn eigenvalues(m: usize, beta: f64, diag: &[f64], off: &[f64]) -> Vec<f64> {
             })
             .collect()
     } else {
-        let j = DMatrix::<f64>::from_fn(m, m, |r, c| match r.abs_diff(c) {
-            0 => diag[r],
-            1 => off[r.min(c)],
-            _ => 0.0,
-        });
-        j.symmetric_eigenvalues().iter().copied().collect()
+        tridiagonal_eigenvalues(diag.to_vec(), off[..m - 1].to_vec())
     }
+}
+
+/// The eigenvalues of the symmetric tridiagonal matrix with diagonal `d` and
+/// off-diagonal `e` (`e[i]` couples `i` and `i + 1`), in no order: the
+/// implicit QL method with Wilkinson's shift, without eigenvectors (EISPACK's
+/// `tql1`; Golub and Van Loan, sec. 8.3). Each sweep chases the shift's
+/// rotation from the bottom of the unreduced block `l..=m` to its top, where
+/// `e[m]` is negligible against its neighbours (`|e[m]| + (|d[m]| + |d[m+1]|)`
+/// rounds to the latter), and deflates `d[l]` once `e[l]` is. `O(m^2)`
+/// operations: the dense reduction nalgebra's solver begins with costs `O(m^3)`.
+fn tridiagonal_eigenvalues(mut d: Vec<f64>, mut e: Vec<f64>) -> Vec<f64> {
+    let n = d.len();
+    e.push(0.0);
+    for l in 0..n {
+        // Quadratic convergence: a few sweeps an eigenvalue; the bound guards a NaN.
+        for _ in 0..64 {
+            let m = (l..n - 1)
+                .find(|&m| {
+                    let dd = d[m].abs() + d[m + 1].abs();
+                    e[m].abs() + dd == dd
+                })
+                .unwrap_or(n - 1);
+            if m == l {
+                break;
+            }
+            // The shift: the eigenvalue of the leading 2 x 2 block nearer d[l].
+            let g = (d[l + 1] - d[l]) / (2.0 * e[l]);
+            let r = g.hypot(1.0);
+            let mut g = d[m] - d[l] + e[l] / (g + r.copysign(g));
+            let (mut s, mut c, mut p) = (1.0, 1.0, 0.0);
+            let mut deflated = false;
+            for i in (l..m).rev() {
+                let (f, b) = (s * e[i], c * e[i]);
+                let r = f.hypot(g);
+                e[i + 1] = r;
+                if r == 0.0 {
+                    // Underflow: the block splits at i + 1.
+                    d[i + 1] -= p;
+                    e[m] = 0.0;
+                    deflated = true;
+                    break;
+                }
+                (s, c) = (f / r, g / r);
+                let g1 = d[i + 1] - p;
+                let r = (d[i] - g1) * s + 2.0 * c * b;
+                p = s * r;
+                d[i + 1] = g1 + p;
+                g = c * r - b;
+            }
+            if !deflated {
+                d[l] -= p;
+                e[l] = g;
+                e[m] = 0.0;
+            }
+        }
+    }
+    d
 }
 
 /// The Jacobi matrix of the weight `(1 + x)^beta` (see the module's doc):
@@ -508,3 +550,4 @@ mod tests {
         }
     }
 }
+
