@@ -5,7 +5,7 @@
 use super::{changed, digest, too_many, Inputs, Job, Open, Read, Shapes};
 use super::{CHUNK, MAX_LINE, MAX_ROWS, MAX_STREAM_ROWS};
 use crate::error::{Error, Result};
-use crate::json::{NumberOf, StringOf, Text};
+use crate::json::{NumberOf, StringOf};
 use fricosc::stepper::Stepping;
 use fricosc::Ratio;
 use rayon::prelude::*;
@@ -94,41 +94,66 @@ impl<'de> Visitor<'de> for Fields {
         let mut out = Picked { shape: None, inputs: Inputs::default(), results: [None, None] };
         // A field read twice would be ambiguous: refused (a field already set).
         let twice = |key: &str| de::Error::custom(format!("duplicate key '{key}'"));
-        while let Some(Text(key)) = map.next_key::<Text<'de>>()? {
-            // The fields rows give most often first: one match a key.
-            let k = match key.as_ref() {
-                "shape" if out.shape.is_none() => {
-                    out.shape = Some(map.next_value_seed(StringOf("shape"))?);
-                    continue;
+        while let Some(key) = map.next_key::<Key>()? {
+            match key {
+                Key::Shape if out.shape.is_none() => out.shape = Some(map.next_value_seed(StringOf("shape"))?),
+                Key::Input(k) if out.inputs.0[k].is_nan() => {
+                    out.inputs.0[k] = map.next_value_seed(NumberOf(Inputs::NAMES[k]))?;
                 }
-                "vbar" => 0,
-                "amp" => 1,
-                "vhat" => 2,
-                "tangential_amp" => 3,
-                "phase" => 4,
-                "system_stiffness" => 5,
-                "frequency_ratio" => 6,
-                "damping" => 7,
-                "mu_ratio" | "reduction" => {
-                    let r = usize::from(key.as_ref() == "reduction");
-                    if out.results[r].is_some() {
-                        return Err(twice(&key));
-                    }
+                Key::Result(r) if out.results[r].is_none() => {
                     out.results[r] = Some(map.next_value::<&'de RawValue>()?.get());
-                    continue;
                 }
-                "shape" => return Err(twice(&key)),
-                _ => {
-                    map.next_value::<de::IgnoredAny>()?;
-                    continue;
-                }
-            };
-            if !out.inputs.0[k].is_nan() {
-                return Err(twice(&key));
+                Key::Other => map.next_value::<de::IgnoredAny>().map(drop)?,
+                _ => return Err(twice(key.name())),
             }
-            out.inputs.0[k] = map.next_value_seed(NumberOf(Inputs::NAMES[k]))?;
         }
         Ok(out)
+    }
+}
+
+/// A row's field, by its key: the fields rows give most often first, one
+/// comparison of the key's text each.
+#[derive(Clone, Copy)]
+enum Key {
+    Shape,
+    /// One of [`Inputs::NAMES`].
+    Input(usize),
+    /// `mu_ratio` (0) or `reduction` (1).
+    Result(usize),
+    Other,
+}
+
+impl Key {
+    fn name(self) -> &'static str {
+        match self {
+            Key::Shape => "shape",
+            Key::Input(k) => Inputs::NAMES[k],
+            Key::Result(r) => ["mu_ratio", "reduction"][r],
+            Key::Other => "",
+        }
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for Key {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        struct V;
+        impl Visitor<'_> for V {
+            type Value = Key;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a field name")
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> std::result::Result<Key, E> {
+                Ok(match s {
+                    "shape" => Key::Shape,
+                    "vbar" => Key::Input(0),
+                    "amp" => Key::Input(1),
+                    "mu_ratio" => Key::Result(0),
+                    "reduction" => Key::Result(1),
+                    _ => Inputs::NAMES.iter().position(|n| *n == s).map_or(Key::Other, Key::Input),
+                })
+            }
+        }
+        d.deserialize_str(V)
     }
 }
 
