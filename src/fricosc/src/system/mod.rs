@@ -430,14 +430,22 @@ pub(crate) fn batch_mean(xs: &[f64], size: usize) -> Mean {
 fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<(SystemReport, Reduced)> {
     let residual = |s: &Reduced| map_k(ph, s, k).0 .1 - s.1;
     let mut jac = Matrix3::identity();
+    let mut last = f64::INFINITY;
     for _ in 0..12 {
         jac = jacobian(ph, &s, k);
         let r = residual(&s);
         let Some(step) = (jac - Matrix3::identity()).lu().solve(&(-r)) else { break };
         s.1 += step;
-        if step.iter().zip(s.1.iter()).all(|(d, x)| d.abs() <= 4.0 * f64::EPSILON * (1.0 + x.abs())) {
+        // Converged, or no longer converging: a step not below half the last
+        // is the map's own rounding (Newton's steps fall quadratically until
+        // then), where more iterations only move the state within it.
+        let size = step.amax();
+        if step.iter().zip(s.1.iter()).all(|(d, x)| d.abs() <= 4.0 * f64::EPSILON * (1.0 + x.abs()))
+            || size > 0.5 * last
+        {
             break;
         }
+        last = size;
     }
     let (end, int_f) = map_k(ph, &s, k);
     let closes = |a: &Reduced, b: &Reduced| close(a, b, CLOSED);
