@@ -1,21 +1,14 @@
 //! Parsing of value lists on the command line: `0,0.2,0.4` or `start:stop:count`.
 
-use crate::error::{Error, Result};
-
 /// Most rows any command reads or writes (tables, batches, validated tables,
 /// histories), and most values one list or range may produce: the one limit.
 pub const MAX_ROWS: usize = fricosc::history::MAX_SAMPLES;
 /// [`MAX_ROWS`] for counts computed in `u128` (before they can overflow).
 pub const MAX_LIST: u128 = MAX_ROWS as u128;
 
-/// Parse one finite number; `what` names it in the error.
-pub fn parse_number(what: &str, text: &str) -> Result<f64> {
-    number(text).map_err(|reason| Error::Parse { context: what.into(), reason })
-}
-
 /// One finite number (`-0` is 0), or why not: the value parser of every
 /// numeric option.
-pub fn number(text: &str) -> std::result::Result<f64, String> {
+pub fn number(text: &str) -> Result<f64, String> {
     let t = text.trim();
     let x: f64 = t.parse().map_err(|_| format!("'{t}' is not a number"))?;
     if !x.is_finite() {
@@ -25,17 +18,12 @@ pub fn number(text: &str) -> std::result::Result<f64, String> {
     Ok(x + 0.0)
 }
 
-/// [`values`]; `what` names the list in the error.
-pub fn parse_values(what: &str, text: &str) -> Result<Vec<f64>> {
-    values(text).map_err(|reason| Error::Parse { context: what.into(), reason })
-}
-
 /// A comma list `a,b,c` or an inclusive range `start:stop:count` (`count >= 1`,
 /// `stop >= start`; `count = 1` gives `start`), or why not. Values are
 /// `start + (stop - start) k / (count - 1)` rounded to 15 significant digits (so
 /// `0:1.2:13` gives 0.1, 0.2, ... rather than 0.09999999999999999), the last one
 /// `stop` exactly; outputs print the value actually used. At most [`MAX_ROWS`] values.
-pub fn values(text: &str) -> std::result::Result<Vec<f64>, String> {
+pub fn values(text: &str) -> Result<Vec<f64>, String> {
     let t = text.trim();
     if t.is_empty() {
         return Err("empty value list".into());
@@ -55,7 +43,7 @@ pub fn values(text: &str) -> std::result::Result<Vec<f64>, String> {
 }
 
 /// The range `start:stop:count` of [`values`].
-fn range(start: f64, stop: f64, count: &str) -> std::result::Result<Vec<f64>, String> {
+fn range(start: f64, stop: f64, count: &str) -> Result<Vec<f64>, String> {
     let count: u128 = count.parse().map_err(|_| format!("range count '{count}' is not a whole number"))?;
     if count == 0 {
         return Err("range count must be >= 1".into());
@@ -86,26 +74,26 @@ mod tests {
 
     #[test]
     fn lists_and_ranges() {
-        assert_eq!(parse_values("v", "0, 0.2,0.4").unwrap(), vec![0.0, 0.2, 0.4]);
-        let r = parse_values("v", "0:1.2:121").unwrap();
+        assert_eq!(values("0, 0.2,0.4").unwrap(), vec![0.0, 0.2, 0.4]);
+        let r = values("0:1.2:121").unwrap();
         assert_eq!(r.len(), 121);
         assert_eq!(r[120], 1.2);
         assert_eq!(r[60], 0.6);
-        assert_eq!(parse_values("v", "0:1.2:13").unwrap()[1], 0.1);
-        assert_eq!(parse_values("v", "0.5:0.5:1").unwrap(), vec![0.5]);
+        assert_eq!(values("0:1.2:13").unwrap()[1], 0.1);
+        assert_eq!(values("0.5:0.5:1").unwrap(), vec![0.5]);
         // Rounding never leaves [start, stop] nor repeats a value; a range too
         // narrow for its count is an error, a range across f64 is not NaN.
         assert_eq!(
-            parse_values("v", "0.9999999999999998:0.9999999999999999:2").unwrap(),
+            values("0.9999999999999998:0.9999999999999999:2").unwrap(),
             vec![0.9999999999999998, 0.9999999999999999]
         );
-        assert!(parse_values("v", "0.9999999999999998:0.9999999999999999:3").is_err());
-        assert!(parse_values("v", "0.999999999999999:1:11").is_err());
-        assert_eq!(parse_values("v", "-1e308:1e308:3").unwrap(), vec![-1e308, 0.0, 1e308]);
-        let r = parse_values("v", "0.1:0.7:7").unwrap();
+        assert!(values("0.9999999999999998:0.9999999999999999:3").is_err());
+        assert!(values("0.999999999999999:1:11").is_err());
+        assert_eq!(values("-1e308:1e308:3").unwrap(), vec![-1e308, 0.0, 1e308]);
+        let r = values("0.1:0.7:7").unwrap();
         assert_eq!(r, vec![0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7]);
         for bad in ["", "a", "nan", "inf", "1e999", "1:0:3", "0:1:0", "0:1:x", "0:1", "0:1:1000000000000"] {
-            assert!(parse_values("v", bad).is_err(), "{bad}");
+            assert!(values(bad).is_err(), "{bad}");
         }
     }
 }

@@ -128,6 +128,7 @@ fn eigenvalues(m: usize, beta: f64, diag: &[f64], off: &[f64]) -> Vec<f64> {
         let d = (0..h).map(|i| below(i) * below(i) + off[2 * i] * off[2 * i]).collect();
         let e = (0..h - 1).map(|i| off[2 * i] * off[2 * i + 1]).collect();
         tridiagonal_eigenvalues(d, e)
+            .0
             .iter()
             .flat_map(|&l| {
                 let x = l.max(0.0).sqrt();
@@ -135,7 +136,7 @@ fn eigenvalues(m: usize, beta: f64, diag: &[f64], off: &[f64]) -> Vec<f64> {
             })
             .collect()
     } else {
-        tridiagonal_eigenvalues(diag.to_vec(), off[..m - 1].to_vec())
+        tridiagonal_eigenvalues(diag.to_vec(), off[..m - 1].to_vec()).0
     }
 }
 
@@ -147,11 +148,13 @@ fn eigenvalues(m: usize, beta: f64, diag: &[f64], off: &[f64]) -> Vec<f64> {
 /// `e[m]` is negligible against its neighbours (`|e[m]| + (|d[m]| + |d[m+1]|)`
 /// rounds to the latter), and deflates `d[l]` once `e[l]` is. `O(m^2)`
 /// operations: the dense reduction nalgebra's solver begins with costs `O(m^3)`.
-fn tridiagonal_eigenvalues(mut d: Vec<f64>, mut e: Vec<f64>) -> Vec<f64> {
+/// Also the number of sweeps made.
+fn tridiagonal_eigenvalues(mut d: Vec<f64>, mut e: Vec<f64>) -> (Vec<f64>, usize) {
     let n = d.len();
     e.push(0.0);
+    let mut sweeps = 0;
     for l in 0..n {
-        // Quadratic convergence: a few sweeps an eigenvalue; the bound guards a NaN.
+        // Cubic convergence (Wilkinson's shift): about two sweeps an eigenvalue; the cap guards a NaN.
         for _ in 0..64 {
             let m = (l..n - 1)
                 .find(|&m| {
@@ -162,6 +165,7 @@ fn tridiagonal_eigenvalues(mut d: Vec<f64>, mut e: Vec<f64>) -> Vec<f64> {
             if m == l {
                 break;
             }
+            sweeps += 1;
             // The shift: the eigenvalue of the leading 2 x 2 block nearer d[l].
             let g = (d[l + 1] - d[l]) / (2.0 * e[l]);
             let r = g.hypot(1.0);
@@ -193,7 +197,7 @@ fn tridiagonal_eigenvalues(mut d: Vec<f64>, mut e: Vec<f64>) -> Vec<f64> {
             }
         }
     }
-    d
+    (d, sweeps)
 }
 
 /// The Jacobi matrix of the weight `(1 + x)^beta` (see the module's doc):
@@ -386,6 +390,28 @@ fn cached() -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The QL iteration converges as it should: with Wilkinson's shift two
+    /// sweeps or so a node, and every eigenvalue, before the nodes' polish,
+    /// within a few eps (the matrix's norm is below 2). A wrong shift or
+    /// deflation test would still converge (the sweeps are capped, the polish
+    /// restores the nodes) but after many more sweeps. Observed (orders 8 to
+    /// 1024; beta 0, -1/2, -0.875, 1): 2.0 to 2.25 sweeps a node (the ceiling
+    /// is 3), eigenvalues within 11 eps (bar 32).
+    #[test]
+    fn the_ql_sweeps_converge_fast() {
+        for beta in [0.0, -0.5, -0.875, 1.0] {
+            for m in [8, 16, 20, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024] {
+                let (diag, off) = jacobi_matrix(m, beta);
+                let (mut raw, sweeps) = tridiagonal_eigenvalues(diag.clone(), off[..m - 1].to_vec());
+                raw.sort_by(f64::total_cmp);
+                let nodes = gauss_jacobi(m, beta).nodes;
+                let off_by = raw.iter().zip(&nodes).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+                assert!(sweeps <= 3 * m, "beta {beta} m {m}: {sweeps} sweeps");
+                assert!(off_by <= 32.0 * f64::EPSILON, "beta {beta} m {m}: {off_by:e}");
+            }
+        }
+    }
 
     /// Every rule the bands use against 25-digit rules (`data/gauss-jacobi.json`,
     /// `data/scripts/gauss_jacobi.py`: Newton on the recurrence at 60 digits,
