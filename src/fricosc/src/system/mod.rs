@@ -390,6 +390,9 @@ fn close(a: &Reduced, b: &Reduced, tol: f64) -> bool {
 /// How closely Newton's orbit must close (the same measure as [`REPEAT`]).
 const CLOSED: f64 = 1e-10;
 
+/// Fewest batches a mean's estimate is made of ([`batch_mean`]): two halves of four.
+const MIN_BATCHES: usize = 8;
+
 /// The long-time mean of a response without period.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Mean {
@@ -413,9 +416,14 @@ impl Mean {
     }
 }
 
-/// The mean of `xs` from batches of `size`: its standard error and drift ([`Mean`]).
+/// The mean of `xs` from batches of `size`: its standard error and drift
+/// ([`Mean`]). A short tail (a stiff body's 20 periods) is cut into batches
+/// small enough that there are at least [`MIN_BATCHES`]: with one batch the
+/// scatter and the drift would both be 0, an estimate of 0 for a mean that
+/// has not settled.
 pub(crate) fn batch_mean(xs: &[f64], size: usize) -> Mean {
     let avg = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let size = size.min(xs.len() / MIN_BATCHES).max(1);
     let batches: Vec<f64> = xs.chunks_exact(size).map(avg).collect();
     let n = batches.len() as f64;
     let mean = avg(&batches);
@@ -525,6 +533,17 @@ mod tests {
         let m = batch_mean(&xs, 10);
         let error = 1.0 - m.mean;
         assert!(error <= m.error_estimate() && error > 2.9 * m.drift, "{m:?}");
+    }
+
+    /// A short tail (10 periods, as a stiff body runs 20): batches small
+    /// enough for a scatter and a drift. With batches of 10 it was one batch,
+    /// and the estimate 0 for a mean 3e-4 from its limit.
+    #[test]
+    fn a_short_tail_still_has_an_estimate() {
+        let xs: Vec<f64> = (10..20).map(|t| 1.0 - 1e-3 / t as f64).collect();
+        let m = batch_mean(&xs, 10);
+        let error = 1.0 - m.mean;
+        assert!(error > 0.0 && error <= m.error_estimate(), "{m:?}");
     }
 
     /// A stationary response (a fixed pseudo-random sequence): the estimate
