@@ -7,7 +7,7 @@ use std::io::{self, Write};
 /// tables and batches print one value alike). Non-finite values (never produced
 /// by the solvers) print as `null`.
 pub fn num(x: f64) -> String {
-    let mut text = Vec::with_capacity(TEXT);
+    let mut text = Vec::with_capacity(24);
     push_num(&mut text, &mut zmij::Buffer::new(), x);
     // zmij writes ASCII only.
     String::from_utf8_lossy(&text).into_owned()
@@ -70,41 +70,6 @@ pub enum Format {
     Csv,
 }
 
-/// The longest shortest text of an `f64`: `-2.2250738585072014e-308`.
-const TEXT: usize = 24;
-
-/// A number's text as [`num`] makes it, in a fixed-size buffer: appended to a
-/// row as a copy of the whole buffer (a fixed size: no call), then cut.
-#[derive(Debug, Clone, Copy)]
-pub struct Text {
-    bytes: [u8; TEXT],
-    len: usize,
-}
-
-impl Text {
-    /// The text of `x`.
-    pub fn of(x: f64) -> Self {
-        let text = num(x);
-        let mut bytes = [0; TEXT];
-        // Every text fits (see TEXT); `null` for a non-finite value.
-        let len = text.len().min(TEXT);
-        bytes[..len].copy_from_slice(&text.as_bytes()[..len]);
-        Text { bytes, len }
-    }
-}
-
-/// A cell of a [`TableWriter`] row: a number, or its [`Text`] made once (a grid
-/// value that repeats row after row: the amplitude on every row of its block,
-/// each velocity once per amplitude: a copy instead of formatting the same
-/// number again).
-#[derive(Debug, Clone, Copy)]
-pub enum Cell<'a> {
-    /// A number, printed as [`num`] prints it.
-    Num(f64),
-    /// A number's text made before.
-    Text(&'a Text),
-}
-
 /// Bytes of rows a [`TableWriter`] collects before it writes them.
 const BLOCK: usize = 1 << 15;
 
@@ -140,24 +105,17 @@ impl<W: Write> TableWriter<W> {
         })
     }
 
-    /// One row (cells in column order); the shape is the one given to [`TableWriter::new`].
-    pub fn row(&mut self, cells: &[Cell]) -> io::Result<()> {
+    /// One row (values in column order, each printed as [`num`] prints it);
+    /// the shape is the one given to [`TableWriter::new`].
+    pub fn row(&mut self, cells: &[f64]) -> io::Result<()> {
         debug_assert_eq!(cells.len(), self.columns.len());
         let (line, fmt) = (&mut self.line, &mut self.fmt);
-        let put = |line: &mut Vec<u8>, fmt: &mut zmij::Buffer, cell: &Cell| match *cell {
-            Cell::Num(x) => push_num(line, fmt, x),
-            Cell::Text(t) => {
-                let at = line.len();
-                line.extend_from_slice(&t.bytes);
-                line.truncate(at + t.len);
-            }
-        };
         match self.format {
             Format::Csv => {
                 line.extend_from_slice(self.csv_shape.as_bytes());
                 for cell in cells {
                     line.push(b',');
-                    put(line, fmt, cell);
+                    push_num(line, fmt, *cell);
                 }
                 line.push(b'\n');
             }
@@ -167,7 +125,7 @@ impl<W: Write> TableWriter<W> {
                     line.extend_from_slice(if i > 0 { b",\"" } else { b"\"" });
                     line.extend_from_slice(c.as_bytes());
                     line.extend_from_slice(b"\":");
-                    put(line, fmt, cell);
+                    push_num(line, fmt, *cell);
                 }
                 line.push(b'}');
             }

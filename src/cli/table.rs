@@ -2,7 +2,7 @@
 
 use crate::cmd::{io_err, list, Common, List, SystemPoint, TangentialList, VelocityList};
 use crate::error::{Error, Result};
-use crate::output::{Cell, Format, TableWriter, Text};
+use crate::output::{Format, TableWriter};
 use clap::Args;
 use rayon::prelude::*;
 use std::io;
@@ -24,70 +24,113 @@ pub struct TableArgs {
     pub format: Format,
 }
 
-/// A table under oscillation in the sliding direction: every (amp, T, phase,
-/// vhat), columns vhat, amp, tangential_amp, phase, mu_ratio, reduction.
-fn combined_table(a: &TableArgs, shape: &fricosc::Shape, ts: &[f64], phases: &[f64]) -> Result<()> {
-    let (vels, _) = a.velocity.values();
-    let over_t = a.velocity.over_t();
+/// A table of a general point (oscillation in the sliding direction, or a
+/// body on a system: [`general_table`]): its conditions and columns.
+struct Grid {
+    points: Vec<fricosc::Conditions>,
+    over_t: Vec<f64>,
+    columns: Vec<&'static str>,
+}
+
+/// Every (amp, T, phase, velocity) of a table in the sliding direction
+/// (`system` none) or on a system, checked before any work (and each value
+/// printed as given): the velocity is `vhat` under a tangential oscillation,
+/// either on a system without one.
+fn grid(a: &TableArgs, on_system: bool) -> Result<Grid> {
+    let (vels, is_vhat) = a.velocity.values();
+    let (ts, phases) = a.tangential.values(is_vhat)?.unwrap_or((vec![0.0], vec![0.0]));
     let amps = &a.amp.0;
     let total = [amps.len(), ts.len(), phases.len(), vels.len()].iter().map(|&n| n as u128).product::<u128>();
-    if total > crate::grid::MAX_LIST {
-        return Err(Error::TooLarge {
-            what: "table rows (amplitudes x tangential amplitudes x phases x velocities)".into(),
-            count: total,
-            limit: crate::grid::MAX_LIST,
-        });
+    let (limit, what) = match on_system {
+        true => (MAX_SYSTEM_ROWS, "table rows on a system"),
+        false => (crate::grid::MAX_LIST, "table rows (amplitudes x tangential amplitudes x phases x velocities)"),
+    };
+    if total > limit {
+        return Err(Error::TooLarge { what: what.into(), count: total, limit });
     }
-    let mut points = Vec::with_capacity(total as usize);
+    let over_t = a.velocity.over_t();
+    let mut g = Grid { points: Vec::with_capacity(total as usize), over_t: vec![], columns: vec![] };
     for &amp in amps {
-        for &t in ts {
-            for &phase in phases {
+        for &t in &ts {
+            for &phase in &phases {
                 for &v in vels {
-                    // Checked before any work (and the phase printed as given).
                     let vhat = if over_t { v * t } else { v };
-                    points.push(a.common.conditions(fricosc::Velocity::Vhat(vhat), amp, Some((t, phase)))?);
+                    let c = if on_system {
+                        let velocity = if is_vhat { fricosc::Velocity::Vhat(v) } else { fricosc::Velocity::Vbar(v) };
+                        let c = a.common.conditions(velocity, amp, None)?;
+                        fricosc::Conditions::vhat(c.as_vhat(), amp)?.with_tangential(t, phase)?
+                    } else {
+                        a.common.conditions(fricosc::Velocity::Vhat(vhat), amp, Some((t, phase)))?
+                    };
+                    g.points.push(c);
+                    if over_t {
+                        g.over_t.push(v);
+                    }
                 }
             }
         }
     }
-    let stepping = a.common.method.stepping()?;
+    g.columns = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio"];
+    if on_system {
+        g.columns.extend(["period", "standard_error", "error_estimate"]);
+    } else {
+        g.columns.push("reduction");
+    }
+    if over_t {
+        g.columns.insert(0, "vhat_over_t");
+    }
+    Ok(g)
+}
+
+/// A table under oscillation in the sliding direction (`system` none), or of
+/// a body on a system (`fricosc::system`): every (amp, T, phase, velocity),
+/// columns (`vhat_over_t`), vhat, amp, tangential_amp, phase, mu_ratio, then
+/// reduction, or on a system period (empty where none was found),
+/// standard_error (empty where none) and error_estimate (a curved body's).
+fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::system::System>) -> Result<()> {
+    if system.is_some() && (a.common.method.stepping_with(true)?.is_some() || a.velocity.over_t()) {
+        return Err(Error::Parse {
+            context: "--system-stiffness".into(),
+            reason: "is solved exactly, at --vbar or --vhat".into(),
+        });
+    }
+    let g = grid(a, system.is_some())?;
+    let stepping = if system.is_some() { None } else { a.common.method.stepping()? };
     if let Some(st) = stepping {
         st.check(shape)?;
     }
-    let rows: Vec<[f64; 3]> = points
+    let or_nan = |x: Option<f64>| x.unwrap_or(f64::NAN);
+    let rows = g
+        .points
         .par_iter()
         .map(|c| {
-            let r = match stepping {
-                Some(st) => fricosc::stepper::evaluate(shape, c, st)?.ratio,
-                None => shape.ratio(c)?,
-            };
-            Ok([c.as_vhat(), r.mu_ratio, r.reduction])
-        })
-        .collect::<Result<Vec<_>>>()?;
-    let mut cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "reduction"];
-    if over_t {
-        cols.insert(0, "vhat_over_t");
-    }
-    let mut w =
-        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols).map_err(io_err)?;
-    // The grid's values printed once each, in the order the rows were made.
-    let texts = |xs: &[f64]| xs.iter().map(|&x| Text::of(x)).collect::<Vec<_>>();
-    let (amp_t, t_t, phase_t, vel_t) = (texts(amps), texts(ts), texts(phases), texts(vels));
-    let mut rows = rows.iter();
-    for amp in &amp_t {
-        for t in &t_t {
-            for phase in &phase_t {
-                for (v, r) in vel_t.iter().zip(rows.by_ref()) {
-                    let (mu, reduction) = (Cell::Num(r[1]), Cell::Num(r[2]));
-                    let rest = [Cell::Text(amp), Cell::Text(t), Cell::Text(phase), mu, reduction];
-                    match over_t {
-                        true => w.row(&[&[Cell::Text(v), Cell::Num(r[0])][..], &rest].concat()),
-                        false => w.row(&[&[Cell::Text(v)][..], &rest].concat()),
-                    }
-                    .map_err(io_err)?;
+            let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+            let mut row = vec![c.as_vhat(), c.amp(), t, phase];
+            match (system, stepping) {
+                (Some(sys), _) => {
+                    let r = fricosc::system::solve(shape, c, &sys)?;
+                    let period = r.period.map(|k| k as f64);
+                    row.extend([r.mu_ratio, or_nan(period), or_nan(r.standard_error), or_nan(r.error_estimate)]);
+                }
+                (None, stepping) => {
+                    let r = match stepping {
+                        Some(st) => fricosc::stepper::evaluate(shape, c, st)?.ratio,
+                        None => shape.ratio(c)?,
+                    };
+                    row.extend([r.mu_ratio, r.reduction]);
                 }
             }
+            Ok(row)
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let mut w =
+        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), g.columns).map_err(io_err)?;
+    for (k, row) in rows.iter().enumerate() {
+        match g.over_t.get(k) {
+            Some(&v) => w.row(&[&[v][..], row].concat()),
+            None => w.row(row),
         }
+        .map_err(io_err)?;
     }
     w.finish().map_err(io_err)
 }
@@ -102,11 +145,9 @@ pub fn run(a: TableArgs) -> Result<()> {
     let tol = a.common.tol();
     let amps = &a.amp.0;
     let (vels, is_vhat) = a.velocity.values();
-    if let Some(sys) = a.system.system(a.common.method.system_springs())? {
-        return system_table(&a, &shape, &sys);
-    }
-    if let Some((ts, phases)) = a.tangential.values(is_vhat)? {
-        return combined_table(&a, &shape, &ts, &phases);
+    let system = a.system.system(a.common.method.system_springs())?;
+    if system.is_some() || a.tangential.tangential_amp.is_some() {
+        return general_table(&a, &shape, system);
     }
     let total = amps.len() as u128 * vels.len() as u128;
     if total > crate::grid::MAX_LIST {
@@ -157,61 +198,11 @@ pub fn run(a: TableArgs) -> Result<()> {
         }
         Ok::<(), Error>(())
     })?;
-    // The grid's values printed once each (a vhat table's vbar is a row's own).
-    let amp_texts: Vec<Text> = amps.iter().map(|&x| Text::of(x)).collect();
-    let vel_texts: Vec<Text> = vels.iter().map(|&x| Text::of(x)).collect();
     let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, name, cols).map_err(io_err)?;
-    for (block, amp) in rows.chunks(vels.len().max(1)).zip(&amp_texts) {
-        for (r, v) in block.iter().zip(&vel_texts) {
-            let (amp, v, mu, reduction) = (Cell::Text(amp), Cell::Text(v), Cell::Num(r[1]), Cell::Num(r[2]));
-            if is_vhat { w.row(&[v, Cell::Num(r[0]), amp, mu, reduction]) } else { w.row(&[v, amp, mu, reduction]) }
-                .map_err(io_err)?;
+    for (block, &amp) in rows.chunks(vels.len().max(1)).zip(amps) {
+        for (r, &v) in block.iter().zip(vels) {
+            if is_vhat { w.row(&[v, r[0], amp, r[1], r[2]]) } else { w.row(&[v, amp, r[1], r[2]]) }.map_err(io_err)?;
         }
-    }
-    w.finish().map_err(io_err)
-}
-
-/// A table of a body on a system (`fricosc::system`): every (amp, T, phase,
-/// velocity), columns vhat, amp, tangential_amp, phase, mu_ratio, period
-/// (empty where none was found), standard_error (where none), error_estimate
-/// (a curved body's).
-fn system_table(a: &TableArgs, shape: &fricosc::Shape, sys: &fricosc::system::System) -> Result<()> {
-    if a.common.method.stepping_with(true)?.is_some() || a.velocity.over_t() {
-        return Err(Error::Parse {
-            context: "--system-stiffness".into(),
-            reason: "is solved exactly, at --vbar or --vhat".into(),
-        });
-    }
-    let (vels, is_vhat) = a.velocity.values();
-    let (ts, phases) = a.tangential.values(is_vhat)?.unwrap_or((vec![0.0], vec![0.0]));
-    let amps = &a.amp.0;
-    let total = [amps.len(), ts.len(), phases.len(), vels.len()].iter().map(|&n| n as u128).product::<u128>();
-    if total > MAX_SYSTEM_ROWS {
-        return Err(Error::TooLarge { what: "table rows on a system".into(), count: total, limit: MAX_SYSTEM_ROWS });
-    }
-    let mut points = vec![];
-    for &amp in amps {
-        for &t in &ts {
-            for &phase in &phases {
-                for &v in vels {
-                    let velocity = if is_vhat { fricosc::Velocity::Vhat(v) } else { fricosc::Velocity::Vbar(v) };
-                    let c = a.common.conditions(velocity, amp, None)?;
-                    points.push(fricosc::Conditions::vhat(c.as_vhat(), amp)?.with_tangential(t, phase)?);
-                }
-            }
-        }
-    }
-    let rows = points.par_iter().map(|c| Ok(fricosc::system::solve(shape, c, sys)?)).collect::<Result<Vec<_>>>()?;
-    let cols = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio", "period", "standard_error", "error_estimate"];
-    let mut w =
-        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), cols).map_err(io_err)?;
-    for (c, r) in points.iter().zip(&rows) {
-        let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
-        let period = r.period.map_or(Cell::Num(f64::NAN), |k| Cell::Num(k as f64));
-        let se = Cell::Num(r.standard_error.unwrap_or(f64::NAN));
-        let est = Cell::Num(r.error_estimate.unwrap_or(f64::NAN));
-        let row = [Cell::Num(c.as_vhat()), Cell::Num(c.amp()), Cell::Num(t), Cell::Num(phase), Cell::Num(r.mu_ratio)];
-        w.row(&[&row[..], &[period, se, est]].concat()).map_err(io_err)?;
     }
     w.finish().map_err(io_err)
 }
