@@ -17,5 +17,6 @@ mod hostile;
 mod scene;
 mod suite;
 mod system_cli;
+mod tidy;
 mod users;
 mod validate;
