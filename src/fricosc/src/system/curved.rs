@@ -26,7 +26,7 @@
 //! is added to `|mu_N - mu_{N/2}|`.
 
 use super::springs::{Foundation, Spring};
-use super::{batch_mean, Params, SystemReport, MAX_ORBIT, REPEAT};
+use super::{batch_mean, Params, SystemReport, MAX_ORBIT, MAX_STEPS, MIN_PERIODS, REPEAT};
 use crate::error::{Error, Result};
 use crate::shape::Shape;
 
@@ -35,7 +35,9 @@ pub const DEFAULT_SPRINGS: usize = 256;
 /// Most springs of a curved body's finer discretisation.
 pub const MAX_SPRINGS: usize = 1 << 14;
 /// Most periods run from the start for one discretisation before the answer
-/// is "no period".
+/// is "no period"; fewer (at least [`MIN_PERIODS`]) where they take more
+/// than [`MAX_STEPS`] sampling steps, and as many again may refine an orbit
+/// found.
 pub const MAX_CURVED_PERIODS: usize = 600;
 
 /// The springs `(w_i, b_i)` of `shape` at the amplitude `amp`, about `n`
@@ -121,7 +123,9 @@ fn least_period(fd: &Foundation, (x, v, state): (f64, f64, &[Spring]), k: usize,
 
 /// The attractor of one discretisation from the stated start: the period map
 /// iterated until its state repeats after `k <= MAX_ORBIT` periods (to
-/// [`REPEAT`]), then orbit after orbit until it closes to [`TIGHT`]; the
+/// [`REPEAT`]; at most [`MAX_CURVED_PERIODS`], and once at least
+/// [`MIN_PERIODS`] are run at most [`MAX_STEPS`] sampling steps), then orbit
+/// after orbit (up to twice that many steps in all) until it closes to [`TIGHT`]; the
 /// closure's bound is the last change of the orbit's `mu` summed as a
 /// geometric series with the measured contraction of the state. A
 /// near-repeat that does not contract is not an orbit (a slow drift): the
@@ -140,7 +144,8 @@ fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
         (*x, *v, fd.forces_at_start(*x, state))
     };
     let mut n = 0;
-    while n < MAX_CURVED_PERIODS {
+    let spent = |budgets: f64| fd.steps_run() as f64 > budgets * MAX_STEPS;
+    while n < MAX_CURVED_PERIODS && !(n >= MIN_PERIODS && spent(1.0)) {
         n += 1;
         let now = run(&mut x, &mut v, &mut state, &mut per_period);
         if fd.chattered() {
@@ -159,7 +164,7 @@ fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
                 n += k;
                 let (m, dn) = (block(&per_period), distance(&last, &next));
                 (change, rate, mu, d, last) = ((m - mu).abs(), dn / d, m, dn, next);
-                if d <= TIGHT || rate >= 1.0 {
+                if d <= TIGHT || rate >= 1.0 || spent(2.0) {
                     break;
                 }
             }

@@ -100,8 +100,11 @@ pub(crate) const REPEAT: f64 = 1e-9;
 /// Most periods run from the start before the answer is "no period" (the flat punch).
 pub const MAX_PERIODS: usize = 4000;
 /// Most sampling steps run from the start (about two seconds); fewer
-/// periods than [`MAX_PERIODS`] where a period takes many (at least 20).
+/// periods than [`MAX_PERIODS`] where a period takes many (at least
+/// [`MIN_PERIODS`]).
 pub(crate) const MAX_STEPS: f64 = 2e7;
+/// Fewest periods run before a search may end for its step budget.
+pub(crate) const MIN_PERIODS: usize = 20;
 /// Most sampling steps a period of the drive may take: a body whose fastest
 /// time scale (its stick frequency, or its damping rate) is shorter is
 /// refused, by name, before any work.
@@ -334,7 +337,7 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
     let mut per_period = vec![];
     let mut attempts = 0;
     // At most MAX_STEPS sampling steps in all (a fast, undamped body takes many a period).
-    let periods = MAX_PERIODS.min((MAX_STEPS / ph.steps_per_period()).max(20.0) as usize);
+    let periods = MAX_PERIODS.min((MAX_STEPS / ph.steps_per_period()).max(MIN_PERIODS as f64) as usize);
     for n in 1..=periods {
         let (next, int_f) = map_k(&ph, &s, 1);
         if ph.chattered() {

@@ -68,6 +68,8 @@ pub(crate) struct Foundation {
     steps: RefCell<HashMap<[u64; 3], (f64, Generator)>>,
     /// Whether a step ran out of events ([`Foundation::chattered`]).
     chattered: std::cell::Cell<bool>,
+    /// Sampling steps (and parts of steps) run so far ([`Foundation::steps_run`]).
+    steps_run: std::cell::Cell<u64>,
 }
 
 impl Foundation {
@@ -85,7 +87,8 @@ impl Foundation {
         contacts.sort_by(|x, y| x.0.total_cmp(&y.0));
         let mean = |bi: f64| if p.amp == 0.0 { bi } else { p.amp * crate::model::spring::mean_normal(bi / p.amp) };
         let mean_b = w.iter().zip(&b).map(|(wi, &bi)| wi * mean(bi)).sum();
-        Foundation { p, w, b, contacts, mean_b, steps: RefCell::default(), chattered: std::cell::Cell::new(false) }
+        let (steps, chattered, steps_run) = (RefCell::default(), std::cell::Cell::new(false), std::cell::Cell::new(0));
+        Foundation { p, w, b, contacts, mean_b, steps, chattered, steps_run }
     }
 
     /// The state at the stated start: springs in contact at `tau = 0` stuck
@@ -155,6 +158,12 @@ impl Foundation {
             d[ONE] -= 1.0;
             d
         })
+    }
+
+    /// Sampling steps run by every period so far (a step cut short by an
+    /// event counts as one): the work budget of a search.
+    pub(crate) fn steps_run(&self) -> u64 {
+        self.steps_run.get()
     }
 
     /// Whether a step run so far held more events in a row than
@@ -259,6 +268,7 @@ impl Foundation {
             let mut response = None;
             let events = super::period::with_slopes(&a, events);
             loop {
+                self.steps_run.set(self.steps_run.get() + 1);
                 let rest = TWO_PI - tau;
                 let mut h = step.min(rest);
                 let contact = self.contacts.get(next).map(|c| c.0).filter(|&t| t <= tau + h);
