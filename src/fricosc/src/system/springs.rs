@@ -384,7 +384,7 @@ impl<'a> Index<'a> {
         let (wi, bi) = (self.w[i], self.b[i]);
         match s {
             Spring::Stuck { l, m } => {
-                if sign > 0 {
+                if sign == 1 {
                     self.by_l.insert((key(l), i));
                     self.by_m.insert((key(m), i));
                 } else {
@@ -397,12 +397,12 @@ impl<'a> Index<'a> {
             Spring::Forward => {
                 self.fwd += sign * fixed(wi);
                 self.one += sign * fixed(wi * bi);
-                group(&mut self.forward, &mut self.place, i, sign > 0);
+                group(&mut self.forward, &mut self.place, i, sign == 1);
             }
             Spring::Backward => {
                 self.bwd += sign * fixed(wi);
                 self.one -= sign * fixed(wi * bi);
-                group(&mut self.backward, &mut self.place, i, sign > 0);
+                group(&mut self.backward, &mut self.place, i, sign == 1);
             }
             Spring::Free => {}
         }
@@ -494,8 +494,9 @@ mod tests {
         let mut ix = Index::new(&w, &b, &springs);
         for step in 0..5000 {
             let i = (rand() % n as u64) as usize;
-            // Levels from a few values, so that springs share them (a group stuck together).
-            let l = [-0.0, 0.0, 0.25, 0.5, 1.5][(rand() % 5) as usize] + (rand() % 3) as f64;
+            // Levels from a few values, so that springs share them (a group
+            // stuck together), both zeros among them (one level).
+            let l = [-0.0, 0.0, 0.25, -1.5, 1.5][(rand() % 5) as usize] * (1 + rand() % 3) as f64;
             let new = match rand() % 4 {
                 0 => Spring::Stuck { l, m: l - 2.0 * b[i] },
                 1 => Spring::Forward,
@@ -537,6 +538,8 @@ mod tests {
             assert_eq!(sorted(ix.stuck_at_or_below(lo)), scan(&|l, _| l <= lo), "step {step}");
             assert_eq!(sorted(ix.stuck_at_or_above(hi)), scan(&|_, m| m >= hi), "step {step}");
             assert_eq!(sorted(ix.stuck_at_or_below(1.25)), scan(&|l, _| l <= 1.25), "step {step}");
+            assert_eq!(sorted(ix.stuck_at_or_below(-0.0)), scan(&|l, _| l <= 0.0), "step {step}");
+            assert_eq!(sorted(ix.stuck_at_or_above(0.0)), scan(&|_, m| m >= 0.0), "step {step}");
             let group = |kind: Spring| springs.iter().enumerate().filter(move |(_, s)| **s == kind).map(|(k, _)| k);
             assert_eq!(sorted(ix.forward.clone()), group(Spring::Forward).collect::<Vec<_>>(), "step {step}");
             assert_eq!(sorted(ix.backward.clone()), group(Spring::Backward).collect::<Vec<_>>(), "step {step}");
