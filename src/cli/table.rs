@@ -100,37 +100,36 @@ fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::
         st.check(shape)?;
     }
     let or_nan = |x: Option<f64>| x.unwrap_or(f64::NAN);
+    // Each row's values after the grid's own (vhat/T where given, vhat, amp, T, phase).
     let rows = g
         .points
         .par_iter()
         .map(|c| {
-            let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
-            let mut row = vec![c.as_vhat(), c.amp(), t, phase];
-            match (system, stepping) {
+            Ok(match (system, stepping) {
                 (Some(sys), _) => {
                     let r = fricosc::system::solve(shape, c, &sys)?;
                     let period = r.period.map(|k| k as f64);
-                    row.extend([r.mu_ratio, or_nan(period), or_nan(r.standard_error), or_nan(r.error_estimate)]);
+                    [r.mu_ratio, or_nan(period), or_nan(r.standard_error), or_nan(r.error_estimate)]
                 }
                 (None, stepping) => {
                     let r = match stepping {
                         Some(st) => fricosc::stepper::evaluate(shape, c, st)?.ratio,
                         None => shape.ratio(c)?,
                     };
-                    row.extend([r.mu_ratio, r.reduction]);
+                    [r.mu_ratio, r.reduction, f64::NAN, f64::NAN]
                 }
-            }
-            Ok(row)
+            })
         })
         .collect::<Result<Vec<_>>>()?;
+    let width = g.columns.len();
     let mut w =
         TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), g.columns).map_err(io_err)?;
-    for (k, row) in rows.iter().enumerate() {
-        match g.over_t.get(k) {
-            Some(&v) => w.row(&[&[v][..], row].concat()),
-            None => w.row(row),
-        }
-        .map_err(io_err)?;
+    for (k, (c, r)) in g.points.iter().zip(&rows).enumerate() {
+        let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+        let over_t = g.over_t.get(k).copied().unwrap_or(f64::NAN);
+        let row = [over_t, c.as_vhat(), c.amp(), t, phase, r[0], r[1], r[2], r[3]];
+        let first = usize::from(g.over_t.is_empty());
+        w.row(&row[first..first + width]).map_err(io_err)?;
     }
     w.finish().map_err(io_err)
 }
