@@ -32,10 +32,9 @@ struct Grid {
     columns: Vec<&'static str>,
 }
 
-/// Every (amp, T, phase, velocity) of a table in the sliding direction
-/// (`system` none) or on a system, checked before any work (and each value
-/// printed as given): the velocity is `vhat` under a tangential oscillation,
-/// either on a system without one.
+/// Every (amp, T, phase, velocity) of a table in the sliding direction, or
+/// on a system (`on_system`), checked before any work: the velocity is
+/// `vhat` under a tangential oscillation, either on a system without one.
 fn grid(a: &TableArgs, on_system: bool) -> Result<Grid> {
     let (vels, is_vhat) = a.velocity.values();
     let (ts, phases) = a.tangential.values(is_vhat)?.unwrap_or((vec![0.0], vec![0.0]));

@@ -35,9 +35,8 @@ pub const DEFAULT_SPRINGS: usize = 256;
 /// Most springs of a curved body's finer discretisation.
 pub const MAX_SPRINGS: usize = 1 << 14;
 /// Most periods run from the start for one discretisation before the answer
-/// is "no period"; fewer (at least [`MIN_PERIODS`]) where they take more
-/// than [`MAX_STEPS`] sampling steps, and as many again may refine an orbit
-/// found.
+/// is "no period"; fewer (at least 20) where they take more than 2·10^7
+/// sampling steps, and as many steps again may refine an orbit found.
 pub const MAX_CURVED_PERIODS: usize = 600;
 
 /// The springs `(w_i, b_i)` of `shape` at the amplitude `amp`, about `n`
