@@ -120,14 +120,14 @@ fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::
             })
         })
         .collect::<Result<Vec<_>>>()?;
-    let width = g.columns.len();
+    // The row's first column: vhat/T where the grid has it.
+    let (first, width) = (usize::from(g.over_t.is_empty()), g.columns.len());
     let mut w =
         TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), g.columns).map_err(io_err)?;
     for (k, (c, r)) in g.points.iter().zip(&rows).enumerate() {
         let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
         let over_t = g.over_t.get(k).copied().unwrap_or(f64::NAN);
         let row = [over_t, c.as_vhat(), c.amp(), t, phase, r[0], r[1], r[2], r[3]];
-        let first = usize::from(g.over_t.is_empty());
         w.row(&row[first..first + width]).map_err(io_err)?;
     }
     w.finish().map_err(io_err)
