@@ -205,7 +205,9 @@ def solve(p, max_periods=3000, tol=mp.mpf("1e-30")):
     ph = Phases(p)
     vhat, t, phase, amp = p["vhat"], p["t"], p["phase"], p["amp"]
     z = mp.matrix([t * mp.sin(phase), vhat + t * mp.cos(phase), 0, t * mp.sin(phase), 1, 0, 1, 0])
-    kind = STICK if amp < 1 else FREE
+    # In contact at the start where amp <= 1 (at amp = 1 the bound and the
+    # force are 0 there, and the first sign change is found at once).
+    kind = STICK if amp <= 1 else FREE
     mean_b = mp.quad(lambda x: max(0, 1 - amp * mp.cos(x)), [0, mp.acos(1 / amp) if amp > 1 else 1, 2 * mp.pi - (mp.acos(1 / amp) if amp > 1 else 1), TWO_PI]) / TWO_PI
     prev = None
     for n in range(1, max_periods + 1):
@@ -233,6 +235,9 @@ CASES = [
     (0.5, 0.3, 0.5, 0.2, 1.2, 0.0, 0.0),
     (2.0, 0.7, 0.4, 0.2, 0.5, 1.5, 1.3),
     (10.0, 0.2, 0.3, 0.4, 2.0, 0.0, 0.0),
+    # amp = 1 exactly: contact touches at tau = 0 only.
+    (1.0, 0.5, 0.05, 0.3, 1.0, 0.0, 0.0),
+    (1.0, 0.5, 0.05, 0.3, 1.0, 0.5, 0.7),
 ]
 
 

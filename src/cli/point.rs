@@ -59,7 +59,7 @@ fn on_system(shape: &Shape, c: &Conditions, sys: &fricosc::system::System) -> Re
     let r = fricosc::system::solve(shape, c, sys)?;
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
     let mut v = serde_json::json!({"vhat": c.as_vhat(), "amp": c.amp(), "tangential_amp": t, "phase": phase,
-        "system_stiffness": sys.stiffness, "frequency_ratio": sys.frequency_ratio, "damping": sys.damping});
+        "system_stiffness": sys.stiffness(), "frequency_ratio": sys.frequency_ratio(), "damping": sys.damping()});
     let body = to_json(&r)?;
     if let (serde_json::Value::Object(m), serde_json::Value::Object(b)) = (&mut v, body) {
         m.extend(b);

@@ -108,7 +108,7 @@ fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::
                 (Some(sys), _) => {
                     let r = fricosc::system::solve(shape, c, &sys)?;
                     let period = r.period.map(|k| k as f64);
-                    [r.mu_ratio, or_nan(period), or_nan(r.standard_error), or_nan(r.error_estimate)]
+                    [r.mu_ratio, or_nan(period), or_nan(r.standard_error), r.error_estimate]
                 }
                 (None, stepping) => {
                     let r = match stepping {

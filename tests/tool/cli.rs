@@ -432,7 +432,7 @@ fn point_on_a_system_reports_the_attractor() {
     )
     .unwrap();
     assert_eq!(curved["mu_ratio"].as_f64().unwrap(), r.mu_ratio);
-    assert_eq!(curved["error_estimate"].as_f64(), r.error_estimate);
+    assert_eq!(curved["error_estimate"].as_f64(), Some(r.error_estimate));
     assert_eq!(curved["springs"].as_u64(), r.springs.map(|n| n as u64));
     let zero = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "0"];
     let massless = ["point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--shape", "cone"];

@@ -384,8 +384,9 @@ pub fn user_with(
         f.notes = vec![format!("Δx/l = {t}"), format!("φ = {p}")];
     }
     if let Some(sys) = system {
-        f.title += &format!(", on a system K/kx = {}, Ω = {}, ζ = {}", sys.stiffness, sys.frequency_ratio, sys.damping);
-        let notes = [("K/k_{x}", sys.stiffness), ("Ω", sys.frequency_ratio), ("ζ", sys.damping)];
+        f.title +=
+            &format!(", on a system K/kx = {}, Ω = {}, ζ = {}", sys.stiffness(), sys.frequency_ratio(), sys.damping());
+        let notes = [("K/k_{x}", sys.stiffness()), ("Ω", sys.frequency_ratio()), ("ζ", sys.damping())];
         f.notes.extend(notes.iter().map(|(n, v)| format!("{n} = {v}")));
     }
     Ok(f)

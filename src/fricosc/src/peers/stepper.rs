@@ -392,11 +392,11 @@ pub fn system(
     steps_per_period: usize,
     periods: usize,
 ) -> Result<f64> {
-    let om = sys.frequency_ratio;
+    let om = sys.frequency_ratio();
     if om == 0.0 {
         return Err(Error::param("frequency-ratio", om, "stepping needs a body with mass (> 0)"));
     }
-    let springs = crate::system::springs(shape, c.amp(), sys.springs)?;
+    let springs = crate::system::springs(shape, c.amp(), sys.springs())?;
     let work = steps_per_period as u128 * periods as u128 * springs.len() as u128;
     if steps_per_period == 0 || periods == 0 || work > MAX_STEPPING_WORK {
         return Err(Error::param(
@@ -406,8 +406,8 @@ pub fn system(
         ));
     }
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
-    let (vhat, amp, kappa) = (c.as_vhat(), c.amp(), sys.stiffness);
-    let damp = 2.0 * sys.damping * kappa.sqrt() * om;
+    let (vhat, amp, kappa) = (c.as_vhat(), c.amp(), sys.stiffness());
+    let damp = 2.0 * sys.damping() * kappa.sqrt() * om;
     let drive = |tau: f64| (vhat * tau + t * (tau + phase).sin(), vhat + t * (tau + phase).cos());
     let h = TAU / steps_per_period as f64;
     let (mut x, mut v) = drive(0.0);

@@ -25,8 +25,9 @@
 //! `mu_N`'s long-time mean, whose error estimate (standard error and drift)
 //! is added to `|mu_N - mu_{N/2}|`.
 
+use super::mean::batch_mean;
 use super::springs::{Foundation, Spring};
-use super::{batch_mean, Params, SystemReport, MAX_ORBIT, MAX_STEPS, MIN_PERIODS, REPEAT};
+use super::{Params, SystemReport, MAX_ORBIT, MAX_STEPS, MIN_PERIODS, REPEAT};
 use crate::error::{Error, Result};
 use crate::shape::Shape;
 
@@ -54,7 +55,25 @@ pub(crate) fn discretise(shape: &Shape, amp: f64, n: usize) -> Result<Vec<(f64, 
     cuts.extend(c.breakpoints());
     cuts.retain(|z| (0.0..=reach).contains(z));
     cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
+    // A piece thinner than half a cell is merged into its neighbour: a
+    // level that tends to a cut (`G = 1 - amp` to the centre as `amp -> 1`)
+    // then adds no spring of vanishing weight, and the springs are
+    // continuous in `amp` there.
+    let min = 0.5 * reach / n as f64;
+    let mut kept: Vec<f64> = vec![];
+    for z in cuts {
+        let inner = kept.len() > 1;
+        match kept.last_mut() {
+            // The reach ends the last piece, in place of a cut just before it.
+            Some(last) if z - *last < min => {
+                if z == reach && inner {
+                    *last = z;
+                }
+            }
+            _ => kept.push(z),
+        }
+    }
+    let cuts = kept;
     let mut springs: Vec<(f64, f64)> = vec![];
     for piece in cuts.windows(2) {
         let len = piece[1] - piece[0];
@@ -195,22 +214,23 @@ fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
     Ok((found, (x, v, state)))
 }
 
-/// The attractor of `shape` discretised into about `n` springs, without an
-/// error estimate.
+/// The attractor of `shape` discretised into about `n` springs, its error
+/// estimate that of the discretised problem (the orbit's closure, or the
+/// mean's).
 pub(crate) fn discretised(shape: &Shape, p: Params, n: usize) -> Result<SystemReport> {
     let springs = discretise(shape, p.amp, n)?;
     let f = attractor(&Foundation::new(p, &springs))?.0;
-    Ok(report(&f, None, springs.len()))
+    Ok(report(&f, f.error, springs.len()))
 }
 
 /// The report of an attractor `f` of `springs` springs.
-fn report(f: &Found, error_estimate: Option<f64>, springs: usize) -> SystemReport {
+fn report(f: &Found, error_estimate: f64, springs: usize) -> SystemReport {
     SystemReport {
         mu_ratio: f.mu,
         period: f.period,
         standard_error: f.standard_error,
         periods_run: f.periods_run,
-        multipliers: vec![],
+        multipliers: None,
         events: vec![],
         error_estimate,
         springs: Some(springs),
@@ -231,7 +251,7 @@ pub(crate) fn solve(shape: &Shape, p: Params, springs: usize) -> Result<SystemRe
     let extrapolate = fine.period.is_some() && fine.period == coarse.period;
     let closure = fine.error + coarse.error;
     let mu = if extrapolate { fine.mu + change / 3.0 } else { fine.mu };
-    Ok(report(&Found { mu, ..fine }, Some(change.abs() + closure), nodes.len()))
+    Ok(report(&Found { mu, ..fine }, change.abs() + closure, nodes.len()))
 }
 
 /// One period of the attractor of `shape` discretised into about `n`
@@ -253,7 +273,7 @@ pub(crate) fn history(shape: &Shape, p: Params, n: usize, taus: &[f64]) -> Resul
     let norm: f64 = nodes.iter().map(|(w, b)| w * b.max(0.0)).sum();
     let normal = |tau: f64| nodes.iter().map(|(w, b)| w * (b - p.amp * tau.cos()).max(0.0)).sum::<f64>() / norm;
     let forces = taus.iter().zip(tangential).map(|(&tau, f)| [normal(tau), f / norm]).collect();
-    Ok((report(&found, None, nodes.len()), forces))
+    Ok((report(&found, found.error, nodes.len()), forces))
 }
 
 fn massless() -> Error {

@@ -64,11 +64,18 @@ impl Phases {
     }
 
     pub(crate) fn new(p: Params) -> Phases {
+        Phases::with_step_scale(p, 1.0)
+    }
+
+    /// The phases with every sampling step scaled by `scale` (at most 1):
+    /// the same exact map, rounded along other steps (the orbit's rounding
+    /// estimate, `super::orbit`).
+    pub(crate) fn with_step_scale(p: Params, scale: f64) -> Phases {
         let kinds = [Kind::Stick, Kind::Forward, Kind::Backward, Kind::Free];
         let gens = kinds.map(|k| p.generator(k));
         let steps = kinds.map(|k| {
             let a = gens[index(k)];
-            let h = super::springs::sampling_step(&a);
+            let h = scale * super::springs::sampling_step(&a);
             (h, (a * h).exp())
         });
         let events = kinds.map(|k| with_slopes(&gens[index(k)], p.events(k)));
@@ -205,13 +212,16 @@ pub(crate) fn first_event<T: Copy>(
     let mut taylor: Option<Taylor> = None;
     for &(w, wa, next) in events {
         let (g0, g1) = (w.dot(&z.transpose()), w.dot(&end.transpose()));
+        let s0 = wa.dot(&z.transpose());
+        // Below 0 at the start, or at 0 and falling (a spring touching at
+        // `tau = 0` with `amp = 1`, its bound and force both 0): at once.
         let below = g1 < 0.0;
-        let grazing = !below && g0 > 0.0 && wa.dot(&z.transpose()) < 0.0 && wa.dot(&end.transpose()) > 0.0;
-        if !(below || grazing) {
+        if (below && g0 < 0.0) || (g0 == 0.0 && s0 < 0.0) {
+            first = Some((0.0, next));
             continue;
         }
-        if below && g0 < 0.0 {
-            first = Some((0.0, next));
+        let grazing = !below && g0 > 0.0 && s0 < 0.0 && wa.dot(&end.transpose()) > 0.0;
+        if !(below || grazing) {
             continue;
         }
         let c = taylor.get_or_insert_with(|| Taylor::new(a, z, h)).row(&w);

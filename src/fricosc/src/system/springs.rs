@@ -91,12 +91,13 @@ impl Foundation {
         Foundation { p, w, b, contacts, mean_b, steps, chattered, steps_run }
     }
 
-    /// The state at the stated start: springs in contact at `tau = 0` stuck
-    /// and relaxed at the body's position `x`, the others free.
+    /// The state at the stated start: springs in contact at `tau = 0` (their
+    /// bound `b_i - amp >= 0`: at 0 a spring touches there) stuck and relaxed
+    /// at the body's position `x`, the others free.
     pub(crate) fn start(&self, x: f64) -> Vec<Spring> {
         self.b
             .iter()
-            .map(|&bi| if bi - self.p.amp > 0.0 { Spring::Stuck { l: x + bi, m: x - bi } } else { Spring::Free })
+            .map(|&bi| if bi - self.p.amp >= 0.0 { Spring::Stuck { l: x + bi, m: x - bi } } else { Spring::Free })
             .collect()
     }
 

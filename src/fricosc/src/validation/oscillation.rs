@@ -59,7 +59,7 @@ fn exact_row(
             Some(k) => format!("period {k}"),
             None => "no period (a long-time mean)".into(),
         };
-        return Ok((r.mu_ratio, regime, r.error_estimate));
+        return Ok((r.mu_ratio, regime, Some(r.error_estimate)));
     }
     let e = crate::combined::evaluate(shape, c)?;
     let regime = match &e.spring {

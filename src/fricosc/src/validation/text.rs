@@ -142,7 +142,9 @@ impl OscillationValidation {
         let setting = match &v.system {
             Some(sys) => format!(
                 "on a system (K/kx {}, omega/omega_c {}, zeta {})",
-                sys.stiffness, sys.frequency_ratio, sys.damping
+                sys.stiffness(),
+                sys.frequency_ratio(),
+                sys.damping()
             ),
             None => "under oscillation in the sliding direction".into(),
         };

@@ -110,9 +110,9 @@ pub(super) fn on_system(
     let units = format!(
         "{}; on a system: K/kx {}, omega/omega_c {}, zeta {}",
         super::UNITS,
-        sys.stiffness,
-        sys.frequency_ratio,
-        sys.damping
+        sys.stiffness(),
+        sys.frequency_ratio(),
+        sys.damping()
     );
     if !shape.is_flat() {
         super::check_history(shape, 0.0, c.amp(), opts)?;
@@ -125,8 +125,8 @@ pub(super) fn on_system(
             .collect();
         return Ok(super::History::new(shape, c, units, vec![], samples));
     }
-    if sys.frequency_ratio == 0.0 {
-        let k = sys.stiffness / (1.0 + sys.stiffness);
+    if sys.frequency_ratio() == 0.0 {
+        let k = sys.stiffness() / (1.0 + sys.stiffness());
         let stiff = Conditions::vhat(c.as_vhat() * k, c.amp())?.with_tangential(t * k, phase)?;
         let opts = HistoryOptions { system: None, ..opts.clone() };
         return super::history(shape, &stiff, &opts);

@@ -1,0 +1,145 @@
+//! A periodic attractor of the flat punch on a system: the period map's
+//! fixed point refined by Newton, its Floquet multipliers and its error
+//! estimate.
+
+use super::period::Phases;
+use super::{expand, map_k, Reduced, SystemReport};
+use nalgebra::{Matrix3, Vector3};
+
+/// Whether two states are the same phase and within `tol` (relative to 1 and the state).
+pub(super) fn close(a: &Reduced, b: &Reduced, tol: f64) -> bool {
+    distance(a, b) <= tol
+}
+
+/// The largest difference of two states relative to 1 and the second
+/// (infinite where their phases differ).
+pub(super) fn distance(a: &Reduced, b: &Reduced) -> f64 {
+    if a.0 != b.0 {
+        return f64::INFINITY;
+    }
+    (a.1 - b.1).iter().zip(b.1.iter()).map(|(d, x)| d.abs() / (1.0 + x.abs())).fold(0.0, f64::max)
+}
+
+/// How closely Newton's orbit must close (the same measure as [`super::REPEAT`]),
+/// or to four times the map's rounding where that is more, up to [`ROUNDED`].
+const CLOSED: f64 = 1e-10;
+/// The most rounding an orbit's closure may be put down to.
+const ROUNDED: f64 = 1e-8;
+
+/// The period-`k` orbit through (near) `s`, refined by Newton, with its
+/// multipliers, `mu`, events and error estimate; `None` if Newton does not
+/// close it to 1e-10, or if it is not stable (a multiplier of modulus `>= 1`,
+/// or none known: not the attractor the iteration tends to).
+pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<(SystemReport, Reduced)> {
+    let residual = |s: &Reduced| map_k(ph, s, k).0 .1 - s.1;
+    let (mut jac, mut grad) = (Matrix3::identity(), Vector3::zeros());
+    let mut last = f64::INFINITY;
+    for _ in 0..12 {
+        (jac, grad) = jacobian(ph, &s, k);
+        let r = residual(&s);
+        let Some(step) = (jac - Matrix3::identity()).lu().solve(&(-r)) else { break };
+        s.1 += step;
+        // Converged, or no longer converging: a step not below half the last
+        // is the map's own rounding (Newton's steps fall quadratically until
+        // then), where more iterations only move the state within it.
+        let size = step.amax();
+        if step.iter().zip(s.1.iter()).all(|(d, x)| d.abs() <= 4.0 * f64::EPSILON * (1.0 + x.abs()))
+            || size > 0.5 * last
+        {
+            break;
+        }
+        last = size;
+    }
+    let (end, int_f) = map_k(ph, &s, k);
+    // The same map along other steps: where the map's own rounding (a stiff,
+    // light body's 1e5 steps a period) exceeds CLOSED, Newton's orbit closes
+    // only to it.
+    let perturbed: Vec<(Reduced, f64)> =
+        PERTURBED.iter().map(|&scale| map_k(&Phases::with_step_scale(ph.p, scale), &s, k)).collect();
+    let rounding = perturbed.iter().map(|(e, _)| distance(e, &end)).fold(0.0, f64::max);
+    let closed = CLOSED.max(4.0 * rounding).min(ROUNDED);
+    let closes = |a: &Reduced, b: &Reduced| close(a, b, closed);
+    if !closes(&end, &s) {
+        return None;
+    }
+    // The least period: an orbit of period d also closes after k = m d.
+    if let Some(d) = (1..k).find(|&d| k.is_multiple_of(d) && closes(&map_k(ph, &s, d).0, &s)) {
+        return orbit(ph, s, d, run);
+    }
+    let multipliers = multipliers(&jac)?;
+    if multipliers.iter().any(|[re, im]| re.hypot(*im) >= 1.0) {
+        return None;
+    }
+    let events = ph.period(s.0, expand(&ph.p, &s)).2;
+    let norm = crate::flat::mean_normal(ph.p.amp) * std::f64::consts::TAU * k as f64;
+    let mu_ratio = int_f / norm;
+    let error_estimate =
+        orbit_estimate(&s, (&jac, &grad), (&end, int_f), &perturbed) / norm + ROUNDING * mu_ratio.abs();
+    let report = SystemReport {
+        mu_ratio,
+        period: Some(k),
+        standard_error: None,
+        periods_run: run,
+        multipliers: Some(multipliers),
+        events,
+        error_estimate,
+        springs: None,
+    };
+    Some((report, s))
+}
+
+/// The rounding of `mu = int f / int B` itself: a few ulps.
+pub(super) const ROUNDING: f64 = 8.0 * f64::EPSILON;
+
+/// The eigenvalues `[re, im]` of the period map's Jacobian (nalgebra's
+/// Schur iteration, capped: it may not converge on a Jacobian taken across a
+/// change of the sequence of phases); `None` where unknown.
+fn multipliers(jac: &Matrix3<f64>) -> Option<Vec<[f64; 2]>> {
+    let schur = jac.iter().all(|x| x.is_finite()).then(|| jac.try_schur(f64::EPSILON, 10_000)).flatten()?;
+    Some(schur.complex_eigenvalues().iter().map(|l| [l.re, l.im]).collect())
+}
+
+/// A bound on the error of `int f` over the orbit `s` of `k` periods (the
+/// map `P^k` with Jacobian `jac`, `int f`'s gradient `grad`, its end `end`
+/// and integral `int_f` there; `perturbed` the same along other steps). The exact orbit `s*` is where
+/// `P^k(s*) = s*`; near it `s* - s = (I - J)^-1 (P^k(s) - s)`, which moves
+/// `int f` by `grad . (s* - s)`: the closure. The map is the exact one up to
+/// the rounding of its steps, which over many steps (a stiff, light body
+/// takes 1e5 a period) is a random walk: the same map along other steps
+/// ([`PERTURBED`]) differs from it by about as much, in `int f` directly and
+/// in the residual at `s`. The estimate is the closure plus twice the
+/// largest of those differences (`tests/library/system.rs` checks it against
+/// the 40-digit references and a stiff system's value).
+fn orbit_estimate(
+    s: &Reduced,
+    (jac, grad): (&Matrix3<f64>, &Vector3<f64>),
+    (end, int_f): (&Reduced, f64),
+    perturbed: &[(Reduced, f64)],
+) -> f64 {
+    let lu = (Matrix3::identity() - jac).lu();
+    let moved = |r: Vector3<f64>| lu.solve(&r).map_or(f64::INFINITY, |d| grad.dot(&d).abs());
+    let rounding =
+        perturbed.iter().map(|(e, f)| if e.0 == s.0 { moved(e.1 - s.1) + (f - int_f).abs() } else { f64::INFINITY });
+    moved(end.1 - s.1) + 2.0 * rounding.fold(0.0, f64::max)
+}
+
+/// The scales of the sampling steps along which an orbit's map is run again
+/// for its rounding ([`orbit_estimate`]).
+const PERTURBED: [f64; 3] = [0.9, 0.8, 0.7];
+
+/// The Jacobian of `P^k` at `s`, and the gradient of `int f` over its `k`
+/// periods, by central differences (steps `1e-6 (1 + |s_i|)`).
+fn jacobian(ph: &Phases, s: &Reduced, k: usize) -> (Matrix3<f64>, Vector3<f64>) {
+    let mut j = Matrix3::zeros();
+    let mut g = Vector3::zeros();
+    for i in 0..3 {
+        let h = 1e-6 * (1.0 + s.1[i].abs());
+        let (mut a, mut b) = (*s, *s);
+        a.1[i] += h;
+        b.1[i] -= h;
+        let ((pa, fa), (pb, fb)) = (map_k(ph, &a, k), map_k(ph, &b, k));
+        j.set_column(i, &((pa.1 - pb.1) / (2.0 * h)));
+        g[i] = (fa - fb) / (2.0 * h);
+    }
+    (j, g)
+}
