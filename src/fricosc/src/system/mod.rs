@@ -272,6 +272,9 @@ fn map_k(ph: &Phases, s: &Reduced, k: usize) -> (Reduced, f64) {
 /// [`Error::InvalidParameter`] for bad inputs, and for a massless body
 /// (`frequency_ratio` 0) on a curved contact.
 pub fn solve(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<SystemReport> {
+    if c.amp() == 0.0 && c.tangential().is_none_or(|(t, _)| t == 0.0) {
+        return Ok(no_oscillation());
+    }
     let mut r = if shape.contact().single_spring() {
         attractor(c, sys)?.0
     } else {
@@ -279,6 +282,24 @@ pub fn solve(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<Syste
     };
     within_bounds(&mut r)?;
     Ok(r)
+}
+
+/// Nothing oscillates (`amp = 0`, no tangential drive): `mu = 1` exactly,
+/// as without a system (README: definitions). It is the limit `amp -> 0` at
+/// a fixed `vbar` (the reduction is `O(amp)`), and Coulomb's law for a
+/// contact that slides steadily; a drive at rest (`vhat = 0`) is the limit
+/// `vbar -> 0+` of sliding, as everywhere.
+fn no_oscillation() -> SystemReport {
+    SystemReport {
+        mu_ratio: 1.0,
+        period: Some(1),
+        standard_error: None,
+        periods_run: 0,
+        multipliers: None,
+        events: vec![],
+        error_estimate: 0.0,
+        springs: None,
+    }
 }
 
 /// Every spring's force is within its bound, so `|mu| <= 1`: beyond it

@@ -178,3 +178,39 @@ fn amp_one_is_continuous() {
         }
     }
 }
+
+/// A frequency ratio so small that `Omega^2` underflows (below about
+/// 1.5e-162) made a generator of infinities: `null` answers with exit 0, a
+/// sentinel in batch. Refused by name, on every shape, as any body too light
+/// to resolve in 1e6 sampling steps a period.
+#[test]
+fn an_underflowing_frequency_ratio_is_refused_by_name() {
+    for om in [1e-163, 1e-200, 5e-324] {
+        let sys = System::new(1.0, om, 0.05).unwrap();
+        for shape in [Shape::flat(), Shape::parabolic()] {
+            match solve(&shape, &Conditions::vhat(0.3, 0.5).unwrap(), &sys) {
+                Err(fricosc::Error::InvalidParameter { name, .. }) => assert_eq!(name, "frequency-ratio"),
+                other => panic!("Omega {om:e} on {}: {other:?}", shape.name()),
+            }
+        }
+    }
+}
+
+/// `amp = 0` (nothing oscillates) is `mu = 1` on a system as without one,
+/// massless or not, flat or curved: the limit `amp -> 0` at fixed `vbar`,
+/// where the reduction falls like `amp` (0.0738 amp here). A body with mass
+/// answered 0 (the drive `vhat = vbar amp` at rest), a massless one 1.
+#[test]
+fn no_oscillation_is_mu_one_on_every_system() {
+    for om in [0.0, 0.5] {
+        let sys = System::new(1.0, om, 0.05).unwrap();
+        for shape in [Shape::flat(), Shape::cone()] {
+            let r = solve(&shape, &Conditions::vbar(0.3, 0.0).unwrap(), &sys).unwrap();
+            assert_eq!((r.mu_ratio, r.error_estimate), (1.0, 0.0), "{} Omega {om}", shape.name());
+        }
+    }
+    let sys = System::new(1.0, 0.5, 0.05).unwrap();
+    let slope = |amp: f64| (1.0 - flat(&Conditions::vbar(0.3, amp).unwrap(), &sys).unwrap().mu_ratio) / amp;
+    let (s2, s3) = (slope(1e-2), slope(1e-3));
+    assert!(s3 > 0.05 && (s2 / s3 - 1.0).abs() < 0.01, "{s2} {s3}");
+}
