@@ -134,7 +134,7 @@ fn validate_compares_a_table_on_a_system() {
 /// system; several phases on a system are refused.
 #[test]
 fn plot_on_a_system_draws_the_attractors() {
-    let sys = System::new(1.0, 1.0, 0.05).unwrap().with_springs(16).unwrap();
+    let sys = System::new(1.0, 1.0, 0.05).unwrap().with_springs(32).unwrap();
     let fig = fricosc_cli::figures::user_with(&Shape::cone(), &[0.5, 1.5], &[0.1, 0.5, 1.0], false, None, Some(&sys))
         .unwrap();
     for curve in &fig.curves {
@@ -144,7 +144,7 @@ fn plot_on_a_system_draws_the_attractors() {
         }
     }
     let args = ["plot", "--shape", "cone", "--vbar", "0.1,0.5,1", "--amp", "0.5,1.5", "--system-stiffness", "1"];
-    let svg = stdout(&[&args[..], &["--frequency-ratio", "1", "--damping", "0.05", "--springs", "16"]].concat(), None);
+    let svg = stdout(&[&args[..], &["--frequency-ratio", "1", "--damping", "0.05", "--springs", "32"]].concat(), None);
     assert_eq!(svg.matches("<g data-series=").count(), 2);
     assert!(svg.contains("on a system K/kx = 1, Ω = 1, ζ = 0.05"));
     let phases =

@@ -35,7 +35,7 @@ mod period;
 mod phase;
 mod springs;
 
-pub use curved::{DEFAULT_SPRINGS, MAX_CURVED_PERIODS, MAX_SPRINGS};
+pub use curved::{DEFAULT_SPRINGS, MAX_CURVED_PERIODS, MAX_SPRINGS, MIN_SPRINGS};
 pub use period::SystemEvent;
 pub use phase::Kind;
 
@@ -87,10 +87,15 @@ impl System {
     /// a cost about proportional to `N`).
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] unless `springs` is in `4..=`[`MAX_SPRINGS`].
+    /// [`Error::InvalidParameter`] unless `springs` is in
+    /// [`MIN_SPRINGS`]`..=`[`MAX_SPRINGS`].
     pub fn with_springs(self, springs: usize) -> Result<System> {
-        if !(4..=MAX_SPRINGS).contains(&springs) {
-            return Err(Error::param("springs", springs as f64, "must be in 4..=16384"));
+        if !(MIN_SPRINGS..=MAX_SPRINGS).contains(&springs) {
+            return Err(Error::param(
+                "springs",
+                springs as f64,
+                "must be in 32..=16384 (with fewer, the discretisation's error cannot be bounded from its levels)",
+            ));
         }
         Ok(System { springs, ..self })
     }

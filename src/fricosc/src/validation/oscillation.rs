@@ -126,7 +126,7 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
         Some(st) => Some(
             crate::numerics::par::map(&oscillations, |o| match system {
                 Some(sys) => {
-                    let sys = sys.with_springs(st.springs.max(4))?;
+                    let sys = sys.with_springs(st.springs.max(crate::system::MIN_SPRINGS))?;
                     crate::stepper::system(shape, o, &sys, st.steps_per_period, SYSTEM_PEER_PERIODS)
                 }
                 None => crate::stepper::evaluate(shape, o, st).map(|e| e.ratio.mu_ratio),
