@@ -4,11 +4,11 @@ use std::io::{self, Write};
 
 /// Shortest text that reads back to the same `f64` (`1e-300`, `0.1`, `1.0`,
 /// `1e+20`), by `zmij` (the formatter `serde_json` uses too, so `point`'s JSON,
-/// tables and batches print one value alike). Non-finite values (never produced
-/// by the solvers) print as `null`.
+/// tables and batches print one value alike). A value that is not there (not
+/// finite: a period where none was found) prints as `null`.
 pub fn num(x: f64) -> String {
     let mut text = Vec::with_capacity(24);
-    push_num(&mut text, &mut zmij::Buffer::new(), x);
+    push_num(&mut text, &mut zmij::Buffer::new(), x, b"null");
     // zmij writes ASCII only.
     String::from_utf8_lossy(&text).into_owned()
 }
@@ -51,13 +51,23 @@ where
     String::from_utf8_lossy(&w.into_inner().unwrap_or_default()).into_owned()
 }
 
-/// Append the shortest text of `x` to `line` (`null` where not finite): the one
-/// place a number's text is made ([`num`] and table rows use it).
-fn push_num(line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64) {
+/// Append the shortest text of `x` to `line` (`missing` where not finite:
+/// `null` in JSON, an empty CSV field): the one place a number's text is
+/// made ([`num`] and table rows use it).
+fn push_num(line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64, missing: &[u8]) {
     if x.is_finite() {
         line.extend_from_slice(fmt.format_finite(x).as_bytes());
     } else {
-        line.extend_from_slice(b"null");
+        line.extend_from_slice(missing);
+    }
+}
+
+/// Append `x`, a whole number (a count, a period), without a fraction.
+fn push_int(line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64, missing: &[u8]) {
+    if x.is_finite() && x.fract() == 0.0 && x.abs() < 9e15 {
+        line.extend_from_slice((x as i64).to_string().as_bytes());
+    } else {
+        push_num(line, fmt, x, missing);
     }
 }
 
@@ -78,6 +88,8 @@ pub struct TableWriter<W: Write> {
     out: W,
     format: Format,
     columns: Vec<&'static str>,
+    /// Which columns hold whole numbers ([`TableWriter::with_integers`]).
+    integers: Vec<bool>,
     rows: usize,
     /// The shape as a CSV field (quoted when it holds a comma or a quote).
     csv_shape: String,
@@ -97,6 +109,7 @@ impl<W: Write> TableWriter<W> {
         Ok(TableWriter {
             out,
             format,
+            integers: vec![false; columns.len()],
             columns,
             rows: 0,
             csv_shape: csv_field(shape),
@@ -105,27 +118,45 @@ impl<W: Write> TableWriter<W> {
         })
     }
 
-    /// One row (values in column order, each printed as [`num`] prints it);
-    /// the shape is the one given to [`TableWriter::new`].
+    /// The columns named `names` hold whole numbers: printed without a
+    /// fraction (`1`, not `1.0`).
+    #[must_use]
+    pub fn with_integers(mut self, names: &[&str]) -> Self {
+        self.integers = self.columns.iter().map(|c| names.contains(c)).collect();
+        self
+    }
+
+    /// One row (values in column order, each printed as [`num`] prints it, a
+    /// whole-number column without a fraction; a value not there is `null` in
+    /// JSON and an empty CSV field); the shape is the one given to
+    /// [`TableWriter::new`].
     pub fn row(&mut self, cells: &[f64]) -> io::Result<()> {
         debug_assert_eq!(cells.len(), self.columns.len());
         let (line, fmt) = (&mut self.line, &mut self.fmt);
+        let missing: &[u8] = if self.format == Format::Csv { b"" } else { b"null" };
+        let cell = |line: &mut Vec<u8>, fmt: &mut zmij::Buffer, i: usize, x: f64| {
+            if self.integers[i] {
+                push_int(line, fmt, x, missing);
+            } else {
+                push_num(line, fmt, x, missing);
+            }
+        };
         match self.format {
             Format::Csv => {
                 line.extend_from_slice(self.csv_shape.as_bytes());
-                for cell in cells {
+                for (i, x) in cells.iter().enumerate() {
                     line.push(b',');
-                    push_num(line, fmt, *cell);
+                    cell(line, fmt, i, *x);
                 }
                 line.push(b'\n');
             }
             Format::Json => {
                 line.extend_from_slice(if self.rows > 0 { b",\n{" } else { b"\n{" });
-                for (i, (c, cell)) in self.columns.iter().zip(cells).enumerate() {
+                for (i, (c, x)) in self.columns.iter().zip(cells).enumerate() {
                     line.extend_from_slice(if i > 0 { b",\"" } else { b"\"" });
                     line.extend_from_slice(c.as_bytes());
                     line.extend_from_slice(b"\":");
-                    push_num(line, fmt, *cell);
+                    cell(line, fmt, i, *x);
                 }
                 line.push(b'}');
             }

@@ -28,7 +28,9 @@ pub struct TableArgs {
 /// body on a system: [`general_table`]): its conditions and columns.
 struct Grid {
     points: Vec<fricosc::Conditions>,
-    over_t: Vec<f64>,
+    /// Each point's velocity as given (`vbar` or `vhat`; `vhat/T` where given so).
+    given: Vec<f64>,
+    over_t: bool,
     columns: Vec<&'static str>,
 }
 
@@ -48,7 +50,7 @@ fn grid(a: &TableArgs, on_system: bool) -> Result<Grid> {
         return Err(Error::TooLarge { what: what.into(), count: total, limit });
     }
     let over_t = a.velocity.over_t();
-    let mut g = Grid { points: Vec::with_capacity(total as usize), over_t: vec![], columns: vec![] };
+    let mut g = Grid { points: Vec::with_capacity(total as usize), given: vec![], over_t, columns: vec![] };
     for &amp in amps {
         for &t in &ts {
             for &phase in &phases {
@@ -62,30 +64,31 @@ fn grid(a: &TableArgs, on_system: bool) -> Result<Grid> {
                         a.common.conditions(fricosc::Velocity::Vhat(vhat), amp, Some((t, phase)))?
                     };
                     g.points.push(c);
-                    if over_t {
-                        g.over_t.push(v);
-                    }
+                    g.given.push(v);
                 }
             }
         }
     }
-    g.columns = vec!["vhat", "amp", "tangential_amp", "phase", "mu_ratio"];
+    // The velocity as given: vbar or vhat on a system, vhat (or vhat/T, and
+    // the vhat it makes) under a tangential oscillation.
+    g.columns = match (over_t, on_system && !is_vhat) {
+        (true, _) => vec!["vhat_over_t", "vhat"],
+        (false, true) => vec!["vbar"],
+        (false, false) => vec!["vhat"],
+    };
+    g.columns.extend(["amp", "tangential_amp", "phase", "mu_ratio", "reduction"]);
     if on_system {
         g.columns.extend(["period", "standard_error", "error_estimate"]);
-    } else {
-        g.columns.push("reduction");
-    }
-    if over_t {
-        g.columns.insert(0, "vhat_over_t");
     }
     Ok(g)
 }
 
 /// A table under oscillation in the sliding direction (`system` none), or of
 /// a body on a system (`fricosc::system`): every (amp, T, phase, velocity),
-/// columns (`vhat_over_t`), vhat, amp, tangential_amp, phase, mu_ratio, then
-/// reduction, or on a system period (empty where none was found),
-/// standard_error (empty where none) and error_estimate (a curved body's).
+/// columns: the velocity as given (`vhat_over_t` and `vhat`, `vhat`, or on a
+/// system `vbar`), amp, tangential_amp, phase, mu_ratio, reduction, and on a
+/// system period (a whole number; empty in CSV, null in JSON, where none was
+/// found), standard_error (where none) and error_estimate.
 fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::system::System>) -> Result<()> {
     if system.is_some() && (a.common.method.stepping_with(true)?.is_some() || a.velocity.over_t()) {
         return Err(Error::Parse {
@@ -99,7 +102,8 @@ fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::
         st.check(shape)?;
     }
     let or_nan = |x: Option<f64>| x.unwrap_or(f64::NAN);
-    // Each row's values after the grid's own (vhat/T where given, vhat, amp, T, phase).
+    // Each row's values after its inputs: mu, reduction, and on a system the
+    // period, standard error and estimate.
     let rows = g
         .points
         .par_iter()
@@ -108,27 +112,28 @@ fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::
                 (Some(sys), _) => {
                     let r = fricosc::system::solve(shape, c, &sys)?;
                     let period = r.period.map(|k| k as f64);
-                    [r.mu_ratio, or_nan(period), or_nan(r.standard_error), r.error_estimate]
+                    [r.mu_ratio, r.ratio().reduction, or_nan(period), or_nan(r.standard_error), r.error_estimate]
                 }
                 (None, stepping) => {
                     let r = match stepping {
                         Some(st) => fricosc::stepper::evaluate(shape, c, st)?.ratio,
                         None => shape.ratio(c)?,
                     };
-                    [r.mu_ratio, r.reduction, f64::NAN, f64::NAN]
+                    [r.mu_ratio, r.reduction, f64::NAN, f64::NAN, f64::NAN]
                 }
             })
         })
         .collect::<Result<Vec<_>>>()?;
-    // The row's first column: vhat/T where the grid has it.
-    let (first, width) = (usize::from(g.over_t.is_empty()), g.columns.len());
-    let mut w =
-        TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), g.columns).map_err(io_err)?;
-    for (k, (c, r)) in g.points.iter().zip(&rows).enumerate() {
+    let width = g.columns.len();
+    let mut w = TableWriter::new(io::BufWriter::new(io::stdout().lock()), a.format, shape.name(), g.columns)
+        .map_err(io_err)?
+        .with_integers(&["period"]);
+    for ((c, r), &v) in g.points.iter().zip(&rows).zip(&g.given) {
         let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
-        let over_t = g.over_t.get(k).copied().unwrap_or(f64::NAN);
-        let row = [over_t, c.as_vhat(), c.amp(), t, phase, r[0], r[1], r[2], r[3]];
-        w.row(&row[first..first + width]).map_err(io_err)?;
+        let row = [v, c.as_vhat(), c.amp(), t, phase, r[0], r[1], r[2], r[3], r[4]];
+        // Without vhat/T the given velocity is the only velocity column.
+        let cells = if g.over_t { &row[..width] } else { &[&row[..1], &row[2..=width]].concat()[..] };
+        w.row(cells).map_err(io_err)?;
     }
     w.finish().map_err(io_err)
 }

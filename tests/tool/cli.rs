@@ -407,7 +407,11 @@ fn point_on_a_system_reports_the_attractor() {
     let r =
         fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vhat(0.3, 0.5).unwrap(), &sys).unwrap();
     assert_eq!(v["mu_ratio"].as_f64().unwrap(), r.mu_ratio);
-    assert_eq!(v["period"], 1);
+    assert_eq!((&v["period"], &v["regime"], &v["vhat"]), (&1.into(), &"period 1".into(), &0.3.into()));
+    assert_eq!(v["reduction"].as_f64(), Some(1.0 - r.mu_ratio));
+    // The velocity as given: vbar 0.6 stays 0.6 (its vhat is 0.3).
+    let given = json(&fricosc(&["point", "--vbar", "0.6", "--amp", "0.5", "--system-stiffness", "1"], None));
+    assert!(given["vbar"] == 0.6 && given.get("vhat").is_none(), "{given}");
     assert_eq!(v["events"].as_array().unwrap().len(), r.events.len());
     // A table on the system: each row the library's attractor.
     let table = ["table", "--vbar", "0.6,1.2", "--amp", "0.5", "--system-stiffness", "1", "--frequency-ratio", "0.5"];

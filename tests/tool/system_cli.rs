@@ -192,3 +192,33 @@ fn a_scene_on_a_system() {
         refused(&["scene", path.to_str().unwrap()], None, says);
     }
 }
+
+/// A table on a system as a rig owner reads it: the velocity as given
+/// (`vbar 0.3`, not the `vhat` it makes, 0.15000000000000002), `reduction`
+/// beside `mu_ratio`, the period a whole number, and where none was found
+/// an empty CSV field (a literal `null` was written) and JSON's `null`.
+#[test]
+fn a_table_on_a_system_reads_as_given() {
+    let args = ["table", "--vbar", "0.3", "--amp", "0.5,1.5", "--system-stiffness", "1", "--frequency-ratio"];
+    let csv = stdout(&[&args[..], &["0.5", "--damping", "0.05", "--format", "csv"]].concat(), None);
+    let mut lines = csv.lines();
+    let header = "shape,vbar,amp,tangential_amp,phase,mu_ratio,reduction,period,standard_error,error_estimate";
+    assert_eq!(lines.next(), Some(header));
+    let sys = System::new(1.0, 0.5, 0.05).unwrap();
+    for (line, amp) in lines.zip([0.5, 1.5]) {
+        let r = solve(&Shape::flat(), &Conditions::vbar(0.3, amp).unwrap(), &sys).unwrap();
+        let cells: Vec<&str> = line.split(',').collect();
+        assert_eq!(&cells[..3], &["flat", "0.3", &amp.to_string()], "{line}");
+        assert_eq!(cells[5].parse::<f64>().unwrap(), r.mu_ratio);
+        assert_eq!(cells[6].parse::<f64>().unwrap(), 1.0 - r.mu_ratio);
+        assert_eq!((cells[7], cells[8]), ("1", ""), "{line}");
+        assert_eq!(cells[9].parse::<f64>().unwrap(), r.error_estimate);
+    }
+    // No period (undamped at the stick resonance): empty in CSV, null in JSON.
+    let none = ["table", "--vbar", "0.3", "--amp", "0.5", "--system-stiffness", "1", "--frequency-ratio", "1.41"];
+    let csv = stdout(&[&none[..], &["--format", "csv"]].concat(), None);
+    let row: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
+    assert!(row[7].is_empty() && row[8].parse::<f64>().unwrap() > 0.0 && !csv.contains("null"), "{csv}");
+    let json: serde_json::Value = serde_json::from_str(&stdout(&none, None)).unwrap();
+    assert!(json["rows"][0]["period"].is_null(), "{json}");
+}

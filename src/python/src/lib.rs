@@ -320,7 +320,16 @@ fn point_system<'py>(
         sys = sys.with_springs(n).map_err(to_py)?;
     }
     let r = py.detach(|| fricosc::system::solve(&shape.inner, &c, &sys)).map_err(to_py)?;
-    pythonize::pythonize(py, &r).map_err(serialise_err)
+    /// The report with its regime and reduction, as `fricosc point` prints them.
+    #[derive(serde::Serialize)]
+    struct Named {
+        regime: String,
+        reduction: f64,
+        #[serde(flatten)]
+        report: fricosc::system::SystemReport,
+    }
+    let named = Named { regime: r.regime(), reduction: r.ratio().reduction, report: r };
+    pythonize::pythonize(py, &named).map_err(serialise_err)
 }
 
 /// One point as `fricosc point` reports it: a dict.

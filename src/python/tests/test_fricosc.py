@@ -596,6 +596,8 @@ def test_point_on_a_system_is_the_command_lines() -> None:
     theirs = json.loads(cli("point", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1",
                             "--frequency-ratio", "0.5", "--damping", "0.3"))
     assert mine["mu_ratio"] == theirs["mu_ratio"] and mine["period"] == theirs["period"] == 1
+    assert mine["regime"] == theirs["regime"] == "period 1" and mine["reduction"] == theirs["reduction"]
+    assert mine["error_estimate"] == theirs["error_estimate"] and mine["multipliers"] == theirs["multipliers"]
     cone = fricosc.point("cone", vhat=0.3, amp=0.5, system_stiffness=1.0, frequency_ratio=0.5, springs=32)
     theirs = json.loads(cli("point", "--shape", "cone", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1",
                             "--frequency-ratio", "0.5", "--springs", "32"))

@@ -227,6 +227,16 @@ impl SystemReport {
     pub fn ratio(&self) -> crate::Ratio {
         crate::Ratio { mu_ratio: self.mu_ratio, reduction: 1.0 - self.mu_ratio }
     }
+
+    /// The attractor's regime in words: `period k`, or `no period within N
+    /// periods (a long-time mean)`.
+    #[must_use]
+    pub fn regime(&self) -> String {
+        match self.period {
+            Some(k) => format!("period {k}"),
+            None => format!("no period within {} periods (a long-time mean)", self.periods_run),
+        }
+    }
 }
 
 /// The reduced state of the period map: `(x, x', f)` at `tau = 0` and the phase.

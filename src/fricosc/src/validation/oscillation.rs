@@ -55,11 +55,7 @@ fn exact_row(
 ) -> Result<(f64, String, Option<f64>)> {
     if let Some(sys) = system {
         let r = crate::system::solve(shape, c, sys)?;
-        let regime = match r.period {
-            Some(k) => format!("period {k}"),
-            None => "no period (a long-time mean)".into(),
-        };
-        return Ok((r.mu_ratio, regime, Some(r.error_estimate)));
+        return Ok((r.mu_ratio, r.regime(), Some(r.error_estimate)));
     }
     let e = crate::combined::evaluate(shape, c)?;
     let regime = match &e.spring {
