@@ -310,8 +310,8 @@ pub struct MethodArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub steps_per_period: Option<usize>,
     /// Springs of an MDR foundation: with --method stepping 1 to 1e8 (default 1000); on a system
-    /// (--system-stiffness) 4 to 16384 (default 256; compared with half as many for the error
-    /// estimate, which falls like 1/N^2).
+    /// (--system-stiffness, or batch rows with system_stiffness) 32 to 16384 (default 256;
+    /// compared with N/8, N/4 and N/2 for the error estimate).
     #[arg(long, allow_hyphen_values = true)]
     pub springs: Option<usize>,
 }

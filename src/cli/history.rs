@@ -79,7 +79,7 @@ pub struct HistoryArgs {
     /// Uniform samples over all periods (event times are added).
     #[arg(long, default_value_t = 400)]
     pub samples: usize,
-    /// Springs summed for curved shapes (default 4000; on a system 256, 4 to 16384).
+    /// Springs summed for curved shapes (default 4000; on a system 256, 32 to 16384).
     #[arg(long)]
     pub springs: Option<usize>,
     /// Curved shapes: report these springs too (positions x/x_c, comma list; JSON only).

@@ -32,7 +32,7 @@ pub struct PlotArgs {
     /// The body on a system with mass and stiffness: the curves are its attractors'.
     #[command(flatten)]
     pub system: crate::cmd::SystemPoint,
-    /// With --system-stiffness, a curved body: its springs (4 to 16384, default 256).
+    /// With --system-stiffness, a curved body: its springs (32 to 16384, default 256).
     #[arg(long, requires = "system_stiffness")]
     pub springs: Option<usize>,
     /// With --overlay and a column mu: the Coulomb coefficient (mu_ratio = mu / mu0).

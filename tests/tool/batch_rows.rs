@@ -61,7 +61,7 @@ fn written(rows: &[(String, fricosc::Ratio)]) -> String {
 /// `batch` on `text` agrees with the serial reading: the same rows written
 /// back, or the same row at fault.
 fn agrees(text: &str) -> Result<(), TestCaseError> {
-    let got = fricosc_cli::batch::evaluate(text, "t", None);
+    let got = fricosc_cli::batch::evaluate(text, "t", fricosc_cli::batch::Method::default());
     match (serial(text), got) {
         (Ok(rows), Ok(batch)) => {
             let mut out = vec![];

@@ -55,13 +55,13 @@ proptest! {
 
     #[test]
     fn batch_reader_never_panics(text in mutated()) {
-        let _ = fricosc_cli::batch::evaluate(&text, "fuzz", None);
+        let _ = fricosc_cli::batch::evaluate(&text, "fuzz", fricosc_cli::batch::Method::default());
     }
 
     #[test]
     fn batch_reader_on_json_like_input(rows in prop::collection::vec((".{0,12}", any_f64(), any_f64()), 0..5)) {
         let body: Vec<String> = rows.iter().map(|(s, v, a)| format!(r#"{{"shape":{:?},"vbar":{v:?},"amp":{a:?}}}"#, s)).collect();
-        let _ = fricosc_cli::batch::evaluate(&format!("[{}]", body.join(",")), "fuzz", None);
+        let _ = fricosc_cli::batch::evaluate(&format!("[{}]", body.join(",")), "fuzz", fricosc_cli::batch::Method::default());
     }
 
     #[test]

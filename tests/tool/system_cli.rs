@@ -52,6 +52,14 @@ fn batch_rows_on_a_system_are_the_librarys() {
     let out = stdout(&["batch", "--format", "csv", "-"], Some(csv));
     let last: Vec<&str> = out.lines().nth(1).unwrap().split(',').collect();
     assert_eq!(last[6].parse::<f64>().unwrap(), flat.mu_ratio);
+    // --springs serves a curved body's rows (batch --help says so; it was
+    // refused), checked as the library checks it.
+    let sys = System::new(2.0, 0.8, 0.1).unwrap().with_springs(64).unwrap();
+    let cone64 = solve(&Shape::cone(), &Conditions::vbar(0.3, 1.5).unwrap(), &sys).unwrap();
+    let out = stdout(&["batch", rows.to_str().unwrap(), "--springs", "64"], None);
+    let v: Vec<serde_json::Value> = out.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!((v[0]["mu_ratio"].as_f64(), v[1]["mu_ratio"].as_f64()), (Some(flat.mu_ratio), Some(cone64.mu_ratio)));
+    refused(&["batch", rows.to_str().unwrap(), "--springs", "16"], None, "invalid springs = 16");
 }
 
 /// A row's system is checked before any output, by name.

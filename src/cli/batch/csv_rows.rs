@@ -1,10 +1,11 @@
 //! `batch` in CSV (the `csv` crate reads and writes): every column kept,
 //! `mu_ratio,reduction` appended, or filled where the header has them.
 
-use super::{changed, digest, number, too_many, Inputs, Job, Open, Read, Shapes, CHUNK, MAX_LINE, MAX_STREAM_ROWS};
+use super::{
+    changed, digest, number, too_many, Inputs, Job, Method, Open, Read, Shapes, CHUNK, MAX_LINE, MAX_STREAM_ROWS,
+};
 use crate::error::{Error, Result};
 use crate::output::io_of;
-use fricosc::stepper::Stepping;
 use fricosc::Ratio;
 use std::io::{self, BufRead, Write};
 
@@ -297,8 +298,8 @@ impl Records {
 /// CSV: every record checked in a first pass (an input of one chunk is then
 /// computed and written from it), then read again a chunk at a time,
 /// compared with the first pass, evaluated in parallel and written.
-pub(super) fn stream_csv(open: &Open, source: &str, stepping: Option<Stepping>, out: &mut dyn Write) -> Result<u64> {
-    let mut shapes = Shapes::new(stepping);
+pub(super) fn stream_csv(open: &Open, source: &str, method: Method, out: &mut dyn Write) -> Result<u64> {
+    let mut shapes = Shapes::new(method);
     let werr = |e: io::Error| Error::write("stdout", e);
     let mut records = Records::new(open()?, source)?;
     let mut chunk = Chunk::default();
@@ -373,7 +374,7 @@ mod tests {
                 Ok(Box::new(io::Cursor::new(t.into_bytes())))
             };
             let mut out = vec![];
-            let r = stream_csv(&open, "f.csv", None, &mut out);
+            let r = stream_csv(&open, "f.csv", Method::default(), &mut out);
             let lines = out.iter().filter(|&&b| b == b'\n').count();
             if edited {
                 let e = r.unwrap_err().to_string();
@@ -392,7 +393,7 @@ mod tests {
     fn line_ends_split_between_reads_count_once() {
         let text = "shape,vbar,amp\r\n\r\nflat,0.3,0.5\r\nflat,0.3,0.5\r\rflat,x,0.5\r\n";
         let open = || -> Result<Box<dyn BufRead>> { Ok(Box::new(io::BufReader::with_capacity(1, text.as_bytes()))) };
-        let e = stream_csv(&open, "t.csv", None, &mut vec![]).unwrap_err().to_string();
+        let e = stream_csv(&open, "t.csv", Method::default(), &mut vec![]).unwrap_err().to_string();
         assert!(e.contains("line 6: 'vbar' is not a finite number"), "{e}");
     }
 }

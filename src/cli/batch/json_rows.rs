@@ -2,11 +2,10 @@
 //! read once by `serde_json`: its text borrowed from the input, its wanted
 //! fields converted, every other one checked and skipped.
 
-use super::{changed, digest, too_many, Inputs, Job, Open, Read, Shapes};
+use super::{changed, digest, too_many, Inputs, Job, Method, Open, Read, Shapes};
 use super::{CHUNK, MAX_LINE, MAX_ROWS, MAX_STREAM_ROWS};
 use crate::error::{Error, Result};
 use crate::json::{NumberOf, StringOf};
-use fricosc::stepper::Stepping;
 use fricosc::Ratio;
 use rayon::prelude::*;
 use serde::de::{self, Deserializer, MapAccess, Visitor};
@@ -287,9 +286,9 @@ pub struct Batch<'a> {
 /// input in errors. The rows are read and checked one after another (the
 /// first at fault is the one named, before any fault of an evaluation); each
 /// chunk of them is evaluated in parallel while the next is read.
-pub fn evaluate<'a>(text: &'a str, source: &str, stepping: Option<Stepping>) -> Result<Batch<'a>> {
+pub fn evaluate<'a>(text: &'a str, source: &str, method: Method) -> Result<Batch<'a>> {
     let mut array = ArrayRows::new(text).map_err(|reason| Error::Parse { context: source.into(), reason })?;
-    let mut shapes = Shapes::new(stepping);
+    let mut shapes = Shapes::new(method);
     let mut batch = Batch { rows: vec![], results: vec![], replace: vec![] };
     let (mut pending, mut failed) = (vec![], None);
     loop {
@@ -507,8 +506,8 @@ fn emit(
 
 /// JSON Lines: chunks of lines read serially, checked, evaluated and
 /// formatted in parallel; blank lines skipped.
-pub(super) fn stream_lines(open: &Open, source: &str, stepping: Option<Stepping>, out: &mut dyn Write) -> Result<u64> {
-    let mut shapes = Shapes::new(stepping);
+pub(super) fn stream_lines(open: &Open, source: &str, method: Method, out: &mut dyn Write) -> Result<u64> {
+    let mut shapes = Shapes::new(method);
     let flush = |out: &mut dyn Write| out.flush().map_err(|e| Error::write("stdout", e));
     // Pass 1: every chunk checked, its bytes' hash kept. An input of one
     // chunk is read once: computed and written from what was checked.

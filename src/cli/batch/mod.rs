@@ -122,22 +122,31 @@ struct Job {
     system: Option<fricosc::system::System>,
 }
 
+/// How a batch's rows are solved: by the stepping peer, or exactly (a curved
+/// body on a system as `springs` springs, default 256).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Method {
+    pub stepping: Option<Stepping>,
+    pub springs: Option<usize>,
+}
+
 /// The shapes of a batch, each distinct string parsed (and checked) once.
 struct Shapes {
     index: HashMap<String, u32>,
     list: Vec<Shape>,
     stepping: Option<Stepping>,
+    springs: Option<usize>,
 }
 
 impl Shapes {
-    fn new(stepping: Option<Stepping>) -> Shapes {
-        Shapes { index: HashMap::new(), list: vec![], stepping }
+    fn new(method: Method) -> Shapes {
+        Shapes { index: HashMap::new(), list: vec![], stepping: method.stepping, springs: method.springs }
     }
 
     /// The shapes as they are now, to evaluate rows already checked while
     /// more are read (which may add shapes).
     fn snapshot(&self) -> Shapes {
-        Shapes { index: HashMap::new(), list: self.list.clone(), stepping: self.stepping }
+        Shapes { index: HashMap::new(), list: self.list.clone(), stepping: self.stepping, springs: self.springs }
     }
 
     /// A new chunk of a streamed batch begins: the rows of the last one are done.
@@ -208,6 +217,10 @@ impl Shapes {
             Some(_) if self.stepping.is_some() => return Err("rows on a system are solved exactly only".into()),
             Some(k) => {
                 let sys = fricosc::system::System::new(k, omega.unwrap_or(0.0), zeta.unwrap_or(0.0)).map_err(err)?;
+                let sys = match self.springs {
+                    Some(n) => sys.with_springs(n).map_err(err)?,
+                    None => sys,
+                };
                 if sys.frequency_ratio() == 0.0 && !self.list[shape as usize].is_flat() {
                     return Err("a massless body (frequency_ratio 0) on a curved contact is not solved".into());
                 }
@@ -328,16 +341,11 @@ fn number(text: &str, name: &str) -> std::result::Result<f64, String> {
 
 /// Stream a JSON Lines or CSV batch read twice from `input`; `source` names
 /// it. Returns the number of rows.
-pub fn stream(
-    format: Format,
-    input: &crate::twopass::TwoPass,
-    stepping: Option<Stepping>,
-    out: &mut dyn Write,
-) -> Result<u64> {
+pub fn stream(format: Format, input: &crate::twopass::TwoPass, method: Method, out: &mut dyn Write) -> Result<u64> {
     let open = || input.next_pass();
     match format {
-        Format::JsonLines => json_rows::stream_lines(&open, input.source(), stepping, out),
-        Format::Csv => csv_rows::stream_csv(&open, input.source(), stepping, out),
+        Format::JsonLines => json_rows::stream_lines(&open, input.source(), method, out),
+        Format::Csv => csv_rows::stream_csv(&open, input.source(), method, out),
         Format::Json => Err(Error::Internal { what: "a JSON array is not streamed".into() }),
     }
 }
@@ -402,7 +410,7 @@ mod tests {
         let row = |shape: &'static str, vbar: f64| -> Row {
             Ok((shape, Inputs([vbar, 1.0, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN])))
         };
-        let mut shapes = Shapes::new(None);
+        let mut shapes = Shapes::new(Method::default());
         let mut jobs = vec![];
         fn read<'r>(r: &'r Row) -> Read<'r> {
             r.as_ref().map(|(s, i)| (*s, i)).map_err(|e| *e)
@@ -434,13 +442,14 @@ pub struct BatchArgs {
 }
 
 pub fn run(a: BatchArgs) -> Result<()> {
-    let stepping: Option<Stepping> = a.method.stepping()?;
+    // --springs serves the rows on a system with the exact method.
+    let method = Method { stepping: a.method.stepping_with(true)?, springs: a.method.system_springs() };
     let (file, format) = (a.file, a.format);
     let path = file.clone().unwrap_or_else(|| "-".into());
     match Format::choose(format.as_deref(), &path)? {
         Format::Json => {
             let (text, source) = read_input(file)?;
-            let rows = evaluate(&text, &source, stepping)?;
+            let rows = evaluate(&text, &source, method)?;
             let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
             rows.write(&mut out).and_then(|()| out.flush()).map_err(io_err)
         }
@@ -450,7 +459,7 @@ pub fn run(a: BatchArgs) -> Result<()> {
             // of one chunk (65,536 rows) once.
             let input = crate::twopass::TwoPass::open(&path)?;
             let mut out = io::BufWriter::with_capacity(1 << 16, io::stdout().lock());
-            stream(streamed, &input, stepping, &mut out).map(|_| ())
+            stream(streamed, &input, method, &mut out).map(|_| ())
         }
     }
 }

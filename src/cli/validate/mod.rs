@@ -46,7 +46,7 @@ pub struct ValidateArgs {
     /// A table on a system with mass and stiffness (one table: compared with the attractors).
     #[command(flatten)]
     pub system: crate::cmd::SystemPoint,
-    /// With --system-stiffness, a curved body: its springs (4 to 16384, default 256).
+    /// With --system-stiffness, a curved body: its springs (32 to 16384, default 256).
     #[arg(long, requires = "system_stiffness")]
     pub springs: Option<usize>,
     /// Largest acceptable |mu_ratio - exact| (exit 1 beyond it).

@@ -7,7 +7,7 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     if let Ok(text) = std::str::from_utf8(data) {
-        if let Ok(batch) = fricosc_cli::batch::evaluate(text, "fuzz", None) {
+        if let Ok(batch) = fricosc_cli::batch::evaluate(text, "fuzz", fricosc_cli::batch::Method::default()) {
             let mut out = vec![];
             batch.write(&mut out).unwrap();
             let rows: Vec<serde_json::Value> = serde_json::from_slice(&out).unwrap();

@@ -438,8 +438,20 @@ fn system_of(spec: &super::SystemSpec, kx: f64, omega: f64, source: &str) -> Res
             reason: format!("system.damping_n_s_per_m = {c:?}: must be finite and >= 0"),
         });
     }
-    crate::system::System::new(k / kx, omega * (m / kx).sqrt(), c / (2.0 * (k * m).sqrt()))
-        .map_err(|e| Error::Parse { context: source.into(), reason: format!("system: {e}") })
+    crate::system::System::new(k / kx, omega * (m / kx).sqrt(), c / (2.0 * (k * m).sqrt())).map_err(|e| {
+        // The ratio refused, and the scene's values it is made of.
+        let from = match &e {
+            Error::InvalidParameter { name: "system-stiffness", .. } => "kappa = K/kx, from stiffness_n_per_m",
+            Error::InvalidParameter { name: "frequency-ratio", .. } => {
+                "Omega = omega sqrt(m/kx), from mass_kg and the frequency"
+            }
+            Error::InvalidParameter { name: "damping", .. } => {
+                "zeta = c/(2 sqrt(K m)), from damping_n_s_per_m, stiffness_n_per_m and mass_kg"
+            }
+            _ => "the system",
+        };
+        Error::Parse { context: source.into(), reason: format!("system ({from}): {e}") }
+    })
 }
 
 /// The mean indentation: given, or solved from the mean normal force (with a note saying so).

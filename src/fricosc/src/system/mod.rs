@@ -67,17 +67,17 @@ impl System {
     /// [`Error::InvalidParameter`] unless `stiffness` is finite and `> 0`, and
     /// the others finite and `>= 0` (each at most 1e6).
     pub fn new(stiffness: f64, frequency_ratio: f64, damping: f64) -> Result<System> {
-        for (name, v) in [("system-stiffness", stiffness), ("frequency-ratio", frequency_ratio), ("damping", damping)] {
+        if !(stiffness > 0.0 && stiffness <= 1e6) {
+            return Err(Error::param(
+                "system-stiffness",
+                stiffness,
+                "must be > 0 and <= 1e6 (without a system spring nothing drives the body)",
+            ));
+        }
+        for (name, v) in [("frequency-ratio", frequency_ratio), ("damping", damping)] {
             if !(v.is_finite() && (0.0..=1e6).contains(&v)) {
                 return Err(Error::param(name, v, "must be finite, >= 0 and <= 1e6"));
             }
-        }
-        if stiffness == 0.0 {
-            return Err(Error::param(
-                "system-stiffness",
-                0.0,
-                "must be > 0 (without a system spring nothing drives the body)",
-            ));
         }
         Ok(System { stiffness, frequency_ratio, damping, springs: DEFAULT_SPRINGS })
     }
@@ -172,10 +172,12 @@ fn check_resolvable(p: &Params, contact: f64) -> Result<()> {
 fn check_settles(p: &Params, limit: usize) -> Result<()> {
     let periods = 1.0 / (std::f64::consts::TAU * p.kappa * p.vhat);
     if p.vhat > 0.0 && periods > limit as f64 / 4.0 {
+        let about =
+            if periods < 1e15 { format!("about {}", periods.round() as u64) } else { "far more than 1e15".into() };
         let reason = format!(
-            "the system spring pulls the body into steady sliding only after about {} periods of the drive \
-             (vhat {}); fricosc runs at most {limit}",
-            crate::error::Amount(periods.round()),
+            "the system spring pulls the body into steady sliding only after {about} periods of the drive \
+             (vhat {}), more than a quarter of the {limit} periods run (the rest must hold the attractor): \
+             a stiffer system or a faster drive settles sooner",
             crate::error::Amount(p.vhat)
         );
         return Err(Error::param("system-stiffness", p.kappa, &reason));
