@@ -64,10 +64,9 @@ fn push_num(line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64, missing: &[u8]) 
 
 /// Append `x`, a whole number (a count, a period), without a fraction.
 fn push_int(line: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64, missing: &[u8]) {
-    if x.is_finite() && x.fract() == 0.0 && x.abs() < 9e15 {
-        line.extend_from_slice((x as i64).to_string().as_bytes());
-    } else {
-        push_num(line, fmt, x, missing);
+    match x.is_finite() && x.fract() == 0.0 && x.abs() < 9e15 {
+        true => line.extend_from_slice((x as i64).to_string().as_bytes()),
+        false => push_num(line, fmt, x, missing),
     }
 }
 
@@ -134,12 +133,9 @@ impl<W: Write> TableWriter<W> {
         debug_assert_eq!(cells.len(), self.columns.len());
         let (line, fmt) = (&mut self.line, &mut self.fmt);
         let missing: &[u8] = if self.format == Format::Csv { b"" } else { b"null" };
-        let cell = |line: &mut Vec<u8>, fmt: &mut zmij::Buffer, i: usize, x: f64| {
-            if self.integers[i] {
-                push_int(line, fmt, x, missing);
-            } else {
-                push_num(line, fmt, x, missing);
-            }
+        let cell = |line: &mut Vec<u8>, fmt: &mut zmij::Buffer, i: usize, x: f64| match self.integers[i] {
+            true => push_int(line, fmt, x, missing),
+            false => push_num(line, fmt, x, missing),
         };
         match self.format {
             Format::Csv => {

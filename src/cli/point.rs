@@ -58,16 +58,14 @@ fn stepped(shape: &Shape, c: &Conditions, st: fricosc::stepper::Stepping) -> Res
 fn on_system(shape: &Shape, c: &Conditions, sys: &fricosc::system::System) -> Result<serde_json::Value> {
     let r = fricosc::system::solve(shape, c, sys)?;
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
-    let mut v = match c.velocity() {
-        fricosc::Velocity::Vbar(vbar) => serde_json::json!({"vbar": vbar}),
-        fricosc::Velocity::Vhat(vhat) => serde_json::json!({"vhat": vhat}),
+    // The velocity as given.
+    let (name, given) = match c.velocity() {
+        fricosc::Velocity::Vbar(v) => ("vbar", v),
+        fricosc::Velocity::Vhat(v) => ("vhat", v),
     };
-    let inputs = serde_json::json!({"amp": c.amp(), "tangential_amp": t, "phase": phase,
+    let mut v = serde_json::json!({(name): given, "amp": c.amp(), "tangential_amp": t, "phase": phase,
         "system_stiffness": sys.stiffness(), "frequency_ratio": sys.frequency_ratio(), "damping": sys.damping(),
         "regime": r.regime(), "reduction": r.ratio().reduction});
-    if let (serde_json::Value::Object(m), serde_json::Value::Object(i)) = (&mut v, inputs) {
-        m.extend(i);
-    }
     let body = to_json(&r)?;
     if let (serde_json::Value::Object(m), serde_json::Value::Object(b)) = (&mut v, body) {
         m.extend(b);

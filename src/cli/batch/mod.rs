@@ -217,10 +217,7 @@ impl Shapes {
             Some(_) if self.stepping.is_some() => return Err("rows on a system are solved exactly only".into()),
             Some(k) => {
                 let sys = fricosc::system::System::new(k, omega.unwrap_or(0.0), zeta.unwrap_or(0.0)).map_err(err)?;
-                let sys = match self.springs {
-                    Some(n) => sys.with_springs(n).map_err(err)?,
-                    None => sys,
-                };
+                let sys = self.springs.map_or(Ok(sys), |n| sys.with_springs(n)).map_err(err)?;
                 if sys.frequency_ratio() == 0.0 && !self.list[shape as usize].is_flat() {
                     return Err("a massless body (frequency_ratio 0) on a curved contact is not solved".into());
                 }

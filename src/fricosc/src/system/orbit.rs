@@ -3,7 +3,7 @@
 //! estimate.
 
 use super::period::Phases;
-use super::{expand, map_k, Reduced, SystemReport};
+use super::{expand, map_k, Reduced, SystemReport, MAX_STEPS};
 use nalgebra::{Matrix3, Vector3};
 
 /// Whether two states are the same phase and within `tol` (relative to 1 and the state).
@@ -28,13 +28,21 @@ const ROUNDED: f64 = 1e-8;
 
 /// The period-`k` orbit through (near) `s`, refined by Newton, with its
 /// multipliers, `mu`, events and error estimate; `None` if Newton does not
-/// close it to 1e-10, or if it is not stable (a multiplier of modulus `>= 1`,
-/// or none known: not the attractor the iteration tends to).
+/// close it (to 1e-10, or to the map's rounding), or if it does not attract
+/// (a multiplier of modulus `>= 1 - NEUTRAL`, or none known: not the
+/// attractor the iteration tends to).
 pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<(SystemReport, Reduced)> {
     let residual = |s: &Reduced| map_k(ph, s, k).0 .1 - s.1;
     let (mut jac, mut grad) = (Matrix3::identity(), Vector3::zeros());
     let mut last = f64::INFINITY;
+    // An iteration maps k periods seven times (the residual, six for the
+    // Jacobian); none starts that would end beyond the whole search's budget
+    // of twice its own steps.
+    let iteration = 7.0 * k as f64 * ph.steps_per_period();
     for _ in 0..12 {
+        if ph.steps_run() as f64 + iteration > NEWTON_BUDGET {
+            break;
+        }
         (jac, grad) = jacobian(ph, &s, k);
         let r = residual(&s);
         let Some(step) = (jac - Matrix3::identity()).lu().solve(&(-r)) else { break };
@@ -54,8 +62,15 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
     // The same map along other steps: where the map's own rounding (a stiff,
     // light body's 1e5 steps a period) exceeds CLOSED, Newton's orbit closes
     // only to it.
-    let perturbed: Vec<(Reduced, f64)> =
-        PERTURBED.iter().map(|&scale| map_k(&Phases::with_step_scale(ph.p, scale), &s, k)).collect();
+    let perturbed: Vec<(Reduced, f64)> = PERTURBED
+        .iter()
+        .map(|&scale| {
+            let other = Phases::with_step_scale(ph.p, scale);
+            let mapped = map_k(&other, &s, k);
+            ph.count(other.steps_run());
+            mapped
+        })
+        .collect();
     let rounding = perturbed.iter().map(|(e, _)| distance(e, &end)).fold(0.0, f64::max);
     let closed = CLOSED.max(4.0 * rounding).min(ROUNDED);
     let closes = |a: &Reduced, b: &Reduced| close(a, b, closed);
@@ -67,7 +82,7 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
         return orbit(ph, s, d, run);
     }
     let multipliers = multipliers(&jac)?;
-    if multipliers.iter().any(|[re, im]| re.hypot(*im) >= 1.0) {
+    if multipliers.iter().any(|[re, im]| re.hypot(*im) >= 1.0 - NEUTRAL) {
         return None;
     }
     let events = ph.period(s.0, expand(&ph.p, &s)).2;
@@ -87,6 +102,15 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
     };
     Some((report, s))
 }
+
+/// An orbit whose multiplier is within this of the unit circle is neutral,
+/// not attracting (an undamped body ringing at its own frequency while every
+/// spring slips: its state never settles, however close the orbit): it would
+/// take 1e7 periods to contract by a factor e.
+const NEUTRAL: f64 = 1e-7;
+
+/// Most sampling steps a search and its Newton iterations run in all.
+pub(super) const NEWTON_BUDGET: f64 = 2.0 * MAX_STEPS;
 
 /// The rounding of `mu = int f / int B` itself: a few ulps.
 pub(super) const ROUNDING: f64 = 8.0 * f64::EPSILON;

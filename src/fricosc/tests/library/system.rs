@@ -214,3 +214,16 @@ fn no_oscillation_is_mu_one_on_every_system() {
     let (s2, s3) = (slope(1e-2), slope(1e-3));
     assert!(s3 > 0.05 && (s2 / s3 - 1.0).abs() < 0.01, "{s2} {s3}");
 }
+
+/// Undamped above the stick resonance every spring comes to slip while the
+/// body rings at its own frequency for ever: Newton finds the orbit without
+/// that ringing (period 1, `mu` 1 - 7e-16), but its multipliers are on the
+/// unit circle (0.99999999987), so it is not the attractor reached, and the
+/// answer is the long-time mean with its estimate.
+#[test]
+fn a_neutral_orbit_is_not_the_attractor() {
+    let r = flat(&Conditions::vbar(0.3, 0.5).unwrap(), &System::new(1.0, 1.5, 0.0).unwrap()).unwrap();
+    assert_eq!((r.period, r.multipliers.as_ref()), (None, None), "{r:?}");
+    let gap = 1.0 - r.mu_ratio;
+    assert!(gap > 0.0 && gap <= r.error_estimate && r.error_estimate < 1e-7, "{r:?}");
+}
