@@ -53,6 +53,9 @@ pub enum Error {
         /// What was computed and the value it had.
         what: String,
     },
+    /// The solve was asked to stop ([`crate::interrupt::request`]).
+    #[error("interrupted")]
+    Interrupted,
     /// A request beyond the documented size limits (checked before the work).
     #[error("{what}: {count} is more than the limit of {limit}")]
     TooLarge {

@@ -60,6 +60,7 @@ pub mod contact;
 mod error;
 pub mod fit;
 mod integrate;
+pub mod interrupt;
 pub mod io;
 mod model;
 mod numerics;

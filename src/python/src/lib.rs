@@ -81,6 +81,49 @@ fn at_index(e: Error, index: usize) -> PyErr {
     }
 }
 
+/// Run `work` on a thread of its own with the GIL released, looking for
+/// Ctrl-C every [`POLL`]: on one, every solve on a system is asked to stop
+/// (`fricosc::interrupt`; it returns at its next period) and
+/// `KeyboardInterrupt` is raised once it has. A signal that came as the work
+/// ended is raised too, before any Python (numpy) code runs.
+fn interruptible<T: Send>(py: Python<'_>, work: impl FnOnce() -> fricosc::Result<T> + Send) -> PyResult<T> {
+    std::thread::scope(|scope| {
+        let (tx, rx) = std::sync::mpsc::channel();
+        // A panic is caught on the thread (and raised as an internal error), not carried out of the scope.
+        scope.spawn(move || tx.send(std::panic::catch_unwind(std::panic::AssertUnwindSafe(work))));
+        let rx = std::sync::Mutex::new(rx);
+        // The answer, none yet (`Ok(None)`), or the solve's thread ended without one (a panic).
+        let recv = |wait: Option<std::time::Duration>| {
+            use std::sync::mpsc::RecvTimeoutError::{Disconnected, Timeout};
+            let rx = rx.lock().map_err(|_| InternalError::new_err("a solve's channel was poisoned"))?;
+            let got = match wait {
+                Some(d) => rx.recv_timeout(d),
+                None => rx.recv().map_err(|_| Disconnected),
+            };
+            match got {
+                Ok(r) => Ok(Some(r)),
+                Err(Timeout) => Ok(None),
+                Err(Disconnected) => Err(InternalError::new_err("a solve ended without an answer (a panic)")),
+            }
+        };
+        loop {
+            let answer = py.detach(|| recv(Some(POLL)))?;
+            if let Err(e) = py.check_signals() {
+                fricosc::interrupt::request();
+                let _ = py.detach(|| recv(None));
+                fricosc::interrupt::clear();
+                return Err(e);
+            }
+            if let Some(r) = answer {
+                return r.map_err(|_| InternalError::new_err("a solve panicked (please report it)"))?.map_err(to_py);
+            }
+        }
+    })
+}
+
+/// How often a long solve looks for Ctrl-C ([`interruptible`]).
+const POLL: std::time::Duration = std::time::Duration::from_millis(50);
+
 fn serialise_err(e: impl std::fmt::Display) -> PyErr {
     InternalError::new_err(format!("converting the result: {e}"))
 }
@@ -319,7 +362,7 @@ fn point_system<'py>(
     if let Some(n) = springs {
         sys = sys.with_springs(n).map_err(to_py)?;
     }
-    let r = py.detach(|| fricosc::system::solve(&shape.inner, &c, &sys)).map_err(to_py)?;
+    let r = interruptible(py, || fricosc::system::solve(&shape.inner, &c, &sys))?;
     /// The report with its regime and reduction, as `fricosc point` prints them.
     #[derive(serde::Serialize)]
     struct Named {
@@ -374,7 +417,7 @@ fn history<'py>(
             .with_system(fricosc::system::System::new(k, om, z).and_then(|s| s.with_springs(springs)).map_err(to_py)?),
         None => opts,
     };
-    let h = py.detach(|| core_history(shape, &c, &opts)).map_err(to_py)?;
+    let h = interruptible(py, || core_history(shape, &c, &opts))?;
     let d = PyDict::new(py);
     d.set_item("shape", &h.shape)?;
     for (key, value) in [
@@ -456,7 +499,7 @@ fn validate<'py>(
     let shape = &shape.inner;
     let result = if table.is_oscillation() || system.is_some() {
         let rows = table.rows_as_oscillation(mu0, "table").map_err(to_py)?;
-        let v = py.detach(|| compare_oscillation(shape, &rows, &check)).map_err(to_py)?;
+        let v = interruptible(py, || compare_oscillation(shape, &rows, &check))?;
         pythonize::pythonize(py, &v)
     } else {
         let rows = table.rows(mu0, "table").map_err(to_py)?;

@@ -184,6 +184,7 @@ fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
     let mut n = 0;
     let spent = |budgets: f64| fd.steps_run() as f64 > budgets * MAX_STEPS;
     while n < MAX_CURVED_PERIODS && !(n >= MIN_PERIODS && spent(1.0)) {
+        crate::interrupt::check()?;
         n += 1;
         let now = run(&mut x, &mut v, &mut state, &mut per_period);
         if fd.chattered() {
@@ -195,6 +196,7 @@ fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
             let (mut mu, mut d) = (block(&per_period), distance(&seen[seen.len() - k], &now));
             let (mut last, mut change, mut rate) = (now.clone(), f64::INFINITY, 1.0);
             for _ in 0..REFINE {
+                crate::interrupt::check()?;
                 let mut next = last.clone();
                 for _ in 0..k {
                     next = run(&mut x, &mut v, &mut state, &mut per_period);

@@ -430,6 +430,7 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
     // At most MAX_STEPS sampling steps in all (a fast, undamped body takes many a period).
     let periods = MAX_PERIODS.min((MAX_STEPS / ph.steps_per_period()).max(MIN_PERIODS as f64) as usize);
     for n in 1..=periods {
+        crate::interrupt::check()?;
         let (next, int_f) = map_k(&ph, &s, 1);
         if ph.chattered() {
             return Err(chattering());
@@ -464,6 +465,7 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
             return if ph.chattered() { Err(chattering()) } else { Ok((r, Some((ph, at)))) };
         }
     }
+    crate::interrupt::check()?;
     let mean_b = crate::flat::mean_normal(amp) * std::f64::consts::TAU;
     let tail: Vec<f64> = per_period[periods / 2..].iter().map(|x| x / mean_b).collect();
     let m = batch_mean(&tail, 10);

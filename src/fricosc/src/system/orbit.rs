@@ -40,6 +40,10 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
     // of twice its own steps.
     let iteration = 7.0 * k as f64 * ph.steps_per_period();
     for _ in 0..12 {
+        // Interrupted: no orbit (the search returns the error at its next period).
+        if crate::interrupt::check().is_err() {
+            return None;
+        }
         if ph.steps_run() as f64 + iteration > NEWTON_BUDGET {
             break;
         }
