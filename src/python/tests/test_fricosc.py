@@ -618,6 +618,17 @@ def test_point_on_a_system_is_the_command_lines() -> None:
     assert cone["mu_ratio"] == theirs["mu_ratio"] and cone["error_estimate"] == theirs["error_estimate"]
     with pytest.raises(fricosc.InputError, match="massless"):
         fricosc.point("parabolic", vhat=0.3, amp=0.5, system_stiffness=1.0)
+    # Keywords that do not apply are refused, not ignored.
+    with pytest.raises(fricosc.InputError, match="frequency_ratio applies only with system_stiffness"):
+        fricosc.point("flat", 0.3, 0.5, frequency_ratio=0.5)
+    with pytest.raises(fricosc.InputError, match="damping applies only with system_stiffness"):
+        fricosc.history("flat", 0.3, 0.5, damping=0.1)
+    with pytest.raises(fricosc.InputError, match="frequency_ratio applies only"):
+        fricosc.validate({"vbar": [0.3], "amp": [0.5], "mu_ratio": [0.8]}, frequency_ratio=0.5)
+    with pytest.raises(fricosc.InputError, match="springs applies only with system_stiffness"):
+        fricosc.point("cone", 0.3, 0.5, springs=64)
+    with pytest.raises(fricosc.InputError, match="tol does not apply on a system"):
+        fricosc.point("cone", 0.3, 0.5, system_stiffness=1.0, frequency_ratio=0.5, tol=1e-6)
     table = {"vbar": [0.1, 0.5], "amp": [0.5, 0.5], "mu_ratio": [0.6, 0.9]}
     mine_v = fricosc.validate(table, system_stiffness=1.0, frequency_ratio=0.5, damping=0.3)
     with tempfile.TemporaryDirectory() as d:

@@ -245,8 +245,8 @@ def point(
     tangential_amp: Optional[float] = None,
     phase: Optional[float] = None,
     system_stiffness: Optional[float] = None,
-    frequency_ratio: float = 0.0,
-    damping: float = 0.0,
+    frequency_ratio: Optional[float] = None,
+    damping: Optional[float] = None,
     springs: Optional[int] = None,
 ) -> Dict[str, Any]:
     """Everything the solver reports at one point, as ``fricosc point`` prints it:
@@ -268,16 +268,19 @@ def point(
     if amp is None:
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
-    if system_stiffness is not None:
+    system = _system(system_stiffness, frequency_ratio, damping)
+    if system is not None:
+        if tol is not None:
+            raise InputError("tol does not apply on a system (a curved body's springs set its accuracy)")
         t, ph = _tangential(tangential_amp, phase, is_vhat) or (0.0, 0.0)
         a = _scalar(amp, "amp")
         vh = _scalar(v, "vhat") if is_vhat else _scalar(v, "vbar") * a
         sys_point: Dict[str, Any] = _fricosc.point_system(
-            _core(shape), vh, a, t, ph, _scalar(system_stiffness, "system_stiffness"),
-            _scalar(frequency_ratio, "frequency_ratio"), _scalar(damping, "damping"),
-            None if springs is None else _whole(springs, "springs"),
+            _core(shape), vh, a, t, ph, *system, None if springs is None else _whole(springs, "springs"),
         )
         return sys_point
+    if springs is not None:
+        raise InputError("springs applies only with system_stiffness (a curved body on a system)")
     tangential = _tangential(tangential_amp, phase, is_vhat)
     if tangential is not None:
         osc: Dict[str, Any] = _fricosc.point_oscillation(
@@ -288,14 +291,20 @@ def point(
     return result
 
 
-def _system(stiffness: Optional[float], frequency_ratio: float, damping: float) -> Optional[Tuple[float, float, float]]:
-    """``(kappa, Omega, zeta)`` of a system with mass and stiffness, if ``stiffness`` is given."""
+def _system(
+    stiffness: Optional[float], frequency_ratio: Optional[float], damping: Optional[float]
+) -> Optional[Tuple[float, float, float]]:
+    """``(kappa, Omega, zeta)`` of a system with mass and stiffness, if ``stiffness`` is given
+    (``frequency_ratio`` and ``damping`` default to 0; without it they are refused, not ignored)."""
     if stiffness is None:
+        for name, value in (("frequency_ratio", frequency_ratio), ("damping", damping)):
+            if value is not None:
+                raise InputError(f"{name} applies only with system_stiffness")
         return None
     return (
         _scalar(stiffness, "system_stiffness"),
-        _scalar(frequency_ratio, "frequency_ratio"),
-        _scalar(damping, "damping"),
+        0.0 if frequency_ratio is None else _scalar(frequency_ratio, "frequency_ratio"),
+        0.0 if damping is None else _scalar(damping, "damping"),
     )
 
 
@@ -341,8 +350,8 @@ def history(
     springs: Optional[int] = None,
     spring_at: Sequence[float] = (),
     system_stiffness: Optional[float] = None,
-    frequency_ratio: float = 0.0,
-    damping: float = 0.0,
+    frequency_ratio: Optional[float] = None,
+    damping: Optional[float] = None,
 ) -> Dict[str, Any]:
     """The normal force (times mu0) and the tangential force over ``periods``
     periods (the seed's Fig. 2), as ``fricosc history`` computes them: exact,
@@ -424,8 +433,8 @@ def validate(
     peer: Optional[int] = None,
     peer_springs: Optional[int] = None,
     system_stiffness: Optional[float] = None,
-    frequency_ratio: float = 0.0,
-    damping: float = 0.0,
+    frequency_ratio: Optional[float] = None,
+    damping: Optional[float] = None,
 ) -> Dict[str, Any]:
     """Compare another code's table with the exact values, as ``fricosc validate``
     does: the same JSON report as a dict (per-row errors and regimes, errors by
