@@ -189,6 +189,24 @@ fn a_scene_on_a_system() {
         let c = Conditions::vbar(row["vbar"].as_f64().unwrap(), 0.5).unwrap();
         assert_eq!(row["mu_ratio"].as_f64().unwrap(), solve(&Shape::flat(), &c, &system).unwrap().mu_ratio);
     }
+    // The system's own critical velocity and the rows' regimes from it: a
+    // row is `sliding` exactly where the system's answer is 1 (the stiff
+    // critical velocity, 1e-3 m/s apart here, was reported for every system).
+    let vbar_c = fricosc::system::critical_vbar(&Shape::flat(), 0.5, &system).unwrap().unwrap();
+    let v_crit = r["critical_velocity_m_per_s"].as_f64().unwrap();
+    assert_eq!(r["system_critical_velocity_m_per_s"].as_f64(), Some(vbar_c * v_crit));
+    let mut sweep = scene(r#"{"mass_kg": 0.01, "stiffness_n_per_m": 1e7, "damping_n_s_per_m": 30}"#);
+    sweep = sweep.replace(
+        r#""values_m_per_s": [1e-3, 3e-3]"#,
+        r#""sweep": {"start_m_per_s": 1e-4, "stop_m_per_s": 3e-3, "count": 30}"#,
+    );
+    std::fs::write(&path, sweep).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&stdout(&["scene", path.to_str().unwrap()], None)).unwrap();
+    for row in v[0]["rows"].as_array().unwrap() {
+        let (mu, sliding) = (row["mu_ratio"].as_f64().unwrap(), row["regime"] == "sliding");
+        assert_eq!(sliding, row["vbar"].as_f64().unwrap() >= vbar_c, "{row}");
+        assert_eq!(sliding, mu == 1.0, "{row}");
+    }
     for (bad, says) in [
         (r#"{"mass_kg": 0, "stiffness_n_per_m": 1e7}"#, "system.mass_kg"),
         (r#"{"mass_kg": 1, "stiffness_n_per_m": -1}"#, "system.stiffness_n_per_m"),

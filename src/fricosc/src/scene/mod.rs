@@ -259,7 +259,9 @@ pub struct Row {
     pub mean_normal_force_n: f64,
     /// What the springs do ([`crate::Shape::regime`]: `sliding` at or above the
     /// critical velocity; below it `permanent_contact`, `jumping_slip_first` or
-    /// `jumping_stick_first` for the flat punch, `mixed` or `jumping` for a curved contact).
+    /// `jumping_stick_first` for the flat punch, `mixed` or `jumping` for a
+    /// curved contact). On a system `sliding` from its own critical velocity,
+    /// below it what the contact does: `permanent_contact`, `mixed` or `jumping`.
     pub regime: crate::report::ContactRegime,
 }
 
@@ -277,6 +279,8 @@ pub struct Rows {
     normal: f64,
     /// The flat punch (its regime depends on the velocity).
     flat: bool,
+    /// On a system: the `vbar` from which it slides (infinite where never).
+    pub(crate) system_vbar: Option<f64>,
 }
 
 impl Rows {
@@ -292,7 +296,13 @@ impl Rows {
             mu_ratio: mu,
             mean_friction_force_n: mu * self.mu0 * self.normal,
             mean_normal_force_n: self.normal,
-            regime: crate::contact::regime::regime_of(self.flat, vbar, self.amp),
+            regime: match self.system_vbar {
+                None => crate::contact::regime::regime_of(self.flat, vbar, self.amp),
+                Some(c) if vbar >= c || self.amp == 0.0 => crate::report::ContactRegime::Sliding,
+                Some(_) if self.amp >= 1.0 => crate::report::ContactRegime::Jumping,
+                Some(_) if self.flat => crate::report::ContactRegime::PermanentContact,
+                Some(_) => crate::report::ContactRegime::Mixed,
+            },
         })
     }
 
@@ -343,8 +353,14 @@ pub struct SceneResult {
     pub kz_n_per_m: f64,
     /// Tangential contact stiffness [N/m].
     pub kx_n_per_m: f64,
-    /// Critical velocity (eq. 26) (m/s): no reduction at or above it.
+    /// Critical velocity (eq. 26) (m/s): the unit of `vbar`; on a stiff
+    /// system no reduction at or above it.
     pub critical_velocity_m_per_s: f64,
+    /// On a system: the velocity (m/s) from which its reduction vanishes
+    /// ([`crate::system::critical_vbar`] critical velocities); absent where
+    /// steady slip has no periodic response (then a warning says so).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub system_critical_velocity_m_per_s: Option<f64>,
     /// Static coefficient of friction (the limit `v -> 0+`).
     pub mu_static: f64,
     /// Period-averaged normal force (N).

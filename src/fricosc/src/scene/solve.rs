@@ -334,8 +334,17 @@ fn solve_amplitude(
     let system = s.system.as_ref().map(|spec| system_of(spec, kz * ratio, c.omega, source)).transpose()?;
     let vbars: Vec<f64> = c.velocities.iter().map(|v0| v0 / v_crit).collect();
     let mu_ratio = mu_ratios(&shape, &vbars, amp, system.as_ref(), progress)?;
+    let system_vbar = match &system {
+        Some(sys) => Some(crate::system::critical_vbar(&shape, amp, sys)?.unwrap_or(f64::INFINITY)),
+        None => None,
+    };
+    let mut warnings = warnings;
+    if system_vbar == Some(f64::INFINITY) {
+        warnings.push("on this system steady slip has no periodic response (an undamped slip resonance): the reduction does not vanish at any velocity".into());
+    }
+    let flat = shape.is_flat();
     let rows =
-        Rows { velocity: c.velocities.clone(), mu_ratio, v_crit, amp, mu0: c.mu0, normal: fbar, flat: shape.is_flat() };
+        Rows { velocity: c.velocities.clone(), mu_ratio, v_crit, amp, mu0: c.mu0, normal: fbar, flat, system_vbar };
     // Every number of the answer must be finite: an overflow names its field.
     let scalars = [
         ("e_star_pa", c.e_star),
@@ -381,6 +390,7 @@ fn solve_amplitude(
         kz_n_per_m: kz,
         kx_n_per_m: kz * ratio,
         critical_velocity_m_per_s: v_crit,
+        system_critical_velocity_m_per_s: system_vbar.map(|c| c * v_crit).filter(|v| v.is_finite()),
         mu_static,
         mean_normal_force_n: fbar,
         jumping: amp > 1.0,

@@ -28,6 +28,7 @@
 //! by `kappa/(1 + kappa)` (the springs in series): answered by the stiff
 //! solver exactly.
 
+mod critical;
 mod curved;
 mod mean;
 mod orbit;
@@ -35,6 +36,7 @@ mod period;
 mod phase;
 mod springs;
 
+pub use critical::critical_vbar;
 pub use curved::{DEFAULT_SPRINGS, MAX_CURVED_PERIODS, MAX_SPRINGS, MIN_SPRINGS};
 pub use period::SystemEvent;
 pub use phase::Kind;

@@ -227,3 +227,29 @@ fn a_neutral_orbit_is_not_the_attractor() {
     let gap = 1.0 - r.mu_ratio;
     assert!(gap > 0.0 && gap <= r.error_estimate && r.error_estimate < 1e-7, "{r:?}");
 }
+
+/// Where the reduction vanishes on a system (`system::critical_vbar`): for
+/// the flat punch without contact loss the closed form
+/// `|kappa + 1 - Omega^2 + i c| / |kappa - Omega^2 + i c|` (derived in `system/critical.rs`), and
+/// on every shape the solver's own answer: `mu = 1` a little above it, a
+/// reduction well beyond its estimate a little below (with contact loss, on
+/// a curved body). A stiff system's critical velocity (`vbar = 1`) was
+/// reported for every system.
+#[test]
+fn the_critical_velocity_on_a_system() {
+    for (kappa, om, zeta) in [(1.0, 0.5, 0.05), (4.0, 1.0, 0.2), (0.5, 0.3, 0.0), (1.0, 0.0, 0.0)] {
+        let c = 2.0 * zeta * f64::sqrt(kappa) * om;
+        let want = f64::hypot(kappa + 1.0 - om * om, c) / f64::hypot(kappa - om * om, c);
+        let got = fricosc::system::critical_vbar(&Shape::flat(), 0.7, &System::new(kappa, om, zeta).unwrap());
+        let got = got.unwrap().unwrap();
+        assert!((got - want).abs() <= 1e-13 * want, "{kappa} {om} {zeta}: {got} against {want}");
+    }
+    let sys = System::new(1.0, 0.5, 0.05).unwrap().with_springs(64).unwrap();
+    for (shape, amp) in [(Shape::flat(), 0.5), (Shape::flat(), 1.5), (Shape::parabolic(), 0.5), (Shape::cone(), 1.5)] {
+        let v = fricosc::system::critical_vbar(&shape, amp, &sys).unwrap().unwrap();
+        let at = |vbar: f64| solve(&shape, &Conditions::vbar(vbar, amp).unwrap(), &sys).unwrap();
+        let (above, below) = (at(v * 1.001), at(v * 0.99));
+        assert!(1.0 - above.mu_ratio <= above.error_estimate + 1e-15, "{} {amp}: {above:?}", shape.name());
+        assert!(1.0 - below.mu_ratio > 10.0 * below.error_estimate, "{} {amp}: {below:?}", shape.name());
+    }
+}
