@@ -7,8 +7,11 @@ use crate::export::{export_bytes, Format};
 use clap::Args;
 use fricosc::history::{History, Sample};
 impl crate::export::Report for History {
+    /// On a system also the body's lag behind the drive, velocity and the system's force.
     fn columns(&self) -> Vec<String> {
-        ["tau", "normal", "tangential", "event"].map(String::from).to_vec()
+        let body = self.samples.first().is_some_and(|x| x.body.is_some());
+        let extra: &[&str] = if body { &["body_lag", "body_velocity", "system_force"] } else { &[] };
+        ["tau", "normal", "tangential", "event"].iter().chain(extra).map(|c| c.to_string()).collect()
     }
 
     fn comment(&self) -> Option<String> {
@@ -26,7 +29,8 @@ impl crate::export::Report for History {
                 let ev = x.event.map(|e| {
                     serde_json::to_value(e).ok().and_then(|v| v.as_str().map(String::from)).unwrap_or_default()
                 });
-                vec![n(x.tau), n(x.normal), n(x.tangential), ev.unwrap_or_default()]
+                let body = x.body.iter().flat_map(|b| [n(b.body_lag), n(b.body_velocity), n(b.system_force)]);
+                [n(x.tau), n(x.normal), n(x.tangential), ev.unwrap_or_default()].into_iter().chain(body).collect()
             })
             .collect()
     }
@@ -37,21 +41,23 @@ impl crate::export::Report for History {
         let pts = |f: fn(&Sample) -> f64| self.samples.iter().map(|x| (x.tau, f(x))).collect::<Vec<_>>();
         let ymax = self.samples.iter().map(|x| x.normal).fold(0.0, f64::max) * 1.05 + 1e-12;
         // A backward slip (a tangential oscillation) takes the force below 0.
-        let ymin = self.samples.iter().map(|x| x.tangential).fold(0.0, f64::min) * 1.05;
-        let series = vec![
-            Series {
-                label: "μ_{0} × normal force".into(),
-                points: pts(|x| x.normal),
-                style: Style::line(OKABE_ITO[4]),
-                legend: true,
-            },
-            Series {
-                label: "tangential force".into(),
-                points: pts(|x| x.tangential),
-                style: Style::line(OKABE_ITO[5]).width(1.5),
-                legend: true,
-            },
+        let lowest = |x: &Sample| x.tangential.min(x.body.map_or(0.0, |b| b.system_force));
+        let ymin = self.samples.iter().map(lowest).fold(0.0, f64::min) * 1.05;
+        let line = |label: &str, f: fn(&Sample) -> f64, style| Series {
+            label: label.into(),
+            points: pts(f),
+            style,
+            legend: true,
+        };
+        let mut series = vec![
+            line("μ_{0} × normal force", |x| x.normal, Style::line(OKABE_ITO[4])),
+            line("tangential force", |x| x.tangential, Style::line(OKABE_ITO[5]).width(1.5)),
         ];
+        // On a system, the system spring's force on the body beside the contact's.
+        if self.samples.first().is_some_and(|x| x.body.is_some()) {
+            let system = |x: &Sample| x.body.map_or(f64::NAN, |b| b.system_force);
+            series.push(line("system force", system, Style::line(OKABE_ITO[2])));
+        }
         let tmax = self.samples.last().map_or(1.0, |x| x.tau);
         let unit = "force / (μ_{0} F_{0})";
         Some(Ok(Chart {

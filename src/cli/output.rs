@@ -117,8 +117,7 @@ impl<W: Write> TableWriter<W> {
         })
     }
 
-    /// The columns named `names` hold whole numbers: printed without a
-    /// fraction (`1`, not `1.0`).
+    /// The columns named `names` hold whole numbers: printed `1`, not `1.0`.
     #[must_use]
     pub fn with_integers(mut self, names: &[&str]) -> Self {
         self.integers = self.columns.iter().map(|c| names.contains(c)).collect();

@@ -83,12 +83,9 @@ fn grid(a: &TableArgs, on_system: bool) -> Result<Grid> {
     Ok(g)
 }
 
-/// A table under oscillation in the sliding direction (`system` none), or of
-/// a body on a system (`fricosc::system`): every (amp, T, phase, velocity),
-/// columns: the velocity as given (`vhat_over_t` and `vhat`, `vhat`, or on a
-/// system `vbar`), amp, tangential_amp, phase, mu_ratio, reduction, and on a
-/// system period (a whole number; empty in CSV, null in JSON, where none was
-/// found), standard_error (where none) and error_estimate.
+/// A table under oscillation in the sliding direction, or on a system: the velocity as given,
+/// amp, tangential_amp, phase, mu_ratio, reduction, and on a system period (a whole number;
+/// missing where none was found), standard_error (where none) and error_estimate.
 fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::system::System>) -> Result<()> {
     if system.is_some() && (a.common.method.stepping_with(true)?.is_some() || a.velocity.over_t()) {
         return Err(Error::Parse {

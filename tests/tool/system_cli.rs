@@ -95,6 +95,10 @@ fn a_curved_history_on_a_system() {
     let c = Conditions::vhat(0.15, 0.5).unwrap();
     let exact = fricosc::system::solve_discretised(&Shape::parabolic(), &c, &sys, 32).unwrap().mu_ratio;
     assert!((mean(2) / mean(1) - exact).abs() < 1e-6, "{} vs {exact}", mean(2) / mean(1));
+    // The body beside the forces: its mean velocity the drive's, the
+    // system's mean force the contact's.
+    assert_eq!(out.lines().nth(1), Some("tau,normal,tangential,event,body_lag,body_velocity,system_force"));
+    assert!((mean(4) - 0.15).abs() < 1e-9 && (mean(5) - mean(2)).abs() < 1e-6, "{} {}", mean(4), mean(5));
     refused(
         &["history", "--shape", "cone", "--vhat", "0.1", "--amp", "0.5", "--system-stiffness", "1"],
         None,

@@ -122,8 +122,7 @@ struct Job {
     system: Option<fricosc::system::System>,
 }
 
-/// How a batch's rows are solved: by the stepping peer, or exactly (a curved
-/// body on a system as `springs` springs, default 256).
+/// How rows are solved: by the stepping peer, or exactly (on a system a curved body's `springs`).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Method {
     pub stepping: Option<Stepping>,

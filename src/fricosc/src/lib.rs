@@ -90,7 +90,7 @@ pub mod spring {
 /// normal total in closed form and its tangential total over a grid of springs).
 pub mod history {
     pub use crate::contact::history::{
-        history, stepped_history, History, HistoryOptions, HistoryPoint, Sample, MAX_SAMPLES, MAX_SPRINGS,
+        history, stepped_history, Body, History, HistoryOptions, HistoryPoint, Sample, MAX_SAMPLES, MAX_SPRINGS,
         MAX_SPRING_WORK, MIN_CURVED_AMP,
     };
 }

@@ -443,6 +443,13 @@ fn history<'py>(
         .collect::<Result<_, _>>()
         .map_err(serialise_err)?;
     d.set_item("event", events)?;
+    // On a system, the body: its lag behind the drive, velocity, and the system's force.
+    if h.samples.first().is_some_and(|s| s.body.is_some()) {
+        let body = |f: fn(&fricosc::history::Body) -> f64| col_of(&h.samples, |s| s.body.map_or(f64::NAN, |b| f(&b)));
+        d.set_item("body_lag", body(|b| b.body_lag).into_pyarray(py))?;
+        d.set_item("body_velocity", body(|b| b.body_velocity).into_pyarray(py))?;
+        d.set_item("system_force", body(|b| b.system_force).into_pyarray(py))?;
+    }
     if !h.spring_positions.is_empty() {
         d.set_item("spring_positions", h.spring_positions.clone().into_pyarray(py))?;
         let flat: Vec<f64> = h.samples.iter().flat_map(|s| s.springs.iter().flatten().copied()).collect();
@@ -452,6 +459,11 @@ fn history<'py>(
         d.set_item("springs", arr)?;
     }
     Ok(d)
+}
+
+/// One value of every sample.
+fn col_of(samples: &[Sample], f: impl Fn(&Sample) -> f64) -> Vec<f64> {
+    samples.iter().map(f).collect()
 }
 
 /// A table as Python passes it: every column's name, and the numeric columns read.

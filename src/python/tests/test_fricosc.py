@@ -640,6 +640,10 @@ def test_point_on_a_system_is_the_command_lines() -> None:
     assert [r["exact"] for r in mine_v["rows"]] == [r["exact"] for r in theirs_v["rows"]]
     assert mine_v["system"]["stiffness"] == 1.0 and mine_v["by_regime"][0]["regime"] == "period 1"
     curved = fricosc.history("cone", vhat=0.3, amp=0.5, system_stiffness=1.0, frequency_ratio=0.5, samples=8)
+    body = json.loads(cli("history", "--shape", "cone", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1",
+                          "--frequency-ratio", "0.5", "--samples", "8"))
+    for key in ("body_lag", "body_velocity", "system_force"):
+        assert curved[key].tolist() == [s[key] for s in body["samples"]], key
     csv_text = cli("history", "--shape", "cone", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1",
                    "--frequency-ratio", "0.5", "--samples", "8", "--format", "csv")
     assert [float(r["tangential"]) for r in csv_rows(csv_text)] == list(curved["tangential"])

@@ -306,8 +306,9 @@ const ASYMPTOTIC: std::ops::RangeInclusive<f64> = 2.5..=6.5;
 /// springs (the first of its orbit, or the last run where none was found):
 /// its `mu`, period and springs, and at each of `taus` (ascending in
 /// `[0, 2 pi)`) the normal and tangential forces over the normal force at
-/// the mean indentation (`sum w_i B_i / sum w_i b_i`, `F / sum w_i b_i`).
-pub(crate) fn history(shape: &Shape, p: Params, n: usize, taus: &[f64]) -> Result<(SystemReport, Vec<[f64; 2]>)> {
+/// the mean indentation (`sum w_i B_i / sum w_i b_i`, `F / sum w_i b_i`),
+/// the body's position and velocity, and that normal force.
+pub(crate) fn history(shape: &Shape, p: Params, n: usize, taus: &[f64]) -> Result<(SystemReport, Vec<[f64; 5]>)> {
     if p.omega == 0.0 {
         return Err(massless());
     }
@@ -320,7 +321,7 @@ pub(crate) fn history(shape: &Shape, p: Params, n: usize, taus: &[f64]) -> Resul
     }
     let norm: f64 = nodes.iter().map(|(w, b)| w * b.max(0.0)).sum();
     let normal = |tau: f64| nodes.iter().map(|(w, b)| w * (b - p.amp * tau.cos()).max(0.0)).sum::<f64>() / norm;
-    let forces = taus.iter().zip(tangential).map(|(&tau, f)| [normal(tau), f / norm]).collect();
+    let forces = taus.iter().zip(tangential).map(|(&tau, [f, x, v])| [normal(tau), f / norm, x, v, norm]).collect();
     Ok((report(&found, found.error, nodes.len()), forces))
 }
 

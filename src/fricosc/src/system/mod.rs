@@ -225,6 +225,19 @@ pub struct SystemReport {
     pub springs: Option<usize>,
 }
 
+impl System {
+    /// The body at `tau` (position `x`, velocity `v`) under the drive of `c`:
+    /// the drive's lead `X_d - x` and the system's force `kappa (X_d - x) +
+    /// 2 zeta sqrt(kappa) Omega (X_d' - v)` (`X_d = vhat tau + T sin(tau + phase)`).
+    pub(crate) fn body(&self, c: &Conditions, tau: f64, x: f64, v: f64) -> (f64, f64) {
+        let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+        let (s, co) = (tau + phase).sin_cos();
+        let lead = c.as_vhat() * tau + t * s - x;
+        let damp = 2.0 * self.damping * self.stiffness.sqrt() * self.frequency_ratio;
+        (lead, self.stiffness * lead + damp * (c.as_vhat() + t * co - v))
+    }
+}
+
 impl SystemReport {
     /// `mu_ratio` as a [`crate::Ratio`] (its reduction `1 - mu_ratio`).
     #[must_use]
@@ -345,14 +358,14 @@ pub(crate) fn springs(shape: &crate::Shape, amp: f64, n: usize) -> Result<Vec<(f
 }
 
 /// One period of a curved body's attractor on `sys` ([`System::springs`]
-/// springs, `curved::history`): the report and the normal and tangential
-/// forces at `taus`.
+/// springs, `curved::history`): the report and at `taus` the normal and
+/// tangential forces, the body's position and velocity, and the forces' unit.
 pub(crate) fn curved_history(
     shape: &crate::Shape,
     c: &Conditions,
     sys: &System,
     taus: &[f64],
-) -> Result<(SystemReport, Vec<[f64; 2]>)> {
+) -> Result<(SystemReport, Vec<[f64; 5]>)> {
     curved::history(shape, params(shape, c, sys)?, sys.springs, taus)
 }
 
@@ -391,9 +404,10 @@ pub fn solve_discretised(shape: &crate::Shape, c: &Conditions, sys: &System, spr
     curved::discretised(shape, params(shape, c, sys)?, springs)
 }
 
-/// The contact force at `taus` (ascending, in `[0, 2 pi)`) over one period
-/// from the state `s` at `tau = 0` ([`attractor`]'s).
-pub(crate) fn sample((ph, s): &(Phases, Reduced), taus: &[f64]) -> Vec<f64> {
+/// The contact force, the body's position and velocity at `taus`
+/// (ascending, in `[0, 2 pi)`) over one period from the state `s` at `tau =
+/// 0` ([`attractor`]'s).
+pub(crate) fn sample((ph, s): &(Phases, Reduced), taus: &[f64]) -> Vec<[f64; 3]> {
     ph.sampled(s.0, expand(&ph.p, s), taus).3
 }
 

@@ -10,7 +10,7 @@
 //! after a switch) ends its phase at once. Contact is lost and regained at
 //! the closed-form zeros of `B`.
 
-use super::phase::{advance, Generator, Kind, Params, State, COS, INT_F, SIN, TAU, X, Y0};
+use super::phase::{advance, Generator, Kind, Params, State, COS, INT_F, SIN, TAU, V, X, Y0};
 use crate::numerics::root::bracketed;
 use nalgebra::SMatrix;
 use std::f64::consts::TAU as TWO_PI;
@@ -117,14 +117,14 @@ impl Phases {
         (kind, z, events)
     }
 
-    /// [`Phases::period`], and the contact force at each of `samples`
-    /// (ascending, in `[0, 2 pi)`).
+    /// [`Phases::period`], and the contact force, the body's position and
+    /// velocity at each of `samples` (ascending, in `[0, 2 pi)`).
     pub(crate) fn sampled(
         &self,
         mut kind: Kind,
         mut z: State,
         samples: &[f64],
-    ) -> (Kind, State, Vec<SystemEvent>, Vec<f64>) {
+    ) -> (Kind, State, Vec<SystemEvent>, Vec<[f64; 3]>) {
         let mut forces = Vec::with_capacity(samples.len());
         let contact = (self.p.amp > 1.0).then(|| {
             let a = (1.0 / self.p.amp).acos();
@@ -158,7 +158,8 @@ impl Phases {
             let event = if flips < MAX_FLIPS && budget { self.event_in(kind, &z, h, &end) } else { None };
             let reach = tau + event.map_or(h, |e| e.0);
             while let Some(&at) = samples.get(forces.len()).filter(|&&at| at <= reach) {
-                forces.push(self.p.force(kind, &advance(a, &z, (at - tau).max(0.0))));
+                let zs = advance(a, &z, (at - tau).max(0.0));
+                forces.push([self.p.force(kind, &zs), zs[X], zs[V]]);
             }
             if let Some((d, next)) = event {
                 in_step += 1;

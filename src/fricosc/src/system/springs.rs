@@ -243,9 +243,15 @@ impl Foundation {
 
     /// One period from `tau = 0` of the body `(x, x')` and `springs`
     /// (updated): the body's state at `2 pi` shifted back by a period of the
-    /// drive, `int F` over the period, and `F` at each of `samples`
-    /// (ascending in `[0, 2 pi)`).
-    pub(crate) fn period(&self, x: f64, v: f64, springs: &mut [Spring], samples: &[f64]) -> (f64, f64, f64, Vec<f64>) {
+    /// drive, `int F` over the period, and `F`, the body's position and
+    /// velocity at each of `samples` (ascending in `[0, 2 pi)`).
+    pub(crate) fn period(
+        &self,
+        x: f64,
+        v: f64,
+        springs: &mut [Spring],
+        samples: &[f64],
+    ) -> (f64, f64, f64, Vec<[f64; 3]>) {
         let mut z = self.p.start();
         (z[X], z[V], z[INT_F]) = (x, v, 0.0);
         let mut forces = Vec::with_capacity(samples.len());
@@ -278,7 +284,7 @@ impl Foundation {
                 let reach = tau + event.map_or(h, |e| e.0);
                 while let Some(&at) = samples.get(forces.len()).filter(|&&at| at <= reach) {
                     let zs = advance(&a, &z, (at - tau).max(0.0));
-                    forces.push(f.x * zs[X] + f.one + f.cos * zs[COS]);
+                    forces.push([f.x * zs[X] + f.one + f.cos * zs[COS], zs[X], zs[V]]);
                 }
                 if let Some((d, t)) = event {
                     in_step += 1;

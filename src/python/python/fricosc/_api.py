@@ -366,7 +366,8 @@ def history(
     the force slips both ways (events ``slip`` and ``backward_slip``). With
     ``system_stiffness`` (``frequency_ratio``, ``damping``): the body on a
     system with mass and stiffness, one period of its attractor (a curved
-    body's as its springs). ``springs``: a curved body's, default 4000 (256
+    body's as its springs), with the body's ``body_lag`` behind the drive,
+    ``body_velocity`` and the ``system_force`` on it (a body with mass). ``springs``: a curved body's, default 4000 (256
     on a system).
 
     >>> h = history("flat", vhat=0.2, amp=0.5, tangential_amp=1.5, phase=1.3, samples=100)

@@ -6,7 +6,7 @@
 //! `mu0 kz u0`; an MDR spring's per unit length in `mu0 E* u0` (the bound
 //! `(1 - G(z) - amp cos tau)_+`), summed over both sides of the foundation.
 
-use super::{HistoryOptions, Sample};
+use super::{Body, HistoryOptions, Sample};
 use crate::combined::{report, Oscillation};
 use crate::conditions::Conditions;
 use crate::error::Result;
@@ -44,7 +44,7 @@ pub(super) fn flat_samples(c: &Conditions, periods: usize, mut taus: Vec<(f64, O
             // the bound at tau reduced to the period, a rounding apart).
             let normal = (1.0 - o.amp * tau.cos()).max(0.0);
             let tangential = sp.force_at(b, d, tau).clamp(-normal, normal);
-            Sample { tau, normal, tangential, event, springs: vec![] }
+            Sample { tau, normal, tangential, event, springs: vec![], body: None }
         })
         .collect()
 }
@@ -81,7 +81,14 @@ pub(super) fn foundation_samples(
         let tangential = scale * springs.iter().map(|(b, s)| s.force_at(*b, d, tau)).sum::<f64>();
         let springs =
             picked.iter().map(|(b, s)| [(b.c - b.amp * tau.cos()).max(0.0), s.force_at(*b, d, tau)]).collect();
-        Sample { tau, normal: contact.static_force(1.0 - o.amp * tau.cos()) / f0, tangential, event: None, springs }
+        Sample {
+            tau,
+            normal: contact.static_force(1.0 - o.amp * tau.cos()) / f0,
+            tangential,
+            event: None,
+            springs,
+            body: None,
+        }
     });
     Ok(rows)
 }
@@ -121,7 +128,11 @@ pub(super) fn on_system(
         let samples = taus
             .iter()
             .zip(forces)
-            .map(|(&tau, [normal, f])| Sample { tau, normal, tangential: f, event: None, springs: vec![] })
+            .map(|(&tau, [normal, f, x, v, norm])| {
+                let (lag, force) = sys.body(c, tau, x, v);
+                let body = Some(Body { body_lag: lag, body_velocity: v, system_force: force / norm });
+                Sample { tau, normal, tangential: f, event: None, springs: vec![], body }
+            })
             .collect();
         return Ok(super::History::new(shape, c, units, vec![], samples));
     }
@@ -152,9 +163,11 @@ pub(super) fn on_system(
     let samples = taus
         .iter()
         .zip(forces)
-        .map(|(&(tau, event), f)| {
+        .map(|(&(tau, event), [f, x, v])| {
             let normal = (1.0 - c.amp() * tau.cos()).max(0.0);
-            Sample { tau, normal, tangential: f.clamp(-normal, normal), event, springs: vec![] }
+            let (lag, force) = sys.body(c, tau, x, v);
+            let body = Some(Body { body_lag: lag, body_velocity: v, system_force: force });
+            Sample { tau, normal, tangential: f.clamp(-normal, normal), event, springs: vec![], body }
         })
         .collect();
     Ok(super::History::new(shape, c, units, vec![], samples))

@@ -40,6 +40,24 @@ pub struct Sample {
     /// [`History::spring_positions`].
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Vec::is_empty"))]
     pub springs: Vec<[f64; 2]>,
+    /// On a system, the body with mass: its place and velocity and the
+    /// system spring's force.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub body: Option<Body>,
+}
+
+/// The body on a system at a sample: lengths in pre-slip lengths `l`, the
+/// force in the units of the tangential force.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Body {
+    /// The drive's lead on the body, `X_d - x`.
+    pub body_lag: f64,
+    /// The body's velocity `x'` (pre-slip lengths per radian of `omega t`).
+    pub body_velocity: f64,
+    /// The system's force on the body, `kappa (X_d - x) + 2 zeta sqrt(kappa)
+    /// Omega (X_d' - x')` (with the contact's, it accelerates the body).
+    pub system_force: f64,
 }
 
 /// A force history.
@@ -337,7 +355,7 @@ fn flat_samples(vbar: f64, amp: f64, periods: usize, mut taus: Vec<(f64, Option<
     taus.iter()
         .map(|&(tau, event)| {
             let (normal, tangential) = crate::flat::forces_at(&sp, amp, tau);
-            Sample { tau, normal, tangential, event, springs: vec![] }
+            Sample { tau, normal, tangential, event, springs: vec![], body: None }
         })
         .collect()
 }
@@ -383,7 +401,7 @@ fn foundation_samples(
                     [nrm, sp.as_ref().map_or(nrm, |s| amp * spring_force(s, tau))]
                 })
                 .collect();
-            Sample { tau, normal, tangential, event: None, springs }
+            Sample { tau, normal, tangential, event: None, springs, body: None }
         })
         .collect())
 }
@@ -433,7 +451,7 @@ pub fn stepped_history(c: &Conditions, periods: usize, steps_per_period: usize) 
                 None => crate::stepper::update(f, b, df),
             };
         }
-        samples.push(Sample { tau, normal: b, tangential: f, event: None, springs: vec![] });
+        samples.push(Sample { tau, normal: b, tangential: f, event: None, springs: vec![], body: None });
     }
     let units = format!("{UNITS} (time stepping)");
     Ok(History::new(&Shape::flat(), c, units, vec![], samples))
