@@ -104,6 +104,9 @@ fn a_curved_history_on_a_system() {
         None,
         "massless",
     );
+    // The option at fault is named (it was "invalid shape 'flat'").
+    refused(&[&args[..], &["--frequency-ratio", "0.5", "--periods", "2"]].concat(), None, "invalid periods");
+    refused(&[&args[..], &["--frequency-ratio", "0.5", "--spring-at", "0.5"]].concat(), None, "spring-at:");
 }
 
 /// `validate --system-stiffness`: a stepper's table on the system (the

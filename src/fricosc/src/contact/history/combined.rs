@@ -107,11 +107,14 @@ pub(super) fn on_system(
 ) -> Result<super::History> {
     use crate::error::Error;
     use crate::system::Kind;
-    if opts.periods != 1 || !opts.spring_at.is_empty() {
-        return Err(Error::InvalidShape {
-            spec: shape.name().into(),
-            reason: "a history on a system is one period of the contact's total force".into(),
-        });
+    // The option named as the user gives it, not the shape.
+    if opts.periods != 1 {
+        let reason = "a history on a system is one period of its attractor";
+        return Err(Error::param("periods", opts.periods as f64, reason));
+    }
+    if !opts.spring_at.is_empty() {
+        let reason = "a history on a system is the contact's total force: no chosen springs";
+        return Err(Error::Parse { context: "spring-at".into(), reason: reason.into() });
     }
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
     let units = format!(
