@@ -32,13 +32,15 @@ const ROUNDED: f64 = 1e-8;
 /// (a multiplier of modulus `>= 1 - NEUTRAL`, or none known: not the
 /// attractor the iteration tends to).
 pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<(SystemReport, Reduced)> {
-    let residual = |s: &Reduced| map_k(ph, s, k).0 .1 - s.1;
     let (mut jac, mut grad) = (Matrix3::identity(), Vector3::zeros());
     let mut last = f64::INFINITY;
-    // An iteration maps k periods seven times (the residual, six for the
+    // An iteration maps k periods four times (the residual, three for the
     // Jacobian); none starts that would end beyond the whole search's budget
     // of twice its own steps.
-    let iteration = 7.0 * k as f64 * ph.steps_per_period();
+    let iteration = 4.0 * k as f64 * ph.steps_per_period();
+    if ph.steps_run() as f64 + iteration > NEWTON_BUDGET {
+        return None;
+    }
     for _ in 0..12 {
         // Interrupted: no orbit (the search returns the error at its next period).
         if crate::interrupt::check().is_err() {
@@ -47,8 +49,9 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
         if ph.steps_run() as f64 + iteration > NEWTON_BUDGET {
             break;
         }
-        (jac, grad) = jacobian(ph, &s, k);
-        let r = residual(&s);
+        let base = map_k(ph, &s, k);
+        (jac, grad) = jacobian(ph, &s, k, &base);
+        let r = base.0 .1 - s.1;
         let Some(step) = (jac - Matrix3::identity()).lu().solve(&(-r)) else { break };
         s.1 += step;
         // Converged, or no longer converging: a step not below half the last
@@ -63,6 +66,16 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
         last = size;
     }
     let (end, int_f) = map_k(ph, &s, k);
+    // Not closed even to the most rounding allowed, or not attracting: no
+    // orbit (and no more maps; an orbit of period d closing after k = m d
+    // has the m-th powers of its multipliers).
+    if !close(&end, &s, ROUNDED) {
+        return None;
+    }
+    let multipliers = multipliers(&jac)?;
+    if multipliers.iter().any(|[re, im]| re.hypot(*im) >= 1.0 - NEUTRAL) {
+        return None;
+    }
     // The same map along other steps: where the map's own rounding (a stiff,
     // light body's 1e5 steps a period) exceeds CLOSED, Newton's orbit closes
     // only to it.
@@ -85,10 +98,6 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
     if let Some(d) = (1..k).find(|&d| k.is_multiple_of(d) && closes(&map_k(ph, &s, d).0, &s)) {
         return orbit(ph, s, d, run);
     }
-    let multipliers = multipliers(&jac)?;
-    if multipliers.iter().any(|[re, im]| re.hypot(*im) >= 1.0 - NEUTRAL) {
-        return None;
-    }
     let events = ph.period(s.0, expand(&ph.p, &s)).2;
     let norm = crate::flat::mean_normal(ph.p.amp) * std::f64::consts::TAU * k as f64;
     let mu_ratio = int_f / norm;
@@ -109,9 +118,11 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
 
 /// An orbit whose multiplier is within this of the unit circle is neutral,
 /// not attracting (an undamped body ringing at its own frequency while every
-/// spring slips: its state never settles, however close the orbit): it would
-/// take 1e7 periods to contract by a factor e.
-const NEUTRAL: f64 = 1e-7;
+/// spring slips: its state never settles, however close the orbit; rounding
+/// and a Jacobian taken across a grazing event put such multipliers at 1 -
+/// 2.5e-7 and 1 - 1.4e-5): it would take 1e4 periods, more than the 4,000
+/// run, to contract by a factor e.
+const NEUTRAL: f64 = 1e-4;
 
 /// Most sampling steps a search and its Newton iterations run in all.
 pub(super) const NEWTON_BUDGET: f64 = 2.0 * MAX_STEPS;
@@ -156,18 +167,20 @@ fn orbit_estimate(
 const PERTURBED: [f64; 3] = [0.9, 0.8, 0.7];
 
 /// The Jacobian of `P^k` at `s`, and the gradient of `int f` over its `k`
-/// periods, by central differences (steps `1e-6 (1 + |s_i|)`).
-fn jacobian(ph: &Phases, s: &Reduced, k: usize) -> (Matrix3<f64>, Vector3<f64>) {
+/// periods, by forward differences from `base = P^k(s)` (steps `1e-6 (1 +
+/// |s_i|)`, above the map's own rounding, 1e-10 of the state on a stiff
+/// body: relative errors about 1e-6, which leave Newton's convergence
+/// superlinear and the estimate's `(I - J)^-1` as good).
+fn jacobian(ph: &Phases, s: &Reduced, k: usize, (p0, f0): &(Reduced, f64)) -> (Matrix3<f64>, Vector3<f64>) {
     let mut j = Matrix3::zeros();
     let mut g = Vector3::zeros();
     for i in 0..3 {
         let h = 1e-6 * (1.0 + s.1[i].abs());
-        let (mut a, mut b) = (*s, *s);
+        let mut a = *s;
         a.1[i] += h;
-        b.1[i] -= h;
-        let ((pa, fa), (pb, fb)) = (map_k(ph, &a, k), map_k(ph, &b, k));
-        j.set_column(i, &((pa.1 - pb.1) / (2.0 * h)));
-        g[i] = (fa - fb) / (2.0 * h);
+        let (pa, fa) = map_k(ph, &a, k);
+        j.set_column(i, &((pa.1 - p0.1) / h));
+        g[i] = (fa - f0) / h;
     }
     (j, g)
 }

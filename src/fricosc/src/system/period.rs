@@ -15,6 +15,12 @@ use crate::numerics::root::bracketed;
 use nalgebra::SMatrix;
 use std::f64::consts::TAU as TWO_PI;
 
+/// The flat punch's longest sampling step, a 64th of the drive's period
+/// (the springs of a curved body keep a 256th): each event function of a
+/// phase then still has at most one extremum a step (the drive's terms
+/// `cos tau`, `sin tau` have theirs `pi` apart).
+const DRIVE_STEP: f64 = TWO_PI / 64.0;
+
 /// Most phases of zero length in a row before a phase is held for a step.
 const MAX_FLIPS: usize = 8;
 /// Most events in a row within one sampling step, and per spring of a
@@ -77,7 +83,7 @@ impl Phases {
         let gens = kinds.map(|k| p.generator(k));
         let steps = kinds.map(|k| {
             let a = gens[index(k)];
-            let h = scale * super::springs::sampling_step(&a);
+            let h = scale * super::springs::step_within(&a, DRIVE_STEP);
             (h, (a * h).exp())
         });
         let events = kinds.map(|k| with_slopes(&gens[index(k)], p.events(k)));

@@ -472,9 +472,14 @@ fn without_constant(a: &Generator) -> Generator {
 /// drive's `2 pi/256`): the body's rates are the roots of
 /// `Omega^2 r^2 + damp r + k = 0`.
 pub(crate) fn sampling_step(a: &Generator) -> f64 {
+    step_within(a, TWO_PI / 256.0)
+}
+
+/// A quarter of the fastest time scale of the phase `a`, at most `cap`.
+pub(crate) fn step_within(a: &Generator, cap: f64) -> f64 {
     let (c, k2) = (-a[(V, V)], -a[(V, X)]);
     let fastest = 0.5 * (c + (c * c + 4.0 * k2.abs()).sqrt());
-    (TWO_PI / 256.0).min(0.25 / fastest.max(1e-300))
+    cap.min(0.25 / fastest.max(1e-300))
 }
 
 #[cfg(test)]
