@@ -442,9 +442,14 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
     check_settles(&p, MAX_PERIODS)?;
     let ph = Phases::new(p);
     let start = p.start();
-    // In contact at the start where `amp <= 1` (at `amp = 1` the bound is 0
-    // there, the force too, and the first event comes at once).
-    let mut s = reduce(&p, if amp <= 1.0 { Kind::Stick } else { Kind::Free }, &start);
+    // In contact at the start where `amp < 1`; at `amp = 1` the bound is 0
+    // there: the spring touches as at a regain of contact.
+    let kind = match amp.partial_cmp(&1.0) {
+        Some(std::cmp::Ordering::Less) => Kind::Stick,
+        Some(std::cmp::Ordering::Equal) => p.on_contact(&start),
+        _ => Kind::Free,
+    };
+    let mut s = reduce(&p, kind, &start);
     let mut seen: Vec<Reduced> = vec![s];
     let mut per_period = vec![];
     let mut attempts = 0;

@@ -238,7 +238,7 @@ pub(crate) fn first_event<T: Copy>(
         // Below 0 at the start, or at 0 and falling (a spring touching at
         // `tau = 0` with `amp = 1`, its bound and force both 0): at once.
         let below = g1 < 0.0;
-        if (below && g0 < 0.0) || (g0 == 0.0 && s0 < 0.0) {
+        if below && g0 < 0.0 {
             first = Some((0.0, next));
             continue;
         }

@@ -253,3 +253,22 @@ fn the_critical_velocity_on_a_system() {
         assert!(1.0 - below.mu_ratio > 10.0 * below.error_estimate, "{} {amp}: {below:?}", shape.name());
     }
 }
+
+/// Every point of a grid answers (vbar 0.01 to 1.2, amp 0.1 to 3, the
+/// bench's system): a rule that ended a phase at once where its event
+/// function was exactly 0 and falling made a stick that started on its
+/// bound flip back and forth (an internal error, "a phase chattered", at
+/// 0.11818181818181818 and 0.18787878787878787 among others).
+#[test]
+fn every_point_of_a_grid_answers() {
+    let sys = System::new(1.0, 0.5, 0.05).unwrap();
+    for i in 0..40 {
+        for j in 0..40 {
+            let (vbar, amp) = (0.01 + 1.19 * i as f64 / 39.0, 0.1 + 2.9 * j as f64 / 39.0);
+            let r = flat(&Conditions::vbar(vbar, amp).unwrap(), &sys);
+            assert!(r.as_ref().is_ok_and(|r| r.period == Some(1)), "vbar {vbar} amp {amp}: {r:?}");
+        }
+    }
+    let r = flat(&Conditions::vbar(0.118_181_818_181_818_18, 0.187_878_787_878_787_87).unwrap(), &sys).unwrap();
+    assert!((r.mu_ratio - 0.846_624_943_216_667_8).abs() <= r.error_estimate + 1e-14, "{r:?}");
+}
