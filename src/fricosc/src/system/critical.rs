@@ -45,7 +45,8 @@ use std::f64::consts::TAU as TWO_PI;
 /// # Errors
 /// As [`super::solve`] for the shape and the amplitude.
 pub fn critical_vbar(shape: &crate::Shape, amp: f64, sys: &System) -> Result<Option<f64>> {
-    let c = Conditions::vhat(0.0, amp)?;
+    // The amplitude checked as every point's is; the drive at rest (module docs).
+    Conditions::vhat(0.0, amp)?;
     shape.check_amp(amp)?;
     if amp == 0.0 {
         return Ok(Some(0.0));
@@ -54,7 +55,7 @@ pub fn critical_vbar(shape: &crate::Shape, amp: f64, sys: &System) -> Result<Opt
         kappa: sys.stiffness,
         omega: sys.frequency_ratio,
         zeta: sys.damping,
-        vhat: c.as_vhat(),
+        vhat: 0.0,
         amp,
         t: 0.0,
         phase: 0.0,
@@ -139,8 +140,9 @@ impl Slip {
         };
         let d = at(0.0, 0.0);
         let m = Matrix2::from_columns(&[at(1.0, 0.0) - d, at(0.0, 1.0) - d]);
-        let fixed = (Matrix2::identity() - m).lu().solve(&d)?;
-        if !fixed.iter().all(|x| x.is_finite()) || (Matrix2::identity() - m).determinant().abs() < 1e-12 {
+        let lhs = Matrix2::identity() - m;
+        let fixed = lhs.lu().solve(&d)?;
+        if !fixed.iter().all(|x| x.is_finite()) || lhs.determinant().abs() < 1e-12 {
             return None;
         }
         (slip.start[X], slip.start[V]) = (fixed[0], fixed[1]);
@@ -172,12 +174,11 @@ impl Slip {
                 let n = ((hi - lo) / super::springs::sampling_step(&g)).ceil().max(1.0) as usize;
                 let h = (hi - lo) / n as f64;
                 let at = |t: f64| advance(&g, &z, t - a);
-                for k in 0..=n {
-                    best = best.max(lag(&at(lo + k as f64 * h)));
-                }
-                for k in 0..n {
-                    let (t0, t1) = (lo + k as f64 * h, lo + (k + 1) as f64 * h);
-                    if slope(&at(t0)) > 0.0 && slope(&at(t1)) < 0.0 {
+                let states: Vec<State> = (0..=n).map(|k| at(lo + k as f64 * h)).collect();
+                best = states.iter().map(lag).fold(best, f64::max);
+                for (k, w) in states.windows(2).enumerate() {
+                    if slope(&w[0]) > 0.0 && slope(&w[1]) < 0.0 {
+                        let (t0, t1) = (lo + k as f64 * h, lo + (k + 1) as f64 * h);
                         let t = crate::numerics::root::bracketed(|t| slope(&at(t)), t0, t1, 4.0 * f64::EPSILON).x;
                         best = best.max(lag(&at(t)));
                     }

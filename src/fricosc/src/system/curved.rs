@@ -22,10 +22,12 @@
 //! mu_{N/2})/3` where `N/8` to `N` show that asymptote (changes of one sign,
 //! the ratio of the last two near 4), its estimate `2 |R_N - R_{N/2}| + |mu_N -
 //! mu_{N/2}|/16`; otherwise `mu_N` with the sum of both changes. Measured
-//! against 4,096 springs on seven cases (paraboloid, cones with and without
-//! contact loss, `power:3`, `power:0.5`, `power:0.05`, a worn sphere) from 64
-//! to 2,048 springs: bounded at every level, 1.5 to 34 times the error at
-//! 128 to 256 springs. Each adds the orbits' closures (`attractor`); without
+//! against 8,192 springs on ten cases (paraboloids with and without a
+//! tangential drive, cones with and without contact loss, `power:3`,
+//! `power:0.5`, `power:0.05`, worn spheres, a pure slip) from 32 to 1,024
+//! springs: bounded at every level, 1.7 to 42 times the error at 256 springs
+//! (up to 360 at 128, where the Richardson value is at times far closer
+//! than its asymptote says). Each adds the orbits' closures (`attractor`); without
 //! a period the answer is `mu_N`'s long-time mean, whose error estimate
 //! (standard error and drift) is added.
 

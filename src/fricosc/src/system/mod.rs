@@ -197,9 +197,11 @@ pub(crate) const MAX_ORBIT: usize = 8;
 /// Most near-repeats refined by Newton before the search goes on without.
 const NEWTON_ATTEMPTS: usize = 3;
 
-/// The flat punch's steady state on a system.
+/// The steady state on a system, as the solver reports it (read, not built:
+/// `#[non_exhaustive]`).
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
 pub struct SystemReport {
     /// `mu_macro/mu0`: over the attractor's period, or the long-time mean.
     pub mu_ratio: f64,
@@ -238,7 +240,7 @@ impl System {
         let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
         let (s, co) = (tau + phase).sin_cos();
         let lead = c.as_vhat() * tau + t * s - x;
-        let damp = 2.0 * self.damping * self.stiffness.sqrt() * self.frequency_ratio;
+        let damp = phase::dashpot(self.stiffness, self.frequency_ratio, self.damping);
         (lead, self.stiffness * lead + damp * (c.as_vhat() + t * co - v))
     }
 }

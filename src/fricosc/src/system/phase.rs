@@ -86,7 +86,7 @@ impl Params {
     /// `(int f)' = f`.
     pub(crate) fn generator_of(&self, f: Linear) -> Generator {
         let (kappa, om2) = (self.kappa, self.omega * self.omega);
-        let damp = 2.0 * self.zeta * kappa.sqrt() * self.omega;
+        let damp = dashpot(kappa, self.omega, self.zeta);
         let (sp, cp) = self.phase.sin_cos();
         let mut a = Generator::zeros();
         a[(X, V)] = 1.0;
@@ -169,6 +169,12 @@ impl Params {
             Kind::Stick
         }
     }
+}
+
+/// The dashpot's coefficient in the seed's units, `c/(m omega) Omega^2 =
+/// 2 zeta sqrt(kappa) Omega` (`zeta = c/(2 sqrt(K m))`).
+pub(crate) fn dashpot(kappa: f64, omega: f64, zeta: f64) -> f64 {
+    2.0 * zeta * kappa.sqrt() * omega
 }
 
 /// Most terms of [`series`] (`None` beyond).
