@@ -482,3 +482,9 @@ pub fn write_file(option: &str, path: &str, text: &str) -> Result<()> {
     }
     crate::outdir::write_atomic(std::path::Path::new(path), text.as_bytes())
 }
+
+/// The attractor of `shape` under `c`, conditions with a system ([`fricosc::Conditions::with_system`]).
+pub fn system_report(shape: &fricosc::Shape, c: &fricosc::Conditions) -> Result<fricosc::system::SystemReport> {
+    let fricosc::Report::System(r) = shape.report(c)? else { return Err(Error::Internal { what: "no system".into() }) };
+    Ok(r)
+}

@@ -141,10 +141,7 @@ pub fn run(a: HistoryArgs) -> Result<()> {
                 .with_samples(a.samples)
                 .with_springs(a.springs.unwrap_or(DEFAULT_HISTORY_SPRINGS))
                 .with_spring_at(chosen);
-            let opts = match a.drive.system.system(a.springs)? {
-                Some(sys) => opts.with_system(sys),
-                None => opts,
-            };
+            let c = a.drive.system.system(a.springs)?.map_or(c, |sys| c.with_system(sys));
             fricosc::history::history(&shape, &c, &opts)?
         }
         Some(m) => {

@@ -22,7 +22,7 @@ pub fn run(a: PointArgs) -> Result<()> {
         (Some(_), Some(_)) => {
             return Err(Error::Parse { context: "--system-stiffness".into(), reason: "is solved exactly only".into() })
         }
-        (None, Some(sys)) => on_system(&shape, &c, &sys)?,
+        (None, Some(sys)) => on_system(&shape, &c, sys)?,
         (Some(st), None) => stepped(&shape, &c, st)?,
         (None, None) => to_json(&shape.report(&c)?)?,
     };
@@ -55,8 +55,8 @@ fn stepped(shape: &Shape, c: &Conditions, st: fricosc::stepper::Stepping) -> Res
 }
 
 /// A body on a system: the inputs and the attractor's report.
-fn on_system(shape: &Shape, c: &Conditions, sys: &fricosc::system::System) -> Result<serde_json::Value> {
-    let r = fricosc::system::solve(shape, c, sys)?;
+fn on_system(shape: &Shape, c: &Conditions, sys: fricosc::system::System) -> Result<serde_json::Value> {
+    let r = crate::cmd::system_report(shape, &c.with_system(sys))?;
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
     // The velocity as given.
     let (name, given) = match c.velocity() {

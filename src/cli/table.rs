@@ -107,7 +107,7 @@ fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::
         .map(|c| {
             Ok(match (system, stepping) {
                 (Some(sys), _) => {
-                    let r = fricosc::system::solve(shape, c, &sys)?;
+                    let r = crate::cmd::system_report(shape, &c.with_system(sys))?;
                     let period = r.period.map(|k| k as f64);
                     [r.mu_ratio, r.ratio().reduction, or_nan(period), or_nan(r.standard_error), r.error_estimate]
                 }

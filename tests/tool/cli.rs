@@ -405,7 +405,7 @@ fn point_on_a_system_reports_the_attractor() {
     let v = json(&fricosc(&[&args[..], &["--damping", "0.3"]].concat(), None));
     let sys = fricosc::system::System::new(1.0, 0.5, 0.3).unwrap();
     let r =
-        fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vhat(0.3, 0.5).unwrap(), &sys).unwrap();
+        crate::common::on_system(&fricosc::Shape::flat(), &fricosc::Conditions::vhat(0.3, 0.5).unwrap(), &sys).unwrap();
     assert_eq!(v["mu_ratio"].as_f64().unwrap(), r.mu_ratio);
     assert_eq!((&v["period"], &v["regime"], &v["vhat"]), (&1.into(), &"period 1".into(), &0.3.into()));
     assert_eq!(v["reduction"].as_f64(), Some(1.0 - r.mu_ratio));
@@ -424,12 +424,12 @@ fn point_on_a_system_reports_the_attractor() {
         let c = fricosc::Conditions::vhat(vhat, 0.5).unwrap();
         assert_eq!(
             row[5].parse::<f64>().unwrap(),
-            fricosc::system::solve(&fricosc::Shape::flat(), &c, &sys).unwrap().mu_ratio
+            crate::common::on_system(&fricosc::Shape::flat(), &c, &sys).unwrap().mu_ratio
         );
     }
     let curved =
         json(&fricosc(&[&args[..], &["--damping", "0.3", "--shape", "cone", "--springs", "32"]].concat(), None));
-    let r = fricosc::system::solve(
+    let r = crate::common::on_system(
         &fricosc::Shape::cone(),
         &fricosc::Conditions::vhat(0.3, 0.5).unwrap(),
         &sys.with_springs(32).unwrap(),

@@ -114,7 +114,7 @@ fn the_resonance_figure_is_the_systems_values() {
         let sys = fricosc::system::System::new(kappa, c.amp.unwrap(), zeta).unwrap();
         for p in c.points.iter().step_by(9) {
             let r =
-                fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vbar(p[0], amp).unwrap(), &sys)
+                crate::common::on_system(&fricosc::Shape::flat(), &fricosc::Conditions::vbar(p[0], amp).unwrap(), &sys)
                     .unwrap();
             assert_eq!(p[1], r.mu_ratio, "{} at {}", c.label, p[0]);
             if c.amp == Some(0.0) {
@@ -141,7 +141,7 @@ fn the_frequency_figure_is_the_systems_values() {
         let kappa = curve.amp.unwrap();
         for p in curve.points.iter().step_by(10) {
             let sys = fricosc::system::System::new(kappa, p[0], zeta).unwrap();
-            assert_eq!(p[1], fricosc::system::solve(&Shape::flat(), &c, &sys).unwrap().mu_ratio, "{}", curve.label);
+            assert_eq!(p[1], crate::common::on_system(&Shape::flat(), &c, &sys).unwrap().mu_ratio, "{}", curve.label);
         }
         let massless = crate::common::eval(&Shape::flat(), vbar * kappa / (1.0 + kappa), amp).unwrap();
         assert_eq!(curve.points[0][1], massless.ratio.mu_ratio);

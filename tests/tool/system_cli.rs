@@ -1,9 +1,10 @@
 //! The system's mass and stiffness through the command line: `batch` rows
 //! with `system_stiffness`, `frequency_ratio`, `damping` (each row the
-//! library's `system::solve`, bit for bit), histories of curved bodies on a
+//! library's `Shape::report` on the system, bit for bit), histories of curved bodies on a
 //! system, and the refusals (one line, exit 2, nothing on stdout).
+use crate::common::on_system as solve;
 use crate::common::run::run as fricosc;
-use fricosc::system::{solve, System};
+use fricosc::system::System;
 use fricosc::{Conditions, Shape};
 
 fn stdout(args: &[&str], stdin: Option<&str>) -> String {
@@ -93,7 +94,7 @@ fn a_curved_history_on_a_system() {
     let mean = |k: usize| rows.iter().map(|r| r[k]).sum::<f64>() / rows.len() as f64;
     let sys = System::new(1.0, 0.5, 0.05).unwrap();
     let c = Conditions::vhat(0.15, 0.5).unwrap();
-    let exact = fricosc::system::solve_discretised(&Shape::parabolic(), &c, &sys, 32).unwrap().mu_ratio;
+    let exact = fricosc::system::solve_discretised(&Shape::parabolic(), &c.with_system(sys), 32).unwrap().mu_ratio;
     assert!((mean(2) / mean(1) - exact).abs() < 1e-6, "{} vs {exact}", mean(2) / mean(1));
     // The body beside the forces: its mean velocity the drive's, the
     // system's mean force the contact's.
@@ -125,7 +126,7 @@ fn validate_compares_a_table_on_a_system() {
         }
         t
     };
-    let stepped = table(&|c| fricosc::stepper::system(&Shape::flat(), c, &sys, 1000, 40).unwrap());
+    let stepped = table(&|c| fricosc::stepper::system(&Shape::flat(), &c.with_system(sys), 1000, 40).unwrap());
     let forgot = table(&|c| Shape::flat().ratio(c).unwrap().mu_ratio);
     let args = ["validate", "-", "--system-stiffness", "1", "--frequency-ratio", "0.5", "--damping", "0.1"];
     let run = |t: &str, extra: &[&str]| fricosc(&[&args[..], extra].concat(), Some(t));

@@ -229,7 +229,7 @@ impl Shapes {
     fn evaluate(&self, j: &Job) -> fricosc::Result<Ratio> {
         let shape = &self.list[j.shape as usize];
         match (self.stepping, j.system) {
-            (_, Some(sys)) => fricosc::system::solve(shape, &j.conditions, &sys).map(|r| r.ratio()),
+            (_, Some(sys)) => shape.ratio(&j.conditions.with_system(sys)),
             (Some(st), None) => fricosc::stepper::evaluate(shape, &j.conditions, st).map(|e| e.ratio),
             (None, None) => shape.ratio(&j.conditions),
         }

@@ -392,7 +392,7 @@ pub fn user_with(
     Ok(f)
 }
 
-/// One amplitude's curve on a system ([`fricosc::system::solve`], the points on every core).
+/// One amplitude's curve on a system ([`fricosc::Conditions::with_system`], the points on every core).
 fn on_system(
     shape: &Shape,
     amp: f64,
@@ -411,7 +411,7 @@ fn on_system(
             } else {
                 fricosc::Conditions::vbar(x, amp)?
             };
-            Ok([x, fricosc::system::solve(shape, &c, sys)?.mu_ratio])
+            Ok([x, shape.ratio(&c.with_system(*sys))?.mu_ratio])
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Curve { label: format!("exact, du/u0 = {amp}"), kind: "exact".into(), equation: None, amp: Some(amp), points })

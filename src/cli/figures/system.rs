@@ -21,11 +21,7 @@ pub(super) fn resonance() -> Result<Figure> {
         let points = xs
             .iter()
             .map(|&v| {
-                Ok([
-                    v,
-                    fricosc::system::solve(&fricosc::Shape::flat(), &fricosc::Conditions::vbar(v, amp)?, &sys)?
-                        .mu_ratio,
-                ])
+                Ok([v, fricosc::Shape::flat().ratio(&fricosc::Conditions::vbar(v, amp)?.with_system(sys))?.mu_ratio])
             })
             .collect::<Result<Vec<_>>>()?;
         curves.push(Curve {
@@ -70,8 +66,8 @@ pub(super) fn frequency() -> Result<Figure> {
     for kappa in KAPPAS {
         let mut points = vec![];
         for &om in &omegas {
-            let r =
-                fricosc::system::solve(&fricosc::Shape::flat(), &c, &fricosc::system::System::new(kappa, om, zeta)?)?;
+            let sys = fricosc::system::System::new(kappa, om, zeta)?;
+            let r = crate::cmd::system_report(&fricosc::Shape::flat(), &c.with_system(sys))?;
             if r.period != Some(1) {
                 other.push(format!("K/k_{{x}} {kappa}, Ω {om}: period {:?}", r.period));
             }

@@ -3,6 +3,7 @@
 //! it is built; everything downstream trusts it.
 
 use crate::error::{check_nonneg, Error, Result};
+use crate::system::System;
 use std::f64::consts::TAU;
 
 /// Default relative quadrature tolerance of curved shapes: about what f64 allows.
@@ -45,6 +46,7 @@ pub struct Conditions {
     amp: f64,
     tangential: Option<(f64, f64)>,
     tol: f64,
+    system: Option<System>,
 }
 
 impl Conditions {
@@ -55,7 +57,13 @@ impl Conditions {
     pub fn vbar(vbar: f64, amp: f64) -> Result<Conditions> {
         check_nonneg("vbar", vbar)?;
         check_nonneg("amp", amp)?;
-        Ok(Conditions { velocity: Velocity::Vbar(vbar + 0.0), amp: amp + 0.0, tangential: None, tol: DEFAULT_TOL })
+        Ok(Conditions {
+            velocity: Velocity::Vbar(vbar + 0.0),
+            amp: amp + 0.0,
+            tangential: None,
+            tol: DEFAULT_TOL,
+            system: None,
+        })
     }
 
     /// The seed's problem at `vhat = vbar amp` (eq. 15) and `amp`, both finite
@@ -68,7 +76,13 @@ impl Conditions {
     pub fn vhat(vhat: f64, amp: f64) -> Result<Conditions> {
         check_nonneg("vhat", vhat)?;
         check_nonneg("amp", amp)?;
-        Ok(Conditions { velocity: Velocity::Vhat(vhat + 0.0), amp: amp + 0.0, tangential: None, tol: DEFAULT_TOL })
+        Ok(Conditions {
+            velocity: Velocity::Vhat(vhat + 0.0),
+            amp: amp + 0.0,
+            tangential: None,
+            tol: DEFAULT_TOL,
+            system: None,
+        })
     }
 
     /// These conditions with an oscillation in the sliding direction of
@@ -114,6 +128,37 @@ impl Conditions {
         } else {
             Err(Error::param("tol", tol, "must be finite, > 0 and < 1"))
         }
+    }
+
+    /// These conditions with the body on a system with mass and stiffness
+    /// ([`crate::system`]): [`crate::Shape::evaluate`], `ratio` and `report`
+    /// then answer with the body's attractor (a [`crate::Report::System`]).
+    ///
+    /// ```
+    /// use fricosc::system::System;
+    /// use fricosc::{Conditions, Report, Shape};
+    ///
+    /// let c = Conditions::vbar(0.3, 0.5)?.with_system(System::new(1.0, 0.5, 0.05)?);
+    /// let Report::System(r) = Shape::flat().report(&c)? else { unreachable!() };
+    /// assert_eq!(r.period, Some(1));
+    /// assert!(r.mu_ratio > 0.0 && r.mu_ratio < 1.0 && r.error_estimate < 1e-13);
+    /// # Ok::<(), fricosc::Error>(())
+    /// ```
+    #[must_use]
+    pub fn with_system(self, system: System) -> Conditions {
+        Conditions { system: Some(system), ..self }
+    }
+
+    /// These conditions without a system (the stiff problem).
+    #[must_use]
+    pub fn stiff(self) -> Conditions {
+        Conditions { system: None, ..self }
+    }
+
+    /// The system the body is on, if any.
+    #[must_use]
+    pub fn system(&self) -> Option<&System> {
+        self.system.as_ref()
     }
 
     /// The velocity as given.

@@ -362,7 +362,10 @@ fn point_system<'py>(
     if let Some(n) = springs {
         sys = sys.with_springs(n).map_err(to_py)?;
     }
-    let r = interruptible(py, || fricosc::system::solve(&shape.inner, &c, &sys))?;
+    let c = c.with_system(sys);
+    let Report::System(r) = interruptible(py, || shape.inner.report(&c))? else {
+        return Err(to_py(fricosc::Error::Internal { what: "a point on a system is reported as one".into() }));
+    };
     /// The report with its regime and reduction, as `fricosc point` prints them.
     #[derive(serde::Serialize)]
     struct Named {
@@ -412,10 +415,11 @@ fn history<'py>(
         .with_samples(samples)
         .with_springs(springs)
         .with_spring_at(spring_at);
-    let opts = match system {
-        Some((k, om, z)) => opts
-            .with_system(fricosc::system::System::new(k, om, z).and_then(|s| s.with_springs(springs)).map_err(to_py)?),
-        None => opts,
+    let c = match system {
+        Some((k, om, z)) => {
+            c.with_system(fricosc::system::System::new(k, om, z).and_then(|s| s.with_springs(springs)).map_err(to_py)?)
+        }
+        None => c,
     };
     let h = interruptible(py, || core_history(shape, &c, &opts))?;
     let d = PyDict::new(py);

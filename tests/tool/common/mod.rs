@@ -26,3 +26,16 @@ pub mod at {
 pub fn eval(shape: &fricosc::Shape, vbar: f64, amp: f64) -> fricosc::Result<fricosc::Evaluation> {
     shape.evaluate(&fricosc::Conditions::vbar(vbar, amp)?)
 }
+
+/// The attractor of `shape` at `c` with the body on `sys`, through the
+/// library's one way in.
+pub fn on_system(
+    shape: &fricosc::Shape,
+    c: &fricosc::Conditions,
+    sys: &fricosc::system::System,
+) -> fricosc::Result<fricosc::system::SystemReport> {
+    match shape.report(&c.with_system(*sys))? {
+        fricosc::Report::System(r) => Ok(r),
+        other => panic!("a report on a system is the system's: {other:?}"),
+    }
+}

@@ -163,7 +163,8 @@ impl Shape {
 
     /// `mu_macro/mu0` under the conditions `c`, with an error estimate:
     /// the one way in. Without a tangential oscillation the seed's problem
-    /// at `vbar`; with one, the stop operator of every spring.
+    /// at `vbar`; with one, the stop operator of every spring; with the body
+    /// on a system ([`Conditions::with_system`]), its attractor.
     ///
     /// ```
     /// use fricosc::{Conditions, Shape};
@@ -177,6 +178,10 @@ impl Shape {
     /// profile, or `vbar = vhat/amp` undefined (`amp = 0` without a
     /// tangential oscillation); [`Error::Internal`] for a bug.
     pub fn evaluate(&self, c: &Conditions) -> Result<Evaluation> {
+        if let Some(sys) = c.system() {
+            let r = crate::system::solve(self, c, sys)?;
+            return Ok(Evaluation { ratio: r.ratio(), error_estimate: r.error_estimate, interpolation_error: None });
+        }
         match c.tangential() {
             Some(_) => {
                 let r = super::combined::evaluate(self, c)?;
@@ -192,6 +197,9 @@ impl Shape {
     /// # Errors
     /// As [`Shape::evaluate`].
     pub fn ratio(&self, c: &Conditions) -> Result<Ratio> {
+        if let Some(sys) = c.system() {
+            return Ok(crate::system::solve(self, c, sys)?.ratio());
+        }
         match c.tangential() {
             Some(_) => Ok(super::combined::evaluate(self, c)?.ratio),
             None => self.contact.ratio(c.as_vbar()?, c.amp(), c.tol()),
@@ -200,11 +208,15 @@ impl Shape {
 
     /// Everything the solver reports about one point: the flat punch's regime
     /// and events, a power law's bands, under a tangential oscillation the
-    /// flat punch's phases or a curved contact's bands; else the evaluation.
+    /// flat punch's phases or a curved contact's bands; on a system the
+    /// attractor ([`crate::system::SystemReport`]); else the evaluation.
     ///
     /// # Errors
     /// As [`Shape::evaluate`].
     pub fn report(&self, c: &Conditions) -> Result<Report> {
+        if let Some(sys) = c.system() {
+            return Ok(Report::System(crate::system::solve(self, c, sys)?));
+        }
         match c.tangential() {
             Some((t, phase)) => Ok(Report::Tangential(crate::report::Tangential {
                 vhat: c.as_vhat(),
@@ -272,6 +284,8 @@ pub enum Report {
     Power(crate::report::MdrPoint),
     /// Any shape under an oscillation in the sliding direction.
     Tangential(crate::report::Tangential),
+    /// Any shape with the body on a system ([`Conditions::with_system`]): its attractor.
+    System(crate::system::SystemReport),
     /// Any other shape.
     Other {
         /// Dimensionless velocity.
@@ -292,6 +306,7 @@ impl Report {
             Report::Flat(p) => p.ratio,
             Report::Power(p) => p.result.ratio,
             Report::Tangential(t) => t.result.ratio,
+            Report::System(r) => r.ratio(),
             Report::Other { evaluation, .. } => evaluation.ratio,
         }
     }

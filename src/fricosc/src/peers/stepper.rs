@@ -245,9 +245,14 @@ pub struct SteppingEvaluation {
 /// (three periods from a sliding start).
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] for a resolution beyond the limits or an
-/// undefined `vbar`; [`Error::Internal`] for a non-finite result.
+/// [`Error::InvalidParameter`] for a resolution beyond the limits, an
+/// undefined `vbar` or conditions on a system ([`system`] steps those);
+/// [`Error::Internal`] for a non-finite result.
 pub fn evaluate(shape: &Shape, c: &crate::Conditions, st: Stepping) -> Result<SteppingEvaluation> {
+    if let Some(sys) = c.system() {
+        let reason = "the seed's scheme has no body: step it on a system with `stepper::system`";
+        return Err(Error::param("system-stiffness", sys.stiffness(), reason));
+    }
     match c.tangential() {
         Some(_) => evaluate_oscillation(shape, c, st, OSCILLATION_PERIODS),
         None => evaluate_normal(shape, c.as_vbar()?, c.amp(), st),
@@ -382,16 +387,19 @@ pub(crate) fn evaluate_oscillation(
 /// reached within the periods run (a period-1 orbit is assumed: the last
 /// period is the answer).
 ///
+/// The system is the conditions' ([`crate::Conditions::with_system`]).
+///
 /// # Errors
-/// [`Error::InvalidParameter`] for a massless body (`Omega = 0`: no
-/// dynamics to step) or resolutions beyond the limits.
-pub fn system(
-    shape: &crate::Shape,
-    c: &crate::Conditions,
-    sys: &crate::system::System,
-    steps_per_period: usize,
-    periods: usize,
-) -> Result<f64> {
+/// [`Error::InvalidParameter`] for conditions without a system, a massless
+/// body (`Omega = 0`: no dynamics to step) or resolutions beyond the limits.
+pub fn system(shape: &crate::Shape, c: &crate::Conditions, steps_per_period: usize, periods: usize) -> Result<f64> {
+    let Some(sys) = c.system() else {
+        return Err(Error::param(
+            "system-stiffness",
+            0.0,
+            "the stepping peer with a body needs conditions on a system",
+        ));
+    };
     let om = sys.frequency_ratio();
     if om == 0.0 {
         return Err(Error::param("frequency-ratio", om, "stepping needs a body with mass (> 0)"));

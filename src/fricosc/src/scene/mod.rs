@@ -50,7 +50,7 @@ pub struct Scene {
     pub velocity: VelocitySpec,
     /// The tribometer's pin: its mass on a tangential system spring (absent: a
     /// stiff system, the seed's problem). Every row is then the attractor of
-    /// [`crate::system::solve`].
+    /// [`crate::Conditions::with_system`].
     #[cfg_attr(feature = "serde", serde(default))]
     pub system: Option<SystemSpec>,
 }

@@ -413,11 +413,12 @@ fn mu_ratios(
     let mut mu_ratio = Vec::with_capacity(vbars.len());
     for chunk in vbars.chunks(1024) {
         let mus = crate::numerics::par::map(chunk, |&vbar| -> Result<f64> {
+            let c = || crate::Conditions::vbar(vbar, amp);
             Ok(match system {
-                Some(sys) => crate::system::solve(shape, &crate::Conditions::vbar(vbar, amp)?, sys)?.mu_ratio,
+                Some(&sys) => shape.ratio(&c()?.with_system(sys))?.mu_ratio,
                 // At or above the critical velocity no spring is computed.
                 None if vbar >= 1.0 => 1.0,
-                None => shape.ratio(&crate::Conditions::vbar(vbar, amp)?)?.mu_ratio,
+                None => shape.ratio(&c()?)?.mu_ratio,
             })
         });
         for m in mus {

@@ -43,7 +43,7 @@ use std::f64::consts::TAU as TWO_PI;
 /// ```
 ///
 /// # Errors
-/// As [`super::solve`] for the shape and the amplitude.
+/// As [`crate::Shape::report`] on a system for the shape and the amplitude.
 pub fn critical_vbar(shape: &crate::Shape, amp: f64, sys: &System) -> Result<Option<f64>> {
     // The amplitude checked as every point's is; the drive at rest (module docs).
     Conditions::vhat(0.0, amp)?;

@@ -293,24 +293,14 @@ fn map_k(ph: &Phases, s: &Reduced, k: usize) -> (Reduced, f64) {
 
 /// The steady state of `shape` at `c` on the system `sys`: the flat punch
 /// exactly, a curved body by its springs (the foundation as
-/// [`System::springs`] springs, each with its exact events, and as half as
-/// many: the Richardson value, with an error estimate).
-///
-/// ```
-/// use fricosc::system::{solve, System};
-/// use fricosc::{Conditions, Shape};
-///
-/// let sys = System::new(1.0, 0.5, 0.05)?;
-/// let r = solve(&Shape::flat(), &Conditions::vbar(0.3, 0.5)?, &sys)?;
-/// assert_eq!(r.period, Some(1));
-/// assert!(r.mu_ratio > 0.0 && r.mu_ratio < 1.0);
-/// # Ok::<(), fricosc::Error>(())
-/// ```
+/// [`System::springs`] springs, each with its exact events, and as fewer:
+/// the extrapolated value, with an error estimate). The way in is
+/// [`crate::Shape::report`] with [`Conditions::with_system`].
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] for bad inputs, and for a massless body
 /// (`frequency_ratio` 0) on a curved contact.
-pub fn solve(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<SystemReport> {
+pub(crate) fn solve(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<SystemReport> {
     if c.amp() == 0.0 && c.tangential().is_none_or(|(t, _)| t == 0.0) {
         return Ok(no_oscillation());
     }
@@ -398,13 +388,17 @@ fn params(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<Params> 
 
 /// The steady state of `shape` discretised into about `springs` springs
 /// (midpoints of equal cells, `curved` module docs), each spring's events
-/// exact: the problem a code with that many springs solves, its answer
-/// without an error estimate (the attractor found as [`solve`] finds it,
-/// without Newton).
+/// exact, on the system of `c` ([`Conditions::with_system`]): the problem a
+/// code with that many springs solves, its answer without an error estimate
+/// (the attractor found as [`crate::Shape::report`] finds it, without Newton).
 ///
 /// # Errors
-/// As [`solve`]; [`Error::InvalidParameter`] for `springs` 0 or above 2^16.
-pub fn solve_discretised(shape: &crate::Shape, c: &Conditions, sys: &System, springs: usize) -> Result<SystemReport> {
+/// As [`crate::Shape::report`]; [`Error::InvalidParameter`] for conditions
+/// without a system, or `springs` 0 or above 2^16.
+pub fn solve_discretised(shape: &crate::Shape, c: &Conditions, springs: usize) -> Result<SystemReport> {
+    let Some(sys) = c.system() else {
+        return Err(Error::param("system-stiffness", 0.0, "a discretised body is solved on a system"));
+    };
     if !(1..=1 << 16).contains(&springs) {
         return Err(Error::param("springs", springs as f64, "must be in 1..=65536"));
     }

@@ -53,8 +53,10 @@ fn exact_row(
     c: &Conditions,
     system: Option<&crate::system::System>,
 ) -> Result<(f64, String, Option<f64>)> {
-    if let Some(sys) = system {
-        let r = crate::system::solve(shape, c, sys)?;
+    if let Some(&sys) = system {
+        let crate::Report::System(r) = shape.report(&c.with_system(sys))? else {
+            return Err(Error::Internal { what: "a report on a system is the system's".into() });
+        };
         return Ok((r.mu_ratio, r.regime(), Some(r.error_estimate)));
     }
     let e = crate::combined::evaluate(shape, c)?;
@@ -104,7 +106,7 @@ pub struct OscillationValidation {
 
 /// Compare `rows` of `[vhat, amp, tangential_amp, phase, mu_ratio]` with the
 /// exact values of `shape` (at [`crate::DEFAULT_TOL`]), or on `check.system`
-/// with its attractors ([`crate::system::solve`]; the regime is the period);
+/// with its attractors ([`crate::Conditions::with_system`]; the regime is the period);
 /// `check.peer` runs the stepping peer ([`crate::stepper::evaluate`], three
 /// periods; on a system [`crate::stepper::system`], 40 periods)
 /// on every row too. `check.at_rest` does not apply (a `vhat = 0` row is the
@@ -123,7 +125,7 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
             crate::numerics::par::map(&oscillations, |o| match system {
                 Some(sys) => {
                     let sys = sys.with_springs(st.springs.max(crate::system::MIN_SPRINGS))?;
-                    crate::stepper::system(shape, o, &sys, st.steps_per_period, SYSTEM_PEER_PERIODS)
+                    crate::stepper::system(shape, &o.with_system(sys), st.steps_per_period, SYSTEM_PEER_PERIODS)
                 }
                 None => crate::stepper::evaluate(shape, o, st).map(|e| e.ratio.mu_ratio),
             })

@@ -226,8 +226,7 @@ fn part_two_claims_rest_on_independent_values() {
     let sys = fricosc::system::System::new(1.0, 1.0, 0.05).unwrap();
     let stepped = fricosc::stepper::system(
         &fricosc::Shape::flat(),
-        &fricosc::Conditions::vbar(1.5, 0.5).unwrap(),
-        &sys,
+        &fricosc::Conditions::vbar(1.5, 0.5).unwrap().with_system(sys),
         10_000,
         40,
     )

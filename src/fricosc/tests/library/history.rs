@@ -277,11 +277,12 @@ fn a_curved_combined_history_averages_to_the_exact_mu() {
 /// a massless body's is the stiff one at the scaled drive.
 #[test]
 fn a_history_on_a_system_averages_to_its_mu() {
-    use fricosc::system::{solve, System};
+    use crate::common::on_system as solve;
+    use fricosc::system::System;
     for (om, amp) in [(0.5, 0.5), (0.5, 1.5), (1.2, 0.5)] {
         let c = fricosc::Conditions::vhat(0.3, amp).unwrap();
         let sys = System::new(1.0, om, 0.3).unwrap();
-        let h = history(&Shape::flat(), &c, &HistoryOptions::default().with_samples(20_000).with_system(sys)).unwrap();
+        let h = history(&Shape::flat(), &c.with_system(sys), &HistoryOptions::default().with_samples(20_000)).unwrap();
         let close = |f: fn(&fricosc::history::Sample) -> f64| {
             let mut v: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, f(s))).collect();
             v.push((std::f64::consts::TAU, v[0].1));
@@ -293,14 +294,14 @@ fn a_history_on_a_system_averages_to_its_mu() {
         assert!(h.samples.iter().all(|s| s.tangential.abs() <= s.normal));
     }
     let c = fricosc::Conditions::vhat(0.3, 0.5).unwrap();
-    let massless = HistoryOptions::default().with_samples(50).with_system(System::new(1.0, 0.0, 0.0).unwrap());
+    let massless = HistoryOptions::default().with_samples(50);
     let stiff = history(
         &Shape::flat(),
         &fricosc::Conditions::vhat(0.15, 0.5).unwrap().with_tangential(0.0, 0.0).unwrap(),
         &HistoryOptions::default().with_samples(50),
     )
     .unwrap();
-    let h = history(&Shape::flat(), &c, &massless).unwrap();
+    let h = history(&Shape::flat(), &c.with_system(System::new(1.0, 0.0, 0.0).unwrap()), &massless).unwrap();
     assert!(h.samples.iter().zip(&stiff.samples).all(|(a, b)| a.tangential == b.tangential));
 }
 
@@ -314,14 +315,14 @@ fn a_curved_history_on_a_system_averages_to_its_springs_mu() {
     for (shape, amp) in [(Shape::parabolic(), 0.5), (Shape::cone(), 1.5)] {
         let c = fricosc::Conditions::vhat(0.3, amp).unwrap();
         let sys = System::new(1.0, 0.5, 0.3).unwrap().with_springs(64).unwrap();
-        let h = history(&shape, &c, &HistoryOptions::default().with_samples(20_000).with_system(sys)).unwrap();
+        let h = history(&shape, &c.with_system(sys), &HistoryOptions::default().with_samples(20_000)).unwrap();
         let close = |f: fn(&fricosc::history::Sample) -> f64| {
             let mut v: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, f(s))).collect();
             v.push((std::f64::consts::TAU, v[0].1));
             v
         };
         let mu = mean(&close(|s| s.tangential)) / mean(&close(|s| s.normal));
-        let exact = solve_discretised(&shape, &c, &sys, 64).unwrap().mu_ratio;
+        let exact = solve_discretised(&shape, &c.with_system(sys), 64).unwrap().mu_ratio;
         assert!((mu - exact).abs() < 1e-7, "{} amp {amp}: {mu} vs {exact}", shape.name());
         let excess = h.samples.iter().map(|s| s.tangential.abs() - s.normal).fold(f64::MIN, f64::max);
         // Rounding of a sum of 64 springs (observed 1.0e-14).
@@ -346,7 +347,7 @@ fn a_body_on_a_system_obeys_its_equation() {
         let c = fricosc::Conditions::vhat(0.3, 0.5).unwrap().with_tangential(t, 0.7).unwrap();
         let sys = System::new(1.0, 0.5, zeta).unwrap().with_springs(64).unwrap();
         let n = 20_000;
-        let h = history(&shape, &c, &HistoryOptions::default().with_samples(n).with_system(sys)).unwrap();
+        let h = history(&shape, &c.with_system(sys), &HistoryOptions::default().with_samples(n)).unwrap();
         let even: Vec<&fricosc::history::Sample> = h.samples.iter().filter(|s| s.event.is_none()).collect();
         assert_eq!(even.len(), n);
         let body = |s: &fricosc::history::Sample| s.body.unwrap();

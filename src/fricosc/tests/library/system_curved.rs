@@ -1,11 +1,12 @@
-//! Curved bodies on a system (`fricosc::system::solve`: the foundation as
+//! Curved bodies on a system (`Shape::report` with the system: the foundation as
 //! springs with exact events, Richardson in their number) against: the
 //! 40-digit flat references through the springs' own event logic (one
 //! spring); a four times finer discretisation (the error estimate must bound
 //! the error); the stiff answer of the same shape (`kappa -> infinity`); the
 //! time-stepping peer with the same springs (first order).
+use crate::common::on_system as solve;
 use crate::common::{data_cases, exact_error, exceeds};
-use fricosc::system::{solve, solve_discretised, System};
+use fricosc::system::{solve_discretised, System};
 use fricosc::{Conditions, Shape};
 
 /// One spring is the flat punch: the springs' event logic (levels of the
@@ -18,7 +19,7 @@ fn one_spring_meets_the_flat_references() {
         let sys = System::new(f("kappa"), f("frequency_ratio"), f("damping")).unwrap();
         let at =
             Conditions::vhat(f("vhat"), f("amp")).unwrap().with_tangential(f("tangential_amp"), f("phase")).unwrap();
-        let r = solve_discretised(&Shape::flat(), &at, &sys, 1).unwrap();
+        let r = solve_discretised(&Shape::flat(), &at.with_system(sys), 1).unwrap();
         let err = exact_error(r.mu_ratio, c["mu_ratio"].as_str().unwrap());
         assert!(!exceeds(err, 4e-13), "{c}: {} off by {err:e}", r.mu_ratio);
         assert_eq!((r.period, r.springs), (Some(1), Some(1)), "{c}");
@@ -52,7 +53,7 @@ fn the_estimate_bounds_the_error_against_finer_springs() {
         let sys = System::new(kappa, omega, zeta).unwrap();
         let r = solve(&shape, &c, &sys).unwrap();
         let est = r.error_estimate;
-        let mu = |n: usize| solve_discretised(&shape, &c, &sys, n).unwrap().mu_ratio;
+        let mu = |n: usize| solve_discretised(&shape, &c.with_system(sys), n).unwrap().mu_ratio;
         let (m2048, m4096) = (mu(2048), mu(4096));
         let reference = m4096 + (m4096 - m2048) / 3.0;
         assert!((m4096 - m2048).abs() / 3.0 < 0.02 * est, "{name}: the reference moved by {:e}", m4096 - m2048);
@@ -87,8 +88,8 @@ fn the_stepping_peer_converges_to_the_discretised_answer() {
     for (name, amp, zeta) in [("parabolic", 0.5, 0.05), ("cone", 1.5, 0.3)] {
         let (shape, c) = (Shape::parse(name).unwrap(), Conditions::vbar(0.3, amp).unwrap());
         let sys = System::new(1.0, 0.5, zeta).unwrap().with_springs(64).unwrap();
-        let exact = solve_discretised(&shape, &c, &sys, 64).unwrap().mu_ratio;
-        let err = |m: usize| (fricosc::stepper::system(&shape, &c, &sys, m, 40).unwrap() - exact).abs();
+        let exact = solve_discretised(&shape, &c.with_system(sys), 64).unwrap().mu_ratio;
+        let err = |m: usize| (fricosc::stepper::system(&shape, &c.with_system(sys), m, 40).unwrap() - exact).abs();
         let (e3, e4, e5) = (err(1000), err(10_000), err(100_000));
         assert!(e4 < e3 / 4.0 && e5 < e4 / 4.0 && e5 < 1e-5, "{name}: {e3:e} {e4:e} {e5:e}");
     }
@@ -208,7 +209,7 @@ fn a_curved_orbit_reports_its_least_period() {
 fn a_stiff_body_stops_at_the_step_budget_with_an_honest_mean() {
     let c = Conditions::vbar(0.0275, 1.515).unwrap();
     let sys = System::new(1e6, 0.0356, 0.0).unwrap();
-    let one = solve_discretised(&Shape::flat(), &c, &sys, 1).unwrap();
+    let one = solve_discretised(&Shape::flat(), &c.with_system(sys), 1).unwrap();
     let flat = solve(&Shape::flat(), &c, &sys).unwrap();
     assert_eq!((one.period, flat.period), (None, None));
     assert!((20..=40).contains(&one.periods_run), "{one:?}");

@@ -142,8 +142,7 @@ pub(super) fn on_system(
     if sys.frequency_ratio() == 0.0 {
         let k = sys.stiffness() / (1.0 + sys.stiffness());
         let stiff = Conditions::vhat(c.as_vhat() * k, c.amp())?.with_tangential(t * k, phase)?;
-        let opts = HistoryOptions { system: None, ..opts.clone() };
-        return super::history(shape, &stiff, &opts);
+        return super::history(shape, &stiff, opts);
     }
     super::check_history(shape, 0.0, c.amp(), opts)?;
     // The attractor once: its events among the samples, then its forces.

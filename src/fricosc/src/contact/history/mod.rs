@@ -185,14 +185,11 @@ pub struct HistoryOptions {
     pub springs: usize,
     /// Positions `x/x_c >= 0` of springs of a curved shape reported one by one.
     pub spring_at: Vec<f64>,
-    /// The flat punch on a system with mass and stiffness ([`crate::system`]):
-    /// one period of its attractor.
-    pub system: Option<crate::system::System>,
 }
 
 impl Default for HistoryOptions {
     fn default() -> Self {
-        HistoryOptions { periods: 1, samples: 400, springs: 4000, spring_at: vec![], system: None }
+        HistoryOptions { periods: 1, samples: 400, springs: 4000, spring_at: vec![] }
     }
 }
 
@@ -211,11 +208,6 @@ impl HistoryOptions {
     #[must_use]
     pub fn with_springs(self, springs: usize) -> Self {
         HistoryOptions { springs, ..self }
-    }
-    /// On the system `system` (the flat punch, one period).
-    #[must_use]
-    pub fn with_system(self, system: crate::system::System) -> Self {
-        HistoryOptions { system: Some(system), ..self }
     }
     /// With these springs reported one by one (positions `x/x_c`, curved shapes).
     #[must_use]
@@ -286,6 +278,8 @@ pub const MIN_CURVED_AMP: f64 = 1e-300;
 /// not used): `opts.periods` periods with `opts.samples` uniform samples, plus
 /// the flat punch's events. Under a tangential oscillation every spring is the
 /// stop operator's ([`crate::spring::solve`]), with `vhat`, `T` and the phase of `c`.
+/// On a system ([`Conditions::with_system`]): one period of the attractor,
+/// with the body (a curved body as the system's springs).
 ///
 /// ```
 /// use fricosc::history::{history, HistoryOptions};
@@ -302,7 +296,7 @@ pub const MIN_CURVED_AMP: f64 = 1e-300;
 /// oscillation at `amp = 0`), [`Error::TooLarge`] beyond the
 /// limits ([`MAX_SAMPLES`] rows, [`MAX_SPRINGS`] springs, [`MAX_SPRING_WORK`]).
 pub fn history(shape: &Shape, c: &Conditions, opts: &HistoryOptions) -> Result<History> {
-    if let Some(sys) = &opts.system {
+    if let Some(sys) = c.system() {
         return combined::on_system(shape, c, sys, opts);
     }
     let amp = c.amp();

@@ -253,3 +253,16 @@ pub mod at {
         fricosc::stepper::evaluate(shape, &osc(o)?, st)
     }
 }
+
+/// The attractor of `shape` at `c` with the body on `sys`, through the one
+/// way in (`Shape::report` of the conditions with the system).
+pub fn on_system(
+    shape: &fricosc::Shape,
+    c: &fricosc::Conditions,
+    sys: &fricosc::system::System,
+) -> fricosc::Result<fricosc::system::SystemReport> {
+    match shape.report(&c.with_system(*sys))? {
+        fricosc::Report::System(r) => Ok(r),
+        other => panic!("a report on a system is the system's: {other:?}"),
+    }
+}
