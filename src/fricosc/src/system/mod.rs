@@ -301,8 +301,12 @@ fn map_k(ph: &Phases, s: &Reduced, k: usize) -> (Reduced, f64) {
 /// [`Error::InvalidParameter`] for bad inputs, and for a massless body
 /// (`frequency_ratio` 0) on a curved contact.
 pub(crate) fn solve(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<SystemReport> {
-    if c.amp() == 0.0 && c.tangential().is_none_or(|(t, _)| t == 0.0) {
+    let still = c.tangential().is_none_or(|(t, _)| t == 0.0);
+    if c.amp() == 0.0 && still {
         return Ok(no_oscillation());
+    }
+    if c.as_vhat() == 0.0 && still {
+        return at_rest(shape, c);
     }
     let mut r = if shape.contact().single_spring() {
         attractor(c, sys)?.0
@@ -329,6 +333,17 @@ fn no_oscillation() -> SystemReport {
         error_estimate: 0.0,
         springs: None,
     }
+}
+
+/// A drive at rest (`vhat = 0`) under normal oscillation: the limit `vbar
+/// -> 0+` of steady sliding, as without a system (README: definitions), the
+/// stiff `mu_static = N_min/N_mean`. As the drive creeps, every spring's
+/// force ratchets up to its smallest bound and the body's own motion dies
+/// with the velocity (the answer's distance from it is `O(vbar)`:
+/// `tests/library/system.rs`). The relaxed start itself would stay at 0.
+fn at_rest(shape: &crate::Shape, c: &Conditions) -> Result<SystemReport> {
+    let e = shape.evaluate(&Conditions::vbar(0.0, c.amp())?.with_tol(c.tol())?)?;
+    Ok(SystemReport { mu_ratio: e.ratio.mu_ratio, error_estimate: e.error_estimate, ..no_oscillation() })
 }
 
 /// Every spring's force is within its bound, so `|mu| <= 1`: beyond it

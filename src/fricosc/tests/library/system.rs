@@ -217,6 +217,25 @@ fn no_oscillation_is_mu_one_on_every_system() {
     assert!(s3 > 0.05 && (s2 / s3 - 1.0).abs() < 0.01, "{s2} {s3}");
 }
 
+/// A drive at rest (`vbar = 0`, normal oscillation only) is the limit
+/// `vbar -> 0+` on a system as without one: `N_min/N_mean` (1 - amp for the
+/// flat punch up to amp 1, 0 beyond). The limit is read off the solver
+/// itself at small velocities, where `mu` is linear in `vbar`: the
+/// extrapolation from 0.003 and 0.001 lands within 1e-4 (observed 7.6e-8,
+/// 1.7e-5, 7.4e-5). The relaxed start answered 0 with estimate 0 at every
+/// amplitude.
+#[test]
+fn a_drive_at_rest_is_the_limit_of_slow_sliding() {
+    for (amp, om, zeta, want) in [(0.8, 2.0, 0.0, 0.2), (0.5, 0.5, 0.05, 0.5), (1.5, 1.2, 0.01, 0.0)] {
+        let sys = System::new(1.0, om, zeta).unwrap();
+        let mu = |vbar: f64| flat(&Conditions::vbar(vbar, amp).unwrap(), &sys).unwrap().mu_ratio;
+        let at_rest = mu(0.0);
+        assert!((at_rest - want).abs() <= 1e-15, "amp {amp}: {at_rest}");
+        let limit = 1.5 * mu(1e-3) - 0.5 * mu(3e-3);
+        assert!((limit - at_rest).abs() < 1e-4, "amp {amp}: {limit} against {at_rest}");
+    }
+}
+
 /// Undamped above the stick resonance every spring comes to slip while the
 /// body rings at its own frequency for ever: Newton finds the orbit without
 /// that ringing (period 1, `mu` 1 - 7e-16), but its multipliers are on the
