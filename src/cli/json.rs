@@ -232,6 +232,13 @@ pub fn number(raw: &RawValue, name: &str) -> Result<f64, String> {
     }
 }
 
+/// A computed value as text: a number, `nan` or `inf` (any case, signed,
+/// as numpy and Rust print them): a value that is not finite is kept.
+pub fn computed(text: &str) -> Result<f64, String> {
+    let t = text.trim();
+    t.parse::<f64>().map(|x| x + 0.0).map_err(|_| format!("'{t}' is not a number"))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -28,6 +28,9 @@ use std::borrow::Cow;
 pub enum Kind {
     /// Finite numbers.
     Number,
+    /// A computed value: a number, or one that is not finite (`nan`, `inf`,
+    /// a JSON null) where the computation diverged.
+    Value,
     /// Text (a shape name): only its distinct values are kept.
     Label,
 }
@@ -94,7 +97,7 @@ fn too_many(source: &str, limit: usize) -> Error {
 /// Add one raw cell to wanted column `k`.
 fn push(cols: &mut Columns, k: usize, kind: Kind, value: Cell) -> std::result::Result<(), String> {
     match (kind, value) {
-        (Kind::Number, Cell::Number(x)) => cols.numbers[k].get_or_insert_with(Vec::new).push(x),
+        (Kind::Number | Kind::Value, Cell::Number(x)) => cols.numbers[k].get_or_insert_with(Vec::new).push(x),
         (Kind::Label, Cell::Text(s)) => {
             let l = cols.labels[k].get_or_insert_with(Vec::new);
             if !l.iter().any(|x| *x == s) {
@@ -222,6 +225,7 @@ fn read_csv(text: &str, source: &str, wanted: &[(&str, Kind)], max_rows: usize) 
                     };
                     err(format!("row {i}: {name}: {e}{hint}"))
                 })?),
+                Kind::Value => Cell::Number(json::computed(rec[c]).map_err(|e| err(format!("row {i}: {name}: {e}")))?),
                 Kind::Label => Cell::Text(Cow::Borrowed(rec[c])),
             };
             push(&mut cols, k, *kind, cell).map_err(|e| Error::Internal { what: e })?;
@@ -277,6 +281,8 @@ impl<'a> Json<'a, '_> {
     fn cell(&self, raw: &'a RawValue, name: &str, kind: Kind) -> std::result::Result<Cell<'a>, String> {
         Ok(match kind {
             Kind::Number => Cell::Number(json::number(raw, name)?),
+            Kind::Value if raw.get() == "null" => Cell::Number(f64::NAN),
+            Kind::Value => Cell::Number(json::computed(raw.get()).map_err(|e| format!("'{name}': {e}"))?),
             Kind::Label => Cell::Text(json::string(raw, name)?),
         })
     }

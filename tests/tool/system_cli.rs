@@ -138,11 +138,52 @@ fn validate_compares_a_table_on_a_system() {
     assert_eq!(v["system"]["stiffness"], 1.0);
     let out = run(&forgot, &["--format", "json", "--max-error", "1e-3"]);
     assert_eq!(out.status.code(), Some(1));
+    // The stiff answer is named as such, and the bound exceeded is a finding.
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let kinds: Vec<&str> = v["findings"].as_array().unwrap().iter().map(|f| f["kind"].as_str().unwrap()).collect();
+    assert!(kinds.contains(&"convention") && kinds.contains(&"max_error"), "{v}");
+    assert!(v.to_string().contains("no system at all"), "{v}");
     let above: Vec<&str> = stepped.lines().map(|l| if l.starts_with("0.1,0.5,") { "0.1,0.5,1.5" } else { l }).collect();
     let out = run(&(above.join("\n") + "\n"), &["--format", "json"]);
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["findings"][0]["kind"], "above_one", "{v}");
     refused(&[&args[..], &["--series"]].concat(), Some(&stepped), "one table on a system");
+}
+
+/// `validate` on a system in the stiff layout: per amplitude, each row's
+/// period and the exact value's estimate in the CSV; a stepper without its
+/// damping (the library's stepping peer with the body, run on the system with
+/// zeta 0) is named as such against the system with zeta 0.1 (the errors
+/// are 1e-2 and more; 2e-3 and less with the damping left out); a JSON
+/// null (a diverged value as pandas writes it) is a finding on its row.
+#[test]
+fn validate_on_a_system_names_the_mistake() {
+    let undamped = System::new(1.0, 0.5, 0.0).unwrap();
+    let mut t = String::from("vbar,amp,mu_ratio\n");
+    for amp in [0.5, 1.5] {
+        for vbar in [0.1, 0.3, 0.5, 0.8, 1.2, 1.6] {
+            let c = Conditions::vbar(vbar, amp).unwrap().with_system(undamped);
+            t += &format!("{vbar},{amp},{}\n", fricosc::stepper::system(&Shape::flat(), &c, 1000, 40).unwrap());
+        }
+    }
+    let args = ["validate", "-", "--system-stiffness", "1", "--frequency-ratio", "0.5", "--damping", "0.1"];
+    let out = fricosc(&[&args[..], &["--format", "summary"]].concat(), Some(&t));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains("- convention: 12 rows") && text.contains("\namp "), "{text}");
+    let json = stdout(&[&args[..], &["--format", "json", "--report-only"]].concat(), Some(&t));
+    assert!(json.contains("your values match the exact ones with the damping left out (zeta = 0)"), "{json}");
+    let csv = stdout(&[&args[..], &["--format", "csv", "--report-only"]].concat(), Some(&t));
+    let header = csv.lines().next().unwrap();
+    assert!(header.ends_with(",regime,jumping_share,period,exact_error_estimate"), "{header}");
+    assert!(csv.lines().nth(1).unwrap().split(',').nth(9) == Some("1"), "{csv}");
+    let json = r#"[{"vbar": 0.3, "amp": 0.5, "mu_ratio": null}, {"vbar": 0.5, "amp": 0.5, "mu_ratio": 0.7}]"#;
+    let out = fricosc(&[&args[..], &["--format", "json"]].concat(), Some(json));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(
+        (out.status.code(), &v["findings"][0]["kind"], &v["findings"][0]["rows"]),
+        (Some(1), &"diverged".into(), &serde_json::json!([0]))
+    );
 }
 
 /// `plot --system-stiffness`: each curve's points are the library's

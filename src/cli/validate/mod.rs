@@ -190,7 +190,8 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
     };
     let h = &a.history;
     let system = a.system.system(a.springs)?;
-    let check = Check::default().with_at_rest(at_rest).with_tolerance(tolerance).with_system(system);
+    let check =
+        Check::default().with_at_rest(at_rest).with_tolerance(tolerance).with_system(system).with_max_error(max_error);
     if system.is_some() && (a.series || h.on) {
         return Err(Error::Parse {
             context: "--system-stiffness".into(),
@@ -217,8 +218,8 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
     drop(text);
     let (shape, shape_source) = choose_shape(table.shape(), a.shape.as_deref(), &source)?;
     let peer = a.peer.map(|m| Stepping { steps_per_period: m as usize, springs: a.peer_springs.unwrap_or(m) as usize });
-    if table.is_oscillation() || system.is_some() {
-        let rows = table.rows_as_oscillation(mu0, &source)?;
+    if table.is_oscillation() {
+        let rows = table.oscillation_rows(mu0, &source)?;
         let v = fricosc::validation::compare_oscillation(&shape, &rows, &check.with_peer(peer))?;
         #[derive(serde::Serialize)]
         struct OscillationReport<'a> {

@@ -16,7 +16,17 @@ const TABLE_COLUMNS: [(&str, Kind); 8] = {
     let mut c = [("", Kind::Number); 8];
     let mut k = 0;
     while k < 8 {
-        c[k] = (Table::COLUMNS[k], if k == 5 { Kind::Label } else { Kind::Number });
+        // mu_ratio and mu may be diverged values (a finding, not a parse error).
+        c[k] = (
+            Table::COLUMNS[k],
+            if k == 5 {
+                Kind::Label
+            } else if k == 3 || k == 4 {
+                Kind::Value
+            } else {
+                Kind::Number
+            },
+        );
         k += 1;
     }
     c
@@ -41,10 +51,11 @@ pub fn read_table(text: &str, source: &str) -> Result<Table> {
 /// Every compared row of an oscillation table as CSV.
 pub fn oscillation_csv(v: &OscillationValidation) -> Result<String> {
     let n = crate::output::num;
-    let header =
-        ["row", "vhat", "amp", "tangential_amp", "phase", "mu_ratio", "exact", "error", "relative_error", "regime"];
+    let mut header =
+        vec!["row", "vhat", "amp", "tangential_amp", "phase", "mu_ratio", "exact", "error", "relative_error", "regime"];
+    header.extend(v.system.map(|_| "exact_error_estimate"));
     let rows = v.rows.iter().map(|r| {
-        let cells = vec![
+        let mut cells = vec![
             r.row.to_string(),
             n(r.vhat),
             n(r.amp),
@@ -56,6 +67,7 @@ pub fn oscillation_csv(v: &OscillationValidation) -> Result<String> {
             r.relative_error.map(n).unwrap_or_default(),
             r.regime.clone(),
         ];
+        cells.extend(v.system.map(|_| r.exact_error_estimate.map(n).unwrap_or_default()));
         (cells, r.peer_error)
     });
     compared_csv(&header, v.peer.is_some(), rows)
@@ -78,12 +90,15 @@ fn compared_csv(header: &[&str], peer: bool, rows: impl Iterator<Item = (Vec<Str
     Ok(csv_records(&records))
 }
 
-/// Every compared row as CSV (one header line).
+/// Every compared row as CSV (one header line); on a system each row's
+/// period (empty: none, a mean) and the exact value's error estimate.
 pub fn rows_csv(v: &Validation) -> Result<String> {
     let n = crate::output::num;
-    let header = ["row", "vbar", "amp", "mu_ratio", "exact", "error", "relative_error", "regime", "jumping_share"];
+    let mut header =
+        vec!["row", "vbar", "amp", "mu_ratio", "exact", "error", "relative_error", "regime", "jumping_share"];
+    header.extend(v.system.iter().flat_map(|_| ["period", "exact_error_estimate"]));
     let rows = v.rows.iter().map(|r| {
-        let cells = vec![
+        let mut cells = vec![
             r.row.to_string(),
             n(r.vbar),
             n(r.amp),
@@ -94,6 +109,12 @@ pub fn rows_csv(v: &Validation) -> Result<String> {
             r.regime.name().into(),
             n(r.jumping_share),
         ];
+        if v.system.is_some() {
+            cells.extend([
+                r.period.map(|k| k.to_string()).unwrap_or_default(),
+                r.exact_error_estimate.map(n).unwrap_or_default(),
+            ]);
+        }
         (cells, r.peer_error)
     });
     compared_csv(&header, v.peer.is_some(), rows)

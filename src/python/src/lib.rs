@@ -491,7 +491,7 @@ fn table_of(names: Vec<String>, columns: Vec<(String, PyReadonlyArray1<'_, f64>)
 /// it (under oscillation in the sliding direction where it has `tangential_amp`;
 /// on a system `(kappa, Omega, zeta)` with its attractors).
 #[pyfunction]
-#[pyo3(signature = (shape, names, columns, mu0, at_rest, tolerance, peer, peer_springs, system=None))]
+#[pyo3(signature = (shape, names, columns, mu0, at_rest, tolerance, peer, peer_springs, system=None, max_error=None))]
 #[allow(clippy::too_many_arguments)]
 fn validate<'py>(
     py: Python<'py>,
@@ -504,22 +504,24 @@ fn validate<'py>(
     peer: Option<usize>,
     peer_springs: Option<usize>,
     system: Option<(f64, f64, f64)>,
+    max_error: Option<f64>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let system = system.map(|(k, om, z)| fricosc::system::System::new(k, om, z)).transpose().map_err(to_py)?;
     let check = Check::default()
         .with_at_rest(at_rest_of(at_rest)?)
         .with_tolerance(tolerance)
         .with_peer(peer.map(|m| Stepping { steps_per_period: m, springs: peer_springs.unwrap_or(m) }))
-        .with_system(system);
+        .with_system(system)
+        .with_max_error(max_error);
     let table = table_of(names, columns)?;
     let shape = &shape.inner;
-    let result = if table.is_oscillation() || system.is_some() {
-        let rows = table.rows_as_oscillation(mu0, "table").map_err(to_py)?;
+    let result = if table.is_oscillation() {
+        let rows = table.oscillation_rows(mu0, "table").map_err(to_py)?;
         let v = interruptible(py, || compare_oscillation(shape, &rows, &check))?;
         pythonize::pythonize(py, &v)
     } else {
         let rows = table.rows(mu0, "table").map_err(to_py)?;
-        let v = py.detach(|| compare(shape, &rows, &check)).map_err(to_py)?;
+        let v = interruptible(py, || compare(shape, &rows, &check))?;
         pythonize::pythonize(py, &v)
     }
     .map_err(serialise_err)?;

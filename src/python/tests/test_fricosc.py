@@ -638,7 +638,8 @@ def test_point_on_a_system_is_the_command_lines() -> None:
         theirs_v = json.loads(cli("validate", path, "--system-stiffness", "1", "--frequency-ratio", "0.5",
                                   "--damping", "0.3", "--format", "json", "--report-only"))
     assert [r["exact"] for r in mine_v["rows"]] == [r["exact"] for r in theirs_v["rows"]]
-    assert mine_v["system"]["stiffness"] == 1.0 and mine_v["by_regime"][0]["regime"] == "period 1"
+    assert mine_v["system"]["stiffness"] == 1.0 and [r["period"] for r in mine_v["rows"]] == [1, 1]
+    assert mine_v["by_regime"][0]["regime"] == "permanent_contact"
     curved = fricosc.history("cone", vhat=0.3, amp=0.5, system_stiffness=1.0, frequency_ratio=0.5, samples=8)
     body = json.loads(cli("history", "--shape", "cone", "--vhat", "0.3", "--amp", "0.5", "--system-stiffness", "1",
                           "--frequency-ratio", "0.5", "--samples", "8"))

@@ -452,15 +452,7 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
     check_resolvable(&p, 1.0)?;
     check_settles(&p, MAX_PERIODS)?;
     let ph = Phases::new(p);
-    let start = p.start();
-    // In contact at the start where `amp < 1`; at `amp = 1` the bound is 0
-    // there: the spring touches as at a regain of contact.
-    let kind = match amp.partial_cmp(&1.0) {
-        Some(std::cmp::Ordering::Less) => Kind::Stick,
-        Some(std::cmp::Ordering::Equal) => p.on_contact(&start),
-        _ => Kind::Free,
-    };
-    let mut s = reduce(&p, kind, &start);
+    let mut s = stated_start(&p);
     let mut seen: Vec<Reduced> = vec![s];
     let mut per_period = vec![];
     let mut attempts = 0;
@@ -521,6 +513,55 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
         springs: None,
     };
     Ok((report, Some((ph, s))))
+}
+
+/// The stated start (module docs) as the period map's state.
+fn stated_start(p: &Params) -> Reduced {
+    let start = p.start();
+    // In contact at the start where `amp < 1`; at `amp = 1` the bound is 0
+    // there: the spring touches as at a regain of contact.
+    let kind = match p.amp.partial_cmp(&1.0) {
+        Some(std::cmp::Ordering::Less) => Kind::Stick,
+        Some(std::cmp::Ordering::Equal) => p.on_contact(&start),
+        _ => Kind::Free,
+    };
+    reduce(p, kind, &start)
+}
+
+/// The flat punch's `mu` of each of the first `n` periods from the stated
+/// start on `sys` (normal oscillation, `c`'s velocity and amplitude): what a
+/// run of `k` periods that averages its last reports is the `k`-th, so a
+/// table from too short a run meets this transient, not the attractor.
+/// Empty for a massless body (no transient of its own).
+pub(crate) fn transient(c: &Conditions, sys: &System, n: usize) -> Result<Vec<f64>> {
+    if sys.frequency_ratio == 0.0 || c.amp() == 0.0 {
+        return Ok(vec![]);
+    }
+    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+    let p = Params {
+        kappa: sys.stiffness,
+        omega: sys.frequency_ratio,
+        zeta: sys.damping,
+        vhat: c.as_vhat(),
+        amp: c.amp(),
+        t,
+        phase,
+    };
+    check_resolvable(&p, 1.0)?;
+    let ph = Phases::new(p);
+    let mean_b = crate::flat::mean_normal(p.amp) * std::f64::consts::TAU;
+    let mut s = stated_start(&p);
+    let mut out = Vec::with_capacity(n);
+    for _ in 0..n {
+        crate::interrupt::check()?;
+        let (next, int_f) = map_k(&ph, &s, 1);
+        if ph.chattered() {
+            return Err(chattering());
+        }
+        out.push(int_f / mean_b);
+        s = next;
+    }
+    Ok(out)
 }
 
 /// The refusal of a solve whose period ran out of events (a defect of the

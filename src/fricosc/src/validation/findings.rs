@@ -1,7 +1,7 @@
 //! The findings of a table against the exact values ([`super::compare`]):
 //! each names a pattern of errors and what usually causes it.
 
-use super::{convention, exact_value, finding, AtRest, Finding, FindingKind, Row};
+use super::{convention, exact_value, finding, AtRest, Check, Finding, FindingKind, Row};
 use crate::error::Result;
 use crate::shape::Shape;
 
@@ -11,7 +11,14 @@ const LOW_VBAR: f64 = 0.3;
 /// How much larger the errors at low vbar must be than elsewhere to be a finding.
 const NOT_STEADY_FACTOR: f64 = 10.0;
 
-pub(super) fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRest, tol: f64) -> Result<Vec<Finding>> {
+pub(super) fn findings(
+    shape: &Shape,
+    rows: &[Row],
+    amps: &[f64],
+    check: &Check,
+    critical: Option<&[f64]>,
+) -> Result<Vec<Finding>> {
+    let (at_rest, tol) = (check.at_rest, check.tolerance);
     let pick = |f: &dyn Fn(&Row) -> bool| rows.iter().filter(|r| f(r)).map(|r| r.row).collect::<Vec<_>>();
     let mut out = vec![];
     out.extend(finding(
@@ -20,9 +27,11 @@ pub(super) fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRes
         "values above 1: check the normalisation by the mean normal force (mu0 times the period-averaged \
          normal force, not the static one or its value at one instant)",
     ));
+    // On a system the body may slip backwards, but where the exact value is
+    // not negative a negative one is the table's.
     out.extend(finding(
         FindingKind::Negative,
-        pick(&|r| r.mu_ratio < -tol),
+        pick(&|r| r.mu_ratio < -tol && r.exact >= -tol),
         "negative values: check the sign of the tangential force and that every average spans whole periods",
     ));
     out.extend(finding(
@@ -32,16 +41,11 @@ pub(super) fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRes
          and ten times the largest error at du/u0 <= 1: check contact loss (the normal force is (u0 - du cos tau)_+, never \
          negative; a spring out of contact carries no force and enters contact again relaxed)",
     ));
-    out.extend(finding(
-        FindingKind::NotOneAboveCritical,
-        pick(&|r| r.vbar >= 1.0 && (r.mu_ratio - 1.0).abs() > tol),
-        "at vbar >= 1 no spring sticks and mu/mu0 = 1 exactly: check the velocity's normalisation (eq. 3: \
-         vbar = (kx/kz) v0 / (mu0 omega du)) and the Coulomb bound",
-    ));
+    out.extend(not_one_above_critical(rows, amps, tol, critical));
     out.extend(finding(
         FindingKind::NotMonotone,
         decreasing(rows, amps, tol),
-        "mu/mu0 decreases with velocity at these rows (the exact curve never does): check convergence there \
+        "mu/mu0 decreases with velocity at these rows where the exact curve does not: check convergence there \
          (time step, number of periods, springs)",
     ));
     out.extend(finding(
@@ -58,11 +62,47 @@ pub(super) fn findings(shape: &Shape, rows: &[Row], amps: &[f64], at_rest: AtRes
         "errors ten times (or more) those of fricosc's stepping peer (the seed's scheme) at the same resolution: \
          not the discretisation but a bug (see the peer_error column)",
     ));
+    let worst = rows.iter().fold(0.0f64, |m, r| m.max(r.error.abs()));
+    if let Some(sys) = &check.system {
+        let table: Vec<(usize, f64, f64, f64)> = rows.iter().map(|r| (r.row, r.vbar, r.amp, r.mu_ratio)).collect();
+        let errors: Vec<f64> = rows.iter().map(|r| r.error).collect();
+        out.extend(super::system::mistake(shape, &table, sys, &errors));
+    }
     if out.is_empty() {
-        let worst = rows.iter().fold(0.0f64, |m, r| m.max(r.error.abs()));
         out.extend(convention::large_errors(convention::large(rows.iter().map(|r| (r.row, r.error))), worst));
     }
     Ok(out)
+}
+
+/// [`FindingKind::NotOneAboveCritical`]: rows at or above the critical
+/// velocity (`vbar = 1`; on a system its own, `critical` per amplitude of
+/// `amps`, where the exact value is 1 too) whose value is not 1. Without a
+/// system, values below 1 there are what a body on a system spring gives:
+/// the hint says so.
+fn not_one_above_critical(rows: &[Row], amps: &[f64], tol: f64, critical: Option<&[f64]>) -> Option<Finding> {
+    let at = |a: f64| amps.partition_point(|&x| x < a);
+    let above = |r: &Row| match critical {
+        Some(c) => r.vbar >= c[at(r.amp)] && (r.exact - 1.0).abs() <= tol,
+        None => r.vbar >= 1.0,
+    };
+    let bad: Vec<&Row> = rows.iter().filter(|r| above(r) && (r.mu_ratio - 1.0).abs() > tol).collect();
+    let mut hint = String::from(match critical {
+        Some(_) => {
+            "from the system's critical velocity on (each amplitude's, where every spring slips forward \
+             for ever) mu/mu0 = 1 exactly: check the velocity's normalisation (eq. 3) and the system's \
+             parameters"
+        }
+        None => {
+            "at vbar >= 1 no spring sticks and mu/mu0 = 1 exactly: check the velocity's normalisation (eq. 3: \
+             vbar = (kx/kz) v0 / (mu0 omega du)) and the Coulomb bound"
+        }
+    });
+    if critical.is_none() && bad.iter().any(|r| r.mu_ratio < 1.0) {
+        hint += ". Values below 1 there are what a body with mass on a system spring gives (the body oscillates \
+             and sticks again): if your code models one, compare with --system-stiffness, --frequency-ratio and \
+             --damping";
+    }
+    finding(FindingKind::NotOneAboveCritical, bad.iter().map(|r| r.row).collect(), &hint)
 }
 
 /// [`FindingKind::ContactLoss`]: rows at `amp > 1` and `vbar < 1` below the
@@ -93,7 +133,9 @@ fn decreasing(rows: &[Row], amps: &[f64], tol: f64) -> Vec<usize> {
         let mut line: Vec<&Row> = rows.iter().filter(|r| r.amp == a).collect();
         line.sort_by(|x, y| x.vbar.total_cmp(&y.vbar));
         for w in line.windows(2) {
-            if w[1].vbar > w[0].vbar && w[1].mu_ratio < w[0].mu_ratio - tol {
+            // Where the exact curve falls too (on a system), only a faster fall.
+            let exact_fall = (w[0].exact - w[1].exact).max(0.0);
+            if w[1].vbar > w[0].vbar && w[1].mu_ratio < w[0].mu_ratio - exact_fall - tol {
                 decreasing.push(w[1].row);
             }
         }

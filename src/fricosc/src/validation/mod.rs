@@ -30,10 +30,13 @@ mod findings;
 mod history;
 mod oscillation;
 mod series;
+mod system;
 mod table;
 mod text;
 
-pub use oscillation::{compare_oscillation, OscillationRegime, OscillationRow, OscillationValidation};
+pub use oscillation::{
+    compare_oscillation, OscillationRegime, OscillationRow, OscillationValidation, SYSTEM_PEER_PERIODS,
+};
 
 pub use history::{
     compare_history, to_static_units, EventSeries, FoundEvent, HistoryData, HistorySample, HistorySeries,
@@ -74,13 +77,16 @@ pub struct Check {
     /// its error beside the table's ([`FindingKind::WorseThanPeer`]).
     pub peer: Option<Stepping>,
     /// The body on this system with mass and stiffness ([`crate::system`]):
-    /// the table is compared with its attractors ([`compare_oscillation`]).
+    /// the table is compared with its attractors.
     pub system: Option<crate::system::System>,
+    /// The largest `|error|` accepted: rows beyond it are a finding
+    /// ([`FindingKind::MaxError`]).
+    pub max_error: Option<f64>,
 }
 
 impl Default for Check {
     fn default() -> Self {
-        Check { at_rest: AtRest::Sliding, tolerance: 1e-9, peer: None, system: None }
+        Check { at_rest: AtRest::Sliding, tolerance: 1e-9, peer: None, system: None, max_error: None }
     }
 }
 
@@ -104,6 +110,11 @@ impl Check {
     #[must_use]
     pub fn with_system(self, system: Option<crate::system::System>) -> Self {
         Check { system, ..self }
+    }
+    /// With this largest `|error|` accepted (or none).
+    #[must_use]
+    pub fn with_max_error(self, max_error: Option<f64>) -> Self {
+        Check { max_error, ..self }
     }
 }
 
@@ -132,6 +143,12 @@ pub struct Row {
     pub jumping_share: f64,
     /// The stepping peer's error at the same point and resolution (with a peer).
     pub peer_error: Option<f64>,
+    /// On a system: the attractor's period (`None` there: no period, a mean).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub period: Option<usize>,
+    /// On a system: the exact value's error estimate.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub exact_error_estimate: Option<f64>,
 }
 
 /// Errors of a group of rows.
@@ -183,7 +200,9 @@ impl Summary {
             }
             max_rel = max_rel.max(rel.map_or(0.0, f64::abs));
         }
-        (n > 0).then_some(Summary { n, max_abs_error: max_abs, rms_error, max_rel_error: max_rel, worst_row: worst })
+        // No error compares (every one NaN): the largest is NaN too.
+        let max_abs_error = if max_abs < 0.0 { f64::NAN } else { max_abs };
+        (n > 0).then_some(Summary { n, max_abs_error, rms_error, max_rel_error: max_rel, worst_row: worst })
     }
 }
 
@@ -264,8 +283,14 @@ pub enum FindingKind {
     /// Errors of order one that no other finding explains.
     LargeErrors,
     /// Errors of order one that vanish under another convention (the phase's
-    /// sign or origin, degrees, the amplitude's definition).
+    /// sign or origin, degrees, the amplitude's definition), or on a system
+    /// under a usual mistake of its equation (the damping left out, `Omega`
+    /// for `Omega^2`, the system left out, ...).
     Convention,
+    /// Rows whose value is not a number or infinite: the run diverged.
+    Diverged,
+    /// Rows whose `|error|` exceeds the largest accepted ([`Check::max_error`]).
+    MaxError,
 }
 
 /// Something wrong with the table, and where.
@@ -311,6 +336,9 @@ pub struct Validation {
     pub findings: Vec<Finding>,
     /// The stepping peer's errors, with a peer.
     pub peer: Option<PeerSummary>,
+    /// The system the rows were compared on, if any.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub system: Option<crate::system::System>,
     /// Every row.
     pub rows: Vec<Row>,
 }
@@ -344,27 +372,30 @@ pub(crate) fn exact_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest) -
 /// (the stepping peer's own bound on one point, [`crate::stepper::MAX_STEPPING_WORK`]).
 pub(crate) const MAX_PEER_WORK: u128 = crate::stepper::MAX_STEPPING_WORK;
 
-/// Check the rows (finite, `vbar, amp >= 0`), the tolerance and the peer's work.
+/// Check the rows (`vbar, amp` finite and `>= 0`; a value that is not finite
+/// is a diverged row, a finding), the tolerance and the peer's work.
 fn check_rows(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result<()> {
     crate::error::check_nonneg("tolerance", check.tolerance)?;
+    if let Some(m) = check.max_error {
+        crate::error::check_nonneg("max-error", m)?;
+    }
     if rows.is_empty() {
         return Err(Error::Parse {
             context: "table".into(),
             reason: "the table has no rows (nothing to compare)".into(),
         });
     }
-    for (i, &(v, a, m)) in rows.iter().enumerate() {
+    for (i, &(v, a, _)) in rows.iter().enumerate() {
         let at = |e: Error| Error::Parse { context: format!("row {i}"), reason: e.to_string() };
         crate::error::check_nonneg("vbar", v).map_err(at)?;
         crate::error::check_nonneg("amp", a).map_err(at)?;
-        if !m.is_finite() {
-            return Err(Error::Parse {
-                context: format!("row {i}"),
-                reason: format!("mu_ratio = {m:?} is not finite"),
-            });
-        }
     }
-    check_peer_work(shape, rows.len(), check.peer)
+    check_peer_work(shape, rows.len(), check.peer)?;
+    if let (Some(_), Some(st)) = (&check.system, check.peer) {
+        // The peer on a system runs SYSTEM_PEER_PERIODS periods, not three.
+        check_peer_work(shape, rows.len() * SYSTEM_PEER_PERIODS.div_ceil(3), Some(st))?;
+    }
+    Ok(())
 }
 
 /// The stepping peer's resolution and total work for `rows` rows, checked
@@ -386,28 +417,35 @@ pub(crate) fn check_peer_work(shape: &Shape, rows: usize, peer: Option<Stepping>
 }
 
 /// The stepping peer's value at a row, by the same `vbar = 0` convention
-/// (a relaxed start stays at 0 in any stepper).
-fn peer_value(shape: &Shape, vbar: f64, amp: f64, at_rest: AtRest, st: Stepping) -> Result<f64> {
-    if vbar == 0.0 && at_rest == AtRest::Relaxed {
+/// (a relaxed start stays at 0 in any stepper); on a system the stepper
+/// with the body.
+fn peer_value(shape: &Shape, vbar: f64, amp: f64, check: &Check, st: Stepping) -> Result<f64> {
+    if vbar == 0.0 && check.at_rest == AtRest::Relaxed {
         return Ok(0.0);
     }
-    Ok(crate::stepper::evaluate(shape, &crate::Conditions::vbar(vbar, amp)?, st)?.ratio.mu_ratio)
+    let c = crate::Conditions::vbar(vbar, amp)?;
+    match check.system {
+        Some(sys) => system::peer(shape, &c, sys, st),
+        None => Ok(crate::stepper::evaluate(shape, &c, st)?.ratio.mu_ratio),
+    }
 }
 
 /// Compare `rows` of `(vbar, amp, mu_ratio)` with the exact solver for `shape`,
-/// under `check` (the `vbar = 0` convention, the tolerance of the findings, and
-/// optionally the stepping peer).
+/// under `check` (the `vbar = 0` convention, the tolerance of the findings,
+/// optionally the stepping peer, the system the body is on, the largest
+/// error accepted). A value that is not finite is a diverged row: a finding,
+/// left out of the summaries.
 ///
 /// # Errors
-/// [`Error::Parse`] naming the row for a bad value; [`Error::TooLarge`] for a
+/// [`Error::Parse`] naming the row for a bad input; [`Error::TooLarge`] for a
 /// peer beyond 10^11 spring-steps; the solver's errors.
 pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result<Validation> {
     check_rows(shape, rows, check)?;
     let (at_rest, tolerance) = (check.at_rest, check.tolerance);
-    let exact: Vec<Result<f64>> = crate::numerics::par::map(rows, |&(v, a, _)| exact_value(shape, v, a, at_rest));
+    let exact = crate::numerics::par::map(rows, |&(v, a, _)| system::exact(shape, v, a, check));
     let peer: Option<Vec<f64>> = match check.peer {
         Some(st) => Some(
-            crate::numerics::par::map(rows, |&(v, a, _)| peer_value(shape, v, a, at_rest, st))
+            crate::numerics::par::map(rows, |&(v, a, _)| peer_value(shape, v, a, check, st))
                 .into_iter()
                 .collect::<Result<Vec<f64>>>()?,
         ),
@@ -417,33 +455,39 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result
     amps.sort_by(f64::total_cmp);
     amps.dedup();
     let shares: Vec<f64> = amps.iter().map(|&a| shape.jumping_share(a)).collect::<Result<Vec<f64>>>()?;
-    let share_of = |a: f64| shares[amps.partition_point(|&x| x < a)];
+    let critical = system::critical(shape, &amps, check.system.as_ref())?;
+    let at_amp = |a: f64| amps.partition_point(|&x| x < a);
     let mut out = Vec::with_capacity(rows.len());
     for (i, (&(vbar, amp, mu_ratio), e)) in rows.iter().zip(exact).enumerate() {
-        let exact = e?;
-        let error = mu_ratio - exact;
-        let peer_error = peer.as_ref().map(|p| p[i] - exact);
+        let e = e?;
+        let error = mu_ratio - e.mu;
         out.push(Row {
             row: i,
             vbar,
             amp,
             mu_ratio,
-            exact,
+            exact: e.mu,
             error,
-            relative_error: (exact != 0.0).then(|| error / exact),
-            regime: shape.regime(vbar, amp)?,
-            jumping_share: share_of(amp),
-            peer_error,
+            relative_error: (e.mu != 0.0).then(|| error / e.mu),
+            regime: system::regime(shape, vbar, amp, critical.as_ref().map(|c| c[at_amp(amp)]))?,
+            jumping_share: shares[at_amp(amp)],
+            peer_error: peer.as_ref().map(|p| p[i] - e.mu),
+            period: e.period,
+            exact_error_estimate: e.estimate,
         });
     }
-    let all = Summary::of(out.iter()).ok_or_else(|| Error::Internal { what: "no rows to summarise".into() })?;
-    let mut regimes: Vec<ContactRegime> = out.iter().map(|r| r.regime).collect();
+    // Diverged rows are a finding of their own, not part of the statistics.
+    let finite: Vec<Row> = out.iter().filter(|r| r.mu_ratio.is_finite()).copied().collect();
+    let all = Summary::of(finite.iter())
+        .or_else(|| Summary::of(out.iter()))
+        .ok_or_else(|| Error::Internal { what: "no rows to summarise".into() })?;
+    let mut regimes: Vec<ContactRegime> = finite.iter().map(|r| r.regime).collect();
     regimes.sort();
     regimes.dedup();
     let by_regime = regimes
         .into_iter()
         .filter_map(|g| {
-            let group = || out.iter().filter(move |r| r.regime == g);
+            let group = || finite.iter().filter(move |r| r.regime == g);
             let lo = group().map(|r| r.jumping_share).fold(f64::INFINITY, f64::min);
             let hi = group().map(|r| r.jumping_share).fold(f64::NEG_INFINITY, f64::max);
             Summary::of(group()).map(|summary| RegimeSummary { regime: g, jumping_share: [lo, hi], summary })
@@ -451,9 +495,13 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result
         .collect();
     let by_amp = amps
         .iter()
-        .filter_map(|&a| Summary::of(out.iter().filter(|r| r.amp == a)).map(|summary| AmpSummary { amp: a, summary }))
+        .filter_map(|&a| {
+            Summary::of(finite.iter().filter(|r| r.amp == a)).map(|summary| AmpSummary { amp: a, summary })
+        })
         .collect();
-    let findings = findings::findings(shape, &out, &amps, at_rest, tolerance)?;
+    let mut findings = findings::findings(shape, &finite, &amps, check, critical.as_deref())?;
+    findings.extend(diverged(out.iter().map(|r| (r.row, r.mu_ratio))));
+    findings.extend(beyond_max_error(out.iter().map(|r| (r.row, r.error)), check.max_error));
     let peer = check.peer.map(|st| PeerSummary {
         steps_per_period: st.steps_per_period,
         springs: if shape.is_flat() { 1 } else { st.springs },
@@ -472,8 +520,36 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result
         by_amp,
         findings,
         peer,
+        system: check.system,
         rows: out,
     })
+}
+
+/// [`FindingKind::Diverged`]: the rows of `(row, value)` whose value is not finite.
+pub(crate) fn diverged(values: impl Iterator<Item = (usize, f64)>) -> Option<Finding> {
+    finding(
+        FindingKind::Diverged,
+        values.filter(|v| !v.1.is_finite()).map(|v| v.0).collect(),
+        "values that are not finite (NaN or infinite): the run diverged at these rows (a time step beyond the \
+         stability limit, a wrong sign of a restoring force, a division by zero); the other rows are compared",
+    )
+}
+
+/// [`FindingKind::MaxError`]: the rows of `(row, error)` beyond `max_error`
+/// (a NaN error is beyond any bound).
+pub(crate) fn beyond_max_error(errors: impl Iterator<Item = (usize, f64)>, max_error: Option<f64>) -> Option<Finding> {
+    let bound = max_error?;
+    let (mut rows, mut worst, mut diverged) = (vec![], 0.0f64, false);
+    for (i, e) in errors {
+        if e.is_nan() || e.abs() > bound {
+            rows.push(i);
+            diverged |= e.is_nan();
+            worst = worst.max(e.abs());
+        }
+    }
+    let and = if diverged { ", and rows that diverged" } else { "" };
+    let hint = format!("errors above the largest accepted (--max-error {bound:e}): up to {worst:.3e}{and}");
+    finding(FindingKind::MaxError, rows, &hint)
 }
 
 /// A finding about the whole input (no rows: `count` 0).

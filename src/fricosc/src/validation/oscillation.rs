@@ -120,20 +120,7 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
     let oscillations = checked(shape, rows, check)?;
     let system = check.system.as_ref();
     let exact = crate::numerics::par::map(&oscillations, |c| exact_row(shape, c, system));
-    let peer: Option<Vec<f64>> = match check.peer {
-        Some(st) => Some(
-            crate::numerics::par::map(&oscillations, |o| match system {
-                Some(sys) => {
-                    let sys = sys.with_springs(st.springs.max(crate::system::MIN_SPRINGS))?;
-                    crate::stepper::system(shape, &o.with_system(sys), st.steps_per_period, SYSTEM_PEER_PERIODS)
-                }
-                None => crate::stepper::evaluate(shape, o, st).map(|e| e.ratio.mu_ratio),
-            })
-            .into_iter()
-            .collect::<Result<Vec<f64>>>()?,
-        ),
-        None => None,
-    };
+    let peer = peer_values(shape, &oscillations, check)?;
     let mut out = Vec::with_capacity(rows.len());
     for (i, (r, e)) in rows.iter().zip(exact).enumerate() {
         let (x, regime, estimate) = e?;
@@ -155,10 +142,14 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
     let errors = |rows: &[&OscillationRow]| {
         Summary::of_errors(rows.iter().map(|r| (r.row, r.error, r.relative_error)).collect::<Vec<_>>().into_iter())
     };
+    // Diverged rows are a finding of their own, not part of the statistics.
+    let finite: Vec<&OscillationRow> = out.iter().filter(|r| r.mu_ratio.is_finite()).collect();
     let all: Vec<&OscillationRow> = out.iter().collect();
-    let summary = errors(&all).ok_or_else(|| Error::Internal { what: "no rows to summarise".into() })?;
+    let summary = errors(&finite)
+        .or_else(|| errors(&all))
+        .ok_or_else(|| Error::Internal { what: "no rows to summarise".into() })?;
     let mut names: Vec<&str> = vec![];
-    for r in &out {
+    for r in &finite {
         if !names.contains(&r.regime.as_str()) {
             names.push(&r.regime);
         }
@@ -166,7 +157,7 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
     let by_regime = names
         .iter()
         .filter_map(|&n| {
-            let rows: Vec<&OscillationRow> = out.iter().filter(|r| r.regime == n).collect();
+            let rows: Vec<&OscillationRow> = finite.iter().copied().filter(|r| r.regime == n).collect();
             errors(&rows).map(|summary| OscillationRegime { regime: n.to_string(), summary })
         })
         .collect();
@@ -201,9 +192,12 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
          discretisation but a bug (see the peer_error column)",
     ));
     if system.is_none() {
-        let errors: Vec<f64> = out.iter().map(|r| r.error).collect();
+        // A diverged row (its own finding) is not an error of order one.
+        let errors: Vec<f64> = out.iter().map(|r| if r.mu_ratio.is_finite() { r.error } else { 0.0 }).collect();
         findings.extend(super::convention::oscillation_finding(shape, rows, &errors));
     }
+    findings.extend(super::diverged(out.iter().map(|r| (r.row, r.mu_ratio))));
+    findings.extend(super::beyond_max_error(out.iter().map(|r| (r.row, r.error)), check.max_error));
     Ok(OscillationValidation {
         shape: shape.name().to_string(),
         tolerance: tol,
@@ -214,6 +208,17 @@ pub fn compare_oscillation(shape: &Shape, rows: &[[f64; 5]], check: &super::Chec
         system: check.system,
         rows: out,
     })
+}
+
+/// The stepping peer's value at every row, with a peer: on a system the
+/// stepper with the body ([`SYSTEM_PEER_PERIODS`] periods).
+fn peer_values(shape: &Shape, oscillations: &[Conditions], check: &super::Check) -> Result<Option<Vec<f64>>> {
+    let Some(st) = check.peer else { return Ok(None) };
+    let values = crate::numerics::par::map(oscillations, |o| match check.system {
+        Some(sys) => super::system::peer(shape, o, sys, st),
+        None => crate::stepper::evaluate(shape, o, st).map(|e| e.ratio.mu_ratio),
+    });
+    Ok(Some(values.into_iter().collect::<Result<Vec<f64>>>()?))
 }
 
 /// Every row's oscillation, checked (the first bad row named), and the peer's work.
@@ -230,9 +235,9 @@ fn checked(shape: &Shape, rows: &[[f64; 5]], check: &super::Check) -> Result<Vec
         let at = |reason: String| Error::Parse { context: format!("row {i}"), reason };
         let c = Conditions::vhat(r[0], r[1]).and_then(|c| c.with_tangential(r[2], r[3]));
         oscillations.push(c.map_err(|e| at(e.to_string()))?);
-        if !r[4].is_finite() {
-            return Err(at(format!("mu_ratio = {:?} is not finite", r[4])));
-        }
+    }
+    if let Some(m) = check.max_error {
+        crate::error::check_nonneg("max-error", m)?;
     }
     super::check_peer_work(shape, rows.len(), check.peer)?;
     if let (Some(_), Some(st)) = (&check.system, check.peer) {

@@ -175,21 +175,6 @@ impl Table {
     }
 }
 
-impl Table {
-    /// `[vhat, amp, tangential_amp, phase, mu_ratio]` of every row, a table
-    /// without `tangential_amp` as one without tangential oscillation: the
-    /// input of [`super::compare_oscillation`] on a system.
-    ///
-    /// # Errors
-    /// As [`Table::rows`] and [`Table::oscillation_rows`].
-    pub fn rows_as_oscillation(&self, mu0: Option<f64>, source: &str) -> Result<Vec<[f64; 5]>> {
-        if self.tangential.is_some() {
-            return self.oscillation_rows(mu0, source);
-        }
-        Ok(self.rows(mu0, source)?.into_iter().map(|(vbar, amp, mu)| [vbar * amp, amp, 0.0, 0.0, mu]).collect())
-    }
-}
-
 /// `(tangential_amp, phase)` of every row, where the table has `tangential_amp`
 /// (a missing `phase` is 0); it needs the velocities as `vhat`.
 fn tangential_of(

@@ -35,6 +35,8 @@ impl FindingKind {
             FindingKind::ContactLoss => "contact_loss",
             FindingKind::LargeErrors => "large_errors",
             FindingKind::Convention => "convention",
+            FindingKind::Diverged => "diverged",
+            FindingKind::MaxError => "max_error",
         }
     }
 }
@@ -91,12 +93,34 @@ impl Validation {
             ),
             100,
         );
+        if let Some(sys) = &v.system {
+            let estimate = v.rows.iter().filter_map(|r| r.exact_error_estimate).fold(0.0f64, f64::max);
+            let means = v.rows.iter().filter(|r| r.vbar > 0.0 && r.period.is_none()).count();
+            let means = if means > 0 {
+                format!("; {} without period (long-time means)", count(means, "row"))
+            } else {
+                String::new()
+            };
+            s += &wrap(
+                "",
+                &format!(
+                    "On a system (K/kx {}, omega/omega_c {}, zeta {}): the exact values are its attractors, their \
+                     largest error estimate {}{means}.",
+                    sys.stiffness(),
+                    sys.frequency_ratio(),
+                    sys.damping(),
+                    e(estimate)
+                ),
+                100,
+            );
+        }
         if v.rows.iter().any(|r| r.vbar == 0.0) {
             s += &wrap("", &format!("Rows at vbar = 0 are compared with {at_rest}."), 100);
         }
-        s += &wrap(
-            "",
-            &format!(
+        let largest = if v.max_abs_error.is_nan() {
+            "No row has a finite value: every row diverged.".to_string()
+        } else {
+            format!(
                 "Largest |error| {} at row {} (vbar {}, amp {}: {} against the exact {}); rms {}.",
                 e(v.max_abs_error),
                 w.row,
@@ -105,9 +129,9 @@ impl Validation {
                 w.mu_ratio,
                 w.exact,
                 e(v.rms_error)
-            ),
-            100,
-        );
+            )
+        };
+        s += &wrap("", &largest, 100);
         if let Some(p) = &v.peer {
             s += &wrap(
                 "",
@@ -125,8 +149,10 @@ impl Validation {
         if !table.ignored_columns().is_empty() {
             s += &wrap("", &format!("Columns not read: {}.", table.ignored_columns().join(", ")), 100);
         }
-        s += &summary_table("regime", v.by_regime.iter().map(|g| (g.regime.label(g.jumping_share), &g.summary)));
-        s += &summary_table("amp", v.by_amp.iter().map(|g| (g.amp.to_string(), &g.summary)));
+        if !v.by_amp.is_empty() {
+            s += &summary_table("regime", v.by_regime.iter().map(|g| (g.regime.label(g.jumping_share), &g.summary)));
+            s += &summary_table("amp", v.by_amp.iter().map(|g| (g.amp.to_string(), &g.summary)));
+        }
         s += &findings_text(&format!("Findings (value checks to {:?})", v.tolerance), &v.findings, "none", "row");
         s
     }
@@ -154,10 +180,7 @@ impl OscillationValidation {
             s.n, v.shape, s.max_abs_error, s.worst_row, s.rms_error, s.max_rel_error
         );
         if let Some(e) = v.rows.iter().filter_map(|r| r.exact_error_estimate).reduce(f64::max) {
-            let _ = writeln!(
-                out,
-                "the exact values' largest error estimate {e:.3e} (a curved body's springs, a mean without period)"
-            );
+            let _ = writeln!(out, "the exact values' largest error estimate {e:.3e}");
         }
         if let Some(p) = &v.peer {
             let _ = writeln!(

@@ -436,6 +436,7 @@ def validate(
     system_stiffness: Optional[float] = None,
     frequency_ratio: Optional[float] = None,
     damping: Optional[float] = None,
+    max_error: Optional[float] = None,
 ) -> Dict[str, Any]:
     """Compare another code's table with the exact values, as ``fricosc validate``
     does: the same JSON report as a dict (per-row errors and regimes, errors by
@@ -454,7 +455,9 @@ def validate(
     every row and set its error beside yours (``peer_error``).
     ``system_stiffness`` (``frequency_ratio``, ``damping``): the table is on a
     system with mass and stiffness, compared with its attractors (as
-    ``fricosc validate --system-stiffness``).
+    ``fricosc validate --system-stiffness``). ``max_error``: rows whose
+    ``|error|`` exceeds it are a finding (``max_error``). A value that is not
+    finite (NaN, infinite) is a diverged row: a finding (``diverged``).
 
     >>> r = validate({"vbar": [0.2, 1.1], "amp": [0.5, 0.5], "mu_ratio": [0.7145, 1.2]})
     >>> r["max_abs_error"] > 0.19, [f["kind"] for f in r["findings"]]
@@ -472,6 +475,7 @@ def validate(
         None if peer is None else _count(peer, "peer"),
         None if peer_springs is None else _count(peer_springs, "peer_springs"),
         _system(system_stiffness, frequency_ratio, damping),
+        None if max_error is None else float(max_error),
     )
     result["shape_source"] = source
     return result

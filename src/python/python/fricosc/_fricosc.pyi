@@ -71,6 +71,7 @@ def validate(
     peer: Optional[int],
     peer_springs: Optional[int],
     system: Optional[Tuple[float, float, float]] = None,
+    max_error: Optional[float] = None,
 ) -> Dict[str, Any]: ...
 def validate_series(
     shape: CoreShape,

@@ -1,0 +1,99 @@
+"""The example stepper of the pin on its system spring
+(``examples/system_stepper.py``, numpy, written from the model's equation
+alone) with each of its planted mistakes, validated through the Python
+package and the command line on the system it was meant to solve: each
+mistake named by its finding (exit 1), the correct stepper passing (no
+finding, exit 0), the table without the system flags hinted at the system,
+and both ways in giving the same report.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import pathlib
+from typing import Any, Dict, List
+
+import numpy as np
+import pytest
+
+import fricosc
+from test_fricosc import ROOT, cli
+
+SPEC = importlib.util.spec_from_file_location("system_stepper", ROOT / "src/python/examples/system_stepper.py")
+assert SPEC is not None and SPEC.loader is not None
+STEPPER: Any = importlib.util.module_from_spec(SPEC)
+SPEC.loader.exec_module(STEPPER)
+SYSTEM = {"system_stiffness": STEPPER.KAPPA, "frequency_ratio": STEPPER.OMEGA, "damping": STEPPER.ZETA}
+FLAGS = ["--system-stiffness", "1", "--frequency-ratio", "0.8", "--damping", "0.05"]
+
+
+def table(bug: str) -> Dict[str, Any]:
+    vbar, amp = (np.array(x, dtype=float) for x in zip(*[(v, a) for a in STEPPER.AMPS for v in STEPPER.VBARS]))
+    return {"vbar": vbar, "amp": amp, "mu_ratio": STEPPER.step_table(vbar, amp, bug)}
+
+
+def both(tmp_path: pathlib.Path, columns: Dict[str, Any], system: bool = True) -> Dict[str, Any]:
+    """The package's report, checked against the command line's: the same
+    findings with the same rows and hints, the same largest error, exit 1
+    exactly on findings."""
+    mine = fricosc.validate(columns, **(SYSTEM if system else {}))
+    path = tmp_path / "run.csv"
+    rows = zip(*(np.asarray(columns[c]) for c in columns))
+    path.write_text(",".join(columns) + "\n" + "".join(",".join(repr(float(x)) for x in r) + "\n" for r in rows))
+    args = FLAGS if system else []
+    theirs = json.loads(cli("validate", str(path), *args, "--format", "json", status=1 if mine["findings"] else 0))
+    assert theirs["findings"] == mine["findings"]
+    assert theirs["max_abs_error"] == mine["max_abs_error"] or np.isnan(mine["max_abs_error"])
+    return mine
+
+
+def kinds(report: Dict[str, Any]) -> List[str]:
+    return [f["kind"] for f in report["findings"]]
+
+
+def test_the_correct_system_stepper_passes(tmp_path: pathlib.Path) -> None:
+    r = both(tmp_path, table("none"))
+    assert kinds(r) == [] and r["max_abs_error"] < 1e-3, r["findings"]
+    assert r["system"]["stiffness"] == 1.0 and all("period" in row for row in r["rows"])
+
+
+@pytest.mark.parametrize(
+    "bug, names",
+    [
+        ("no_damping", "the damping left out (zeta = 0)"),
+        ("omega", "Omega where Omega^2 belongs in the mass term"),
+        ("norm_by_one", "the static normal force"),
+        ("few_periods", "a run of 15 periods"),
+    ],
+)
+def test_each_planted_mistake_is_named(tmp_path: pathlib.Path, bug: str, names: str) -> None:
+    r = both(tmp_path, table(bug))
+    named = [f for f in r["findings"] if f["kind"] == "convention"]
+    assert len(named) == 1 and names in named[0]["hint"], r["findings"]
+
+
+def test_a_diverged_run_is_a_finding_on_its_rows(tmp_path: pathlib.Path) -> None:
+    columns = table("spring_sign")
+    assert np.isnan(columns["mu_ratio"]).all()
+    r = both(tmp_path, columns)
+    assert kinds(r) == ["diverged"] and r["findings"][0]["count"] == len(columns["vbar"])
+    # One diverged row among good ones: the others are compared as usual.
+    good = table("none")
+    good["mu_ratio"][3] = np.inf
+    r = both(tmp_path, good)
+    assert kinds(r) == ["diverged"] and r["findings"][0]["rows"] == [3] and r["max_abs_error"] < 1e-3
+
+
+def test_the_system_left_out_is_hinted(tmp_path: pathlib.Path) -> None:
+    r = both(tmp_path, table("none"), system=False)
+    hint = next(f["hint"] for f in r["findings"] if f["kind"] == "not_one_above_critical")
+    assert "--system-stiffness" in hint
+
+
+def test_beyond_max_error_is_a_finding(tmp_path: pathlib.Path) -> None:
+    columns = table("none")
+    r = fricosc.validate(columns, max_error=1e-4, **SYSTEM)
+    beyond = [f for f in r["findings"] if f["kind"] == "max_error"]
+    assert len(beyond) == 1 and beyond[0]["count"] == sum(abs(x["error"]) > 1e-4 for x in r["rows"])
+    assert beyond[0]["count"] > 0
