@@ -147,7 +147,7 @@ fn validate_compares_a_table_on_a_system() {
     let out = run(&(above.join("\n") + "\n"), &["--format", "json"]);
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["findings"][0]["kind"], "above_one", "{v}");
-    refused(&[&args[..], &["--series"]].concat(), Some(&stepped), "one table on a system");
+    refused(&[&args[..], &["--history", "--vbar", "0.3", "--amp", "0.5"]].concat(), Some(&stepped), "not --history");
 }
 
 /// `validate` on a system in the stiff layout: per amplitude, each row's
@@ -177,13 +177,15 @@ fn validate_on_a_system_names_the_mistake() {
     let header = csv.lines().next().unwrap();
     assert!(header.ends_with(",regime,jumping_share,period,exact_error_estimate"), "{header}");
     assert!(csv.lines().nth(1).unwrap().split(',').nth(9) == Some("1"), "{csv}");
-    let json = r#"[{"vbar": 0.3, "amp": 0.5, "mu_ratio": null}, {"vbar": 0.5, "amp": 0.5, "mu_ratio": 0.7}]"#;
-    let out = fricosc(&[&args[..], &["--format", "json"]].concat(), Some(json));
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(
-        (out.status.code(), &v["findings"][0]["kind"], &v["findings"][0]["rows"]),
-        (Some(1), &"diverged".into(), &serde_json::json!([0]))
+    let exact = solve(&Shape::flat(), &Conditions::vbar(0.5, 0.5).unwrap(), &System::new(1.0, 0.5, 0.1).unwrap());
+    let json = format!(
+        r#"[{{"vbar": 0.3, "amp": 0.5, "mu_ratio": null}}, {{"vbar": 0.5, "amp": 0.5, "mu_ratio": {}}}]"#,
+        exact.unwrap().mu_ratio
     );
+    let out = fricosc(&[&args[..], &["--format", "json"]].concat(), Some(&json));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!((out.status.code(), &v["findings"][0]["kind"]), (Some(1), &"diverged".into()), "{v}");
+    assert_eq!((&v["findings"][0]["rows"], v["findings"].as_array().unwrap().len()), (&serde_json::json!([0]), 1));
 }
 
 /// `plot --system-stiffness`: each curve's points are the library's

@@ -192,10 +192,10 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
     let system = a.system.system(a.springs)?;
     let check =
         Check::default().with_at_rest(at_rest).with_tolerance(tolerance).with_system(system).with_max_error(max_error);
-    if system.is_some() && (a.series || h.on) {
+    if system.is_some() && h.on {
         return Err(Error::Parse {
             context: "--system-stiffness".into(),
-            reason: "validate compares one table on a system (not --series or --history)".into(),
+            reason: "validate compares tables on a system (not --history)".into(),
         });
     }
     if a.series {

@@ -578,7 +578,7 @@ fn at_rest_of(at_rest: &str) -> PyResult<AtRest> {
 /// A convergence study (`fricosc validate --series`'s report) as a dict: one
 /// table of columns per resolution, each read as [`validate`] reads one.
 #[pyfunction]
-#[pyo3(signature = (shape, resolutions, tables, mu0, at_rest, tolerance, target))]
+#[pyo3(signature = (shape, resolutions, tables, mu0, at_rest, tolerance, target, system=None))]
 #[allow(clippy::too_many_arguments)]
 fn validate_series<'py>(
     py: Python<'py>,
@@ -589,14 +589,16 @@ fn validate_series<'py>(
     at_rest: &str,
     tolerance: f64,
     target: Option<f64>,
+    system: Option<(f64, f64, f64)>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let check = Check::default().with_at_rest(at_rest_of(at_rest)?).with_tolerance(tolerance);
+    let system = system.map(|(k, om, z)| fricosc::system::System::new(k, om, z)).transpose().map_err(to_py)?;
+    let check = Check::default().with_at_rest(at_rest_of(at_rest)?).with_tolerance(tolerance).with_system(system);
     let mut rows = vec![];
     for (names, columns) in tables {
         rows.push(table_of(names, columns)?.rows(mu0, "table").map_err(to_py)?);
     }
     let shape = &shape.inner;
-    let result = py.detach(|| convergence(shape, &resolutions, &rows, &check, target)).map_err(to_py)?;
+    let result = interruptible(py, || convergence(shape, &resolutions, &rows, &check, target))?;
     pythonize::pythonize(py, &result).map_err(serialise_err)
 }
 

@@ -67,6 +67,9 @@ pub(super) fn findings(
         let table: Vec<(usize, f64, f64, f64)> = rows.iter().map(|r| (r.row, r.vbar, r.amp, r.mu_ratio)).collect();
         let errors: Vec<f64> = rows.iter().map(|r| r.error).collect();
         out.extend(super::system::mistake(shape, &table, sys, &errors));
+        if out.is_empty() {
+            out.extend(super::system::unexplained(rows.iter().map(|r| (r.row, r.error)), worst));
+        }
     }
     if out.is_empty() {
         out.extend(convention::large_errors(convention::large(rows.iter().map(|r| (r.row, r.error))), worst));

@@ -141,6 +141,9 @@ pub struct Convergence {
     /// What to be careful with (rows whose Richardson value is worse than the
     /// finest run); not findings.
     pub cautions: Vec<Finding>,
+    /// The system the rows were compared on, if any ([`Check::system`]).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub system: Option<crate::system::System>,
 }
 
 /// The status of a row with errors `errors` at increasing `res` and observed order `p`.
@@ -205,22 +208,13 @@ pub fn convergence(
     check: &Check,
     target: Option<f64>,
 ) -> Result<Convergence> {
-    let at_rest = check.at_rest;
-    if resolutions.len() != tables.len() || resolutions.len() < 2 {
-        return Err(Error::param("resolutions", resolutions.len() as f64, "a series needs two tables or more"));
-    }
-    if let Some(t) = target {
-        if !(t.is_finite() && t > 0.0) {
-            return Err(Error::param("target", t, "must be finite and > 0"));
-        }
-    }
-    let mut order: Vec<usize> = (0..resolutions.len()).collect();
-    order.sort_by(|&i, &j| resolutions[i].total_cmp(&resolutions[j]));
-    let res: Vec<f64> = order.iter().map(|&i| resolutions[i]).collect();
-    if res.iter().any(|r| !(r.is_finite() && *r > 0.0)) || res.windows(2).any(|w| w[0] == w[1]) {
-        return Err(Error::param("resolutions", res[0], "must be finite, > 0 and distinct"));
-    }
+    let (order, res) = checked_series(resolutions, tables.len(), target)?;
     let first = &tables[order[0]];
+    // On a system, each amplitude's critical velocity (the regimes').
+    let critical = |amp: f64| -> Result<Option<f64>> {
+        let vbar = |s| crate::system::critical_vbar(shape, amp, s).map(|c| c.unwrap_or(f64::INFINITY));
+        check.system.as_ref().map(vbar).transpose()
+    };
     let mut rows = vec![];
     for &(vbar, amp, _) in first {
         let mut values = vec![];
@@ -231,7 +225,7 @@ pub fn convergence(
             })?;
             values.push(found.2);
         }
-        let exact = exact_value(shape, vbar, amp, at_rest)?;
+        let exact = super::system::exact(shape, vbar, amp, check)?.mu;
         let errors: Vec<f64> = values.iter().map(|v| v - exact).collect();
         let (p, constant) = observed_order(&res, &errors);
         let n = values.len();
@@ -254,7 +248,7 @@ pub fn convergence(
         rows.push(SeriesRow {
             vbar,
             amp,
-            regime: shape.regime(vbar, amp)?,
+            regime: super::system::regime(shape, vbar, amp, critical(amp)?)?,
             jumping_share: shape.jumping_share(amp)?,
             status,
             exact,
@@ -288,7 +282,38 @@ pub fn convergence(
     )
     .into_iter()
     .collect();
-    Ok(Convergence { shape: shape.name().to_string(), resolutions: res, target, rows, by_regime, findings, cautions })
+    let system = check.system;
+    Ok(Convergence {
+        shape: shape.name().to_string(),
+        resolutions: res,
+        target,
+        rows,
+        by_regime,
+        findings,
+        cautions,
+        system,
+    })
+}
+
+/// The series' resolutions checked (two or more, finite, positive, distinct;
+/// a `target` finite and positive): the tables' order by resolution, and the
+/// resolutions in it.
+fn checked_series(resolutions: &[f64], tables: usize, target: Option<f64>) -> Result<(Vec<usize>, Vec<f64>)> {
+    if resolutions.len() != tables || resolutions.len() < 2 {
+        return Err(Error::param("resolutions", resolutions.len() as f64, "a series needs two tables or more"));
+    }
+    if let Some(t) = target {
+        if !(t.is_finite() && t > 0.0) {
+            return Err(Error::param("target", t, "must be finite and > 0"));
+        }
+    }
+    let mut order: Vec<usize> = (0..resolutions.len()).collect();
+    order.sort_by(|&i, &j| resolutions[i].total_cmp(&resolutions[j]));
+    let res: Vec<f64> = order.iter().map(|&i| resolutions[i]).collect();
+    if res.iter().any(|r| !(r.is_finite() && *r > 0.0)) || res.windows(2).any(|w| w[0] == w[1]) {
+        return Err(Error::param("resolutions", res[0], "must be finite, > 0 and distinct"));
+    }
+    Ok((order, res))
 }
 
 /// The observed orders of each regime's rows.

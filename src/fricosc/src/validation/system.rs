@@ -199,6 +199,22 @@ pub(super) fn mistake(shape: &Shape, rows: &[(usize, f64, f64, f64)], sys: &Syst
     finding(FindingKind::Convention, rows.iter().map(|r| r.0).collect(), &hint)
 }
 
+/// On a system, errors above [`SUSPECT_ERROR`] that no mistake explains
+/// ([`mistake`]) and no other finding names: [`FindingKind::LargeErrors`]
+/// (on a system the bar is lower than without one: its usual mistakes err
+/// by a few hundredths).
+pub(super) fn unexplained(errors: impl Iterator<Item = (usize, f64)>, worst: f64) -> Option<Finding> {
+    let rows: Vec<usize> = errors.filter(|e| e.1.abs() > SUSPECT_ERROR).map(|e| e.0).collect();
+    let hint = format!(
+        "errors up to {worst:.3}, far above a stepper's discretisation error, and none of the usual mistakes in the \
+         system's equation explains them (the damping left out, Omega for Omega^2 or Omega^4, Omega^2 in the \
+         dashpot, kappa inverted, no system, the static normal force, a run of up to 400 periods): check the \
+         system's parameters as given (--frequency-ratio and --damping are 0 unless given), the start and the \
+         normalisation"
+    );
+    finding(FindingKind::LargeErrors, rows, &hint)
+}
+
 /// Whether a candidate's errors explain the table: its median and largest
 /// error where they do.
 type Fits<'a> = &'a dyn Fn(&[f64]) -> Option<(f64, f64)>;

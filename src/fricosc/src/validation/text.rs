@@ -104,11 +104,8 @@ impl Validation {
             s += &wrap(
                 "",
                 &format!(
-                    "On a system (K/kx {}, omega/omega_c {}, zeta {}): the exact values are its attractors, their \
-                     largest error estimate {}{means}.",
-                    sys.stiffness(),
-                    sys.frequency_ratio(),
-                    sys.damping(),
+                    "On a system {}: the exact values are its attractors, their largest error estimate {}{means}.",
+                    system_params(sys),
                     e(estimate)
                 ),
                 100,
@@ -166,12 +163,7 @@ impl OscillationValidation {
         let v = self;
         let s = &v.summary;
         let setting = match &v.system {
-            Some(sys) => format!(
-                "on a system (K/kx {}, omega/omega_c {}, zeta {})",
-                sys.stiffness(),
-                sys.frequency_ratio(),
-                sys.damping()
-            ),
+            Some(sys) => format!("on a system {}", system_params(sys)),
             None => "under oscillation in the sliding direction".into(),
         };
         let mut out = format!(
@@ -306,6 +298,11 @@ fn origin_text(v: &HistoryValidation) -> String {
     }
 }
 
+/// `(K/kx .., omega/omega_c .., zeta ..)`: the system of a comparison.
+fn system_params(sys: &crate::system::System) -> String {
+    format!("(K/kx {}, omega/omega_c {}, zeta {})", sys.stiffness(), sys.frequency_ratio(), sys.damping())
+}
+
 impl Convergence {
     /// The smallest and largest jumping share of the rows in `regime`.
     #[must_use]
@@ -331,6 +328,9 @@ impl Convergence {
             ),
             100,
         );
+        if let Some(sys) = &c.system {
+            s += &wrap("", &format!("On a system {}: the exact values are its attractors.", system_params(sys)), 100);
+        }
         s += &wrap(
             "",
             "Observed order: the least-squares slope of log |error| against log resolution (errors at rounding left \

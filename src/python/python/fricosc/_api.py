@@ -402,9 +402,8 @@ _READ = ("vbar", "vhat", "amp", "mu_ratio", "mu", "tangential_amp", "phase")
 
 
 def _table(table: Any) -> Tuple[List[str], List[Tuple[str, npt.NDArray[np.float64]]]]:
-    """A table (a mapping of columns) as the extension reads it: every column's
-    name, and the numeric columns fricosc reads (it checks them as the command
-    line checks a file's)."""
+    """A table (a mapping of columns) as the extension reads it: every column's name, and the
+    numeric columns fricosc reads (it checks them as the command line checks a file's)."""
     try:
         names = [str(c) for c in table.keys()]
     except AttributeError:
@@ -453,11 +452,9 @@ def validate(
     ``vbar = 0`` row is compared with). ``peer=M``: run fricosc's stepping peer
     at ``M`` steps per period (and ``peer_springs`` springs, default ``M``) on
     every row and set its error beside yours (``peer_error``).
-    ``system_stiffness`` (``frequency_ratio``, ``damping``): the table is on a
-    system with mass and stiffness, compared with its attractors (as
-    ``fricosc validate --system-stiffness``). ``max_error``: rows whose
-    ``|error|`` exceeds it are a finding (``max_error``). A value that is not
-    finite (NaN, infinite) is a diverged row: a finding (``diverged``).
+    ``system_stiffness`` (``frequency_ratio``, ``damping``): on a system with mass and stiffness,
+    against its attractors (``fricosc validate --system-stiffness``). Findings ``max_error``: rows
+    beyond ``max_error``; ``diverged``: values not finite (the other rows are compared).
 
     >>> r = validate({"vbar": [0.2, 1.1], "amp": [0.5, 0.5], "mu_ratio": [0.7145, 1.2]})
     >>> r["max_abs_error"] > 0.19, [f["kind"] for f in r["findings"]]
@@ -495,6 +492,9 @@ def validate_series(
     mu0: Optional[float] = None,
     tolerance: float = 1e-9,
     target: Optional[float] = None,
+    system_stiffness: Optional[float] = None,
+    frequency_ratio: Optional[float] = None,
+    damping: Optional[float] = None,
 ) -> Dict[str, Any]:
     """A convergence study, as ``fricosc validate --series`` does: ``tables``
     maps each resolution (e.g. steps per period) to the table computed at it
@@ -503,7 +503,8 @@ def validate_series(
     ``not_converging``, ``resolution_independent``, ``exact``) and, with
     ``target``, the resolution needed (or ``"unreachable"``); per regime the
     median order; findings (rows that do not converge, errors that do not depend
-    on the resolution, the finest table's own findings) and cautions.
+    on the resolution, the finest table's own findings) and cautions; on a system
+    (``system_stiffness=``, as :func:`validate`) against its attractors.
 
     >>> exact = float(mu_ratio("flat", 0.5, 0.5))
     >>> t = {m: {"vbar": [0.5], "amp": [0.5], "mu_ratio": [exact + 1 / m ** 2]} for m in (100, 200, 400)}
@@ -525,6 +526,7 @@ def validate_series(
         at_rest,
         float(tolerance),
         None if target is None else float(target),
+        _system(system_stiffness, frequency_ratio, damping),
     )
     result["shape_source"] = source
     return result

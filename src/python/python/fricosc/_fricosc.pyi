@@ -81,6 +81,7 @@ def validate_series(
     at_rest: str,
     tolerance: float,
     target: Optional[float],
+    system: Optional[Tuple[float, float, float]] = None,
 ) -> Dict[str, Any]: ...
 def scene(text: Optional[str], source: str) -> List[Dict[str, Any]]: ...
 def validate_history(
