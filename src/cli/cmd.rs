@@ -62,7 +62,7 @@ impl Command {
             Command::Table(a) => done(table::run(a)),
             Command::Plot(a) => done(plot::run(a)),
             Command::Validate(a) => validate::run(a),
-            Command::Fit(a) => done(fit::run(a)),
+            Command::Fit(a) => fit::run(a),
             Command::Suite(a) => suite::run(a),
             Command::Bench(a) => done(bench::run(a)),
             Command::Claims(a) => done(claims::run(a)),

@@ -1,6 +1,6 @@
 //! `fricosc fit`: the model fitted to measured friction (`fricosc::fit`).
 
-use crate::cmd::{emit, positive, read_input};
+use crate::cmd::{emit, positive, read_input, Outcome};
 use crate::error::{Error, Result};
 use crate::tables::{read_columns, Kind};
 use clap::Args;
@@ -21,7 +21,8 @@ pub struct FitArgs {
     /// Hold kx/kz at this value (else fitted).
     #[arg(long, allow_hyphen_values = true, value_parser = positive)]
     pub stiffness_ratio: Option<f64>,
-    /// Hold the mean indentation u0 (m) at this value (else fitted).
+    /// Hold the mean indentation u0 (m) at this value (else fitted); one u0 for all rows (a fixed
+    /// mean indentation, not a fixed mean load).
     #[arg(long, allow_hyphen_values = true, value_parser = positive)]
     pub u0: Option<f64>,
     /// summary or json (default: summary at a terminal, else json).
@@ -33,6 +34,9 @@ pub struct FitArgs {
     pub plot: Option<String>,
 }
 
+/// Most rows a drawing shows (evenly spread; the outliers besides).
+const MAX_DRAWN: usize = 4_000;
+
 /// The columns `fit` reads, in order.
 const WANTED: [(&str, Kind); 6] = [
     ("v0", Kind::Number),
@@ -43,7 +47,8 @@ const WANTED: [(&str, Kind); 6] = [
     ("sigma", Kind::Number),
 ];
 
-pub fn run(a: FitArgs) -> Result<()> {
+/// Prints the fit; [`Outcome::Negative`] (exit 1) where it has a verdict.
+pub fn run(a: FitArgs) -> Result<Outcome> {
     let json = match a.format.as_deref() {
         Some("json") => true,
         Some("summary") => false,
@@ -63,17 +68,30 @@ pub fn run(a: FitArgs) -> Result<()> {
     let rows = measurements(&text, &source)?;
     let fixed = Fixed { mu0: a.mu0, stiffness_ratio: a.stiffness_ratio, u0: a.u0 };
     let r = fricosc::fit::fit(&shape, &rows, &fixed)?;
+    // The result first: a drawing never holds it back.
+    let out = if json { to_json(shape.name(), &rows, &r)? + "\n" } else { summary(shape.name(), &source, &r) };
+    emit(&out)?;
     if let Some(path) = &a.plot {
         crate::cmd::write_drawing("--plot", path, &drawing(&shape, &rows, &r)?)?;
     }
-    let out = if json { to_json(shape.name(), &rows, &r)? + "\n" } else { summary(shape.name(), &source, &r) };
-    emit(&out)
+    Ok(if r.verdicts.is_empty() { Outcome::Done } else { Outcome::Negative })
 }
 
 /// The rows of a measurement file (named columns; a missing one named).
 fn measurements(text: &str, source: &str) -> Result<Vec<Measurement>> {
     let c = read_columns(text, source, &WANTED, crate::validate::MAX_ROWS)?;
     let bad = |reason: String| Error::Parse { context: source.into(), reason };
+    // A column fit does not read is refused, not ignored (a 'Sigma' would run unweighted).
+    if let Some(name) = c.names.iter().find(|n| !WANTED.iter().any(|w| w.0 == n.as_str())) {
+        let known: Vec<&str> = WANTED.iter().map(|w| w.0).collect();
+        let like =
+            known.iter().find(|k| k.eq_ignore_ascii_case(name.trim())).map(|k| format!(" (did you mean '{k}'?)"));
+        return Err(bad(format!(
+            "unknown column '{name}'{}: fit reads {}",
+            like.unwrap_or_default(),
+            known.join(", ")
+        )));
+    }
     let need = |k: usize| c.numbers[k].clone().ok_or_else(|| bad(format!("no column '{}'", WANTED[k].0)));
     let (v0, du, mu) = (need(0)?, need(1)?, need(4)?);
     let omega = match (&c.numbers[2], &c.numbers[3]) {
@@ -92,49 +110,86 @@ fn parameter(p: &Parameter) -> serde_json::Value {
     serde_json::json!({"value": p.value, "stderr": p.stderr, "fixed": p.fixed})
 }
 
+/// Every row of the JSON report, each made as it is written (a million rows
+/// never exist as JSON values at once).
+struct RowsOut<'a>(&'a [Measurement], &'a FitReport);
+
+impl serde::Serialize for RowsOut<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        let (rows, r) = (self.0, self.1);
+        s.collect_seq(rows.iter().enumerate().map(|(i, m)| {
+            let (res, p) = (r.residuals[i], r.points[i]);
+            serde_json::json!({"v0": m.v0, "du": m.du, "omega": m.omega, "mu": m.mu, "sigma": m.sigma,
+                "model": m.mu - res, "residual": res, "normalised_residual": r.normalised_residuals[i],
+                "vbar": p[0], "amp": p[1]})
+        }))
+    }
+}
+
 /// The report as JSON: parameters, covariance, correlation, chi-square, and every row.
 fn to_json(shape: &str, rows: &[Measurement], r: &FitReport) -> Result<String> {
-    let per_row: Vec<serde_json::Value> = rows
-        .iter()
-        .zip(&r.residuals)
-        .zip(&r.points)
-        .map(|((m, res), p)| {
-            serde_json::json!({"v0": m.v0, "du": m.du, "omega": m.omega, "mu": m.mu, "sigma": m.sigma,
-                "model": m.mu - res, "residual": res, "vbar": p[0], "amp": p[1]})
-        })
-        .collect();
-    let v = serde_json::json!({
+    let head = serde_json::json!({
         "shape": shape,
         "parameters": {"mu0": parameter(&r.mu0), "stiffness_ratio": parameter(&r.stiffness_ratio),
             "u0": parameter(&r.u0)},
         "order": ["mu0", "stiffness_ratio", "u0"],
         "covariance": r.covariance, "correlation": r.correlation,
         "chi2": r.chi2, "dof": r.dof, "reduced_chi2": r.reduced_chi2, "weighted": r.weighted,
-        "verdicts": r.verdicts, "iterations": r.iterations, "rows": per_row,
+        "p_value": r.p_value, "verdicts": r.verdicts, "notes": r.notes, "outliers": r.outliers,
+        "iterations": r.iterations, "converged": r.converged,
     });
-    serde_json::to_string_pretty(&v).map_err(|e| Error::Internal { what: format!("fit report: {e}") })
+    #[derive(serde::Serialize)]
+    struct Out<'a> {
+        #[serde(flatten)]
+        head: serde_json::Value,
+        rows: RowsOut<'a>,
+    }
+    serde_json::to_string_pretty(&Out { head, rows: RowsOut(rows, r) })
+        .map_err(|e| Error::Internal { what: format!("fit report: {e}") })
 }
 
-/// The report for a person.
+/// The report for a person: each value rounded to its standard error's
+/// second significant digit.
 fn summary(shape: &str, source: &str, r: &FitReport) -> String {
-    let line = |name: &str, p: &Parameter| {
-        let v = crate::output::num(p.value);
-        match (p.fixed, p.stderr) {
-            (true, _) => format!("  {name:<16} {v} (fixed)\n"),
-            (false, Some(se)) => format!("  {name:<16} {v} +- {se:.3e}\n"),
-            (false, None) => format!("  {name:<16} {v} (not determined)\n"),
-        }
+    let line = |name: &str, p: &Parameter| match (p.fixed, p.stderr) {
+        (true, _) => format!("  {name:<16} {} (fixed)\n", crate::output::num(p.value)),
+        (false, Some(se)) => format!("  {name:<16} {}\n", rounded(p.value, se)),
+        (false, None) => format!("  {name:<16} {} (not determined)\n", crate::output::num(p.value)),
     };
     let mut out = format!("{source}: {} rows fitted with the {shape} model\n", r.residuals.len());
     out += &line("mu0", &r.mu0);
     out += &line("kx/kz", &r.stiffness_ratio);
     out += &line("u0 (m)", &r.u0);
     let kind = if r.weighted { "weighted by sigma" } else { "unweighted: errors scaled by the residuals" };
-    out += &format!("chi2 {:.4e}, dof {}, reduced chi2 {:.4e} ({kind})\n", r.chi2, r.dof, r.reduced_chi2);
+    let p =
+        r.p_value.map(|p| if p >= 0.01 { format!(", p {p:.2}") } else { format!(", p {p:.1e}") }).unwrap_or_default();
+    out += &format!("chi2 {:.4}, dof {}, reduced chi2 {:.3}{p} ({kind})\n", r.chi2, r.dof, r.reduced_chi2);
     for v in &r.verdicts {
-        out += &format!("not determined: {v}\n");
+        out += &format!("verdict: {v}\n");
+    }
+    for n in &r.notes {
+        out += &format!("note: {n}\n");
     }
     out
+}
+
+/// `value +- error`, the error to two significant digits and the value to
+/// the same decimal place (`0.3487 +- 0.0010`; in exponent form beyond 1e4
+/// or below 1e-3: `(9.72 +- 0.14)e-7`).
+fn rounded(value: f64, error: f64) -> String {
+    if !(error.is_finite() && error > 0.0) {
+        return format!("{} +- {}", crate::output::num(value), crate::output::num(error));
+    }
+    let place = error.log10().floor() as i32 - 1;
+    let exp = if value != 0.0 { value.abs().log10().floor() as i32 } else { place + 1 };
+    if (-3..4).contains(&exp) {
+        let digits = (-place).max(0) as usize;
+        format!("{value:.digits$} +- {error:.digits$}")
+    } else {
+        let scale = 10f64.powi(exp);
+        let digits = (exp - place).max(0) as usize;
+        format!("({:.digits$} +- {:.digits$})e{exp}", value / scale, error / scale)
+    }
 }
 
 /// The fit's drawing: the data (with their `sigma` as error bars) and the
@@ -156,14 +211,19 @@ fn drawing(shape: &fricosc::Shape, rows: &[Measurement], r: &FitReport) -> Resul
                 Ok((v0, r.predict(shape, v0, du, omega)?))
             })
             .collect::<Result<Vec<_>>>()?;
-        let label = format!("Δu = {du:e} m, f = {} Hz", crate::output::num(omega / std::f64::consts::TAU));
+        let f = omega / std::f64::consts::TAU;
+        let freq = if f >= 1e3 { format!("{} kHz", f / 1e3) } else { format!("{f} Hz") };
+        let label = format!("Δu = {du:e} m, f = {freq}");
         ymax = curve.iter().fold(ymax, |m, p| m.max(p.1));
         top.push(Series { label: label.clone(), points: curve, style, legend: true });
+        // At most about MAX_DRAWN rows drawn, evenly spread, and every outlier.
+        let every = rows.len().div_ceil(MAX_DRAWN);
         let mine: Vec<(&Measurement, f64)> = rows
             .iter()
             .zip(&r.residuals)
-            .filter(|(m, _)| (m.du, m.omega) == (du, omega))
-            .map(|(m, e)| (m, *e))
+            .enumerate()
+            .filter(|(i, (m, _))| (m.du, m.omega) == (du, omega) && (i % every == 0 || r.outliers.contains(i)))
+            .map(|(_, (m, e))| (m, *e))
             .collect();
         let bars = |centre: &dyn Fn(&Measurement, f64) -> f64| {
             let mut pts = vec![];
@@ -178,12 +238,13 @@ fn drawing(shape: &fricosc::Shape, rows: &[Measurement], r: &FitReport) -> Resul
             (&mut top, &(|m: &Measurement, _| m.mu) as &dyn Fn(&Measurement, f64) -> f64),
             (&mut bottom, &|_: &Measurement, e: f64| e),
         ] {
+            // The error bars drawn over the markers (which would hide them).
             let points = mine.iter().map(|(m, e)| (m.v0, centre(m, *e))).collect();
             charts.push(Series { label: format!("{label}, measured"), points, style: dots, legend: false });
             charts.push(Series {
                 label: format!("{label}, sigma"),
                 points: bars(centre),
-                style: style.width(0.5),
+                style: style.width(0.8),
                 legend: false,
             });
         }

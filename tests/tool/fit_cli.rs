@@ -68,3 +68,39 @@ fn bad_measurements_are_named() {
         assert!(out.stdout.is_empty() && err.lines().count() == 1 && err.contains(says), "{input}: {err}");
     }
 }
+
+/// What a referee looks at first: the summary rounds each value to its
+/// error's second digit; a wrongly held `mu0` is a verdict (exit 1) naming
+/// it; all three held is a model with its chi-square (it panicked); a
+/// misspelled column is refused by name (it ran unweighted); a legend in kHz
+/// from 1 kHz on, the error bars drawn over the markers.
+#[test]
+fn fit_reports_what_a_referee_reads() {
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/data/fit-example.csv");
+    let out = fricosc(&["fit", example, "--format", "summary"], None);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(text.contains("mu0              0.3523 +- 0.0014") && text.contains("(9.72 +- 0.14)e-7"), "{text}");
+    assert!(text.contains(", p 0.30 (weighted by sigma)"), "{text}");
+    let out = fricosc(&["fit", example, "--format", "summary", "--mu0", "0.3"], None);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains("verdict: the model does not fit") && text.contains("likely: the held mu0 = 0.3"), "{text}");
+    let held = ["fit", example, "--format", "json", "--mu0", "0.35", "--stiffness-ratio", "0.8", "--u0", "1e-6"];
+    let v = json(&held, None);
+    assert_eq!((v["dof"].as_u64(), v["iterations"].as_u64(), &v["converged"]), (Some(27), Some(0), &true.into()));
+    let csv = std::fs::read_to_string(example).unwrap();
+    let out = fricosc(&["fit", "-"], Some(&csv.replacen("sigma", "Sigma", 1)));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(out.status.code() == Some(2) && out.stdout.is_empty(), "{err}");
+    assert!(err.contains("unknown column 'Sigma' (did you mean 'sigma'?)"), "{err}");
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("khz.svg");
+    let khz = csv.replace(",200,", ",20000,");
+    let out = fricosc(&["fit", "-", "--plot", svg.to_str().unwrap(), "--format", "json"], Some(&khz));
+    assert!(out.status.code().is_some_and(|c| c <= 1), "{}", String::from_utf8_lossy(&out.stderr));
+    let drawn = std::fs::read_to_string(&svg).unwrap();
+    assert!(drawn.contains("f = 20 kHz") && !drawn.contains("20000 Hz"), "legend");
+    let (marker, bars) = (drawn.find("measured").unwrap(), drawn.find(", sigma").unwrap());
+    assert!(marker < bars, "the bars are drawn after (over) the markers");
+}

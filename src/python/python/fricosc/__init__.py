@@ -21,10 +21,10 @@ message (for an array element the message ends with its index), a wrong type
 ``TypeError``, and a bug of fricosc :class:`InternalError` (a ``RuntimeError``).
 """
 
+from ._fit import FitResult, fit
 from ._api import (
     DEFAULT_TOL,
     EquivalentProfile,
-    FitResult,
     Flat,
     FlatTip,
     InputError,
@@ -33,7 +33,6 @@ from ._api import (
     Profile,
     Shape,
     __version__,
-    fit,
     history,
     mu_ratio,
     point,

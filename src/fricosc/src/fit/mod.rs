@@ -15,6 +15,17 @@
 //! direction the data do not determine (a scaled Jacobian with a condition
 //! number beyond 1e8, or a parameter nothing depends on) is named, and its
 //! parameters get no standard error.
+//!
+//! # Goodness of fit
+//! With `sigma` the chi-square's p-value (`goodness`); below 0.01 a verdict
+//! that names the likely cause, each tried by a refit: the outlying rows
+//! left out, a held parameter freed, another shape. Rows whose normalised
+//! residual exceeds [`OUTLIER`] are named. Without `sigma` the scale of the
+//! errors is the scatter's (a note says what that assumes).
+
+mod goodness;
+
+pub use goodness::OUTLIER;
 
 use crate::error::{Error, Result};
 use crate::shape::Shape;
@@ -88,27 +99,48 @@ pub struct FitReport {
     pub points: Vec<[f64; 2]>,
     /// Whether the rows gave `sigma` (else the covariance is scaled by `reduced_chi2`).
     pub weighted: bool,
-    /// What the data cannot determine, in words (empty: every fitted parameter is determined).
+    /// What is wrong with the fit, in words: what the data cannot determine,
+    /// a chi-square the model cannot explain (with its likely cause), an
+    /// iteration that did not converge (empty: nothing found).
     pub verdicts: Vec<String>,
+    /// What the fit assumes where the rows do not say (without `sigma`: the
+    /// scale of the errors taken from the scatter).
+    pub notes: Vec<String>,
+    /// With `sigma`: the probability of a chi-square at least this large were
+    /// the model right and `sigma` the rows' standard uncertainties.
+    pub p_value: Option<f64>,
+    /// Per row the residual over its uncertainty (`sigma`, else the scatter's
+    /// `sqrt(reduced_chi2)`).
+    pub normalised_residuals: Vec<f64>,
+    /// Rows (indices) whose normalised residual exceeds [`OUTLIER`] in size.
+    pub outliers: Vec<usize>,
     /// Levenberg-Marquardt iterations.
     pub iterations: usize,
+    /// Whether Levenberg-Marquardt reached a minimum (no step improves the
+    /// chi-square) within its iterations; with nothing fitted, true.
+    pub converged: bool,
 }
 
 /// Most iterations of Levenberg-Marquardt.
 const MAX_ITERATIONS: usize = 200;
+/// Most rows the start's grid is evaluated on.
+const START_ROWS: usize = 2_000;
+/// Largest `|mu|` and `sigma` (and the inverse of the smallest `sigma`): the
+/// squares of the residuals stay within a double.
+const MAX_MAGNITUDE: f64 = 1e100;
 /// Largest condition number of the scaled Jacobian that determines every parameter.
 const MAX_CONDITION: f64 = 1e8;
 const NAMES: [&str; 3] = ["mu0", "stiffness_ratio", "u0"];
 
 /// `mu` of the model at `p = (mu0, kx/kz, u0)` for each row, with `(vbar, amp)`.
 fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f64, [f64; 2])>> {
-    rows.iter()
-        .map(|r| {
-            let (vbar, amp) = (p[1] * r.v0 / (p[0] * r.omega * r.du), r.du / p[2]);
-            let ratio = if vbar >= 1.0 { 1.0 } else { shape.ratio(&Conditions::vbar(vbar, amp)?)?.mu_ratio };
-            Ok((p[0] * ratio, [vbar, amp]))
-        })
-        .collect()
+    crate::numerics::par::map(rows, |r| {
+        let (vbar, amp) = (p[1] * r.v0 / (p[0] * r.omega * r.du), r.du / p[2]);
+        let ratio = if vbar >= 1.0 { 1.0 } else { shape.ratio(&Conditions::vbar(vbar, amp)?)?.mu_ratio };
+        Ok((p[0] * ratio, [vbar, amp]))
+    })
+    .into_iter()
+    .collect()
 }
 
 impl FitReport {
@@ -136,11 +168,11 @@ fn check(rows: &[Measurement], free: usize) -> Result<()> {
         if !(r.omega.is_finite() && r.omega > 0.0) {
             return Err(bad("omega", r.omega, "a frequency must be finite and > 0"));
         }
-        if !r.mu.is_finite() {
-            return Err(bad("mu", r.mu, "must be finite"));
+        if !(r.mu.is_finite() && r.mu.abs() <= MAX_MAGNITUDE) {
+            return Err(bad("mu", r.mu, "must be finite and at most 1e100 in size (a friction coefficient)"));
         }
-        if let Some(s) = r.sigma.filter(|s| !(s.is_finite() && *s > 0.0)) {
-            return Err(bad("sigma", s, "must be finite and > 0"));
+        if let Some(s) = r.sigma.filter(|s| !(s.is_finite() && (1.0 / MAX_MAGNITUDE..=MAX_MAGNITUDE).contains(s))) {
+            return Err(bad("sigma", s, "must be in 1e-100..=1e100 (the chi-square must fit a double)"));
         }
     }
     if rows.len() <= free {
@@ -149,33 +181,53 @@ fn check(rows: &[Measurement], free: usize) -> Result<()> {
     Ok(())
 }
 
-/// Fit `shape`'s model to `rows` with `fixed` parameters held (module docs).
+/// Fit `shape`'s model to `rows` with `fixed` parameters held (module docs);
+/// every parameter may be held (the report is then that model's chi-square).
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] for a bad row (named), fixed values that are
-/// not finite and positive, fewer rows than fitted parameters plus one, or a
-/// mix of rows with and without `sigma`; the solver's errors.
+/// not finite, positive and normal, fewer rows than fitted parameters plus
+/// one, or a mix of rows with and without `sigma`; the solver's errors.
 pub fn fit(shape: &Shape, rows: &[Measurement], fixed: &Fixed) -> Result<FitReport> {
     let given = [fixed.mu0, fixed.stiffness_ratio, fixed.u0];
     for (name, v) in NAMES.iter().zip(given) {
-        if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
-            return Err(Error::param(name, v, "a fixed parameter must be finite and > 0"));
+        if let Some(v) = v.filter(|v| !(v.is_normal() && *v > 0.0)) {
+            return Err(Error::param(name, v, "a fixed parameter must be finite, > 0 and a normal double"));
         }
     }
-    let free: Vec<usize> = (0..3).filter(|&k| given[k].is_none()).collect();
-    check(rows, free.len())?;
-    let weighted = rows.iter().any(|r| r.sigma.is_some());
-    if weighted && rows.iter().any(|r| r.sigma.is_none()) {
+    let free = (0..3).filter(|&k| given[k].is_none()).count();
+    check(rows, free)?;
+    if rows.iter().any(|r| r.sigma.is_some()) && rows.iter().any(|r| r.sigma.is_none()) {
         return Err(Error::param("sigma", f64::NAN, "give sigma on every row or on none"));
     }
+    let mut r = fit_checked(shape, rows, &given)?;
+    goodness::judge(shape, rows, fixed, &mut r)?;
+    Ok(r)
+}
+
+/// [`fit`] of checked inputs, without the goodness of fit's verdicts.
+fn fit_checked(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3]) -> Result<FitReport> {
+    let free: Vec<usize> = (0..3).filter(|&k| given[k].is_none()).collect();
+    let weighted = rows.iter().any(|r| r.sigma.is_some());
     let sigma: Vec<f64> = rows.iter().map(|r| r.sigma.unwrap_or(1.0)).collect();
     let residuals = |p: &Vector3<f64>| -> Result<DVector<f64>> {
         let m = model(shape, rows, p)?;
         Ok(DVector::from_iterator(rows.len(), m.iter().zip(rows).zip(&sigma).map(|((m, r), s)| (m.0 - r.mu) / s)))
     };
-    let start = start(shape, rows, &given, &residuals)?;
-    let (p, iterations) = levenberg_marquardt(start, &free, &residuals)?;
-    report(shape, rows, p, &free, weighted, iterations, &residuals)
+    // The start's grid on at most START_ROWS rows, evenly spread (a large file's start costs no more).
+    let every = rows.len().div_ceil(START_ROWS);
+    let few: Vec<Measurement> = rows.iter().step_by(every).copied().collect();
+    let few_sigma: Vec<f64> = few.iter().map(|r| r.sigma.unwrap_or(1.0)).collect();
+    let few_residuals = |p: &Vector3<f64>| -> Result<DVector<f64>> {
+        let m = model(shape, &few, p)?;
+        Ok(DVector::from_iterator(few.len(), m.iter().zip(&few).zip(&few_sigma).map(|((m, r), s)| (m.0 - r.mu) / s)))
+    };
+    let start = start(shape, &few, given, &few_residuals)?;
+    let (p, iterations, converged) =
+        if free.is_empty() { (start, 0, true) } else { levenberg_marquardt(start, &free, &residuals)? };
+    let mut r = report(shape, rows, p, &free, weighted, iterations, &residuals)?;
+    r.converged = converged;
+    Ok(r)
 }
 
 type Residuals<'a> = dyn Fn(&Vector3<f64>) -> Result<DVector<f64>> + 'a;
@@ -226,8 +278,10 @@ fn jacobian(p: &Vector3<f64>, free: &[usize], n: usize, res: &Residuals) -> Resu
     Ok(j)
 }
 
-/// Levenberg-Marquardt in the logarithms of the free parameters from `p`.
-fn levenberg_marquardt(mut p: Vector3<f64>, free: &[usize], res: &Residuals) -> Result<(Vector3<f64>, usize)> {
+/// Levenberg-Marquardt in the logarithms of the free parameters from `p`:
+/// the parameters, the iterations, and whether it converged (a step below
+/// 1e-12, a chi-square that no longer falls, or no step that lowers it).
+fn levenberg_marquardt(mut p: Vector3<f64>, free: &[usize], res: &Residuals) -> Result<(Vector3<f64>, usize, bool)> {
     let mut r = res(&p)?;
     let mut chi2 = r.norm_squared();
     let mut lambda = 1e-3;
@@ -259,17 +313,17 @@ fn levenberg_marquardt(mut p: Vector3<f64>, free: &[usize], res: &Residuals) -> 
                 (p, r, chi2, improved) = (q, rq, chi2q, true);
                 lambda = (lambda / 10.0).max(1e-12);
                 if small {
-                    return Ok((p, it));
+                    return Ok((p, it, true));
                 }
                 break;
             }
             lambda *= 10.0;
         }
         if !improved {
-            return Ok((p, it));
+            return Ok((p, it, true));
         }
     }
-    Ok((p, MAX_ITERATIONS))
+    Ok((p, MAX_ITERATIONS, false))
 }
 
 /// The covariance, standard errors and verdicts at the fitted `p`.
@@ -332,7 +386,12 @@ fn report(
         points: fitted.iter().map(|m| m.1).collect(),
         weighted,
         verdicts,
+        notes: vec![],
+        p_value: None,
+        normalised_residuals: vec![],
+        outliers: vec![],
         iterations,
+        converged: true,
     })
 }
 

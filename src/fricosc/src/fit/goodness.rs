@@ -1,0 +1,157 @@
+//! How well the fitted model explains the rows: the chi-square's p-value,
+//! the rows far from the model, and where the model does not fit, its
+//! likely cause, each tried by a refit.
+
+use super::{fit_checked, FitReport, Fixed, Measurement, NAMES};
+use crate::error::Result;
+use crate::shape::Shape;
+use statrs::distribution::{ChiSquared, ContinuousCDF};
+
+/// A row is named as outlying where its normalised residual exceeds this in
+/// size: a normal error does so with probability 4.7e-4 (one false alarm in
+/// about 2,000 rows).
+pub const OUTLIER: f64 = 3.5;
+
+/// The p-value below which the model does not explain the rows.
+const SIGNIFICANCE: f64 = 0.01;
+
+/// Most rows the causes of a bad fit are tried on (evenly spread): beyond,
+/// their p-values are those of that many rows.
+const CAUSE_ROWS: usize = 20_000;
+
+/// The shapes tried where the fitted one does not fit.
+const SHAPES: [&str; 3] = ["flat", "parabolic", "cone"];
+
+/// `P(X >= chi2)` for `X` chi-square with `dof` degrees of freedom (`None`
+/// without a degree of freedom).
+fn p_value(chi2: f64, dof: usize) -> Option<f64> {
+    let d = ChiSquared::new(dof as f64).ok()?;
+    Some(d.sf(chi2))
+}
+
+/// The goodness of fit of `r` (fitted to `rows` with `fixed` held): its
+/// normalised residuals, outliers, p-value, notes and verdicts.
+pub(super) fn judge(shape: &Shape, rows: &[Measurement], fixed: &Fixed, r: &mut FitReport) -> Result<()> {
+    let scale = if r.weighted { 1.0 } else { r.reduced_chi2.sqrt() };
+    r.normalised_residuals = r
+        .residuals
+        .iter()
+        .zip(rows)
+        .map(|(e, m)| if scale > 0.0 { e / (m.sigma.unwrap_or(1.0) * scale) } else { 0.0 })
+        .collect();
+    r.outliers = (0..rows.len()).filter(|&i| r.normalised_residuals[i].abs() > OUTLIER).collect();
+    if !r.converged {
+        r.verdicts.push(format!(
+            "the iteration stopped after {} iterations without converging: the parameters are not at the \
+             chi-square's minimum (a start far off, or a parameter the rows barely determine)",
+            r.iterations
+        ));
+    }
+    if r.weighted {
+        r.p_value = p_value(r.chi2, r.dof);
+        if let Some(p) = r.p_value.filter(|&p| p < SIGNIFICANCE) {
+            let verdict = bad_fit(shape, rows, fixed, r, p);
+            r.verdicts.push(verdict);
+            return Ok(());
+        }
+    } else {
+        r.notes.push(
+            "no sigma: the errors' scale is estimated from the scatter (the reduced chi-square taken as 1), which \
+             assumes that the model is right and every row equally uncertain; give sigma to test the model"
+                .into(),
+        );
+    }
+    if !r.outliers.is_empty() {
+        r.verdicts.push(format!(
+            "rows {} are more than {OUTLIER} standard uncertainties from the model (normalised residuals {})",
+            list(&r.outliers),
+            r.outliers.iter().map(|&i| format!("{:.1}", r.normalised_residuals[i])).collect::<Vec<_>>().join(", ")
+        ));
+    }
+    Ok(())
+}
+
+/// The rows (indices) as a short list.
+fn list(rows: &[usize]) -> String {
+    let shown: Vec<String> = rows.iter().take(10).map(usize::to_string).collect();
+    let more = if rows.len() > 10 { format!(" and {} more", rows.len() - 10) } else { String::new() };
+    format!("{}{more}", shown.join(", "))
+}
+
+/// The verdict of a model that does not fit (`p` below [`SIGNIFICANCE`]),
+/// with the causes that a refit confirms: without the outlying rows, with a
+/// held parameter freed, or with another shape, the p-value reaches 0.01
+/// (on at most [`CAUSE_ROWS`] rows).
+fn bad_fit(shape: &Shape, all: &[Measurement], fixed: &Fixed, r: &FitReport, p: f64) -> String {
+    let given = [fixed.mu0, fixed.stiffness_ratio, fixed.u0];
+    // The refits on at most CAUSE_ROWS rows, evenly spread, the outliers among them.
+    let every = all.len().div_ceil(CAUSE_ROWS);
+    let rows: Vec<Measurement> = all.iter().step_by(every).copied().collect();
+    let outlying: Vec<usize> = r.outliers.iter().filter(|&&i| i % every == 0).map(|&i| i / every).collect();
+    let refit = |shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3]| {
+        let free = given.iter().filter(|g| g.is_none()).count();
+        let f = (rows.len() > free).then(|| fit_checked(shape, rows, given).ok()).flatten()?;
+        let p = p_value(f.chi2, f.dof)?;
+        (p >= SIGNIFICANCE).then_some((f, p))
+    };
+    let mut causes = vec![];
+    if !outlying.is_empty() {
+        let kept: Vec<Measurement> =
+            rows.iter().enumerate().filter(|(i, _)| !outlying.contains(i)).map(|(_, m)| *m).collect();
+        if let Some((_, p)) = refit(shape, &kept, &given) {
+            causes.push(format!("the outlying rows {} (without them p = {p:.2})", list(&r.outliers)));
+        }
+    }
+    for k in (0..3).filter(|&k| given[k].is_some()) {
+        let mut freed = given;
+        freed[k] = None;
+        if let Some((f, p)) = refit(shape, &rows, &freed) {
+            let q = [f.mu0, f.stiffness_ratio, f.u0][k];
+            let se = q.stderr.map_or("undetermined".into(), |e| format!("{e:.2e}"));
+            causes.push(format!(
+                "the held {} = {}: fitted, it is {} +- {se} (p = {p:.2})",
+                NAMES[k],
+                given[k].unwrap_or(f64::NAN),
+                q.value
+            ));
+        }
+    }
+    for name in SHAPES.iter().filter(|&&n| n != shape.name()) {
+        if let Some((_, p)) = Shape::parse(name).ok().and_then(|s| refit(&s, &rows, &given)) {
+            causes.push(format!("the shape: {name} fits (p = {p:.2})"));
+        }
+    }
+    let head = format!(
+        "the model does not fit the rows: chi-square {:.4} for {} degrees of freedom (p = {p:.1e} < {SIGNIFICANCE})",
+        r.chi2, r.dof
+    );
+    if causes.is_empty() {
+        format!(
+            "{head}; none of the usual causes explains it (tried: the outlying rows left out, each held parameter \
+             freed, the shapes {}): check that sigma is the rows' standard uncertainty, and their conditions",
+            SHAPES.join(", ")
+        )
+    } else {
+        format!("{head}; likely: {}", causes.join("; "))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// The chi-square's upper tail against mpmath's regularized incomplete
+    /// gamma function `Q(dof/2, chi2/2)` (30 digits): within 1e-12 relative.
+    #[test]
+    #[allow(clippy::excessive_precision)]
+    fn the_p_value_is_the_chi_square_tail() {
+        for (chi2, dof, want) in [
+            (27.0961, 24, 0.299993591280530580995957596411),
+            (59.8114, 24, 0.0000679123699513166767787344208169),
+            (3.0, 10, 0.981424063777859325698725820626),
+            (100.0, 50, 0.0000345493138298486394214543471332),
+        ] {
+            let p = super::p_value(chi2, dof).unwrap();
+            assert!((p / want - 1.0).abs() < 1e-12, "{chi2} {dof}: {p} vs {want}");
+        }
+        assert_eq!(super::p_value(1.0, 0), None);
+    }
+}
