@@ -107,7 +107,7 @@ fn measurements(text: &str, source: &str) -> Result<Vec<Measurement>> {
 }
 
 fn parameter(p: &Parameter) -> serde_json::Value {
-    serde_json::json!({"value": p.value, "stderr": p.stderr, "fixed": p.fixed})
+    serde_json::json!({"value": p.value, "stderr": p.stderr, "fixed": p.fixed, "profile": p.profile})
 }
 
 /// Every row of the JSON report, each made as it is written (a million rows
@@ -153,7 +153,10 @@ fn to_json(shape: &str, rows: &[Measurement], r: &FitReport) -> Result<String> {
 fn summary(shape: &str, source: &str, r: &FitReport) -> String {
     let line = |name: &str, p: &Parameter| match (p.fixed, p.stderr) {
         (true, _) => format!("  {name:<16} {} (fixed)\n", crate::output::num(p.value)),
-        (false, Some(se)) => format!("  {name:<16} {}\n", rounded(p.value, se)),
+        (false, Some(se)) => {
+            let profile = p.profile.map(|[a, b]| format!(" (profile interval {a:.3e} to {b:.3e})"));
+            format!("  {name:<16} {}{}\n", rounded(p.value, se), profile.unwrap_or_default())
+        }
         (false, None) => format!("  {name:<16} {} (not determined)\n", crate::output::num(p.value)),
     };
     let mut out = format!("{source}: {} rows fitted with the {shape} model\n", r.residuals.len());

@@ -23,7 +23,10 @@ fn fit_gives_the_parameters_back() {
     assert_eq!(v["rows"].as_array().unwrap().len(), 27);
     assert_eq!(v["dof"], 24);
     let v = json(&["fit", SYNTHETIC, "--format", "json", "--u0", "1e-6"], None);
-    assert_eq!(v["parameters"]["u0"], serde_json::json!({"value": 1e-6, "stderr": 0.0, "fixed": true}));
+    assert_eq!(
+        v["parameters"]["u0"],
+        serde_json::json!({"value": 1e-6, "stderr": 0.0, "fixed": true, "profile": null})
+    );
     let out = fricosc(&["fit", SYNTHETIC, "--format", "summary"], None);
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.contains("27 rows fitted with the flat model") && text.contains("kx/kz"), "{text}");

@@ -24,6 +24,7 @@
 //! errors is the scatter's (a note says what that assumes).
 
 mod goodness;
+mod profile;
 
 pub use goodness::OUTLIER;
 
@@ -69,6 +70,10 @@ pub struct Parameter {
     pub stderr: Option<f64>,
     /// Held fixed.
     pub fixed: bool,
+    /// The profile-likelihood interval (one standard error's worth: the
+    /// chi-square 1 above its minimum, the others refitted), where it differs
+    /// from `value +- stderr` by more than 20 % on a side.
+    pub profile: Option<[f64; 2]>,
 }
 
 /// A fit's answer.
@@ -201,6 +206,7 @@ pub fn fit(shape: &Shape, rows: &[Measurement], fixed: &Fixed) -> Result<FitRepo
         return Err(Error::param("sigma", f64::NAN, "give sigma on every row or on none"));
     }
     let mut r = fit_checked(shape, rows, &given)?;
+    profile::profile(shape, rows, fixed, &mut r);
     goodness::judge(shape, rows, fixed, &mut r)?;
     Ok(r)
 }
@@ -364,7 +370,7 @@ fn report(
             Some(c) if determined[c] => Some(cov[(k, k)].sqrt()),
             Some(_) => None,
         };
-        Parameter { value: p[k], stderr, fixed: c.is_none() }
+        Parameter { value: p[k], stderr, fixed: c.is_none(), profile: None }
     };
     let mut correlation = [[0.0; 3]; 3];
     for (a, row) in correlation.iter_mut().enumerate() {
@@ -427,10 +433,13 @@ fn determined(j: &DMatrix<f64>, free: &[usize], fitted: &[(f64, [f64; 2])], verd
         let (smax, smin) = (s.max(), s.min());
         if smin * MAX_CONDITION < smax {
             if let Some(vt) = svd.v_t {
-                let weakest = (0..s.len()).min_by(|&a, &b| s[a].total_cmp(&s[b])).unwrap_or(0);
-                let names: Vec<&str> =
-                    (0..live.len()).filter(|&c| vt[(weakest, c)].abs() > 0.1).map(|c| NAMES[free[live[c]]]).collect();
-                for c in (0..live.len()).filter(|&c| vt[(weakest, c)].abs() > 0.1) {
+                // Every weak direction (a rank short by more than one has several).
+                let weak: Vec<usize> = (0..s.len()).filter(|&d| s[d] * MAX_CONDITION < smax).collect();
+                let names: Vec<&str> = (0..live.len())
+                    .filter(|&c| weak.iter().any(|&d| vt[(d, c)].abs() > 0.1))
+                    .map(|c| NAMES[free[live[c]]])
+                    .collect();
+                for c in (0..live.len()).filter(|&c| weak.iter().any(|&d| vt[(d, c)].abs() > 0.1)) {
                     ok[live[c]] = false;
                 }
                 verdicts.push(format!(
