@@ -25,6 +25,10 @@ pub struct FitArgs {
     /// mean indentation, not a fixed mean load).
     #[arg(long, allow_hyphen_values = true, value_parser = positive)]
     pub u0: Option<f64>,
+    /// The rig's system, held at these values (dimensionless, as for point): the model is the
+    /// body's attractor there. --frequency-ratio holds at one frequency.
+    #[command(flatten)]
+    pub system: crate::cmd::SystemPoint,
     /// summary or json (default: summary at a terminal, else json).
     #[arg(long)]
     pub format: Option<String>,
@@ -65,7 +69,10 @@ pub fn run(a: FitArgs) -> Result<Outcome> {
     }
     let shape = crate::input::parse_shape(&a.shape)?;
     let (text, source) = read_input(Some(a.file.clone()))?;
-    let rows = measurements(&text, &source)?;
+    let mut rows = measurements(&text, &source)?;
+    if let Some(sys) = a.system.system(None)? {
+        rows.iter_mut().for_each(|r| r.system = Some(sys));
+    }
     let fixed = Fixed { mu0: a.mu0, stiffness_ratio: a.stiffness_ratio, u0: a.u0 };
     let r = fricosc::fit::fit(&shape, &rows, &fixed)?;
     // The result first: a drawing never holds it back.
@@ -102,7 +109,10 @@ fn measurements(text: &str, source: &str) -> Result<Vec<Measurement>> {
     };
     let sigma = c.numbers[5].clone();
     Ok((0..c.rows)
-        .map(|i| Measurement { v0: v0[i], du: du[i], omega: omega[i], mu: mu[i], sigma: sigma.as_ref().map(|s| s[i]) })
+        .map(|i| {
+            let sigma = sigma.as_ref().map(|s| s[i]);
+            Measurement { v0: v0[i], du: du[i], omega: omega[i], mu: mu[i], sigma, system: None }
+        })
         .collect())
 }
 
@@ -211,7 +221,7 @@ fn drawing(shape: &fricosc::Shape, rows: &[Measurement], r: &FitReport) -> Resul
         let curve = (0..=200)
             .map(|i| {
                 let v0 = vmax * i as f64 / 200.0;
-                Ok((v0, r.predict(shape, v0, du, omega)?))
+                Ok((v0, r.predict(shape, (v0, du, omega), rows[0].system)?))
             })
             .collect::<Result<Vec<_>>>()?;
         let f = omega / std::f64::consts::TAU;

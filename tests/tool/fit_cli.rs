@@ -107,3 +107,31 @@ fn fit_reports_what_a_referee_reads() {
     let (marker, bars) = (drawn.find("measured").unwrap(), drawn.find(", sigma").unwrap());
     assert!(marker < bars, "the bars are drawn after (over) the markers");
 }
+
+/// `--system-stiffness` (`--frequency-ratio`, `--damping`): the rig's system
+/// held, the library's fit on it bit for bit; a frequency ratio with rows at
+/// several frequencies is refused by name (Omega holds at one frequency).
+#[test]
+fn fit_on_the_rigs_system() {
+    let args = ["fit", SYNTHETIC, "--format", "json", "--system-stiffness", "1", "--frequency-ratio", "0.5"];
+    let out = fricosc(&[&args[..], &["--damping", "0.3"]].concat(), None);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let sys = fricosc::system::System::new(1.0, 0.5, 0.3).unwrap();
+    let text = std::fs::read_to_string(SYNTHETIC).unwrap();
+    let rows: Vec<fricosc::fit::Measurement> = text
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let f: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+            let omega = 2.0 * std::f64::consts::PI * f[2];
+            fricosc::fit::Measurement { v0: f[0], du: f[1], omega, mu: f[3], sigma: None, system: Some(sys) }
+        })
+        .collect();
+    let r = fricosc::fit::fit(&fricosc::Shape::flat(), &rows, &fricosc::fit::Fixed::default()).unwrap();
+    assert_eq!(v["parameters"]["mu0"]["value"].as_f64(), Some(r.mu0.value), "{v}");
+    assert_eq!(v["chi2"].as_f64(), Some(r.chi2));
+    let mixed = text.replacen(",200,", ",300,", 1);
+    let out = fricosc(&["fit", "-", "--system-stiffness", "1", "--frequency-ratio", "0.5"], Some(&mixed));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(out.status.code() == Some(2) && err.contains("invalid frequency-ratio = 0.5"), "{err}");
+}

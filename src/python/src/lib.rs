@@ -532,9 +532,10 @@ fn validate<'py>(
 }
 
 /// `fricosc fit`'s report as a dict: the model fitted to the rows `(v0, du,
-/// omega, mu, sigma)` with the `fixed` parameters `(mu0, kx/kz, u0)` held.
+/// omega, mu, sigma)` with the `fixed` parameters `(mu0, kx/kz, u0)` held,
+/// on the rig's `system` `(kappa, Omega, zeta)` if any.
 #[pyfunction]
-#[pyo3(signature = (shape, v0, du, omega, mu, sigma, fixed))]
+#[pyo3(signature = (shape, v0, du, omega, mu, sigma, fixed, system=None))]
 #[allow(clippy::too_many_arguments)]
 fn fit<'py>(
     py: Python<'py>,
@@ -545,7 +546,9 @@ fn fit<'py>(
     mu: PyReadonlyArray1<'py, f64>,
     sigma: Option<PyReadonlyArray1<'py, f64>>,
     fixed: (Option<f64>, Option<f64>, Option<f64>),
+    system: Option<(f64, f64, f64)>,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let system = system.map(|(k, om, z)| fricosc::system::System::new(k, om, z)).transpose().map_err(to_py)?;
     let (v0, du, omega, mu) = (v0.as_slice()?, du.as_slice()?, omega.as_slice()?, mu.as_slice()?);
     let sigma = sigma.as_ref().map(|s| s.as_slice()).transpose()?;
     let n = v0.len();
@@ -559,6 +562,7 @@ fn fit<'py>(
             omega: omega[i],
             mu: mu[i],
             sigma: sigma.map(|s| s[i]),
+            system,
         })
         .collect();
     let fixed = fricosc::fit::Fixed { mu0: fixed.0, stiffness_ratio: fixed.1, u0: fixed.2 };

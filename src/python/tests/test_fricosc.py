@@ -678,3 +678,7 @@ def test_fit_is_the_command_lines() -> None:
     assert "likely: the held mu0 = 0.3" in wrong.verdicts[0] and wrong.converged and wrong.notes == []
     with pytest.raises(fricosc.InputError, match="did you mean 'sigma'"):
         fricosc.fit(example.rename(columns={"sigma": "Sigma"}))
+    rig = fricosc.fit(frame, system_stiffness=1.0, frequency_ratio=0.5, damping=0.3)
+    theirs = json.loads(cli("fit", str(path), "--system-stiffness", "1", "--frequency-ratio", "0.5", "--damping", "0.3",
+                            "--format", "json", status=1 if rig.verdicts else 0))
+    assert rig.params["mu0"] == theirs["parameters"]["mu0"]["value"] and rig.chi2 == theirs["chi2"]

@@ -46,6 +46,9 @@ pub struct Measurement {
     pub mu: f64,
     /// Its standard uncertainty (`> 0`), if known.
     pub sigma: Option<f64>,
+    /// The rig's system the row was measured on (held, not fitted): the model
+    /// is then the body's attractor there ([`crate::Conditions::with_system`]).
+    pub system: Option<crate::system::System>,
 }
 
 /// Parameters held fixed (the others are fitted).
@@ -141,7 +144,12 @@ const NAMES: [&str; 3] = ["mu0", "stiffness_ratio", "u0"];
 fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f64, [f64; 2])>> {
     crate::numerics::par::map(rows, |r| {
         let (vbar, amp) = (p[1] * r.v0 / (p[0] * r.omega * r.du), r.du / p[2]);
-        let ratio = if vbar >= 1.0 { 1.0 } else { shape.ratio(&Conditions::vbar(vbar, amp)?)?.mu_ratio };
+        let ratio = match r.system {
+            // On a system friction may stay reduced beyond vbar = 1.
+            Some(sys) => shape.ratio(&Conditions::vbar(vbar, amp)?.with_system(sys))?.mu_ratio,
+            None if vbar >= 1.0 => 1.0,
+            None => shape.ratio(&Conditions::vbar(vbar, amp)?)?.mu_ratio,
+        };
         Ok((p[0] * ratio, [vbar, amp]))
     })
     .into_iter()
@@ -149,13 +157,19 @@ fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f
 }
 
 impl FitReport {
-    /// The fitted model's `mu` at one row's conditions (`v0` m/s, `du` m, `omega` rad/s).
+    /// The fitted model's `mu` at one row's conditions (`v0` m/s, `du` m,
+    /// `omega` rad/s), on the rig's `system` if any.
     ///
     /// # Errors
     /// The solver's, for conditions it refuses (e.g. an amplitude a tabulated shape does not reach).
-    pub fn predict(&self, shape: &Shape, v0: f64, du: f64, omega: f64) -> Result<f64> {
+    pub fn predict(
+        &self,
+        shape: &Shape,
+        (v0, du, omega): (f64, f64, f64),
+        system: Option<crate::system::System>,
+    ) -> Result<f64> {
         let p = Vector3::new(self.mu0.value, self.stiffness_ratio.value, self.u0.value);
-        let row = Measurement { v0, du, omega, mu: 0.0, sigma: None };
+        let row = Measurement { v0, du, omega, mu: 0.0, sigma: None, system };
         Ok(model(shape, &[row], &p)?[0].0)
     }
 }
@@ -178,6 +192,15 @@ fn check(rows: &[Measurement], free: usize) -> Result<()> {
         }
         if let Some(s) = r.sigma.filter(|s| !(s.is_finite() && (1.0 / MAX_MAGNITUDE..=MAX_MAGNITUDE).contains(s))) {
             return Err(bad("sigma", s, "must be in 1e-100..=1e100 (the chi-square must fit a double)"));
+        }
+    }
+    // Omega = omega/omega_c: one system with mass holds at one frequency.
+    for (i, r) in rows.iter().enumerate() {
+        let same = |q: &Measurement| q.system == r.system && q.omega != r.omega;
+        if r.system.is_some_and(|s| s.frequency_ratio() > 0.0) && rows[..i].iter().any(same) {
+            let reason =
+                format!("row {i}: a system's frequency-ratio holds at one frequency; these rows are at several");
+            return Err(Error::param("frequency-ratio", r.system.map_or(0.0, |s| s.frequency_ratio()), &reason));
         }
     }
     if rows.len() <= free {
@@ -222,7 +245,8 @@ fn fit_checked(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3]) ->
     };
     // The start's grid on at most START_ROWS rows, evenly spread (a large file's start costs no more).
     let every = rows.len().div_ceil(START_ROWS);
-    let few: Vec<Measurement> = rows.iter().step_by(every).copied().collect();
+    // The start from the stiff model (on a system each point costs a thousand times more).
+    let few: Vec<Measurement> = rows.iter().step_by(every).map(|r| Measurement { system: None, ..*r }).collect();
     let few_sigma: Vec<f64> = few.iter().map(|r| r.sigma.unwrap_or(1.0)).collect();
     let few_residuals = |p: &Vector3<f64>| -> Result<DVector<f64>> {
         let m = model(shape, &few, p)?;
@@ -348,7 +372,8 @@ fn report(
     let reduced_chi2 = chi2 / dof as f64;
     let j = jacobian(&p, free, rows.len(), res)?;
     let mut verdicts = vec![];
-    let determined = determined(&j, free, &fitted, &mut verdicts);
+    let stiff = rows.iter().all(|r| r.system.is_none());
+    let determined = determined(&j, free, &fitted, stiff, &mut verdicts);
     let mut cov = Matrix3::zeros();
     let kept: Vec<usize> = (0..free.len()).filter(|&c| determined[c]).collect();
     if !kept.is_empty() {
@@ -402,12 +427,19 @@ fn report(
 }
 
 /// Which free parameters the data determine (per column of `j`), with the
-/// verdicts in words: all rows at `vbar >= 1` leave `kx/kz` and `u0` free; a
+/// verdicts in words: all rows at `vbar >= 1` leave `kx/kz` and `u0` free
+/// (on a stiff rig: on a system friction may stay reduced there); a
 /// column of zeros or a scaled Jacobian beyond [`MAX_CONDITION`] names the
 /// parameters of its weakest direction.
-fn determined(j: &DMatrix<f64>, free: &[usize], fitted: &[(f64, [f64; 2])], verdicts: &mut Vec<String>) -> Vec<bool> {
+fn determined(
+    j: &DMatrix<f64>,
+    free: &[usize],
+    fitted: &[(f64, [f64; 2])],
+    stiff: bool,
+    verdicts: &mut Vec<String>,
+) -> Vec<bool> {
     let mut ok = vec![true; free.len()];
-    if fitted.iter().all(|m| m.1[0] >= 1.0) {
+    if stiff && fitted.iter().all(|m| m.1[0] >= 1.0) {
         verdicts.push("all rows have vbar >= 1 (no reduction: mu = mu0 there): kx/kz and u0 are not determined".into());
         for (c, &k) in free.iter().enumerate() {
             ok[c] = k == 0;

@@ -8,7 +8,7 @@ import numpy as np
 import numpy.typing as npt
 
 from . import _fricosc
-from ._api import InputError, ShapeLike, _column, _core, _floats, _scalar
+from ._api import InputError, ShapeLike, _column, _core, _floats, _scalar, _system
 
 
 class FitResult:
@@ -51,11 +51,15 @@ def fit(
     mu0: Optional[float] = None,
     stiffness_ratio: Optional[float] = None,
     u0: Optional[float] = None,
+    system_stiffness: Optional[float] = None,
+    frequency_ratio: Optional[float] = None,
+    damping: Optional[float] = None,
 ) -> FitResult:
     """Fit the model to measured friction, as ``fricosc fit`` does: ``table``
     (a dict of arrays or a DataFrame) has the columns ``v0`` (m/s), ``du`` (m),
     ``frequency`` (Hz) or ``omega`` (rad/s), ``mu`` and optionally ``sigma``;
-    ``mu0``, ``stiffness_ratio`` (kx/kz) and ``u0`` (m) are fitted unless given.
+    ``mu0``, ``stiffness_ratio`` (kx/kz) and ``u0`` (m) are fitted unless given;
+    ``system_stiffness`` (``frequency_ratio``, ``damping``): the rig's system, held.
 
     >>> rows = {"v0": [1e-5, 2e-5, 4e-5, 6e-5, 2e-4], "du": [5e-7] * 5, "frequency": [100] * 5,
     ...         "mu": [0.21, 0.245, 0.28, 0.295, 0.3]}
@@ -88,6 +92,6 @@ def fit(
     fixed = (held(mu0, "mu0"), held(stiffness_ratio, "stiffness_ratio"), held(u0, "u0"))
     report: Dict[str, Any] = _fricosc.fit(
         _core(shape), col("v0"), col("du"), np.ascontiguousarray(omega), col("mu"),
-        col("sigma") if "sigma" in names else None, fixed,
+        col("sigma") if "sigma" in names else None, fixed, _system(system_stiffness, frequency_ratio, damping),
     )
     return FitResult(report)

@@ -108,4 +108,5 @@ def fit(
     mu: npt.NDArray[np.float64],
     sigma: Optional[npt.NDArray[np.float64]],
     fixed: Tuple[Optional[float], Optional[float], Optional[float]],
+    system: Optional[Tuple[float, float, float]] = None,
 ) -> Dict[str, Any]: ...
