@@ -233,6 +233,13 @@ pub struct SystemReport {
 }
 
 impl System {
+    /// The phases' parameters of this system under the drive of `c`.
+    fn params(&self, c: &Conditions) -> Params {
+        let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+        let (kappa, omega, zeta) = (self.stiffness, self.frequency_ratio, self.damping);
+        Params { kappa, omega, zeta, vhat: c.as_vhat(), amp: c.amp(), t, phase }
+    }
+
     /// The body at `tau` (position `x`, velocity `v`) under the drive of `c`:
     /// the drive's lead `X_d - x` and the system's force `kappa (X_d - x) +
     /// 2 zeta sqrt(kappa) Omega (X_d' - v)` (`X_d = vhat tau + T sin(tau + phase)`).
@@ -384,16 +391,7 @@ pub(crate) fn curved_history(
 /// The checked parameters of a curved body's problem.
 fn params(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<Params> {
     shape.check_amp(c.amp())?;
-    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
-    let p = Params {
-        kappa: sys.stiffness,
-        omega: sys.frequency_ratio,
-        zeta: sys.damping,
-        vhat: c.as_vhat(),
-        amp: c.amp(),
-        t,
-        phase,
-    };
+    let p = sys.params(c);
     if p.omega > 0.0 {
         check_resolvable(&p, springs(shape, p.amp, 4)?.iter().map(|s| s.0).sum())?;
         check_settles(&p, MAX_CURVED_PERIODS)?;
@@ -448,7 +446,7 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
         };
         return Ok((report, None));
     }
-    let p = Params { kappa, omega: sys.frequency_ratio, zeta: sys.damping, vhat, amp, t, phase };
+    let p = sys.params(c);
     check_resolvable(&p, 1.0)?;
     check_settles(&p, MAX_PERIODS)?;
     let ph = Phases::new(p);
@@ -537,16 +535,7 @@ pub(crate) fn transient(c: &Conditions, sys: &System, n: usize) -> Result<Vec<f6
     if sys.frequency_ratio == 0.0 || c.amp() == 0.0 {
         return Ok(vec![]);
     }
-    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
-    let p = Params {
-        kappa: sys.stiffness,
-        omega: sys.frequency_ratio,
-        zeta: sys.damping,
-        vhat: c.as_vhat(),
-        amp: c.amp(),
-        t,
-        phase,
-    };
+    let p = sys.params(c);
     check_resolvable(&p, 1.0)?;
     let ph = Phases::new(p);
     let mean_b = crate::flat::mean_normal(p.amp) * std::f64::consts::TAU;
