@@ -89,8 +89,8 @@ fn measurements(text: &str, source: &str) -> Result<Vec<Measurement>> {
     let c = read_columns(text, source, &WANTED, crate::validate::MAX_ROWS)?;
     let bad = |reason: String| Error::Parse { context: source.into(), reason };
     // A column fit does not read is refused, not ignored (a 'Sigma' would run unweighted).
-    if let Some(name) = c.names.iter().find(|n| !WANTED.iter().any(|w| w.0 == n.as_str())) {
-        let known: Vec<&str> = WANTED.iter().map(|w| w.0).collect();
+    let known: Vec<&str> = WANTED.iter().map(|w| w.0).collect();
+    if let Some(name) = c.names.iter().find(|n| !known.contains(&n.as_str())) {
         let like =
             known.iter().find(|k| k.eq_ignore_ascii_case(name.trim())).map(|k| format!(" (did you mean '{k}'?)"));
         return Err(bad(format!(
@@ -108,12 +108,15 @@ fn measurements(text: &str, source: &str) -> Result<Vec<Measurement>> {
         (None, None) => return Err(bad("no column 'frequency' (Hz) or 'omega' (rad/s)".into())),
     };
     let sigma = c.numbers[5].clone();
-    Ok((0..c.rows)
-        .map(|i| {
-            let sigma = sigma.as_ref().map(|s| s[i]);
-            Measurement { v0: v0[i], du: du[i], omega: omega[i], mu: mu[i], sigma, system: None }
-        })
-        .collect())
+    let row = |i: usize| Measurement {
+        v0: v0[i],
+        du: du[i],
+        omega: omega[i],
+        mu: mu[i],
+        sigma: sigma.as_ref().map(|s| s[i]),
+        system: None,
+    };
+    Ok((0..c.rows).map(row).collect())
 }
 
 fn parameter(p: &Parameter) -> serde_json::Value {
