@@ -154,4 +154,12 @@ mod tests {
         }
         assert_eq!(super::p_value(1.0, 0), None);
     }
+
+    /// Rows are listed ten at most, the rest counted.
+    #[test]
+    fn rows_are_listed_ten_at_most() {
+        assert_eq!(super::list(&[3, 5]), "3, 5");
+        assert_eq!(super::list(&(0..10).collect::<Vec<_>>()), "0, 1, 2, 3, 4, 5, 6, 7, 8, 9");
+        assert_eq!(super::list(&(0..12).collect::<Vec<_>>()), "0, 1, 2, 3, 4, 5, 6, 7, 8, 9 and 2 more");
+    }
 }

@@ -149,7 +149,19 @@ fn an_outlier_is_named() {
     let r = fit(&Shape::flat(), &rows, &Fixed::default()).unwrap();
     assert_eq!(r.outliers, vec![5], "{:?}", r.normalised_residuals);
     assert!(r.normalised_residuals[5] > 3.5);
-    assert!(r.verdicts.iter().any(|v| v.contains("5")), "{:?}", r.verdicts);
+    assert!(
+        r.verdicts.iter().any(|v| v.contains("likely: the outlying rows 5 (without them p = ")),
+        "{:?}",
+        r.verdicts
+    );
+    // Without sigma, against the scatter (which the outlier inflates: eight
+    // standard deviations off, it stands 4 scatters out).
+    let mut rows: Vec<Measurement> = noisy(54_321).iter().map(|m| Measurement { sigma: None, ..*m }).collect();
+    rows[5].mu += 8.0 * 0.002;
+    let r = fit(&Shape::flat(), &rows, &Fixed::default()).unwrap();
+    assert_eq!(r.outliers, vec![5], "{:?}", r.normalised_residuals);
+    let said = "rows 5 are more than 3.5 standard uncertainties";
+    assert!(r.verdicts.iter().any(|v| v.starts_with(said)), "{:?}", r.verdicts);
 }
 
 /// Every parameter held is a model with its chi-square (it panicked): at the
@@ -198,6 +210,8 @@ fn what_the_profile_cannot_bound_has_no_standard_error() {
     let four: Vec<Measurement> = std::iter::repeat_n(Measurement { sigma: None, ..synthetic()[3] }, 4).collect();
     let r = fit(&Shape::flat(), &four, &Fixed::default()).unwrap();
     assert_eq!(r.mu0.stderr, None, "{r:?}");
+    // Without scatter the normalised residuals are 0, not 0/0.
+    assert!(r.normalised_residuals.iter().all(|z| *z == 0.0), "{:?}", r.normalised_residuals);
     assert!(r.verdicts.iter().any(|v| v.contains("no scatter")), "{:?}", r.verdicts);
 }
 
@@ -263,4 +277,20 @@ fn a_compliant_rigs_rows_are_fitted_on_its_system() {
     let stiff: Vec<Measurement> = rows.iter().map(|m| Measurement { system: None, ..*m }).collect();
     let s = fit(&Shape::flat(), &stiff, &Fixed::default()).unwrap();
     assert!(s.p_value.unwrap() < 1e-10 && !s.verdicts.is_empty(), "{:?}", s.p_value);
+}
+
+/// Without sigma the residuals are normalised by the scatter: their squares
+/// sum to the degrees of freedom (the reduced chi-square taken as 1), and
+/// none of the noisy synthetic rows is an outlier; with sigma they are the
+/// residuals over sigma.
+#[test]
+fn normalised_residuals_are_over_the_rows_uncertainty() {
+    let rows: Vec<Measurement> = noisy(31).iter().map(|m| Measurement { sigma: None, ..*m }).collect();
+    let r = fit(&Shape::flat(), &rows, &Fixed::default()).unwrap();
+    let sum: f64 = r.normalised_residuals.iter().map(|z| z * z).sum();
+    assert!((sum / r.dof as f64 - 1.0).abs() < 1e-12 && r.outliers.is_empty(), "{sum} {}", r.dof);
+    let w = fit(&Shape::flat(), &noisy(31), &Fixed::default()).unwrap();
+    for (z, e) in w.normalised_residuals.iter().zip(&w.residuals) {
+        assert!((z - e / 0.002).abs() <= 1e-12 * z.abs().max(1.0), "{z} {e}");
+    }
 }
