@@ -73,7 +73,7 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
         return None;
     }
     let multipliers = multipliers(&jac)?;
-    if multipliers.iter().any(|[re, im]| re.hypot(*im) >= 1.0 - NEUTRAL) {
+    if multipliers.iter().any(|[re, im]| re.hypot(*im).powf(1.0 / k as f64) >= 1.0 - NEUTRAL) {
         return None;
     }
     // The same map along other steps: where the map's own rounding (a stiff,
@@ -94,9 +94,8 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
     if !closes(&end, &s) {
         return None;
     }
-    // The least period: an orbit of period d also closes after k = m d.
-    if let Some(d) = (1..k).find(|&d| k.is_multiple_of(d) && closes(&map_k(ph, &s, d).0, &s)) {
-        return orbit(ph, s, d, run);
+    if let Some(least) = least_period(ph, &s, k, run, closes) {
+        return least;
     }
     let events = ph.period(s.0, expand(&ph.p, &s)).2;
     let norm = crate::flat::mean_normal(ph.p.amp) * std::f64::consts::TAU * k as f64;
@@ -116,13 +115,51 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
     Some((report, s))
 }
 
-/// An orbit whose multiplier is within this of the unit circle is neutral,
-/// not attracting (an undamped body ringing at its own frequency while every
-/// spring slips: its state never settles, however close the orbit; rounding
-/// and a Jacobian taken across a grazing event put such multipliers at 1 -
-/// 2.5e-7 and 1 - 1.4e-5): it would take 1e4 periods, more than the 4,000
-/// run, to contract by a factor e.
-const NEUTRAL: f64 = 1e-4;
+/// The orbit of a period `d` dividing `k` where `s` is one (`Some` of
+/// [`orbit`]'s answer at `d`), or `None` where `k` is the least period. An
+/// orbit of period `d` also closes after `k = m d`; and where its multiplier
+/// is near `-1` (a flip), a state Newton left `delta` off it along that
+/// direction closes after two periods to `(1 - lambda^2) delta` but after
+/// one only to `2 delta`: a return within [`FLIP`] after `d` periods is
+/// refined at `d`, and taken where that orbit attracts and lies as near.
+/// (An undamped body's period-1 orbit with multiplier -0.99993 was reported
+/// as period 2: `data/system-orbits.json`.)
+fn least_period(
+    ph: &Phases,
+    s: &Reduced,
+    k: usize,
+    run: usize,
+    closes: impl Fn(&Reduced, &Reduced) -> bool,
+) -> Option<Option<(SystemReport, Reduced)>> {
+    for d in (1..k).filter(|&d| k.is_multiple_of(d)) {
+        let back = map_k(ph, s, d).0;
+        if closes(&back, s) {
+            return Some(orbit(ph, *s, d, run));
+        }
+        if distance(&back, s) <= FLIP {
+            if let Some(found) = orbit(ph, *s, d, run).filter(|(_, at)| distance(at, s) <= FLIP) {
+                return Some(Some(found));
+            }
+        }
+    }
+    None
+}
+
+/// How near a return after fewer periods must come to be refined at that
+/// period ([`least_period`]): Newton's orbits close to 1e-8 at most, and a
+/// multiplier within 1e-4 of -1 is neutral, so a flip's one-period return
+/// is within 2e-8 / (1 - lambda^2) <= 1e-4.
+const FLIP: f64 = 1e-4;
+
+/// An orbit whose multiplier, per period of the drive (the `k`-th root of
+/// `P^k`'s), is within this of the unit circle is neutral, not attracting
+/// (an undamped body ringing at its own frequency while every spring slips:
+/// its state never settles, however close the orbit; rounding and a
+/// Jacobian taken across a grazing event put such multipliers at 1 - 2.5e-7
+/// and 1 - 1.4e-5). An undamped body's orbit at 1 - 6.7e-5 (the 40-digit
+/// Jacobian's: `data/system-orbits.json`) attracts, and the search reaches
+/// it to 1e-6 within 25 periods.
+const NEUTRAL: f64 = 2e-5;
 
 /// Most sampling steps a search and its Newton iterations run in all.
 pub(super) const NEWTON_BUDGET: f64 = 2.0 * MAX_STEPS;
