@@ -70,6 +70,23 @@ mod tests {
         assert!(error > 0.0 && error <= m.error_estimate(), "{m:?}");
     }
 
+    /// The batches are of the size asked for, and the standard error is
+    /// their sample deviation over `sqrt(n)` (cargo-mutants: a `%` for the
+    /// `/` sizing the batches, `n + 1` or `n` for `n - 1` passed). Eight
+    /// batches of 10 whose means alternate 0, 1: `sqrt((8/4)/7/8) =
+    /// sqrt(1/28)`; within each batch values alternate too, so batches of 1
+    /// would scatter more.
+    #[test]
+    fn the_standard_error_is_the_batches_sample_deviation() {
+        let xs: Vec<f64> = (0..80).map(|i| ((i / 10) % 2) as f64 + if i % 2 == 0 { 0.25 } else { -0.25 }).collect();
+        let m = batch_mean(&xs, 10);
+        assert_eq!(m.mean, 0.5);
+        assert!((m.standard_error - (1.0f64 / 28.0).sqrt()).abs() <= 1e-15, "{m:?}");
+        let alternating: Vec<f64> = (0..2000).map(|i| (i % 2) as f64).collect();
+        let m = batch_mean(&alternating, 10);
+        assert_eq!((m.mean, m.standard_error, m.drift), (0.5, 0.0, 0.0), "{m:?}");
+    }
+
     /// A stationary response (a fixed pseudo-random sequence): the estimate
     /// covers the mean's error and is a few standard errors, not more.
     #[test]

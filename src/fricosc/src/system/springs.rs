@@ -18,7 +18,7 @@
 //! lost at the closed-form zeros of `B_i`.
 
 use super::period::{first_event, Event, MAX_EVENTS_IN_A_STEP};
-use super::phase::{advance, series, Generator, Linear, Params, State, COS, INT_F, ONE, SIN, V, X};
+use super::phase::{advance, series, Generator, Linear, Params, State, COS, INT_F, ONE, SIN, TAU, V, X};
 use nalgebra::SMatrix;
 use std::cell::RefCell;
 use std::collections::{BTreeSet, HashMap};
@@ -254,8 +254,12 @@ impl Foundation {
     ) -> (f64, f64, f64, Vec<[f64; 3]>) {
         let mut z = self.p.start();
         (z[X], z[V], z[INT_F]) = (x, v, 0.0);
+        // `int f` summed step by step, compensated (`super::period`'s reason).
+        let mut int_f = crate::special::Kahan::default();
         let mut forces = Vec::with_capacity(samples.len());
         let (mut tau, mut next, mut flips, mut in_step) = (0.0, 0, 0, 0);
+        // The time summed compensated (`super::period`'s reason).
+        let mut clock = crate::special::Kahan::default();
         let limit = MAX_EVENTS_IN_A_STEP * (springs.len() + 1);
         let mut ix = Index::new(&self.w, &self.b, springs);
         while tau < TWO_PI {
@@ -290,12 +294,17 @@ impl Foundation {
                     in_step += 1;
                     flips = if d == 0.0 { flips + 1 } else { 0 };
                     z = advance(&a, &z, d);
-                    tau += d;
+                    int_f.add(std::mem::take(&mut z[INT_F]));
+                    clock.add(d);
+                    (tau, z[TAU]) = (clock.sum, clock.sum);
                     self.apply(t, springs, &z, &mut ix);
                     break;
                 }
                 (flips, in_step) = (0, 0);
-                (z, tau) = (end, if h == rest { TWO_PI } else { tau + h });
+                clock.add(h);
+                (z, tau) = (end, if h == rest { TWO_PI } else { clock.sum });
+                z[TAU] = tau;
+                int_f.add(std::mem::take(&mut z[INT_F]));
                 if let Some(t) = contact {
                     while let Some(&(_, i, gained)) = self.contacts.get(next).filter(|c| c.0 == t) {
                         let old = springs[i];
@@ -316,7 +325,7 @@ impl Foundation {
                 (*l, *m) = (*l - shift, *m - shift);
             }
         }
-        (z[X] - shift, z[V], z[INT_F], forces)
+        (z[X] - shift, z[V], int_f.sum, forces)
     }
 }
 
