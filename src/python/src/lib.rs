@@ -17,52 +17,18 @@ use fricosc::validation::{
     Table, TimeAxis,
 };
 use fricosc::{Conditions, Error, Report, Shape, DEFAULT_TOL};
-use numpy::{
-    IntoPyArray, PyArray3, PyArrayDyn, PyArrayMethods, PyReadonlyArray1, PyReadonlyArrayDyn, PyUntypedArrayMethods,
-};
+use numpy::{IntoPyArray, PyArray3, PyReadonlyArray1};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::sync::Arc;
 
+mod vectorised;
+use vectorised::{evaluate, evaluate_oscillation, evaluate_system};
+
 create_exception!(fricosc, InputError, PyValueError, "Bad input: a value, a shape or a table fricosc refuses.");
 create_exception!(fricosc, InternalError, PyRuntimeError, "A bug of fricosc (please report it).");
-
-/// Elements evaluated between two checks for Ctrl-C at first; the chunk then
-/// grows or shrinks so that each takes about [`CHUNK_SECONDS`] (a flat point
-/// costs 0.2 us, a curved one 5 us, a curved one under a tangential
-/// oscillation up to 5 ms: one size does not fit all, and the first chunk must
-/// be short for the slowest).
-const FIRST_CHUNK: usize = 16;
-
-/// Elements checked between two checks for Ctrl-C while the inputs are
-/// checked (a broadcast of 4e9 elements takes about a minute to check).
-const CHECK_CHUNK: usize = 1 << 20;
-
-/// Check element `i` of the checking pass for Ctrl-C every [`CHECK_CHUNK`] elements.
-fn check_signals_at(py: Python<'_>, i: usize) -> PyResult<()> {
-    if i % CHECK_CHUNK == CHECK_CHUNK - 1 {
-        py.check_signals()?;
-    }
-    Ok(())
-}
-
-/// A new float64 array of shape `dims`, zeroed, by numpy itself: an array too
-/// large for memory raises `MemoryError` (rust-numpy's own constructor panics).
-fn zeros<'py>(py: Python<'py>, dims: &[usize]) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let np = PyModule::import(py, "numpy")?;
-    let a = np.getattr("zeros")?.call1((pyo3::types::PyTuple::new(py, dims)?,))?;
-    a.cast_into::<PyArrayDyn<f64>>().map_err(|e| InternalError::new_err(format!("numpy.zeros: {e}")))
-}
-/// The time one chunk should take: Ctrl-C is answered within about twice it.
-const CHUNK_SECONDS: f64 = 0.04;
-/// Largest chunk (the buffer it needs: 24 bytes an element).
-const MAX_CHUNK: usize = 1 << 20;
-
-/// Chunks at least this long are evaluated on every core (rayon); shorter ones
-/// on the calling thread, where starting the pool would cost more than it saves.
-const PARALLEL_THRESHOLD: usize = 256;
 
 fn to_py(e: Error) -> PyErr {
     if e.is_internal() {
@@ -191,129 +157,6 @@ fn history_conditions(v: f64, a: f64, vhat: bool, tangential: Option<(f64, f64)>
 /// The conditions of one element under a tangential oscillation.
 fn oscillation(v: f64, a: f64, t: f64, p: f64, tol: f64) -> fricosc::Result<Conditions> {
     Conditions::vhat(v, a)?.with_tangential(t, p)?.with_tol(tol)
-}
-
-/// `mu_ratio` (or, with `reduction`, the reduction) at every element of the
-/// broadcast arrays `v`, `a` (same shape; views are read in place), into a new
-/// array of that shape. Every element is checked before any is computed (the
-/// first bad one is reported); the work runs in chunks with the GIL released,
-/// checking for Ctrl-C between them; memory is the output array plus a chunk.
-#[pyfunction]
-#[pyo3(signature = (shape, v, a, vhat, tol, reduction))]
-fn evaluate<'py>(
-    py: Python<'py>,
-    shape: &CoreShape,
-    v: PyReadonlyArrayDyn<'py, f64>,
-    a: PyReadonlyArrayDyn<'py, f64>,
-    vhat: bool,
-    tol: f64,
-    reduction: bool,
-) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let (v, a) = (v.as_array(), a.as_array());
-    if v.shape() != a.shape() {
-        return Err(InputError::new_err(format!("vbar and amp differ in shape ({:?} and {:?})", v.shape(), a.shape())));
-    }
-    Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
-    // The output first: an array too large for memory is refused before the
-    // inputs are checked.
-    let out = zeros(py, v.shape())?;
-    for (i, (&vi, &ai)) in v.iter().zip(a.iter()).enumerate() {
-        conditions(vi, ai, vhat, tol).map_err(|e| at_index(e, i))?;
-        check_signals_at(py, i)?;
-    }
-    let shape = &shape.inner;
-    let mut inputs = v.iter().zip(a.iter()).map(|(&x, &y)| [x, y]);
-    chunked(py, out, &mut inputs, &|&[x, y]: &[f64; 2]| {
-        let r = shape.evaluate(&conditions(x, y, vhat, tol)?)?.ratio;
-        Ok(if reduction { r.reduction } else { r.mu_ratio })
-    })
-}
-
-/// Evaluate `one` at every element of `inputs` (read a chunk at a time) into
-/// `out` (of their shape, C order): chunks timed to about
-/// [`CHUNK_SECONDS`], in parallel from [`PARALLEL_THRESHOLD`] elements, with
-/// the GIL released and Ctrl-C checked between them.
-fn chunked<'py, const N: usize>(
-    py: Python<'py>,
-    out: Bound<'py, PyArrayDyn<f64>>,
-    inputs: &mut dyn Iterator<Item = [f64; N]>,
-    one: &(dyn Fn(&[f64; N]) -> fricosc::Result<f64> + Sync),
-) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let total: usize = out.shape().iter().product();
-    let mut done = 0;
-    let mut chunk = FIRST_CHUNK;
-    let mut buf = Vec::with_capacity(chunk.min(total));
-    while done < total {
-        let n = chunk.min(total - done);
-        let t0 = std::time::Instant::now();
-        let items: Vec<[f64; N]> = (&mut *inputs).take(n).collect();
-        buf.clear();
-        py.detach(|| {
-            if n >= PARALLEL_THRESHOLD {
-                use rayon::prelude::*;
-                items.par_iter().map(one).collect_into_vec(&mut buf);
-            } else {
-                buf.extend(items.iter().map(one));
-            }
-        });
-        {
-            let mut rw = out.readwrite();
-            let slice = rw.as_slice_mut().map_err(serialise_err)?;
-            for (k, r) in buf.drain(..).enumerate() {
-                slice[done + k] = r.map_err(|e| at_index(e, done + k))?;
-            }
-        }
-        done += n;
-        py.check_signals()?;
-        let took = t0.elapsed().as_secs_f64();
-        if took < 0.5 * CHUNK_SECONDS && n == chunk {
-            chunk = (2 * chunk).min(MAX_CHUNK);
-        } else if took > 2.0 * CHUNK_SECONDS {
-            chunk = (chunk / 2).max(256);
-        }
-    }
-    Ok(out)
-}
-
-/// `mu_ratio` (or the reduction) under oscillation in the sliding direction
-/// ([`fricosc::combined`]) at every element of the broadcast arrays `vhat`,
-/// `amp`, `t` (tangential amplitude), `phase`; checked first, as [`evaluate`].
-#[pyfunction]
-#[pyo3(signature = (shape, vhat, amp, t, phase, tol, reduction))]
-#[allow(clippy::too_many_arguments)]
-fn evaluate_oscillation<'py>(
-    py: Python<'py>,
-    shape: &CoreShape,
-    vhat: PyReadonlyArrayDyn<'py, f64>,
-    amp: PyReadonlyArrayDyn<'py, f64>,
-    t: PyReadonlyArrayDyn<'py, f64>,
-    phase: PyReadonlyArrayDyn<'py, f64>,
-    tol: f64,
-    reduction: bool,
-) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let arrays = [vhat.as_array(), amp.as_array(), t.as_array(), phase.as_array()];
-    if arrays.iter().any(|x| x.shape() != arrays[0].shape()) {
-        return Err(InputError::new_err("vhat, amp, tangential_amp and phase differ in shape".to_string()));
-    }
-    Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
-    let out = zeros(py, arrays[0].shape())?;
-    let each = || {
-        arrays[0]
-            .iter()
-            .zip(arrays[1].iter())
-            .zip(arrays[2].iter())
-            .zip(arrays[3].iter())
-            .map(|(((&v, &a), &t), &p)| [v, a, t, p])
-    };
-    for (i, [v, a, t, p]) in each().enumerate() {
-        oscillation(v, a, t, p, tol).map_err(|e| at_index(e, i))?;
-        check_signals_at(py, i)?;
-    }
-    let shape = &shape.inner;
-    chunked(py, out, &mut each(), &|&[v, a, t, p]: &[f64; 4]| {
-        let r = shape.ratio(&oscillation(v, a, t, p, tol)?)?;
-        Ok(if reduction { r.reduction } else { r.mu_ratio })
-    })
 }
 
 /// One point under oscillation in the sliding direction, as `fricosc point
@@ -678,6 +521,7 @@ fn _fricosc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(point, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate_oscillation, m)?)?;
+    m.add_function(wrap_pyfunction!(evaluate_system, m)?)?;
     m.add_function(wrap_pyfunction!(point_oscillation, m)?)?;
     m.add_function(wrap_pyfunction!(point_system, m)?)?;
     m.add_function(wrap_pyfunction!(history, m)?)?;

@@ -22,6 +22,7 @@ message (for an array element the message ends with its index), a wrong type
 """
 
 from ._fit import FitResult, fit
+from ._vector import mu_ratio, reduction
 from ._api import (
     DEFAULT_TOL,
     EquivalentProfile,
@@ -34,9 +35,7 @@ from ._api import (
     Shape,
     __version__,
     history,
-    mu_ratio,
     point,
-    reduction,
     scene,
     validate,
     validate_history,

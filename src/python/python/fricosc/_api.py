@@ -32,11 +32,18 @@ class Shape:
     """
 
     _core: _fricosc.CoreShape
+    #: What the shape is made from: pickled so (a worker of a Dask cluster
+    #: makes it again; a file a spec names is read there).
+    _args: Tuple[Any, ...]
 
     def __init__(self, spec: str) -> None:
         if not isinstance(spec, str):
             raise TypeError(f"a shape is a string or a fricosc.Shape, not {type(spec).__name__}")
         self._core = _fricosc.CoreShape.parse(spec)
+        self._args = (spec,)
+
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
+        return (type(self), self._args)
 
     @property
     def name(self) -> str:
@@ -52,6 +59,7 @@ class Flat(Shape):
 
     def __init__(self) -> None:
         super().__init__("flat")
+        self._args = ()
 
 
 class PowerLaw(Shape):
@@ -59,6 +67,7 @@ class PowerLaw(Shape):
 
     def __init__(self, n: float) -> None:
         super().__init__(f"power:{float(n)!r}")
+        self._args = (n,)
 
 
 class FlatTip(Shape):
@@ -66,6 +75,7 @@ class FlatTip(Shape):
 
     def __init__(self, e: float) -> None:
         super().__init__(f"flat-tip:{float(e)!r}")
+        self._args = (e,)
 
 
 def _column(values: npt.ArrayLike, what: str) -> npt.NDArray[np.float64]:
@@ -82,6 +92,7 @@ class Profile(Shape):
 
     def __init__(self, r: npt.ArrayLike, f: npt.ArrayLike, u0: float, name: str = "profile") -> None:
         self._core = _fricosc.CoreShape.from_table(_column(r, "r"), _column(f, "f"), float(u0), True, name)
+        self._args = (r, f, u0, name)
 
 
 class EquivalentProfile(Shape):
@@ -90,6 +101,7 @@ class EquivalentProfile(Shape):
 
     def __init__(self, x: npt.ArrayLike, g: npt.ArrayLike, u0: float, name: str = "gx") -> None:
         self._core = _fricosc.CoreShape.from_table(_column(x, "x"), _column(g, "g"), float(u0), False, name)
+        self._args = (x, g, u0, name)
 
 
 ShapeLike = Union[str, Shape]
@@ -134,105 +146,6 @@ def _tol(tol: Optional[float]) -> float:
     if isinstance(tol, (bool, np.bool_)) or not isinstance(tol, (int, float, np.integer, np.floating)):
         raise TypeError(f"tol must be a real number, not {type(tol).__name__}")
     return float(tol)
-
-
-def _evaluate(
-    shape: ShapeLike,
-    vbar: Optional[npt.ArrayLike],
-    amp: Optional[npt.ArrayLike],
-    vhat: Optional[npt.ArrayLike],
-    tol: Optional[float],
-    reduction: bool,
-    tangential_amp: Optional[npt.ArrayLike] = None,
-    phase: Optional[npt.ArrayLike] = None,
-) -> FloatOrArray:
-    """``mu_ratio`` (or the reduction) over the broadcast inputs. The broadcast
-    views are read in place and the result written into one new array: the
-    memory is the output's 8 bytes an element plus a chunk."""
-    core = _core(shape)
-    if amp is None:
-        raise TypeError("amp (du/u0) is required")
-    v, is_vhat = _velocity(vbar, vhat)
-    if phase is not None and tangential_amp is None:
-        raise TypeError("phase needs tangential_amp")
-    if tangential_amp is not None and not is_vhat:
-        raise TypeError("tangential_amp needs the velocity as vhat= (eq. 15), not vbar")
-    try:
-        if tangential_amp is not None:
-            h_arr, a_arr, t_arr, p_arr = np.broadcast_arrays(
-                _floats(v, "vhat"),
-                _floats(amp, "amp"),
-                _floats(tangential_amp, "tangential_amp"),
-                _floats(0.0 if phase is None else phase, "phase"),
-            )
-            shape_out = h_arr.shape
-            out = _fricosc.evaluate_oscillation(core, h_arr, a_arr, t_arr, p_arr, _tol(tol), reduction)
-        else:
-            v_arr, a_arr = np.broadcast_arrays(_floats(v, "vhat" if is_vhat else "vbar"), _floats(amp, "amp"))
-            shape_out = v_arr.shape
-            out = _fricosc.evaluate(core, v_arr, a_arr, is_vhat, _tol(tol), reduction)
-    except (InputError, InternalError) as e:
-        if len(e.args) == 2 and isinstance(e.args[1], int):
-            message, index = e.args
-            if shape_out:
-                where = tuple(int(i) for i in np.unravel_index(index, shape_out))
-                message = f"{message} (at index {where[0] if len(where) == 1 else where})"
-            raise type(e)(message) from None
-        raise
-    return float(out) if not shape_out else out
-
-
-def mu_ratio(
-    shape: ShapeLike,
-    vbar: Optional[npt.ArrayLike] = None,
-    amp: Optional[npt.ArrayLike] = None,
-    *,
-    vhat: Optional[npt.ArrayLike] = None,
-    tol: Optional[float] = None,
-    tangential_amp: Optional[npt.ArrayLike] = None,
-    phase: Optional[npt.ArrayLike] = None,
-) -> FloatOrArray:
-    """``mu_macro / mu0`` of ``shape`` at velocity ``vbar`` (or ``vhat``) and amplitude ``amp``.
-
-    ``vbar`` and ``amp`` (or ``vhat`` and ``amp``, with ``vbar = vhat / amp``)
-    are numbers or arrays and broadcast against each other; the result is a
-    float for scalar inputs, else a float64 array of the broadcast shape.
-    ``tol`` is the relative quadrature tolerance of curved shapes (default
-    :data:`DEFAULT_TOL`). Arrays of 256 elements or more are evaluated on every
-    core with the GIL released.
-
-    With ``tangential_amp`` (``dx/l``, pre-slip lengths ``l = mu0 u0 kz/kx``)
-    the body also oscillates in the sliding direction, ``phase`` radians
-    (default 0) against the normal oscillation (``vhat`` then; all four
-    broadcast); the result lies in ``[-1, 1]``: below 0 the oscillations push
-    the body forward. ``tangential_amp = 0`` is the seed's problem, bit for bit.
-
-    >>> mu_ratio("flat", [0.0, 0.5, 1.0], 0.5).tolist()
-    [0.5, 0.8992738983331656, 1.0]
-    >>> mu_ratio("flat", vhat=0.6, amp=2.0, tangential_amp=3.0, phase=1.0)
-    -0.9271222646980088
-    """
-    return _evaluate(shape, vbar, amp, vhat, tol, False, tangential_amp, phase)
-
-
-def reduction(
-    shape: ShapeLike,
-    vbar: Optional[npt.ArrayLike] = None,
-    amp: Optional[npt.ArrayLike] = None,
-    *,
-    vhat: Optional[npt.ArrayLike] = None,
-    tol: Optional[float] = None,
-    tangential_amp: Optional[npt.ArrayLike] = None,
-    phase: Optional[npt.ArrayLike] = None,
-) -> FloatOrArray:
-    """``1 - mu_macro / mu0``, computed with its own relative accuracy (not as a
-    difference): the friction that the oscillation removes (up to 2 under
-    oscillation in the sliding direction). Arguments as in :func:`mu_ratio`.
-
-    >>> reduction("flat", 1 - 1e-6, 0.5)  # 1 - mu_ratio would keep 3 digits
-    3.580986935971103e-13
-    """
-    return _evaluate(shape, vbar, amp, vhat, tol, True, tangential_amp, phase)
 
 
 def point(
@@ -506,6 +419,7 @@ def validate_series(
     on the resolution, the finest table's own findings) and cautions; on a system
     (``system_stiffness=``, as :func:`validate`) against its attractors.
 
+    >>> from fricosc import mu_ratio
     >>> exact = float(mu_ratio("flat", 0.5, 0.5))
     >>> t = {m: {"vbar": [0.5], "amp": [0.5], "mu_ratio": [exact + 1 / m ** 2]} for m in (100, 200, 400)}
     >>> r = validate_series(t)

@@ -5,7 +5,7 @@ from typing import Any, Dict, List, Optional, Tuple, final
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "point_oscillation", "point_system", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "fit", "__version__"]
+__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "evaluate_system", "point_oscillation", "point_system", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "fit", "__version__"]
 __version__: str
 
 class InputError(ValueError): ...
@@ -34,6 +34,16 @@ def evaluate_oscillation(
     phase: npt.NDArray[np.float64],
     tol: float,
     reduction: bool,
+) -> npt.NDArray[np.float64]: ...
+def evaluate_system(
+    shape: CoreShape,
+    x: List[npt.NDArray[np.float64]],
+    vhat: bool,
+    tangential: bool,
+    springs: Optional[int],
+    tol: float,
+    reduction: bool,
+    nan: bool,
 ) -> npt.NDArray[np.float64]: ...
 def point_oscillation(
     shape: CoreShape, vhat: float, amp: float, t: float, phase: float, tol: float
