@@ -22,7 +22,7 @@ const MAX_FILE_LINES: usize = 700;
 /// interfaces (validate's system columns and diverged values, fit's values
 /// rounded to their errors, unknown columns refused, the rig's system).
 /// Growing it is a decision for a commit of its own.
-const MAX_CLI_LINES: usize = 8_450;
+const MAX_CLI_LINES: usize = 8_500;
 
 /// The files under `dir` (recursively) whose names end in one of `exts`,
 /// build outputs left out.
