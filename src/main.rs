@@ -26,6 +26,9 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// No progress bar on stderr (drawn only on a terminal, for work over a second)
+    #[arg(long, global = true)]
+    quiet: bool,
 }
 
 /// clap's own outcome: help and version on stdout (through the checked path),
@@ -64,6 +67,7 @@ fn main() -> ExitCode {
         Ok(c) => c,
         Err(e) => return clap_exit(e),
     };
+    fricosc_cli::progress::set_quiet(cli.quiet);
     match cli.command.run() {
         Ok(Outcome::Done) => ExitCode::SUCCESS,
         Ok(Outcome::Negative) => ExitCode::from(1),

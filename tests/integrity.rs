@@ -372,3 +372,45 @@ fn boms_escapes_and_messages() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
 }
+
+/// A long table on a system (two seconds) with stderr on a terminal (a
+/// pseudo-terminal): indicatif's bar, with the rows done; with `--quiet`, or
+/// with stderr not a terminal, nothing; the output the same bytes each time.
+#[test]
+fn a_progress_bar_only_on_a_terminal() {
+    use std::os::fd::{FromRawFd, OwnedFd};
+    let args = ["table", "--shape", "parabolic", "--amp", "0.5", "--vbar", "0.05:1:80", "--system-stiffness", "1"];
+    let args = [&args[..], &["--frequency-ratio", "0.5", "--damping", "0.05", "--format", "csv"]].concat();
+    let on_terminal = |quiet: bool| {
+        let (mut master, mut slave) = (0, 0);
+        // SAFETY: openpty writes two descriptors it opened; each is owned once below.
+        let ok =
+            unsafe { libc::openpty(&mut master, &mut slave, std::ptr::null_mut(), std::ptr::null(), std::ptr::null()) };
+        assert_eq!(ok, 0, "openpty");
+        // SAFETY: the descriptors are open and owned by nothing else.
+        let (master, slave) = unsafe { (OwnedFd::from_raw_fd(master), OwnedFd::from_raw_fd(slave)) };
+        let mut cmd = bin();
+        cmd.args(&args).stdout(Stdio::piped()).stderr(Stdio::from(slave));
+        if quiet {
+            cmd.arg("--quiet");
+        }
+        let child = cmd.spawn().unwrap();
+        drop(cmd);
+        let reader = std::thread::spawn(move || {
+            let mut terminal = std::fs::File::from(master);
+            let mut seen = vec![];
+            // EIO once the child, the last holder of the terminal's other end, has gone.
+            let _ = terminal.read_to_end(&mut seen);
+            String::from_utf8_lossy(&seen).into_owned()
+        });
+        let out = child.wait_with_output().unwrap();
+        assert!(out.status.success());
+        (out.stdout, reader.join().unwrap())
+    };
+    let (stdout, bar) = on_terminal(false);
+    assert!(bar.contains("table: ") && bar.contains("/80 rows"), "{bar:?}");
+    let (quiet_stdout, nothing) = on_terminal(true);
+    assert_eq!((quiet_stdout, nothing.as_str()), (stdout.clone(), ""));
+    let piped = bin().args(&args).output().unwrap();
+    assert_eq!((piped.stdout, piped.stderr), (stdout, vec![]));
+}

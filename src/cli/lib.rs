@@ -20,6 +20,7 @@ pub mod outdir;
 pub mod output;
 pub mod plot;
 pub mod point;
+pub mod progress;
 pub mod scene;
 pub mod suite;
 pub mod table;

@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 use crate::output::Format;
 use fricosc::scene::{solve_with, Scene, SceneResult};
 use rayon::prelude::*;
-use std::io::{self, IsTerminal, Write};
+use std::io::{self, Write};
 /// Parse a scene from JSON text; `source` names the file in errors. A scene is a
 /// JSON object: serde would also accept its fields as a positional array.
 pub fn parse(text: &str, source: &str) -> Result<Scene> {
@@ -197,19 +197,12 @@ pub fn run(a: SceneArgs) -> Result<()> {
         })
         .collect();
     let scenes = scenes.into_iter().collect::<Result<Vec<_>>>()?;
-    // A progress bar on stderr only when it is a terminal and the work is long.
     let total: usize = scenes.iter().map(Scene::rows).sum();
-    let bar = (std::io::stderr().is_terminal() && total >= 2000).then(|| Progress::new(total as u64));
-    let tick = |k: u64| {
-        if let Some(b) = &bar {
-            b.inc(k);
-        }
-    };
+    let bar = crate::progress::Bar::new(Some(total as u64), "scene");
+    let tick = |k: u64| bar.inc(k);
     let results: Vec<Result<Vec<fricosc::scene::SceneResult>>> =
         scenes.par_iter().zip(&files).map(|(s, f)| crate::scene::solve_with_progress(s, f, &tick)).collect();
-    if let Some(b) = &bar {
-        b.finish();
-    }
+    drop(bar);
     // Each answer (one per amplitude) with its scene's label: its name, or its file.
     let mut labelled: Vec<(String, fricosc::scene::SceneResult)> = vec![];
     for (r, f) in results.into_iter().zip(&files) {
@@ -269,30 +262,4 @@ fn scenes_csv(out: &mut dyn Write, results: &[(String, fricosc::scene::SceneResu
         }
     }
     w.flush()
-}
-
-/// A percentage on a terminal's stderr, rewritten in place (whole percents
-/// only); a failed write to stderr is ignored (the answer matters more).
-struct Progress {
-    total: u64,
-    done: std::sync::atomic::AtomicU64,
-}
-
-impl Progress {
-    fn new(total: u64) -> Self {
-        Progress { total: total.max(1), done: std::sync::atomic::AtomicU64::new(0) }
-    }
-
-    fn inc(&self, k: u64) {
-        use std::sync::atomic::Ordering::Relaxed;
-        let before = self.done.fetch_add(k, Relaxed);
-        let (p0, p1) = (100 * before / self.total, 100 * (before + k) / self.total);
-        if p1 > p0 {
-            let _ = write!(std::io::stderr(), "\rscene: {p1:>3} %");
-        }
-    }
-
-    fn finish(&self) {
-        let _ = write!(std::io::stderr(), "\r             \r");
-    }
 }

@@ -101,10 +101,12 @@ fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::
     let or_nan = |x: Option<f64>| x.unwrap_or(f64::NAN);
     // Each row's values after its inputs: mu, reduction, and on a system the
     // period, standard error and estimate.
+    let bar = crate::progress::Bar::new(Some(g.points.len() as u64), "table");
     let rows = g
         .points
         .par_iter()
         .map(|c| {
+            bar.inc(1);
             Ok(match (system, stepping) {
                 (Some(sys), _) => {
                     let r = crate::cmd::system_report(shape, &c.with_system(sys))?;

@@ -356,7 +356,7 @@ fn help_texts_and_stepping_only_options() {
     let none = fricosc(&[], None);
     assert_eq!(none.status.code(), Some(2));
     assert!(none.stdout.is_empty());
-    assert!(String::from_utf8_lossy(&none.stderr).contains("Usage: fricosc <COMMAND>"));
+    assert!(String::from_utf8_lossy(&none.stderr).contains("Usage: fricosc [OPTIONS] <COMMAND>"));
     let out = fricosc(&["point", "--vbar", "0.3", "--amp", "0.5", "--steps-per-period", "10"], None);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("applies only with --method stepping"));

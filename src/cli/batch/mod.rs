@@ -135,17 +135,21 @@ struct Shapes {
     list: Vec<Shape>,
     stepping: Option<Stepping>,
     springs: Option<usize>,
+    /// Rows solved, on a terminal's stderr.
+    bar: std::sync::Arc<crate::progress::Bar>,
 }
 
 impl Shapes {
     fn new(method: Method) -> Shapes {
-        Shapes { index: HashMap::new(), list: vec![], stepping: method.stepping, springs: method.springs }
+        let bar = std::sync::Arc::new(crate::progress::Bar::new(None, "batch"));
+        Shapes { index: HashMap::new(), list: vec![], stepping: method.stepping, springs: method.springs, bar }
     }
 
     /// The shapes as they are now, to evaluate rows already checked while
     /// more are read (which may add shapes).
     fn snapshot(&self) -> Shapes {
-        Shapes { index: HashMap::new(), list: self.list.clone(), stepping: self.stepping, springs: self.springs }
+        let (list, bar) = (self.list.clone(), self.bar.clone());
+        Shapes { index: HashMap::new(), list, stepping: self.stepping, springs: self.springs, bar }
     }
 
     /// A new chunk of a streamed batch begins: the rows of the last one are done.
@@ -240,7 +244,11 @@ impl Shapes {
     fn evaluate_all(&self, jobs: &[Job], source: &str, name: &(dyn Fn(usize) -> String + Sync)) -> Result<Vec<Ratio>> {
         let mut out = Vec::with_capacity(jobs.len());
         let filler = Ratio::default();
-        map_into(jobs, filler, &|_, j| self.evaluate(j), &mut out).map_err(|(i, e)| match e {
+        let each = |_, j: &Job| {
+            self.bar.inc(1);
+            self.evaluate(j)
+        };
+        map_into(jobs, filler, &each, &mut out).map_err(|(i, e)| match e {
             fricosc::Error::Internal { what } => Error::Internal { what: format!("{source} {}: {what}", name(i)) },
             e => Error::Parse { context: source.into(), reason: format!("{}: {e}", name(i)) },
         })?;

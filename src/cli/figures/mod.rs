@@ -403,9 +403,11 @@ fn on_system(
 ) -> Result<Curve> {
     use rayon::prelude::*;
     let (t, p) = tangential.unwrap_or((0.0, 0.0));
+    let bar = crate::progress::Bar::new(Some(xs.len() as u64), &format!("du/u0 = {amp}"));
     let points = xs
         .par_iter()
         .map(|&x| {
+            bar.inc(1);
             let c = if vhat {
                 fricosc::Conditions::vhat(x, amp)?.with_tangential(t, p)?
             } else {
