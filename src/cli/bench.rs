@@ -89,6 +89,41 @@ pub struct Report {
     /// (callgrind; full mode, where valgrind is installed).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub instructions: Vec<InstructionCount>,
+    /// Points a second on one core, by kind.
+    pub throughput: Vec<Throughput>,
+}
+
+/// The exact solver's speed on one core for one kind of point (one thread;
+/// `fricosc table`, `batch` and Python's arrays use every core).
+#[derive(Debug, Clone, Serialize)]
+pub struct Throughput {
+    /// The kind: stiff or on a system, flat or curved, and the point.
+    pub kind: String,
+    /// Points a second on one core (the best of a few samples).
+    pub points_per_second_per_core: f64,
+}
+
+/// [`Throughput`] of the four kinds of point: the stiff flat punch and
+/// paraboloid, and both on a system (`kappa` 1, `Omega` 0.5, `zeta` 0.05;
+/// the paraboloid at its default 256 springs).
+fn throughput(tm: Timing) -> fricosc::Result<Vec<Throughput>> {
+    let sys = fricosc::system::System::new(1.0, 0.5, 0.05)?;
+    let c = fricosc::Conditions::vhat(0.15, 0.5)?;
+    let kinds = [
+        ("stiff flat, vbar 0.3, amp 0.5", "flat", None),
+        ("stiff parabolic, vbar 0.3, amp 0.5", "parabolic", None),
+        ("flat on a system (kappa 1, Omega 0.5, zeta 0.05), vbar 0.3, amp 0.5", "flat", Some(sys)),
+        ("parabolic on that system, 256 springs", "parabolic", Some(sys)),
+    ];
+    let mut out = vec![];
+    for (kind, name, system) in kinds {
+        let (shape, c) = (Shape::parse(name)?, system.map_or(c, |s| c.with_system(s)));
+        shape.ratio(&c)?;
+        let k = if system.is_some() { 2 } else { tm.k };
+        let per = time_per_call(k, tm.sample, || shape.ratio(&c).map_or(f64::NAN, |r| r.mu_ratio));
+        out.push(Throughput { kind: kind.into(), points_per_second_per_core: 1.0 / per });
+    }
+    Ok(out)
 }
 
 /// Instructions per row of one workload, as a whole process: `(I(n) - I(1)) /
@@ -270,6 +305,10 @@ pub fn measure(quick: bool) -> Report {
             }
         }
     }
+    let throughput = throughput(tm).unwrap_or_else(|e| {
+        failures.push(format!("throughput: {e}"));
+        vec![]
+    });
     Report {
         version: env!("CARGO_PKG_VERSION").into(),
         machine: machine(),
@@ -282,6 +321,7 @@ pub fn measure(quick: bool) -> Report {
         failures,
         mode: if quick { "quick" } else { "full" }.into(),
         instructions: vec![],
+        throughput,
     }
 }
 
@@ -393,6 +433,9 @@ pub fn run(a: BenchArgs) -> Result<()> {
             "{}: exact {:.1e} s at error {:.1e}; stepping {:.1e} s at error {:.1e}; time ratio {:.2e}\n",
             r.case, r.exact_time_s, r.exact_error, r.stepping_time_s, r.stepping_error, r.time_ratio
         );
+    }
+    for t in &report.throughput {
+        o += &format!("{}: {:.3e} points a second on one core\n", t.kind, t.points_per_second_per_core);
     }
     for c in &report.instructions {
         o += &format!(

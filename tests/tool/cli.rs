@@ -265,6 +265,15 @@ fn quick_bench_writes_json_csv_and_svg_without_failures() {
         assert!(r["exact_error"].as_f64().unwrap() <= 1e-13);
         assert!(r["time_ratio"].as_f64().unwrap() > 1.0, "stepping beat the exact solver: {r}");
     }
+    // Points a second on one core for the four kinds (stiff, on a system; flat, curved).
+    let kinds: Vec<&str> =
+        report["throughput"].as_array().unwrap().iter().map(|t| t["kind"].as_str().unwrap()).collect();
+    assert!(kinds.len() == 4 && kinds[2].contains("on a system") && kinds[3].contains("parabolic"), "{kinds:?}");
+    assert!(report["throughput"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|t| t["points_per_second_per_core"].as_f64().unwrap() > 0.0));
     assert!(std::fs::read_to_string(dir.join("work-precision.svg")).unwrap().starts_with("<svg"));
     assert!(std::fs::read_to_string(dir.join("work-precision.csv"))
         .unwrap()

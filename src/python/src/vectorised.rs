@@ -229,7 +229,10 @@ fn chunked<'py, const N: usize>(
         done += n;
         let took = t0.elapsed().as_secs_f64();
         per_element = took / n as f64 * if parallel { threads } else { 1.0 };
-        let target = CHUNK_SECONDS * threads / per_element.max(1e-9);
+        // At least eight elements a thread: slow elements of unequal cost
+        // (a system's points) keep every core busy, and a system's solve
+        // answers Ctrl-C within a period whatever its chunk.
+        let target = (CHUNK_SECONDS * threads / per_element.max(1e-9)).max(8.0 * threads);
         chunk = (target as usize).clamp(1, MAX_CHUNK);
     }
     Ok(out)
