@@ -1,6 +1,6 @@
 //! A progress bar on stderr for long work (indicatif): rows done, rate and
 //! time left, drawn only where stderr is a terminal, only once the work has
-//! run [`DELAY`], never with `--quiet`, and never into the output.
+//! run a second, never with `--quiet`, and never into the output.
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
@@ -18,7 +18,7 @@ pub fn set_quiet(quiet: bool) {
 }
 
 /// A bar of `total` items (`None`: a count without a length), hidden until
-/// [`DELAY`] has passed; inert where stderr is not a terminal.
+/// a second has passed; inert where stderr is not a terminal.
 pub struct Bar {
     bar: Option<ProgressBar>,
     shown: AtomicBool,
