@@ -260,6 +260,7 @@ fn report(f: &Found, error_estimate: f64, springs: usize) -> SystemReport {
         events: vec![],
         error_estimate,
         springs: Some(springs),
+        held_steps: 0,
     }
 }
 

@@ -89,7 +89,9 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
     if let Some(least) = least_period(ph, &s, k, run, closes) {
         return least;
     }
+    let held = ph.held();
     let events = ph.period(s.0, expand(&ph.p, &s)).2;
+    let held_steps = ph.held() - held;
     let norm = crate::flat::mean_normal(ph.p.amp) * std::f64::consts::TAU * k as f64;
     let mu_ratio = int_f / norm;
     let error_estimate =
@@ -103,6 +105,7 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
         events,
         error_estimate,
         springs: None,
+        held_steps,
     };
     Some((report, s))
 }

@@ -54,6 +54,8 @@ pub(crate) struct Phases {
     chattered: std::cell::Cell<bool>,
     /// Sampling steps (and parts of steps) run so far: the work budget.
     steps_run: std::cell::Cell<u64>,
+    /// Steps in which a phase was held ([`MAX_FLIPS`]), so far.
+    held: std::cell::Cell<u64>,
 }
 
 fn index(kind: Kind) -> usize {
@@ -87,8 +89,9 @@ impl Phases {
             (h, (a * h).exp())
         });
         let events = kinds.map(|k| with_slopes(&gens[index(k)], p.events(k)));
-        let (chattered, steps_run) = (std::cell::Cell::new(false), std::cell::Cell::new(0));
-        Phases { p, gens, steps, events, chattered, steps_run }
+        let (chattered, steps_run, held) =
+            (std::cell::Cell::new(false), std::cell::Cell::new(0), std::cell::Cell::new(0));
+        Phases { p, gens, steps, events, chattered, steps_run, held }
     }
 
     /// Whether a step run so far held more events than [`MAX_EVENTS_IN_A_STEP`]
@@ -101,6 +104,11 @@ impl Phases {
     /// event counts as one), those counted in by [`Phases::count`] included.
     pub(crate) fn steps_run(&self) -> u64 {
         self.steps_run.get()
+    }
+
+    /// Steps in which a phase was held so far (`SystemReport::held_steps`).
+    pub(crate) fn held(&self) -> u64 {
+        self.held.get()
     }
 
     /// Count `steps` run elsewhere (the same map along other steps) in.
@@ -171,6 +179,9 @@ impl Phases {
             let end = if h == *step { e * z } else { advance(a, &z, h) };
             let budget = in_step < MAX_EVENTS_IN_A_STEP;
             self.chattered.set(self.chattered.get() || !budget);
+            if flips >= MAX_FLIPS {
+                self.held.set(self.held.get() + 1);
+            }
             let event = if flips < MAX_FLIPS && budget { self.event_in(kind, &z, h, &end) } else { None };
             let reach = tau + event.map_or(h, |e| e.0);
             while let Some(&at) = samples.get(forces.len()).filter(|&&at| at <= reach) {
