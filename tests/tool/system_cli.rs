@@ -299,3 +299,19 @@ fn a_table_on_a_system_reads_as_given() {
     let json: serde_json::Value = serde_json::from_str(&stdout(&none, None)).unwrap();
     assert!(json["rows"][0]["period"].is_null(), "{json}");
 }
+
+/// A table keyed by `vhat` is reported by `vhat`: the summary's worst row
+/// was "vbar 0.9" for the file's `vhat 0.45` (amp 0.5), on a system as
+/// without one.
+#[test]
+fn the_summary_keys_rows_as_the_file_does() {
+    let t = "vhat,amp,mu_ratio\n0.15,0.5,0.63\n0.3,0.5,0.8\n0.45,0.5,0.9\n";
+    let system = ["--system-stiffness", "1", "--frequency-ratio", "0.5", "--damping", "0.05"];
+    for (extra, worst) in
+        [(&system[..], "at row 2 (vhat 0.45, amp 0.5: 0.9 against"), (&[], "at row 0 (vhat 0.15, amp 0.5")]
+    {
+        let args = [&["validate", "-", "--format", "summary", "--report-only"][..], extra].concat();
+        let text = stdout(&args, Some(t));
+        assert!(text.contains(worst) && !text.contains("(vbar "), "{text}");
+    }
+}

@@ -134,6 +134,12 @@ impl Table {
         self.tangential.is_some()
     }
 
+    /// Row `i`'s velocity as the table gives it: `("vhat", value)` or
+    /// `("vbar", value)` (`None` past the last row).
+    pub(crate) fn velocity_of(&self, i: usize) -> Option<(&'static str, f64)> {
+        Some((if self.vhat { "vhat" } else { "vbar" }, *self.velocity.get(i)?))
+    }
+
     /// `(vbar, amp, mu_ratio)` of every row (a bad row is named by its index),
     /// the input of [`super::compare`]; `source` names the table in errors.
     ///

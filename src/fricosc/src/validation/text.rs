@@ -117,11 +117,12 @@ impl Validation {
         let largest = if v.max_abs_error.is_nan() {
             "No row has a finite value: every row diverged.".to_string()
         } else {
+            // Keyed as the file keys it: by `vhat` where the table gives it.
+            let (velocity, value) = table.velocity_of(w.row).unwrap_or(("vbar", w.vbar));
             format!(
-                "Largest |error| {} at row {} (vbar {}, amp {}: {} against the exact {}); rms {}.",
+                "Largest |error| {} at row {} ({velocity} {value}, amp {}: {} against the exact {}); rms {}.",
                 e(v.max_abs_error),
                 w.row,
-                w.vbar,
                 w.amp,
                 w.mu_ratio,
                 w.exact,
