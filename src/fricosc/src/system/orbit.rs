@@ -141,10 +141,11 @@ fn least_period(
 }
 
 /// How near a return after fewer periods must come to be refined at that
-/// period ([`least_period`]): Newton's orbits close to 1e-8 at most, and a
-/// multiplier within 1e-4 of -1 is neutral, so a flip's one-period return
-/// is within 2e-8 / (1 - lambda^2) <= 1e-4.
-const FLIP: f64 = 1e-4;
+/// period ([`least_period`]): Newton's orbits close to 1e-8 at most
+/// ([`ROUNDED`]), and a multiplier within 2e-5 of -1 is neutral
+/// ([`NEUTRAL`]), so a flip's one-period return, twice the state's distance
+/// from its orbit, is within 2e-8 / (1 - lambda^2) <= 5e-4.
+const FLIP: f64 = 1e-3;
 
 /// An orbit whose multiplier, per period of the drive (the `k`-th root of
 /// `P^k`'s), is within this of the unit circle is neutral, not attracting
