@@ -66,8 +66,9 @@ def test_keywords_that_do_not_apply_are_refused() -> None:
     for kw in ({"frequency_ratio": 0.5}, {"damping": 0.1}, {"springs": 64}, {"errors": "nan"}):
         with pytest.raises(fricosc.InputError, match="applies only with system_stiffness"):
             fricosc.mu_ratio("flat", 0.3, 0.5, **kw)
-    with pytest.raises(fricosc.InputError, match="errors must be 'raise' or 'nan'"):
-        fricosc.mu_ratio("flat", 0.3, 0.5, system_stiffness=1.0, errors="ignore")
+    for stiffness in (None, 1.0):
+        with pytest.raises(fricosc.InputError, match="errors must be 'raise' or 'nan'"):
+            fricosc.mu_ratio("flat", 0.3, 0.5, system_stiffness=stiffness, errors="ignore")
     with pytest.raises(fricosc.InputError, match=r"system-stiffness.* \(at index \(1, 0\)\)$"):
         fricosc.mu_ratio("flat", 0.3, 0.5, system_stiffness=[[1.0], [-1.0]])
 

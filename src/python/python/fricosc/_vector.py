@@ -102,14 +102,14 @@ def _evaluate(
     core = _core(shape)
     v, is_vhat = _velocity(vbar, vhat)
     stiffness, frequency_ratio, damping, springs = system
+    if errors not in _ERRORS:
+        raise InputError(f"errors must be 'raise' or 'nan', not {errors!r}")
     if stiffness is None:
         given = [n for n, x in (("frequency_ratio", frequency_ratio), ("damping", damping), ("springs", springs)) if x is not None]
         if given:
             raise InputError(f"{given[0]} applies only with system_stiffness")
         if errors != "raise":
             raise InputError("errors='nan' applies only with system_stiffness (nothing else is refused as it solves)")
-    if errors not in _ERRORS:
-        raise InputError(f"errors must be 'raise' or 'nan', not {errors!r}")
     if springs is not None and (isinstance(springs, bool) or not isinstance(springs, (int, np.integer))):
         raise TypeError(f"springs must be an integer, not {type(springs).__name__}")
     triple = None if stiffness is None else (stiffness, 0.0 if frequency_ratio is None else frequency_ratio, 0.0 if damping is None else damping)
@@ -139,11 +139,8 @@ def _lazy(shape: ShapeLike, named: Dict[str, Any], how: Dict[str, Any]) -> Any:
         try:
             out = _compute(_core(shape), dict(zip(names, blocks)), **how)
         except (InputError, InternalError) as e:
-            raise _with_index(e, np.shape(out_shape(blocks)), offset) from None
+            raise _with_index(e, np.broadcast_shapes(*(np.shape(b) for b in blocks)), offset) from None
         return np.asarray(out, dtype=np.float64)
-
-    def out_shape(blocks: Tuple[npt.NDArray[Any], ...]) -> npt.NDArray[np.float64]:
-        return np.empty(np.broadcast_shapes(*(np.shape(b) for b in blocks)))
 
     meta = np.empty((0,) * arrays[0].ndim, dtype=np.float64)
     return da.map_blocks(block, *arrays, dtype=np.float64, meta=meta)
