@@ -373,13 +373,13 @@ fn boms_escapes_and_messages() {
     }
 }
 
-/// A long table on a system (two seconds) with stderr on a terminal (a
+/// A long table on a system (three seconds) with stderr on a terminal (a
 /// pseudo-terminal): indicatif's bar, with the rows done; with `--quiet`, or
 /// with stderr not a terminal, nothing; the output the same bytes each time.
 #[test]
 fn a_progress_bar_only_on_a_terminal() {
     use std::os::fd::{FromRawFd, OwnedFd};
-    let args = ["table", "--shape", "parabolic", "--amp", "0.5", "--vbar", "0.05:1:80", "--system-stiffness", "1"];
+    let args = ["table", "--shape", "parabolic", "--amp", "0.5", "--vbar", "0.05:1:120", "--system-stiffness", "1"];
     let args = [&args[..], &["--frequency-ratio", "0.5", "--damping", "0.05", "--format", "csv"]].concat();
     let on_terminal = |quiet: bool| {
         let (mut master, mut slave) = (0, 0);
@@ -408,7 +408,7 @@ fn a_progress_bar_only_on_a_terminal() {
         (out.stdout, reader.join().unwrap())
     };
     let (stdout, bar) = on_terminal(false);
-    assert!(bar.contains("table: ") && bar.contains("/80 rows"), "{bar:?}");
+    assert!(bar.contains("table: ") && bar.contains("/120 rows"), "{bar:?}");
     let (quiet_stdout, nothing) = on_terminal(true);
     assert_eq!((quiet_stdout, nothing.as_str()), (stdout.clone(), ""));
     let piped = bin().args(&args).output().unwrap();

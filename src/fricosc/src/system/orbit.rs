@@ -248,3 +248,24 @@ fn jacobian(ph: &Phases, s: &Reduced, k: usize, (p0, f0): &(Reduced, f64)) -> (M
     }
     (j, g)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::distance;
+    use crate::system::phase::Kind;
+    use nalgebra::Vector3;
+
+    /// Two states' distance is relative to 1 and the second's entries, and
+    /// infinite across phases (cargo-mutants: `%` for `/` passed, the
+    /// references' states being of order 1): a body 1e6 along, 1 apart, is
+    /// 1e-6 apart; forces 0.25 apart at 0.25 are 0.2 apart.
+    #[test]
+    fn the_distance_is_relative_and_phases_differ_infinitely() {
+        let a = (Kind::Stick, Vector3::new(1e6 + 1.0, 0.0, 0.5));
+        let b = (Kind::Stick, Vector3::new(1e6, 0.0, 0.25));
+        assert_eq!(distance(&a, &b), 0.25 / 1.25);
+        let far = (Kind::Stick, Vector3::new(1e6 + 1.0, 0.0, 0.25));
+        assert_eq!(distance(&far, &b), 1.0 / (1.0 + 1e6));
+        assert_eq!(distance(&(Kind::Forward, b.1), &b), f64::INFINITY);
+    }
+}
