@@ -138,7 +138,7 @@ fn the_command_line_is_within_its_budget() {
 
 #[test]
 fn the_readmes_are_within_their_budgets() {
-    for (doc, max) in [("README.md", 420), ("src/README.md", 200), ("tests/README.md", 200)] {
+    for (doc, max) in [("README.md", 400), ("src/README.md", 200), ("tests/README.md", 200)] {
         let n = lines(&Path::new(ROOT).join(doc));
         assert!(n <= max, "{doc}: {n} lines, over {max}");
     }
