@@ -65,7 +65,7 @@ def _compute(
     is_vhat = names[0] == "vhat"
     if "system_stiffness" in named:
         by = dict(zip(names, arrays))
-        zero = np.zeros(arrays[0].shape)
+        zero = np.broadcast_to(np.float64(0.0), arrays[0].shape)  # a view: no memory an element
         t, p = (by["tangential_amp"], by["phase"]) if "tangential_amp" in by else (zero, zero)
         x = [arrays[0], by["amp"], t, p, by["system_stiffness"], by["frequency_ratio"], by["damping"]]
         return _fricosc.evaluate_system(core, x, is_vhat, "tangential_amp" in by, springs, tol, reduction, nan)
