@@ -15,9 +15,10 @@
 //! From the stated start (the body at the drive's position with its
 //! velocity, the spring relaxed) the period map is iterated until its state
 //! `(x - 2 pi vhat n, x', f)` and phase repeat after `k` periods (to
-//! `REPEAT`); that orbit is then refined by Newton on `P^k(s) = s` (the
-//! Jacobian by central differences of the exact map), its stability read
-//! from the eigenvalues of that Jacobian (the Floquet multipliers), and `mu`
+//! `NEAR`); that orbit is then refined by Newton on `P^k(s) = s` (the
+//! Jacobian by the variational equation along the exact map, `tangent.rs`),
+//! its stability read from the eigenvalues of that Jacobian (the Floquet
+//! multipliers), and `mu`
 //! is `int f / int B` over its `k` periods. Where nothing repeats within
 //! [`MAX_PERIODS`], the answer is no period: the mean of the last half's
 //! per-period values with its standard error (of batches of 10 periods) and
@@ -36,6 +37,7 @@ mod period;
 mod phase;
 mod report;
 mod springs;
+mod tangent;
 
 pub use critical::critical_vbar;
 pub use curved::{DEFAULT_SPRINGS, MAX_CURVED_PERIODS, MAX_SPRINGS, MIN_SPRINGS};
@@ -46,7 +48,7 @@ pub use report::SystemReport;
 use crate::conditions::Conditions;
 use crate::error::{Error, Result};
 use mean::batch_mean;
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 use orbit::{close, distance, orbit, ROUNDING};
 use period::Phases;
 use phase::{Params, State, INT_F, V, X, Y0};
@@ -190,9 +192,12 @@ fn check_settles(p: &Params, limit: usize) -> Result<()> {
 }
 
 /// How close a return must come for the flat punch's search to hand it to
-/// Newton, which closes it to rounding in a few iterations from there
-/// (curved bodies, without Newton, iterate on to [`REPEAT`]).
-const NEAR: f64 = 1e-6;
+/// Newton, which with the variational Jacobian closes it to rounding in
+/// three or four iterations from there (curved bodies, without Newton,
+/// iterate on to [`REPEAT`]); a return this near that Newton cannot close
+/// costs an attempt ([`NEWTON_ATTEMPTS`]). At 1e-6 a typical point ran 20
+/// periods before Newton where now it runs 10.
+const NEAR: f64 = 1e-3;
 
 /// Longest period of an attractor looked for.
 pub(crate) const MAX_ORBIT: usize = 8;
@@ -237,14 +242,51 @@ fn expand(p: &Params, (kind, s): &Reduced) -> State {
 }
 
 /// `k` periods of the map from `s`: the state after them and `int f` over them.
-fn map_k(ph: &Phases, s: &Reduced, k: usize) -> (Reduced, f64) {
+pub(crate) fn map_k(ph: &Phases, s: &Reduced, k: usize) -> (Reduced, f64) {
+    map_k_events(ph, s, k).0
+}
+
+/// [`map_k`], with the events of its first period and the steps held in it.
+fn map_k_events(ph: &Phases, s: &Reduced, k: usize) -> ((Reduced, f64), Vec<period::SystemEvent>, u64) {
     let (mut kind, mut z) = (s.0, expand(&ph.p, s));
     let mut int_f = 0.0;
+    let (held, mut first) = (ph.held(), None);
     for _ in 0..k {
-        (kind, z, _) = ph.period(kind, z);
+        let events;
+        (kind, z, events) = ph.period(kind, z);
+        int_f += z[INT_F];
+        first.get_or_insert((events, ph.held() - held));
+    }
+    let (events, held) = first.unwrap_or_default();
+    ((reduce(&ph.p, kind, &z), int_f), events, held)
+}
+
+/// The Jacobian of a period map `P^k` at a state and the gradient of `int f` over it.
+pub(crate) type Derivatives = (Matrix3<f64>, Vector3<f64>);
+
+/// [`map_k`] with the derivatives of its state and `int f` by `s`'s
+/// (`None` where the map is not differentiable along the way,
+/// [`tangent::Tangent`]). In the reduced state a stuck spring's `y0` is `x -
+/// f`; a slipping or free one's force is fixed by the drive (its `y0` is `x`).
+pub(crate) fn map_k_tangent(ph: &Phases, s: &Reduced, k: usize) -> ((Reduced, f64), Option<Derivatives>) {
+    let (mut kind, mut z) = (s.0, expand(&ph.p, s));
+    let mut tangent = tangent::Tangent::new();
+    let mut int_f = 0.0;
+    for _ in 0..k {
+        (kind, z) = ph.period_tangent(kind, z, &mut tangent);
         int_f += z[INT_F];
     }
-    (reduce(&ph.p, kind, &z), int_f)
+    let stuck = |k: Kind| if k == Kind::Stick { 1.0 } else { 0.0 };
+    // d(x, x', int f, y0) / d(x, x', f) at the start, d(x, x', f) / d(x, x', int f, y0) at the end.
+    let mut expand_d = nalgebra::Matrix4x3::new(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0);
+    expand_d[(Y0, 2)] = -stuck(s.0);
+    let st = stuck(kind);
+    let reduce_d = nalgebra::Matrix3x4::new(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, st, 0.0, 0.0, -st);
+    let derivatives = tangent.get().map(|m| {
+        let m = m * expand_d;
+        (reduce_d * m, m.row(INT_F).transpose())
+    });
+    ((reduce(&ph.p, kind, &z), int_f), derivatives)
 }
 
 /// The steady state of `shape` at `c` on the system `sys`: the flat punch
@@ -372,7 +414,7 @@ pub fn solve_discretised(shape: &crate::Shape, c: &Conditions, springs: usize) -
 /// (ascending, in `[0, 2 pi)`) over one period from the state `s` at `tau =
 /// 0` ([`attractor`]'s).
 pub(crate) fn sample((ph, s): &(Phases, Reduced), taus: &[f64]) -> Vec<[f64; 3]> {
-    ph.sampled(s.0, expand(&ph.p, s), taus).3
+    ph.sampled(s.0, expand(&ph.p, s), taus, None).3
 }
 
 /// The attractor from the stated start, and (for a body with mass) the
@@ -467,7 +509,7 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
 }
 
 /// The stated start (module docs) as the period map's state.
-fn stated_start(p: &Params) -> Reduced {
+pub(crate) fn stated_start(p: &Params) -> Reduced {
     let start = p.start();
     // In contact at the start where `amp < 1`; at `amp = 1` the bound is 0
     // there: the spring touches as at a regain of contact.
@@ -522,14 +564,14 @@ mod tests {
     use super::{attractor, within_bounds, Conditions, System, SystemReport, MAX_STEPS};
 
     /// The search and Newton keep to their budget: a stiff undamped body
-    /// (7e5 sampling steps a period) runs its 28 periods, then Newton from the
-    /// last state, whose every iteration maps seven periods. The closest
-    /// return (after 8 periods) was refined first, 56 periods an iteration,
-    /// and the whole ran 3.85 budgets (7.7e7 steps, 3.8 s); now no iteration
-    /// starts beyond two budgets and period 1 is tried first. Its orbit
-    /// contracts by 1 - 7.7e-5 a period (the friction's dissipation; an
-    /// undamped flip's 1 - 6.7e-5 is confirmed at 40 digits,
-    /// `data/system-orbits.json`): the answer is that orbit.
+    /// (7e5 sampling steps a period). With a Jacobian by differences the
+    /// closest return (after 8 periods) was refined first, 56 periods an
+    /// iteration, and the whole ran 3.85 budgets (7.7e7 steps, 3.8 s); no
+    /// iteration starts beyond two budgets (`orbit.rs`'s unit test) and
+    /// period 1 is tried first. Its orbit contracts by 1 - 8.3e-7 a period
+    /// (the friction's dissipation, by the variational equation): the answer
+    /// is that orbit, within its estimate of the value a mean of 4,000
+    /// periods gave (0.06163313793972596).
     #[test]
     fn newton_keeps_to_the_step_budget() {
         let c = Conditions::vhat(0.0275 * 1.515, 1.515).unwrap();

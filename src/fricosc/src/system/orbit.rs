@@ -3,7 +3,7 @@
 //! estimate.
 
 use super::period::Phases;
-use super::{expand, map_k, Reduced, SystemReport, MAX_STEPS};
+use super::{map_k, map_k_events, map_k_tangent, Derivatives, Reduced, SystemReport, MAX_STEPS};
 use nalgebra::{Matrix3, Vector3};
 
 /// Whether two states are the same phase and within `tol` (relative to 1 and the state).
@@ -33,10 +33,11 @@ const ROUNDED: f64 = 1e-8;
 /// attractor the iteration tends to).
 pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<(SystemReport, Reduced)> {
     let (mut jac, mut grad) = (Matrix3::identity(), Vector3::zeros());
+    let mut exact = false;
     let mut last = f64::INFINITY;
-    // An iteration maps k periods four times (the residual, three for the
-    // Jacobian); none starts that would end beyond the whole search's budget
-    // of twice its own steps.
+    // An iteration maps k periods once, four times where the Jacobian is
+    // taken by differences; none starts that could end beyond the whole
+    // search's budget of twice its own steps.
     let iteration = 4.0 * k as f64 * ph.steps_per_period();
     if ph.steps_run() as f64 + iteration > NEWTON_BUDGET {
         return None;
@@ -49,8 +50,8 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
         if ph.steps_run() as f64 + iteration > NEWTON_BUDGET {
             break;
         }
-        let base = map_k(ph, &s, k);
-        (jac, grad) = jacobian(ph, &s, k, &base);
+        let base;
+        (base, (jac, grad), exact) = derivatives(ph, &s, k);
         let r = base.0 .1 - s.1;
         let Some(step) = (jac - Matrix3::identity()).lu().solve(&(-r)) else { break };
         s.1 += step;
@@ -65,7 +66,7 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
         }
         last = size;
     }
-    let (end, int_f) = map_k(ph, &s, k);
+    let ((end, int_f), events, held_steps) = map_k_events(ph, &s, k);
     // Not closed even to the most rounding allowed, or not attracting: no
     // orbit (and no more maps; an orbit of period d closing after k = m d
     // has the m-th powers of its multipliers).
@@ -73,7 +74,8 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
         return None;
     }
     let multipliers = multipliers(&jac)?;
-    if multipliers.iter().any(|[re, im]| re.hypot(*im).powf(1.0 / k as f64) >= 1.0 - NEUTRAL) {
+    let neutral = if exact { NEUTRAL_EXACT } else { NEUTRAL };
+    if multipliers.iter().any(|[re, im]| re.hypot(*im).powf(1.0 / k as f64) >= 1.0 - neutral) {
         return None;
     }
     // The same map along other steps: where the map's own rounding (a stiff,
@@ -89,9 +91,6 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
     if let Some(least) = least_period(ph, &s, k, run, closes) {
         return least;
     }
-    let held = ph.held();
-    let events = ph.period(s.0, expand(&ph.p, &s)).2;
-    let held_steps = ph.held() - held;
     let norm = crate::flat::mean_normal(ph.p.amp) * std::f64::consts::TAU * k as f64;
     let mu_ratio = int_f / norm;
     let error_estimate =
@@ -150,12 +149,21 @@ const FLIP: f64 = 1e-3;
 /// An orbit whose multiplier, per period of the drive (the `k`-th root of
 /// `P^k`'s), is within this of the unit circle is neutral, not attracting
 /// (an undamped body ringing at its own frequency while every spring slips:
-/// its state never settles, however close the orbit; rounding and a
-/// Jacobian taken across a grazing event put such multipliers at 1 - 2.5e-7
-/// and 1 - 1.4e-5). An undamped body's orbit at 1 - 6.7e-5 (the 40-digit
-/// Jacobian's: `data/system-orbits.json`) attracts, and the search reaches
-/// it to 1e-6 within 25 periods.
+/// its state never settles, however close the orbit), where the Jacobian is
+/// taken by differences: their error and a Jacobian taken across a grazing
+/// event put such multipliers at 1 - 2.5e-7 and 1 - 1.4e-5. An undamped
+/// body's orbit at 1 - 6.7e-5 (the 40-digit Jacobian's:
+/// `data/system-orbits.json`) attracts, and the search reaches it to 1e-6
+/// within 25 periods.
 const NEUTRAL: f64 = 2e-5;
+
+/// [`NEUTRAL`] where the Jacobian is the variational equation's, exact up
+/// to the rounding of its products (about `sqrt(n) eps` over `n` steps: 1e-13
+/// at a stiff body's 7e5 steps a period). A stiff, light, undamped body's
+/// orbit contracts by 1 - 8.3e-7 a period (central differences of 1e-5 give
+/// 1 - 8.1e-7 and 1 + 8.4e-6, forward ones of 1e-6 gave 1 - 7.7e-5: noise
+/// of the map's rounding): it attracts.
+const NEUTRAL_EXACT: f64 = 1e-9;
 
 /// Most sampling steps a search and its Newton iterations run in all.
 pub(super) const NEWTON_BUDGET: f64 = 2.0 * MAX_STEPS;
@@ -230,12 +238,27 @@ pub(super) fn rounding_of_a_period(ph: &Phases, s: &Reduced) -> f64 {
     2.0 * perturbed(ph, s, 1).iter().map(|(_, f)| (f - own).abs()).fold(0.0, f64::max)
 }
 
+/// `P^k(s)` and `int f` over it, with the Jacobian of `P^k` at `s` and the
+/// gradient of `int f`: by the variational equation along the map
+/// ([`super::tangent`]), or where the map is not differentiable on the way
+/// (a held phase) by differences ([`jacobian`]).
+/// Whether the variational equation gave them is the last.
+fn derivatives(ph: &Phases, s: &Reduced, k: usize) -> ((Reduced, f64), Derivatives, bool) {
+    match map_k_tangent(ph, s, k) {
+        (base, Some(d)) => (base, d, true),
+        (base, None) => {
+            let d = jacobian(ph, s, k, &base);
+            (base, d, false)
+        }
+    }
+}
+
 /// The Jacobian of `P^k` at `s`, and the gradient of `int f` over its `k`
 /// periods, by forward differences from `base = P^k(s)` (steps `1e-6 (1 +
 /// |s_i|)`, above the map's own rounding, 1e-10 of the state on a stiff
 /// body: relative errors about 1e-6, which leave Newton's convergence
 /// superlinear and the estimate's `(I - J)^-1` as good).
-fn jacobian(ph: &Phases, s: &Reduced, k: usize, (p0, f0): &(Reduced, f64)) -> (Matrix3<f64>, Vector3<f64>) {
+pub(super) fn jacobian(ph: &Phases, s: &Reduced, k: usize, (p0, f0): &(Reduced, f64)) -> (Matrix3<f64>, Vector3<f64>) {
     let mut j = Matrix3::zeros();
     let mut g = Vector3::zeros();
     for i in 0..3 {
@@ -251,9 +274,44 @@ fn jacobian(ph: &Phases, s: &Reduced, k: usize, (p0, f0): &(Reduced, f64)) -> (M
 
 #[cfg(test)]
 mod tests {
-    use super::distance;
+    use super::{distance, multipliers, orbit, NEWTON_BUDGET};
+    use crate::system::period::Phases;
+    use crate::system::phase::Params;
+    use crate::system::{map_k, stated_start};
+    use nalgebra::Matrix3;
+
+    /// A Jacobian of zeros (a heavily damped body's, by differences) has the
+    /// multipliers 0, where nalgebra's Schur fails on it; one that is not
+    /// finite has none known.
+    #[test]
+    fn a_zero_jacobian_has_multipliers_zero() {
+        assert_eq!(multipliers(&Matrix3::zeros()), Some(vec![[0.0, 0.0]; 3]));
+        assert_eq!(multipliers(&Matrix3::from_element(f64::NAN)), None);
+        let m = multipliers(&Matrix3::from_diagonal(&nalgebra::Vector3::new(0.5, -0.25, 0.0))).unwrap();
+        let mut re: Vec<f64> = m.iter().map(|l| l[0]).collect();
+        re.sort_by(f64::total_cmp);
+        assert_eq!(re, [-0.25, 0.0, 0.5]);
+    }
     use crate::system::phase::Kind;
     use nalgebra::Vector3;
+
+    /// Newton starts no iteration that could end beyond the budget of the
+    /// whole search ([`NEWTON_BUDGET`]): from the same state, the orbit is
+    /// found with the budget unspent and refused with it spent but for
+    /// three periods (an iteration is counted as four).
+    #[test]
+    fn newton_keeps_to_its_budget() {
+        let p = Params { kappa: 1.0, omega: 0.5, zeta: 0.05, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
+        let mut s = stated_start(&p);
+        let ph = Phases::new(p);
+        for _ in 0..12 {
+            s = map_k(&ph, &s, 1).0;
+        }
+        assert!(orbit(&ph, s, 1, 12).is_some());
+        let spent = Phases::new(p);
+        spent.count((NEWTON_BUDGET - 3.0 * spent.steps_per_period()) as u64);
+        assert!(orbit(&spent, s, 1, 12).is_none());
+    }
 
     /// Two states' distance is relative to 1 and the second's entries, and
     /// infinite across phases (cargo-mutants: `%` for `/` passed, the

@@ -11,6 +11,7 @@
 //! the closed-form zeros of `B`.
 
 use super::phase::{advance, Generator, Kind, Params, State, COS, INT_F, SIN, TAU, V, X, Y0};
+use super::tangent::Tangent;
 use crate::numerics::root::bracketed;
 use nalgebra::SMatrix;
 use std::f64::consts::TAU as TWO_PI;
@@ -47,7 +48,9 @@ pub struct SystemEvent {
 pub(crate) struct Phases {
     pub(crate) p: Params,
     gens: [Generator; 4],
-    steps: [(f64, Generator); 4],
+    /// Each kind's sampling step, and its exponential, made where first used
+    /// (a period rarely meets all four kinds).
+    steps: [(f64, std::cell::OnceCell<Generator>); 4],
     /// Each kind's event functions (made once: they are checked every step).
     events: [Vec<Sloped<Kind>>; 4],
     /// Whether a step ran out of events ([`MAX_EVENTS_IN_A_STEP`]).
@@ -85,8 +88,7 @@ impl Phases {
         let gens = kinds.map(|k| p.generator(k));
         let steps = kinds.map(|k| {
             let a = gens[index(k)];
-            let h = scale * super::springs::step_within(&a, DRIVE_STEP);
-            (h, (a * h).exp())
+            (scale * super::springs::step_within(&a, DRIVE_STEP), std::cell::OnceCell::new())
         });
         let events = kinds.map(|k| with_slopes(&gens[index(k)], p.events(k)));
         let (chattered, steps_run, held) =
@@ -127,8 +129,15 @@ impl Phases {
     /// drive (`tau` 0, positions less `2 pi vhat`; `int f` over the period
     /// kept), and the events.
     pub(crate) fn period(&self, kind: Kind, z: State) -> (Kind, State, Vec<SystemEvent>) {
-        let (kind, z, events, _) = self.sampled(kind, z, &[]);
+        let (kind, z, events, _) = self.sampled(kind, z, &[], None);
         (kind, z, events)
+    }
+
+    /// [`Phases::period`]'s kind and state, with the derivative of the state
+    /// at its end by that at its start accumulated in `tangent`.
+    pub(crate) fn period_tangent(&self, kind: Kind, z: State, tangent: &mut Tangent) -> (Kind, State) {
+        let (kind, z, _, _) = self.sampled(kind, z, &[], Some(tangent));
+        (kind, z)
     }
 
     /// [`Phases::period`], and the contact force, the body's position and
@@ -138,6 +147,7 @@ impl Phases {
         mut kind: Kind,
         mut z: State,
         samples: &[f64],
+        mut tangent: Option<&mut Tangent>,
     ) -> (Kind, State, Vec<SystemEvent>, Vec<[f64; 3]>) {
         let mut forces = Vec::with_capacity(samples.len());
         let contact = (self.p.amp > 1.0).then(|| {
@@ -165,22 +175,16 @@ impl Phases {
         while tau < TWO_PI {
             self.count(1);
             let (step, e) = &self.steps[index(kind)];
+            let e = e.get_or_init(|| (self.gens[index(kind)] * *step).exp());
             let rest = TWO_PI - tau;
-            let mut h = step.min(rest);
-            let mut stop = None;
-            if let Some((gain, loss)) = contact {
-                for (when, what) in [(gain, true), (loss, false)] {
-                    if tau < when && when <= tau + h {
-                        (h, stop) = (when - tau, Some(what));
-                    }
-                }
-            }
+            let (h, stop) = to_contact(contact, tau, step.min(rest));
             let a = &self.gens[index(kind)];
             let end = if h == *step { e * z } else { advance(a, &z, h) };
             let budget = in_step < MAX_EVENTS_IN_A_STEP;
             self.chattered.set(self.chattered.get() || !budget);
             if flips >= MAX_FLIPS {
                 self.held.set(self.held.get() + 1);
+                tangent.as_deref_mut().map(Tangent::lose);
             }
             let event = if flips < MAX_FLIPS && budget { self.event_in(kind, &z, h, &end) } else { None };
             let reach = tau + event.map_or(h, |e| e.0);
@@ -192,6 +196,9 @@ impl Phases {
                 in_step += 1;
                 flips = if d == 0.0 { flips + 1 } else { 0 };
                 z = advance(a, &z, d);
+                if let Some(t) = tangent.as_deref_mut() {
+                    t.step(a, d, None, next == Kind::Stick);
+                }
                 int_f.add(std::mem::take(&mut z[INT_F]));
                 clock.add(d);
                 (tau, z[TAU]) = (clock.sum, clock.sum);
@@ -204,6 +211,9 @@ impl Phases {
             }
             in_step = 0;
             flips = 0;
+            if let Some(t) = tangent.as_deref_mut() {
+                t.step(a, h, (h == *step).then_some(e), stop == Some(true));
+            }
             clock.add(h);
             (z, tau) = (end, if h == rest { TWO_PI } else { clock.sum });
             z[TAU] = tau;
@@ -228,6 +238,20 @@ impl Phases {
         (z[TAU], z[COS], z[SIN]) = (0.0, 1.0, 0.0);
         (kind, z, events, forces)
     }
+}
+
+/// A step of length `h` from `tau` cut short where contact is gained or lost
+/// (`contact`: their times), and which of the two (`true`: gained).
+fn to_contact(contact: Option<(f64, f64)>, tau: f64, mut h: f64) -> (f64, Option<bool>) {
+    let mut stop = None;
+    if let Some((gain, loss)) = contact {
+        for (when, what) in [(gain, true), (loss, false)] {
+            if tau < when && when <= tau + h {
+                (h, stop) = (when - tau, Some(what));
+            }
+        }
+    }
+    (h, stop)
 }
 
 /// An event function: the row `w` (the function is `w z`, positive inside
@@ -306,7 +330,8 @@ pub(crate) struct Taylor {
 impl Taylor {
     pub(crate) fn new(a: &Generator, z: &State, h: f64) -> Taylor {
         let scale = 1.0 + z.amax();
-        let mut terms = vec![*z];
+        let mut terms = Vec::with_capacity(32);
+        terms.push(*z);
         let mut t = *z;
         let mut hk = 1.0;
         for k in 1..=MAX_TERMS {

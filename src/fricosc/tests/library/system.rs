@@ -103,14 +103,15 @@ fn a_light_body_is_the_massless_one() {
     assert!((80.0..120.0).contains(&(d1 / d2)), "{d1:e} {d2:e}");
 }
 
-/// Near resonance with little damping the transient beats for hundreds of
-/// periods; the orbit found is reported with its least period (a period-1
-/// orbit also closes after 7 periods).
+/// Near resonance with little damping the transient beats for about a
+/// hundred periods (98 run before Newton's start); the orbit found is
+/// reported with its least period (a period-1 orbit also closes after 7
+/// periods).
 #[test]
 fn the_least_period_is_reported() {
     let r = flat(&Conditions::vhat(0.3, 0.5).unwrap(), &System::new(1.0, 1.41, 0.01).unwrap()).unwrap();
     assert_eq!(r.period, Some(1));
-    assert!(r.periods_run > 100, "{}", r.periods_run);
+    assert!(r.periods_run > 49, "{}", r.periods_run);
 }
 
 #[test]
@@ -301,12 +302,16 @@ fn every_point_of_a_grid_answers() {
 /// 2: the state Newton leaves off a flip's orbit closes after two periods,
 /// not after one. The other orbit is neutral (every spring slips forward
 /// while the undamped body rings at two thirds of the drive's frequency:
-/// multipliers 1 and 1, `mu` 1 exactly): one of a family, so the solver,
-/// reaching the family's edge from outside, answers a neighbour of period 3
-/// (a short stick: `mu` 1 - 2.3e-9, within its estimate 7e-9 of the
-/// reference's); only attracting orbits are held to the regression bar and
+/// multipliers 1 and 1, `mu` 1 exactly): one of a family, which never
+/// attracts. The solver's Newton closes an orbit of it whose multipliers are
+/// 1 + 1.6e-15 (the variational equation's), refuses it as neutral, and
+/// answers a mean without period: `mu` 1 - 8.6e-8 within its estimate
+/// 1.7e-7 of the reference's. (With a Jacobian by differences it answered
+/// the family's edge as period 3, its multipliers' noise read as
+/// attracting.) Only attracting orbits are held to the regression bar and
 /// to ten times. Observed: the flip's error 3.3e-16; its multipliers'
-/// moduli within 9e-7 (forward differences of 1e-6).
+/// moduli (the variational equation's) within 3.3e-13 of the reference's 12
+/// digits (forward differences of 1e-6 were within 9e-7).
 #[test]
 fn orbits_and_their_least_periods_at_forty_digits() {
     for c in data_cases("system-orbits.json") {
@@ -315,15 +320,17 @@ fn orbits_and_their_least_periods_at_forty_digits() {
         let r = flat(&Conditions::vhat(f("vhat"), f("amp")).unwrap(), &sys).unwrap();
         let err = exact_error(r.mu_ratio, c["mu_ratio"].as_str().unwrap());
         assert!(!exceeds(err, r.error_estimate), "{c}: {err:e} beyond its estimate {:e}", r.error_estimate);
-        assert_eq!(r.period, Some(f("period") as usize), "{c}: {r:?}");
         let want: Vec<f64> =
             c["multiplier_moduli"].as_array().unwrap().iter().map(|m| m.as_str().unwrap().parse().unwrap()).collect();
-        if want[0] < 1.0 {
+        if want[0] >= 1.0 {
+            assert!(r.period.is_none() && r.error_estimate < 1e-6, "{c}: {r:?}");
+        } else {
+            assert_eq!(r.period, Some(f("period") as usize), "{c}: {r:?}");
             assert!(!exceeds(err, REGRESSION), "{c}: {} off by {err:e}", r.mu_ratio);
             assert!(r.error_estimate <= SHARP * err.max(FLOOR), "{c}: estimate {:e} for {err:e}", r.error_estimate);
             let mut got: Vec<f64> = r.multipliers.as_ref().unwrap().iter().map(|[re, im]| re.hypot(*im)).collect();
             got.sort_by(|a, b| b.total_cmp(a));
-            assert!(got.iter().zip(&want).all(|(g, w)| (g - w).abs() <= 1e-5), "{c}: {got:?}");
+            assert!(got.iter().zip(&want).all(|(g, w)| (g - w).abs() <= 4e-12), "{c}: {got:?}");
         }
     }
 }
@@ -336,7 +343,9 @@ fn orbits_and_their_least_periods_at_forty_digits() {
 /// `int f`, summed in the state over 1,300 sampling steps, came out 2.4e-14
 /// beyond `int B` (8,500 steps, a third body's: 7e-14), the increments
 /// rounded alike; the mean's estimate was its scatter alone (9.4e-17). Now
-/// the first is an orbit with multipliers 0, `int f` is summed compensated,
+/// the first is an orbit with multipliers of modulus 1e-58 (the variational
+/// equation's; nalgebra's Schur of a Jacobian by differences, all zeros, is
+/// `orbit.rs`'s unit test), `int f` is summed compensated,
 /// and a mean's estimate counts the rounding of a period (its map along
 /// other steps). Observed: 1 exactly, with estimates 4.7e-14, 6.9e-14 and
 /// 5.7e-15.
@@ -344,7 +353,8 @@ fn orbits_and_their_least_periods_at_forty_digits() {
 fn a_period_rounded_over_many_steps_is_within_its_estimate() {
     let c = Conditions::vhat(1.942_624_698_340_944_8, 1.135_618_038_808_694_5).unwrap();
     let r = flat(&c, &System::new(20.355_387_452_973_74, 0.212_085_412_935_104_6, 1.0).unwrap()).unwrap();
-    assert_eq!((r.period, r.multipliers.as_deref()), (Some(1), Some(&[[0.0, 0.0]; 3][..])), "{r:?}");
+    assert_eq!(r.period, Some(1), "{r:?}");
+    assert!(r.multipliers.as_ref().unwrap().iter().all(|[re, im]| re.hypot(*im) < 1e-50), "{r:?}");
     assert!((r.mu_ratio - 1.0).abs() <= r.error_estimate && r.error_estimate < 1e-12, "{r:?}");
     let c = at(3.035_484_702_978_216_4, 2.162_399_648_129_899, 1.450_650_726_513_138_8, 0.0);
     let r = flat(&c, &System::new(17.027_763_231_097_25, 0.214_438_864_140_081_7, 0.0).unwrap()).unwrap();
