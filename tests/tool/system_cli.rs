@@ -147,7 +147,6 @@ fn validate_compares_a_table_on_a_system() {
     let out = run(&(above.join("\n") + "\n"), &["--format", "json"]);
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["findings"][0]["kind"], "above_one", "{v}");
-    refused(&[&args[..], &["--history", "--vbar", "0.3", "--amp", "0.5"]].concat(), Some(&stepped), "not --history");
 }
 
 /// `validate` on a system in the stiff layout: per amplitude, each row's
@@ -314,4 +313,31 @@ fn the_summary_keys_rows_as_the_file_does() {
         let text = stdout(&args, Some(t));
         assert!(text.contains(worst) && !text.contains("(vbar "), "{text}");
     }
+}
+
+/// `validate --history` on a system: a massless body's history is the stiff
+/// one at the drive scaled by `kappa/(1 + kappa)` (springs in series: 0.3 on
+/// a system of stiffness 1 is 0.15 stiff); an attractor without period 1 is
+/// refused by name, as are body columns without a body with mass and a lag
+/// without its velocity. (A stepper's history against the attractor, with
+/// its body: `src/python/tests/test_system_bugs.py`.)
+#[test]
+fn validate_compares_a_history_on_a_system() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("h.csv");
+    let file = path.to_str().unwrap();
+    let stiff = stdout(&["history", "--vhat", "0.15", "--amp", "1.5", "--samples", "500", "--format", "csv"], None);
+    std::fs::write(&path, stiff.lines().skip(1).map(|l| format!("{l}\n")).collect::<String>()).unwrap();
+    let args = ["validate", "--history", file, "--vhat", "0.3", "--amp", "1.5", "--format", "json"];
+    let out: serde_json::Value =
+        serde_json::from_str(&stdout(&[&args[..], &["--system-stiffness", "1"]].concat(), None)).unwrap();
+    assert!(out["max_abs_error"].as_f64().unwrap() < 1e-15 && out["findings"] == serde_json::json!([]), "{out}");
+    let undamped = ["--system-stiffness", "1", "--frequency-ratio", "1.5", "--damping", "0"];
+    let no_period = ["validate", "--history", file, "--vhat", "0.3", "--amp", "1.2"];
+    refused(&[&no_period[..], &undamped[..]].concat(), None, "no period");
+    let rows: String = (0..=14).map(|k| format!("{},0,0,0\n", 0.5 * k as f64)).collect();
+    std::fs::write(&path, format!("tau,tangential,body_lag,body_velocity\n{rows}")).unwrap();
+    refused(&args, None, "body columns");
+    std::fs::write(&path, "tau,tangential,body_lag\n0,0,0\n7,0,0\n").unwrap();
+    refused(&args, None, "together");
 }

@@ -17,15 +17,19 @@ pub struct HistoryColumns {
     pub tangential: Vec<f64>,
     /// Normal force, units `F0`, if given.
     pub normal: Option<Vec<f64>>,
+    /// On a system: the body's lag and velocity (pre-slip lengths), if given.
+    pub body: Option<(Vec<f64>, Vec<f64>)>,
     /// How the file was read.
     pub format: String,
 }
 
-const HISTORY_COLUMNS: [(&str, Kind); 4] =
-    [("tau", Kind::Number), ("t", Kind::Number), ("tangential", Kind::Number), ("normal", Kind::Number)];
+const HISTORY_COLUMNS: [(&str, Kind); 6] =
+    [("tau", NUM), ("t", NUM), ("tangential", NUM), ("normal", NUM), ("body_lag", NUM), ("body_velocity", NUM)];
+const NUM: Kind = Kind::Number;
 
 /// Read a history (any format of [`crate::tables`]: columns `tau` or `t`,
-/// `tangential`, optionally `normal`); forces in the file's units, divided by
+/// `tangential`, optionally `normal`, and on a system `body_lag` with
+/// `body_velocity`, as `fricosc history` writes them); forces in the file's units, divided by
 /// `static_force` (`F0` in them) and `mu0` (the tangential one).
 pub fn read_history(text: &str, source: &str, static_force: f64, mu0: f64) -> Result<HistoryColumns> {
     let err = |reason: String| Error::Parse { context: source.into(), reason };
@@ -44,19 +48,29 @@ pub fn read_history(text: &str, source: &str, static_force: f64, mu0: f64) -> Re
         .take()
         .ok_or_else(|| err(format!("no column 'tangential' (the tangential force); {}", names())))?;
     let mut normal = c.numbers[3].take();
+    let body = match (c.numbers[4].take(), c.numbers[5].take()) {
+        (Some(lag), Some(velocity)) => Some((lag, velocity)),
+        (None, None) => None,
+        _ => return Err(err("'body_lag' and 'body_velocity' are given together or not at all".into())),
+    };
     fricosc::validation::to_static_units(&mut tangential, normal.as_deref_mut(), static_force, mu0)?;
-    Ok(HistoryColumns { time, is_tau, tangential, normal, format: c.format })
+    Ok(HistoryColumns { time, is_tau, tangential, normal, body, format: c.format })
 }
 
 /// Every sample of the last period as CSV: the seed's phase, the exact and the
-/// file's tangential force and their difference, the same for the normal force.
+/// file's tangential force and their difference, the same for the normal force;
+/// on a system with the file's body, its lag and velocity, exact and the file's.
 pub fn history_csv(v: &HistoryValidation) -> Result<String> {
     let n = crate::output::num;
     let opt = |x: Option<f64>| x.map(n).unwrap_or_default();
-    let header = ["index", "tau", "exact", "yours", "error", "normal_exact", "normal_yours", "normal_error"];
-    let mut records = vec![header.map(String::from).to_vec()];
+    let mut header = vec!["index", "tau", "exact", "yours", "error", "normal_exact", "normal_yours", "normal_error"];
+    if v.body.is_some() {
+        header.extend(["lag_exact", "lag_yours", "velocity_exact", "velocity_yours"]);
+    }
+    let mut records = vec![header.into_iter().map(String::from).collect::<Vec<_>>()];
     for s in &v.last_period {
-        records.push(vec![
+        let body = s.body_exact.zip(s.body_yours).map(|(e, y)| [n(e[0]), n(y[0]), n(e[1]), n(y[1])]);
+        let mut row = vec![
             s.index.to_string(),
             n(s.tau),
             n(s.exact),
@@ -65,7 +79,9 @@ pub fn history_csv(v: &HistoryValidation) -> Result<String> {
             n(s.normal_exact),
             opt(s.normal_yours),
             opt(s.normal_error),
-        ]);
+        ];
+        row.extend(body.into_iter().flatten());
+        records.push(row);
     }
     Ok(csv_records(&records))
 }

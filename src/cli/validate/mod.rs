@@ -192,12 +192,6 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
     let system = a.system.system(a.springs)?;
     let check =
         Check::default().with_at_rest(at_rest).with_tolerance(tolerance).with_system(system).with_max_error(max_error);
-    if system.is_some() && h.on {
-        return Err(Error::Parse {
-            context: "--system-stiffness".into(),
-            reason: "validate compares tables on a system (not --history)".into(),
-        });
-    }
     if a.series {
         if h.on {
             return run_history_series(&a, h, mu0, tolerance, &format);
@@ -383,7 +377,8 @@ fn history_of(
     if let Some((_, phase)) = tangential {
         crate::cmd::warn_degrees(&[phase]);
     }
-    let conditions = crate::cmd::conditions(velocity, h.amp.unwrap_or(0.0), tangential)?;
+    let mut conditions = crate::cmd::conditions(velocity, h.amp.unwrap_or(0.0), tangential)?;
+    conditions = a.system.system(a.springs)?.map_or(conditions, |s| conditions.with_system(s));
     let (text, source) = read_input(Some(file.to_string()))?;
     let c = read_history(&text, &source, h.static_force.unwrap_or(1.0), mu0.unwrap_or(1.0))?;
     drop(text);
@@ -394,7 +389,8 @@ fn history_of(
             reason: "--omega is given, but the time column is the phase tau".into(),
         });
     }
-    let data = HistoryData { time, tangential: &c.tangential, normal: c.normal.as_deref() };
+    let body = c.body.as_ref().map(|(l, v)| (&l[..], &v[..]));
+    let data = HistoryData { time, tangential: &c.tangential, normal: c.normal.as_deref(), body };
     let v = fricosc::validation::compare_history(&shape, &conditions, &data, tolerance).map_err(|e| match e {
         fricosc::Error::Parse { context, reason } => Error::Parse { context: format!("{source}: {context}"), reason },
         e => Error::Core(e),

@@ -452,7 +452,7 @@ fn validate_series<'py>(
 /// A force history against the exact one (`fricosc validate --history`'s
 /// report) as a dict.
 #[pyfunction]
-#[pyo3(signature = (shape, time, is_tau, tangential, normal, v, a, vhat, oscillation, omega, tolerance, static_force, mu0))]
+#[pyo3(signature = (shape, time, is_tau, tangential, normal, v, a, vhat, oscillation, omega, tolerance, static_force, mu0, system, body))]
 #[allow(clippy::too_many_arguments)]
 fn validate_history<'py>(
     py: Python<'py>,
@@ -469,16 +469,23 @@ fn validate_history<'py>(
     tolerance: f64,
     static_force: f64,
     mu0: f64,
+    system: Option<(f64, f64, f64)>,
+    body: Option<(PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>)>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let c = history_conditions(v, a, vhat, oscillation).map_err(to_py)?;
+    let mut c = history_conditions(v, a, vhat, oscillation).map_err(to_py)?;
+    if let Some((k, om, z)) = system {
+        c = c.with_system(fricosc::system::System::new(k, om, z).map_err(to_py)?);
+    }
+    let body = body.map(|(l, v)| (l.as_array().to_vec(), v.as_array().to_vec()));
     let t = time.as_array().to_vec();
     let mut f = tangential.as_array().to_vec();
     let mut n: Option<Vec<f64>> = normal.map(|x| x.as_array().to_vec());
     to_static_units(&mut f, n.as_deref_mut(), static_force, mu0).map_err(to_py)?;
     let time = if is_tau { TimeAxis::Phase(&t) } else { TimeAxis::Time { t: &t, omega } };
-    let data = HistoryData { time, tangential: &f, normal: n.as_deref() };
+    let body = body.as_ref().map(|(l, v)| (&l[..], &v[..]));
+    let data = HistoryData { time, tangential: &f, normal: n.as_deref(), body };
     let shape = &shape.inner;
-    let result = py.detach(|| compare_history(shape, &c, &data, tolerance)).map_err(to_py)?;
+    let result = interruptible(py, || compare_history(shape, &c, &data, tolerance))?;
     pythonize::pythonize(py, &result).map_err(serialise_err)
 }
 

@@ -420,12 +420,9 @@ pub(crate) fn sample((ph, s): &(Phases, Reduced), taus: &[f64]) -> Vec<[f64; 3]>
 /// The attractor from the stated start, and (for a body with mass) the
 /// phases and the state at `tau = 0` of its first period.
 pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, Option<(Phases, Reduced)>)> {
-    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
-    let (vhat, amp, kappa) = (c.as_vhat(), c.amp(), sys.stiffness);
+    let amp = c.amp();
     if sys.frequency_ratio == 0.0 {
-        let scale = kappa / (1.0 + kappa);
-        let stiff = Conditions::vhat(vhat * scale, amp)?.with_tangential(t * scale, phase)?.with_tol(c.tol())?;
-        let r = crate::shape::Shape::flat().evaluate(&stiff)?;
+        let r = crate::shape::Shape::flat().evaluate(&massless(c, sys)?)?;
         let report = SystemReport {
             mu_ratio: r.ratio.mu_ratio,
             period: Some(1),
@@ -506,6 +503,14 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
         held_steps: ph.held(),
     };
     Ok((report, Some((ph, s))))
+}
+
+/// A massless body's problem (`Omega = 0`): the stiff one with the drive
+/// scaled by `kappa/(1 + kappa)` (the contact and system springs in series).
+pub(crate) fn massless(c: &Conditions, sys: &System) -> Result<Conditions> {
+    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+    let scale = sys.stiffness / (1.0 + sys.stiffness);
+    Conditions::vhat(c.as_vhat() * scale, c.amp())?.with_tangential(t * scale, phase)?.with_tol(c.tol())
 }
 
 /// The stated start (module docs) as the period map's state.

@@ -84,7 +84,7 @@ pub(crate) const SUSPECT_ERROR: f64 = 1e-2;
 
 /// A mistake in the system's equation: the system it amounts to, or `None`
 /// for one that is not a system.
-type Mistake = (fn(&System) -> Result<Option<System>>, &'static str);
+pub(super) type Mistake = (fn(&System) -> Result<Option<System>>, &'static str);
 
 /// The usual mistakes in `Omega^2 x'' = kappa (X_d - x) - 2 zeta sqrt(kappa)
 /// Omega (x' - X_d') - f`, each as the system a code with it solves: the
@@ -93,7 +93,7 @@ type Mistake = (fn(&System) -> Result<Option<System>>, &'static str);
 /// `Omega^2` squared again (`Omega' = Omega^2`, `zeta' = zeta / Omega`);
 /// `Omega^2` in the dashpot (`zeta' = zeta Omega`); `kappa` inverted; the
 /// system left out (the stiff answer).
-const MISTAKES: [Mistake; 6] = [
+pub(super) const MISTAKES: [Mistake; 6] = [
     (|s| Ok(Some(System::new(s.stiffness(), s.frequency_ratio(), 0.0)?)), "the damping left out (zeta = 0)"),
     (
         |s| {
@@ -135,7 +135,7 @@ const SHORT_RUN_ERROR: f64 = 1e-3;
 /// How a candidate's errors compare with those as read: it explains the
 /// table where its median (or largest) error is at most this share of the
 /// one as read, and the other no larger.
-const EXPLAINS: f64 = 0.25;
+pub(super) const EXPLAINS: f64 = 0.25;
 
 /// The median and the largest of `|errors|`.
 fn spread(errors: &[f64]) -> (f64, f64) {

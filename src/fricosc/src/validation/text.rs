@@ -240,6 +240,16 @@ impl HistoryValidation {
                 100,
             );
         }
+        if let Some(b) = &v.body {
+            let line = format!(
+                "The body (pre-slip lengths): its lag X_d - x errs by {} at most (range {}), its velocity by {} (range {}).",
+                e(b.lag_max_abs_error),
+                e(b.lag_range),
+                e(b.velocity_max_abs_error),
+                e(b.velocity_range)
+            );
+            s += &wrap("", &line, 100);
+        }
         s += &wrap(
             "",
             &match (v.period_drift, v.periodic) {

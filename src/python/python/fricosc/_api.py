@@ -484,6 +484,9 @@ def validate_history(
     static_force: Optional[float] = None,
     mu0: Optional[float] = None,
     tolerance: float = 1e-9,
+    system_stiffness: Optional[float] = None,
+    frequency_ratio: Optional[float] = None,
+    damping: Optional[float] = None,
 ) -> Dict[str, Any]:
     """Compare a force history with the steady state of ``shape`` (exact for the
     flat punch; for curved shapes the normal force exact and the tangential one
@@ -503,7 +506,11 @@ def validate_history(
     in yours with ``static_force`` (``F0`` in them) and ``mu0``. A history
     under a tangential oscillation is compared at ``vhat``, ``amp``,
     ``tangential_amp`` and ``phase``, as ``fricosc validate --history
-    --tangential-amp``.
+    --tangential-amp``. With ``system_stiffness`` (``frequency_ratio``,
+    ``damping``) the history is a body's on a system, compared with its
+    period-1 attractor (any other is refused), and the columns ``body_lag``
+    and ``body_velocity`` (as :func:`history` gives them), where present,
+    with the exact body's.
 
     >>> h = history("flat", 0.3, 1.5, periods=2, samples=2000)
     >>> r = validate_history({"tau": h["tau"], "tangential": h["tangential"]}, 0.3, 1.5)
@@ -524,6 +531,11 @@ def validate_history(
         raise ValueError("the history lacks column 'tangential'")
     time = _column(_floats(history["tau" if "tau" in columns else "t"], "time"), "time")
     normal = _column(_floats(history["normal"], "normal"), "normal") if "normal" in columns else None
+    body = None
+    if "body_lag" in columns or "body_velocity" in columns:
+        if not ("body_lag" in columns and "body_velocity" in columns):
+            raise ValueError("'body_lag' and 'body_velocity' are given together or not at all")
+        body = tuple(_column(_floats(history[k], k), k) for k in ("body_lag", "body_velocity"))
     result: Dict[str, Any] = _fricosc.validate_history(
         _core(shape),
         time,
@@ -538,5 +550,7 @@ def validate_history(
         float(tolerance),
         1.0 if static_force is None else _scalar(static_force, "static_force"),
         1.0 if mu0 is None else _scalar(mu0, "mu0"),
+        _system(system_stiffness, frequency_ratio, damping),
+        body,
     )
     return result

@@ -108,6 +108,8 @@ def validate_history(
     tolerance: float,
     static_force: float,
     mu0: float,
+    system: Optional[Tuple[float, float, float]],
+    body: Optional[Tuple[npt.NDArray[np.float64], ...]],
 ) -> Dict[str, Any]: ...
 def default_tol() -> float: ...
 def fit(

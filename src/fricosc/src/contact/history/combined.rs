@@ -106,7 +106,6 @@ pub(super) fn on_system(
     opts: &HistoryOptions,
 ) -> Result<super::History> {
     use crate::error::Error;
-    use crate::system::Kind;
     // The option named as the user gives it, not the shape.
     if opts.periods != 1 {
         let reason = "a history on a system is one period of its attractor";
@@ -116,7 +115,6 @@ pub(super) fn on_system(
         let reason = "a history on a system is the contact's total force: no chosen springs";
         return Err(Error::Parse { context: "spring-at".into(), reason: reason.into() });
     }
-    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
     let units = format!(
         "{}; on a system: K/kx {}, omega/omega_c {}, zeta {}",
         super::UNITS,
@@ -140,9 +138,7 @@ pub(super) fn on_system(
         return Ok(super::History::new(shape, c, units, vec![], samples));
     }
     if sys.frequency_ratio() == 0.0 {
-        let k = sys.stiffness() / (1.0 + sys.stiffness());
-        let stiff = Conditions::vhat(c.as_vhat() * k, c.amp())?.with_tangential(t * k, phase)?;
-        return super::history(shape, &stiff, opts);
+        return super::history(shape, &crate::system::massless(c, sys)?, opts);
     }
     super::check_history(shape, 0.0, c.amp(), opts)?;
     // The attractor once: its events among the samples, then its forces.
@@ -150,15 +146,7 @@ pub(super) fn on_system(
     let orbit = orbit.ok_or_else(|| Error::Internal { what: "a body with mass has an orbit".into() })?;
     let mut taus: Vec<(f64, Option<EventKind>)> =
         (0..opts.samples).map(|j| (TAU * j as f64 / opts.samples as f64, None)).collect();
-    for e in &report.events {
-        let kind = match e.kind {
-            Kind::Stick => EventKind::Stick,
-            Kind::Forward => EventKind::Slip,
-            Kind::Backward => EventKind::BackwardSlip,
-            Kind::Free => EventKind::LossOfContact,
-        };
-        taus.push((e.tau.rem_euclid(TAU), Some(kind)));
-    }
+    taus.extend(report.events.iter().map(|e| (e.tau.rem_euclid(TAU), Some(system_event(e.kind)))));
     taus.sort_by(|x, y| x.0.total_cmp(&y.0));
     let at: Vec<f64> = taus.iter().map(|x| x.0).collect();
     let forces = crate::system::sample(&orbit, &at);
@@ -173,4 +161,67 @@ pub(super) fn on_system(
         })
         .collect();
     Ok(super::History::new(shape, c, units, vec![], samples))
+}
+
+/// A system's phase that starts at an event as a history's event.
+fn system_event(kind: crate::system::Kind) -> EventKind {
+    use crate::system::Kind;
+    match kind {
+        Kind::Stick => EventKind::Stick,
+        Kind::Forward => EventKind::Slip,
+        Kind::Backward => EventKind::BackwardSlip,
+        Kind::Free => EventKind::LossOfContact,
+    }
+}
+
+/// A body with mass on a system (`Omega > 0`) at the phases `taus` (in `[0,
+/// 2 pi)`, any order): the tangential force (the history's units), the
+/// body's lag `X_d - x` and velocity at each, and the attractor's events
+/// (the flat punch's; units of [`Event`]: `kz du`). One period of the drive
+/// is one of the attractor only where it has period 1: any other is refused.
+///
+/// # Errors
+/// As [`super::history`]; [`crate::Error::InvalidParameter`] (`frequency-ratio`)
+/// where the attractor has another period or none.
+pub(crate) fn system_at(
+    shape: &crate::shape::Shape,
+    c: &Conditions,
+    sys: &crate::system::System,
+    taus: &[f64],
+) -> Result<(Vec<[f64; 3]>, Vec<crate::model::spring::Event>)> {
+    let mut order: Vec<usize> = (0..taus.len()).collect();
+    order.sort_by(|&a, &b| taus[a].total_cmp(&taus[b]));
+    let sorted: Vec<f64> = order.iter().map(|&i| taus[i]).collect();
+    let amp = c.amp();
+    let (report, rows) = if shape.is_flat() {
+        let (report, orbit) = crate::system::attractor(c, sys)?;
+        let orbit = orbit.ok_or_else(|| crate::Error::Internal { what: "a body with mass has an orbit".into() })?;
+        (report, crate::system::sample(&orbit, &sorted))
+    } else {
+        let (report, rows) = crate::system::curved_history(shape, c, sys, &sorted)?;
+        (report, rows.into_iter().map(|[_, f, x, v, _]| [f, x, v]).collect())
+    };
+    if report.period != Some(1) {
+        let what = report.period.map_or("no period".to_string(), |k| format!("period {k}"));
+        let reason = format!(
+            "the attractor here has {what}: a history's last period of the drive is compared with a period-1 \
+             attractor only (validate a table of mu instead)"
+        );
+        return Err(crate::Error::param("frequency-ratio", sys.frequency_ratio(), &reason));
+    }
+    let mut out = vec![[0.0; 3]; taus.len()];
+    for (&i, (&tau, [f, x, v])) in order.iter().zip(sorted.iter().zip(rows)) {
+        out[i] = [f, sys.body(c, tau, x, v).0, v];
+    }
+    let events = report
+        .events
+        .iter()
+        .map(|e| crate::model::spring::Event {
+            kind: system_event(e.kind),
+            tau: e.tau.rem_euclid(TAU),
+            normal: (1.0 / amp - e.tau.cos()).max(0.0),
+            tangential: e.force / amp,
+        })
+        .collect();
+    Ok((out, events))
 }

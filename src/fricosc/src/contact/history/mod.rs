@@ -14,7 +14,7 @@
 
 mod combined;
 
-pub(crate) use combined::event_kind;
+pub(crate) use combined::{event_kind, system_at};
 
 use crate::conditions::Conditions;
 use crate::error::{check_nonneg, Error, Result};

@@ -20,8 +20,10 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 mod exact;
 mod series;
 mod signal;
+mod system;
 
 pub use series::{EventSeries, HistorySeries};
+pub use system::BodyComparison;
 
 use exact::Exact;
 use signal::{drift, origin_offset, period_from_normal, periodic_mean, SNAP_SAMPLES};
@@ -50,6 +52,9 @@ pub struct HistoryData<'a> {
     pub tangential: &'a [f64],
     /// Normal force, units `F0`, if the file has it.
     pub normal: Option<&'a [f64]>,
+    /// On a system: the body's lag `X_d - x` and velocity `dx/dtau` (pre-slip
+    /// lengths), if the file has them.
+    pub body: Option<(&'a [f64], &'a [f64])>,
 }
 
 /// How the seed's phase of each sample was found.
@@ -116,6 +121,10 @@ pub struct HistorySample {
     pub normal_yours: Option<f64>,
     /// `normal_yours - normal_exact`.
     pub normal_error: Option<f64>,
+    /// On a system: the exact body's lag and velocity.
+    pub body_exact: Option<[f64; 2]>,
+    /// The file's, if given.
+    pub body_yours: Option<[f64; 2]>,
 }
 
 /// An event found in a user's history, matched to the exact one of its kind.
@@ -156,6 +165,8 @@ pub struct HistoryValidation {
     pub rms_error: f64,
     /// The normal force against the exact one, if the file gives it.
     pub normal: Option<NormalComparison>,
+    /// On a system, the body's columns against the exact body, if the file gives them.
+    pub body: Option<BodyComparison>,
     /// Largest change of the tangential force from the previous period to the
     /// last at the same phase (linear interpolation), if there are two periods.
     pub period_drift: Option<f64>,
@@ -348,24 +359,11 @@ pub fn compare_history(
     let user_normal: Option<Vec<f64>> = data.normal.map(|x| last.iter().map(|&i| x[i]).collect());
     let time_origin = find_origin(&last_taus, user_normal.as_deref(), found_omega, spacing);
     let offset = time_origin.offset;
-    let exact = Exact::new(shape, c)?;
     let seed_tau = |i: usize| taus[i] + offset;
-    let exact_t: Vec<f64> = crate::numerics::par::map(&last, |&i| exact.tangential(seed_tau(i)));
+    let seed_taus: Vec<f64> = last.iter().map(|&i| seed_tau(i).rem_euclid(TAU)).collect();
+    let (exact, (exact_t, exact_body, exact_events)) = exact_forces(shape, c, data, &seed_taus)?;
     let exact_n: Vec<f64> = last.iter().map(|&i| exact.normal(shape, seed_tau(i))).collect();
-    let mut samples = Vec::with_capacity(last.len());
-    for (k, &i) in last.iter().enumerate() {
-        let yours_n = data.normal.map(|x| x[i]);
-        samples.push(HistorySample {
-            index: i,
-            tau: seed_tau(i).rem_euclid(TAU),
-            exact: exact_t[k],
-            yours: data.tangential[i],
-            error: data.tangential[i] - exact_t[k],
-            normal_exact: exact_n[k],
-            normal_yours: yours_n,
-            normal_error: yours_n.map(|y| y - exact_n[k]),
-        });
-    }
+    let samples = last_samples(data, (&last, &seed_taus), (&exact_t, &exact_n, &exact_body));
     let max_abs = samples.iter().fold(0.0f64, |m, s| m.max(s.error.abs()));
     let normal = user_normal.as_ref().map(|nl| NormalComparison {
         max_abs_error: samples.iter().filter_map(|s| s.normal_error).fold(0.0f64, |m, e| m.max(e.abs())),
@@ -384,7 +382,10 @@ pub fn compare_history(
         (Some(d), Some(p)) if d < p && d > 0.0 => Some(((bar / d).ln() / (d / p).ln()).ceil()),
         _ => None,
     };
-    let exact_events = exact.events(c)?;
+    let body = data.body.is_some().then(|| {
+        let yours: Vec<[f64; 2]> = samples.iter().filter_map(|s| s.body_yours).collect();
+        system::compare_body(&yours, &exact_body)
+    });
     // Out of contact (the bound at 0 or below) a force is the spring's not
     // relaxing, not a missed slip; a normal force below 0 is contact loss not modelled.
     let loose = |i: usize| bound(i) <= bar && data.tangential[i].abs() > bar;
@@ -409,6 +410,7 @@ pub fn compare_history(
         max_abs_error: max_abs,
         rms_error: super::rms(samples.iter().map(|s| s.error)),
         normal,
+        body,
         period_drift,
         previous_drift,
         periodic,
@@ -421,8 +423,63 @@ pub fn compare_history(
         last_period: samples,
     };
     v.findings = history_findings(&v, &above, &contact, tolerance);
-    large_error_findings(&mut v, shape, c, data, &last, &seed_tau, peak);
+    v.findings.extend(v.body.as_ref().and_then(|b| system::body_finding(b, &v.last_period)));
+    large_error_findings(&mut v, shape, c, data, (&last, &seed_taus), peak);
     Ok(v)
+}
+
+/// The samples `last` of the last period (at the seed's phases `taus`) against
+/// the exact tangential force, normal force and body there.
+fn last_samples(
+    data: &HistoryData,
+    (last, taus): (&[usize], &[f64]),
+    (tangential, normal, body): (&[f64], &[f64], &[[f64; 2]]),
+) -> Vec<HistorySample> {
+    let sample = |(k, &i): (usize, &usize)| {
+        let yours_n = data.normal.map(|x| x[i]);
+        HistorySample {
+            index: i,
+            tau: taus[k],
+            exact: tangential[k],
+            yours: data.tangential[i],
+            error: data.tangential[i] - tangential[k],
+            normal_exact: normal[k],
+            normal_yours: yours_n,
+            normal_error: yours_n.map(|y| y - normal[k]),
+            body_exact: body.get(k).copied(),
+            body_yours: data.body.map(|(l, v)| [l[i], v[i]]),
+        }
+    };
+    last.iter().enumerate().map(sample).collect()
+}
+
+/// The exact forces at the seed's phases `taus` of the last period: the
+/// stiff problem's (a massless body's: the stiff one at the drive scaled,
+/// `crate::system::massless`) one by one, a body with mass's attractor once
+/// ([`system::exact`], its body too); with [`Exact`] for the normal force
+/// (and, stiff, the forces under other conventions).
+fn exact_forces(
+    shape: &Shape,
+    c: &crate::Conditions,
+    data: &HistoryData,
+    taus: &[f64],
+) -> Result<(Exact, system::Exact)> {
+    let with_mass = c.system().filter(|s| s.frequency_ratio() > 0.0);
+    if data.body.is_some() && with_mass.is_none() {
+        let reason = "body columns compare a body with mass on a system: give --system-stiffness and \
+                      --frequency-ratio, or leave the columns out";
+        return Err(Error::Parse { context: "body_lag".into(), reason: reason.into() });
+    }
+    let stiff = match c.system() {
+        Some(s) if with_mass.is_none() => crate::system::massless(c, s)?,
+        _ => c.stiff(),
+    };
+    let exact = Exact::new(shape, &stiff)?;
+    let forces = match with_mass {
+        Some(sys) => system::exact(shape, c, sys, taus)?,
+        None => (crate::numerics::par::map(taus, |&t| exact.tangential(t)), vec![], exact.events(&stiff)?),
+    };
+    Ok((exact, forces))
 }
 
 /// Errors of order one in a history: beyond `LARGE_ERROR` of the `peak` and
@@ -434,24 +491,31 @@ fn large_error_findings(
     shape: &Shape,
     c: &crate::Conditions,
     data: &HistoryData,
-    last: &[usize],
-    seed_tau: &dyn Fn(usize) -> f64,
+    (last, seed_taus): (&[usize], &[f64]),
     peak: f64,
 ) {
     let step = last.windows(2).map(|w| (data.tangential[w[1]] - data.tangential[w[0]]).abs()).fold(0.0, f64::max);
     let large = (super::convention::LARGE_ERROR * peak).max(4.0 * step);
     let bad: Vec<usize> =
         v.last_period.iter().filter(|s| s.error.is_nan() || s.error.abs() > large).map(|s| s.index).collect();
-    if !bad.is_empty() {
-        let under = |other: &crate::Conditions| -> Option<f64> {
-            let e = Exact::new(shape, other).ok()?;
-            Some(last.iter().map(|&i| (data.tangential[i] - e.tangential(seed_tau(i))).abs()).fold(0.0, f64::max))
-        };
-        match super::convention::history_finding(c, &bad, v.max_abs_error, &under) {
-            Some(f) => v.findings.push(f),
-            None if v.findings.is_empty() => v.findings.extend(super::convention::large_errors(bad, v.max_abs_error)),
-            None => {}
+    if bad.is_empty() {
+        return;
+    }
+    let yours: Vec<f64> = last.iter().map(|&i| data.tangential[i]).collect();
+    let named = match c.system().filter(|s| s.frequency_ratio() > 0.0) {
+        Some(sys) => system::mistake(shape, (c, sys), seed_taus, (&yours, bad.clone()), v.max_abs_error),
+        None => {
+            let under = |other: &crate::Conditions| -> Option<f64> {
+                let e = Exact::new(shape, other).ok()?;
+                Some(yours.iter().zip(seed_taus).map(|(y, &t)| (y - e.tangential(t)).abs()).fold(0.0, f64::max))
+            };
+            super::convention::history_finding(c, &bad, v.max_abs_error, &under)
         }
+    };
+    match named {
+        Some(f) => v.findings.push(f),
+        None if v.findings.is_empty() => v.findings.extend(super::convention::large_errors(bad, v.max_abs_error)),
+        None => {}
     }
 }
 
