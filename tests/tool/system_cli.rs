@@ -301,7 +301,8 @@ fn a_table_on_a_system_reads_as_given() {
 
 /// A table keyed by `vhat` is reported by `vhat`: the summary's worst row
 /// was "vbar 0.9" for the file's `vhat 0.45` (amp 0.5), on a system as
-/// without one.
+/// without one; the CSV's velocity column is `vhat` as given, the JSON rows
+/// carry it beside the `vbar` compared (0.3 for 0.15 at amp 0.5).
 #[test]
 fn the_summary_keys_rows_as_the_file_does() {
     let t = "vhat,amp,mu_ratio\n0.15,0.5,0.63\n0.3,0.5,0.8\n0.45,0.5,0.9\n";
@@ -312,6 +313,11 @@ fn the_summary_keys_rows_as_the_file_does() {
         let args = [&["validate", "-", "--format", "summary", "--report-only"][..], extra].concat();
         let text = stdout(&args, Some(t));
         assert!(text.contains(worst) && !text.contains("(vbar "), "{text}");
+        let csv = stdout(&[&["validate", "-", "--format", "csv", "--report-only"][..], extra].concat(), Some(t));
+        assert!(csv.starts_with("row,vhat,amp,") && csv.lines().nth(1).unwrap().starts_with("0,0.15,0.5,"), "{csv}");
+        let json = stdout(&[&["validate", "-", "--format", "json", "--report-only"][..], extra].concat(), Some(t));
+        let row = &serde_json::from_str::<serde_json::Value>(&json).unwrap()["rows"][0];
+        assert!(row["vhat"] == 0.15 && row["vbar"] == 0.3, "{row}");
     }
 }
 

@@ -171,11 +171,13 @@ fn the_command_reads_shapes_velocities_and_formats() {
     assert_eq!(doc["rows"][0]["jumping_share"], 1.0);
     let no_mu0 = fricosc_cmd(&["validate", "-"], &csv);
     assert!(String::from_utf8_lossy(&no_mu0.stderr).contains("mu0 is needed"));
-    // CSV output: one line per row plus the header; the summary names findings.
+    // CSV output: one line per row plus the header, the velocity as the file
+    // gives it (vhat); the summary names findings.
     let csv_out = fricosc_cmd(&["validate", "-", "--mu0", "0.4", "--format", "csv"], &csv);
     let text = String::from_utf8(csv_out.stdout).unwrap();
     assert_eq!(text.lines().count(), 2);
-    assert!(text.starts_with("row,vbar,amp,mu_ratio,exact,error,relative_error,regime,jumping_share\n"), "{text}");
+    assert!(text.starts_with("row,vhat,amp,mu_ratio,exact,error,relative_error,regime,jumping_share\n"), "{text}");
+    assert!(text.lines().nth(1).unwrap().starts_with(&format!("0,{:?},", v * a)), "{text}");
     let bad = "vbar,amp,mu_ratio\n0.5,0.5,1.2\n1.1,0.5,1.2\n";
     let summary = fricosc_cmd(&["validate", "-", "--format", "summary"], bad);
     let text = String::from_utf8(summary.stdout).unwrap();

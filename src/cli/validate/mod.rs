@@ -239,7 +239,8 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
         return Ok(outcome(&a, !v.findings.is_empty(), max_error.map_or(0.0, |_| v.summary.max_abs_error)));
     }
     let rows = table.rows(mu0, &source)?;
-    let v = fricosc::validation::compare(&shape, &rows, &check.with_peer(peer))?;
+    let mut v = fricosc::validation::compare(&shape, &rows, &check.with_peer(peer))?;
+    v.key_by(&table);
     let report =
         Report { validation: &v, shape_source, format: table.format(), ignored_columns: table.ignored_columns() };
     let body = match format.as_str() {

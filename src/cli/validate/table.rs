@@ -94,13 +94,15 @@ fn compared_csv(header: &[&str], peer: bool, rows: impl Iterator<Item = (Vec<Str
 /// period (empty: none, a mean) and the exact value's error estimate.
 pub fn rows_csv(v: &Validation) -> Result<String> {
     let n = crate::output::num;
+    // The velocity as the file gives it (`vhat` where its rows have it).
+    let velocity = if v.rows.iter().any(|r| r.vhat.is_some()) { "vhat" } else { "vbar" };
     let mut header =
-        vec!["row", "vbar", "amp", "mu_ratio", "exact", "error", "relative_error", "regime", "jumping_share"];
+        vec!["row", velocity, "amp", "mu_ratio", "exact", "error", "relative_error", "regime", "jumping_share"];
     header.extend(v.system.iter().flat_map(|_| ["period", "exact_error_estimate"]));
     let rows = v.rows.iter().map(|r| {
         let mut cells = vec![
             r.row.to_string(),
-            n(r.vbar),
+            n(r.vhat.unwrap_or(r.vbar)),
             n(r.amp),
             n(r.mu_ratio),
             n(r.exact),

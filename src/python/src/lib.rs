@@ -364,7 +364,8 @@ fn validate<'py>(
         pythonize::pythonize(py, &v)
     } else {
         let rows = table.rows(mu0, "table").map_err(to_py)?;
-        let v = interruptible(py, || compare(shape, &rows, &check))?;
+        let mut v = interruptible(py, || compare(shape, &rows, &check))?;
+        v.key_by(&table);
         pythonize::pythonize(py, &v)
     }
     .map_err(serialise_err)?;

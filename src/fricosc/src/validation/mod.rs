@@ -126,6 +126,9 @@ pub struct Row {
     pub row: usize,
     /// Dimensionless velocity.
     pub vbar: f64,
+    /// The velocity `vhat`, where the table gives it ([`Validation::key_by`]).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub vhat: Option<f64>,
     /// Amplitude `du/u0`.
     pub amp: f64,
     /// The value under test.
@@ -462,6 +465,7 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result
         let e = e?;
         let error = mu_ratio - e.mu;
         out.push(Row {
+            vhat: None,
             row: i,
             vbar,
             amp,

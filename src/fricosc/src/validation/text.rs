@@ -71,6 +71,14 @@ impl ContactRegime {
 }
 
 impl Validation {
+    /// Each row keyed as `table` keys it: its `vhat` where the table gives
+    /// the velocity so (`Row::vhat`; `vbar` stays the one compared).
+    pub fn key_by(&mut self, table: &super::Table) {
+        for r in &mut self.rows {
+            r.vhat = table.velocity_of(r.row).filter(|(name, _)| *name == "vhat").map(|(_, v)| v);
+        }
+    }
+
     /// The report for a person: `table` is the table compared, `shape_source`
     /// says where its shape came from ("named by the table", ...).
     #[must_use]
