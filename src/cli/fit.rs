@@ -42,13 +42,14 @@ pub struct FitArgs {
 const MAX_DRAWN: usize = 4_000;
 
 /// The columns `fit` reads, in order.
-const WANTED: [(&str, Kind); 6] = [
+const WANTED: [(&str, Kind); 7] = [
     ("v0", Kind::Number),
     ("du", Kind::Number),
     ("frequency", Kind::Number),
     ("omega", Kind::Number),
     ("mu", Kind::Number),
     ("sigma", Kind::Number),
+    ("load", Kind::Number),
 ];
 
 /// Prints the fit; [`Outcome::Negative`] (exit 1) where it has a verdict.
@@ -107,7 +108,7 @@ fn measurements(text: &str, source: &str) -> Result<Vec<Measurement>> {
         (Some(_), Some(_)) => return Err(bad("give one of the columns 'frequency' and 'omega', not both".into())),
         (None, None) => return Err(bad("no column 'frequency' (Hz) or 'omega' (rad/s)".into())),
     };
-    let sigma = c.numbers[5].clone();
+    let (sigma, load) = (c.numbers[5].clone(), c.numbers[6].clone());
     let row = |i: usize| Measurement {
         v0: v0[i],
         du: du[i],
@@ -115,6 +116,7 @@ fn measurements(text: &str, source: &str) -> Result<Vec<Measurement>> {
         mu: mu[i],
         sigma: sigma.as_ref().map(|s| s[i]),
         system: None,
+        load: load.as_ref().map(|l| l[i]),
     };
     Ok((0..c.rows).map(row).collect())
 }
@@ -134,7 +136,7 @@ impl serde::Serialize for RowsOut<'_> {
             let (res, p) = (r.residuals[i], r.points[i]);
             serde_json::json!({"v0": m.v0, "du": m.du, "omega": m.omega, "mu": m.mu, "sigma": m.sigma,
                 "model": m.mu - res, "residual": res, "normalised_residual": r.normalised_residuals[i],
-                "vbar": p[0], "amp": p[1]})
+                "vbar": p[0], "amp": p[1], "load": m.load})
         }))
     }
 }
@@ -149,7 +151,7 @@ fn to_json(shape: &str, rows: &[Measurement], r: &FitReport) -> Result<String> {
         "covariance": r.covariance, "correlation": r.correlation,
         "chi2": r.chi2, "dof": r.dof, "reduced_chi2": r.reduced_chi2, "weighted": r.weighted,
         "p_value": r.p_value, "verdicts": r.verdicts, "notes": r.notes, "outliers": r.outliers,
-        "iterations": r.iterations, "converged": r.converged,
+        "iterations": r.iterations, "converged": r.converged, "reference_load": r.reference_load,
     });
     #[derive(serde::Serialize)]
     struct Out<'a> {
@@ -175,7 +177,8 @@ fn summary(shape: &str, source: &str, r: &FitReport) -> String {
     let mut out = format!("{source}: {} rows fitted with the {shape} model\n", r.residuals.len());
     out += &line("mu0", &r.mu0);
     out += &line("kx/kz", &r.stiffness_ratio);
-    out += &line("u0 (m)", &r.u0);
+    let u0 = r.reference_load.map_or("u0 (m)".into(), |l| format!("u0 (m) at {l} N"));
+    out += &line(&u0, &r.u0);
     let kind = if r.weighted { "weighted by sigma" } else { "unweighted: errors scaled by the residuals" };
     let p =
         r.p_value.map(|p| if p >= 0.01 { format!(", p {p:.2}") } else { format!(", p {p:.1e}") }).unwrap_or_default();
@@ -213,23 +216,25 @@ fn rounded(value: f64, error: f64) -> String {
 /// below; one SVG of the two charts.
 fn drawing(shape: &fricosc::Shape, rows: &[Measurement], r: &FitReport) -> Result<String> {
     use crate::chart::{viridis, Axis, Chart, Key, Marker, Rule, Series, Style};
-    let mut groups: Vec<(f64, f64)> = rows.iter().map(|m| (m.du, m.omega)).collect();
-    groups.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    // A curve for each amplitude, frequency and (under load control) load.
+    let mut groups: Vec<(f64, f64, f64)> = rows.iter().map(|m| (m.du, m.omega, m.load.unwrap_or(0.0))).collect();
+    groups.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)).then(a.2.total_cmp(&b.2)));
     groups.dedup();
     let vmax = rows.iter().map(|m| m.v0).fold(0.0, f64::max) * 1.05;
     let colour = |k: usize| viridis(if groups.len() > 1 { k as f64 / (groups.len() - 1) as f64 } else { 0.0 });
     let (mut top, mut bottom, mut ymax, mut rmax) = (vec![], vec![], 0.0f64, 0.0f64);
-    for (k, &(du, omega)) in groups.iter().enumerate() {
+    for (k, &(du, omega, load)) in groups.iter().enumerate() {
+        let load = (load > 0.0).then_some(load);
         let style = Style::line(colour(k));
         let curve = (0..=200)
             .map(|i| {
                 let v0 = vmax * i as f64 / 200.0;
-                Ok((v0, r.predict(shape, (v0, du, omega), rows[0].system)?))
+                Ok((v0, r.predict(shape, (v0, du, omega), rows[0].system, load)?))
             })
             .collect::<Result<Vec<_>>>()?;
         let f = omega / std::f64::consts::TAU;
         let freq = if f >= 1e3 { format!("{} kHz", f / 1e3) } else { format!("{f} Hz") };
-        let label = format!("Δu = {du:e} m, f = {freq}");
+        let label = format!("Δu = {du:e} m, f = {freq}{}", load.map(|l| format!(", {l} N")).unwrap_or_default());
         ymax = curve.iter().fold(ymax, |m, p| m.max(p.1));
         top.push(Series { label: label.clone(), points: curve, style, legend: true });
         // At most about MAX_DRAWN rows drawn, evenly spread, and every outlier.
@@ -238,7 +243,9 @@ fn drawing(shape: &fricosc::Shape, rows: &[Measurement], r: &FitReport) -> Resul
             .iter()
             .zip(&r.residuals)
             .enumerate()
-            .filter(|(i, (m, _))| (m.du, m.omega) == (du, omega) && (i % every == 0 || r.outliers.contains(i)))
+            .filter(|(i, (m, _))| {
+                (m.du, m.omega, m.load) == (du, omega, load) && (i % every == 0 || r.outliers.contains(i))
+            })
             .map(|(_, (m, e))| (m, *e))
             .collect();
         let bars = |centre: &dyn Fn(&Measurement, f64) -> f64| {

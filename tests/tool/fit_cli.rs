@@ -124,7 +124,15 @@ fn fit_on_the_rigs_system() {
         .map(|l| {
             let f: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
             let omega = 2.0 * std::f64::consts::PI * f[2];
-            fricosc::fit::Measurement { v0: f[0], du: f[1], omega, mu: f[3], sigma: None, system: Some(sys) }
+            fricosc::fit::Measurement {
+                v0: f[0],
+                du: f[1],
+                omega,
+                mu: f[3],
+                sigma: None,
+                system: Some(sys),
+                load: None,
+            }
         })
         .collect();
     let r = fricosc::fit::fit(&fricosc::Shape::flat(), &rows, &fricosc::fit::Fixed::default()).unwrap();

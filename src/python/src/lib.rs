@@ -379,7 +379,7 @@ fn validate<'py>(
 /// omega, mu, sigma)` with the `fixed` parameters `(mu0, kx/kz, u0)` held,
 /// on the rig's `system` `(kappa, Omega, zeta)` if any.
 #[pyfunction]
-#[pyo3(signature = (shape, v0, du, omega, mu, sigma, fixed, system=None))]
+#[pyo3(signature = (shape, v0, du, omega, mu, sigma, fixed, system=None, load=None))]
 #[allow(clippy::too_many_arguments)]
 fn fit<'py>(
     py: Python<'py>,
@@ -391,12 +391,15 @@ fn fit<'py>(
     sigma: Option<PyReadonlyArray1<'py, f64>>,
     fixed: (Option<f64>, Option<f64>, Option<f64>),
     system: Option<(f64, f64, f64)>,
+    load: Option<PyReadonlyArray1<'py, f64>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let system = system.map(|(k, om, z)| fricosc::system::System::new(k, om, z)).transpose().map_err(to_py)?;
     let (v0, du, omega, mu) = (v0.as_slice()?, du.as_slice()?, omega.as_slice()?, mu.as_slice()?);
     let sigma = sigma.as_ref().map(|s| s.as_slice()).transpose()?;
+    let load = load.as_ref().map(|s| s.as_slice()).transpose()?;
     let n = v0.len();
-    if [du.len(), omega.len(), mu.len(), sigma.map_or(n, |s| s.len())].iter().any(|&k| k != n) {
+    let optional = [sigma.map_or(n, |s| s.len()), load.map_or(n, |s| s.len())];
+    if [du.len(), omega.len(), mu.len()].iter().chain(&optional).any(|&k| k != n) {
         return Err(InputError::new_err("fit: the columns differ in length"));
     }
     let rows: Vec<fricosc::fit::Measurement> = (0..n)
@@ -407,11 +410,12 @@ fn fit<'py>(
             mu: mu[i],
             sigma: sigma.map(|s| s[i]),
             system,
+            load: load.map(|l| l[i]),
         })
         .collect();
     let fixed = fricosc::fit::Fixed { mu0: fixed.0, stiffness_ratio: fixed.1, u0: fixed.2 };
     let shape = &shape.inner;
-    let r = py.detach(|| fricosc::fit::fit(shape, &rows, &fixed)).map_err(to_py)?;
+    let r = interruptible(py, || fricosc::fit::fit(shape, &rows, &fixed))?;
     pythonize::pythonize(py, &r).map_err(serialise_err)
 }
 

@@ -682,3 +682,10 @@ def test_fit_is_the_command_lines() -> None:
     theirs = json.loads(cli("fit", str(path), "--system-stiffness", "1", "--frequency-ratio", "0.5", "--damping", "0.3",
                             "--format", "json", status=1 if rig.verdicts else 0))
     assert rig.params["mu0"] == theirs["parameters"]["mu0"]["value"] and rig.chi2 == theirs["chi2"]
+    # Load control: a load column (N); u0 at the median load, as the command line's.
+    loaded = ROOT / "data" / "fit-synthetic-load.csv"
+    mine = fricosc.fit(pd.read_csv(loaded))
+    theirs = json.loads(cli("fit", str(loaded), "--format", "json"))
+    assert mine.reference_load == theirs["reference_load"] == 1.0
+    assert all(mine.params[k] == theirs["parameters"][k]["value"] for k in fricosc.FitResult.NAMES)
+    assert abs(mine.params["u0"] / 1e-6 - 1) < 1e-7 and frame.shape[0] == 27

@@ -24,6 +24,7 @@
 //! errors is the scatter's (a note says what that assumes).
 
 mod goodness;
+mod load;
 mod profile;
 
 pub use goodness::OUTLIER;
@@ -49,6 +50,11 @@ pub struct Measurement {
     /// The rig's system the row was measured on (held, not fitted): the model
     /// is then the body's attractor there ([`crate::Conditions::with_system`]).
     pub system: Option<crate::system::System>,
+    /// Under load control (a dead-weight rig), the mean normal force the rig
+    /// holds (N): the row's mean indentation then follows the shape's force
+    /// law from `u0` at the reference load ([`FitReport::reference_load`]).
+    /// On every row or on none; without it every row has the one `u0`.
+    pub load: Option<f64>,
 }
 
 /// Parameters held fixed (the others are fitted).
@@ -127,6 +133,9 @@ pub struct FitReport {
     /// Whether Levenberg-Marquardt reached a minimum (no step improves the
     /// chi-square) within its iterations; with nothing fitted, true.
     pub converged: bool,
+    /// Under load control: the reference load (N, the rows' median), at which
+    /// `u0` is the static indentation.
+    pub reference_load: Option<f64>,
 }
 
 /// Most iterations of Levenberg-Marquardt.
@@ -140,10 +149,21 @@ const MAX_MAGNITUDE: f64 = 1e100;
 const MAX_CONDITION: f64 = 1e8;
 const NAMES: [&str; 3] = ["mu0", "stiffness_ratio", "u0"];
 
-/// `mu` of the model at `p = (mu0, kx/kz, u0)` for each row, with `(vbar, amp)`.
+/// `mu` of the model at `p = (mu0, kx/kz, u0)` for each row, with `(vbar,
+/// amp)`; under load control (loads relative to the reference, [`load`]) each
+/// row's own mean indentation.
 fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f64, [f64; 2])>> {
+    let q = if rows.iter().any(|r| r.load.is_some()) { load::exponent(shape)? } else { 1.0 };
     crate::numerics::par::map(rows, |r| {
-        let (vbar, amp) = (p[1] * r.v0 / (p[0] * r.omega * r.du), r.du / p[2]);
+        let u0 = match r.load {
+            // A load no indentation holds: an infinite residual, never a step taken.
+            Some(l) => match load::indentation(shape, q, p[2], l, r.du)? {
+                Some(u) => u,
+                None => return Ok((f64::INFINITY, [f64::NAN; 2])),
+            },
+            None => p[2],
+        };
+        let (vbar, amp) = (p[1] * r.v0 / (p[0] * r.omega * r.du), r.du / u0);
         let ratio = match r.system {
             // On a system friction may stay reduced beyond vbar = 1.
             Some(sys) => shape.ratio(&Conditions::vbar(vbar, amp)?.with_system(sys))?.mu_ratio,
@@ -158,18 +178,30 @@ fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f
 
 impl FitReport {
     /// The fitted model's `mu` at one row's conditions (`v0` m/s, `du` m,
-    /// `omega` rad/s), on the rig's `system` if any.
+    /// `omega` rad/s), on the rig's `system` if any, at `load` (N) where the
+    /// fit was under load control.
     ///
     /// # Errors
-    /// The solver's, for conditions it refuses (e.g. an amplitude a tabulated shape does not reach).
+    /// The solver's, for conditions it refuses (e.g. an amplitude a tabulated
+    /// shape does not reach); [`Error::InvalidParameter`] for a load given to
+    /// a fit without (or none to one with).
     pub fn predict(
         &self,
         shape: &Shape,
         (v0, du, omega): (f64, f64, f64),
         system: Option<crate::system::System>,
+        load: Option<f64>,
     ) -> Result<f64> {
         let p = Vector3::new(self.mu0.value, self.stiffness_ratio.value, self.u0.value);
-        let row = Measurement { v0, du, omega, mu: 0.0, sigma: None, system };
+        let load = match (load, self.reference_load) {
+            (Some(l), Some(reference)) if l.is_finite() && l > 0.0 => Some(l / reference),
+            (None, None) => None,
+            (l, _) => {
+                let reason = "a load (> 0, N) exactly where the fit was under load control";
+                return Err(Error::param("load", l.unwrap_or(f64::NAN), reason));
+            }
+        };
+        let row = Measurement { v0, du, omega, mu: 0.0, sigma: None, system, load };
         Ok(model(shape, &[row], &p)?[0].0)
     }
 }
@@ -228,9 +260,14 @@ pub fn fit(shape: &Shape, rows: &[Measurement], fixed: &Fixed) -> Result<FitRepo
     if rows.iter().any(|r| r.sigma.is_some()) && rows.iter().any(|r| r.sigma.is_none()) {
         return Err(Error::param("sigma", f64::NAN, "give sigma on every row or on none"));
     }
-    let mut r = fit_checked(shape, rows, &given)?;
-    profile::profile(shape, rows, fixed, &mut r);
-    goodness::judge(shape, rows, fixed, &mut r)?;
+    let (rows, reference) = load::relative(rows)?;
+    if reference.is_some() {
+        load::exponent(shape)?;
+    }
+    let mut r = fit_checked(shape, &rows, &given)?;
+    r.reference_load = reference;
+    profile::profile(shape, &rows, fixed, &mut r);
+    goodness::judge(shape, &rows, fixed, &mut r)?;
     Ok(r)
 }
 
@@ -255,6 +292,9 @@ fn fit_checked(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3]) ->
     let start = start(shape, &few, given, &few_residuals)?;
     let (p, iterations, converged) =
         if free.is_empty() { (start, 0, true) } else { levenberg_marquardt(start, &free, &residuals)? };
+    if rows.iter().any(|r| r.load.is_some()) && !residuals(&p)?.iter().all(|x| x.is_finite()) {
+        return Err(load::unheld());
+    }
     let mut r = report(shape, rows, p, &free, weighted, iterations, &residuals)?;
     r.converged = converged;
     Ok(r)
@@ -423,6 +463,7 @@ fn report(
         outliers: vec![],
         iterations,
         converged: true,
+        reference_load: None,
     })
 }
 

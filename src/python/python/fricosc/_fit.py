@@ -20,7 +20,8 @@ class FitResult:
     per row), ``outliers`` (rows beyond 3.5 standard uncertainties),
     ``verdicts`` (what is wrong: a model that does not fit and its likely
     cause, what the rows cannot determine, no convergence), ``notes``,
-    ``converged`` and ``report`` (the library's report as a dict)."""
+    ``converged``, ``reference_load`` (N, under load control: where ``u0``
+    is the static indentation) and ``report`` (the library's report as a dict)."""
 
     NAMES = ("mu0", "stiffness_ratio", "u0")
 
@@ -39,6 +40,7 @@ class FitResult:
         self.p_value: Optional[float] = report["p_value"]
         self.outliers: List[int] = list(report["outliers"])
         self.converged: bool = bool(report["converged"])
+        self.reference_load: Optional[float] = report["reference_load"]
 
     def __repr__(self) -> str:
         return f"FitResult(params={self.params}, stderr={self.stderr}, reduced_chi2={self.reduced_chi2:.4g})"
@@ -57,7 +59,9 @@ def fit(
 ) -> FitResult:
     """Fit the model to measured friction, as ``fricosc fit`` does: ``table``
     (a dict of arrays or a DataFrame) has the columns ``v0`` (m/s), ``du`` (m),
-    ``frequency`` (Hz) or ``omega`` (rad/s), ``mu`` and optionally ``sigma``;
+    ``frequency`` (Hz) or ``omega`` (rad/s), ``mu`` and optionally ``sigma``
+    and ``load`` (N: load control, ``u0`` then the static indentation at the
+    rows' median load, ``reference_load``, each row's from the shape's force law);
     ``mu0``, ``stiffness_ratio`` (kx/kz) and ``u0`` (m) are fitted unless given;
     ``system_stiffness`` (``frequency_ratio``, ``damping``): the rig's system, held.
 
@@ -74,7 +78,7 @@ def fit(
     for need in ("v0", "du", "mu"):
         if need not in names:
             raise InputError(f"fit: no column '{need}'")
-    known = ("v0", "du", "frequency", "omega", "mu", "sigma")
+    known = ("v0", "du", "frequency", "omega", "mu", "sigma", "load")
     for name in (n for n in names if n not in known):
         like = next((f" (did you mean '{k}'?)" for k in known if k.lower() == name.strip().lower()), "")
         raise InputError(f"fit: unknown column '{name}'{like}: fit reads {', '.join(known)}")
@@ -93,5 +97,6 @@ def fit(
     report: Dict[str, Any] = _fricosc.fit(
         _core(shape), col("v0"), col("du"), np.ascontiguousarray(omega), col("mu"),
         col("sigma") if "sigma" in names else None, fixed, _system(system_stiffness, frequency_ratio, damping),
+        col("load") if "load" in names else None,
     )
     return FitResult(report)

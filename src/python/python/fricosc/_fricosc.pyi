@@ -121,4 +121,5 @@ def fit(
     sigma: Optional[npt.NDArray[np.float64]],
     fixed: Tuple[Optional[float], Optional[float], Optional[float]],
     system: Optional[Tuple[float, float, float]] = None,
+    load: Optional[npt.NDArray[np.float64]] = None,
 ) -> Dict[str, Any]: ...
