@@ -75,7 +75,10 @@ pub fn run(a: FitArgs) -> Result<Outcome> {
         rows.iter_mut().for_each(|r| r.system = Some(sys));
     }
     let fixed = Fixed { mu0: a.mu0, stiffness_ratio: a.stiffness_ratio, u0: a.u0 };
-    let r = fricosc::fit::fit(&shape, &rows, &fixed)?;
+    let bar = std::sync::Arc::new(crate::progress::Bar::new(None, "fit: rows evaluated"));
+    let seen = bar.clone();
+    let r = fricosc::fit::fit_with_progress(&shape, &rows, &fixed, move |n| seen.inc(n as u64))?;
+    drop(bar);
     // The result first: a drawing never holds it back.
     let out = if json { to_json(shape.name(), &rows, &r)? + "\n" } else { summary(shape.name(), &source, &r) };
     emit(&out)?;

@@ -153,6 +153,7 @@ const NAMES: [&str; 3] = ["mu0", "stiffness_ratio", "u0"];
 /// amp)`; under load control (loads relative to the reference, [`load`]) each
 /// row's own mean indentation.
 fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f64, [f64; 2])>> {
+    PROGRESS.with(|f| f.borrow().as_ref().map(|f| f(rows.len())));
     let q = if rows.iter().any(|r| r.load.is_some()) { load::exponent(shape)? } else { 1.0 };
     crate::numerics::par::map(rows, |r| {
         let u0 = match r.load {
@@ -239,6 +240,40 @@ fn check(rows: &[Measurement], free: usize) -> Result<()> {
         return Err(Error::param("rows", rows.len() as f64, &format!("a fit of {free} parameters needs more rows")));
     }
     Ok(())
+}
+
+thread_local! {
+    /// The observer of [`fit_with_progress`] on the thread that fits (every
+    /// evaluation of the model, the refits of the profiles and verdicts
+    /// among them, runs on it).
+    static PROGRESS: std::cell::RefCell<Option<Observer>> = const { std::cell::RefCell::new(None) };
+}
+
+/// [`fit_with_progress`]'s observer of the rows evaluated.
+type Observer = Box<dyn Fn(usize)>;
+
+/// [`fit`], telling `progress` the rows of each evaluation of the model as it
+/// starts (a fit's work is that count; its total is not known beforehand:
+/// Levenberg-Marquardt's iterations, the profiles' and the verdicts' refits).
+///
+/// # Errors
+/// As [`fit`].
+pub fn fit_with_progress(
+    shape: &Shape,
+    rows: &[Measurement],
+    fixed: &Fixed,
+    progress: impl Fn(usize) + 'static,
+) -> Result<FitReport> {
+    /// The observer removed however the fit ends.
+    struct Reset;
+    impl Drop for Reset {
+        fn drop(&mut self) {
+            PROGRESS.with(|f| f.borrow_mut().take());
+        }
+    }
+    PROGRESS.with(|f| *f.borrow_mut() = Some(Box::new(progress)));
+    let _reset = Reset;
+    fit(shape, rows, fixed)
 }
 
 /// Fit `shape`'s model to `rows` with `fixed` parameters held (module docs);

@@ -361,3 +361,21 @@ fn a_hertz_contact_under_load_sinks_as_it_oscillates() {
     some[1].load = None;
     assert!(fit(&Shape::parabolic(), &some, &held).unwrap_err().to_string().contains("every row or none"));
 }
+
+/// A fit's progress is the rows of every evaluation of the model: at least
+/// the start's grid on every row and one pass an iteration; the observer is
+/// gone once the fit ends (a later fit tells it nothing).
+#[test]
+fn a_fits_progress_counts_the_rows_evaluated() {
+    let rows = synthetic();
+    let count = std::rc::Rc::new(std::cell::Cell::new(0usize));
+    let seen = count.clone();
+    let r = fricosc::fit::fit_with_progress(&Shape::flat(), &rows, &Fixed::default(), move |n| {
+        seen.set(seen.get() + n);
+    })
+    .unwrap();
+    let done = count.get();
+    assert!(done >= rows.len() * (21 * 25 + r.iterations) && done.is_multiple_of(rows.len()), "{done} {}", r.iterations);
+    fit(&Shape::flat(), &rows, &Fixed::default()).unwrap();
+    assert_eq!(count.get(), done);
+}
