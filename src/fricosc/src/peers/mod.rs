@@ -2,3 +2,4 @@
 //! the seed's own approximations.
 pub mod seed;
 pub mod stepper;
+mod stepper2d;

@@ -311,18 +311,11 @@ pub(crate) fn evaluate_oscillation(
     periods: usize,
 ) -> Result<SteppingEvaluation> {
     let o = crate::combined::Oscillation::of(c);
-    st.check(shape)?;
     if periods == 0 || periods > 1000 {
         return Err(Error::param("periods", periods as f64, "must be between 1 and 1000"));
     }
-    let c = shape.contact();
-    let count = if c.single_spring() { 1 } else { st.springs.max(1) };
-    let levels: Vec<f64> = if c.single_spring() {
-        vec![1.0]
-    } else {
-        let dz = c.reach(o.amp)? / count as f64;
-        (0..count).map(|i| 1.0 - c.equivalent_profile((i as f64 + 0.5) * dz)).collect()
-    };
+    let levels = levels(shape, o.amp, st)?;
+    let count = levels.len();
     let m = st.steps_per_period;
     let h = TAU / m as f64;
     let x_step = |k: usize| {
@@ -374,6 +367,22 @@ pub(crate) fn evaluate_oscillation(
         period_change: if periods >= 2 { (last - mu(sums[0], sums[1])).abs() } else { f64::NAN },
     })
 }
+
+/// The levels `1 - G(z)` of `st.springs` springs at the midpoints of the
+/// part of `shape` that touches at amplitude `amp` (the flat punch: one, at
+/// 1), the resolution checked first.
+pub(crate) fn levels(shape: &Shape, amp: f64, st: Stepping) -> Result<Vec<f64>> {
+    st.check(shape)?;
+    let c = shape.contact();
+    if c.single_spring() {
+        return Ok(vec![1.0]);
+    }
+    let count = st.springs.max(1);
+    let dz = c.reach(amp)? / count as f64;
+    Ok((0..count).map(|i| 1.0 - c.equivalent_profile((i as f64 + 0.5) * dz)).collect())
+}
+
+pub use super::stepper2d::{rigid_limit, transverse, Transverse, TransverseStepping};
 
 /// `mu_macro/mu0` of `shape` on a system with mass and stiffness
 /// ([`crate::system`]) by time stepping, the independent check of its exact

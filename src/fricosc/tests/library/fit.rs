@@ -375,7 +375,11 @@ fn a_fits_progress_counts_the_rows_evaluated() {
     })
     .unwrap();
     let done = count.get();
-    assert!(done >= rows.len() * (21 * 25 + r.iterations) && done.is_multiple_of(rows.len()), "{done} {}", r.iterations);
+    assert!(
+        done >= rows.len() * (21 * 25 + r.iterations) && done.is_multiple_of(rows.len()),
+        "{done} {}",
+        r.iterations
+    );
     fit(&Shape::flat(), &rows, &Fixed::default()).unwrap();
     assert_eq!(count.get(), done);
 }

@@ -28,3 +28,4 @@ mod stress;
 mod system;
 mod system_curved;
 mod table;
+mod transverse_peer;
