@@ -70,7 +70,7 @@ pub fn run(a: FitArgs) -> Result<Outcome> {
     }
     let shape = crate::input::parse_shape(&a.shape)?;
     let (text, source) = read_input(Some(a.file.clone()))?;
-    let mut rows = measurements(&text, &source)?;
+    let (mut rows, lines) = measurements(&text, &source)?;
     if let Some(sys) = a.system.system(None)? {
         rows.iter_mut().for_each(|r| r.system = Some(sys));
     }
@@ -80,7 +80,7 @@ pub fn run(a: FitArgs) -> Result<Outcome> {
     let r = fricosc::fit::fit_with_progress(&shape, &rows, &fixed, move |n| seen.inc(n as u64))?;
     drop(bar);
     // The result first: a drawing never holds it back.
-    let out = if json { to_json(shape.name(), &rows, &r)? + "\n" } else { summary(shape.name(), &source, &r) };
+    let out = if json { to_json(shape.name(), &rows, &r)? + "\n" } else { summary(shape.name(), &source, &r, &lines) };
     emit(&out)?;
     if let Some(path) = &a.plot {
         crate::cmd::write_drawing("--plot", path, &drawing(&shape, &rows, &r)?)?;
@@ -89,7 +89,8 @@ pub fn run(a: FitArgs) -> Result<Outcome> {
 }
 
 /// The rows of a measurement file (named columns; a missing one named).
-fn measurements(text: &str, source: &str) -> Result<Vec<Measurement>> {
+/// Also each row's line in the file (CSV; empty for JSON).
+fn measurements(text: &str, source: &str) -> Result<(Vec<Measurement>, Vec<u64>)> {
     let c = read_columns(text, source, &WANTED, crate::validate::MAX_ROWS)?;
     let bad = |reason: String| Error::Parse { context: source.into(), reason };
     // A column fit does not read is refused, not ignored (a 'Sigma' would run unweighted).
@@ -121,7 +122,7 @@ fn measurements(text: &str, source: &str) -> Result<Vec<Measurement>> {
         system: None,
         load: load.as_ref().map(|l| l[i]),
     };
-    Ok((0..c.rows).map(row).collect())
+    Ok(((0..c.rows).map(row).collect(), c.lines))
 }
 
 fn parameter(p: &Parameter) -> serde_json::Value {
@@ -168,7 +169,7 @@ fn to_json(shape: &str, rows: &[Measurement], r: &FitReport) -> Result<String> {
 
 /// The report for a person: each value rounded to its standard error's
 /// second significant digit.
-fn summary(shape: &str, source: &str, r: &FitReport) -> String {
+fn summary(shape: &str, source: &str, r: &FitReport, lines: &[u64]) -> String {
     let line = |name: &str, p: &Parameter| match (p.fixed, p.stderr) {
         (true, _) => format!("  {name:<16} {} (fixed)\n", crate::output::num(p.value)),
         (false, Some(se)) => {
@@ -191,6 +192,19 @@ fn summary(shape: &str, source: &str, r: &FitReport) -> String {
     }
     for n in &r.notes {
         out += &format!("note: {n}\n");
+    }
+    // The outliers (rows counted from 0) by their lines in the file.
+    let named: Vec<String> = r
+        .outliers
+        .iter()
+        .take(10)
+        .map(|&i| match lines.get(i) {
+            Some(l) => format!("row {i} (line {l})"),
+            None => format!("row {i}"),
+        })
+        .collect();
+    if !named.is_empty() {
+        out += &format!("outliers beyond {} standard uncertainties: {}\n", fricosc::fit::OUTLIER, named.join(", "));
     }
     out
 }

@@ -48,6 +48,8 @@ pub struct Columns {
     pub labels: Vec<Option<Vec<String>>>,
     /// Rows read.
     pub rows: usize,
+    /// Each row's line in the file, as an editor counts them (CSV; empty for JSON).
+    pub lines: Vec<u64>,
 }
 
 impl Columns {
@@ -58,6 +60,7 @@ impl Columns {
             numbers: vec![None; wanted],
             labels: vec![None; wanted],
             rows: 0,
+            lines: vec![],
         }
     }
 
@@ -161,20 +164,25 @@ fn delimiter_name(d: Option<u8>) -> &'static str {
     }
 }
 
-fn read_csv(text: &str, source: &str, wanted: &[(&str, Kind)], max_rows: usize) -> Result<Columns> {
-    let err = |reason: String| Error::Parse { context: source.into(), reason };
-    // The first line that is neither blank nor a comment, and the last comment before it.
-    let (mut offset, mut last_comment, mut first) = (0usize, None::<&str>, None::<(&str, usize)>);
+/// The first line of `text` that is neither blank nor a comment (trimmed,
+/// with its byte offset), and the last comment before it.
+fn first_line_of(text: &str) -> (Option<&str>, Option<(&str, usize)>) {
+    let (mut offset, mut last_comment) = (0usize, None::<&str>);
     for line in text.split_inclusive('\n') {
         let t = line.trim();
         if t.starts_with('#') {
             last_comment = Some(t.trim_start_matches('#').trim());
         } else if !t.is_empty() {
-            first = Some((t, offset));
-            break;
+            return (last_comment, Some((t, offset)));
         }
         offset += line.len();
     }
+    (last_comment, None)
+}
+
+fn read_csv(text: &str, source: &str, wanted: &[(&str, Kind)], max_rows: usize) -> Result<Columns> {
+    let err = |reason: String| Error::Parse { context: source.into(), reason };
+    let (last_comment, first) = first_line_of(text);
     let (first, first_at) = first.ok_or_else(|| err("the table has no rows (only comments or blank lines)".into()))?;
     let numeric = |line: &str, d: Option<u8>| {
         fields(line, d).is_ok_and(|f| !f.is_empty() && f.iter().all(|x| crate::grid::number(x).is_ok()))
@@ -204,7 +212,10 @@ fn read_csv(text: &str, source: &str, wanted: &[(&str, Kind)], max_rows: usize) 
     cols.names = header.clone();
     let at: Vec<Option<usize>> = wanted.iter().map(|(w, _)| header.iter().position(|h| h == w)).collect();
     let body = &text[data_at.min(text.len())..];
-    let mut each = |i: usize, rec: &[&str]| -> Result<()> {
+    // The line of the body's first character (1-based).
+    let first_line = 1 + text[..data_at.min(text.len())].matches('\n').count() as u64;
+    let mut each = |i: usize, rec: &[&str], line: u64| -> Result<()> {
+        cols.lines.push(line);
         if rec.len() != header.len() {
             return Err(err(format!(
                 "row {i}: {} fields, the header has {} ({}; read as {} delimited)",
@@ -238,9 +249,9 @@ fn read_csv(text: &str, source: &str, wanted: &[(&str, Kind)], max_rows: usize) 
     };
     match delimiter {
         None => {
-            let lines = body.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#'));
-            for (i, line) in lines.enumerate() {
-                each(i, &line.split_whitespace().collect::<Vec<_>>())?;
+            let lines = body.lines().map(str::trim).zip(first_line..);
+            for (i, (line, at)) in lines.filter(|(l, _)| !l.is_empty() && !l.starts_with('#')).enumerate() {
+                each(i, &line.split_whitespace().collect::<Vec<_>>(), at)?;
             }
         }
         Some(d) => {
@@ -253,7 +264,8 @@ fn read_csv(text: &str, source: &str, wanted: &[(&str, Kind)], max_rows: usize) 
                 .from_reader(body.as_bytes());
             for (i, rec) in rd.records().enumerate() {
                 let rec = rec.map_err(|e| err(format!("row {i}: {e}")))?;
-                each(i, &rec.iter().collect::<Vec<_>>())?;
+                let at = first_line + rec.position().map_or(0, |p| p.line() - 1);
+                each(i, &rec.iter().collect::<Vec<_>>(), at)?;
             }
         }
     }

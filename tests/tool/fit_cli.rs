@@ -143,3 +143,22 @@ fn fit_on_the_rigs_system() {
     let err = String::from_utf8(out.stderr).unwrap();
     assert!(out.status.code() == Some(2) && err.contains("invalid frequency-ratio = 0.5"), "{err}");
 }
+
+/// An outlier is named by its line in the file as an editor counts it
+/// (comments, blank lines and the header counted): `data/fit-example.csv`'s
+/// row 5 moved by 0.03 (7.5 sigma), behind a comment and a blank line and
+/// with a blank line among the rows, is line 10.
+#[test]
+fn an_outlier_is_named_by_its_line() {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/fit-example.csv")).unwrap();
+    let mut lines: Vec<String> = text.lines().map(String::from).collect();
+    let mut cells: Vec<String> = lines[6].split(',').map(String::from).collect();
+    cells[3] = format!("{}", cells[3].parse::<f64>().unwrap() + 0.03);
+    lines[6] = cells.join(",");
+    lines.insert(4, String::new());
+    let file = format!("# a comment\n\n{}\n", lines.join("\n"));
+    let out = fricosc(&["fit", "-", "--format", "summary"], Some(&file));
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("outliers beyond 3.5 standard uncertainties: row 5 (line 10)\n"), "{text}");
+}
