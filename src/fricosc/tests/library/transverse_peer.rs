@@ -63,3 +63,18 @@ fn a_force_across_needs_a_broken_symmetry() {
     let (mu, across, change) = run(&Shape::flat(), &Conditions::vhat(0.3, 0.5).unwrap(), (1.2, 0.7), 4096, 1);
     assert!(across < -0.2 && mu > 0.6 && change == 0.0, "{mu} {across:e} {change:e}");
 }
+
+/// Without sliding or tangential oscillation (`vhat = 0`, `T = 0`) mirroring
+/// `x` maps the motion onto itself: no mean force along `x`. From the start
+/// along `x` it decays by a factor each period (1e-39 of `<B>` after 64
+/// periods at du/u0 0.5); a spring that loses contact starts each period
+/// relaxed: 0 exactly (du/u0 1.5). The force across stays (-0.347 and -0.744).
+#[test]
+fn without_sliding_no_mean_force_along_the_sliding_direction() {
+    let st = Stepping { steps_per_period: 4096, springs: 1 };
+    let w = Transverse { amp: 1.2, phase: 0.7 };
+    let r = transverse(&Shape::flat(), &Conditions::vhat(0.0, 0.5).unwrap(), w, st, 64).unwrap();
+    assert!(r.mu_ratio.abs() < 1e-20 && r.transverse_ratio < -0.3, "{r:?}");
+    let r = transverse(&Shape::flat(), &Conditions::vhat(0.0, 1.5).unwrap(), w, st, 2).unwrap();
+    assert!(r.mu_ratio == 0.0 && r.period_change == 0.0 && r.transverse_ratio < -0.7, "{r:?}");
+}
