@@ -360,6 +360,16 @@ fn a_hertz_contact_under_load_sinks_as_it_oscillates() {
     let mut some = rows.clone();
     some[1].load = None;
     assert!(fit(&Shape::parabolic(), &some, &held).unwrap_err().to_string().contains("every row or none"));
+    // A load is a force in N: finite, > 0 (0 and -0 too), at most 1e100 (the cargo-mutants survivors).
+    for bad in [0.0, -0.0, -1.0, f64::NAN, f64::INFINITY, 1.01e100] {
+        let mut one = rows.clone();
+        one[2].load = Some(bad);
+        let e = fit(&Shape::parabolic(), &one, &held).unwrap_err();
+        assert!(e.to_string().contains("row 2: a load must be finite and > 0"), "{bad}: {e}");
+    }
+    let mut big = rows.clone();
+    big.iter_mut().for_each(|m| m.load = Some(1e100));
+    assert!(fit(&Shape::parabolic(), &big, &held).is_ok());
 }
 
 /// A fit's progress is the rows of every evaluation of the model: at least
