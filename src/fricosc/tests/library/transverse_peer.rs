@@ -78,3 +78,25 @@ fn without_sliding_no_mean_force_along_the_sliding_direction() {
     let r = transverse(&Shape::flat(), &Conditions::vhat(0.0, 1.5).unwrap(), w, st, 2).unwrap();
     assert!(r.mu_ratio == 0.0 && r.period_change == 0.0 && r.transverse_ratio < -0.7, "{r:?}");
 }
+
+/// Does static friction survive transverse shaking (amp 0, T 0, `vhat -> 0`)?
+/// While sticking the force follows the body, so its `y` swings by `+-W`
+/// about a centre; slips at the swing's ends centre it at 0, and creeping
+/// along `x` the force settles where the whole swing just fits the disc of
+/// radius 1: `f_x = sqrt(1 - W^2)`. So for `W < 1` friction tends to
+/// `sqrt(1 - W^2)` (0.8 at `W = 0.6`: 0.8208 and 0.8023 at `vhat` 1e-2 and
+/// 1e-3, the excess falling like `vhat`); for `W >= 1` the swing never fits,
+/// the force slides round the circle, and friction vanishes like `vhat`
+/// (`mu/vhat` 3.2627 at `W = 1.5`, the same to 1.1e-5 at 1e-3 and 1e-4).
+#[test]
+fn static_friction_survives_a_transverse_swing_below_the_preslip_length() {
+    let st = Stepping { steps_per_period: 8192, springs: 1 };
+    let mu = |vhat: f64, w: f64| {
+        let c = Conditions::vhat(vhat, 0.0).unwrap();
+        transverse(&Shape::flat(), &c, Transverse { amp: w, phase: 0.3 }, st, 64).unwrap().mu_ratio
+    };
+    let (a, b) = (mu(1e-2, 0.6) - 0.8, mu(1e-3, 0.6) - 0.8);
+    assert!(b > 0.0 && b < 5e-3 && (7.0..12.0).contains(&(a / b)), "{a:e} {b:e}");
+    let (a, b) = (mu(1e-3, 1.5) / 1e-3, mu(1e-4, 1.5) / 1e-4);
+    assert!(a > 3.0 && (a / b - 1.0).abs() < 1e-4, "{a} {b}");
+}
