@@ -3,6 +3,7 @@
 //! it is built; everything downstream trusts it.
 
 use crate::error::{check_nonneg, Error, Result};
+use crate::plane::Transverse;
 use crate::system::System;
 use std::f64::consts::TAU;
 
@@ -45,6 +46,7 @@ pub struct Conditions {
     velocity: Velocity,
     amp: f64,
     tangential: Option<(f64, f64)>,
+    transverse: Option<Transverse>,
     tol: f64,
     system: Option<System>,
 }
@@ -61,6 +63,7 @@ impl Conditions {
             velocity: Velocity::Vbar(vbar + 0.0),
             amp: amp + 0.0,
             tangential: None,
+            transverse: None,
             tol: DEFAULT_TOL,
             system: None,
         })
@@ -80,6 +83,7 @@ impl Conditions {
             velocity: Velocity::Vhat(vhat + 0.0),
             amp: amp + 0.0,
             tangential: None,
+            transverse: None,
             tol: DEFAULT_TOL,
             system: None,
         })
@@ -147,6 +151,32 @@ impl Conditions {
     #[must_use]
     pub fn with_system(self, system: System) -> Conditions {
         Conditions { system: Some(system), ..self }
+    }
+
+    /// These conditions with an oscillation across the sliding direction
+    /// ([`crate::plane`]): [`crate::Shape::evaluate`] and `report` then answer
+    /// in the plane, with the mean force across the sliding direction. `W = 0`
+    /// is the problem without it, answered as before bit for bit.
+    ///
+    /// ```
+    /// use fricosc::plane::Transverse;
+    /// use fricosc::{Conditions, Shape};
+    ///
+    /// let c = Conditions::vhat(0.3, 0.5)?.with_transverse(Transverse::new(1.2, 0.7)?);
+    /// let e = Shape::flat().evaluate(&c)?;
+    /// assert!((e.ratio.mu_ratio - 0.61462234012588).abs() < 1e-13);
+    /// assert!(e.transverse_ratio.is_some_and(|t| t < -0.24));
+    /// # Ok::<(), fricosc::Error>(())
+    /// ```
+    #[must_use]
+    pub fn with_transverse(self, w: Transverse) -> Conditions {
+        Conditions { transverse: (w.amp() > 0.0).then_some(w), ..self }
+    }
+
+    /// The oscillation across the sliding direction, if any (`W > 0`).
+    #[must_use]
+    pub fn transverse(&self) -> Option<Transverse> {
+        self.transverse
     }
 
     /// These conditions without a system (the stiff problem).

@@ -39,6 +39,7 @@
 //!   the built-in contacts; [`report`]: what a report holds;
 //! - [`spring`]: one spring of the model and the stop operator, in closed form;
 //! - [`history`]: force histories over a period;
+//! - [`plane`]: oscillation across the sliding direction, exact (the flat punch);
 //! - [`stepper`]: the seed's time-stepping scheme (the independent check) and
 //!   [`seed`]: the seed's approximate formulas;
 //! - [`validation`]: another code's results against the exact ones;
@@ -65,6 +66,7 @@ pub mod io;
 mod model;
 mod numerics;
 mod peers;
+pub mod plane;
 pub mod report;
 pub mod scene;
 pub mod system;

@@ -167,7 +167,7 @@ impl Contact for FlatTip {
         crate::error::check_nonneg("vbar", vbar)?;
         crate::error::check_nonneg("amp", amp)?;
         let (ratio, error_estimate) = integrate::mdr::evaluate(self, vbar, amp, tol, "flat-tip contact")?;
-        Ok(Evaluation { ratio, error_estimate, interpolation_error: None })
+        Ok(Evaluation::of(ratio, error_estimate))
     }
 
     /// The edge of the flat, where `G` starts like a square root.

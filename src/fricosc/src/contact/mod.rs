@@ -144,7 +144,7 @@ pub trait Contact: std::fmt::Debug + Send + Sync + std::panic::RefUnwindSafe {
         crate::error::check_nonneg("amp", amp)?;
         self.reach(amp)?;
         let (ratio, error_estimate) = crate::integrate::mdr::evaluate(&AlongZ(self), vbar, amp, tol, &self.name())?;
-        Ok(Evaluation { ratio, error_estimate, interpolation_error: None })
+        Ok(Evaluation::of(ratio, error_estimate))
     }
 
     /// `mu_macro/mu0` alone (checked inputs): [`Contact::evaluate`]'s ratio, by
@@ -295,7 +295,7 @@ impl Contact for FlatPunch {
     }
     fn evaluate(&self, vbar: f64, amp: f64, _tol: f64) -> Result<Evaluation> {
         let ratio = flat::ratio(vbar, amp)?;
-        Ok(Evaluation { ratio, error_estimate: shape::flat_error_estimate(&ratio), interpolation_error: None })
+        Ok(Evaluation::of(ratio, shape::flat_error_estimate(&ratio)))
     }
     fn ratio(&self, vbar: f64, amp: f64, _tol: f64) -> Result<crate::ratio::Ratio> {
         flat::ratio(vbar, amp)
@@ -347,7 +347,7 @@ impl Contact for PowerLaw {
     }
     fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
         let r = mdr::power_law(self.n, vbar, amp, tol)?;
-        Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate, interpolation_error: None })
+        Ok(Evaluation::of(r.ratio, r.error_estimate))
     }
     fn point(&self, vbar: f64, amp: f64, tol: f64) -> Result<Report> {
         Ok(Report::Power(mdr::point(self.n, vbar, amp, tol)?))
@@ -376,11 +376,7 @@ impl Contact for profile::Tabulated {
     }
     fn evaluate(&self, vbar: f64, amp: f64, tol: f64) -> Result<Evaluation> {
         let r = profile::evaluate(self, vbar, amp, tol)?;
-        Ok(Evaluation {
-            ratio: r.ratio,
-            error_estimate: r.error_estimate,
-            interpolation_error: Some(r.interpolation_error),
-        })
+        Ok(Evaluation { interpolation_error: Some(r.interpolation_error), ..Evaluation::of(r.ratio, r.error_estimate) })
     }
     fn equivalent_profile(&self, z: f64) -> f64 {
         profile::equivalent_profile(self, z)

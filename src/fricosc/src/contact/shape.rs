@@ -180,12 +180,19 @@ impl Shape {
     pub fn evaluate(&self, c: &Conditions) -> Result<Evaluation> {
         if let Some(sys) = c.system() {
             let r = crate::system::solve(self, c, sys)?;
-            return Ok(Evaluation { ratio: r.ratio(), error_estimate: r.error_estimate, interpolation_error: None });
+            return Ok(Evaluation::of(r.ratio(), r.error_estimate));
+        }
+        if let Some(w) = c.transverse() {
+            let r = crate::plane::solve(self, c, w)?;
+            return Ok(Evaluation {
+                transverse_ratio: Some(r.transverse_ratio),
+                ..Evaluation::of(r.ratio, r.error_estimate)
+            });
         }
         match c.tangential() {
             Some(_) => {
                 let r = super::combined::evaluate(self, c)?;
-                Ok(Evaluation { ratio: r.ratio, error_estimate: r.error_estimate, interpolation_error: None })
+                Ok(Evaluation::of(r.ratio, r.error_estimate))
             }
             None => self.contact.evaluate(c.as_vbar()?, c.amp(), c.tol()),
         }
@@ -199,6 +206,9 @@ impl Shape {
     pub fn ratio(&self, c: &Conditions) -> Result<Ratio> {
         if let Some(sys) = c.system() {
             return Ok(crate::system::solve(self, c, sys)?.ratio());
+        }
+        if c.transverse().is_some() {
+            return Ok(self.evaluate(c)?.ratio);
         }
         match c.tangential() {
             Some(_) => Ok(super::combined::evaluate(self, c)?.ratio),
@@ -216,6 +226,9 @@ impl Shape {
     pub fn report(&self, c: &Conditions) -> Result<Report> {
         if let Some(sys) = c.system() {
             return Ok(Report::System(crate::system::solve(self, c, sys)?));
+        }
+        if let Some(w) = c.transverse() {
+            return Ok(Report::Plane(crate::plane::solve(self, c, w)?));
         }
         match c.tangential() {
             Some((t, phase)) => Ok(Report::Tangential(crate::report::Tangential {
@@ -266,6 +279,17 @@ pub struct Evaluation {
     /// For tabulated shapes: the estimated error that interpolating the table adds.
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub interpolation_error: Option<f64>,
+    /// Under an oscillation across the sliding direction: `<f_y>/<B>`, the
+    /// mean force across it (the same error estimate).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub transverse_ratio: Option<f64>,
+}
+
+impl Evaluation {
+    /// A ratio with its estimate and nothing else.
+    pub(crate) fn of(ratio: Ratio, error_estimate: f64) -> Evaluation {
+        Evaluation { ratio, error_estimate, interpolation_error: None, transverse_ratio: None }
+    }
 }
 
 /// Everything the solver reports about one point ([`Shape::report`]): the
@@ -286,6 +310,9 @@ pub enum Report {
     Tangential(crate::report::Tangential),
     /// Any shape with the body on a system ([`Conditions::with_system`]): its attractor.
     System(crate::system::SystemReport),
+    /// The flat punch under an oscillation across the sliding direction
+    /// ([`Conditions::with_transverse`]).
+    Plane(crate::plane::PlaneEvaluation),
     /// Any other shape.
     Other {
         /// Dimensionless velocity.
@@ -307,6 +334,7 @@ impl Report {
             Report::Power(p) => p.result.ratio,
             Report::Tangential(t) => t.result.ratio,
             Report::System(r) => r.ratio(),
+            Report::Plane(p) => p.ratio,
             Report::Other { evaluation, .. } => evaluation.ratio,
         }
     }

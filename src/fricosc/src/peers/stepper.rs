@@ -382,7 +382,7 @@ pub(crate) fn levels(shape: &Shape, amp: f64, st: Stepping) -> Result<Vec<f64>> 
     Ok((0..count).map(|i| 1.0 - c.equivalent_profile((i as f64 + 0.5) * dz)).collect())
 }
 
-pub use super::stepper2d::{rigid_limit, transverse, Transverse, TransverseStepping};
+pub use super::stepper2d::{rigid_limit, transverse, TransverseStepping};
 
 /// `mu_macro/mu0` of `shape` on a system with mass and stiffness
 /// ([`crate::system`]) by time stepping, the independent check of its exact

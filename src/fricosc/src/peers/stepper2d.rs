@@ -25,19 +25,10 @@
 
 use super::stepper::Stepping;
 use crate::error::{Error, Result};
+use crate::plane::Transverse;
 use crate::shape::Shape;
 use crate::special::Kahan;
 use std::f64::consts::TAU;
-
-/// The oscillation across the sliding direction: `W = dy/l` and its phase
-/// `psi` (radians) against the normal oscillation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Transverse {
-    /// `W`, the transverse amplitude in pre-slip lengths (`>= 0`).
-    pub amp: f64,
-    /// `psi`, radians.
-    pub phase: f64,
-}
 
 /// The means of the last period of a run in the plane.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -71,10 +62,6 @@ pub fn transverse(
     if c.system().is_some() {
         return Err(Error::param("system-stiffness", 0.0, "the plane's peer steps a stiff system only"));
     }
-    crate::error::check_nonneg("transverse-amp", w.amp)?;
-    if !w.phase.is_finite() {
-        return Err(Error::param("transverse-phase", w.phase, "must be finite"));
-    }
     if periods == 0 || periods > 1000 {
         return Err(Error::param("periods", periods as f64, "must be between 1 and 1000"));
     }
@@ -93,7 +80,7 @@ pub fn transverse(
         let (mut fx, mut fy, mut nb) = (Kahan::default(), Kahan::default(), Kahan::default());
         for k in 1..=m {
             let ct = (h * k as f64).cos();
-            let dx = [o.vhat * h + step(k, o.tangential_amp, o.phase), step(k, w.amp, w.phase)];
+            let dx = [o.vhat * h + step(k, o.tangential_amp, o.phase), step(k, w.amp(), w.phase())];
             for (fi, &ci) in f.iter_mut().zip(&levels) {
                 let b = ci - o.amp * ct;
                 *fi = project([fi[0] + dx[0], fi[1] + dx[1]], b);

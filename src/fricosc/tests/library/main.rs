@@ -18,6 +18,7 @@ mod flat_tip;
 mod history;
 mod mdr;
 mod mdr_independent;
+mod plane;
 mod profile;
 mod properties;
 mod reference;

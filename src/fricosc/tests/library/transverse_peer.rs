@@ -4,12 +4,13 @@
 //! constant (an arithmetic-geometric mean, independent of any stepping),
 //! approached like the pre-slip length over the amplitude; a transverse
 //! force appears only where a symmetry does not forbid it.
-use fricosc::stepper::{rigid_limit, transverse, Stepping, Transverse};
+use fricosc::plane::Transverse;
+use fricosc::stepper::{rigid_limit, transverse, Stepping};
 use fricosc::{Conditions, Shape};
 
 fn run(shape: &Shape, c: &Conditions, w: (f64, f64), steps: usize, springs: usize) -> (f64, f64, f64) {
     let st = Stepping { steps_per_period: steps, springs };
-    let r = transverse(shape, c, Transverse { amp: w.0, phase: w.1 }, st, 16).unwrap();
+    let r = transverse(shape, c, Transverse::new(w.0, w.1).unwrap(), st, 16).unwrap();
     (r.mu_ratio, r.transverse_ratio, r.period_change)
 }
 
@@ -23,7 +24,7 @@ fn along_one_line_it_is_the_one_dimensional_peer() {
         let st = Stepping { steps_per_period: 512, springs };
         let one = fricosc::stepper::evaluate(&shape, &c, st).unwrap().ratio.mu_ratio;
         let (mu, across, _) = run(&shape, &c, (0.0, 0.3), 512, springs);
-        let three = transverse(&shape, &c, Transverse { amp: 0.0, phase: 0.3 }, st, 3).unwrap();
+        let three = transverse(&shape, &c, Transverse::new(0.0, 0.3).unwrap(), st, 3).unwrap();
         assert_eq!((three.mu_ratio, across), (one, 0.0), "{}", shape.name());
         assert!((mu - one).abs() < 1e-12, "{mu} {one}");
     }
@@ -72,7 +73,7 @@ fn a_force_across_needs_a_broken_symmetry() {
 #[test]
 fn without_sliding_no_mean_force_along_the_sliding_direction() {
     let st = Stepping { steps_per_period: 4096, springs: 1 };
-    let w = Transverse { amp: 1.2, phase: 0.7 };
+    let w = Transverse::new(1.2, 0.7).unwrap();
     let r = transverse(&Shape::flat(), &Conditions::vhat(0.0, 0.5).unwrap(), w, st, 64).unwrap();
     assert!(r.mu_ratio.abs() < 1e-20 && r.transverse_ratio < -0.3, "{r:?}");
     let r = transverse(&Shape::flat(), &Conditions::vhat(0.0, 1.5).unwrap(), w, st, 2).unwrap();
@@ -93,7 +94,7 @@ fn static_friction_survives_a_transverse_swing_below_the_preslip_length() {
     let st = Stepping { steps_per_period: 8192, springs: 1 };
     let mu = |vhat: f64, w: f64| {
         let c = Conditions::vhat(vhat, 0.0).unwrap();
-        transverse(&Shape::flat(), &c, Transverse { amp: w, phase: 0.3 }, st, 64).unwrap().mu_ratio
+        transverse(&Shape::flat(), &c, Transverse::new(w, 0.3).unwrap(), st, 64).unwrap().mu_ratio
     };
     let (a, b) = (mu(1e-2, 0.6) - 0.8, mu(1e-3, 0.6) - 0.8);
     assert!(b > 0.0 && b < 5e-3 && (7.0..12.0).contains(&(a / b)), "{a:e} {b:e}");

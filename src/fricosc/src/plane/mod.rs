@@ -1,0 +1,258 @@
+//! Oscillation across the sliding direction, exact (`MODEL-transverse.md`):
+//! each spring's tangential force is a vector bounded by the circle of radius
+//! `B(tau)`, the body moves as `X(tau) = (vhat tau + T sin(tau + phase), W
+//! sin(tau + psi))`.
+//!
+//! The solver walks one period event by event ([`spring`]): a stick is closed
+//! form, a slip the Taylor series of a linear equation for the force's
+//! half-angle (its truncation estimated term by term, [`series`]), every
+//! event the first sign change of a series on its step. The steady state is
+//! the fixed point of the period map, found by Newton with the map's exact
+//! derivative (`d th_end/d th_start = 1/|y_end|^2` along a slip, the identity
+//! along a stick, the projection across the circle at the events); a spring
+//! that leaves contact, or touches it (`amp = 1`), forgets its past, and one
+//! period from contact is its orbit.
+
+mod drive;
+mod layer;
+mod series;
+mod spring;
+
+use crate::error::{check_nonneg, Error, Result};
+use crate::shape::Shape;
+use crate::spring::EventKind;
+use crate::Conditions;
+use drive::{Bound, Drive};
+use spring::{Spring, Start, Walk};
+use std::f64::consts::TAU;
+
+/// Largest transverse amplitude accepted (pre-slip lengths): as for the
+/// oscillation in the sliding direction, the phase's rounding times `W` is
+/// the answer's scale beyond it.
+pub const MAX_TRANSVERSE_AMP: f64 = 1e6;
+/// Largest `|psi|` accepted (radians): beyond it the reduced phase has lost
+/// its digits.
+pub const MAX_PHASE: f64 = 1e6;
+
+/// The oscillation across the sliding direction: `W = dy/l` (pre-slip
+/// lengths) and its phase `psi` against the normal oscillation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Transverse {
+    amp: f64,
+    phase: f64,
+}
+
+impl Transverse {
+    /// `W` finite in `[0, 1e6]`, `psi` finite with `|psi| <= 1e6`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming `transverse-amp` or `transverse-phase`.
+    pub fn new(amp: f64, phase: f64) -> Result<Transverse> {
+        check_nonneg("transverse-amp", amp)?;
+        if amp > MAX_TRANSVERSE_AMP {
+            return Err(Error::param("transverse-amp", amp, "must be <= 1e6 pre-slip lengths"));
+        }
+        if !(phase.is_finite() && phase.abs() <= MAX_PHASE) {
+            return Err(Error::param("transverse-phase", phase, "must be finite with |psi| <= 1e6 radians"));
+        }
+        Ok(Transverse { amp: amp + 0.0, phase: phase.rem_euclid(TAU) })
+    }
+
+    /// `W`.
+    #[must_use]
+    pub fn amp(&self) -> f64 {
+        self.amp
+    }
+
+    /// `psi`, reduced to `[0, 2 pi)`.
+    #[must_use]
+    pub fn phase(&self) -> f64 {
+        self.phase
+    }
+}
+
+/// An event of the flat punch's period in the plane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct PlaneEvent {
+    /// What happens (`slip` is a slip in any direction of the plane).
+    pub kind: EventKind,
+    /// Phase `omega t` in `[0, 2 pi)`.
+    pub tau: f64,
+}
+
+/// `mu_macro/mu0` and the mean force across the sliding direction.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
+pub struct PlaneEvaluation {
+    /// `<f_x>/<B>` (in `[-1, 1]`) and `1 -` it.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub ratio: crate::Ratio,
+    /// `<f_y>/<B>`.
+    pub transverse_ratio: f64,
+    /// Estimated absolute error of either ratio.
+    pub error_estimate: f64,
+    /// The period map's largest multiplier (0 for a spring that forgets its past).
+    pub multiplier: f64,
+    /// The events of one period of the orbit.
+    pub events: Vec<PlaneEvent>,
+    /// Periods walked (relaxation and Newton included).
+    pub periods: usize,
+}
+
+/// The flat punch's answer under the conditions `c` and the transverse
+/// oscillation `w` (module docs).
+///
+/// # Errors
+/// [`Error::InvalidParameter`] for a curved shape or a system (not solved in
+/// the plane yet), [`Error::Internal`] when no attracting orbit is found.
+pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse) -> Result<PlaneEvaluation> {
+    if c.system().is_some() {
+        return Err(Error::param("system-stiffness", 0.0, "a body on a system is not solved in the plane yet"));
+    }
+    if !shape.is_flat() {
+        return Err(Error::param("transverse-amp", w.amp, "is solved exactly for the flat punch only so far"));
+    }
+    let o = crate::combined::Oscillation::of(c);
+    let sp = Spring::new(Drive::sliding(o.vhat, o.tangential_amp, o.phase, w.amp, w.phase), Bound::new(1.0, o.amp));
+    orbit(&sp)
+}
+
+/// Newton's iterations at most.
+const MAX_NEWTON: usize = 60;
+/// Halvings of one Newton step at most.
+const MAX_HALVINGS: usize = 6;
+/// Periods walked from the relaxed start before Newton.
+const RELAX: usize = 6;
+
+fn orbit(sp: &Spring) -> Result<PlaneEvaluation> {
+    let total = sp.bound.period_integral();
+    if sp.bound.amp >= sp.bound.level {
+        let walk = sp.walk(Start::Contact(0.0), TAU)?;
+        return answer(&walk, total, 0.0, 0.0, 1);
+    }
+    let mut f = [0.0; 2];
+    let mut periods = 0;
+    for _ in 0..RELAX {
+        let w = sp.walk(Start::Force(0.0, f), TAU)?;
+        periods += 1;
+        let change = (w.end[0] - f[0]).hypot(w.end[1] - f[1]);
+        if change == 0.0 {
+            return answer(&w, total, multiplier(&w.jacobian), 0.0, periods);
+        }
+        f = w.end;
+        if change < 1e-3 {
+            break;
+        }
+    }
+    let residual = |f: [f64; 2], w: &Walk| (w.end[0] - f[0]).hypot(w.end[1] - f[1]);
+    let mut w = sp.walk(Start::Force(0.0, f), TAU)?;
+    periods += 1;
+    for _ in 0..MAX_NEWTON {
+        let res = residual(f, &w);
+        if res <= 8.0 * f64::EPSILON * (1f64.max(f[0].abs()).max(f[1].abs())) {
+            let m = multiplier(&w.jacobian);
+            if m >= 1.0 {
+                break;
+            }
+            return answer(&w, total, m, res, periods);
+        }
+        let r = [w.end[0] - f[0], w.end[1] - f[1]];
+        if w.stuck {
+            // A period of stick only drifts by X(2 pi) - X(0): go where the drift first slips.
+            f = first_slip(sp, f, r)?;
+            w = sp.walk(Start::Force(0.0, f), TAU)?;
+            periods += 1;
+            continue;
+        }
+        // Newton's step, halved until the residual falls (the map is only
+        // piecewise smooth: a step may cross where its events change); else
+        // one period of the map itself, which contracts.
+        let step = newton_step(&w.jacobian, r).unwrap_or(r);
+        let mut next = None;
+        let mut lambda = 1.0;
+        for _ in 0..MAX_HALVINGS {
+            let g = [f[0] + lambda * step[0], f[1] + lambda * step[1]];
+            let wg = sp.walk(Start::Force(0.0, g), TAU)?;
+            periods += 1;
+            if residual(g, &wg) < res {
+                next = Some((g, wg));
+                break;
+            }
+            lambda *= 0.5;
+        }
+        (f, w) = match next {
+            Some(n) => n,
+            None => {
+                periods += 1;
+                (w.end, sp.walk(Start::Force(0.0, w.end), TAU)?)
+            }
+        };
+    }
+    Err(Error::Internal { what: format!("no attracting periodic orbit in the plane after {periods} periods") })
+}
+
+/// Along a drift `d` of a period that only sticks, the first start `f + s d`
+/// whose period slips (bisection on `s`): Newton's start on the far side of
+/// the many periods a slow drift takes to reach the circle.
+fn first_slip(sp: &Spring, f: [f64; 2], d: [f64; 2]) -> Result<[f64; 2]> {
+    let at = |s: f64| [f[0] + s * d[0], f[1] + s * d[1]];
+    let slips = |s: f64| sp.walk(Start::Force(0.0, at(s)), TAU).map(|w| !w.stuck);
+    let mut hi = 1.0;
+    while !slips(hi)? {
+        hi *= 2.0;
+        if hi > 1e300 {
+            return Err(Error::Internal { what: "a drift in the plane that never slips".into() });
+        }
+    }
+    let mut lo = 0.0;
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if slips(mid)? {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Ok(at(hi))
+}
+
+/// Newton's step `-(J - I)^-1 r` for the residual `r = P(f) - f`.
+fn newton_step(j: &[[f64; 2]; 2], r: [f64; 2]) -> Option<[f64; 2]> {
+    let (a, b, c, d) = (j[0][0] - 1.0, j[0][1], j[1][0], j[1][1] - 1.0);
+    let det = a * d - b * c;
+    (det != 0.0 && det.is_finite()).then(|| [-(d * r[0] - b * r[1]) / det, -(-c * r[0] + a * r[1]) / det])
+}
+
+/// The largest modulus of the eigenvalues of `j`.
+fn multiplier(j: &[[f64; 2]; 2]) -> f64 {
+    let (tr, det) = (j[0][0] + j[1][1], j[0][0] * j[1][1] - j[0][1] * j[1][0]);
+    let disc = 0.25 * tr * tr - det;
+    if disc >= 0.0 {
+        (0.5 * tr).abs() + disc.sqrt()
+    } else {
+        det.abs().sqrt()
+    }
+}
+
+fn answer(w: &Walk, total: f64, multiplier: f64, residual: f64, periods: usize) -> Result<PlaneEvaluation> {
+    let (mu, tr) = (w.force[0] / total, w.force[1] / total);
+    // Each step's sum rounds at about an ulp of the running total, at random.
+    let rounding = f64::EPSILON * ((w.steps as f64).sqrt() + 2.0) * 1f64.max(mu.abs()).max(tr.abs());
+    let error_estimate = (w.truncation + TAU * residual) / total + rounding;
+    if !(tr.is_finite() && tr.abs() <= 1.0 + error_estimate) {
+        return Err(Error::Internal { what: format!("transverse_ratio = {tr:?} in the plane") });
+    }
+    Ok(PlaneEvaluation {
+        ratio: crate::Ratio::signed(mu, 1.0 - mu, error_estimate, "the plane")?,
+        transverse_ratio: tr,
+        error_estimate,
+        multiplier,
+        events: w.events.iter().map(|&(tau, kind)| PlaneEvent { kind, tau: tau.rem_euclid(TAU) }).collect(),
+        periods,
+    })
+}
+
+#[cfg(test)]
+mod tests;

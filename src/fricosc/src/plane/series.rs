@@ -1,0 +1,270 @@
+//! Truncated power series in `t = tau - tau0` (order [`ORDER`]): the
+//! arithmetic of the Taylor integrator of a slip in the plane, and the first
+//! sign change of a series on a step.
+//!
+//! Coefficients are combined by the Cauchy product (each coefficient of a
+//! product or quotient is exact up to the orders kept); functions of `tau` that
+//! enter the model are all built from `cos(tau0 + t)` and `sin(tau0 + t)`,
+//! whose coefficients are `cos(tau0 + k pi/2)/k!` and `sin(tau0 + k pi/2)/k!`.
+//!
+//! A step's truncation is estimated term by term: with the step `h` at most
+//! half the distance to the nearest singularity of the series (the caller
+//! knows it), the coefficients beyond `ORDER` decay at least like `2^-k`, so
+//! `|a_{N-1}| h^(N-1) + |a_N| h^N` bounds the omitted tail within a factor of
+//! about two (Jorba & Zou, Exp. Math. 14, 2005, section 3.2).
+
+use std::ops::{Add, Mul, Sub};
+
+/// The highest order kept: about `-ln(eps)/2 + 6`, where the Jorba-Zou step
+/// (the last two terms at the tolerance) is a fifth of the radius of convergence.
+pub(crate) const ORDER: usize = 24;
+const LEN: usize = ORDER + 1;
+
+/// `1/k!`, `k = 0..=ORDER`.
+fn inverse_factorials() -> [f64; LEN] {
+    let mut r = [1.0; LEN];
+    for k in 1..LEN {
+        r[k] = r[k - 1] / k as f64;
+    }
+    r
+}
+
+/// A power series `sum a_k t^k`, `k = 0..=ORDER`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Series(pub(crate) [f64; LEN]);
+
+impl Series {
+    pub(crate) const ZERO: Series = Series([0.0; LEN]);
+
+    /// The constant `c`.
+    pub(crate) fn constant(c: f64) -> Series {
+        let mut a = [0.0; LEN];
+        a[0] = c;
+        Series(a)
+    }
+
+    /// `(cos(tau0 + t), sin(tau0 + t))`.
+    pub(crate) fn trig(tau0: f64) -> (Series, Series) {
+        let (s, c) = tau0.sin_cos();
+        let cycle_c = [c, -s, -c, s];
+        let cycle_s = [s, c, -s, -c];
+        let inv = inverse_factorials();
+        let (mut cs, mut sn) = ([0.0; LEN], [0.0; LEN]);
+        for k in 0..LEN {
+            cs[k] = cycle_c[k % 4] * inv[k];
+            sn[k] = cycle_s[k % 4] * inv[k];
+        }
+        (Series(cs), Series(sn))
+    }
+
+    /// `1/self`; `self.0[0]` must not be 0.
+    pub(crate) fn recip(&self) -> Series {
+        let a = &self.0;
+        let mut r = [0.0; LEN];
+        r[0] = 1.0 / a[0];
+        for k in 1..LEN {
+            let s: f64 = (1..=k).map(|j| a[j] * r[k - j]).sum();
+            r[k] = -s * r[0];
+        }
+        Series(r)
+    }
+
+    /// `self` without its constant term.
+    pub(crate) fn without_constant(mut self) -> Series {
+        self.0[0] = 0.0;
+        self
+    }
+
+    /// The value at `t` (Horner).
+    pub(crate) fn eval(&self, t: f64) -> f64 {
+        self.0.iter().rev().fold(0.0, |acc, &a| acc * t + a)
+    }
+
+    /// `int_0^t` of the series.
+    pub(crate) fn integral(&self, t: f64) -> f64 {
+        let mut acc = 0.0;
+        for k in (0..LEN).rev() {
+            acc = acc * t + self.0[k] / (k + 1) as f64;
+        }
+        acc * t
+    }
+
+    /// `|a_{N-1}| h^(N-1) + |a_N| h^N`: the truncation estimate of a step `h`.
+    pub(crate) fn tail(&self, h: f64) -> f64 {
+        let n = ORDER as i32;
+        self.0[ORDER - 1].abs() * h.powi(n - 1) + self.0[ORDER].abs() * h.powi(n)
+    }
+
+    /// The largest `h` with each of the last two terms at most `tol / 2`.
+    pub(crate) fn step_for(&self, tol: f64) -> f64 {
+        let n = ORDER as f64;
+        let of = |a: f64, k: f64| if a == 0.0 { f64::INFINITY } else { (0.5 * tol / a.abs()).powf(1.0 / k) };
+        of(self.0[ORDER - 1], n - 1.0).min(of(self.0[ORDER], n))
+    }
+
+    /// The first sign change of the series on `(0, h]`, given that it is
+    /// positive just after 0 (where its first `skip` coefficients vanish
+    /// exactly, the series is taken divided by `t^skip`): a bracket `[a, b]`
+    /// with `self(a) > 0 >= self(b)`, isolated by excluding intervals on which
+    /// the constant term of the shifted series exceeds the sum of the others.
+    /// `None` when it stays positive (a touch of zero without a sign change is
+    /// no event); `Err` when the isolation does not terminate (a series that
+    /// vanishes to rounding over a whole interval).
+    pub(crate) fn first_fall(&self, skip: usize, h: f64) -> Result<Option<(f64, f64)>, ()> {
+        // The series in u = t/h, divided by u^skip.
+        let mut p = [0.0; LEN];
+        let mut scale = 1.0;
+        for k in 0..LEN {
+            if k >= skip {
+                p[k - skip] = self.0[k] * scale;
+            }
+            scale *= h;
+        }
+        let mut budget = 4096usize;
+        let found = isolate(&p[..LEN - skip], 0.0, 1.0, &mut budget)?;
+        Ok(found.map(|(a, b)| (a * h, b * h)))
+    }
+}
+
+/// The Taylor coefficients of `p` at `m`: `p(m + s) = sum q_k s^k` (repeated
+/// synthetic division).
+fn shift(p: &[f64], m: f64) -> Vec<f64> {
+    let mut q = p.to_vec();
+    let n = q.len();
+    for i in 0..n {
+        for k in (i..n - 1).rev() {
+            q[k] += m * q[k + 1];
+        }
+    }
+    q
+}
+
+fn horner(p: &[f64], u: f64) -> f64 {
+    p.iter().rev().fold(0.0, |acc, &a| acc * u + a)
+}
+
+/// The width (in steps) below which an interval is decided by the signs at
+/// its ends: two sign changes closer than this (a phase of `1e-9` steps,
+/// whose force changes the period's integral by less than `1e-18`) are not
+/// told apart, and a touch of zero within rounding is no event.
+const LEAF: f64 = 1e-9;
+
+/// The first interval of `[a, b]` where `p` falls to `<= 0`, by bisection with
+/// exclusion (module docs of [`Series::first_fall`]).
+fn isolate(p: &[f64], a: f64, b: f64, budget: &mut usize) -> Result<Option<(f64, f64)>, ()> {
+    if *budget == 0 {
+        return Err(());
+    }
+    *budget -= 1;
+    let m = 0.5 * (a + b);
+    let r = 0.5 * (b - a);
+    let q = shift(p, m);
+    let rest: f64 = q.iter().skip(1).enumerate().map(|(k, c)| c.abs() * r.powi(k as i32 + 1)).sum();
+    if q[0].abs() > rest * (1.0 + 1e-12) {
+        return Ok(None);
+    }
+    if b - a <= LEAF {
+        let (pa, pb) = (horner(p, a), horner(p, b));
+        return Ok((pa > 0.0 && pb <= 0.0).then_some((a, b)));
+    }
+    if let Some(found) = isolate(p, a, m, budget)? {
+        return Ok(Some(found));
+    }
+    isolate(p, m, b, budget)
+}
+
+impl Add for Series {
+    type Output = Series;
+    fn add(mut self, o: Series) -> Series {
+        self.0.iter_mut().zip(o.0).for_each(|(a, b)| *a += b);
+        self
+    }
+}
+
+impl Sub for Series {
+    type Output = Series;
+    fn sub(mut self, o: Series) -> Series {
+        self.0.iter_mut().zip(o.0).for_each(|(a, b)| *a -= b);
+        self
+    }
+}
+
+impl Mul<f64> for Series {
+    type Output = Series;
+    fn mul(mut self, s: f64) -> Series {
+        self.0.iter_mut().for_each(|a| *a *= s);
+        self
+    }
+}
+
+impl Mul for Series {
+    type Output = Series;
+    /// The Cauchy product, truncated at [`ORDER`].
+    fn mul(self, o: Series) -> Series {
+        let mut r = [0.0; LEN];
+        for (k, rk) in r.iter_mut().enumerate() {
+            *rk = (0..=k).map(|j| self.0[j] * o.0[k - j]).sum();
+        }
+        Series(r)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn trig_products_and_quotients_match_their_functions() {
+        let (c, s) = Series::trig(0.7);
+        let t = 0.1;
+        // sin^2 + cos^2 = 1 coefficient by coefficient.
+        let one = c * c + s * s;
+        assert!((one.0[0] - 1.0).abs() < 1e-15);
+        assert!(one.0[1..].iter().all(|a| a.abs() < 1e-15));
+        // tan = sin / cos at t, against the library.
+        let tan = s * c.recip();
+        let miss = (tan.eval(t) - 0.8f64.tan()).abs();
+        assert!(miss < 8e-16, "{miss:e}");
+        // int_0^t cos(0.7 + x) dx = sin(1.0) - sin(0.7).
+        assert!((c.integral(t) - (0.8f64.sin() - 0.7f64.sin())).abs() < 2e-16);
+    }
+
+    #[test]
+    fn step_for_keeps_the_tail_at_the_tolerance() {
+        let (c, _) = Series::trig(0.2);
+        let h = c.step_for(1e-17);
+        assert!(c.tail(h) <= 1.0001e-17 && c.tail(h) > 1e-18);
+        // 1/(1 - t): radius 1, coefficients 1; the step is tol^(1/N)-ish.
+        let geometric = (Series::constant(1.0) - Series::trig(0.0).1 * 0.0 - {
+            let mut x = Series::ZERO;
+            x.0[1] = 1.0;
+            x
+        })
+        .recip();
+        assert!(geometric.0.iter().all(|&a| (a - 1.0).abs() < 1e-15));
+        let h = geometric.step_for(1e-17);
+        assert!(h > 0.15 && h < 0.25, "{h}");
+    }
+
+    #[test]
+    fn first_fall_finds_the_first_root_and_skips_touches() {
+        // (t - 0.3)(t - 0.5)(t - 0.9): falls at 0.5? positive at 0 is -0.135: use the negative.
+        let mut p = Series::ZERO;
+        // -(t - 0.3)(t - 0.5)(t - 0.9) = 0.135 - 0.87 t + 1.7 t^2 - t^3: positive at 0, falls at 0.3.
+        p.0[..4].copy_from_slice(&[0.135, -0.87, 1.7, -1.0]);
+        let (a, b) = p.first_fall(0, 1.0).unwrap().unwrap();
+        assert!(a <= 0.3 && 0.3 <= b && b - a < 2e-9, "{a} {b}");
+        // (t - 0.4)^2 + 0: a touch, no sign change.
+        let mut q = Series::ZERO;
+        q.0[..3].copy_from_slice(&[0.16, -0.8, 1.0]);
+        assert_eq!(q.first_fall(0, 1.0).unwrap(), None);
+        // t^2 (0.5 - t) with the double zero at 0 skipped.
+        let mut r = Series::ZERO;
+        r.0[2] = 0.5;
+        r.0[3] = -1.0;
+        let (a, b) = r.first_fall(2, 2.0).unwrap().unwrap();
+        assert!(a <= 0.5 && 0.5 <= b, "{a} {b}");
+        // Beyond the step: none.
+        assert_eq!(r.first_fall(2, 0.4).unwrap(), None);
+    }
+}

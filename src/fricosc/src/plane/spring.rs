@@ -1,0 +1,489 @@
+//! One spring in the plane over one period (`MODEL-transverse.md`): stick in
+//! closed form, slip by the Taylor series of a linear equation, every event on
+//! those series.
+//!
+//! **Slip.** With `f = B e`, `e = (cos th, sin th)`, the law `f' = X' - lambda e`
+//! splits into `lambda = X'.e - B'` (along `e`) and `B th' = X' x e`-ish, that is
+//! `th' = (cos th X'_y - sin th X'_x)/B` (across it). With `p = tan(th/2) =
+//! y1/y2` this Riccati equation is the linear one
+//!
+//! `y' = M y`, `M = (1/2B) [[-X'_x, X'_y], [X'_y, X'_x]]`,
+//!
+//! (substitute `cos th = (y2^2 - y1^2)/|y|^2`, `sin th = 2 y1 y2/|y|^2`): `M`
+//! is symmetric and traceless, so `det` of the flow is 1 and `d th_end/d
+//! th_start = |y_start|^2/|y_end|^2`. The slip ends where `lambda |y|^2 =
+//! X'_x (y2^2 - y1^2) + 2 X'_y y1 y2 - B' |y|^2` falls through 0.
+//!
+//! **Contact.** Where contact is regained (`B = 0`, `B' = beta > 0`) the spring
+//! reloads from `f = 0`: it sticks if `|X'| <= beta`; otherwise it slips from
+//! the regular singular point `t B~(t) y' = ...`: `y = t^sigma z`, `sigma =
+//! |X'|/(2 beta)`, `z` analytic and starting along `X'` (Frobenius; the other
+//! solution, `t^-sigma`, is unbounded). Where contact is lost, the slip
+//! aligns with `X'` while `B -> 0`; the walk stops once the rest of `int B`
+//! is below [`LOSS_TAIL`] and books that rest along the current direction.
+//! Where `B` nearly vanishes (a touch, `amp = level`, or a window of contact
+//! that barely closes) a slip follows its slow manifold ([`layer`]).
+
+use super::drive::{Bound, Drive};
+use super::layer::{self, Layer, ON_MANIFOLD};
+use super::series::{Series, ORDER};
+use crate::error::{Error, Result};
+use crate::special::Kahan;
+use crate::spring::EventKind;
+use std::f64::consts::TAU;
+
+/// A step's truncation target, relative to the state (`|y| = 1`, `|f| <= 1`).
+const STEP_TOL: f64 = 1e-17;
+/// The longest stick step (the series are entire; this keeps `h^k` tame).
+const MAX_STICK_STEP: f64 = 1.0;
+/// The rest of `int B` before a loss of contact that is booked without steps.
+const LOSS_TAIL: f64 = 1e-19;
+/// Steps of one period at most (a period takes tens).
+const MAX_STEPS: usize = 100_000;
+
+/// One spring: what it sees.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Spring {
+    pub(crate) drive: Drive,
+    pub(crate) bound: Bound,
+    layer: Option<Layer>,
+}
+
+/// The state between steps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Phase {
+    /// `f`, inside the disc; `skip` leading zeros of `B^2 - |f|^2` at the start.
+    Stick { f: [f64; 2], skip: usize },
+    /// The half-angle vector (`|y| = 1`); `regain` at a contact's first instant.
+    Slip { y: [f64; 2], regain: bool },
+    /// Out of contact.
+    Out,
+}
+
+/// One period's walk.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Walk {
+    /// `int f dtau`.
+    pub(crate) force: [f64; 2],
+    /// The force at the end.
+    pub(crate) end: [f64; 2],
+    /// `d end / d start` (0 once contact is lost).
+    pub(crate) jacobian: [[f64; 2]; 2],
+    /// The estimated truncation error of `force` (absolute).
+    pub(crate) truncation: f64,
+    /// Events `(tau, kind)`.
+    pub(crate) events: Vec<(f64, EventKind)>,
+    /// Taylor steps taken.
+    pub(crate) steps: usize,
+    /// Whether the spring stuck all the way.
+    pub(crate) stuck: bool,
+}
+
+/// Where a walk starts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Start {
+    /// At `tau` with the force `f` (in contact).
+    Force(f64, [f64; 2]),
+    /// At the first contact at or after `tau`, from `f = 0`.
+    Contact(f64),
+}
+
+struct Walker<'a> {
+    sp: &'a Spring,
+    tau: f64,
+    phase: Phase,
+    force: [Kahan; 2],
+    truncation: f64,
+    /// `d f / d f_start` in stick; row 0 holds `d th / d f_start` in slip.
+    jac: [[f64; 2]; 2],
+    events: Vec<(f64, EventKind)>,
+    steps: usize,
+    stuck: bool,
+}
+
+impl Spring {
+    pub(crate) fn new(drive: Drive, bound: Bound) -> Spring {
+        Spring { drive, bound, layer: Layer::of(&drive, &bound) }
+    }
+
+    /// The walk from `start` to `end` (`end - start <= 2 pi`-ish).
+    pub(crate) fn walk(&self, start: Start, end: f64) -> Result<Walk> {
+        let mut w = Walker {
+            sp: self,
+            tau: 0.0,
+            phase: Phase::Out,
+            force: [Kahan::default(), Kahan::default()],
+            truncation: 0.0,
+            jac: [[1.0, 0.0], [0.0, 1.0]],
+            events: Vec::new(),
+            steps: 0,
+            stuck: true,
+        };
+        match start {
+            Start::Force(tau, f) => {
+                w.tau = tau;
+                w.phase = w.enter(f);
+            }
+            Start::Contact(tau) => {
+                w.tau = tau;
+                w.jac = [[0.0; 2]; 2];
+            }
+        }
+        while w.tau < end {
+            w.steps += 1;
+            if w.steps > MAX_STEPS {
+                return Err(Error::Internal { what: format!("the plane's walk took {MAX_STEPS} steps") });
+            }
+            w.stuck &= matches!(w.phase, Phase::Stick { .. });
+            w.phase = match w.phase {
+                Phase::Stick { f, skip } => w.stick(f, skip, end)?,
+                Phase::Slip { y, regain } => w.slip(y, regain, end)?,
+                Phase::Out => w.regain(end)?,
+            };
+        }
+        let end_force = match w.phase {
+            Phase::Stick { f, .. } => f,
+            Phase::Slip { y, .. } => scaled(direction(y), self.bound.at(w.tau)),
+            Phase::Out => [0.0; 2],
+        };
+        Ok(Walk {
+            force: [w.force[0].sum, w.force[1].sum],
+            end: end_force,
+            jacobian: w.end_jacobian(),
+            truncation: w.truncation,
+            stuck: w.stuck && matches!(w.phase, Phase::Stick { .. }),
+            events: w.events,
+            steps: w.steps,
+        })
+    }
+}
+
+/// `e(th)` of the half-angle vector `y` (`th = 2 atan2(y1, y2)`).
+pub(crate) fn direction(y: [f64; 2]) -> [f64; 2] {
+    let n = y[0] * y[0] + y[1] * y[1];
+    [(y[1] - y[0]) * (y[1] + y[0]) / n, 2.0 * y[0] * y[1] / n]
+}
+
+/// The half-angle vector `(sin(th/2), cos(th/2))` of the direction `e =
+/// (cos th, sin th)` (`|e| > 0`), from `2 cos^2(th/2) = 1 + cos th` and
+/// `sin th = 2 sin(th/2) cos(th/2)`: along an axis exactly `(0, 1)` or `(1, 0)`.
+fn half(e: [f64; 2]) -> [f64; 2] {
+    let r = e[0].hypot(e[1]);
+    let (c, s) = (e[0] / r, e[1] / r);
+    if c >= 0.0 {
+        let ch = (0.5 * (1.0 + c)).sqrt();
+        [s / (2.0 * ch), ch]
+    } else {
+        let sh = (0.5 * (1.0 - c)).sqrt();
+        [sh, s / (2.0 * sh)]
+    }
+}
+
+fn scaled(e: [f64; 2], b: f64) -> [f64; 2] {
+    [e[0] * b, e[1] * b]
+}
+
+/// The root of `g` in the bracket `[a, b]` from [`Series::first_fall`].
+fn refine(g: &Series, a: f64, b: f64) -> f64 {
+    crate::root::bracketed(|t| g.eval(t), a, b, 4.0 * f64::EPSILON).x
+}
+
+impl Walker<'_> {
+    /// Stick or slip with the force `f` at `tau`: on the circle (to rounding)
+    /// as [`Walker::on_circle`].
+    fn enter(&mut self, f: [f64; 2]) -> Phase {
+        let b = self.sp.bound.at(self.tau);
+        let r = f[0].hypot(f[1]);
+        if r > 0.0 && r >= b * (1.0 - 4.0 * f64::EPSILON) {
+            return self.on_circle([f[0] / r, f[1] / r], b);
+        }
+        Phase::Stick { f, skip: 0 }
+    }
+
+    /// The force `b e` on the circle at `tau`: it slips if the slip rate
+    /// `X'.e - B'` is positive, and sticks otherwise (a touch of the circle).
+    fn on_circle(&mut self, e: [f64; 2], b: f64) -> Phase {
+        let xd = self.sp.drive.velocity_at(self.tau);
+        if xd[0] * e[0] + xd[1] * e[1] - self.sp.bound.amp * self.tau.sin() > 0.0 {
+            let jt = [0, 1].map(|j| (-e[1] * self.jac[0][j] + e[0] * self.jac[1][j]) / b);
+            self.jac = [jt, [0.0; 2]];
+            return Phase::Slip { y: half(e), regain: false };
+        }
+        Phase::Stick { f: scaled(e, b), skip: 2 }
+    }
+
+    /// `d f / d f_start` of a stick that starts at the direction `e` with `|f| = b`.
+    fn stick_jacobian(&self, e: [f64; 2], b: f64) -> [[f64; 2]; 2] {
+        let jt = self.jac[0];
+        [[-e[1] * b * jt[0], -e[1] * b * jt[1]], [e[0] * b * jt[0], e[0] * b * jt[1]]]
+    }
+
+    fn end_jacobian(&self) -> [[f64; 2]; 2] {
+        match self.phase {
+            Phase::Stick { .. } => self.jac,
+            Phase::Slip { y, .. } => self.stick_jacobian(direction(y), self.sp.bound.at(self.tau)),
+            Phase::Out => [[0.0; 2]; 2],
+        }
+    }
+
+    fn book(&mut self, fx: &Series, fy: &Series, t: f64) {
+        self.force[0].add(fx.integral(t));
+        self.force[1].add(fy.integral(t));
+    }
+
+    /// The next time, at most `end`, up to which a step of length `t` from `tau` reaches.
+    fn advance(&mut self, t: f64, horizon: f64, target: f64) {
+        self.tau = if t >= horizon { target } else { self.tau + t };
+    }
+
+    /// One stick step: `f = f0 + X(tau) - X(tau0)` until `|f| = B`.
+    fn stick(&mut self, f: [f64; 2], skip: usize, end: f64) -> Result<Phase> {
+        let tau = self.tau;
+        let (cs, sn) = Series::trig(tau);
+        let b = self.sp.bound.series(tau, &cs);
+        let dx = self.sp.drive.displacement(&cs, &sn);
+        let (fx, fy) = (dx[0] + Series::constant(f[0]), dx[1] + Series::constant(f[1]));
+        let mut g = b * b - fx * fx - fy * fy;
+        g.0[..skip].iter_mut().for_each(|a| *a = 0.0);
+        let loss = self.sp.bound.next_loss(tau).filter(|&l| l < end);
+        let target = loss.unwrap_or(end);
+        let horizon = target - tau;
+        let scale = 1f64.max(f[0].abs()).max(f[1].abs());
+        let h = [fx.step_for(STEP_TOL * scale), fy.step_for(STEP_TOL * scale), b.step_for(STEP_TOL)]
+            .into_iter()
+            .fold(horizon.min(MAX_STICK_STEP), f64::min);
+        let fall = g.first_fall(skip, h).map_err(|()| self.stalled("stick"))?;
+        let t = fall.map_or(h, |(a, c)| refine(&g, a, c));
+        self.book(&fx, &fy, t);
+        self.truncation += (fx.tail(h) + fy.tail(h)) * h;
+        let fe = [fx.eval(t), fy.eval(t)];
+        self.advance(t, horizon, target);
+        if fall.is_some() {
+            self.events.push((self.tau, EventKind::Slip));
+            let r = fe[0].hypot(fe[1]);
+            return Ok(self.on_circle([fe[0] / r, fe[1] / r], self.sp.bound.at(self.tau)));
+        }
+        if loss.is_some() && self.tau == target {
+            return Ok(self.lose());
+        }
+        Ok(Phase::Stick { f: fe, skip: 0 })
+    }
+
+    fn lose(&mut self) -> Phase {
+        self.events.push((self.tau, EventKind::LossOfContact));
+        self.jac = [[0.0; 2]; 2];
+        Phase::Out
+    }
+
+    fn stalled(&self, what: &str) -> Error {
+        Error::Internal { what: format!("the plane's {what} event at tau = {} did not isolate", self.tau) }
+    }
+}
+
+/// The half-angle series of a slip from `y0` (`|y0| = 1`): `y' = M y` (module docs).
+fn regular(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> [Series; 2] {
+    let r = b.recip();
+    let (ma, mb) = (xd[0] * r * 0.5, xd[1] * r * 0.5);
+    let (mut y1, mut y2) = (Series::constant(y0[0]), Series::constant(y0[1]));
+    for k in 0..ORDER {
+        let (mut s1, mut s2) = (0.0, 0.0);
+        for j in 0..=k {
+            let (a, c) = (ma.0[j], mb.0[j]);
+            let (u, v) = (y1.0[k - j], y2.0[k - j]);
+            s1 += c * v - a * u;
+            s2 += c * u + a * v;
+        }
+        y1.0[k + 1] = s1 / (k + 1) as f64;
+        y2.0[k + 1] = s2 / (k + 1) as f64;
+    }
+    [y1, y2]
+}
+
+/// `B(tc + t)/t` where `B(tc) = 0`: `amp (cos tc (1 - cos t)/t + sin tc sin t/t)`.
+fn bound_over_t(amp: f64, tc: f64) -> Series {
+    let (s, c) = tc.sin_cos();
+    let mut out = Series::ZERO;
+    let mut fact = 1.0; // k!
+    for k in 1..=ORDER + 2 {
+        fact *= k as f64;
+        let sign = if (k / 2) % 2 == 0 { 1.0 } else { -1.0 };
+        if k % 2 == 0 && k - 1 <= ORDER {
+            // (1 - cos t)/t: -(-1)^(k/2) t^(k-1)/k!
+            out.0[k - 1] += -sign * c / fact;
+        } else if k % 2 == 1 && k - 1 <= ORDER {
+            // sin t/t: (-1)^((k-1)/2) t^(k-1)/k!
+            out.0[k - 1] += sign * s / fact;
+        }
+    }
+    out * amp
+}
+
+/// The Frobenius series `z` of a slip from contact regained at `tc` (module
+/// docs): `((k + sigma) I - N0) z_k = sum_{j >= 1} N_j z_{k-j}`, `N = M t`.
+fn frobenius(amp: f64, tc: f64, xd: &[Series; 2]) -> [Series; 2] {
+    let r = bound_over_t(amp, tc).recip();
+    let (na, nb) = (xd[0] * r * 0.5, xd[1] * r * 0.5);
+    let sigma = na.0[0].hypot(nb.0[0]);
+    let z0 = half([xd[0].0[0], xd[1].0[0]]);
+    let (mut z1, mut z2) = (Series::constant(z0[0]), Series::constant(z0[1]));
+    for k in 1..=ORDER {
+        let (mut r1, mut r2) = (0.0, 0.0);
+        for j in 1..=k {
+            let (a, c) = (na.0[j], nb.0[j]);
+            let (u, v) = (z1.0[k - j], z2.0[k - j]);
+            r1 += c * v - a * u;
+            r2 += c * u + a * v;
+        }
+        let d = k as f64 + sigma;
+        let det = k as f64 * (k as f64 + 2.0 * sigma);
+        z1.0[k] = ((d - na.0[0]) * r1 + nb.0[0] * r2) / det;
+        z2.0[k] = (nb.0[0] * r1 + (d + na.0[0]) * r2) / det;
+    }
+    [z1, z2]
+}
+
+impl Walker<'_> {
+    /// One slip step along the half-angle series until the slip rate falls through 0.
+    fn slip(&mut self, y0: [f64; 2], regain: bool, end: f64) -> Result<Phase> {
+        let (tau, bound) = (self.tau, self.sp.bound);
+        let (cs, sn) = Series::trig(tau);
+        let b = bound.series(tau, &cs);
+        let xd = self.sp.drive.velocity(&cs, &sn);
+        let loss = bound.next_loss(tau).filter(|&l| l <= end);
+        if let (Some(l), false) = (loss, regain) {
+            let rest = b.integral(l - tau);
+            if l - tau < 0.5 && rest <= LOSS_TAIL {
+                let e = direction(y0);
+                self.force[0].add(e[0] * rest);
+                self.force[1].add(e[1] * rest);
+                self.truncation += 2.0 * rest;
+                self.tau = l;
+                return Ok(self.lose());
+            }
+        }
+        let mut target = loss.unwrap_or(end);
+        if let Some(ly) = self.sp.layer {
+            match ly.exit_if_inside(tau) {
+                Some(exit) if regain || self.near_manifold(y0) => return self.traverse(exit, end),
+                Some(_) => {}
+                None => target = target.min(ly.next_entry(tau)),
+            }
+        }
+        let (y, rho) = match (regain, bound.edge) {
+            (true, Some(e)) => (frobenius(bound.amp, tau, &xd), (2.0 * e).min(std::f64::consts::TAU - 2.0 * e)),
+            _ => (regular(&b, &xd, y0), bound.singularity_distance(tau)),
+        };
+        let horizon = target - tau;
+        let n = y[0] * y[0] + y[1] * y[1];
+        let (c2, s2) = ((y[1] - y[0]) * (y[1] + y[0]), y[0] * y[1] * 2.0);
+        let rn = n.recip();
+        let (fx, fy) = (b * c2 * rn, b * s2 * rn);
+        let h = [y[0], y[1], fx, fy].iter().map(|s| s.step_for(STEP_TOL)).fold(horizon.min(0.5 * rho), f64::min);
+        let ev = xd[0] * c2 + xd[1] * s2 - bound.rate(&sn) * n;
+        if ev.0[0] <= 0.0 && !regain {
+            return Ok(self.slip_ends(direction(y0)));
+        }
+        let fall = ev.first_fall(0, h).map_err(|()| self.stalled("slip"))?;
+        let t = fall.map_or(h, |(a, c)| refine(&ev, a, c));
+        self.book(&fx, &fy, t);
+        // The force's tail on this step, and the direction's (an angle), felt
+        // by a force of about this size for up to a period.
+        self.truncation += (fx.tail(h) + fy.tail(h)) * h + 2.0 * (y[0].tail(h) + y[1].tail(h)) * b.0[0].abs() * TAU;
+        let ye = [y[0].eval(t), y[1].eval(t)];
+        let norm = ye[0].hypot(ye[1]);
+        if !regain {
+            let d = 1.0 / (norm * norm);
+            self.jac[0] = self.jac[0].map(|j| j * d);
+        }
+        let ye = [ye[0] / norm, ye[1] / norm];
+        self.advance(t, horizon, target);
+        if fall.is_some() {
+            return Ok(self.slip_ends(direction(ye)));
+        }
+        if loss == Some(self.tau) {
+            return Ok(self.lose());
+        }
+        Ok(Phase::Slip { y: ye, regain: false })
+    }
+
+    /// The slip ends at `tau` with the direction `e`: stick from `f = B e`.
+    fn slip_ends(&mut self, e: [f64; 2]) -> Phase {
+        let b = self.sp.bound.at(self.tau);
+        self.events.push((self.tau, EventKind::Stick));
+        self.jac = self.stick_jacobian(e, b);
+        Phase::Stick { f: scaled(e, b), skip: 2 }
+    }
+
+    /// Out of contact until the next contact (before `end`): stick or slip from `f = 0`.
+    fn regain(&mut self, end: f64) -> Result<Phase> {
+        let bound = self.sp.bound;
+        let e = bound.edge.unwrap_or(0.0);
+        let k = ((self.tau - e) / std::f64::consts::TAU).ceil();
+        let tc = (std::f64::consts::TAU * k + e).max(self.tau);
+        if tc >= end {
+            self.tau = end;
+            return Ok(Phase::Out);
+        }
+        self.events.push((tc, EventKind::Contact));
+        self.jac = [[0.0; 2]; 2];
+        let xd = self.sp.drive.velocity_at(tc);
+        let speed = xd[0].hypot(xd[1]);
+        self.tau = tc;
+        if bound.edge.is_none() {
+            // A touch of zero: the slip starts along X' on the layer's manifold.
+            if self.sp.layer.is_none() || speed == 0.0 {
+                return Err(Error::param(
+                    "amp",
+                    bound.amp,
+                    "touches zero where the body is at rest: the reloading direction is undefined",
+                ));
+            }
+            return Ok(Phase::Slip { y: half(xd), regain: true });
+        }
+        if speed > bound.amp * e.sin() {
+            Ok(Phase::Slip { y: [0.0, 1.0], regain: true })
+        } else {
+            Ok(Phase::Stick { f: [0.0; 2], skip: 2 })
+        }
+    }
+
+    /// Whether the slip's direction is within reach of the layer's slow
+    /// manifold: [`ON_MANIFOLD`], or the manifold's own first-order error.
+    fn near_manifold(&self, y: [f64; 2]) -> bool {
+        let (m, kappa) = layer::manifold(&self.sp.drive, &self.sp.bound, self.tau);
+        let e = direction(y);
+        let b = self.sp.bound.at(self.tau);
+        e[0] * m[0] + e[1] * m[1] > 0.0 && (e[0] * m[1] - e[1] * m[0]).abs() <= ON_MANIFOLD + 16.0 * (b * kappa).powi(2)
+    }
+
+    /// A slip on the slow manifold through the layer until `exit` (or `end`),
+    /// contact lost and regained on the way where the bound closes.
+    fn traverse(&mut self, exit: f64, end: f64) -> Result<Phase> {
+        let (drive, bound) = (self.sp.drive, self.sp.bound);
+        let stop = exit.min(end);
+        let center = std::f64::consts::TAU * (self.tau / std::f64::consts::TAU).round();
+        let closes = match bound.edge {
+            Some(e) => Some(center - e).filter(|&l| self.tau < l && l <= stop),
+            None => Some(center).filter(|&c| self.tau < c && c <= stop),
+        };
+        let book = |w: &mut Self, a: f64, b: f64| {
+            let (f, err) = layer::integral(&drive, &bound, a, b);
+            w.force[0].add(f[0]);
+            w.force[1].add(f[1]);
+            w.truncation += err;
+        };
+        if let Some(c) = closes {
+            book(self, self.tau, c);
+            self.tau = c;
+            if bound.edge.is_some() {
+                return Ok(self.lose());
+            }
+            self.events.push((c, EventKind::LossOfContact));
+            self.events.push((c, EventKind::Contact));
+        }
+        book(self, self.tau, stop);
+        self.tau = stop;
+        self.jac = [[0.0; 2]; 2];
+        Ok(Phase::Slip { y: half(layer::manifold(&drive, &bound, stop).0), regain: false })
+    }
+}

@@ -1,0 +1,51 @@
+//! The plane's solver on drives the public interface cannot express.
+use super::drive::{Bound, Drive};
+use super::spring::Spring;
+use super::{orbit, PlaneEvaluation};
+use crate::{Conditions, Shape};
+
+fn rotated(d: Drive, alpha: f64) -> Drive {
+    let (s, c) = alpha.sin_cos();
+    Drive { v: [c * d.v[0], s * d.v[0]], s: [c * d.s[0], s * d.s[0]], c: [c * d.c[0], s * d.c[0]] }
+}
+
+fn solve(d: Drive, amp: f64) -> PlaneEvaluation {
+    orbit(&Spring::new(d, Bound::new(1.0, amp))).unwrap()
+}
+
+/// Sliding along any direction of the plane, with or without an oscillation
+/// along it: the force stays on that line and is the one-dimensional exact
+/// solver's, rotated, to a few ulp (jumping, sticking, slipping backwards,
+/// touching zero at `amp = 1`).
+#[test]
+fn a_rotated_sliding_drive_is_the_one_dimensional_answer_rotated() {
+    for (vhat, amp, t, phase, alpha) in
+        [(0.3, 0.5, 0.0, 0.0, 0.7), (0.3, 1.5, 1.5, 0.7, 2.0), (0.2, 0.8, 1.0, 0.3, -1.0), (0.3, 1.5, 0.0, 0.0, 3.0)]
+    {
+        let c = Conditions::vhat(vhat, amp).unwrap();
+        let c = if t > 0.0 { c.with_tangential(t, phase).unwrap() } else { c };
+        let one = Shape::flat().evaluate(&c).unwrap().ratio.mu_ratio;
+        let e = solve(rotated(Drive::sliding(vhat, t, phase, 0.0, 0.0), alpha), amp);
+        let err = (e.ratio.mu_ratio - one * alpha.cos()).abs().max((e.transverse_ratio - one * alpha.sin()).abs());
+        assert!(err < 16.0 * f64::EPSILON, "{vhat} {amp} {t}: {err:e}");
+        // Unrotated, the plane's own answer is the line's to an ulp or two.
+        let e = solve(Drive::sliding(vhat, t, phase, 0.0, 0.0), amp);
+        assert!((e.ratio.mu_ratio - one).abs() < 4.0 * f64::EPSILON && e.transverse_ratio == 0.0);
+    }
+}
+
+/// At `amp = 1` the one-dimensional answer (a touch of zero) is met through
+/// the layer's slow manifold: within its estimate, rotated.
+#[test]
+fn a_rotated_drive_through_a_touch_of_zero() {
+    let one = Shape::flat().evaluate(&Conditions::vbar(0.3, 1.0).unwrap()).unwrap().ratio.mu_ratio;
+    for alpha in [0.0, 0.9, -2.2] {
+        let e = solve(rotated(Drive::sliding(0.3, 0.0, 0.0, 0.0, 0.0), alpha), 1.0);
+        let err = (e.ratio.mu_ratio - one * alpha.cos()).abs().max((e.transverse_ratio - one * alpha.sin()).abs());
+        assert!(
+            err < 1e-14 && err <= e.error_estimate.max(4.0 * f64::EPSILON),
+            "{alpha}: {err:e} est {:e}",
+            e.error_estimate
+        );
+    }
+}
