@@ -232,13 +232,50 @@ pub struct Drive {
     #[command(flatten)]
     pub tangential: TangentialPoint,
     #[command(flatten)]
+    pub transverse: TransversePoint,
+    #[command(flatten)]
     pub system: SystemPoint,
 }
 
 impl Drive {
-    /// The conditions of the point at the default tolerance ([`conditions`]).
+    /// The conditions of the point at the default tolerance ([`conditions`]),
+    /// with the oscillation across the sliding direction if given.
     pub fn conditions(&self) -> Result<fricosc::Conditions> {
-        conditions(self.velocity.velocity()?, self.amp, self.tangential.oscillation(&self.velocity)?)
+        let tangential = self.tangential.oscillation(&self.velocity)?;
+        match self.transverse.oscillation()? {
+            // The plane asks for vhat only: amp = 0 is the transverse oscillation alone.
+            Some(w) => Ok(match (self.velocity.velocity()?, tangential) {
+                (v, Some((t, phase))) => conditions(v, self.amp, Some((t, phase)))?,
+                (fricosc::Velocity::Vhat(v), None) => fricosc::Conditions::vhat(v, self.amp)?,
+                (fricosc::Velocity::Vbar(v), None) => fricosc::Conditions::vbar(v, self.amp)?,
+            }
+            .with_transverse(w)),
+            None => conditions(self.velocity.velocity()?, self.amp, tangential),
+        }
+    }
+}
+
+/// Oscillation across the sliding direction, in the plane (`Conditions::with_transverse`).
+#[derive(Args)]
+pub struct TransversePoint {
+    /// Amplitude of an oscillation across the sliding direction, in the plane, dy/l in pre-slip
+    /// lengths (>= 0, at most 1e6; 0 is the problem without it, bit for bit). The flat punch only.
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    pub transverse_amp: Option<f64>,
+    /// Its phase against the normal oscillation, radians (default 0; |psi| <= 1e6): the body moves
+    /// across as W sin(tau + psi).
+    #[arg(long, allow_hyphen_values = true, value_parser = number, requires = "transverse_amp")]
+    pub transverse_phase: Option<f64>,
+}
+
+impl TransversePoint {
+    /// The transverse oscillation, if given.
+    pub fn oscillation(&self) -> Result<Option<fricosc::plane::Transverse>> {
+        let Some(w) = self.transverse_amp else { return Ok(None) };
+        let psi = self.transverse_phase.unwrap_or(0.0);
+        let t = fricosc::plane::Transverse::new(w, psi)?;
+        warn_degrees_of("--transverse-phase", &[psi]);
+        Ok(Some(t))
     }
 }
 
@@ -282,10 +319,15 @@ impl TangentialList {
 /// A warning on stderr (the work goes on) where a phase is beyond `2 pi` in
 /// size: phases are radians, and 90 is more likely meant as degrees.
 pub fn warn_degrees(phases: &[f64]) {
+    warn_degrees_of("--phase", phases);
+}
+
+/// [`warn_degrees`] for the phases of the flag `flag`.
+pub fn warn_degrees_of(flag: &str, phases: &[f64]) {
     if let Some(p) = phases.iter().find(|p| p.abs() > std::f64::consts::TAU) {
         let turns = p / std::f64::consts::TAU;
         say(&format!(
-            "warning: --phase {p} is radians ({turns:.2} periods); if degrees were meant, give {}",
+            "warning: {flag} {p} is radians ({turns:.2} periods); if degrees were meant, give {}",
             crate::output::num(p.to_radians())
         ));
     }

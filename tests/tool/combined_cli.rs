@@ -145,13 +145,15 @@ fn plot_draws_the_combined_curves() {
     assert!(svg.contains("−0.5") || svg.contains("-0.5"), "a negative tick");
 }
 
-/// README's table under oscillation in the sliding direction is what the
-/// command prints.
+/// README's table under oscillation in the sliding direction is the command
+/// README prints, and its output the file README names.
 #[test]
 fn readme_example_is_what_the_command_prints() {
     let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
-    let start = readme.find("shape,vhat,amp,tangential_amp,phase,mu_ratio,reduction\n").expect("the example");
-    let block = &readme[start..start + readme[start..].find("```").unwrap()];
+    let command =
+        "fricosc table --shape parabolic --vhat 0.3 --amp 0.5,1.5 --tangential-amp 2 --phase 0,1.2,3.1416,4.2";
+    assert!(readme.contains(command) && readme.contains("`data/table-combined.csv`"), "README's example");
+    let block = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/table-combined.csv")).unwrap();
     let args = [
         "table",
         "--shape",

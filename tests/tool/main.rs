@@ -14,6 +14,7 @@ mod figures;
 mod fit_cli;
 mod fuzz_mirror;
 mod hostile;
+mod plane_cli;
 mod scene;
 mod suite;
 mod system_cli;

@@ -178,16 +178,16 @@ impl Shape {
     /// profile, or `vbar = vhat/amp` undefined (`amp = 0` without a
     /// tangential oscillation); [`Error::Internal`] for a bug.
     pub fn evaluate(&self, c: &Conditions) -> Result<Evaluation> {
-        if let Some(sys) = c.system() {
-            let r = crate::system::solve(self, c, sys)?;
-            return Ok(Evaluation::of(r.ratio(), r.error_estimate));
-        }
         if let Some(w) = c.transverse() {
             let r = crate::plane::solve(self, c, w)?;
             return Ok(Evaluation {
                 transverse_ratio: Some(r.transverse_ratio),
                 ..Evaluation::of(r.ratio, r.error_estimate)
             });
+        }
+        if let Some(sys) = c.system() {
+            let r = crate::system::solve(self, c, sys)?;
+            return Ok(Evaluation::of(r.ratio(), r.error_estimate));
         }
         match c.tangential() {
             Some(_) => {
@@ -204,11 +204,11 @@ impl Shape {
     /// # Errors
     /// As [`Shape::evaluate`].
     pub fn ratio(&self, c: &Conditions) -> Result<Ratio> {
-        if let Some(sys) = c.system() {
-            return Ok(crate::system::solve(self, c, sys)?.ratio());
-        }
         if c.transverse().is_some() {
             return Ok(self.evaluate(c)?.ratio);
+        }
+        if let Some(sys) = c.system() {
+            return Ok(crate::system::solve(self, c, sys)?.ratio());
         }
         match c.tangential() {
             Some(_) => Ok(super::combined::evaluate(self, c)?.ratio),
@@ -224,11 +224,11 @@ impl Shape {
     /// # Errors
     /// As [`Shape::evaluate`].
     pub fn report(&self, c: &Conditions) -> Result<Report> {
-        if let Some(sys) = c.system() {
-            return Ok(Report::System(crate::system::solve(self, c, sys)?));
-        }
         if let Some(w) = c.transverse() {
             return Ok(Report::Plane(crate::plane::solve(self, c, w)?));
+        }
+        if let Some(sys) = c.system() {
+            return Ok(Report::System(crate::system::solve(self, c, sys)?));
         }
         match c.tangential() {
             Some((t, phase)) => Ok(Report::Tangential(crate::report::Tangential {

@@ -3,9 +3,9 @@
 //! `B(tau)`, the body moves as `X(tau) = (vhat tau + T sin(tau + phase), W
 //! sin(tau + psi))`.
 //!
-//! The solver walks one period event by event ([`spring`]): a stick is closed
+//! The solver walks one period event by event (`spring.rs`): a stick is closed
 //! form, a slip the Taylor series of a linear equation for the force's
-//! half-angle (its truncation estimated term by term, [`series`]), every
+//! half-angle (its truncation estimated term by term, `series.rs`), every
 //! event the first sign change of a series on its step. The steady state is
 //! the fixed point of the period map, found by Newton with the map's exact
 //! derivative (`d th_end/d th_start = 1/|y_end|^2` along a slip, the identity
@@ -108,8 +108,12 @@ pub struct PlaneEvaluation {
 /// [`Error::InvalidParameter`] for a curved shape or a system (not solved in
 /// the plane yet), [`Error::Internal`] when no attracting orbit is found.
 pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse) -> Result<PlaneEvaluation> {
-    if c.system().is_some() {
-        return Err(Error::param("system-stiffness", 0.0, "a body on a system is not solved in the plane yet"));
+    if let Some(sys) = c.system() {
+        return Err(Error::param(
+            "system-stiffness",
+            sys.stiffness(),
+            "a body on a system is not solved in the plane yet",
+        ));
     }
     if !shape.is_flat() {
         return Err(Error::param("transverse-amp", w.amp, "is solved exactly for the flat punch only so far"));

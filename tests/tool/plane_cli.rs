@@ -1,0 +1,113 @@
+//! The command line in the plane: `point` with `--transverse-amp` and
+//! `--transverse-phase` gives the library's values bit for bit with the
+//! period's events and multiplier, `W = 0` is today's output byte for byte,
+//! the plane's stepper answers with `--method stepping`, and bad input is
+//! refused (exit 2, one line, nothing on stdout).
+use crate::common::run as cli;
+
+use fricosc::plane::Transverse;
+use fricosc::{Conditions, Shape};
+use std::process::Output;
+
+fn ok(out: &Output) -> serde_json::Value {
+    assert!(out.status.success(), "stderr: {}", String::from_utf8_lossy(&out.stderr));
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+fn refused(args: &[&str], message: &str) {
+    let out = cli::run(args, None);
+    assert_eq!(out.status.code(), Some(2), "{args:?}");
+    assert!(out.stdout.is_empty(), "{args:?}: stdout {}", String::from_utf8_lossy(&out.stdout));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains(message) && err.lines().count() == 1, "{args:?}: {err}");
+}
+
+#[test]
+fn point_gives_the_librarys_values_events_and_multiplier() {
+    let v = ok(&cli::run(
+        &[
+            "point",
+            "--vhat",
+            "0.1",
+            "--amp",
+            "0.8",
+            "--tangential-amp",
+            "1",
+            "--phase",
+            "0.3",
+            "--transverse-amp",
+            "0.8",
+            "--transverse-phase",
+            "2",
+        ],
+        None,
+    ));
+    let c = Conditions::vhat(0.1, 0.8).unwrap().with_tangential(1.0, 0.3).unwrap();
+    let e = Shape::flat().evaluate(&c.with_transverse(Transverse::new(0.8, 2.0).unwrap())).unwrap();
+    assert_eq!(v["mu_ratio"].as_f64(), Some(e.ratio.mu_ratio));
+    assert_eq!(v["transverse_ratio"].as_f64(), e.transverse_ratio);
+    assert_eq!(v["error_estimate"].as_f64(), Some(e.error_estimate));
+    assert_eq!((v["transverse_amp"].as_f64(), v["transverse_phase"].as_f64()), (Some(0.8), Some(2.0)));
+    assert!(v["multiplier"].as_f64().is_some_and(|m| (0.0..1.0).contains(&m)));
+    assert!(!v["events"].as_array().unwrap().is_empty());
+    // The transverse oscillation alone (amp 0) needs no vbar.
+    let v = ok(&cli::run(&["point", "--vhat", "0.05", "--amp", "0", "--transverse-amp", "2"], None));
+    assert!(v["transverse_ratio"].as_f64().unwrap().abs() < 1e-15);
+}
+
+#[test]
+fn no_transverse_amplitude_is_todays_output() {
+    for args in [
+        &["point", "--vbar", "0.3", "--amp", "0.5"][..],
+        &["point", "--vhat", "0.3", "--amp", "1.5", "--tangential-amp", "2"],
+    ] {
+        let plain = cli::run(args, None);
+        let mut with = args.to_vec();
+        with.extend(["--transverse-amp", "0", "--transverse-phase", "1"]);
+        assert_eq!(cli::run(&with, None).stdout, plain.stdout, "{args:?}");
+    }
+}
+
+#[test]
+fn the_planes_stepper_answers_with_method_stepping() {
+    let v = ok(&cli::run(
+        &[
+            "point",
+            "--vhat",
+            "0.3",
+            "--amp",
+            "0.5",
+            "--transverse-amp",
+            "1.2",
+            "--transverse-phase",
+            "0.7",
+            "--method",
+            "stepping",
+            "--steps-per-period",
+            "20000",
+        ],
+        None,
+    ));
+    assert_eq!(v["method"], "stepping");
+    let exact = 0.614_622_340_125_886_6;
+    let err = (v["mu_ratio"].as_f64().unwrap() - exact).abs();
+    assert!(err > 1e-6 && err < 1e-4, "{err:e}: first order at 20,000 steps");
+}
+
+#[test]
+fn bad_transverse_input_is_refused() {
+    let base = ["point", "--vhat", "0.3", "--amp", "0.5"];
+    for (extra, message) in [
+        (&["--transverse-amp", "-1"][..], "transverse-amp"),
+        (&["--transverse-amp", "nan"], "transverse-amp"),
+        (&["--transverse-amp", "2e6"], "transverse-amp"),
+        (&["--transverse-amp", "1", "--transverse-phase", "2e6"], "transverse-phase"),
+        (&["--transverse-phase", "1"], "--transverse-amp"),
+        (&["--transverse-amp", "1", "--shape", "parabolic"], "flat punch only"),
+        (&["--transverse-amp", "1", "--system-stiffness", "1", "--frequency-ratio", "0.5"], "system"),
+    ] {
+        let mut args = base.to_vec();
+        args.extend(extra);
+        refused(&args, message);
+    }
+}
