@@ -3,18 +3,21 @@
 //! direction relaxes to the body's velocity at the rate `|X'|/B`.
 //!
 //! **The slow manifold.** With `alpha` the direction of `X'`, the slip law
-//! `B th' = |X'| sin(alpha - th)` has the solution that follows `alpha`,
+//! `B th' = |X'| sin(alpha - th)` has the solution that follows `alpha`: put
+//! `th = alpha - eps`, so `|X'| eps = B (alpha' - eps')` to first order in
+//! `eps`, and iterate once from `eps = B alpha'/|X'|`:
 //!
-//! `th_m = alpha - eps`, `eps = B alpha'/|X'| + O(B^2)`,
+//! `eps = (B alpha'/|X'|) (1 - B'/|X'|)`
 //!
-//! (put `th = alpha - eps` and keep the terms of first order in `B`;
-//! `alpha' = X' x X''/|X'|^2`), and attracts every other at the rate `|X'|/B`.
-//! Inside the layer, where `B <= b_layer`, a slip within [`ON_MANIFOLD`] of it
-//! is taken to be on it and its force `B e(th_m)` integrated by Gauss-Legendre
-//! quadrature; the neglected `O(B^2)` of the angle costs at most `int B
-//! (B kappa)^2`, `kappa = (|alpha'| + |X''|/|X'|)/|X'|`, which `b_layer =
-//! 1e-5 min(1, |X'(0)|^2)` keeps near `1e-17` (the estimate books it). Off
-//! the manifold the Taylor steps go on until the transient has decayed.
+//! (`alpha' = X' x X''/|X'|^2`; in the layer `B' ~ sqrt(2 amp B)` is the
+//! larger of the two small parameters), and it attracts every other slip at
+//! the rate `|X'|/B`. Inside the layer, where `B <= b_layer`, a slip within
+//! [`ON_MANIFOLD`] of it (or of the neglected part, `(B kappa)^2 + B kappa
+//! (B'/|X'|)^2`, `kappa = (|alpha'| + |X''|/|X'|)/|X'|`, times 16) is taken
+//! to be on it and its force `B e(th_m)` integrated by Gauss-Legendre
+//! quadrature; the neglected part costs at most `int B` times it, which
+//! `b_layer = 1e-5 min(1, |X'(0)|^2)` keeps near `1e-17` (the estimate books
+//! it). Off the manifold the Taylor steps go on until the transient has decayed.
 
 use super::drive::{Bound, Drive};
 use std::f64::consts::TAU;
@@ -54,17 +57,21 @@ impl Layer {
     }
 }
 
-/// The slow manifold's direction `e(th_m)` at `tau`, and `kappa` (module docs).
+/// The slow manifold's direction `e(th_m)` at `tau`, and the bound on the
+/// angle's neglected part (module docs).
 pub(crate) fn manifold(drive: &Drive, bound: &Bound, tau: f64) -> ([f64; 2], f64) {
     let (v, a) = (drive.velocity_at(tau), drive.acceleration_at(tau));
     let speed = v[0].hypot(v[1]);
     let turn = (v[0] * a[1] - v[1] * a[0]) / (speed * speed);
-    let eps = bound.at(tau) * turn / speed;
+    let (b, rate) = (bound.at(tau), bound.amp * tau.sin() / speed);
+    let eps = b * turn / speed * (1.0 - rate);
+    let kappa = (turn.abs() + a[0].hypot(a[1]) / speed) / speed;
+    let neglected = (b * kappa).powi(2) + b * kappa * rate * rate;
     let (se, ce) = eps.sin_cos();
     let e = [v[0] / speed, v[1] / speed];
     // e(alpha - eps): e rotated by -eps.
     let m = [e[0] * ce + e[1] * se, e[1] * ce - e[0] * se];
-    (m, (turn.abs() + a[0].hypot(a[1]) / speed) / speed)
+    (m, neglected)
 }
 
 /// `int_a^b B e(th_m) dtau` and the bound on its neglected part (module docs),
@@ -77,10 +84,10 @@ pub(crate) fn integral(drive: &Drive, bound: &Bound, a: f64, b: f64) -> ([f64; 2
     for (x, w) in rule.nodes.iter().zip(&rule.weights) {
         let tau = mid + half * x;
         let bt = bound.at(tau);
-        let (m, kappa) = manifold(drive, bound, tau);
+        let (m, neglected) = manifold(drive, bound, tau);
         f[0] += w * bt * m[0];
         f[1] += w * bt * m[1];
-        err += w * bt * (bt * kappa).powi(2);
+        err += w * bt * neglected;
     }
     ([f[0] * half, f[1] * half], err * half)
 }

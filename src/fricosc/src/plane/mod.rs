@@ -127,8 +127,6 @@ pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse) -> Result<Plan
 const MAX_NEWTON: usize = 60;
 /// Halvings of one Newton step at most.
 const MAX_HALVINGS: usize = 6;
-/// Periods walked from the relaxed start before Newton.
-const RELAX: usize = 6;
 
 fn orbit(sp: &Spring) -> Result<PlaneEvaluation> {
     let total = sp.bound.period_integral();
@@ -138,18 +136,6 @@ fn orbit(sp: &Spring) -> Result<PlaneEvaluation> {
     }
     let mut f = [0.0; 2];
     let mut periods = 0;
-    for _ in 0..RELAX {
-        let w = sp.walk(Start::Force(0.0, f), TAU)?;
-        periods += 1;
-        let change = (w.end[0] - f[0]).hypot(w.end[1] - f[1]);
-        if change == 0.0 {
-            return answer(&w, total, multiplier(&w.jacobian), 0.0, periods);
-        }
-        f = w.end;
-        if change < 1e-3 {
-            break;
-        }
-    }
     let residual = |f: [f64; 2], w: &Walk| (w.end[0] - f[0]).hypot(w.end[1] - f[1]);
     let mut w = sp.walk(Start::Force(0.0, f), TAU)?;
     periods += 1;
@@ -157,7 +143,8 @@ fn orbit(sp: &Spring) -> Result<PlaneEvaluation> {
         let res = residual(f, &w);
         if res <= 8.0 * f64::EPSILON * (1f64.max(f[0].abs()).max(f[1].abs())) {
             let m = multiplier(&w.jacobian);
-            if m >= 1.0 {
+            // A period that only sticks repeats from any start: the relaxed start's is the answer.
+            if m >= 1.0 && !(w.stuck && f == [0.0; 2]) {
                 break;
             }
             return answer(&w, total, m, res, periods);

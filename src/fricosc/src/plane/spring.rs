@@ -450,10 +450,9 @@ impl Walker<'_> {
     /// Whether the slip's direction is within reach of the layer's slow
     /// manifold: [`ON_MANIFOLD`], or the manifold's own first-order error.
     fn near_manifold(&self, y: [f64; 2]) -> bool {
-        let (m, kappa) = layer::manifold(&self.sp.drive, &self.sp.bound, self.tau);
+        let (m, neglected) = layer::manifold(&self.sp.drive, &self.sp.bound, self.tau);
         let e = direction(y);
-        let b = self.sp.bound.at(self.tau);
-        e[0] * m[0] + e[1] * m[1] > 0.0 && (e[0] * m[1] - e[1] * m[0]).abs() <= ON_MANIFOLD + 16.0 * (b * kappa).powi(2)
+        e[0] * m[0] + e[1] * m[1] > 0.0 && (e[0] * m[1] - e[1] * m[0]).abs() <= ON_MANIFOLD + 16.0 * neglected
     }
 
     /// A slip on the slow manifold through the layer until `exit` (or `end`),
