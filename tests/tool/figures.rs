@@ -24,6 +24,8 @@ fn exact_curves_equal_the_solver_and_every_figure_is_there() {
             "tangential-parabolic",
             "combined-phase",
             "combined-regimes",
+            "transverse-flat",
+            "transverse-phase",
             "system-resonance",
             "system-frequency"
         ]
@@ -64,7 +66,7 @@ fn oscillation_figures_are_the_solvers_values() {
     let figs = build().unwrap();
     for f in &figs {
         let shape = if f.name.ends_with("parabolic") { Shape::parabolic() } else { Shape::flat() };
-        let beyond = !f.name.starts_with("fig") && !f.name.starts_with("system-");
+        let beyond = !f.name.starts_with("fig") && !f.name.starts_with("system-") && !f.name.starts_with("transverse-");
         for c in f.curves.iter().filter(|c| c.kind == "exact" && beyond) {
             let t = c.amp.unwrap();
             assert_eq!(f.family, "tangential_amp", "{}", f.name);
@@ -188,11 +190,42 @@ fn approximations_are_drawn_where_the_seed_uses_them() {
             "fig3-inset" => &[1.0],
             "tangential-flat" | "tangential-parabolic" => &fricosc_cli::figures::TANGENTIAL_AMPS,
             "combined-phase" => &fricosc_cli::figures::COMBINED_TS,
+            "transverse-flat" => &fricosc_cli::figures::TRANSVERSE_AMPS,
+            "transverse-phase" => &fricosc_cli::figures::SIDEWAYS_WS,
             "system-resonance" => &fricosc_cli::figures::OMEGAS,
             "system-frequency" => &fricosc_cli::figures::KAPPAS,
             _ => &[],
         };
         assert_eq!(amps("exact"), expected, "{}", f.name);
+    }
+}
+
+/// The plane's figures: every point is the library's (`Conditions::with_transverse`),
+/// the sideways curves its `transverse_ratio`; the rigid limit is Gauss's AGM.
+#[test]
+fn plane_figures_are_the_solvers_values() {
+    use fricosc::plane::Transverse;
+    let at = |vhat: f64, amp: f64, w: f64, psi: f64| {
+        let c = fricosc::Conditions::vhat(vhat, amp).unwrap().with_transverse(Transverse::new(w, psi).unwrap());
+        Shape::flat().evaluate(&c).unwrap()
+    };
+    let (vhat, amp) = fricosc_cli::figures::SIDEWAYS;
+    for f in build().unwrap().iter().filter(|f| f.name.starts_with("transverse-")) {
+        assert_eq!(f.family, "transverse_amp");
+        for c in &f.curves {
+            for p in c.points.iter().step_by(9) {
+                let got = match (f.x, c.amp) {
+                    (XAxis::TransverseRatio, Some(w)) => at(p[0] * w, 0.0, w, 0.0).ratio.mu_ratio,
+                    (XAxis::TransverseRatio, None) => fricosc::stepper::rigid_limit(1.0 / p[0]),
+                    (XAxis::TransversePhase, Some(w)) if c.label.starts_with("sideways") => {
+                        at(vhat, amp, w, p[0]).transverse_ratio.unwrap()
+                    }
+                    (XAxis::TransversePhase, Some(w)) => at(vhat, amp, w, p[0]).ratio.mu_ratio,
+                    (x, _) => panic!("{}: axis {x:?}", f.name),
+                };
+                assert_eq!(p[1], got, "{} {}", f.name, c.label);
+            }
+        }
     }
 }
 
@@ -233,6 +266,8 @@ fn every_drawing_parses_tells_curves_apart_and_renders() {
             XAxis::SlidingRatio => "ω Δx",
             XAxis::FrequencyRatio => "Ω",
             XAxis::Phase => "φ",
+            XAxis::TransverseRatio => "ω Δy",
+            XAxis::TransversePhase => "ψ",
         };
         let text: String = svg.split("<text").skip(1).map(|t| t.split("</text>").next().unwrap()).collect();
         assert!(text.contains(symbol) && text.contains("μ"), "{}: axis symbols", f.name);

@@ -15,6 +15,8 @@ mod oscillation;
 mod system;
 pub use oscillation::{against_phase, COMBINED, COMBINED_TS, MAP_T, TANGENTIAL_AMPS};
 use oscillation::{combined_mu, oscillation_figures};
+mod plane;
+pub use plane::{SIDEWAYS, SIDEWAYS_WS, TRANSVERSE_AMPS};
 pub use system::{FREQUENCY, KAPPAS, OMEGAS, RESONANCE};
 
 /// One curve of a figure.
@@ -49,6 +51,10 @@ pub enum XAxis {
     Phase,
     /// The frequency ratio `Omega = omega / sqrt(kx/m)` (a system with mass).
     FrequencyRatio,
+    /// `vhat/W = v0/(omega dy)`: sliding over the transverse oscillation's velocity amplitude.
+    TransverseRatio,
+    /// The phase `psi` of the transverse oscillation against the normal one (radians).
+    TransversePhase,
 }
 
 /// One figure.
@@ -100,6 +106,8 @@ fn figure(name: &str, title: &str, x: XAxis, range: [f64; 4], curves: Vec<Curve>
         XAxis::SlidingRatio => "sliding over oscillation velocity v_{0}/(ω Δx)",
         XAxis::Phase => "phase φ of the tangential oscillation (rad)",
         XAxis::FrequencyRatio => "frequency ratio Ω = ω/√(k_{x}/m)",
+        XAxis::TransverseRatio => "sliding over transverse oscillation velocity v_{0}/(ω Δy)",
+        XAxis::TransversePhase => "phase ψ of the transverse oscillation (rad)",
     };
     Figure {
         name: name.into(),
@@ -168,6 +176,7 @@ pub fn build() -> Result<Vec<Figure>> {
     let mut figs = flat_figures()?;
     figs.extend(jumping_figures()?);
     figs.extend(oscillation_figures()?);
+    figs.extend(plane::plane_figures()?);
     figs.push(system::resonance()?);
     figs.push(system::frequency()?);
     Ok(figs)
@@ -605,6 +614,7 @@ fn family_heading(f: &Figure) -> &'static str {
         "amp" => AMP_LABEL,
         "frequency_ratio" => OMEGA_LABEL,
         "system_stiffness" => KAPPA_LABEL,
+        "transverse_amp" => "Δy/l",
         _ => T_LABEL,
     }
 }
