@@ -183,6 +183,56 @@ fn point_oscillation<'py>(
     pythonize::pythonize(py, &Named { shape: shape.inner.name(), point: p }).map_err(serialise_err)
 }
 
+/// One point under an oscillation across the sliding direction, as `fricosc
+/// point --transverse-amp` reports it: a dict.
+#[pyfunction]
+#[pyo3(signature = (shape, v, amp, vhat, tangential, w, psi))]
+#[allow(clippy::too_many_arguments)]
+fn point_plane<'py>(
+    py: Python<'py>,
+    shape: &CoreShape,
+    v: f64,
+    amp: f64,
+    vhat: bool,
+    tangential: Option<(f64, f64)>,
+    w: f64,
+    psi: f64,
+) -> PyResult<Bound<'py, PyAny>> {
+    #[derive(serde::Serialize)]
+    struct Named<'a> {
+        shape: &'a str,
+        vhat: f64,
+        amp: f64,
+        tangential_amp: f64,
+        phase: f64,
+        transverse_amp: f64,
+        transverse_phase: f64,
+        #[serde(flatten)]
+        point: Report,
+    }
+    let transverse = fricosc::plane::Transverse::new(w, psi).map_err(to_py)?;
+    let c = match tangential {
+        Some((t, p)) => oscillation(v, amp, t, p, DEFAULT_TOL),
+        None if vhat => Conditions::vhat(v, amp),
+        None => Conditions::vbar(v, amp),
+    }
+    .map_err(to_py)?
+    .with_transverse(transverse);
+    let point = interruptible(py, || shape.inner.report(&c))?;
+    let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
+    let named = Named {
+        shape: shape.inner.name(),
+        vhat: c.as_vhat(),
+        amp,
+        tangential_amp: t,
+        phase,
+        transverse_amp: transverse.amp(),
+        transverse_phase: transverse.phase(),
+        point,
+    };
+    pythonize::pythonize(py, &named).map_err(serialise_err)
+}
+
 /// A body on a system with mass and stiffness, as `fricosc point
 /// --system-stiffness` reports it: a dict.
 #[pyfunction]
@@ -535,6 +585,7 @@ fn _fricosc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(evaluate_oscillation, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate_system, m)?)?;
     m.add_function(wrap_pyfunction!(point_oscillation, m)?)?;
+    m.add_function(wrap_pyfunction!(point_plane, m)?)?;
     m.add_function(wrap_pyfunction!(point_system, m)?)?;
     m.add_function(wrap_pyfunction!(history, m)?)?;
     m.add_function(wrap_pyfunction!(validate, m)?)?;

@@ -161,6 +161,8 @@ def point(
     frequency_ratio: Optional[float] = None,
     damping: Optional[float] = None,
     springs: Optional[int] = None,
+    transverse_amp: Optional[float] = None,
+    transverse_phase: Optional[float] = None,
 ) -> Dict[str, Any]:
     """Everything the solver reports at one point, as ``fricosc point`` prints it:
     the regime and events of the flat punch, the bands of a power law, the
@@ -169,7 +171,12 @@ def point(
     period (flat punch) or the bands. With ``system_stiffness`` (and
     ``frequency_ratio``, ``damping``) as ``fricosc point --system-stiffness``:
     the body on a system with mass and stiffness, its attractor (a curved
-    body's as ``springs`` springs, default 256, with an error estimate).
+    body's as ``springs`` springs, default 256, with an error estimate). With
+    ``transverse_amp`` (and ``transverse_phase``) as ``fricosc point
+    --transverse-amp``: the flat punch under an oscillation across the sliding
+    direction, ``mu_ratio``, ``transverse_ratio`` (the mean sideways force),
+    the period's events and the period map's multiplier (``transverse_amp=0``
+    is the point without it).
 
     >>> p = point("flat", 0.3, 0.5)
     >>> p["regime"], p["mu_ratio"], [e["kind"] for e in p["events"]]
@@ -177,10 +184,25 @@ def point(
     >>> q = point("flat", vhat=0.6, amp=2.0, tangential_amp=3.0, phase=1.0)
     >>> q["spring"]["regime"], [e["kind"] for e in q["spring"]["events"]]
     ('jumping: stick, backward, stick, forward', ['contact', 'backward', 'stick', 'forward', 'loss_of_contact'])
+    >>> r = point("flat", vhat=0.3, amp=0.5, transverse_amp=1.2, transverse_phase=0.7)
+    >>> round(r["mu_ratio"], 12), round(r["transverse_ratio"], 12), [e["kind"] for e in r["events"]]
+    (0.614622340126, -0.246652132766, ['stick', 'slip'])
     """
     if amp is None:
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
+    if transverse_phase is not None and transverse_amp is None:
+        raise TypeError("transverse_phase needs transverse_amp")
+    if transverse_amp is not None and _scalar(transverse_amp, "transverse_amp") != 0.0:
+        if system_stiffness is not None or springs is not None or tol is not None:
+            what = "system_stiffness" if system_stiffness is not None else "springs" if springs is not None else "tol"
+            raise InputError(f"{what} does not apply with transverse_amp (the flat punch on a stiff system, exact)")
+        plane: Dict[str, Any] = _fricosc.point_plane(
+            _core(shape), _scalar(v, "vhat" if is_vhat else "vbar"), _scalar(amp, "amp"), is_vhat,
+            _tangential(tangential_amp, phase, is_vhat), _scalar(transverse_amp, "transverse_amp"),
+            _scalar(0.0 if transverse_phase is None else transverse_phase, "transverse_phase"),
+        )
+        return plane
     system = _system(system_stiffness, frequency_ratio, damping)
     if system is not None:
         if tol is not None:

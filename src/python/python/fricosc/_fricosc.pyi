@@ -5,7 +5,7 @@ from typing import Any, Dict, List, Optional, Tuple, final
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "evaluate_system", "point_oscillation", "point_system", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "fit", "__version__"]
+__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "evaluate_system", "point_oscillation", "point_plane", "point_system", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "fit", "__version__"]
 __version__: str
 
 class InputError(ValueError): ...
@@ -47,6 +47,15 @@ def evaluate_system(
 ) -> npt.NDArray[np.float64]: ...
 def point_oscillation(
     shape: CoreShape, vhat: float, amp: float, t: float, phase: float, tol: float
+) -> Dict[str, Any]: ...
+def point_plane(
+    shape: CoreShape,
+    v: float,
+    amp: float,
+    vhat: bool,
+    tangential: Optional[Tuple[float, float]],
+    w: float,
+    psi: float,
 ) -> Dict[str, Any]: ...
 def history(
     shape: CoreShape,

@@ -1,0 +1,59 @@
+"""The plane from Python: ``point(..., transverse_amp=, transverse_phase=)``
+is ``fricosc point --transverse-amp`` bit for bit, ``transverse_amp=0`` the
+point without it, and bad input is refused by name."""
+import json
+import os
+import shutil
+import subprocess
+from typing import Any, Dict
+
+import pytest
+
+import fricosc
+
+
+def _cli(*args: str) -> Dict[str, Any]:
+    exe = shutil.which("fricosc")
+    if exe is None:
+        if os.environ.get("FRICOSC_REQUIRE_BIN"):
+            raise AssertionError("the fricosc binary is not on PATH")
+        pytest.skip("the fricosc binary is not on PATH")
+    out = subprocess.run([exe, "point", *args], check=True, capture_output=True, text=True)
+    result: Dict[str, Any] = json.loads(out.stdout)
+    return result
+
+
+def test_point_is_the_command_lines() -> None:
+    p = fricosc.point("flat", vhat=0.1, amp=0.8, tangential_amp=1.0, phase=0.3, transverse_amp=0.8, transverse_phase=2.0)
+    q = _cli("--vhat", "0.1", "--amp", "0.8", "--tangential-amp", "1", "--phase", "0.3",
+             "--transverse-amp", "0.8", "--transverse-phase", "2")
+    for key in ["mu_ratio", "transverse_ratio", "error_estimate", "multiplier", "events", "transverse_amp"]:
+        assert p[key] == q[key], key
+    # The transverse drive alone, at vbar = 0 of no normal oscillation: vhat.
+    alone = fricosc.point("flat", vhat=0.05, amp=0.0, transverse_amp=2.0)
+    assert abs(alone["transverse_ratio"]) < 1e-15 and 0.0 < alone["mu_ratio"] < 1.0
+
+
+def test_no_transverse_amplitude_is_the_point_without_it() -> None:
+    assert fricosc.point("flat", 0.3, 0.5, transverse_amp=0.0) == fricosc.point("flat", 0.3, 0.5)
+
+
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        ({"transverse_amp": -1.0}, "transverse-amp"),
+        ({"transverse_amp": float("nan")}, "transverse-amp"),
+        ({"transverse_amp": 1.0, "transverse_phase": 2e6}, "transverse-phase"),
+        ({"transverse_amp": 1.0, "system_stiffness": 1.0}, "system_stiffness"),
+    ],
+)
+def test_bad_input_is_named(kwargs: Dict[str, Any], name: str) -> None:
+    with pytest.raises(fricosc.InputError, match=name):
+        fricosc.point("flat", vhat=0.3, amp=0.5, **kwargs)
+    with pytest.raises(TypeError, match="transverse_phase needs transverse_amp"):
+        fricosc.point("flat", vhat=0.3, amp=0.5, transverse_phase=1.0)
+
+
+def test_curved_shapes_are_refused_by_name() -> None:
+    with pytest.raises(fricosc.InputError, match="flat punch only"):
+        fricosc.point("parabolic", vhat=0.3, amp=0.5, transverse_amp=1.0)
