@@ -120,7 +120,51 @@ pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse) -> Result<Plan
     }
     let o = crate::combined::Oscillation::of(c);
     let sp = Spring::new(Drive::sliding(o.vhat, o.tangential_amp, o.phase, w.amp, w.phase), Bound::new(1.0, o.amp));
+    check_work(&sp, [("vhat", o.vhat), ("tangential-amp", o.tangential_amp), ("transverse-amp", w.amp)])?;
     orbit(&sp)
+}
+
+/// Taylor steps a period may take at most ([`check_work`]).
+pub const MAX_PERIOD_STEPS: f64 = 2e4;
+
+/// Refuse, before any work, what the walk cannot do in reasonable time: a
+/// slip's direction relaxes at the rate `|X'|/B`, and a Taylor step spans
+/// about `4 B/|X'|` of it, so a period takes about `int |X'|/(4 B) dtau`
+/// steps outside the thin layer (64 samples of the period); beyond
+/// [`MAX_PERIOD_STEPS`] the drive named (the largest) is refused: there the
+/// slip is the rigid body's to within `B/|X'|` (`stepper::rigid_limit`). A
+/// bound that vanishes where the body is at rest has no reloading direction.
+fn check_work(sp: &Spring, drives: [(&'static str, f64); 3]) -> Result<()> {
+    let (name, value) = drives.into_iter().fold(("vhat", 0.0), |a, d| if d.1 > a.1 { d } else { a });
+    let v0 = sp.drive.velocity_at(0.0);
+    if sp.bound.amp >= sp.bound.level - 1e-5 && v0[0].hypot(v0[1]) < 1e-6 * value.max(1.0) {
+        return Err(Error::param(
+            "amp",
+            sp.bound.amp,
+            "nearly touches zero at tau = 0 where the body is nearly at rest: the reloading direction is undefined",
+        ));
+    }
+    let n = 64;
+    let floor = 1e-5 * v0[0].hypot(v0[1]).min(1.0).powi(2);
+    let steps: f64 = (0..n)
+        .map(|k| {
+            let tau = TAU * (k as f64 + 0.5) / n as f64;
+            let (b, v) = (sp.bound.at(tau), sp.drive.velocity_at(tau));
+            if b > floor {
+                v[0].hypot(v[1]) / (4.0 * b) * TAU / n as f64
+            } else {
+                0.0
+            }
+        })
+        .sum();
+    if steps > MAX_PERIOD_STEPS {
+        return Err(Error::param(
+            name,
+            value,
+            &format!("makes a slip too stiff to step exactly (about {steps:.0} steps a period, more than 2e4); there friction is the rigid body's to within a pre-slip length over the amplitude"),
+        ));
+    }
+    Ok(())
 }
 
 /// Newton's iterations at most.

@@ -196,3 +196,28 @@ fn bad_input_is_refused_by_name() {
         Err(fricosc::Error::InvalidParameter { name: "transverse-amp", .. })
     ));
 }
+
+/// Extreme transverse amplitudes: `W = 1e-12` is the one-dimensional answer
+/// to rounding with a sideways force of order `W`; `W = 1e3` (a stiff slip,
+/// thousands of steps a period) meets the plane's stepper extrapolated from
+/// 200,000 and 400,000 steps (observed 4e-12); `W = 1e6` and a bound that
+/// vanishes where the body rests are refused by name, before any work.
+#[test]
+fn extreme_amplitudes_are_answered_or_refused_by_name() {
+    let c = conditions(0.3, 0.5, 0.0, 0.0);
+    let one = Shape::flat().evaluate(&c).unwrap().ratio.mu_ratio;
+    let tiny = plane(&c, 1e-12, 0.0);
+    assert!((tiny.ratio.mu_ratio - one).abs() < 1e-15 && tiny.transverse_ratio.unwrap().abs() < 1e-11);
+    let stiff = plane(&c, 1e3, 0.0);
+    let tw = Transverse::new(1e3, 0.0).unwrap();
+    let run = |m: usize| transverse(&Shape::flat(), &c, tw, Stepping { steps_per_period: m, springs: 1 }, 4).unwrap();
+    let (a, b) = (run(200_000), run(400_000));
+    let err = (2.0 * b.mu_ratio - a.mu_ratio - stiff.ratio.mu_ratio).abs();
+    assert!(err < 1e-10, "{err:e}");
+    let refused = |c: &Conditions, w: f64, psi: f64| {
+        Shape::flat().evaluate(&c.with_transverse(Transverse::new(w, psi).unwrap())).unwrap_err()
+    };
+    assert!(matches!(refused(&c, 1e6, 0.0), fricosc::Error::InvalidParameter { name: "transverse-amp", .. }));
+    let at_rest = refused(&conditions(0.0, 1.0, 0.0, 0.0), 1.0, std::f64::consts::FRAC_PI_2);
+    assert!(matches!(at_rest, fricosc::Error::InvalidParameter { name: "amp", .. }), "{at_rest}");
+}
