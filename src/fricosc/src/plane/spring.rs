@@ -195,17 +195,20 @@ impl Walker<'_> {
         let b = self.sp.bound.at(self.tau);
         let r = f[0].hypot(f[1]);
         if r > 0.0 && r >= b * (1.0 - 4.0 * f64::EPSILON) {
-            return self.on_circle([f[0] / r, f[1] / r], b);
+            // Beyond the circle the start is projected onto it: th = atan2(f) moves by e_perp.df/r.
+            return self.on_circle([f[0] / r, f[1] / r], b, r);
         }
         Phase::Stick { f, skip: 0 }
     }
 
-    /// The force `b e` on the circle at `tau`: it slips if the slip rate
-    /// `X'.e - B'` is positive, and sticks otherwise (a touch of the circle).
-    fn on_circle(&mut self, e: [f64; 2], b: f64) -> Phase {
+    /// The force `b e` on the circle at `tau`, reached from a force of size
+    /// `r` (`b` itself but where a start beyond the circle is projected onto
+    /// it): it slips if the slip rate `X'.e - B'` is positive, and sticks
+    /// otherwise (a touch of the circle).
+    fn on_circle(&mut self, e: [f64; 2], b: f64, r: f64) -> Phase {
         let xd = self.sp.drive.velocity_at(self.tau);
         if xd[0] * e[0] + xd[1] * e[1] - self.sp.bound.amp * self.tau.sin() > 0.0 {
-            let jt = [0, 1].map(|j| (-e[1] * self.jac[0][j] + e[0] * self.jac[1][j]) / b);
+            let jt = [0, 1].map(|j| (-e[1] * self.jac[0][j] + e[0] * self.jac[1][j]) / r);
             self.jac = [jt, [0.0; 2]];
             return Phase::Slip { y: half(e), regain: false };
         }
@@ -260,8 +263,8 @@ impl Walker<'_> {
         self.advance(t, horizon, target);
         if fall.is_some() {
             self.events.push((self.tau, EventKind::Slip));
-            let r = fe[0].hypot(fe[1]);
-            return Ok(self.on_circle([fe[0] / r, fe[1] / r], self.sp.bound.at(self.tau)));
+            let (r, b) = (fe[0].hypot(fe[1]), self.sp.bound.at(self.tau));
+            return Ok(self.on_circle([fe[0] / r, fe[1] / r], b, b));
         }
         if loss.is_some() && self.tau == target {
             return Ok(self.lose());

@@ -49,3 +49,44 @@ fn a_rotated_drive_through_a_touch_of_zero() {
         );
     }
 }
+
+/// The period map's derivative (identity along a stick, the projection
+/// across the circle at a slip's start, `1/|y|^2` along a slip, `B e_perp`
+/// at its end) against central differences of the map itself, at states on
+/// and off the orbit, sticking and slipping, along and across; and the
+/// reported multiplier is the derivative's largest eigenvalue at the orbit.
+#[test]
+fn the_period_maps_derivative_is_its_differences() {
+    use super::spring::Start;
+    use std::f64::consts::TAU;
+    let cases = [
+        (Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7), 0.5),
+        (Drive::sliding(0.1, 1.0, 0.3, 0.8, 2.0), 0.8),
+        (Drive::sliding(1.0, 0.0, 0.0, 0.5, 1.0), 0.3),
+    ];
+    for (d, amp) in cases {
+        let sp = Spring::new(d, Bound::new(1.0, amp));
+        for f in [[0.0, 0.0], [0.1, -0.2], [0.3, 0.3]] {
+            let walk = sp.walk(Start::Force(0.0, f), TAU).unwrap();
+            let h = 1e-6;
+            for k in 0..2 {
+                let at = |s: f64| {
+                    let mut g = f;
+                    g[k] += s;
+                    sp.walk(Start::Force(0.0, g), TAU).unwrap().end
+                };
+                let (p, m) = (at(h), at(-h));
+                for i in 0..2 {
+                    let fd = (p[i] - m[i]) / (2.0 * h);
+                    assert!(
+                        (fd - walk.jacobian[i][k]).abs() < 1e-6,
+                        "{f:?} d{i}/d{k}: {fd} vs {}",
+                        walk.jacobian[i][k]
+                    );
+                }
+            }
+        }
+        let e = solve(d, amp);
+        assert!(e.multiplier > 1e-4 && e.multiplier < 1.0, "{}", e.multiplier);
+    }
+}
