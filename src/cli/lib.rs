@@ -24,6 +24,7 @@ pub mod progress;
 pub mod scene;
 pub mod suite;
 pub mod table;
+pub mod table_plane;
 pub mod tables;
 pub mod twopass;
 pub mod validate;

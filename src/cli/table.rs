@@ -18,6 +18,8 @@ pub struct TableArgs {
     #[command(flatten)]
     pub tangential: TangentialList,
     #[command(flatten)]
+    pub transverse: crate::table_plane::TransverseList,
+    #[command(flatten)]
     pub system: SystemPoint,
     /// Output format.
     #[arg(long, value_enum, default_value = "json")]
@@ -147,6 +149,9 @@ pub fn run(a: TableArgs) -> Result<()> {
     let tol = a.common.tol();
     let amps = &a.amp.0;
     let (vels, is_vhat) = a.velocity.values();
+    if let Some(ws) = &a.transverse.transverse_amp {
+        return crate::table_plane::plane_table(&a, &shape, ws);
+    }
     let system = a.system.system(a.common.method.system_springs())?;
     if system.is_some() || a.tangential.tangential_amp.is_some() {
         return general_table(&a, &shape, system);

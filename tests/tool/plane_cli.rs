@@ -111,3 +111,56 @@ fn bad_transverse_input_is_refused() {
         refused(&args, message);
     }
 }
+
+/// `table --transverse-amp`: every row is the library's value (`W = 0` rows
+/// the problem without it, a force across of 0), the columns name the plane's
+/// inputs; stepping, a system and more than 1e5 rows are refused.
+#[test]
+fn table_rows_are_the_librarys() {
+    let out = cli::run(
+        &[
+            "table",
+            "--vhat",
+            "0.1,0.3",
+            "--amp",
+            "0.5,1.5",
+            "--transverse-amp",
+            "0,1.2",
+            "--transverse-phase",
+            "0.7",
+            "--format",
+            "csv",
+        ],
+        None,
+    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("shape,vhat,amp,tangential_amp,phase,transverse_amp,transverse_phase,mu_ratio,reduction,transverse_ratio,error_estimate")
+    );
+    let mut n = 0;
+    for line in lines {
+        let f: Vec<f64> = line.split(',').skip(1).map(|x| x.parse().unwrap()).collect();
+        let c = Conditions::vhat(f[0], f[1]).unwrap().with_transverse(Transverse::new(f[4], f[5]).unwrap());
+        let e = Shape::flat().evaluate(&c).unwrap();
+        assert_eq!(
+            (f[6], f[8], f[9]),
+            (e.ratio.mu_ratio, e.transverse_ratio.unwrap_or(0.0), e.error_estimate),
+            "{line}"
+        );
+        n += 1;
+    }
+    assert_eq!(n, 8);
+    let base = ["table", "--amp", "0.5", "--transverse-amp", "1"];
+    for (extra, message) in [
+        (&["--vbar", "0.3", "--method", "stepping"][..], "stiff system"),
+        (&["--vbar", "0.3", "--system-stiffness", "1"], "stiff system"),
+        (&["--transverse-phase", "0:1:1000", "--vbar", "0:1:1000"], "more than the limit"),
+    ] {
+        let mut args = base.to_vec();
+        args.extend(extra);
+        refused(&args, message);
+    }
+}
