@@ -13,9 +13,9 @@ use std::io;
 /// Oscillation across the sliding direction for a table: lists swept like `--amp`.
 #[derive(Args)]
 pub struct TransverseList {
-    /// Amplitudes of an oscillation across the sliding direction, dy/l in pre-slip lengths (each
-    /// >= 0, at most 1e6; the flat punch only): a comma list or start:stop:count. Adds the columns
-    /// transverse_amp, transverse_phase, transverse_ratio and error_estimate; at most 1e5 rows.
+    /// Amplitudes of an oscillation across the sliding direction, dy/l in pre-slip lengths (each at
+    /// least 0, at most 1e6; the flat punch only): a comma list or start:stop:count. Adds the
+    /// columns transverse_amp, transverse_phase, transverse_ratio and error_estimate; 1e5 rows at most.
     #[arg(long, allow_hyphen_values = true, value_parser = list)]
     pub transverse_amp: Option<List>,
     /// Their phases against the normal oscillation, radians (default 0): a comma list or start:stop:count.
