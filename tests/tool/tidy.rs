@@ -22,9 +22,10 @@ const MAX_FILE_LINES: usize = 700;
 /// interfaces (validate's system columns and diverged values, a history's
 /// body columns, fit's values rounded to their errors, unknown columns
 /// refused, the rig's system), and the plane (`--transverse-amp` and
-/// `--transverse-phase`: their flags, the plane's output columns and its
-/// stepper). Growing it is a decision for a commit of its own.
-const MAX_CLI_LINES: usize = 8_800;
+/// `--transverse-phase` for `point` and `table`, the plane's output columns,
+/// its stepper, its two figures and its bench case). Growing it is a
+/// decision for a commit of its own.
+const MAX_CLI_LINES: usize = 9_000;
 
 /// The files under `dir` (recursively) whose names end in one of `exts`,
 /// build outputs left out.
