@@ -124,7 +124,8 @@ pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse) -> Result<Plan
     orbit(&sp)
 }
 
-/// Taylor steps a period may take at most ([`check_work`]).
+/// Taylor steps a period may take at most, estimated before any work from
+/// `int |X'|/(4 B) dtau`; a stiffer slip is refused by name.
 pub const MAX_PERIOD_STEPS: f64 = 2e4;
 
 /// Refuse, before any work, what the walk cannot do in reasonable time: a
