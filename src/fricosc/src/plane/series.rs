@@ -263,6 +263,13 @@ mod tests {
         assert!(geometric.0.iter().all(|&a| (a - 1.0).abs() < 1e-15));
         let h = geometric.step_for(1e-17);
         assert!(h > 0.15 && h < 0.25, "{h}");
+        // Each of the last two terms alone sets the step at its own order.
+        for k in [ORDER - 1, ORDER] {
+            let mut one = Series::ZERO;
+            one.0[k] = 1.0;
+            let h = one.step_for(1e-17);
+            assert!((one.tail(h) / 0.5e-17 - 1.0).abs() < 1e-12, "order {k}: {}", one.tail(h));
+        }
         // The tail is the last two terms' sum: 2^-23 + 2^-24 at h = 1/2.
         assert_eq!(geometric.tail(0.5), 0.5f64.powi(23) + 0.5f64.powi(24));
     }
