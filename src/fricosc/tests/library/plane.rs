@@ -229,8 +229,9 @@ fn extreme_amplitudes_are_answered_or_refused_by_name() {
 /// order), within 2e-7 on each ratio; this catches a wrong event or phase
 /// anywhere in the period, which the 20-digit points alone may not visit.
 /// Where contact is lost the stepper (the seed's scheme, in one dimension
-/// too) settles 4e-7 to 1.2e-6 away from the exact answer at `vhat` near
-/// 0.57, `amp` 1.5 to 2, which two independent mpmath codes confirm: those
+/// too) converges irregularly, as its grid meets the contact's edges: at
+/// `vhat` 0.5678, `amp` 1.5 a plain stepper of the tests' own is 1.6e-6 and
+/// 1.4e-7 off at 640,000 and 2,560,000 steps, too slow for a test; such
 /// points are among the 20-digit ones instead.
 #[test]
 fn spread_points_agree_with_the_extrapolated_stepper() {
