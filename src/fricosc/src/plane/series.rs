@@ -34,6 +34,7 @@ fn inverse_factorials() -> [f64; LEN] {
 pub(crate) struct Series(pub(crate) [f64; LEN]);
 
 impl Series {
+    #[cfg(test)]
     pub(crate) const ZERO: Series = Series([0.0; LEN]);
 
     /// The constant `c`.

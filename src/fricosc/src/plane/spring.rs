@@ -15,14 +15,15 @@
 //! X'_x (y2^2 - y1^2) + 2 X'_y y1 y2 - B' |y|^2` falls through 0.
 //!
 //! **Contact.** Where contact is regained (`B = 0`, `B' = beta > 0`) the spring
-//! reloads from `f = 0`: it sticks if `|X'| <= beta`; otherwise it slips from
-//! the regular singular point `t B~(t) y' = ...`: `y = t^sigma z`, `sigma =
-//! |X'|/(2 beta)`, `z` analytic and starting along `X'` (Frobenius; the other
-//! solution, `t^-sigma`, is unbounded). Where contact is lost, the slip
-//! aligns with `X'` while `B -> 0`; the walk stops once the rest of `int B`
-//! is below [`LOSS_TAIL`] and books that rest along the current direction.
-//! Where `B` nearly vanishes (a touch, `amp = level`, or a window of contact
-//! that barely closes) a slip follows its slow manifold ([`layer`]).
+//! reloads from `f = 0`: it sticks if `|X'| <= beta`; otherwise it slips,
+//! starting along `X'` (the one bounded solution of `t B~(t) th' = ...` at the
+//! regular singular point; the others grow like `t^-|X'|/beta`). Where contact
+//! is lost, the slip aligns with `X'` while `B -> 0`; the walk stops once the
+//! rest of `int B` is below [`LOSS_TAIL`] and books that rest along the
+//! current direction. Both happen inside the thin layer where `B` is small,
+//! and a slip there follows its slow manifold ([`layer`]).
+//! The layer also holds a touch of zero (`amp = level`) and a window of
+//! contact that barely closes.
 
 use super::drive::{Bound, Drive};
 use super::layer::{self, Layer, ON_MANIFOLD};
@@ -302,49 +303,6 @@ fn regular(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> [Series; 2] {
     [y1, y2]
 }
 
-/// `B(tc + t)/t` where `B(tc) = 0`: `amp (cos tc (1 - cos t)/t + sin tc sin t/t)`.
-fn bound_over_t(amp: f64, tc: f64) -> Series {
-    let (s, c) = tc.sin_cos();
-    let mut out = Series::ZERO;
-    let mut fact = 1.0; // k!
-    for k in 1..=ORDER + 2 {
-        fact *= k as f64;
-        let sign = if (k / 2) % 2 == 0 { 1.0 } else { -1.0 };
-        if k % 2 == 0 && k - 1 <= ORDER {
-            // (1 - cos t)/t: -(-1)^(k/2) t^(k-1)/k!
-            out.0[k - 1] += -sign * c / fact;
-        } else if k % 2 == 1 && k - 1 <= ORDER {
-            // sin t/t: (-1)^((k-1)/2) t^(k-1)/k!
-            out.0[k - 1] += sign * s / fact;
-        }
-    }
-    out * amp
-}
-
-/// The Frobenius series `z` of a slip from contact regained at `tc` (module
-/// docs): `((k + sigma) I - N0) z_k = sum_{j >= 1} N_j z_{k-j}`, `N = M t`.
-fn frobenius(amp: f64, tc: f64, xd: &[Series; 2]) -> [Series; 2] {
-    let r = bound_over_t(amp, tc).recip();
-    let (na, nb) = (xd[0] * r * 0.5, xd[1] * r * 0.5);
-    let sigma = na.0[0].hypot(nb.0[0]);
-    let z0 = half([xd[0].0[0], xd[1].0[0]]);
-    let (mut z1, mut z2) = (Series::constant(z0[0]), Series::constant(z0[1]));
-    for k in 1..=ORDER {
-        let (mut r1, mut r2) = (0.0, 0.0);
-        for j in 1..=k {
-            let (a, c) = (na.0[j], nb.0[j]);
-            let (u, v) = (z1.0[k - j], z2.0[k - j]);
-            r1 += c * v - a * u;
-            r2 += c * u + a * v;
-        }
-        let d = k as f64 + sigma;
-        let det = k as f64 * (k as f64 + 2.0 * sigma);
-        z1.0[k] = ((d - na.0[0]) * r1 + nb.0[0] * r2) / det;
-        z2.0[k] = (nb.0[0] * r1 + (d + na.0[0]) * r2) / det;
-    }
-    [z1, z2]
-}
-
 impl Walker<'_> {
     /// One slip step along the half-angle series until the slip rate falls through 0.
     fn slip(&mut self, y0: [f64; 2], regain: bool, end: f64) -> Result<Phase> {
@@ -372,10 +330,8 @@ impl Walker<'_> {
                 None => target = target.min(ly.next_entry(tau)),
             }
         }
-        let (y, rho) = match (regain, bound.edge) {
-            (true, Some(e)) => (frobenius(bound.amp, tau, &xd), (2.0 * e).min(std::f64::consts::TAU - 2.0 * e)),
-            _ => (regular(&b, &xd, y0), bound.singularity_distance(tau)),
-        };
+        // A slip from contact starts inside the layer, on its manifold (above).
+        let (y, rho) = (regular(&b, &xd, y0), bound.singularity_distance(tau));
         let horizon = target - tau;
         let n = y[0] * y[0] + y[1] * y[1];
         let (c2, s2) = ((y[1] - y[0]) * (y[1] + y[0]), y[0] * y[1] * 2.0);
