@@ -329,16 +329,16 @@ fn plane_case(
             stepping_best = stepping_best.filter(|&(e, _)| e <= err).or(Some((err, t)));
         }
     }
-    if let (Some((ee, et)), Some((se, st))) = (exact_best, stepping_best) {
-        let r = Ratio {
-            case: name.into(),
-            exact_error: ee,
-            exact_time_s: et,
-            stepping_error: se,
-            stepping_time_s: st,
-            time_ratio: st / et,
-        };
-        ratios.push(r);
+    if let (Some(exact), Some(stepping)) = (exact_best, stepping_best) {
+        ratios.push(Ratio::of(name, exact, stepping));
+    }
+}
+
+impl Ratio {
+    /// The case's `(error, time)` of the exact solver and of the stepper.
+    fn of(case: &str, (exact_error, exact_time_s): (f64, f64), (stepping_error, stepping_time_s): (f64, f64)) -> Ratio {
+        let time_ratio = stepping_time_s / exact_time_s;
+        Ratio { case: case.into(), exact_error, exact_time_s, stepping_error, stepping_time_s, time_ratio }
     }
 }
 
@@ -372,16 +372,9 @@ pub fn measure(quick: bool) -> Report {
         let mut c = Collector { case: name, reference: refv, points: &mut points, failures: &mut failures };
         let exact_best = exact_runs(&mut c, &shape, vbar, amp, tm);
         let stepping_best = stepping_runs(&mut c, &shape, vbar, amp, tm, quick);
-        if let (Some((ee, et)), Some((se, st))) = (exact_best, stepping_best) {
-            if ee <= se {
-                ratios.push(Ratio {
-                    case: name.into(),
-                    exact_error: ee,
-                    exact_time_s: et,
-                    stepping_error: se,
-                    stepping_time_s: st,
-                    time_ratio: st / et,
-                });
+        if let (Some(exact), Some(stepping)) = (exact_best, stepping_best) {
+            if exact.0 <= stepping.0 {
+                ratios.push(Ratio::of(name, exact, stepping));
             }
         }
     }
