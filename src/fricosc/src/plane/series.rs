@@ -122,8 +122,9 @@ impl Series {
             scale *= h;
         }
         let p = &p[..LEN - skip];
-        // Most steps hold no event: the disc of radius 1 about 0 covers the step.
-        if p[0] > 0.0 && excluded(p, 1.0) {
+        // Most steps hold no event: the disc of radius 1 about 0 covers the
+        // step (a sign the series keeps has no fall, as `isolate` would find).
+        if excluded(p, 1.0) {
             return Ok(None);
         }
         let mut budget = 4096usize;
@@ -295,5 +296,7 @@ mod tests {
         assert!(a <= 0.5 && 0.5 <= b, "{a} {b}");
         // Beyond the step: none.
         assert_eq!(r.first_fall(2, 0.4).unwrap(), None);
+        // A series that keeps its sign has no fall, negative or positive.
+        assert_eq!((r * -1.0).first_fall(2, 0.4).unwrap(), None);
     }
 }
