@@ -134,11 +134,12 @@ pub const MAX_PERIOD_STEPS: f64 = 2e4;
 /// steps outside the thin layer (64 samples of the period); beyond
 /// [`MAX_PERIOD_STEPS`] the drive named (the largest) is refused: there the
 /// slip is the rigid body's to within `B/|X'|` (`stepper::rigid_limit`). A
-/// bound that vanishes where the body is at rest has no reloading direction.
+/// bound that (nearly) touches zero at `tau = 0` (`|amp - 1| <= 1e-5`) where
+/// the body (nearly) rests has no reloading direction.
 fn check_work(sp: &Spring, drives: [(&'static str, f64); 3]) -> Result<()> {
     let (name, value) = drives.into_iter().fold(("vhat", 0.0), |a, d| if d.1 > a.1 { d } else { a });
     let v0 = sp.drive.velocity_at(0.0);
-    if sp.bound.amp >= sp.bound.level - 1e-5 && v0[0].hypot(v0[1]) < 1e-6 * value.max(1.0) {
+    if (sp.bound.amp - sp.bound.level).abs() <= 1e-5 && v0[0].hypot(v0[1]) < 1e-6 * value.max(1.0) {
         return Err(Error::param(
             "amp",
             sp.bound.amp,
@@ -188,9 +189,10 @@ fn orbit(sp: &Spring) -> Result<PlaneEvaluation> {
         let res = residual(f, &w);
         if res <= 8.0 * f64::EPSILON * (1f64.max(f[0].abs()).max(f[1].abs())) {
             let m = multiplier(&w.jacobian);
-            // A period that only sticks repeats from any start: the relaxed start's is the answer.
-            if m >= 1.0 && !(w.stuck && f == [0.0; 2]) {
-                break;
+            // A neutral orbit (a period that only sticks repeats from any
+            // start): the one the relaxed start reaches is the answer.
+            if m >= 1.0 {
+                return relaxed(sp, total, periods);
             }
             return answer(&w, total, m, res, periods);
         }
@@ -227,6 +229,25 @@ fn orbit(sp: &Spring) -> Result<PlaneEvaluation> {
         };
     }
     Err(Error::Internal { what: format!("no attracting periodic orbit in the plane after {periods} periods") })
+}
+
+/// Periods run from the relaxed start at most, where the orbit is neutral.
+const MAX_RELAXED: usize = 400;
+
+/// The orbit the relaxed start reaches, period after period, where Newton's
+/// is neutral (a shakedown into pure stick: every state that sticks all
+/// period is periodic, and the relaxed start picks one).
+fn relaxed(sp: &Spring, total: f64, newton_periods: usize) -> Result<PlaneEvaluation> {
+    let mut f = [0.0; 2];
+    for k in 1..=MAX_RELAXED {
+        let w = sp.walk(Start::Force(0.0, f), TAU)?;
+        let res = (w.end[0] - f[0]).hypot(w.end[1] - f[1]);
+        if res <= 8.0 * f64::EPSILON * (1f64.max(f[0].abs()).max(f[1].abs())) {
+            return answer(&w, total, multiplier(&w.jacobian), res, newton_periods + k);
+        }
+        f = w.end;
+    }
+    Err(Error::Internal { what: format!("a neutral orbit in the plane not reached in {MAX_RELAXED} periods") })
 }
 
 /// Along a drift `d` of a period that only sticks, the first start `f + s d`

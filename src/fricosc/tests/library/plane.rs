@@ -84,6 +84,14 @@ fn a_drive_along_any_line_is_the_one_dimensional_answer_rotated() {
         let err = (mx - one * alpha.cos()).abs().max((my - one * alpha.sin()).abs());
         assert!(err < 8.0 * f64::EPSILON, "amp {amp}: {mx} {my} against {one} rotated: {err:e}");
     }
+    // A swing across alone that shakes down into stick after its first slip:
+    // a neutral orbit, the one the relaxed start reaches (multiplier 1).
+    let (w, psi) = (0.9685365159667086, -2.9696576342511936);
+    let one = Shape::flat().evaluate(&conditions(0.0, 0.0, w, psi)).unwrap().ratio.mu_ratio;
+    let c = Conditions::vhat(0.0, 0.0).unwrap().with_transverse(Transverse::new(w, psi).unwrap());
+    let Report::Plane(r) = Shape::flat().report(&c).unwrap() else { panic!("not a plane report") };
+    assert!((r.transverse_ratio - one).abs() < 8.0 * f64::EPSILON && r.ratio.mu_ratio == 0.0, "{r:?} {one}");
+    assert_eq!(r.multiplier, 1.0);
 }
 
 /// The plane's time stepper converges to the exact values at first order:
@@ -220,6 +228,9 @@ fn extreme_amplitudes_are_answered_or_refused_by_name() {
     assert!(matches!(refused(&c, 1e6, 0.0), fricosc::Error::InvalidParameter { name: "transverse-amp", .. }));
     let at_rest = refused(&conditions(0.0, 1.0, 0.0, 0.0), 1.0, std::f64::consts::FRAC_PI_2);
     assert!(matches!(at_rest, fricosc::Error::InvalidParameter { name: "amp", .. }), "{at_rest}");
+    // A body nearly at rest where the bound does not touch zero at tau = 0 is answered.
+    let resting = plane(&conditions(0.0, 2.6, 0.0, 0.0), 1e-12, 1.0);
+    assert!(resting.ratio.mu_ratio == 0.0 && resting.transverse_ratio.unwrap().abs() < 1e-11, "{resting:?}");
 }
 
 /// 24 points spread over the inputs that keep contact (`amp` 0 to 1 with 1
