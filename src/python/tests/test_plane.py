@@ -2,24 +2,16 @@
 is ``fricosc point --transverse-amp`` bit for bit, ``transverse_amp=0`` the
 point without it, and bad input is refused by name."""
 import json
-import os
-import shutil
-import subprocess
 from typing import Any, Dict
 
 import pytest
 
 import fricosc
+from test_fricosc import cli
 
 
 def _cli(*args: str) -> Dict[str, Any]:
-    exe = shutil.which("fricosc")
-    if exe is None:
-        if os.environ.get("FRICOSC_REQUIRE_BIN"):
-            raise AssertionError("the fricosc binary is not on PATH")
-        pytest.skip("the fricosc binary is not on PATH")
-    out = subprocess.run([exe, "point", *args], check=True, capture_output=True, text=True)
-    result: Dict[str, Any] = json.loads(out.stdout)
+    result: Dict[str, Any] = json.loads(cli("point", *args))
     return result
 
 
