@@ -71,9 +71,11 @@ impl Transverse {
     }
 }
 
-/// An event of the flat punch's period in the plane.
+/// An event of the flat punch's period in the plane (an answer's part, made
+/// by the solver only).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
 pub struct PlaneEvent {
     /// What happens (`slip` is a slip in any direction of the plane).
     pub kind: EventKind,
