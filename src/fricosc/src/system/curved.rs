@@ -32,7 +32,7 @@
 //! (standard error and drift) is added.
 
 use super::mean::batch_mean;
-use super::springs::{Foundation, Spring};
+use super::springs::{Foundation, Record, Spring};
 use super::{Params, SystemReport, MAX_ORBIT, MAX_STEPS, MIN_PERIODS, REPEAT};
 use crate::error::{Error, Result};
 use crate::shape::Shape;
@@ -153,7 +153,7 @@ fn least_period(fd: &Foundation, (x, v, state): (f64, f64, &[Spring]), k: usize,
     let start = (x, v, fd.forces_at_start(x, state));
     let (mut y, mut w, mut s) = (x, v, state.to_vec());
     for p in 1..k {
-        (y, w, _, _) = fd.period(y, w, &mut s, &[]);
+        (y, w, _) = fd.period(y, w, &mut s, &mut Record::default());
         if k.is_multiple_of(p) && distance(&start, &(y, w, fd.forces_at_start(y, &s))) <= 10.0 * closed {
             return p;
         }
@@ -179,7 +179,7 @@ fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
     let mut per_period = vec![];
     let run = |x: &mut f64, v: &mut f64, state: &mut Vec<Spring>, per: &mut Vec<f64>| {
         let int_f;
-        (*x, *v, int_f, _) = fd.period(*x, *v, state, &[]);
+        (*x, *v, int_f) = fd.period(*x, *v, state, &mut Record::default());
         per.push(int_f / (std::f64::consts::TAU * fd.mean_b));
         (*x, *v, fd.forces_at_start(*x, state))
     };
@@ -318,7 +318,9 @@ pub(crate) fn history(shape: &Shape, p: Params, n: usize, taus: &[f64]) -> Resul
     let nodes = discretise(shape, p.amp, n)?;
     let fd = Foundation::new(p, &nodes);
     let (found, (x, v, mut state)) = attractor(&fd)?;
-    let tangential = fd.period(x, v, &mut state, taus).3;
+    let mut rec = Record { samples: taus, ..Record::default() };
+    fd.period(x, v, &mut state, &mut rec);
+    let tangential = rec.forces;
     if fd.chattered() {
         return Err(super::chattering());
     }

@@ -31,27 +31,29 @@
 
 mod critical;
 mod curved;
+mod events;
+mod index;
 mod mean;
 mod orbit;
-mod period;
 mod phase;
+mod reduced;
 mod report;
 mod springs;
 mod tangent;
 
 pub use critical::critical_vbar;
 pub use curved::{DEFAULT_SPRINGS, MAX_CURVED_PERIODS, MAX_SPRINGS, MIN_SPRINGS};
-pub use period::SystemEvent;
+pub use events::SystemEvent;
 pub use phase::Kind;
 pub use report::SystemReport;
 
 use crate::conditions::Conditions;
 use crate::error::{Error, Result};
 use mean::batch_mean;
-use nalgebra::{Matrix3, Vector3};
 use orbit::{close, distance, orbit, ROUNDING};
-use period::Phases;
-use phase::{Params, State, INT_F, V, X, Y0};
+use phase::Params;
+pub(crate) use reduced::{map_k, sample, stated_start, Reduced};
+use springs::Foundation;
 
 /// The system's parameters (module docs), checked where built
 /// ([`System::new`], [`System::with_springs`]): the fields are private, so a
@@ -224,71 +226,6 @@ impl System {
     }
 }
 
-/// The reduced state of the period map: `(x, x', f)` at `tau = 0` and the phase.
-pub(crate) type Reduced = (Kind, Vector3<f64>);
-
-fn reduce(p: &Params, kind: Kind, z: &State) -> Reduced {
-    (kind, Vector3::new(z[X], z[V], p.force(kind, z)))
-}
-
-fn expand(p: &Params, (kind, s): &Reduced) -> State {
-    let mut z = p.start();
-    (z[X], z[V]) = (s[0], s[1]);
-    z[Y0] = s[0] - s[2];
-    if *kind != phase::Kind::Stick {
-        z[Y0] = z[X];
-    }
-    z
-}
-
-/// `k` periods of the map from `s`: the state after them and `int f` over them.
-pub(crate) fn map_k(ph: &Phases, s: &Reduced, k: usize) -> (Reduced, f64) {
-    map_k_events(ph, s, k).0
-}
-
-/// [`map_k`], with the events of its first period and the steps held in it.
-fn map_k_events(ph: &Phases, s: &Reduced, k: usize) -> ((Reduced, f64), Vec<period::SystemEvent>, u64) {
-    let (mut kind, mut z) = (s.0, expand(&ph.p, s));
-    let mut int_f = 0.0;
-    let (held, mut first) = (ph.held(), None);
-    for _ in 0..k {
-        let events;
-        (kind, z, events) = ph.period(kind, z);
-        int_f += z[INT_F];
-        first.get_or_insert((events, ph.held() - held));
-    }
-    let (events, held) = first.unwrap_or_default();
-    ((reduce(&ph.p, kind, &z), int_f), events, held)
-}
-
-/// The Jacobian of a period map `P^k` at a state and the gradient of `int f` over it.
-pub(crate) type Derivatives = (Matrix3<f64>, Vector3<f64>);
-
-/// [`map_k`] with the derivatives of its state and `int f` by `s`'s
-/// (`None` where the map is not differentiable along the way,
-/// [`tangent::Tangent`]). In the reduced state a stuck spring's `y0` is `x -
-/// f`; a slipping or free one's force is fixed by the drive (its `y0` is `x`).
-pub(crate) fn map_k_tangent(ph: &Phases, s: &Reduced, k: usize) -> ((Reduced, f64), Option<Derivatives>) {
-    let (mut kind, mut z) = (s.0, expand(&ph.p, s));
-    let mut tangent = tangent::Tangent::new();
-    let mut int_f = 0.0;
-    for _ in 0..k {
-        (kind, z) = ph.period_tangent(kind, z, &mut tangent);
-        int_f += z[INT_F];
-    }
-    let stuck = |k: Kind| if k == Kind::Stick { 1.0 } else { 0.0 };
-    // d(x, x', int f, y0) / d(x, x', f) at the start, d(x, x', f) / d(x, x', int f, y0) at the end.
-    let mut expand_d = nalgebra::Matrix4x3::new(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0);
-    expand_d[(Y0, 2)] = -stuck(s.0);
-    let st = stuck(kind);
-    let reduce_d = nalgebra::Matrix3x4::new(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, st, 0.0, 0.0, -st);
-    let derivatives = tangent.get().map(|m| {
-        let m = m * expand_d;
-        (reduce_d * m, m.row(INT_F).transpose())
-    });
-    ((reduce(&ph.p, kind, &z), int_f), derivatives)
-}
-
 /// The steady state of `shape` at `c` on the system `sys`: the flat punch
 /// exactly, a curved body by its springs (the foundation as
 /// [`System::springs`] springs, each with its exact events, and as fewer:
@@ -410,16 +347,9 @@ pub fn solve_discretised(shape: &crate::Shape, c: &Conditions, springs: usize) -
     curved::discretised(shape, params(shape, c, sys)?, springs)
 }
 
-/// The contact force, the body's position and velocity at `taus`
-/// (ascending, in `[0, 2 pi)`) over one period from the state `s` at `tau =
-/// 0` ([`attractor`]'s).
-pub(crate) fn sample((ph, s): &(Phases, Reduced), taus: &[f64]) -> Vec<[f64; 3]> {
-    ph.sampled(s.0, expand(&ph.p, s), taus, None).3
-}
-
 /// The attractor from the stated start, and (for a body with mass) the
 /// phases and the state at `tau = 0` of its first period.
-pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, Option<(Phases, Reduced)>)> {
+pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, Option<(Foundation, Reduced)>)> {
     let amp = c.amp();
     if sys.frequency_ratio == 0.0 {
         let r = crate::shape::Shape::flat().evaluate(&massless(c, sys)?)?;
@@ -439,7 +369,7 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
     let p = sys.params(c);
     check_resolvable(&p, 1.0)?;
     check_settles(&p, MAX_PERIODS)?;
-    let ph = Phases::new(p);
+    let fd = reduced::foundation(p);
     let mut s = stated_start(&p);
     let mut seen: Vec<Reduced> = vec![s];
     let mut per_period = vec![];
@@ -448,12 +378,12 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
     // At most MAX_PERIODS, and once MIN_PERIODS are run at most MAX_STEPS
     // sampling steps in all (Newton's attempts among them).
     for n in 1..=MAX_PERIODS {
-        if n > MIN_PERIODS && ph.steps_run() as f64 > MAX_STEPS {
+        if n > MIN_PERIODS && fd.steps_run() as f64 > MAX_STEPS {
             break;
         }
         crate::interrupt::check()?;
-        let (next, int_f) = map_k(&ph, &s, 1);
-        if ph.chattered() {
+        let (next, int_f) = map_k(&fd, &s, 1);
+        if fd.chattered() {
             return Err(chattering());
         }
         per_period.push(int_f);
@@ -465,8 +395,8 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
             (1..=MAX_ORBIT.min(n)).find(|&k| close(back(k), &s, NEAR)).filter(|_| attempts < NEWTON_ATTEMPTS)
         {
             attempts += 1;
-            if let Some((r, at)) = orbit(&ph, s, k, n) {
-                return if ph.chattered() { Err(chattering()) } else { Ok((r, Some((ph, at)))) };
+            if let Some((r, at)) = orbit(&fd, s, k, n) {
+                return if fd.chattered() { Err(chattering()) } else { Ok((r, Some((fd, at)))) };
             }
         }
         seen.push(s);
@@ -482,15 +412,15 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
     let mut tried = vec![1];
     tried.extend(closest.filter(|&k| k != 1));
     for k in tried.into_iter().filter(|&k| k <= last) {
-        if let Some((r, at)) = orbit(&ph, s, k, periods) {
-            return if ph.chattered() { Err(chattering()) } else { Ok((r, Some((ph, at)))) };
+        if let Some((r, at)) = orbit(&fd, s, k, periods) {
+            return if fd.chattered() { Err(chattering()) } else { Ok((r, Some((fd, at)))) };
         }
     }
     crate::interrupt::check()?;
     let mean_b = crate::flat::mean_normal(amp) * std::f64::consts::TAU;
     let tail: Vec<f64> = per_period[periods / 2..].iter().map(|x| x / mean_b).collect();
     let m = batch_mean(&tail, 10);
-    let rounding = orbit::rounding_of_a_period(&ph, &s) / mean_b + ROUNDING * m.mean.abs();
+    let rounding = orbit::rounding_of_a_period(&fd, &s) / mean_b + ROUNDING * m.mean.abs();
     let report = SystemReport {
         mu_ratio: m.mean,
         period: None,
@@ -500,9 +430,9 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
         events: vec![],
         error_estimate: m.error_estimate() + rounding,
         springs: None,
-        held_steps: ph.held(),
+        held_steps: fd.held(),
     };
-    Ok((report, Some((ph, s))))
+    Ok((report, Some((fd, s))))
 }
 
 /// A massless body's problem (`Omega = 0`): the stiff one with the drive
@@ -511,19 +441,6 @@ pub(crate) fn massless(c: &Conditions, sys: &System) -> Result<Conditions> {
     let (t, phase) = c.tangential().unwrap_or((0.0, 0.0));
     let scale = sys.stiffness / (1.0 + sys.stiffness);
     Conditions::vhat(c.as_vhat() * scale, c.amp())?.with_tangential(t * scale, phase)?.with_tol(c.tol())
-}
-
-/// The stated start (module docs) as the period map's state.
-pub(crate) fn stated_start(p: &Params) -> Reduced {
-    let start = p.start();
-    // In contact at the start where `amp < 1`; at `amp = 1` the bound is 0
-    // there: the spring touches as at a regain of contact.
-    let kind = match p.amp.partial_cmp(&1.0) {
-        Some(std::cmp::Ordering::Less) => Kind::Stick,
-        Some(std::cmp::Ordering::Equal) => p.on_contact(&start),
-        _ => Kind::Free,
-    };
-    reduce(p, kind, &start)
 }
 
 /// The flat punch's `mu` of each of the first `n` periods from the stated
@@ -537,14 +454,14 @@ pub(crate) fn transient(c: &Conditions, sys: &System, n: usize) -> Result<Vec<f6
     }
     let p = sys.params(c);
     check_resolvable(&p, 1.0)?;
-    let ph = Phases::new(p);
+    let fd = reduced::foundation(p);
     let mean_b = crate::flat::mean_normal(p.amp) * std::f64::consts::TAU;
     let mut s = stated_start(&p);
     let mut out = Vec::with_capacity(n);
     for _ in 0..n {
         crate::interrupt::check()?;
-        let (next, int_f) = map_k(&ph, &s, 1);
-        if ph.chattered() {
+        let (next, int_f) = map_k(&fd, &s, 1);
+        if fd.chattered() {
             return Err(chattering());
         }
         out.push(int_f / mean_b);
@@ -559,7 +476,7 @@ pub(crate) fn chattering() -> Error {
     Error::Internal {
         what: format!(
             "a phase chattered: more than {} events in a row (a spring) within one sampling step",
-            period::MAX_EVENTS_IN_A_STEP
+            events::MAX_EVENTS_IN_A_STEP
         ),
     }
 }
@@ -611,7 +528,7 @@ mod tests {
             assert!(within_bounds(&mut r(mu, e)).is_err_and(|e| e.is_internal()), "{mu} {e}");
         }
     }
-    use super::phase::{series, Kind, Linear, Params, State, ONE};
+    use super::phase::{series, Linear, Params, State, ONE};
 
     /// The series a sampling step is advanced by against nalgebra's Pade
     /// exponential of the whole generator: `exp(a h) z`, and `h phi_1(a0 h) u`
@@ -621,7 +538,9 @@ mod tests {
     fn the_step_series_meet_the_pade_exponential() {
         let p = Params { kappa: 1.5, omega: 0.4, zeta: 0.05, vhat: 0.3, amp: 0.7, t: 0.8, phase: 0.6 };
         let close = |x: &State, y: &State| (x - y).amax() <= 5e-16 * (1.0 + y.amax());
-        for f in [p.linear(Kind::Stick), p.linear(Kind::Forward), Linear { x: 3.0, one: 0.7, cos: -0.2, y0: 0.0 }] {
+        let stick = Linear { x: 1.0, y0: -1.0, ..Linear::default() };
+        let forward = Linear { one: 1.0, cos: -p.amp, ..Linear::default() };
+        for f in [stick, forward, Linear { x: 3.0, one: 0.7, cos: -0.2, y0: 0.0 }] {
             let a = p.generator_of(f);
             let h = super::springs::sampling_step(&a);
             let pade = (a * h).exp();

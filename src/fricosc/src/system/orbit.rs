@@ -2,8 +2,9 @@
 //! fixed point refined by Newton, its Floquet multipliers and its error
 //! estimate.
 
-use super::period::Phases;
-use super::{map_k, map_k_events, map_k_tangent, Derivatives, Reduced, SystemReport, MAX_STEPS};
+use super::reduced::{map_k, map_k_events, map_k_tangent, Derivatives, Reduced};
+use super::springs::Foundation;
+use super::{SystemReport, MAX_STEPS};
 use nalgebra::{Matrix3, Vector3};
 
 /// Whether two states are the same phase and within `tol` (relative to 1 and the state).
@@ -31,15 +32,15 @@ const ROUNDED: f64 = 1e-8;
 /// close it (to 1e-10, or to the map's rounding), or if it does not attract
 /// (a multiplier of modulus `>= 1 - NEUTRAL`, or none known: not the
 /// attractor the iteration tends to).
-pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option<(SystemReport, Reduced)> {
+pub(super) fn orbit(fd: &Foundation, mut s: Reduced, k: usize, run: usize) -> Option<(SystemReport, Reduced)> {
     let (mut jac, mut grad) = (Matrix3::identity(), Vector3::zeros());
     let mut exact = false;
     let mut last = f64::INFINITY;
     // An iteration maps k periods once, four times where the Jacobian is
     // taken by differences; none starts that could end beyond the whole
     // search's budget of twice its own steps.
-    let iteration = 4.0 * k as f64 * ph.steps_per_period();
-    if ph.steps_run() as f64 + iteration > NEWTON_BUDGET {
+    let iteration = 4.0 * k as f64 * fd.steps_per_period();
+    if fd.steps_run() as f64 + iteration > NEWTON_BUDGET {
         return None;
     }
     for _ in 0..12 {
@@ -47,11 +48,11 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
         if crate::interrupt::check().is_err() {
             return None;
         }
-        if ph.steps_run() as f64 + iteration > NEWTON_BUDGET {
+        if fd.steps_run() as f64 + iteration > NEWTON_BUDGET {
             break;
         }
         let base;
-        (base, (jac, grad), exact) = derivatives(ph, &s, k);
+        (base, (jac, grad), exact) = derivatives(fd, &s, k);
         let r = base.0 .1 - s.1;
         let Some(step) = (jac - Matrix3::identity()).lu().solve(&(-r)) else { break };
         s.1 += step;
@@ -66,7 +67,7 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
         }
         last = size;
     }
-    let ((end, int_f), events, held_steps) = map_k_events(ph, &s, k);
+    let ((end, int_f), events, held_steps) = map_k_events(fd, &s, k);
     // Not closed even to the most rounding allowed, or not attracting: no
     // orbit (and no more maps; an orbit of period d closing after k = m d
     // has the m-th powers of its multipliers).
@@ -81,17 +82,17 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
     // The same map along other steps: where the map's own rounding (a stiff,
     // light body's 1e5 steps a period) exceeds CLOSED, Newton's orbit closes
     // only to it.
-    let perturbed = perturbed(ph, &s, k);
+    let perturbed = perturbed(fd, &s, k);
     let rounding = perturbed.iter().map(|(e, _)| distance(e, &end)).fold(0.0, f64::max);
     let closed = CLOSED.max(4.0 * rounding).min(ROUNDED);
     let closes = |a: &Reduced, b: &Reduced| close(a, b, closed);
     if !closes(&end, &s) {
         return None;
     }
-    if let Some(least) = least_period(ph, &s, k, run, closes) {
+    if let Some(least) = least_period(fd, &s, k, run, closes) {
         return least;
     }
-    let norm = crate::flat::mean_normal(ph.p.amp) * std::f64::consts::TAU * k as f64;
+    let norm = crate::flat::mean_normal(fd.p.amp) * std::f64::consts::TAU * k as f64;
     let mu_ratio = int_f / norm;
     let error_estimate =
         orbit_estimate(&s, (&jac, &grad), (&end, int_f), &perturbed) / norm + ROUNDING * mu_ratio.abs();
@@ -119,19 +120,19 @@ pub(super) fn orbit(ph: &Phases, mut s: Reduced, k: usize, run: usize) -> Option
 /// (An undamped body's period-1 orbit with multiplier -0.99993 was reported
 /// as period 2: `data/system-orbits.json`.)
 fn least_period(
-    ph: &Phases,
+    fd: &Foundation,
     s: &Reduced,
     k: usize,
     run: usize,
     closes: impl Fn(&Reduced, &Reduced) -> bool,
 ) -> Option<Option<(SystemReport, Reduced)>> {
     for d in (1..k).filter(|&d| k.is_multiple_of(d)) {
-        let back = map_k(ph, s, d).0;
+        let back = map_k(fd, s, d).0;
         if closes(&back, s) {
-            return Some(orbit(ph, *s, d, run));
+            return Some(orbit(fd, *s, d, run));
         }
         if distance(&back, s) <= FLIP {
-            if let Some(found) = orbit(ph, *s, d, run).filter(|(_, at)| distance(at, s) <= FLIP) {
+            if let Some(found) = orbit(fd, *s, d, run).filter(|(_, at)| distance(at, s) <= FLIP) {
                 return Some(Some(found));
             }
         }
@@ -215,14 +216,14 @@ fn orbit_estimate(
 const PERTURBED: [f64; 3] = [0.9, 0.8, 0.7];
 
 /// `P^k(s)` and `int f` over it along the sampling steps scaled by each of
-/// [`PERTURBED`] (their steps counted in `ph`'s budget).
-fn perturbed(ph: &Phases, s: &Reduced, k: usize) -> Vec<(Reduced, f64)> {
+/// [`PERTURBED`] (their steps counted in `fd`'s budget).
+fn perturbed(fd: &Foundation, s: &Reduced, k: usize) -> Vec<(Reduced, f64)> {
     PERTURBED
         .iter()
         .map(|&scale| {
-            let other = Phases::with_step_scale(ph.p, scale);
+            let other = fd.rescaled(scale);
             let mapped = map_k(&other, s, k);
-            ph.count(other.steps_run());
+            fd.count(other.steps_run());
             mapped
         })
         .collect()
@@ -233,9 +234,9 @@ fn perturbed(ph: &Phases, s: &Reduced, k: usize) -> Vec<(Reduced, f64)> {
 /// in [`orbit_estimate`]. A mean without period is made of periods rounded
 /// so (a body at 1,300 steps a period put `int f` 2.4e-14 beyond its exact
 /// value, relative, where the periods' scatter and drift were 3e-16).
-pub(super) fn rounding_of_a_period(ph: &Phases, s: &Reduced) -> f64 {
-    let own = map_k(ph, s, 1).1;
-    2.0 * perturbed(ph, s, 1).iter().map(|(_, f)| (f - own).abs()).fold(0.0, f64::max)
+pub(super) fn rounding_of_a_period(fd: &Foundation, s: &Reduced) -> f64 {
+    let own = map_k(fd, s, 1).1;
+    2.0 * perturbed(fd, s, 1).iter().map(|(_, f)| (f - own).abs()).fold(0.0, f64::max)
 }
 
 /// `P^k(s)` and `int f` over it, with the Jacobian of `P^k` at `s` and the
@@ -243,11 +244,11 @@ pub(super) fn rounding_of_a_period(ph: &Phases, s: &Reduced) -> f64 {
 /// ([`super::tangent`]), or where the map is not differentiable on the way
 /// (a held phase) by differences ([`jacobian`]).
 /// Whether the variational equation gave them is the last.
-fn derivatives(ph: &Phases, s: &Reduced, k: usize) -> ((Reduced, f64), Derivatives, bool) {
-    match map_k_tangent(ph, s, k) {
+fn derivatives(fd: &Foundation, s: &Reduced, k: usize) -> ((Reduced, f64), Derivatives, bool) {
+    match map_k_tangent(fd, s, k) {
         (base, Some(d)) => (base, d, true),
         (base, None) => {
-            let d = jacobian(ph, s, k, &base);
+            let d = jacobian(fd, s, k, &base);
             (base, d, false)
         }
     }
@@ -258,14 +259,19 @@ fn derivatives(ph: &Phases, s: &Reduced, k: usize) -> ((Reduced, f64), Derivativ
 /// |s_i|)`, above the map's own rounding, 1e-10 of the state on a stiff
 /// body: relative errors about 1e-6, which leave Newton's convergence
 /// superlinear and the estimate's `(I - J)^-1` as good).
-pub(super) fn jacobian(ph: &Phases, s: &Reduced, k: usize, (p0, f0): &(Reduced, f64)) -> (Matrix3<f64>, Vector3<f64>) {
+pub(super) fn jacobian(
+    fd: &Foundation,
+    s: &Reduced,
+    k: usize,
+    (p0, f0): &(Reduced, f64),
+) -> (Matrix3<f64>, Vector3<f64>) {
     let mut j = Matrix3::zeros();
     let mut g = Vector3::zeros();
     for i in 0..3 {
         let h = 1e-6 * (1.0 + s.1[i].abs());
         let mut a = *s;
         a.1[i] += h;
-        let (pa, fa) = map_k(ph, &a, k);
+        let (pa, fa) = map_k(fd, &a, k);
         j.set_column(i, &((pa.1 - p0.1) / h));
         g[i] = (fa - f0) / h;
     }
@@ -275,9 +281,8 @@ pub(super) fn jacobian(ph: &Phases, s: &Reduced, k: usize, (p0, f0): &(Reduced, 
 #[cfg(test)]
 mod tests {
     use super::{distance, multipliers, orbit, NEWTON_BUDGET};
-    use crate::system::period::Phases;
     use crate::system::phase::Params;
-    use crate::system::{map_k, stated_start};
+    use crate::system::reduced::{foundation, map_k, stated_start};
     use nalgebra::Matrix3;
 
     /// A Jacobian of zeros (a heavily damped body's, by differences) has the
@@ -303,12 +308,12 @@ mod tests {
     fn newton_keeps_to_its_budget() {
         let p = Params { kappa: 1.0, omega: 0.5, zeta: 0.05, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
         let mut s = stated_start(&p);
-        let ph = Phases::new(p);
+        let fd = foundation(p);
         for _ in 0..12 {
-            s = map_k(&ph, &s, 1).0;
+            s = map_k(&fd, &s, 1).0;
         }
-        assert!(orbit(&ph, s, 1, 12).is_some());
-        let spent = Phases::new(p);
+        assert!(orbit(&fd, s, 1, 12).is_some());
+        let spent = foundation(p);
         spent.count((NEWTON_BUDGET - 3.0 * spent.steps_per_period()) as u64);
         assert!(orbit(&spent, s, 1, 12).is_none());
     }

@@ -66,21 +66,6 @@ pub(crate) struct Params {
 }
 
 impl Params {
-    /// The contact force of a phase of kind `kind` as a [`Linear`] form.
-    pub(crate) fn linear(&self, kind: Kind) -> Linear {
-        match kind {
-            Kind::Stick => Linear { x: 1.0, y0: -1.0, ..Linear::default() },
-            Kind::Forward => Linear { one: 1.0, cos: -self.amp, ..Linear::default() },
-            Kind::Backward => Linear { one: -1.0, cos: self.amp, ..Linear::default() },
-            Kind::Free => Linear::default(),
-        }
-    }
-
-    /// `A` of a phase of kind `kind`.
-    pub(crate) fn generator(&self, kind: Kind) -> Generator {
-        self.generator_of(self.linear(kind))
-    }
-
     /// `A` of a phase whose contact force is `f`: the body's row
     /// `Omega^2 x'' = kappa X_d + damp X_d' - damp x' - kappa x - f`, and
     /// `(int f)' = f`.
@@ -106,47 +91,6 @@ impl Params {
         a[(COS, SIN)] = -1.0;
         a[(SIN, COS)] = 1.0;
         a
-    }
-
-    /// The bound `1 - amp cos tau` (unclipped) of the state `z`.
-    pub(crate) fn bound(&self, z: &State) -> f64 {
-        1.0 - self.amp * z[COS]
-    }
-
-    /// The contact force in a phase of kind `kind`.
-    pub(crate) fn force(&self, kind: Kind, z: &State) -> f64 {
-        match kind {
-            Kind::Stick => z[X] - z[Y0],
-            Kind::Forward => self.bound(z),
-            Kind::Backward => -self.bound(z),
-            Kind::Free => 0.0,
-        }
-    }
-
-    /// The event functions of a phase as rows `w` (the function is `w z`,
-    /// positive inside the phase) with the kind that follows where it falls
-    /// through 0: a stick ends where `f` reaches `+-B`, a slip where the
-    /// contact point stops (`x' -+ B' = 0`).
-    pub(crate) fn events(&self, kind: Kind) -> Vec<super::period::Event<Kind>> {
-        let mut to_forward = SMatrix::<f64, 1, 8>::zeros();
-        let mut to_backward = SMatrix::<f64, 1, 8>::zeros();
-        match kind {
-            Kind::Stick => {
-                // B - f = 1 - amp cos - x + y0; f + B = x - y0 + 1 - amp cos.
-                (to_forward[ONE], to_forward[COS], to_forward[X], to_forward[Y0]) = (1.0, -self.amp, -1.0, 1.0);
-                (to_backward[ONE], to_backward[COS], to_backward[X], to_backward[Y0]) = (1.0, -self.amp, 1.0, -1.0);
-                vec![(to_forward, Kind::Forward), (to_backward, Kind::Backward)]
-            }
-            Kind::Forward => {
-                (to_forward[V], to_forward[SIN]) = (1.0, -self.amp);
-                vec![(to_forward, Kind::Stick)]
-            }
-            Kind::Backward => {
-                (to_backward[V], to_backward[SIN]) = (-1.0, -self.amp);
-                vec![(to_backward, Kind::Stick)]
-            }
-            Kind::Free => vec![],
-        }
     }
 
     /// The state at the stated start (`tau = 0`): the body at the drive's

@@ -1,14 +1,16 @@
-//! A curved body on a system: the MDR foundation as `N` springs, each with
-//! its exact events. Spring `i` (weight `w_i`, its share of the contact's
+//! The one period map of a body on a system: the contact as `N` springs
+//! (the flat punch one, a curved body's MDR foundation many), each with its
+//! exact events. Spring `i` (weight `w_i`, its share of the contact's
 //! tangential stiffness) has the bound `B_i = (b_i - amp cos tau)_+`,
 //! `b_i = 1 - G(z_i)`. In a phase where the sets of stuck, forward- and
 //! backward-slipping and free springs are fixed, the total force
 //!
 //! `F = sum_stuck w_i (x - y_i) + sum_fwd w_i B_i - sum_bwd w_i B_i`
 //!
-//! is linear in `(x, 1, cos tau)`, so the phase is the flat punch's linear
-//! system ([`super::phase`]) with other coefficients, advanced in closed
-//! form. A stuck spring slips forward where `x + amp cos tau` reaches its
+//! is linear in `(x, 1, cos tau)`, so the phase is a linear system
+//! ([`super::phase`]), advanced in closed form: a full sampling step by its
+//! matrix exponential, made once per set of springs, a part of one by the
+//! exponential's series. A stuck spring slips forward where `x + amp cos tau` reaches its
 //! level `l_i = y_i + b_i`, backward where `x - amp cos tau` falls to
 //! `m_i = y_i - b_i`: only the extreme level of the stuck set is an event
 //! function. All forward-slipping springs stick again together, where the
@@ -17,15 +19,36 @@
 //! the group slips again as one); likewise backward. Contact is gained and
 //! lost at the closed-form zeros of `B_i`.
 
-use super::period::{first_event, Event, MAX_EVENTS_IN_A_STEP};
-use super::phase::{advance, series, Generator, Linear, Params, State, COS, INT_F, ONE, SIN, TAU, V, X};
-use nalgebra::SMatrix;
-use std::cell::RefCell;
-use std::collections::{BTreeSet, HashMap};
+//! Each step is at most a quarter of the fastest time scale of its phase
+//! (the body's largest rate, and the drive's [`DRIVE_STEP`]), so a step holds
+//! at most one extremum of each event function: a sign change is bracketed
+//! by its step, and a minimum that dips below 0 between two positive samples
+//! (a grazing event) is found from the derivative's sign change
+//! ([`super::events::first_event`]). A function already below 0 where a step
+//! starts (a force a rounding beyond its bound after a switch) ends its
+//! phase at once.
+
+use super::events::{first_event, with_slopes, Event, SystemEvent, MAX_EVENTS_IN_A_STEP};
+use super::index::Index;
+use super::phase::{advance, series, Generator, Kind, Linear, Params, State, COS, INT_F, ONE, SIN, TAU, V, X};
+use super::tangent::{block, Tangent};
+use crate::special::Kahan;
+use nalgebra::{Matrix4, SMatrix};
+use std::cell::{Cell, RefCell};
+use std::collections::HashMap;
 use std::f64::consts::TAU as TWO_PI;
 
 /// Most transitions of zero length in a row before a phase is held for a step.
 const MAX_FLIPS: usize = 8;
+
+/// The longest sampling step of a single spring (the flat punch), a 64th of
+/// the drive's period: each event function of a phase then still has at
+/// most one extremum a step (the drive's terms `cos tau`, `sin tau` have
+/// theirs `pi` apart).
+const DRIVE_STEP: f64 = TWO_PI / 64.0;
+/// The longest sampling step of many springs (a curved body), a 256th:
+/// their answers and estimates (`super::curved`) were measured at it.
+const CURVED_STEP: f64 = TWO_PI / 256.0;
 
 /// What one spring does.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -54,6 +77,31 @@ enum Transition {
     StopBackward,
 }
 
+impl Spring {
+    /// The phase this spring is in.
+    pub(crate) fn kind(&self) -> Kind {
+        match self {
+            Spring::Stuck { .. } => Kind::Stick,
+            Spring::Forward => Kind::Forward,
+            Spring::Backward => Kind::Backward,
+            Spring::Free => Kind::Free,
+        }
+    }
+}
+
+/// What a period records besides its end: the force, the body's position
+/// and velocity at `samples` (ascending in `[0, 2 pi)`) into `forces`, the
+/// events where `events` is given, the map's derivative where `tangent` is.
+/// One record may go through several periods: samples are taken in the
+/// first, events kept from every one, the derivative accumulated.
+#[derive(Default)]
+pub(crate) struct Record<'a> {
+    pub(crate) samples: &'a [f64],
+    pub(crate) forces: Vec<[f64; 3]>,
+    pub(crate) events: Option<Vec<SystemEvent>>,
+    pub(crate) tangent: Option<Tangent>,
+}
+
 /// The springs of one discretisation and the drive.
 pub(crate) struct Foundation {
     pub(crate) p: Params,
@@ -64,17 +112,79 @@ pub(crate) struct Foundation {
     contacts: Vec<(f64, usize, bool)>,
     /// `sum w_i <B_i>`: the mean normal force.
     pub(crate) mean_b: f64,
+    /// The longest sampling step, and the factor on every step (below 1: the
+    /// same exact map rounded along other steps, `super::orbit`).
+    cap: f64,
+    scale: f64,
     /// The sampling step and its exponential of each set of springs met ([`Foundation::step_of`]).
-    steps: RefCell<HashMap<[u64; 3], (f64, Generator)>>,
+    steps: RefCell<HashMap<[u64; 3], Set>>,
     /// Whether a step ran out of events ([`Foundation::chattered`]).
-    chattered: std::cell::Cell<bool>,
+    chattered: Cell<bool>,
     /// Sampling steps (and parts of steps) run so far ([`Foundation::steps_run`]).
-    steps_run: std::cell::Cell<u64>,
+    steps_run: Cell<u64>,
+    /// Steps in which a phase was held ([`MAX_FLIPS`]), so far.
+    held: Cell<u64>,
+}
+
+/// What a set of springs' phases share ([`Foundation::step_of`]): the full
+/// step, `exp(a0 step)`, the generator `a0` without the constant column,
+/// that column `u0 + f.one e`'s parts and their responses `Phi u0`, `Phi e`.
+struct Set {
+    step: f64,
+    exp: Generator,
+    a0: Generator,
+    u0: State,
+    e: State,
+    phi_u0: State,
+    phi_e: State,
+}
+
+/// A phase's generator `a` and full sampling step: its length, `exp(a0 h)`
+/// and `Phi u` ([`Foundation::step_of`]).
+struct FullStep {
+    step: f64,
+    exp: Generator,
+    a: Generator,
+    response: State,
+}
+
+/// Where a period's walk is: the state, the time and `int F`, each summed
+/// compensated (summed plainly, hundreds of steps a period put the period's
+/// end 5e-14 off, and a heavily damped body's `int F` over 8,500 steps 7e-14
+/// beyond its exact value, relative), the next contact change, and the
+/// events in a row at one step and at one instant.
+#[derive(Debug)]
+struct Walk {
+    z: State,
+    tau: f64,
+    clock: Kahan,
+    int_f: Kahan,
+    next: usize,
+    flips: usize,
+    in_step: usize,
+}
+
+impl Walk {
+    /// The state `z` reached after `h` more (`last`: the period's end).
+    /// No row of a generator reads `int F`: each step starts it at 0 and its
+    /// increment is summed here.
+    fn arrive(&mut self, mut z: State, h: f64, last: bool) {
+        self.clock.add(h);
+        self.tau = if last { TWO_PI } else { self.clock.sum };
+        z[TAU] = self.tau;
+        self.int_f.add(std::mem::take(&mut z[INT_F]));
+        self.z = z;
+    }
 }
 
 impl Foundation {
     /// Springs `(w_i, b_i)` (each `b_i > -amp`: it touches in a period).
     pub(crate) fn new(p: Params, springs: &[(f64, f64)]) -> Foundation {
+        Foundation::with_step_scale(p, springs, 1.0)
+    }
+
+    /// [`Foundation::new`] with every sampling step scaled by `scale` (at most 1).
+    pub(crate) fn with_step_scale(p: Params, springs: &[(f64, f64)], scale: f64) -> Foundation {
         let (w, b): (Vec<f64>, Vec<f64>) = springs.iter().copied().unzip();
         let mut contacts = vec![];
         for (i, &bi) in b.iter().enumerate() {
@@ -87,8 +197,21 @@ impl Foundation {
         contacts.sort_by(|x, y| x.0.total_cmp(&y.0));
         let mean = |bi: f64| if p.amp == 0.0 { bi } else { p.amp * crate::model::spring::mean_normal(bi / p.amp) };
         let mean_b = w.iter().zip(&b).map(|(wi, &bi)| wi * mean(bi)).sum();
-        let (steps, chattered, steps_run) = (RefCell::default(), std::cell::Cell::new(false), std::cell::Cell::new(0));
-        Foundation { p, w, b, contacts, mean_b, steps, chattered, steps_run }
+        let cap = if w.len() == 1 { DRIVE_STEP } else { CURVED_STEP };
+        let (steps, chattered, steps_run, held) = (RefCell::default(), Cell::new(false), Cell::new(0), Cell::new(0));
+        Foundation { p, w, b, contacts, mean_b, cap, scale, steps, chattered, steps_run, held }
+    }
+
+    /// The same springs with every sampling step scaled by `scale`.
+    pub(crate) fn rescaled(&self, scale: f64) -> Foundation {
+        let springs: Vec<(f64, f64)> = self.w.iter().copied().zip(self.b.iter().copied()).collect();
+        Foundation::with_step_scale(self.p, &springs, scale)
+    }
+
+    /// Sampling steps a period takes at most (every spring stuck: the stiffest phase).
+    pub(crate) fn steps_per_period(&self) -> f64 {
+        let a = self.p.generator_of(Linear { x: self.w.iter().sum(), ..Linear::default() });
+        TWO_PI / (self.scale * step_within(&a, self.cap))
     }
 
     /// The state at the stated start: springs in contact at `tau = 0` (their
@@ -109,31 +232,44 @@ impl Foundation {
         (f, self.events(lo, hi, !ix.forward.is_empty(), !ix.backward.is_empty()))
     }
 
-    /// The sampling step of the phase whose force is `f` (its generator
-    /// `a`), and `exp(a0 step)`, `a0` the generator without its column of the
-    /// constant state `1`. That column is the only one the springs' levels
-    /// enter (`f.one`); the others depend on which springs stick and which
-    /// slip, a set met again and again (on a paraboloid of 64 springs 221 sets
-    /// in 5,021 phases), so each set's exponential is made once. A full step
-    /// is then `z -> exp(a0 h) z + z_1 Phi u` ([`Foundation::constant_response`]).
-    fn step_of(&self, f: Linear, a: &Generator) -> (f64, Generator) {
+    /// The full step of the phase whose force is `f` (its generator `a`).
+    /// With `a0` the generator without its column `u` of the constant state
+    /// `1`, a full step is `z -> exp(a0 h) z + z_1 Phi u`, `Phi u = int_0^h
+    /// exp(a0 s) ds u`. The springs' levels enter only `u`, through `f.one`:
+    /// `u = u0 + f.one e` (`e` the column `(0, -1/Omega^2, 1, 0, ...)`); the
+    /// rest depends on which springs stick and which slip, a set met again
+    /// and again (on a paraboloid of 64 springs 221 sets in 5,021 phases; the
+    /// flat punch's four), so each set's step, `exp(a0 h)`, `Phi u0` and `Phi e`
+    /// are made once, and a phase's response is `Phi u0 + f.one Phi e`.
+    fn step_of(&self, f: Linear) -> FullStep {
         let key = [f.x.to_bits(), f.y0.to_bits(), f.cos.to_bits()];
         let mut steps = self.steps.borrow_mut();
         if steps.len() > MAX_CACHED_SETS {
             steps.clear();
         }
-        *steps.entry(key).or_insert_with(|| {
-            let step = sampling_step(a);
-            (step, (without_constant(a) * step).exp())
-        })
+        let set = steps.entry(key).or_insert_with(|| {
+            let a = self.p.generator_of(Linear { one: 0.0, ..f });
+            let step = self.scale * step_within(&a, self.cap);
+            let (a0, u0) = (without_constant(&a), a.column(ONE).into_owned());
+            let mut e = State::zeros();
+            (e[V], e[INT_F]) = (-1.0 / (self.p.omega * self.p.omega), 1.0);
+            let phi = |u: &State| Self::constant_response(&a0, u, step);
+            let (phi_u0, phi_e) = (phi(&u0), phi(&e));
+            Set { step, exp: (a0 * step).exp(), a0, u0, e, phi_u0, phi_e }
+        });
+        let mut a = set.a0;
+        a.set_column(ONE, &(set.u0 + set.e * f.one));
+        FullStep { step: set.step, exp: set.exp, a, response: set.phi_u0 + set.phi_e * f.one }
     }
 
-    /// `Phi u = int_0^h exp(a0 s) ds u = h phi_1(a0 h) u` for `u` the column
-    /// of `1` in `a` (`a0` that generator without it). Beyond the series it is
-    /// `exp(a h) e_1 - e_1`, the same by the Pade exponential of `a`.
-    fn constant_response(a: &Generator, h: f64) -> State {
-        let u = a.column(ONE).into_owned();
-        series(&without_constant(a), &(u * h), h, 1).unwrap_or_else(|| {
+    /// `Phi u = int_0^h exp(a0 s) ds u = h phi_1(a0 h) u` (`a0` a generator
+    /// without its column of the constant state `1`). Beyond the series it is
+    /// `exp(a h) e_1 - e_1` for `a` the generator `a0` with `u` as that column,
+    /// by the Pade exponential.
+    fn constant_response(a0: &Generator, u: &State, h: f64) -> State {
+        series(a0, &(u * h), h, 1).unwrap_or_else(|| {
+            let mut a = *a0;
+            a.set_column(ONE, u);
             let mut d = (a * h).exp().column(ONE).into_owned();
             d[ONE] -= 1.0;
             d
@@ -141,9 +277,20 @@ impl Foundation {
     }
 
     /// Sampling steps run by every period so far (a step cut short by an
-    /// event counts as one): the work budget of a search.
+    /// event counts as one), those counted in by [`Foundation::count`]
+    /// included: the work budget of a search.
     pub(crate) fn steps_run(&self) -> u64 {
         self.steps_run.get()
+    }
+
+    /// Count `steps` run elsewhere (the same map along other steps) in.
+    pub(crate) fn count(&self, steps: u64) {
+        self.steps_run.set(self.steps_run.get() + steps);
+    }
+
+    /// Steps in which a phase was held so far (`SystemReport::held_steps`).
+    pub(crate) fn held(&self) -> u64 {
+        self.held.get()
     }
 
     /// Whether a step run so far held more events in a row than
@@ -184,7 +331,7 @@ impl Foundation {
     /// The transition `t` at the state `z`: the springs it concerns found
     /// through the index `ix` (the stuck ones at a level, or a slipping
     /// group), each changed in `springs` and in `ix`.
-    fn apply(&self, t: Transition, springs: &mut [Spring], z: &State, ix: &mut Index) {
+    fn apply(&self, t: Transition, springs: &mut [Spring], z: &State, ix: &mut Index, rec: &mut Record) {
         let amp = self.p.amp;
         let moved = match t {
             Transition::SlipForward(level) => ix.stuck_at_or_below(level),
@@ -206,16 +353,33 @@ impl Foundation {
                     Spring::Stuck { l: m + 2.0 * bi, m }
                 }
             };
-            ix.change(i, springs[i], new);
-            springs[i] = new;
+            self.changed(i, springs, new, ix, rec);
         }
+        if let Some(events) = rec.events.as_mut() {
+            let kind = match t {
+                Transition::SlipForward(_) => Kind::Forward,
+                Transition::SlipBackward(_) => Kind::Backward,
+                Transition::StopForward | Transition::StopBackward => Kind::Stick,
+            };
+            let f = ix.force(amp);
+            events.push(SystemEvent { kind, tau: z[TAU], force: f.x * z[X] + f.one + f.cos * z[COS] });
+        }
+    }
+
+    /// Spring `i` becomes `new`: in `springs`, the index and the derivative.
+    fn changed(&self, i: usize, springs: &mut [Spring], new: Spring, ix: &mut Index, rec: &mut Record) {
+        ix.change(i, springs[i], new);
+        if let Some(t) = rec.tangent.as_mut() {
+            t.change(i, self.w[i], springs[i], new);
+        }
+        springs[i] = new;
     }
 
     /// Spring `i` touches (`gained`) or leaves: a spring touching is stuck at
     /// `f = 0`, unless the body outruns the bound's growth `amp sin tau`.
-    fn contact(&self, i: usize, gained: bool, spring: &mut Spring, z: &State) {
+    fn contact(&self, i: usize, gained: bool, z: &State) -> Spring {
         let rise = self.p.amp * z[SIN];
-        *spring = if !gained {
+        if !gained {
             Spring::Free
         } else if z[V] > rise {
             Spring::Forward
@@ -223,7 +387,7 @@ impl Foundation {
             Spring::Backward
         } else {
             Spring::Stuck { l: z[X] + self.b[i], m: z[X] - self.b[i] }
-        };
+        }
     }
 
     /// Each spring's force at `tau = 0` of the state `(x, springs)`, with its kind.
@@ -242,82 +406,16 @@ impl Foundation {
     }
 
     /// One period from `tau = 0` of the body `(x, x')` and `springs`
-    /// (updated): the body's state at `2 pi` shifted back by a period of the
-    /// drive, `int F` over the period, and `F`, the body's position and
-    /// velocity at each of `samples` (ascending in `[0, 2 pi)`).
-    pub(crate) fn period(
-        &self,
-        x: f64,
-        v: f64,
-        springs: &mut [Spring],
-        samples: &[f64],
-    ) -> (f64, f64, f64, Vec<[f64; 3]>) {
+    /// (updated), recording into `rec`: the body's state at `2 pi` shifted
+    /// back by a period of the drive (the levels too), and `int F` over the period.
+    pub(crate) fn period(&self, x: f64, v: f64, springs: &mut [Spring], rec: &mut Record) -> (f64, f64, f64) {
         let mut z = self.p.start();
         (z[X], z[V], z[INT_F]) = (x, v, 0.0);
-        // `int f` summed step by step, compensated (`super::period`'s reason).
-        let mut int_f = crate::special::Kahan::default();
-        let mut forces = Vec::with_capacity(samples.len());
-        let (mut tau, mut next, mut flips, mut in_step) = (0.0, 0, 0, 0);
-        // The time summed compensated (`super::period`'s reason).
-        let mut clock = crate::special::Kahan::default();
-        let limit = MAX_EVENTS_IN_A_STEP * (springs.len() + 1);
+        let (clock, int_f) = (Kahan::default(), Kahan::default());
+        let mut walk = Walk { z, tau: 0.0, clock, int_f, next: 0, flips: 0, in_step: 0 };
         let mut ix = Index::new(&self.w, &self.b, springs);
-        while tau < TWO_PI {
-            let (f, events) = self.phase(&ix);
-            let a = self.p.generator_of(f);
-            let (step, e0) = self.step_of(f, &a);
-            // Made at the phase's first full step.
-            let mut response = None;
-            let events = super::period::with_slopes(&a, events);
-            loop {
-                self.steps_run.set(self.steps_run.get() + 1);
-                let rest = TWO_PI - tau;
-                let mut h = step.min(rest);
-                let contact = self.contacts.get(next).map(|c| c.0).filter(|&t| t <= tau + h);
-                if let Some(t) = contact {
-                    h = (t - tau).max(0.0);
-                }
-                let end = if h == step {
-                    e0 * z + *response.get_or_insert_with(|| Self::constant_response(&a, step)) * z[ONE]
-                } else {
-                    advance(&a, &z, h)
-                };
-                let budget = in_step < limit;
-                self.chattered.set(self.chattered.get() || !budget);
-                let event = if flips < MAX_FLIPS && budget { first_event(&a, &events, &z, h, &end) } else { None };
-                let reach = tau + event.map_or(h, |e| e.0);
-                while let Some(&at) = samples.get(forces.len()).filter(|&&at| at <= reach) {
-                    let zs = advance(&a, &z, (at - tau).max(0.0));
-                    forces.push([f.x * zs[X] + f.one + f.cos * zs[COS], zs[X], zs[V]]);
-                }
-                if let Some((d, t)) = event {
-                    in_step += 1;
-                    flips = if d == 0.0 { flips + 1 } else { 0 };
-                    z = advance(&a, &z, d);
-                    int_f.add(std::mem::take(&mut z[INT_F]));
-                    clock.add(d);
-                    (tau, z[TAU]) = (clock.sum, clock.sum);
-                    self.apply(t, springs, &z, &mut ix);
-                    break;
-                }
-                (flips, in_step) = (0, 0);
-                clock.add(h);
-                (z, tau) = (end, if h == rest { TWO_PI } else { clock.sum });
-                z[TAU] = tau;
-                int_f.add(std::mem::take(&mut z[INT_F]));
-                if let Some(t) = contact {
-                    while let Some(&(_, i, gained)) = self.contacts.get(next).filter(|c| c.0 == t) {
-                        let old = springs[i];
-                        self.contact(i, gained, &mut springs[i], &z);
-                        ix.change(i, old, springs[i]);
-                        next += 1;
-                    }
-                    break;
-                }
-                if tau >= TWO_PI {
-                    break;
-                }
-            }
+        while walk.tau < TWO_PI {
+            self.phase_steps(&mut walk, springs, &mut ix, rec);
         }
         let shift = TWO_PI * self.p.vhat;
         for s in springs.iter_mut() {
@@ -325,145 +423,77 @@ impl Foundation {
                 (*l, *m) = (*l - shift, *m - shift);
             }
         }
-        (z[X] - shift, z[V], int_f.sum, forces)
-    }
-}
-
-/// The springs' kinds as the phases need them, kept through each change of
-/// a spring (a period's events touch each spring a few times, so a period
-/// costs `N log N`, not `N` per event): the stuck ones ordered by their
-/// levels `l` and `m`, the slipping groups, and the sums the total force is
-/// made of ([`Index::force`]). The sums are exact, integers in units of
-/// [`UNIT`] of each spring's term (rounded once), so a set of springs gives
-/// the same force however it was reached, as a sum made afresh would.
-struct Index<'a> {
-    w: &'a [f64],
-    b: &'a [f64],
-    by_l: BTreeSet<(i64, usize)>,
-    by_m: BTreeSet<(i64, usize)>,
-    forward: Vec<usize>,
-    backward: Vec<usize>,
-    /// Each slipping spring's place in its group.
-    place: Vec<usize>,
-    /// `sum w_i` over the stuck, forward and backward springs, and the
-    /// constant term `sum_stuck w_i (b_i - l_i) + sum_fwd w_i b_i - sum_bwd w_i b_i`.
-    stuck: i128,
-    fwd: i128,
-    bwd: i128,
-    one: i128,
-}
-
-/// The unit of [`Index`]'s sums: terms up to `2^66` (a body `10^19`
-/// spring lengths away) are held to `2^-60`.
-const UNIT: f64 = 1.0 / (1u64 << 60) as f64;
-
-/// `x` in units of [`UNIT`], rounded.
-fn fixed(x: f64) -> i128 {
-    (x / UNIT).round() as i128
-}
-
-fn float(n: i128) -> f64 {
-    n as f64 * UNIT
-}
-
-/// A level's key in the total order of `f64` (`-0` taken as `0`); the map is
-/// its own inverse on the bits.
-fn key(x: f64) -> i64 {
-    let b = (x + 0.0).to_bits() as i64;
-    b ^ (((b >> 63) as u64) >> 1) as i64
-}
-
-fn level(k: i64) -> f64 {
-    f64::from_bits((k ^ (((k >> 63) as u64) >> 1) as i64) as u64)
-}
-
-impl<'a> Index<'a> {
-    fn new(w: &'a [f64], b: &'a [f64], springs: &[Spring]) -> Index<'a> {
-        let (by_l, by_m) = (BTreeSet::new(), BTreeSet::new());
-        let place = vec![0; springs.len()];
-        let mut ix =
-            Index { w, b, by_l, by_m, forward: vec![], backward: vec![], place, stuck: 0, fwd: 0, bwd: 0, one: 0 };
-        for (i, &s) in springs.iter().enumerate() {
-            ix.add(i, s, 1);
-        }
-        ix
+        (walk.z[X] - shift, walk.z[V], walk.int_f.sum)
     }
 
-    /// Spring `i` changed from `old` to `new`.
-    fn change(&mut self, i: usize, old: Spring, new: Spring) {
-        self.add(i, old, -1);
-        self.add(i, new, 1);
-    }
-
-    /// Spring `i` in the state `s` added (`sign` 1) or taken out (-1).
-    fn add(&mut self, i: usize, s: Spring, sign: i128) {
-        let (wi, bi) = (self.w[i], self.b[i]);
-        match s {
-            Spring::Stuck { l, m } => {
-                if sign == 1 {
-                    self.by_l.insert((key(l), i));
-                    self.by_m.insert((key(m), i));
-                } else {
-                    self.by_l.remove(&(key(l), i));
-                    self.by_m.remove(&(key(m), i));
+    /// The steps of one phase (the springs' kinds fixed) up to its first
+    /// event, a change of contact or the period's end.
+    fn phase_steps(&self, walk: &mut Walk, springs: &mut [Spring], ix: &mut Index, rec: &mut Record) {
+        let (f, events) = self.phase(ix);
+        let full_step = self.step_of(f);
+        let (step, e0, response, a) = (full_step.step, &full_step.exp, &full_step.response, full_step.a);
+        let events = with_slopes(&a, events);
+        // Made at the phase's first full step.
+        let mut e4: Option<Matrix4<f64>> = None;
+        let limit = MAX_EVENTS_IN_A_STEP * (springs.len() + 1);
+        loop {
+            self.count(1);
+            let rest = TWO_PI - walk.tau;
+            let mut h = step.min(rest);
+            let contact = self.contacts.get(walk.next).map(|c| c.0).filter(|&t| t <= walk.tau + h);
+            if let Some(t) = contact {
+                h = (t - walk.tau).max(0.0);
+            }
+            let full = h == step;
+            let end = if full { e0 * walk.z + response * walk.z[ONE] } else { advance(&a, &walk.z, h) };
+            let budget = walk.in_step < limit;
+            self.chattered.set(self.chattered.get() || !budget);
+            if walk.flips >= MAX_FLIPS {
+                self.held.set(self.held.get() + 1);
+                rec.tangent.as_mut().map(Tangent::lose);
+            }
+            let event =
+                if walk.flips < MAX_FLIPS && budget { first_event(&a, &events, &walk.z, h, &end) } else { None };
+            let reach = walk.tau + event.map_or(h, |e| e.0);
+            while let Some(&at) = rec.samples.get(rec.forces.len()).filter(|&&at| at <= reach) {
+                let zs = advance(&a, &walk.z, (at - walk.tau).max(0.0));
+                rec.forces.push([f.x * zs[X] + f.one + f.cos * zs[COS], zs[X], zs[V]]);
+            }
+            if let Some((d, t)) = event {
+                walk.in_step += 1;
+                walk.flips = if d == 0.0 { walk.flips + 1 } else { 0 };
+                if let Some(tangent) = rec.tangent.as_mut() {
+                    tangent.step(&self.p, &a, d, None);
                 }
-                self.stuck += sign * fixed(wi);
-                self.one += sign * fixed(wi * (bi - l));
+                walk.arrive(advance(&a, &walk.z, d), d, false);
+                self.apply(t, springs, &walk.z, ix, rec);
+                return;
             }
-            Spring::Forward => {
-                self.fwd += sign * fixed(wi);
-                self.one += sign * fixed(wi * bi);
-                group(&mut self.forward, &mut self.place, i, sign == 1);
+            (walk.flips, walk.in_step) = (0, 0);
+            if let Some(tangent) = rec.tangent.as_mut() {
+                let e = full.then(|| *e4.get_or_insert_with(|| (block(&self.p, &a) * step).exp()));
+                tangent.step(&self.p, &a, h, e.as_ref());
             }
-            Spring::Backward => {
-                self.bwd += sign * fixed(wi);
-                self.one -= sign * fixed(wi * bi);
-                group(&mut self.backward, &mut self.place, i, sign == 1);
+            walk.arrive(end, h, h == rest);
+            if let Some(t) = contact {
+                self.contacts_at(t, walk, springs, ix, rec);
+                return;
             }
-            Spring::Free => {}
+            if walk.tau >= TWO_PI {
+                return;
+            }
         }
     }
 
-    /// The total force `F = sum_stuck w_i (x - l_i + b_i) + sum_fwd w_i B_i -
-    /// sum_bwd w_i B_i` as a linear form in `(x, 1, cos tau)`.
-    fn force(&self, amp: f64) -> Linear {
-        Linear {
-            x: float(self.stuck),
-            one: float(self.one),
-            cos: amp * float(self.bwd - self.fwd),
-            ..Linear::default()
-        }
-    }
-
-    /// The lowest `l` and the highest `m` of the stuck springs (none: infinite).
-    fn levels(&self) -> (f64, f64) {
-        let lo = self.by_l.first().map_or(f64::INFINITY, |k| level(k.0));
-        let hi = self.by_m.last().map_or(f64::NEG_INFINITY, |k| level(k.0));
-        (lo, hi)
-    }
-
-    /// The stuck springs with `l <= at`.
-    fn stuck_at_or_below(&self, at: f64) -> Vec<usize> {
-        self.by_l.range(..=(key(at), usize::MAX)).map(|k| k.1).collect()
-    }
-
-    /// The stuck springs with `m >= at`.
-    fn stuck_at_or_above(&self, at: f64) -> Vec<usize> {
-        self.by_m.range((key(at), 0)..).map(|k| k.1).collect()
-    }
-}
-
-/// Spring `i` joins its slipping group (`join`) or leaves it (the last one
-/// taking its place).
-fn group(list: &mut Vec<usize>, place: &mut [usize], i: usize, join: bool) {
-    if join {
-        place[i] = list.len();
-        list.push(i);
-    } else {
-        let k = place[i];
-        list.swap_remove(k);
-        if let Some(&moved) = list.get(k) {
-            place[moved] = k;
+    /// The springs that touch or leave at `t` (the walk there).
+    fn contacts_at(&self, t: f64, walk: &mut Walk, springs: &mut [Spring], ix: &mut Index, rec: &mut Record) {
+        while let Some(&(_, i, gained)) = self.contacts.get(walk.next).filter(|c| c.0 == t) {
+            let new = self.contact(i, gained, &walk.z);
+            self.changed(i, springs, new, ix, rec);
+            if let Some(events) = rec.events.as_mut() {
+                events.push(SystemEvent { kind: new.kind(), tau: walk.tau, force: 0.0 });
+            }
+            walk.next += 1;
         }
     }
 }
@@ -481,7 +511,7 @@ fn without_constant(a: &Generator) -> Generator {
 /// drive's `2 pi/256`): the body's rates are the roots of
 /// `Omega^2 r^2 + damp r + k = 0`.
 pub(crate) fn sampling_step(a: &Generator) -> f64 {
-    step_within(a, TWO_PI / 256.0)
+    step_within(a, CURVED_STEP)
 }
 
 /// A quarter of the fastest time scale of the phase `a`, at most `cap`.
@@ -495,75 +525,37 @@ pub(crate) fn step_within(a: &Generator, cap: f64) -> f64 {
 mod tests {
     use super::*;
 
-    /// After any sequence of changes the index is what a scan of the
-    /// springs gives: the same force to the bit as an index made afresh (the
-    /// sums are exact), within rounding of a plain sum, the extreme levels,
-    /// and the springs at or beyond a level.
+    /// A phase that has flipped [`MAX_FLIPS`] times at one instant is held
+    /// for a step: the step runs without its events, is counted
+    /// (`held`), the map's derivative across it is unknown, and the event
+    /// comes at the next step. Below the limit the same state's event (a
+    /// stuck spring whose force is beyond its bound) is taken at once. The hold is a guard: since the flat punch
+    /// runs on these springs, a scan of 20,000 random flat points on systems
+    /// (the one that found it 75 times in the flat punch's own machine) met
+    /// no flip.
     #[test]
-    fn the_index_is_a_scan_of_the_springs() {
-        let n = 200;
-        let w: Vec<f64> = (0..n).map(|i| 1.0 / (3.0 + i as f64)).collect();
-        let b: Vec<f64> = (0..n).map(|i| 1.0 - 1.7 * i as f64 / n as f64).collect();
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut rand = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
-        let mut springs = vec![Spring::Free; n];
-        let mut ix = Index::new(&w, &b, &springs);
-        for step in 0..5000 {
-            let i = (rand() % n as u64) as usize;
-            // Levels from a few values, so that springs share them (a group
-            // stuck together), both zeros among them (one level).
-            let l = [-0.0, 0.0, 0.25, -1.5, 1.5][(rand() % 5) as usize] * (1 + rand() % 3) as f64;
-            let new = match rand() % 4 {
-                0 => Spring::Stuck { l, m: l - 2.0 * b[i] },
-                1 => Spring::Forward,
-                2 => Spring::Backward,
-                _ => Spring::Free,
-            };
-            ix.change(i, springs[i], new);
-            springs[i] = new;
-            if step % 97 != 0 {
-                continue;
-            }
-            let (f, fresh) = (ix.force(0.7), Index::new(&w, &b, &springs).force(0.7));
-            assert_eq!((f.x, f.one, f.cos), (fresh.x, fresh.one, fresh.cos), "step {step}");
-            let (mut x, mut one, mut cos, mut lo, mut hi) = (0.0, 0.0, 0.0, f64::INFINITY, f64::NEG_INFINITY);
-            for (k, s) in springs.iter().enumerate() {
-                match *s {
-                    Spring::Stuck { l, m } => {
-                        (x, one, lo, hi) = (x + w[k], one + w[k] * (b[k] - l), lo.min(l), hi.max(m));
-                    }
-                    Spring::Forward => (one, cos) = (one + w[k] * b[k], cos - 0.7 * w[k]),
-                    Spring::Backward => (one, cos) = (one - w[k] * b[k], cos + 0.7 * w[k]),
-                    Spring::Free => {}
-                }
-            }
-            let near = |a: f64, e: f64| (a - e).abs() <= 1e-13 * (1.0 + e.abs());
-            assert!(near(f.x, x) && near(f.one, one) && near(f.cos, cos), "step {step}: {f:?} {x} {one} {cos}");
-            assert_eq!(ix.levels(), (lo, hi), "step {step}");
-            let scan = |p: &dyn Fn(f64, f64) -> bool| -> Vec<usize> {
-                let stuck = springs.iter().enumerate();
-                let mut v: Vec<usize> =
-                    stuck.filter_map(|(k, s)| matches!(*s, Spring::Stuck { l, m } if p(l, m)).then_some(k)).collect();
-                v.sort_unstable();
-                v
-            };
-            let sorted = |mut v: Vec<usize>| {
-                v.sort_unstable();
-                v
-            };
-            assert_eq!(sorted(ix.stuck_at_or_below(lo)), scan(&|l, _| l <= lo), "step {step}");
-            assert_eq!(sorted(ix.stuck_at_or_above(hi)), scan(&|_, m| m >= hi), "step {step}");
-            assert_eq!(sorted(ix.stuck_at_or_below(1.25)), scan(&|l, _| l <= 1.25), "step {step}");
-            assert_eq!(sorted(ix.stuck_at_or_below(-0.0)), scan(&|l, _| l <= 0.0), "step {step}");
-            assert_eq!(sorted(ix.stuck_at_or_above(0.0)), scan(&|_, m| m >= 0.0), "step {step}");
-            let group = |kind: Spring| springs.iter().enumerate().filter(move |(_, s)| **s == kind).map(|(k, _)| k);
-            assert_eq!(sorted(ix.forward.clone()), group(Spring::Forward).collect::<Vec<_>>(), "step {step}");
-            assert_eq!(sorted(ix.backward.clone()), group(Spring::Backward).collect::<Vec<_>>(), "step {step}");
+    fn a_phase_flipping_at_one_instant_is_held_for_a_step() {
+        let p = Params { kappa: 1.0, omega: 0.5, zeta: 0.05, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
+        let fd = Foundation::new(p, &[(1.0, 1.0)]);
+        // Force 1 - l = 0.6 against the bound 0.5 at tau = 0.
+        let stuck = Spring::Stuck { l: 0.4, m: -1.6 };
+        for (flips, held) in [(0, 0), (MAX_FLIPS, 1)] {
+            let mut z = p.start();
+            (z[X], z[INT_F]) = (0.0, 0.0);
+            let (clock, int_f) = (Kahan::default(), Kahan::default());
+            let mut walk = Walk { z, tau: 0.0, clock, int_f, next: 0, flips, in_step: 0 };
+            let mut springs = [stuck];
+            let tangent = Some(Tangent::new(&fd.w, &springs));
+            let mut rec = Record { tangent, events: Some(vec![]), ..Record::default() };
+            let mut ix = Index::new(&fd.w, &fd.b, &springs);
+            fd.phase_steps(&mut walk, &mut springs, &mut ix, &mut rec);
+            assert_eq!(fd.held(), held);
+            assert_eq!(rec.tangent.as_ref().and_then(Tangent::get).is_none(), held == 1);
+            // The event at once, or after the held step.
+            let events = rec.events.unwrap_or_default();
+            assert_eq!(events.len(), 1, "{events:?}");
+            assert_eq!((events[0].kind, springs[0]), (Kind::Forward, Spring::Forward));
+            assert_eq!(events[0].tau > 0.0, held == 1, "{events:?}");
         }
     }
 }

@@ -1,0 +1,165 @@
+//! The events within a sampling step: the first zero of any of a phase's
+//! event functions (rows `w`, the function `w z` positive inside the phase),
+//! bracketed on the step's Taylor polynomial, grazing zeros included.
+
+use super::phase::{Generator, Kind, State};
+use crate::numerics::root::bracketed;
+use nalgebra::SMatrix;
+
+/// Most events in a row within one sampling step, per spring. In a step each
+/// event function has at most one extremum, so it changes sign at most
+/// twice: a correct phase machine meets a few events a step. More is a phase
+/// chattering at a switch (a defect): the step is finished without events
+/// and the solve refused (`Foundation::chattered`), never left to run on.
+pub(crate) const MAX_EVENTS_IN_A_STEP: usize = 64;
+
+/// A transition inside a period.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SystemEvent {
+    /// The phase that starts.
+    pub kind: Kind,
+    /// Where, in `[0, 2 pi)`.
+    pub tau: f64,
+    /// The contact force there (units `mu0 kz u0`): after a stick or a slip
+    /// begins, the total force; where a spring touches or leaves, that
+    /// spring's, 0.
+    pub force: f64,
+}
+
+/// An event function: the row `w` (the function is `w z`, positive inside
+/// the phase) and what its zero means.
+pub(crate) type Event<T> = (SMatrix<f64, 1, 8>, T);
+
+/// An event function with the row of its derivative in the phase (`w A`).
+pub(crate) type Sloped<T> = (SMatrix<f64, 1, 8>, SMatrix<f64, 1, 8>, T);
+
+/// `events` of the phase with generator `a`, each with its derivative's row.
+pub(crate) fn with_slopes<T>(a: &Generator, events: Vec<Event<T>>) -> Vec<Sloped<T>> {
+    events.into_iter().map(|(w, tag)| (w, w * a, tag)).collect()
+}
+
+/// The first zero within `h` of `z` among `events` of the phase with
+/// generator `a` (`end` the state after `h`): its offset and tag. A
+/// function below 0 at the step's end has a zero in the step (bracketed),
+/// or is already below 0 at its start (a force a rounding beyond its bound
+/// after a switch, a contact point a rounding past turning): the phase ends
+/// at once. A minimum inside the step that dips below 0 between positive
+/// ends (a grazing event) is found from the derivative's sign change. The
+/// roots are sought on the step's Taylor polynomial ([`Taylor`]).
+#[inline]
+pub(crate) fn first_event<T: Copy>(
+    a: &Generator,
+    events: &[Sloped<T>],
+    z: &State,
+    h: f64,
+    end: &State,
+) -> Option<(f64, T)> {
+    let mut first: Option<(f64, T)> = None;
+    let mut taylor: Option<Taylor> = None;
+    for &(w, wa, next) in events {
+        let (g0, g1) = ((w * z)[0], (w * end)[0]);
+        let s0 = (wa * z)[0];
+        // Below 0 at the start, or at 0 and falling (a spring touching at
+        // `tau = 0` with `amp = 1`, its bound and force both 0): at once.
+        let below = g1 < 0.0;
+        if below && g0 < 0.0 {
+            first = Some((0.0, next));
+            continue;
+        }
+        let grazing = !below && g0 > 0.0 && s0 < 0.0 && (wa * end)[0] > 0.0;
+        if !(below || grazing) {
+            continue;
+        }
+        let c = taylor.get_or_insert_with(|| Taylor::new(a, z, h)).row(&w);
+        let g = |d: f64| horner(&c, d);
+        let root = if below {
+            Some(bracketed(g, 0.0, h, 4.0 * f64::EPSILON).x)
+        } else {
+            let slope: Vec<f64> = c.iter().enumerate().skip(1).map(|(k, ck)| k as f64 * ck).collect();
+            let m = bracketed(|d| horner(&slope, d), 0.0, h, 4.0 * f64::EPSILON).x;
+            (g(m) < 0.0).then(|| bracketed(g, 0.0, m, 4.0 * f64::EPSILON).x)
+        };
+        if let Some(d) = root {
+            if first.as_ref().is_none_or(|f| d < f.0) {
+                first = Some((d, next));
+            }
+        }
+    }
+    first
+}
+
+/// Most terms of a step's Taylor polynomial.
+const MAX_TERMS: usize = 60;
+
+/// `exp(A d) z` on `0 <= d <= h` as its Taylor polynomial `sum_k A^k z d^k/k!`,
+/// summed until a term is below 1e-18 of the state (a sampling step is at
+/// most a quarter of the fastest time scale, so the terms fall at least like
+/// `4^-k/k!`): an event function along the step is a polynomial, its roots
+/// cheap to bracket.
+pub(crate) struct Taylor {
+    terms: Vec<State>,
+}
+
+impl Taylor {
+    #[inline(never)]
+    pub(crate) fn new(a: &Generator, z: &State, h: f64) -> Taylor {
+        let scale = 1.0 + z.amax();
+        let mut terms = Vec::with_capacity(32);
+        terms.push(*z);
+        let mut t = *z;
+        let mut hk = 1.0;
+        for k in 1..=MAX_TERMS {
+            t = a * t / k as f64;
+            hk *= h;
+            terms.push(t);
+            if k >= 4 && t.amax() * hk <= 1e-18 * scale {
+                break;
+            }
+        }
+        Taylor { terms }
+    }
+
+    /// The polynomial's coefficients of the function `w z`.
+    pub(crate) fn row(&self, w: &SMatrix<f64, 1, 8>) -> Vec<f64> {
+        self.terms.iter().map(|t| (w * t)[0]).collect()
+    }
+}
+
+/// `sum_k c_k d^k`.
+fn horner(c: &[f64], d: f64) -> f64 {
+    c.iter().rev().fold(0.0, |acc, ck| acc * d + ck)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{first_event, with_slopes, Kind, State};
+    use crate::system::phase::{advance, Linear, Params, COS, ONE, SIN};
+    use nalgebra::SMatrix;
+
+    /// A grazing event: `g = 0.999 + cos tau` dips below 0 around `tau = pi`
+    /// between two positive ends of a step (`pi -+ 0.05`: 2.5e-4). Its first
+    /// zero, `pi - arccos 0.999`, is found from the derivative's sign change;
+    /// a step checked only at its ends (grazing detection off) misses it, and
+    /// a function positive throughout (`1.001 + cos tau`) has none.
+    #[test]
+    fn a_grazing_event_inside_a_step_is_found() {
+        let p = Params { kappa: 1.0, omega: 0.5, zeta: 0.05, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
+        let a = p.generator_of(Linear::default());
+        let start = std::f64::consts::PI - 0.05;
+        let mut z = State::zeros();
+        (z[ONE], z[COS], z[SIN]) = (1.0, start.cos(), start.sin());
+        let end = advance(&a, &z, 0.1);
+        for (c, want) in [(0.999, Some(std::f64::consts::PI - 0.999f64.acos())), (1.001, None)] {
+            let mut w = SMatrix::<f64, 1, 8>::zeros();
+            (w[ONE], w[COS]) = (c, 1.0);
+            assert!((w * z)[0] > 0.0 && (w * end)[0] > 0.0);
+            let got = first_event(&a, &with_slopes(&a, vec![(w, Kind::Stick)]), &z, 0.1, &end);
+            match (got, want) {
+                (Some((d, Kind::Stick)), Some(tau)) => assert!((start + d - tau).abs() < 1e-14, "{d} {tau}"),
+                (None, None) => {}
+                other => panic!("c {c}: {other:?}"),
+            }
+        }
+    }
+}
