@@ -30,7 +30,9 @@
 
 use super::events::{first_event, with_slopes, Event, SystemEvent, MAX_EVENTS_IN_A_STEP};
 use super::index::Index;
-use super::phase::{advance, series, Generator, Kind, Linear, Params, State, COS, INT_F, ONE, SIN, TAU, V, X};
+use super::phase::{
+    advance, exp_structured, series, Generator, Kind, Linear, Params, State, COS, INT_F, ONE, SIN, TAU, V, X,
+};
 use super::tangent::{block, Tangent};
 use crate::special::Kahan;
 use nalgebra::{Matrix4, SMatrix};
@@ -162,7 +164,13 @@ struct Walk {
     next: usize,
     flips: usize,
     in_step: usize,
+    /// Steps since `cos tau`, `sin tau` were taken afresh, and the last step's length.
+    rotated: usize,
+    last_h: f64,
 }
+
+/// Most full steps between two fresh `cos tau`, `sin tau` ([`Walk::arrive`]).
+const RESYNC: usize = 16;
 
 impl Walk {
     /// The state `z` reached after `h` more (`last`: the period's end).
@@ -172,6 +180,15 @@ impl Walk {
         self.clock.add(h);
         self.tau = if last { TWO_PI } else { self.clock.sum };
         z[TAU] = self.tau;
+        // The drive's `cos tau`, `sin tau` rotated step by step drift by an
+        // ulp a step (2.8e-13 of `mu` over a stiff body's 2.5e5 steps a
+        // period): taken afresh at the time every RESYNC steps.
+        self.rotated += 1;
+        if self.rotated >= RESYNC || h != self.last_h {
+            (z[SIN], z[COS]) = self.tau.sin_cos();
+            self.rotated = 0;
+        }
+        self.last_h = h;
         self.int_f.add(std::mem::take(&mut z[INT_F]));
         self.z = z;
     }
@@ -255,7 +272,7 @@ impl Foundation {
             (e[V], e[INT_F]) = (-1.0 / (self.p.omega * self.p.omega), 1.0);
             let phi = |u: &State| Self::constant_response(&a0, u, step);
             let (phi_u0, phi_e) = (phi(&u0), phi(&e));
-            Set { step, exp: (a0 * step).exp(), a0, u0, e, phi_u0, phi_e }
+            Set { step, exp: exp_structured(&(a0 * step)), a0, u0, e, phi_u0, phi_e }
         });
         let mut a = set.a0;
         a.set_column(ONE, &(set.u0 + set.e * f.one));
@@ -412,7 +429,7 @@ impl Foundation {
         let mut z = self.p.start();
         (z[X], z[V], z[INT_F]) = (x, v, 0.0);
         let (clock, int_f) = (Kahan::default(), Kahan::default());
-        let mut walk = Walk { z, tau: 0.0, clock, int_f, next: 0, flips: 0, in_step: 0 };
+        let mut walk = Walk { z, tau: 0.0, clock, int_f, next: 0, flips: 0, in_step: 0, rotated: 0, last_h: 0.0 };
         let mut ix = Index::new(&self.w, &self.b, springs);
         while walk.tau < TWO_PI {
             self.phase_steps(&mut walk, springs, &mut ix, rec);
@@ -543,7 +560,7 @@ mod tests {
             let mut z = p.start();
             (z[X], z[INT_F]) = (0.0, 0.0);
             let (clock, int_f) = (Kahan::default(), Kahan::default());
-            let mut walk = Walk { z, tau: 0.0, clock, int_f, next: 0, flips, in_step: 0 };
+            let mut walk = Walk { z, tau: 0.0, clock, int_f, next: 0, flips, in_step: 0, rotated: 0, last_h: 0.0 };
             let mut springs = [stuck];
             let tangent = Some(Tangent::new(&fd.w, &springs));
             let mut rec = Record { tangent, events: Some(vec![]), ..Record::default() };
