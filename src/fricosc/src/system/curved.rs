@@ -125,6 +125,8 @@ struct Found {
     error: f64,
     /// The mean's standard error where there is no period.
     standard_error: Option<f64>,
+    /// Steps held in the whole run (`SystemReport::held_steps`).
+    held: u64,
 }
 
 /// The body `(x, x')` and its springs' states at `tau = 0`.
@@ -219,7 +221,7 @@ fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
                     return Err(super::chattering());
                 }
                 return Ok((
-                    Found { mu, period: Some(k), periods_run: n, error: closure, standard_error: None },
+                    Found { mu, period: Some(k), periods_run: n, error: closure, standard_error: None, held: fd.held() },
                     (x, v, state),
                 ));
             }
@@ -236,6 +238,7 @@ fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
         periods_run: n,
         error: m.error_estimate(),
         standard_error: Some(m.standard_error),
+        held: fd.held(),
     };
     Ok((found, (x, v, state)))
 }
@@ -260,7 +263,7 @@ fn report(f: &Found, error_estimate: f64, springs: usize) -> SystemReport {
         events: vec![],
         error_estimate,
         springs: Some(springs),
-        held_steps: 0,
+        held_steps: f.held,
     }
 }
 

@@ -37,8 +37,9 @@ pub struct SystemReport {
     /// The springs of a curved body's finest discretisation.
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub springs: Option<usize>,
-    /// Sampling steps of the flat punch's orbit's first period (of a mean:
-    /// of the whole run) in which the phase was held: its force rode on its
+    /// Sampling steps of the flat punch's orbit's first period (of a mean,
+    /// and of a curved body's finest discretisation: of the whole run) in
+    /// which the phase was held: its force rode on its
     /// bound, eight phases of zero length in a row at one instant (at a
     /// regain of contact where the body moves as fast as the bound grows,
     /// `f = B = 0` and `x' = B'`). Events are not looked for in such a step;
