@@ -1,7 +1,7 @@
 //! Curved bodies on a system: the foundation as `N` springs with exact events
-//! ([`super::springs`]), the attractor of each discretisation found as the
-//! flat punch's is (the period map iterated until its state repeats), at
-//! `N/8`, `N/4`, `N/2` and `N` springs.
+//! ([`super::springs`]), the attractor of each discretisation found by the
+//! one search ([`super::search`]: Newton on the period map, as for the flat
+//! punch), at `N/8`, `N/4`, `N/2` and `N` springs.
 //!
 //! # The discretisation and its error
 //! `[0, z_max]` (`z_max` the contact's reach at the amplitude) is cut into
@@ -27,13 +27,12 @@
 //! `power:0.5`, `power:0.05`, worn spheres, a pure slip) from 32 to 1,024
 //! springs: bounded at every level, 1.7 to 42 times the error at 256 springs
 //! (up to 360 at 128, where the Richardson value is at times far closer
-//! than its asymptote says). Each adds the orbits' closures (`attractor`); without
+//! than its asymptote says). Each adds the orbits' estimates (`attractor`); without
 //! a period the answer is `mu_N`'s long-time mean, whose error estimate
 //! (standard error and drift) is added.
 
-use super::mean::batch_mean;
 use super::springs::{Foundation, Record, Spring};
-use super::{Params, SystemReport, MAX_ORBIT, MAX_STEPS, MIN_PERIODS, REPEAT};
+use super::{Params, SystemReport};
 use crate::error::{Error, Result};
 use crate::shape::Shape;
 
@@ -118,130 +117,35 @@ pub(crate) fn discretise(shape: &Shape, amp: f64, n: usize) -> Result<Vec<(f64, 
 #[derive(Debug, Clone, Copy)]
 struct Found {
     mu: f64,
-    /// `None`: no repeat within the budget (then `mu` is a mean).
+    /// `None`: no period within the budget (then `mu` is a mean).
     period: Option<usize>,
     periods_run: usize,
-    /// A bound on the orbit's closure, or the mean's error estimate where there is no period.
+    /// The orbit's error estimate, or the mean's where there is no period.
     error: f64,
     /// The mean's standard error where there is no period.
     standard_error: Option<f64>,
-    /// Steps held in the whole run (`SystemReport::held_steps`).
+    /// Steps held (`SystemReport::held_steps`).
     held: u64,
+}
+
+/// The attractor of one discretisation by the one search
+/// ([`super::search::attractor`], within [`MAX_CURVED_PERIODS`]), and the
+/// body `(x, x')` and its springs at `tau = 0` of its first period.
+fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
+    let (r, at) = super::search::attractor(fd, MAX_CURVED_PERIODS)?;
+    let found = Found {
+        mu: r.mu_ratio,
+        period: r.period,
+        periods_run: r.periods_run,
+        error: r.error_estimate,
+        standard_error: r.standard_error,
+        held: r.held_steps,
+    };
+    Ok((found, super::reduced::expand(fd, &at)))
 }
 
 /// The body `(x, x')` and its springs' states at `tau = 0`.
 type Body = (f64, f64, Vec<Spring>);
-
-/// Orbits closed beyond this (relative, as [`REPEAT`]) are exact to rounding.
-const TIGHT: f64 = 1e-13;
-/// Most orbits run to refine one near-repeat.
-const REFINE: usize = 200;
-
-/// The state of the period map at `tau = 0` (`x`, `x'`, each spring's kind and force).
-type Snapshot = (f64, f64, Vec<(u8, f64)>);
-
-/// The largest difference of two states relative to 1 and the state (infinite where a spring's kind differs).
-fn distance(a: &Snapshot, b: &Snapshot) -> f64 {
-    let rel = |d: f64, x: f64| (d - x).abs() / (1.0 + x.abs());
-    let springs = a.2.iter().zip(&b.2).map(|(p, q)| if p.0 == q.0 { rel(p.1, q.1) } else { f64::INFINITY });
-    springs.fold(rel(a.0, b.0).max(rel(a.1, b.1)), f64::max)
-}
-
-/// The least period of an orbit closed after `k` periods to `closed`: the
-/// first divisor `p` of `k` after which the state is back within ten times
-/// that (a period-1 orbit found while a decaying transient still made the
-/// state after `k` periods the nearest).
-fn least_period(fd: &Foundation, (x, v, state): (f64, f64, &[Spring]), k: usize, closed: f64) -> usize {
-    let start = (x, v, fd.forces_at_start(x, state));
-    let (mut y, mut w, mut s) = (x, v, state.to_vec());
-    for p in 1..k {
-        (y, w, _) = fd.period(y, w, &mut s, &mut Record::default());
-        if k.is_multiple_of(p) && distance(&start, &(y, w, fd.forces_at_start(y, &s))) <= 10.0 * closed {
-            return p;
-        }
-    }
-    k
-}
-
-/// The attractor of one discretisation from the stated start: the period map
-/// iterated until its state repeats after `k <= MAX_ORBIT` periods (to
-/// [`REPEAT`]; at most [`MAX_CURVED_PERIODS`], and once at least
-/// [`MIN_PERIODS`] are run at most [`MAX_STEPS`] sampling steps), then orbit
-/// after orbit (up to twice that many steps in all) until it closes to [`TIGHT`]; the
-/// closure's bound is the last change of the orbit's `mu` summed as a
-/// geometric series with the measured contraction of the state. A
-/// near-repeat that does not contract is not an orbit (a slow drift): the
-/// search goes on.
-fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
-    let p = fd.p;
-    let start = p.start();
-    let (mut x, mut v) = (start[super::phase::X], start[super::phase::V]);
-    let mut state = fd.start(x);
-    let mut seen = vec![(x, v, fd.forces_at_start(x, &state))];
-    let mut per_period = vec![];
-    let run = |x: &mut f64, v: &mut f64, state: &mut Vec<Spring>, per: &mut Vec<f64>| {
-        let int_f;
-        (*x, *v, int_f) = fd.period(*x, *v, state, &mut Record::default());
-        per.push(int_f / (std::f64::consts::TAU * fd.mean_b));
-        (*x, *v, fd.forces_at_start(*x, state))
-    };
-    let mut n = 0;
-    let spent = |budgets: f64| fd.steps_run() as f64 > budgets * MAX_STEPS;
-    while n < MAX_CURVED_PERIODS && !(n >= MIN_PERIODS && spent(1.0)) {
-        crate::interrupt::check()?;
-        n += 1;
-        let now = run(&mut x, &mut v, &mut state, &mut per_period);
-        if fd.chattered() {
-            return Err(super::chattering());
-        }
-        let repeat = (1..=MAX_ORBIT.min(seen.len())).find(|&k| distance(&seen[seen.len() - k], &now) <= REPEAT);
-        if let Some(k) = repeat {
-            let block = |per: &[f64]| per[per.len() - k..].iter().sum::<f64>() / k as f64;
-            let (mut mu, mut d) = (block(&per_period), distance(&seen[seen.len() - k], &now));
-            let (mut last, mut change, mut rate) = (now.clone(), f64::INFINITY, 1.0);
-            for _ in 0..REFINE {
-                crate::interrupt::check()?;
-                let mut next = last.clone();
-                for _ in 0..k {
-                    next = run(&mut x, &mut v, &mut state, &mut per_period);
-                }
-                n += k;
-                let (m, dn) = (block(&per_period), distance(&last, &next));
-                (change, rate, mu, d, last) = ((m - mu).abs(), dn / d, m, dn, next);
-                if d <= TIGHT || rate >= 1.0 || spent(2.0) {
-                    break;
-                }
-            }
-            if rate < 1.0 || d <= TIGHT {
-                // The rounding of a period's integral: an ulp of the bound a step.
-                let rounding = f64::EPSILON * fd.steps_run() as f64 / n as f64;
-                let closure = rounding + if d <= TIGHT { change } else { change * rate / (1.0 - rate) };
-                let k = least_period(fd, (x, v, &state), k, d.max(TIGHT));
-                if fd.chattered() {
-                    return Err(super::chattering());
-                }
-                return Ok((
-                    Found { mu, period: Some(k), periods_run: n, error: closure, standard_error: None, held: fd.held() },
-                    (x, v, state),
-                ));
-            }
-        }
-        if seen.len() == MAX_ORBIT {
-            seen.remove(0);
-        }
-        seen.push(now);
-    }
-    let m = batch_mean(&per_period[per_period.len() / 2..], 10);
-    let found = Found {
-        mu: m.mean,
-        period: None,
-        periods_run: n,
-        error: m.error_estimate(),
-        standard_error: Some(m.standard_error),
-        held: fd.held(),
-    };
-    Ok((found, (x, v, state)))
-}
 
 /// The attractor of `shape` discretised into about `n` springs, its error
 /// estimate that of the discretised problem (the orbit's closure, or the

@@ -12,14 +12,15 @@
 //! the bound `(1 - amp cos tau)_+`.
 //!
 //! # The answer
-//! From the stated start (the body at the drive's position with its
-//! velocity, the spring relaxed) the period map is iterated until its state
-//! `(x - 2 pi vhat n, x', f)` and phase repeat after `k` periods (to
-//! `NEAR`); that orbit is then refined by Newton on `P^k(s) = s` (the
+//! The contact is a set of springs (`springs.rs`: the flat punch one, a
+//! curved body's foundation many), one period map for all. From the stated
+//! start (the body at the drive's position with its velocity, the springs
+//! relaxed) the map is iterated until its state (each spring's phase,
+//! `(x - 2 pi vhat n, x', f_1, ..., f_N)`) repeats after `k` periods
+//! (`search.rs`); that orbit is then refined by Newton on `P^k(s) = s` (the
 //! Jacobian by the variational equation along the exact map, `tangent.rs`),
 //! its stability read from the eigenvalues of that Jacobian (the Floquet
-//! multipliers), and `mu`
-//! is `int f / int B` over its `k` periods. Where nothing repeats within
+//! multipliers), and `mu` is `int F / int B` over its `k` periods. Where nothing repeats within
 //! [`MAX_PERIODS`], the answer is no period: the mean of the last half's
 //! per-period values with its standard error (of batches of 10 periods) and
 //! an error estimate that also counts the drift of a transient not yet
@@ -38,6 +39,7 @@ mod orbit;
 mod phase;
 mod reduced;
 mod report;
+mod search;
 mod springs;
 mod tangent;
 
@@ -49,8 +51,7 @@ pub use report::SystemReport;
 
 use crate::conditions::Conditions;
 use crate::error::{Error, Result};
-use mean::batch_mean;
-use orbit::{close, distance, orbit, ROUNDING};
+use orbit::ROUNDING;
 use phase::Params;
 pub(crate) use reduced::{map_k, sample, stated_start, Reduced};
 use springs::Foundation;
@@ -135,8 +136,6 @@ impl System {
     }
 }
 
-/// Two states repeat where they differ by at most this (relative to 1 and the state).
-pub(crate) const REPEAT: f64 = 1e-9;
 /// Most periods run from the start before the answer is "no period" (the flat punch).
 pub const MAX_PERIODS: usize = 4000;
 /// Most sampling steps run from the start (about two seconds); fewer
@@ -193,18 +192,8 @@ fn check_settles(p: &Params, limit: usize) -> Result<()> {
     Ok(())
 }
 
-/// How close a return must come for the flat punch's search to hand it to
-/// Newton, which with the variational Jacobian closes it to rounding in
-/// three or four iterations from there (curved bodies, without Newton,
-/// iterate on to [`REPEAT`]); a return this near that Newton cannot close
-/// costs an attempt ([`NEWTON_ATTEMPTS`]). At 1e-6 a typical point ran 20
-/// periods before Newton where now it runs 10.
-const NEAR: f64 = 1e-3;
-
 /// Longest period of an attractor looked for.
 pub(crate) const MAX_ORBIT: usize = 8;
-/// Most near-repeats refined by Newton before the search goes on without.
-const NEWTON_ATTEMPTS: usize = 3;
 
 impl System {
     /// The phases' parameters of this system under the drive of `c`.
@@ -332,7 +321,7 @@ fn params(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<Params> 
 /// (midpoints of equal cells, `curved` module docs), each spring's events
 /// exact, on the system of `c` ([`Conditions::with_system`]): the problem a
 /// code with that many springs solves, its answer without an error estimate
-/// (the attractor found as [`crate::Shape::report`] finds it, without Newton).
+/// (the attractor found as [`crate::Shape::report`] finds it).
 ///
 /// # Errors
 /// As [`crate::Shape::report`]; [`Error::InvalidParameter`] for conditions
@@ -350,7 +339,6 @@ pub fn solve_discretised(shape: &crate::Shape, c: &Conditions, springs: usize) -
 /// The attractor from the stated start, and (for a body with mass) the
 /// phases and the state at `tau = 0` of its first period.
 pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, Option<(Foundation, Reduced)>)> {
-    let amp = c.amp();
     if sys.frequency_ratio == 0.0 {
         let r = crate::shape::Shape::flat().evaluate(&massless(c, sys)?)?;
         let report = SystemReport {
@@ -370,69 +358,8 @@ pub(crate) fn attractor(c: &Conditions, sys: &System) -> Result<(SystemReport, O
     check_resolvable(&p, 1.0)?;
     check_settles(&p, MAX_PERIODS)?;
     let fd = reduced::foundation(p);
-    let mut s = stated_start(&p);
-    let mut seen: Vec<Reduced> = vec![s];
-    let mut per_period = vec![];
-    let mut attempts = 0;
-    // At most MAX_STEPS sampling steps in all (a fast, undamped body takes many a period).
-    // At most MAX_PERIODS, and once MIN_PERIODS are run at most MAX_STEPS
-    // sampling steps in all (Newton's attempts among them).
-    for n in 1..=MAX_PERIODS {
-        if n > MIN_PERIODS && fd.steps_run() as f64 > MAX_STEPS {
-            break;
-        }
-        crate::interrupt::check()?;
-        let (next, int_f) = map_k(&fd, &s, 1);
-        if fd.chattered() {
-            return Err(chattering());
-        }
-        per_period.push(int_f);
-        s = next;
-        let back = |k: usize| &seen[seen.len() - k];
-        // A near-repeat that Newton cannot close is not an orbit (a slow
-        // quasi-periodic drift): look on, at most NEWTON_ATTEMPTS times.
-        if let Some(k) =
-            (1..=MAX_ORBIT.min(n)).find(|&k| close(back(k), &s, NEAR)).filter(|_| attempts < NEWTON_ATTEMPTS)
-        {
-            attempts += 1;
-            if let Some((r, at)) = orbit(&fd, s, k, n) {
-                return if fd.chattered() { Err(chattering()) } else { Ok((r, Some((fd, at)))) };
-            }
-        }
-        seen.push(s);
-    }
-    // An orbit that contracts slowly (a multiplier near 1) need not repeat
-    // to REPEAT within the periods run: Newton from the last state, at the
-    // period whose return came closest, may still close it.
-    // Period 1 first (the cheapest; a rotating transient may come closest
-    // after a few periods), then the period whose return came closest.
-    let (last, periods) = (seen.len() - 1, per_period.len());
-    let gap = |k: usize| distance(&seen[last - k], &s);
-    let closest = (1..=MAX_ORBIT.min(last)).min_by(|&a, &b| gap(a).total_cmp(&gap(b)));
-    let mut tried = vec![1];
-    tried.extend(closest.filter(|&k| k != 1));
-    for k in tried.into_iter().filter(|&k| k <= last) {
-        if let Some((r, at)) = orbit(&fd, s, k, periods) {
-            return if fd.chattered() { Err(chattering()) } else { Ok((r, Some((fd, at)))) };
-        }
-    }
-    crate::interrupt::check()?;
-    let mean_b = crate::flat::mean_normal(amp) * std::f64::consts::TAU;
-    let tail: Vec<f64> = per_period[periods / 2..].iter().map(|x| x / mean_b).collect();
-    let m = batch_mean(&tail, 10);
-    let rounding = orbit::rounding_of_a_period(&fd, &s) / mean_b + ROUNDING * m.mean.abs();
-    let report = SystemReport {
-        mu_ratio: m.mean,
-        period: None,
-        standard_error: Some(m.standard_error),
-        periods_run: periods,
-        multipliers: None,
-        events: vec![],
-        error_estimate: m.error_estimate() + rounding,
-        springs: None,
-        held_steps: fd.held(),
-    };
-    Ok((report, Some((fd, s))))
+    let (report, at) = search::attractor(&fd, MAX_PERIODS)?;
+    Ok((report, Some((fd, at))))
 }
 
 /// A massless body's problem (`Omega = 0`): the stiff one with the drive
@@ -455,8 +382,8 @@ pub(crate) fn transient(c: &Conditions, sys: &System, n: usize) -> Result<Vec<f6
     let p = sys.params(c);
     check_resolvable(&p, 1.0)?;
     let fd = reduced::foundation(p);
-    let mean_b = crate::flat::mean_normal(p.amp) * std::f64::consts::TAU;
-    let mut s = stated_start(&p);
+    let mean_b = fd.mean_b * std::f64::consts::TAU;
+    let mut s = stated_start(&fd);
     let mut out = Vec::with_capacity(n);
     for _ in 0..n {
         crate::interrupt::check()?;

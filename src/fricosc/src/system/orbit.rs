@@ -5,7 +5,7 @@
 use super::reduced::{map_k, map_k_events, map_k_tangent, Derivatives, Reduced};
 use super::springs::Foundation;
 use super::{SystemReport, MAX_STEPS};
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{DMatrix, DVector};
 
 /// Whether two states are the same phase and within `tol` (relative to 1 and the state).
 pub(super) fn close(a: &Reduced, b: &Reduced, tol: f64) -> bool {
@@ -18,10 +18,10 @@ pub(super) fn distance(a: &Reduced, b: &Reduced) -> f64 {
     if a.0 != b.0 {
         return f64::INFINITY;
     }
-    (a.1 - b.1).iter().zip(b.1.iter()).map(|(d, x)| d.abs() / (1.0 + x.abs())).fold(0.0, f64::max)
+    (&a.1 - &b.1).iter().zip(b.1.iter()).map(|(d, x)| d.abs() / (1.0 + x.abs())).fold(0.0, f64::max)
 }
 
-/// How closely Newton's orbit must close (the same measure as [`super::REPEAT`]),
+/// How closely Newton's orbit must close (relative to 1 and the state, [`distance`]),
 /// or to four times the map's rounding where that is more, up to [`ROUNDED`].
 const CLOSED: f64 = 1e-10;
 /// The most rounding an orbit's closure may be put down to.
@@ -33,7 +33,12 @@ const ROUNDED: f64 = 1e-8;
 /// (a multiplier of modulus `>= 1 - NEUTRAL`, or none known: not the
 /// attractor the iteration tends to).
 pub(super) fn orbit(fd: &Foundation, mut s: Reduced, k: usize, run: usize) -> Option<(SystemReport, Reduced)> {
-    let (mut jac, mut grad) = (Matrix3::identity(), Vector3::zeros());
+    // Newton moves the body and the stuck springs' forces (`active`): a
+    // slipping or free spring's force is the drive's, its row and column of
+    // the Jacobian 0.
+    let idx = active(&s);
+    let n = idx.len();
+    let (mut jac, mut grad) = (DMatrix::identity(n, n), DVector::zeros(n));
     let mut exact = false;
     let mut last = f64::INFINITY;
     // An iteration maps k periods once, four times where the Jacobian is
@@ -52,15 +57,19 @@ pub(super) fn orbit(fd: &Foundation, mut s: Reduced, k: usize, run: usize) -> Op
             break;
         }
         let base;
-        (base, (jac, grad), exact) = derivatives(fd, &s, k);
-        let r = base.0 .1 - s.1;
-        let Some(step) = (jac - Matrix3::identity()).lu().solve(&(-r)) else { break };
-        s.1 += step;
+        let full;
+        (base, full, exact) = derivatives(fd, &s, k);
+        (jac, grad) = (full.0.select_rows(&idx).select_columns(&idx), full.1.select_rows(&idx));
+        let r = (&base.0 .1 - &s.1).select_rows(&idx);
+        let Some(step) = (&jac - DMatrix::identity(n, n)).lu().solve(&(-r)) else { break };
+        for (a, &i) in idx.iter().enumerate() {
+            s.1[i] += step[a];
+        }
         // Converged, or no longer converging: a step not below half the last
         // is the map's own rounding (Newton's steps fall quadratically until
         // then), where more iterations only move the state within it.
         let size = step.amax();
-        if step.iter().zip(s.1.iter()).all(|(d, x)| d.abs() <= 4.0 * f64::EPSILON * (1.0 + x.abs()))
+        if step.iter().zip(&idx).all(|(d, &i)| d.abs() <= 4.0 * f64::EPSILON * (1.0 + s.1[i].abs()))
             || size > 0.5 * last
         {
             break;
@@ -74,7 +83,7 @@ pub(super) fn orbit(fd: &Foundation, mut s: Reduced, k: usize, run: usize) -> Op
     if !close(&end, &s, ROUNDED) {
         return None;
     }
-    let multipliers = multipliers(&jac)?;
+    let multipliers = multipliers(&jac, s.1.len())?;
     let neutral = if exact { NEUTRAL_EXACT } else { NEUTRAL };
     if multipliers.iter().any(|[re, im]| re.hypot(*im).powf(1.0 / k as f64) >= 1.0 - neutral) {
         return None;
@@ -92,10 +101,10 @@ pub(super) fn orbit(fd: &Foundation, mut s: Reduced, k: usize, run: usize) -> Op
     if let Some(least) = least_period(fd, &s, k, run, closes) {
         return least;
     }
-    let norm = crate::flat::mean_normal(fd.p.amp) * std::f64::consts::TAU * k as f64;
+    let norm = fd.mean_b * std::f64::consts::TAU * k as f64;
     let mu_ratio = int_f / norm;
     let error_estimate =
-        orbit_estimate(&s, (&jac, &grad), (&end, int_f), &perturbed) / norm + ROUNDING * mu_ratio.abs();
+        orbit_estimate(&s, (&idx, &jac, &grad), (&end, int_f), &perturbed) / norm + ROUNDING * mu_ratio.abs();
     let report = SystemReport {
         mu_ratio,
         period: Some(k),
@@ -129,10 +138,10 @@ fn least_period(
     for d in (1..k).filter(|&d| k.is_multiple_of(d)) {
         let back = map_k(fd, s, d).0;
         if closes(&back, s) {
-            return Some(orbit(fd, *s, d, run));
+            return Some(orbit(fd, s.clone(), d, run));
         }
         if distance(&back, s) <= FLIP {
-            if let Some(found) = orbit(fd, *s, d, run).filter(|(_, at)| distance(at, s) <= FLIP) {
+            if let Some(found) = orbit(fd, s.clone(), d, run).filter(|(_, at)| distance(at, s) <= FLIP) {
                 return Some(Some(found));
             }
         }
@@ -172,19 +181,29 @@ pub(super) const NEWTON_BUDGET: f64 = 2.0 * MAX_STEPS;
 /// The rounding of `mu = int f / int B` itself: a few ulps.
 pub(super) const ROUNDING: f64 = 8.0 * f64::EPSILON;
 
-/// The eigenvalues `[re, im]` of the period map's Jacobian (nalgebra's
+/// The eigenvalues `[re, im]` of the period map's Jacobian `jac` on Newton's
+/// components of a state of `n` (the others' are 0), at most [`MULTIPLIERS`]
+/// of them, largest in modulus first (nalgebra's
 /// Schur iteration, capped: it may not converge on a Jacobian taken across a
 /// change of the sequence of phases); `None` where unknown. A Jacobian of
 /// zeros (a heavily damped body forgets a perturbation within the period)
 /// has the multipliers 0: nalgebra's Schur scales by the largest entry and
 /// fails on it (such an orbit was answered as "no period" after 4,000
 /// periods, its mean 2.7e-14 beyond 1 and refused).
-fn multipliers(jac: &Matrix3<f64>) -> Option<Vec<[f64; 2]>> {
+fn multipliers(jac: &DMatrix<f64>, n: usize) -> Option<Vec<[f64; 2]>> {
+    let reported = n.min(MULTIPLIERS);
     if jac.iter().all(|&x| x == 0.0) {
-        return Some(vec![[0.0, 0.0]; 3]);
+        return Some(vec![[0.0, 0.0]; reported]);
     }
-    let schur = jac.iter().all(|x| x.is_finite()).then(|| jac.try_schur(f64::EPSILON, 10_000)).flatten()?;
-    Some(schur.complex_eigenvalues().iter().map(|l| [l.re, l.im]).collect())
+    let schur = jac.iter().all(|x| x.is_finite()).then(|| jac.clone().try_schur(f64::EPSILON, 10_000)).flatten()?;
+    let mut all: Vec<[f64; 2]> = schur.complex_eigenvalues().iter().map(|l| [l.re, l.im]).collect();
+    // Largest modulus first; a curved body's many springs add multipliers 0
+    // (a slipping spring forgets its force): the first MULTIPLIERS are kept.
+    all.sort_by(|a, b| b[0].hypot(b[1]).total_cmp(&a[0].hypot(a[1])));
+    // The inactive components' multipliers are 0.
+    all.resize(reported.max(all.len()), [0.0, 0.0]);
+    all.truncate(reported);
+    Some(all)
 }
 
 /// A bound on the error of `int f` over the orbit `s` of `k` periods (the
@@ -200,16 +219,27 @@ fn multipliers(jac: &Matrix3<f64>) -> Option<Vec<[f64; 2]>> {
 /// the 40-digit references and a stiff system's value).
 fn orbit_estimate(
     s: &Reduced,
-    (jac, grad): (&Matrix3<f64>, &Vector3<f64>),
+    (idx, jac, grad): (&[usize], &DMatrix<f64>, &DVector<f64>),
     (end, int_f): (&Reduced, f64),
     perturbed: &[(Reduced, f64)],
 ) -> f64 {
-    let lu = (Matrix3::identity() - jac).lu();
-    let moved = |r: Vector3<f64>| lu.solve(&r).map_or(f64::INFINITY, |d| grad.dot(&d).abs());
+    let n = jac.nrows();
+    let lu = (DMatrix::identity(n, n) - jac).lu();
+    let moved = |r: DVector<f64>| lu.solve(&r.select_rows(idx)).map_or(f64::INFINITY, |d| grad.dot(&d).abs());
     let rounding =
-        perturbed.iter().map(|(e, f)| if e.0 == s.0 { moved(e.1 - s.1) + (f - int_f).abs() } else { f64::INFINITY });
-    moved(end.1 - s.1) + 2.0 * rounding.fold(0.0, f64::max)
+        perturbed.iter().map(|(e, f)| if e.0 == s.0 { moved(&e.1 - &s.1) + (f - int_f).abs() } else { f64::INFINITY });
+    moved(&end.1 - &s.1) + 2.0 * rounding.fold(0.0, f64::max)
 }
+
+/// The components Newton moves: the body's `(x, x')` and the forces of the
+/// springs stuck at `tau = 0`.
+fn active(s: &Reduced) -> Vec<usize> {
+    let stuck = s.0.iter().enumerate().filter(|(_, k)| **k == super::phase::Kind::Stick).map(|(i, _)| 2 + i);
+    [0, 1].into_iter().chain(stuck).collect()
+}
+
+/// The multipliers reported: the largest in modulus (the flat punch has three).
+const MULTIPLIERS: usize = 3;
 
 /// The scales of the sampling steps along which an orbit's map is run again
 /// for its rounding ([`orbit_estimate`]).
@@ -264,15 +294,16 @@ pub(super) fn jacobian(
     s: &Reduced,
     k: usize,
     (p0, f0): &(Reduced, f64),
-) -> (Matrix3<f64>, Vector3<f64>) {
-    let mut j = Matrix3::zeros();
-    let mut g = Vector3::zeros();
-    for i in 0..3 {
+) -> (DMatrix<f64>, DVector<f64>) {
+    let n = s.1.len();
+    let mut j = DMatrix::zeros(n, n);
+    let mut g = DVector::zeros(n);
+    for i in 0..n {
         let h = 1e-6 * (1.0 + s.1[i].abs());
-        let mut a = *s;
+        let mut a = s.clone();
         a.1[i] += h;
         let (pa, fa) = map_k(fd, &a, k);
-        j.set_column(i, &((pa.1 - p0.1) / h));
+        j.set_column(i, &((&pa.1 - &p0.1) / h));
         g[i] = (fa - f0) / h;
     }
     (j, g)
@@ -283,22 +314,25 @@ mod tests {
     use super::{distance, multipliers, orbit, NEWTON_BUDGET};
     use crate::system::phase::Params;
     use crate::system::reduced::{foundation, map_k, stated_start};
-    use nalgebra::Matrix3;
+    use nalgebra::{DMatrix, DVector};
 
     /// A Jacobian of zeros (a heavily damped body's, by differences) has the
     /// multipliers 0, where nalgebra's Schur fails on it; one that is not
     /// finite has none known.
     #[test]
     fn a_zero_jacobian_has_multipliers_zero() {
-        assert_eq!(multipliers(&Matrix3::zeros()), Some(vec![[0.0, 0.0]; 3]));
-        assert_eq!(multipliers(&Matrix3::from_element(f64::NAN)), None);
-        let m = multipliers(&Matrix3::from_diagonal(&nalgebra::Vector3::new(0.5, -0.25, 0.0))).unwrap();
-        let mut re: Vec<f64> = m.iter().map(|l| l[0]).collect();
-        re.sort_by(f64::total_cmp);
-        assert_eq!(re, [-0.25, 0.0, 0.5]);
+        assert_eq!(multipliers(&DMatrix::zeros(3, 3), 3), Some(vec![[0.0, 0.0]; 3]));
+        assert_eq!(multipliers(&DMatrix::from_element(3, 3, f64::NAN), 3), None);
+        let m = multipliers(&DMatrix::from_diagonal(&DVector::from_vec(vec![0.5, -0.25, 0.0])), 3).unwrap();
+        assert_eq!(m, [[0.5, 0.0], [-0.25, 0.0], [0.0, 0.0]]);
+        // Of many (a curved body's springs), the three largest in modulus, largest first.
+        let m = multipliers(&DMatrix::from_diagonal(&DVector::from_vec(vec![0.1, 0.0, -0.7, 0.0, 0.3])), 9).unwrap();
+        assert_eq!(m, [[-0.7, 0.0], [0.3, 0.0], [0.1, 0.0]]);
+        // A spring slipping at tau = 0 (not among Newton's components): its multiplier 0.
+        let m = multipliers(&DMatrix::from_diagonal(&DVector::from_vec(vec![-0.5, 0.25])), 3).unwrap();
+        assert_eq!(m, [[-0.5, 0.0], [0.25, 0.0], [0.0, 0.0]]);
     }
     use crate::system::phase::Kind;
-    use nalgebra::Vector3;
 
     /// Newton starts no iteration that could end beyond the budget of the
     /// whole search ([`NEWTON_BUDGET`]): from the same state, the orbit is
@@ -307,12 +341,12 @@ mod tests {
     #[test]
     fn newton_keeps_to_its_budget() {
         let p = Params { kappa: 1.0, omega: 0.5, zeta: 0.05, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
-        let mut s = stated_start(&p);
         let fd = foundation(p);
+        let mut s = stated_start(&fd);
         for _ in 0..12 {
             s = map_k(&fd, &s, 1).0;
         }
-        assert!(orbit(&fd, s, 1, 12).is_some());
+        assert!(orbit(&fd, s.clone(), 1, 12).is_some());
         let spent = foundation(p);
         spent.count((NEWTON_BUDGET - 3.0 * spent.steps_per_period()) as u64);
         assert!(orbit(&spent, s, 1, 12).is_none());
@@ -324,11 +358,12 @@ mod tests {
     /// 1e-6 apart; forces 0.25 apart at 0.25 are 0.2 apart.
     #[test]
     fn the_distance_is_relative_and_phases_differ_infinitely() {
-        let a = (Kind::Stick, Vector3::new(1e6 + 1.0, 0.0, 0.5));
-        let b = (Kind::Stick, Vector3::new(1e6, 0.0, 0.25));
+        let v = |x: [f64; 3]| DVector::from_vec(x.to_vec());
+        let a = (vec![Kind::Stick], v([1e6 + 1.0, 0.0, 0.5]));
+        let b = (vec![Kind::Stick], v([1e6, 0.0, 0.25]));
         assert_eq!(distance(&a, &b), 0.25 / 1.25);
-        let far = (Kind::Stick, Vector3::new(1e6 + 1.0, 0.0, 0.25));
+        let far = (vec![Kind::Stick], v([1e6 + 1.0, 0.0, 0.25]));
         assert_eq!(distance(&far, &b), 1.0 / (1.0 + 1e6));
-        assert_eq!(distance(&(Kind::Forward, b.1), &b), f64::INFINITY);
+        assert_eq!(distance(&(vec![Kind::Forward], b.1.clone()), &b), f64::INFINITY);
     }
 }

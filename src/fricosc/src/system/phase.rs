@@ -100,19 +100,6 @@ impl Params {
         let x = self.t * sp;
         State::from([x, self.vhat + self.t * cp, 0.0, x, 1.0, 0.0, 1.0, 0.0])
     }
-
-    /// The phase a relaxed spring enters at contact (`f = B = 0`): a stick,
-    /// unless the body outruns the bound's growth `B' = amp sin tau`.
-    pub(crate) fn on_contact(&self, z: &State) -> Kind {
-        let rise = self.amp * z[SIN];
-        if z[V] > rise {
-            Kind::Forward
-        } else if z[V] < -rise {
-            Kind::Backward
-        } else {
-            Kind::Stick
-        }
-    }
 }
 
 /// The dashpot's coefficient in the seed's units, `c/(m omega) Omega^2 =
@@ -151,17 +138,24 @@ pub(crate) fn series(a: &Generator, z: &State, h: f64, j: usize) -> Option<State
 /// a period's 436 steps of a pure slip (an internal error: `mu` beyond 1 by
 /// more than its estimate).
 pub(crate) fn exp_structured(m: &Generator) -> Generator {
-    let mut reach = SMatrix::<bool, 8, 8>::from_fn(|i, j| i == j || m[(i, j)] != 0.0);
-    // The transitive closure: at most 8 rounds of reach = reach . reach.
-    for _ in 0..8 {
-        let next = SMatrix::<bool, 8, 8>::from_fn(|i, j| (0..8).any(|k| reach[(i, k)] && reach[(k, j)]));
-        if next == reach {
-            break;
+    // Row i's reach as bits; the transitive closure by Warshall's rule.
+    let mut reach = [0u8; 8];
+    for (i, row) in reach.iter_mut().enumerate() {
+        *row = (0..8).filter(|&j| i == j || m[(i, j)] != 0.0).fold(0, |r, j| r | 1 << j);
+    }
+    for k in 0..8 {
+        for i in 0..8 {
+            if reach[i] & 1 << k != 0 {
+                reach[i] |= reach[k];
+            }
         }
-        reach = next;
     }
     let mut e = m.exp();
-    e.zip_apply(&reach.map(|r| if r { 1.0 } else { 0.0 }), |x, keep| *x *= keep);
+    for (i, row) in reach.iter().enumerate() {
+        for j in (0..8).filter(|&j| row & 1 << j == 0) {
+            e[(i, j)] = 0.0;
+        }
+    }
     e
 }
 

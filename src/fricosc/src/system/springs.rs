@@ -231,13 +231,17 @@ impl Foundation {
         TWO_PI / (self.scale * step_within(&a, self.cap))
     }
 
-    /// The state at the stated start: springs in contact at `tau = 0` (their
-    /// bound `b_i - amp >= 0`: at 0 a spring touches there) stuck and relaxed
-    /// at the body's position `x`, the others free.
-    pub(crate) fn start(&self, x: f64) -> Vec<Spring> {
-        self.b
-            .iter()
-            .map(|&bi| if bi - self.p.amp >= 0.0 { Spring::Stuck { l: x + bi, m: x - bi } } else { Spring::Free })
+    /// The springs at the stated start (the body's state `z` at `tau = 0`):
+    /// those in contact there stuck and relaxed at the body's position, one
+    /// whose bound is 0 there (`b_i = amp`) touching as at a regain of
+    /// contact ([`Foundation::contact`]), the others free.
+    pub(crate) fn start(&self, z: &State) -> Vec<Spring> {
+        (0..self.b.len())
+            .map(|i| match (self.b[i] - self.p.amp).partial_cmp(&0.0) {
+                Some(std::cmp::Ordering::Greater) => Spring::Stuck { l: z[X] + self.b[i], m: z[X] - self.b[i] },
+                Some(std::cmp::Ordering::Equal) => self.contact(i, true, z),
+                _ => Spring::Free,
+            })
             .collect()
     }
 

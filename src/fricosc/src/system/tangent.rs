@@ -142,14 +142,14 @@ mod tests {
         let mut worst = 0.0f64;
         for (p, k) in cases {
             let fd = foundation(p);
-            let mut s = stated_start(&p);
+            let mut s = stated_start(&fd);
             for n in 0..6 {
                 let (mapped, derivatives) = map_k_tangent(&fd, &s, k);
                 let (jac, grad) = derivatives.expect("no held phase");
                 assert_eq!(mapped, map_k(&fd, &s, k), "{p:?}");
                 let (fd_jac, fd_grad) = jacobian(&fd, &s, k, &mapped);
                 let scale = 1.0 + fd_jac.amax().max(fd_grad.amax());
-                let off = (jac - fd_jac).amax().max((grad - fd_grad).amax()) / scale;
+                let off = (&jac - &fd_jac).amax().max((&grad - &fd_grad).amax()) / scale;
                 worst = worst.max(off);
                 assert!(off < 2e-5, "{p:?} period {n}: {jac} {fd_jac} {grad} {fd_grad}");
                 s = mapped.0;

@@ -1,0 +1,169 @@
+//! The attractor's search, for any springs (the flat punch's one, a curved
+//! body's many): from the stated start the period map is iterated until its
+//! state (each spring's phase, the body and the stuck springs' forces)
+//! repeats after `k <= MAX_ORBIT` periods to [`NEAR`]; that orbit is then
+//! refined by Newton on `P^k(s) = s` (`super::orbit`), or, for a state of
+//! more than [`MAX_NEWTON`] components (thousands of springs, whose dense
+//! Jacobian would cost more than the periods), by the map's own
+//! contraction ([`contracted`]). Where nothing closes
+//! within the periods and steps allowed, Newton is tried once more from the
+//! last state, and else the answer is no period: the mean of the last half's
+//! per-period values with its standard error and drift (`super::mean`) and
+//! the rounding of a period.
+
+use super::mean::batch_mean;
+use super::orbit::{close, distance, orbit, rounding_of_a_period, ROUNDING};
+use super::reduced::{map_k, stated_start, Reduced};
+use super::springs::Foundation;
+use super::{chattering, SystemReport, MAX_ORBIT, MAX_STEPS, MIN_PERIODS};
+use crate::error::Result;
+
+/// How close a return must come for the search to hand it to Newton, which
+/// with the variational Jacobian closes it to rounding in three or four
+/// iterations from there; a return this near that Newton cannot close
+/// costs an attempt ([`NEWTON_ATTEMPTS`]). At 1e-6 a typical flat point ran
+/// 20 periods before Newton where now it runs 10.
+const NEAR: f64 = 1e-3;
+
+/// Most near-repeats refined by Newton before the search goes on without.
+const NEWTON_ATTEMPTS: usize = 3;
+
+/// Most components of a state refined by Newton (`2 + N`: 512 springs);
+/// beyond, an orbit is refined by the map's contraction ([`contracted`]).
+const MAX_NEWTON: usize = 2 + 512;
+/// A repeat handed to [`contracted`] (relative to 1 and the state).
+const REPEAT: f64 = 1e-9;
+/// Orbits closed beyond this are exact to rounding ([`contracted`]).
+const TIGHT: f64 = 1e-13;
+/// Most orbits run to refine one repeat ([`contracted`]).
+const REFINE: usize = 200;
+
+/// The attractor of the springs `fd` from the stated start within
+/// `max_periods` (and, once `MIN_PERIODS` are run, `MAX_STEPS` sampling
+/// steps, Newton's among them), and the state at `tau = 0` of its first period.
+pub(crate) fn attractor(fd: &Foundation, max_periods: usize) -> Result<(SystemReport, Reduced)> {
+    let mut s = stated_start(fd);
+    let mut seen: Vec<Reduced> = vec![s.clone()];
+    let mut per_period = vec![];
+    let mut attempts = 0;
+    for n in 1..=max_periods {
+        if n > MIN_PERIODS && fd.steps_run() as f64 > MAX_STEPS {
+            break;
+        }
+        crate::interrupt::check()?;
+        let (next, int_f) = map_k(fd, &s, 1);
+        if fd.chattered() {
+            return Err(chattering());
+        }
+        per_period.push(int_f);
+        s = next;
+        let back = |k: usize| &seen[seen.len() - k];
+        // A near-repeat that Newton cannot close is not an orbit (a slow
+        // quasi-periodic drift): look on, at most NEWTON_ATTEMPTS times.
+        if let Some(k) =
+            (1..=MAX_ORBIT.min(n)).find(|&k| close(back(k), &s, NEAR)).filter(|_| attempts < NEWTON_ATTEMPTS)
+        {
+            let found = if s.1.len() <= MAX_NEWTON {
+                attempts += 1;
+                orbit(fd, s.clone(), k, n)
+            } else if distance(back(k), &s) <= REPEAT {
+                contracted(fd, &s, k, n)?
+            } else {
+                None
+            };
+            if let Some(found) = found {
+                return if fd.chattered() { Err(chattering()) } else { Ok(found) };
+            }
+        }
+        if seen.len() > MAX_ORBIT {
+            seen.remove(0);
+        }
+        seen.push(s.clone());
+    }
+    // An orbit that contracts slowly (a multiplier near 1) need not repeat
+    // within the periods run: Newton from the last state, at period 1 first
+    // (the cheapest; a rotating transient may come closest after a few
+    // periods), then at the period whose return came closest.
+    let (last, periods) = (seen.len() - 1, per_period.len());
+    let gap = |k: usize| distance(&seen[last - k], &s);
+    let closest = (1..=MAX_ORBIT.min(last)).min_by(|&a, &b| gap(a).total_cmp(&gap(b)));
+    let mut tried = vec![1];
+    tried.extend(closest.filter(|&k| k != 1));
+    for k in tried.into_iter().filter(|&k| k <= last && s.1.len() <= MAX_NEWTON) {
+        if let Some(found) = orbit(fd, s.clone(), k, periods) {
+            return if fd.chattered() { Err(chattering()) } else { Ok(found) };
+        }
+    }
+    crate::interrupt::check()?;
+    let mean_b = fd.mean_b * std::f64::consts::TAU;
+    let tail: Vec<f64> = per_period[periods / 2..].iter().map(|x| x / mean_b).collect();
+    let m = batch_mean(&tail, 10);
+    let rounding = rounding_of_a_period(fd, &s) / mean_b + ROUNDING * m.mean.abs();
+    let report = SystemReport {
+        mu_ratio: m.mean,
+        period: None,
+        standard_error: Some(m.standard_error),
+        periods_run: periods,
+        multipliers: None,
+        events: vec![],
+        error_estimate: m.error_estimate() + rounding,
+        springs: None,
+        held_steps: fd.held(),
+    };
+    Ok((report, s))
+}
+
+/// The period-`k` orbit through (near) `s` by the map's own contraction:
+/// orbit after orbit (at most [`REFINE`], within two budgets of steps)
+/// until the state closes to [`TIGHT`]; the closure's bound is the last
+/// change of the orbit's `mu` summed as a geometric series with the measured
+/// contraction of the state, plus an ulp of the bound a step. `None` where
+/// the state does not contract (a slow drift, not an orbit). No multipliers
+/// or events are reported (a state of thousands of springs).
+fn contracted(fd: &Foundation, s: &Reduced, k: usize, run: usize) -> Result<Option<(SystemReport, Reduced)>> {
+    let norm = std::f64::consts::TAU * fd.mean_b * k as f64;
+    let block = |s: &Reduced| {
+        let (end, int_f) = map_k(fd, s, k);
+        (end, int_f / norm)
+    };
+    let (mut last, mut mu) = block(s);
+    let mut n = run + k;
+    let (mut d, mut change, mut rate) = (distance(s, &last), f64::INFINITY, 1.0);
+    for _ in 0..REFINE {
+        crate::interrupt::check()?;
+        let (next, m) = block(&last);
+        n += k;
+        let dn = distance(&last, &next);
+        (change, rate, mu, d, last) = ((m - mu).abs(), dn / d, m, dn, next);
+        if d <= TIGHT || rate >= 1.0 || fd.steps_run() as f64 > 2.0 * MAX_STEPS {
+            break;
+        }
+    }
+    if !(rate < 1.0 || d <= TIGHT) {
+        return Ok(None);
+    }
+    let rounding = f64::EPSILON * fd.steps_run() as f64 / n as f64;
+    let closure = rounding + if d <= TIGHT { change } else { change * rate / (1.0 - rate) };
+    // The least period: the first divisor of k after which the state is back
+    // within ten times its closure.
+    let closed = 10.0 * d.max(TIGHT);
+    let mut at = last.clone();
+    let period = (1..k)
+        .find(|&p| {
+            at = map_k(fd, &at, 1).0;
+            k.is_multiple_of(p) && distance(&last, &at) <= closed
+        })
+        .unwrap_or(k);
+    let report = SystemReport {
+        mu_ratio: mu,
+        period: Some(period),
+        standard_error: None,
+        periods_run: n,
+        multipliers: None,
+        events: vec![],
+        error_estimate: closure,
+        springs: None,
+        held_steps: fd.held(),
+    };
+    Ok(Some((report, last)))
+}
