@@ -238,8 +238,8 @@ CASES = [
     # amp = 1 exactly: contact touches at tau = 0 only.
     (1.0, 0.5, 0.05, 0.3, 1.0, 0.0, 0.0),
     (1.0, 0.5, 0.05, 0.3, 1.0, 0.5, 0.7),
-    # Contact regained as fast as the bound grows (f = B = 0, x' = B'): the
-    # solver holds the phase a step there (SystemReport::held_steps).
+    # Contact regained as fast as the bound grows (f = B = 0, x' = B'): a
+    # solver may hold the phase a step there (SystemReport::held_steps).
     (0.3378207896487312, 0.16841951380861625, 0.1, 0.06119254081987559, 1.1240005969640734, 0.0, 0.0),
 ]
 

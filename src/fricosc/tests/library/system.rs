@@ -385,6 +385,22 @@ fn a_period_rounded_over_many_steps_is_within_its_estimate() {
     assert!((r.mu_ratio - 1.0).abs() <= r.error_estimate && r.error_estimate < 1e-13, "{r:?}");
 }
 
+/// A regain of contact where the body moves backward as fast as the bound
+/// grows (`f = -B = 0`, `x' = -B'`, found by a scan of 20,000 random points):
+/// stick and backward slip alternate at one instant, the phase is held for a
+/// step (`held_steps` 1), and the answer is off by 2.6e-7, within its
+/// estimate (5.0e-7), against `system_reference.py`'s `solve` at the point
+/// (40 digits, 37 periods). A hold costs that much accuracy; its estimate says so.
+#[test]
+fn a_held_regain_is_recorded_within_its_estimate() {
+    let c = Conditions::vhat(0.773_512_323_890_979_1, 2.156_987_056_873_848).unwrap();
+    let sys = System::new(0.330_214_884_773_706_75, 0.125_927_881_753_258_8, 0.1).unwrap();
+    let r = flat(&c, &sys).unwrap();
+    assert_eq!((r.period, r.held_steps), (Some(1), 1), "{r:?}");
+    let err = exact_error(r.mu_ratio, "0.1496256135356595899666886");
+    assert!(err <= r.error_estimate && r.error_estimate < 1e-6, "{err:e} {r:?}");
+}
+
 /// Where contact is regained as fast as the bound grows (`f = B = 0` and `x'
 /// = B'`), a machine may find stick and slip alternating at one instant and
 /// hold the phase for a step (`SystemReport::held_steps`); the flat punch's
