@@ -63,7 +63,8 @@ pub(super) fn judge(shape: &Shape, rows: &[Measurement], fixed: &Fixed, r: &mut 
     }
     if !r.outliers.is_empty() {
         r.verdicts.push(format!(
-            "rows {} are more than {OUTLIER} standard uncertainties from the model (normalised residuals {})",
+            "rows {} (counted from 0, in the order given) are more than {OUTLIER} standard uncertainties from the \
+             model (normalised residuals {})",
             list(&r.outliers),
             r.outliers.iter().map(|&i| format!("{:.1}", r.normalised_residuals[i])).collect::<Vec<_>>().join(", ")
         ));
@@ -99,7 +100,7 @@ fn bad_fit(shape: &Shape, all: &[Measurement], fixed: &Fixed, r: &FitReport, p: 
         let kept: Vec<Measurement> =
             rows.iter().enumerate().filter(|(i, _)| !outlying.contains(i)).map(|(_, m)| *m).collect();
         if let Some((_, p)) = refit(shape, &kept, &given) {
-            causes.push(format!("the outlying rows {} (without them p = {p:.2})", list(&r.outliers)));
+            causes.push(format!("the outlying rows {} (from 0; without them p = {p:.2})", list(&r.outliers)));
         }
     }
     for k in (0..3).filter(|&k| given[k].is_some()) {

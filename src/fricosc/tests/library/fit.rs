@@ -159,7 +159,7 @@ fn an_outlier_is_named() {
     assert_eq!(r.outliers, vec![5], "{:?}", r.normalised_residuals);
     assert!(r.normalised_residuals[5] > 3.5);
     assert!(
-        r.verdicts.iter().any(|v| v.contains("likely: the outlying rows 5 (without them p = ")),
+        r.verdicts.iter().any(|v| v.contains("likely: the outlying rows 5 (from 0; without them p = ")),
         "{:?}",
         r.verdicts
     );
@@ -169,7 +169,8 @@ fn an_outlier_is_named() {
     rows[5].mu += 8.0 * 0.002;
     let r = fit(&Shape::flat(), &rows, &Fixed::default()).unwrap();
     assert_eq!(r.outliers, vec![5], "{:?}", r.normalised_residuals);
-    let said = "rows 5 are more than 3.5 standard uncertainties";
+    // Named by their index counted from 0 (the command line adds each one's line in the file).
+    let said = "rows 5 (counted from 0, in the order given) are more than 3.5 standard uncertainties";
     assert!(r.verdicts.iter().any(|v| v.starts_with(said)), "{:?}", r.verdicts);
 }
 
