@@ -25,7 +25,7 @@ attractor; a point that does not settle within 3000 periods is reported as
 such); mu = int f / int B over the last period.
 
 Run: python3 data/scripts/system_reference.py > data/system-reference.json
-(needs mpmath; a few minutes). Inputs are taken exactly (the shortest
+(needs mpmath; about six minutes). Inputs are taken exactly (the shortest
 decimal text of each double).
 """
 
@@ -241,6 +241,13 @@ CASES = [
     # Contact regained as fast as the bound grows (f = B = 0, x' = B'): a
     # solver may hold the phase a step there (SystemReport::held_steps).
     (0.3378207896487312, 0.16841951380861625, 0.1, 0.06119254081987559, 1.1240005969640734, 0.0, 0.0),
+    # The same backward (f = -B = 0, x' = -B'): the spring sticks, then slips.
+    (0.33021488477370675, 0.1259278817532588, 0.1, 0.7735123238909791, 2.156987056873848, 0.0, 0.0),
+    # Regained a little slower than the bound grows: a short stick, then a
+    # forward slip (a solver that slips at once finds another orbit).
+    (1.0, 0.5, 0.05, 2.3159145299145294, 2.033333333333333, 0.0, 0.0),
+    (1.0, 0.5, 0.05, 2.439534516765286, 2.9256410256410255, 0.0, 0.0),
+    (0.8312071448914433, 0.2813462875420833, 0.05, 0.6092661644757312, 1.275028612678914, 0.0, 0.0),
 ]
 
 

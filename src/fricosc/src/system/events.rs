@@ -60,11 +60,16 @@ pub(crate) fn first_event<T: Copy>(
     for &(w, wa, next) in events {
         let (g0, g1) = ((w * z)[0], (w * end)[0]);
         let s0 = (wa * z)[0];
-        // Below 0 at the start, or at 0 and falling (a spring touching at
-        // `tau = 0` with `amp = 1`, its bound and force both 0): at once.
         let below = g1 < 0.0;
-        if below && g0 < 0.0 {
-            first = Some((0.0, next));
+        if below && g0 <= 0.0 {
+            // At or a rounding below 0 where the step starts: at once,
+            // unless the function rises into the phase (a spring that
+            // sticks where it touches, its force and bound both 0).
+            let c = taylor.get_or_insert_with(|| Taylor::new(a, z, h)).row(&w);
+            let d = rising_from_zero(&c, h, (w.abs() * (a.abs() * z.abs()))[0]).unwrap_or(0.0);
+            if first.as_ref().is_none_or(|f| d < f.0) {
+                first = Some((d, next));
+            }
             continue;
         }
         let grazing = !below && g0 > 0.0 && s0 < 0.0 && (wa * end)[0] > 0.0;
@@ -87,6 +92,26 @@ pub(crate) fn first_event<T: Copy>(
         }
     }
     first
+}
+
+/// The zero within `h` of a function that starts at 0 up to rounding
+/// (Taylor coefficients `c`, `c[0] <= 0`) and rises into the phase, then
+/// falls below 0 by the step's end; `None` where it does not rise, or does
+/// not fall below 0 again within the step (the phase ends at once). It rises where its slope `c[1]` is positive beyond
+/// its rounding `slope_rounding` (a bound on `|w| |A| |z|`, times a few
+/// ulps), or, the slope 0 up to rounding, where its curvature `c[2]` is
+/// positive (contact regained with the body as fast as the bound: `x' =
+/// B'`). Its zero is then that of `(g - c[0]) / d` (or `/ d^2`), the
+/// polynomial deflated by the zero at the start, bracketed on the step.
+fn rising_from_zero(c: &[f64], h: f64, slope_rounding: f64) -> Option<f64> {
+    let flat = c[1].abs() <= 8.0 * f64::EPSILON * slope_rounding;
+    let skip = match (flat, c.get(2)) {
+        (false, _) if c[1] > 0.0 => 1,
+        (true, Some(&c2)) if c2 > 0.0 => 2,
+        _ => return None,
+    };
+    let deflated = |d: f64| horner(&c[skip..], d);
+    (deflated(h) < 0.0).then(|| bracketed(deflated, 0.0, h, 4.0 * f64::EPSILON).x)
 }
 
 /// Most terms of a step's Taylor polynomial.
@@ -133,7 +158,7 @@ fn horner(c: &[f64], d: f64) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::{first_event, with_slopes, Kind, State};
+    use super::{first_event, rising_from_zero, with_slopes, Kind, State};
     use crate::system::phase::{advance, Linear, Params, COS, ONE, SIN};
     use nalgebra::SMatrix;
 
@@ -161,5 +186,23 @@ mod tests {
                 other => panic!("c {c}: {other:?}"),
             }
         }
+    }
+
+    /// A function at 0 up to rounding where a step starts, which rises into
+    /// the phase and falls below 0 by the step's end, has its zero past the
+    /// maximum: `d (0.5 - 5 d)` (rising, zero 0.1), `d^2 (1 - 10 d)` with a
+    /// slope within rounding of 0 (rising by its curvature, zero 0.1); one
+    /// falling at once, or flat and curving down, ends the phase at once.
+    #[test]
+    fn a_function_rising_from_zero_ends_past_its_maximum() {
+        let zero = |c: &[f64]| rising_from_zero(c, 0.2, 1.0);
+        assert!((zero(&[-1e-17, 0.5, -5.0]).unwrap() - 0.1).abs() < 1e-15);
+        assert!((zero(&[-1e-17, -1e-17, 1.0, -10.0]).unwrap() - 0.1).abs() < 1e-15);
+        assert_eq!(zero(&[0.0, -0.5, 1.0]), None);
+        assert_eq!(zero(&[0.0, 1e-17, -1.0]), None);
+        // A slope beyond rounding decides, whatever the curvature.
+        assert_eq!(zero(&[0.0, -1e-12, 1.0, -10.0]), None);
+        // Rising throughout the step: no zero in it, the phase ends at once.
+        assert_eq!(zero(&[-1e-17, 0.5, 1.0]), None);
     }
 }

@@ -19,14 +19,20 @@ use super::{chattering, SystemReport, MAX_ORBIT, MAX_STEPS, MIN_PERIODS};
 use crate::error::Result;
 
 /// How close a return must come for the search to hand it to Newton, which
-/// with the variational Jacobian closes it to rounding in three or four
-/// iterations from there; a return this near that Newton cannot close
-/// costs an attempt ([`NEWTON_ATTEMPTS`]). At 1e-6 a typical flat point ran
-/// 20 periods before Newton where now it runs 10.
-const NEAR: f64 = 1e-3;
+/// with the variational Jacobian closes it to rounding in four or five
+/// iterations from there (each about a period's work). A return this near
+/// that Newton cannot close (the sequence of phases still changing, or a
+/// slow quasi-periodic drift) costs an attempt ([`NEWTON_ATTEMPTS`]), and
+/// the next must come [`TIGHTEN`] times nearer. At 1e-3, and a single
+/// attempt per return, the flat rows of the bench's table on a system ran
+/// 1.73 M instructions each; at 1e-1 1.22 M.
+const NEAR: f64 = 1e-1;
+
+/// How much nearer a return must come after an attempt Newton could not close.
+const TIGHTEN: f64 = 0.1;
 
 /// Most near-repeats refined by Newton before the search goes on without.
-const NEWTON_ATTEMPTS: usize = 3;
+const NEWTON_ATTEMPTS: usize = 4;
 
 /// Most components of a state refined by Newton (`2 + N`: 512 springs);
 /// beyond, an orbit is refined by the map's contraction ([`contracted`]).
@@ -45,7 +51,7 @@ pub(crate) fn attractor(fd: &Foundation, max_periods: usize) -> Result<(SystemRe
     let mut s = stated_start(fd);
     let mut seen: Vec<Reduced> = vec![s.clone()];
     let mut per_period = vec![];
-    let mut attempts = 0;
+    let (mut attempts, mut near) = (0, NEAR);
     for n in 1..=max_periods {
         if n > MIN_PERIODS && fd.steps_run() as f64 > MAX_STEPS {
             break;
@@ -58,13 +64,14 @@ pub(crate) fn attractor(fd: &Foundation, max_periods: usize) -> Result<(SystemRe
         per_period.push(int_f);
         s = next;
         let back = |k: usize| &seen[seen.len() - k];
-        // A near-repeat that Newton cannot close is not an orbit (a slow
-        // quasi-periodic drift): look on, at most NEWTON_ATTEMPTS times.
+        // A near-repeat that Newton cannot close is not an orbit yet: look
+        // on for a nearer one, at most NEWTON_ATTEMPTS times.
         if let Some(k) =
-            (1..=MAX_ORBIT.min(n)).find(|&k| close(back(k), &s, NEAR)).filter(|_| attempts < NEWTON_ATTEMPTS)
+            (1..=MAX_ORBIT.min(n)).find(|&k| close(back(k), &s, near)).filter(|_| attempts < NEWTON_ATTEMPTS)
         {
             let found = if s.1.len() <= MAX_NEWTON {
                 attempts += 1;
+                near = TIGHTEN * distance(back(k), &s);
                 orbit(fd, s.clone(), k, n)
             } else if distance(back(k), &s) <= REPEAT {
                 contracted(fd, &s, k, n)?

@@ -29,7 +29,7 @@ fn at(vhat: f64, amp: f64, t: f64, phase: f64) -> Conditions {
 #[test]
 fn the_reference_values_at_forty_digits() {
     let cases = data_cases("system-reference.json");
-    assert_eq!(cases.len(), 9);
+    assert_eq!(cases.len(), 13);
     for c in cases {
         let f = |k: &str| c[k].as_f64().unwrap();
         let sys = System::new(f("kappa"), f("frequency_ratio"), f("damping")).unwrap();
@@ -111,14 +111,15 @@ fn a_light_body_is_the_massless_one() {
 }
 
 /// Near resonance with little damping the transient beats for about a
-/// hundred periods (98 run before Newton's start); the orbit found is
-/// reported with its least period (a period-1 orbit also closes after 7
-/// periods).
+/// hundred periods; Newton, handed the first return within 1e-1 (after 9
+/// periods), closes the period-1 orbit in which the spring slips forward
+/// throughout (`mu` 1). Where it did not close, its orbit's least period
+/// was reported (a period-1 orbit also closes after 7 periods).
 #[test]
 fn the_least_period_is_reported() {
     let r = flat(&Conditions::vhat(0.3, 0.5).unwrap(), &System::new(1.0, 1.41, 0.01).unwrap()).unwrap();
     assert_eq!(r.period, Some(1));
-    assert!(r.periods_run > 49, "{}", r.periods_run);
+    assert!((r.mu_ratio - 1.0).abs() <= r.error_estimate && r.error_estimate < 1e-14, "{r:?}");
 }
 
 #[test]
@@ -284,33 +285,28 @@ fn the_critical_velocity_on_a_system() {
 }
 
 /// Every point of a grid answers (vbar 0.01 to 1.2, amp 0.1 to 3, the
-/// bench's system): a rule that ended a phase at once where its event
-/// function was exactly 0 and falling made a stick that started on its
-/// bound flip back and forth (an internal error, "a phase chattered", at
-/// 0.11818181818181818 and 0.18787878787878787 among others).
+/// bench's system) with a period-1 orbit closed to rounding: a rule that
+/// ended a phase at once where its event function was exactly 0 and
+/// falling made a stick that started on its bound flip back and forth (an
+/// internal error, "a phase chattered", at 0.11818181818181818 and
+/// 0.18787878787878787 among others); and where contact is regained nearly
+/// as fast as the bound grows, a stick whose function rose from a rounding
+/// below 0 ended at once on some steps and not on others, so that the map
+/// was not smooth near the orbit: along that line of the grid the orbit
+/// closed only to 1e-7 to 1.6e-4, two points answered a long-time mean, and
+/// values were up to 6e-5 off (`data/system-reference.json` has two of
+/// them). Observed: estimates at most 1.3e-14.
 #[test]
 fn every_point_of_a_grid_answers() {
     let sys = System::new(1.0, 0.5, 0.05).unwrap();
-    let mut means = 0;
     for i in 0..40 {
         for j in 0..40 {
             let (vbar, amp) = (0.01 + 1.19 * i as f64 / 39.0, 0.1 + 2.9 * j as f64 / 39.0);
             let r = flat(&Conditions::vbar(vbar, amp).unwrap(), &sys).unwrap();
-            if r.period.is_none() {
-                // Contact regained nearly as fast as the bound grows, where
-                // the regain decides between stick and slip: the map is not
-                // smooth near the orbit, which closes only to 1e-7 to 1.6e-4
-                // along a line of this grid (the flat punch's former machine
-                // too); at two of its points Newton does not close it, and
-                // the answer is the long-time mean, the line's estimates.
-                assert!(r.error_estimate > 1e-6 && r.error_estimate < 1e-4, "{r:?}");
-                means += 1;
-                continue;
-            }
             assert_eq!(r.period, Some(1), "vbar {vbar} amp {amp}: {r:?}");
+            assert!(r.error_estimate < 1.3e-13, "vbar {vbar} amp {amp}: {r:?}");
         }
     }
-    assert!(means <= 2, "{means}");
     let r = flat(&Conditions::vbar(0.118_181_818_181_818_18, 0.187_878_787_878_787_87).unwrap(), &sys).unwrap();
     assert!((r.mu_ratio - 0.846_624_943_216_667_8).abs() <= r.error_estimate + 1e-14, "{r:?}");
 }
@@ -387,18 +383,24 @@ fn a_period_rounded_over_many_steps_is_within_its_estimate() {
 
 /// A regain of contact where the body moves backward as fast as the bound
 /// grows (`f = -B = 0`, `x' = -B'`, found by a scan of 20,000 random points):
-/// stick and backward slip alternate at one instant, the phase is held for a
-/// step (`held_steps` 1), and the answer is off by 2.6e-7, within its
-/// estimate (5.0e-7), against `system_reference.py`'s `solve` at the point
-/// (40 digits, 37 periods). A hold costs that much accuracy; its estimate says so.
+/// the function of the backward slip, `f + B`, starts at 0 with slope 0 up
+/// to rounding and rises (its curvature is positive), so the spring sticks
+/// and slips backward only where the function falls to 0 again. A machine
+/// that ended the stick at once (a rounding below 0 at the start) held stick
+/// and backward slip alternating for a step, or slipped at once, and was
+/// 2.6e-7 and 2.1e-7 off (within estimates 5.0e-7 and 4.2e-7); the value is
+/// `data/system-reference.json`'s case, to rounding.
 #[test]
-fn a_held_regain_is_recorded_within_its_estimate() {
+fn a_regain_backward_as_fast_as_the_bound_grows_sticks_first() {
     let c = Conditions::vhat(0.773_512_323_890_979_1, 2.156_987_056_873_848).unwrap();
     let sys = System::new(0.330_214_884_773_706_75, 0.125_927_881_753_258_8, 0.1).unwrap();
     let r = flat(&c, &sys).unwrap();
-    assert_eq!((r.period, r.held_steps), (Some(1), 1), "{r:?}");
+    assert_eq!((r.period, r.held_steps), (Some(1), 0), "{r:?}");
+    let kinds: Vec<Kind> = r.events.iter().map(|e| e.kind).collect();
+    assert_eq!(kinds, [Kind::Stick, Kind::Backward, Kind::Stick, Kind::Forward, Kind::Free], "{r:?}");
+    assert!(r.events[1].tau - r.events[0].tau > 0.02, "{r:?}");
     let err = exact_error(r.mu_ratio, "0.1496256135356595899666886");
-    assert!(err <= r.error_estimate && r.error_estimate < 1e-6, "{err:e} {r:?}");
+    assert!(err <= r.error_estimate && r.error_estimate < 1e-14, "{err:e} {r:?}");
 }
 
 /// Where contact is regained as fast as the bound grows (`f = B = 0` and `x'
