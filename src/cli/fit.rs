@@ -29,6 +29,10 @@ pub struct FitArgs {
     /// body's attractor there. --frequency-ratio holds at one frequency.
     #[command(flatten)]
     pub system: crate::cmd::SystemPoint,
+    /// Fit the system's stiffness kappa = K/kx from --system-stiffness (--frequency-ratio and
+    /// --damping held).
+    #[arg(long, requires = "system_stiffness")]
+    pub fit_system_stiffness: bool,
     /// summary or json (default: summary at a terminal, else json).
     #[arg(long)]
     pub format: Option<String>,
@@ -74,7 +78,12 @@ pub fn run(a: FitArgs) -> Result<Outcome> {
     if let Some(sys) = a.system.system(None)? {
         rows.iter_mut().for_each(|r| r.system = Some(sys));
     }
-    let fixed = Fixed { mu0: a.mu0, stiffness_ratio: a.stiffness_ratio, u0: a.u0 };
+    let fixed = Fixed {
+        mu0: a.mu0,
+        stiffness_ratio: a.stiffness_ratio,
+        u0: a.u0,
+        fit_system_stiffness: a.fit_system_stiffness,
+    };
     let bar = std::sync::Arc::new(crate::progress::Bar::new(None, "fit: rows evaluated"));
     let seen = bar.clone();
     let r = fricosc::fit::fit_with_progress(&shape, &rows, &fixed, move |n| seen.inc(n as u64))?;
@@ -149,9 +158,8 @@ impl serde::Serialize for RowsOut<'_> {
 fn to_json(shape: &str, rows: &[Measurement], r: &FitReport) -> Result<String> {
     let head = serde_json::json!({
         "shape": shape,
-        "parameters": {"mu0": parameter(&r.mu0), "stiffness_ratio": parameter(&r.stiffness_ratio),
-            "u0": parameter(&r.u0)},
-        "order": ["mu0", "stiffness_ratio", "u0"],
+        "parameters": r.parameters.iter().map(|p| (p.name.to_string(), parameter(p))).collect::<serde_json::Map<_, _>>(),
+        "order": r.parameters.iter().map(|p| p.name).collect::<Vec<_>>(),
         "covariance": r.covariance, "correlation": r.correlation,
         "chi2": r.chi2, "dof": r.dof, "reduced_chi2": r.reduced_chi2, "weighted": r.weighted,
         "p_value": r.p_value, "verdicts": r.verdicts, "notes": r.notes, "outliers": r.outliers,
@@ -179,10 +187,15 @@ fn summary(shape: &str, source: &str, r: &FitReport, lines: &[u64]) -> String {
         (false, None) => format!("  {name:<16} {} (not determined)\n", crate::output::num(p.value)),
     };
     let mut out = format!("{source}: {} rows fitted with the {shape} model\n", r.residuals.len());
-    out += &line("mu0", &r.mu0);
-    out += &line("kx/kz", &r.stiffness_ratio);
-    let u0 = r.reference_load.map_or("u0 (m)".into(), |l| format!("u0 (m) at {l} N"));
-    out += &line(&u0, &r.u0);
+    for p in &r.parameters {
+        let name = match p.name {
+            "stiffness_ratio" => "kx/kz".into(),
+            "u0" => r.reference_load.map_or("u0 (m)".into(), |l| format!("u0 (m) at {l} N")),
+            "system_stiffness" => "K/kx".into(),
+            other => other.to_string(),
+        };
+        out += &line(&name, p);
+    }
     let kind = if r.weighted { "weighted by sigma" } else { "unweighted: errors scaled by the residuals" };
     let p =
         r.p_value.map(|p| if p >= 0.01 { format!(", p {p:.2}") } else { format!(", p {p:.1e}") }).unwrap_or_default();
@@ -296,11 +309,13 @@ fn drawing(shape: &fricosc::Shape, rows: &[Measurement], r: &FitReport) -> Resul
     let x = Axis::linear("sliding velocity v_{0} (m/s)", (0.0, vmax));
     let fit = Chart {
         title: format!(
-            "{}: mu against v0, fitted (mu0 {}, kx/kz {}, u0 {} m)",
+            "{}: mu against v0, fitted (mu0 {}, kx/kz {}, u0 {} m{})",
             shape.name(),
-            crate::output::num(r.mu0.value),
-            crate::output::num(r.stiffness_ratio.value),
-            crate::output::num(r.u0.value)
+            value(r, "mu0"),
+            value(r, "stiffness_ratio"),
+            value(r, "u0"),
+            r.parameter("system_stiffness")
+                .map_or(String::new(), |p| format!(", K/kx {}", crate::output::num(p.value)))
         ),
         x: x.clone(),
         y: Axis::linear("friction coefficient μ", (0.0, 1.05 * ymax)),
@@ -317,6 +332,11 @@ fn drawing(shape: &fricosc::Shape, rows: &[Measurement], r: &FitReport) -> Resul
         rules: vec![Rule { horizontal: true, at: 0.0 }],
     };
     Ok(stack(&fit.svg(), &residuals.svg()))
+}
+
+/// The value of the parameter `name` as printed (`-` where the fit has none).
+fn value(r: &FitReport, name: &str) -> String {
+    r.parameter(name).map_or("-".into(), |p| crate::output::num(p.value))
 }
 
 /// Two SVG drawings of the chart module, the second below the first.

@@ -136,8 +136,16 @@ fn fit_on_the_rigs_system() {
         })
         .collect();
     let r = fricosc::fit::fit(&fricosc::Shape::flat(), &rows, &fricosc::fit::Fixed::default()).unwrap();
-    assert_eq!(v["parameters"]["mu0"]["value"].as_f64(), Some(r.mu0.value), "{v}");
+    assert_eq!(v["parameters"]["mu0"]["value"].as_f64(), Some(r.parameters[0].value), "{v}");
     assert_eq!(v["chi2"].as_f64(), Some(r.chi2));
+    // The rig's stiffness is a parameter, held at the rig's value (or fitted:
+    // `--fit-system-stiffness`, which needs the rig's system to start from).
+    assert_eq!(v["order"], serde_json::json!(["mu0", "stiffness_ratio", "u0", "system_stiffness"]), "{v}");
+    assert_eq!(v["parameters"]["system_stiffness"]["fixed"], serde_json::json!(true), "{v}");
+    assert_eq!(v["covariance"].as_array().map(Vec::len), Some(4), "{v}");
+    let out = fricosc(&["fit", SYNTHETIC, "--fit-system-stiffness"], None);
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(out.status.code() == Some(2) && out.stdout.is_empty() && err.contains("--system-stiffness"), "{err}");
     let mixed = text.replacen(",200,", ",300,", 1);
     let out = fricosc(&["fit", "-", "--system-stiffness", "1", "--frequency-ratio", "0.5"], Some(&mixed));
     let err = String::from_utf8(out.stderr).unwrap();

@@ -662,7 +662,7 @@ def test_fit_is_the_command_lines() -> None:
     frame = pd.read_csv(path)
     mine = fricosc.fit(frame)
     theirs = json.loads(cli("fit", str(path), "--format", "json"))
-    for name in fricosc.FitResult.NAMES:
+    for name in mine.names:
         assert mine.params[name] == theirs["parameters"][name]["value"]
         assert mine.stderr[name] == theirs["parameters"][name]["stderr"]
     assert abs(mine.params["stiffness_ratio"] / 0.8 - 1) < 1e-7 and mine.dof == 24 and mine.cov.shape == (3, 3)
@@ -682,10 +682,11 @@ def test_fit_is_the_command_lines() -> None:
     theirs = json.loads(cli("fit", str(path), "--system-stiffness", "1", "--frequency-ratio", "0.5", "--damping", "0.3",
                             "--format", "json", status=1 if rig.verdicts else 0))
     assert rig.params["mu0"] == theirs["parameters"]["mu0"]["value"] and rig.chi2 == theirs["chi2"]
+    assert rig.names == ["mu0", "stiffness_ratio", "u0", "system_stiffness"] and rig.stderr["system_stiffness"] == 0.0
     # Load control: a load column (N); u0 at the median load, as the command line's.
     loaded = ROOT / "data" / "fit-synthetic-load.csv"
     mine = fricosc.fit(pd.read_csv(loaded))
     theirs = json.loads(cli("fit", str(loaded), "--format", "json"))
     assert mine.reference_load == theirs["reference_load"] == 1.0
-    assert all(mine.params[k] == theirs["parameters"][k]["value"] for k in fricosc.FitResult.NAMES)
+    assert all(mine.params[k] == theirs["parameters"][k]["value"] for k in mine.names)
     assert abs(mine.params["u0"] / 1e-6 - 1) < 1e-7 and frame.shape[0] == 27

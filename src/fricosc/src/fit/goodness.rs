@@ -2,7 +2,7 @@
 //! the rows far from the model, and where the model does not fit, its
 //! likely cause, each tried by a refit.
 
-use super::{fit_checked, FitReport, Fixed, Measurement, NAMES};
+use super::{fit_checked, FitReport, Measurement, NAMES, NP};
 use crate::error::Result;
 use crate::shape::Shape;
 use statrs::distribution::{ChiSquared, ContinuousCDF};
@@ -31,7 +31,7 @@ fn p_value(chi2: f64, dof: usize) -> Option<f64> {
 
 /// The goodness of fit of `r` (fitted to `rows` with `fixed` held): its
 /// normalised residuals, outliers, p-value, notes and verdicts.
-pub(super) fn judge(shape: &Shape, rows: &[Measurement], fixed: &Fixed, r: &mut FitReport) -> Result<()> {
+pub(super) fn judge(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; NP], r: &mut FitReport) -> Result<()> {
     let scale = if r.weighted { 1.0 } else { r.reduced_chi2.sqrt() };
     r.normalised_residuals = r
         .residuals
@@ -50,7 +50,7 @@ pub(super) fn judge(shape: &Shape, rows: &[Measurement], fixed: &Fixed, r: &mut 
     if r.weighted {
         r.p_value = p_value(r.chi2, r.dof);
         if let Some(p) = r.p_value.filter(|&p| p < SIGNIFICANCE) {
-            let verdict = bad_fit(shape, rows, fixed, r, p);
+            let verdict = bad_fit(shape, rows, given, r, p);
             r.verdicts.push(verdict);
             return Ok(());
         }
@@ -83,13 +83,12 @@ fn list(rows: &[usize]) -> String {
 /// with the causes that a refit confirms: without the outlying rows, with a
 /// held parameter freed, or with another shape, the p-value reaches 0.01
 /// (on at most [`CAUSE_ROWS`] rows).
-fn bad_fit(shape: &Shape, all: &[Measurement], fixed: &Fixed, r: &FitReport, p: f64) -> String {
-    let given = [fixed.mu0, fixed.stiffness_ratio, fixed.u0];
+fn bad_fit(shape: &Shape, all: &[Measurement], given: &[Option<f64>; NP], r: &FitReport, p: f64) -> String {
     // The refits on at most CAUSE_ROWS rows, evenly spread, the outliers among them.
     let every = all.len().div_ceil(CAUSE_ROWS);
     let rows: Vec<Measurement> = all.iter().step_by(every).copied().collect();
     let outlying: Vec<usize> = r.outliers.iter().filter(|&&i| i % every == 0).map(|&i| i / every).collect();
-    let refit = |shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3]| {
+    let refit = |shape: &Shape, rows: &[Measurement], given: &[Option<f64>; NP]| {
         let free = given.iter().filter(|g| g.is_none()).count();
         let f = (rows.len() > free).then(|| fit_checked(shape, rows, given).ok()).flatten()?;
         let p = p_value(f.chi2, f.dof)?;
@@ -99,15 +98,16 @@ fn bad_fit(shape: &Shape, all: &[Measurement], fixed: &Fixed, r: &FitReport, p: 
     if !outlying.is_empty() {
         let kept: Vec<Measurement> =
             rows.iter().enumerate().filter(|(i, _)| !outlying.contains(i)).map(|(_, m)| *m).collect();
-        if let Some((_, p)) = refit(shape, &kept, &given) {
+        if let Some((_, p)) = refit(shape, &kept, given) {
             causes.push(format!("the outlying rows {} (from 0; without them p = {p:.2})", list(&r.outliers)));
         }
     }
-    for k in (0..3).filter(|&k| given[k].is_some()) {
-        let mut freed = given;
+    // Each held parameter freed (a system's stiffness where every row has the one value).
+    for k in (0..NP).filter(|&k| given[k].is_some_and(|v| !v.is_nan())) {
+        let mut freed = *given;
         freed[k] = None;
         if let Some((f, p)) = refit(shape, &rows, &freed) {
-            let q = [f.mu0, f.stiffness_ratio, f.u0][k];
+            let Some(&q) = f.parameter(NAMES[k]) else { continue };
             let se = q.stderr.map_or("undetermined".into(), |e| format!("{e:.2e}"));
             causes.push(format!(
                 "the held {} = {}: fitted, it is {} +- {se} (p = {p:.2})",
@@ -117,8 +117,11 @@ fn bad_fit(shape: &Shape, all: &[Measurement], fixed: &Fixed, r: &FitReport, p: 
             ));
         }
     }
-    for name in SHAPES.iter().filter(|&&n| n != shape.name()) {
-        if let Some((_, p)) = Shape::parse(name).ok().and_then(|s| refit(&s, &rows, &given)) {
+    // On a system a curved body's refit costs minutes (its points a thousand
+    // times a stiff one's): the shapes are tried on stiff rigs only.
+    let on_system = all.iter().any(|m| m.system.is_some());
+    for name in SHAPES.iter().filter(|&&n| n != shape.name() && !on_system) {
+        if let Some((_, p)) = Shape::parse(name).ok().and_then(|s| refit(&s, &rows, given)) {
             causes.push(format!("the shape: {name} fits (p = {p:.2})"));
         }
     }
@@ -127,10 +130,11 @@ fn bad_fit(shape: &Shape, all: &[Measurement], fixed: &Fixed, r: &FitReport, p: 
         r.chi2, r.dof
     );
     if causes.is_empty() {
+        let shapes =
+            if on_system { "not the shapes (on a system)".into() } else { format!("the shapes {}", SHAPES.join(", ")) };
         format!(
             "{head}; none of the usual causes explains it (tried: the outlying rows left out, each held parameter \
-             freed, the shapes {}): check that sigma is the rows' standard uncertainty, and their conditions",
-            SHAPES.join(", ")
+             freed, {shapes}): check that sigma is the rows' standard uncertainty, and their conditions"
         )
     } else {
         format!("{head}; likely: {}", causes.join("; "))

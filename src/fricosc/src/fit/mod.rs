@@ -1,7 +1,10 @@
 //! The model fitted to measured friction: `mu = mu0 * mu_ratio(shape, vbar,
 //! amp)` with `vbar = (kx/kz) v0 / (mu0 omega du)` and `amp = du/u0` (the
 //! seed's eqs. 1-3, the same for every MDR spring), for the parameters
-//! `mu0`, `kx/kz` (the stiffness ratio) and `u0`, each fitted or fixed.
+//! `mu0`, `kx/kz` (the stiffness ratio) and `u0`, each fitted or fixed, and
+//! on a rig's system its stiffness `kappa = K/kx` ([`NAMES`]): held at the
+//! rows' values, or fitted ([`Fixed::fit_system_stiffness`]). Every
+//! parameter is positive, fitted in its logarithm.
 //!
 //! # Method
 //! Weighted least squares (`sigma` per row, else 1) by Levenberg-Marquardt
@@ -32,7 +35,15 @@ pub use goodness::OUTLIER;
 use crate::error::{Error, Result};
 use crate::shape::Shape;
 use crate::Conditions;
-use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
+use nalgebra::{DMatrix, DVector, SMatrix, SVector};
+
+/// The parameters, in the order of [`FitReport::parameters`] and its
+/// covariance: `mu0`, `kx/kz`, `u0` (m), and on a system `kappa = K/kx`.
+pub const NAMES: [&str; 4] = ["mu0", "stiffness_ratio", "u0", "system_stiffness"];
+/// How many parameters there are at most.
+const NP: usize = NAMES.len();
+/// A value of each parameter ([`NAMES`]); `kappa` NaN where each row keeps its own system.
+type Values = SVector<f64, NP>;
 
 /// One measured row.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -66,12 +77,21 @@ pub struct Fixed {
     pub stiffness_ratio: Option<f64>,
     /// `u0` (m).
     pub u0: Option<f64>,
+    /// Fit the system's stiffness `kappa = K/kx`, one for every row (each
+    /// row on a system; the rows' own `kappa` is the start, their frequency
+    /// ratio and damping held). Otherwise each row's system is held as given.
+    pub fit_system_stiffness: bool,
 }
 
 /// One parameter's value and standard error.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
 pub struct Parameter {
+    /// Its name ([`NAMES`]).
+    pub name: &'static str,
+    /// The open interval it lies in (every parameter is positive: `(0, inf)`).
+    pub bounds: [f64; 2],
     /// The fitted (or fixed) value.
     pub value: f64,
     /// Its standard error (0 for a fixed parameter; `None` where the data do
@@ -90,17 +110,15 @@ pub struct Parameter {
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[non_exhaustive]
 pub struct FitReport {
-    /// `mu0`, `kx/kz`, `u0` (m).
-    pub mu0: Parameter,
-    /// `kx/kz`.
-    pub stiffness_ratio: Parameter,
-    /// `u0` (m).
-    pub u0: Parameter,
-    /// Covariance of `(mu0, kx/kz, u0)` (rows and columns of fixed or
+    /// The parameters in the order of [`NAMES`]: `mu0`, `kx/kz`, `u0` (m),
+    /// and `kappa` where the rows are on a system (fitted, or held at the
+    /// one value every row has; where the rows' values differ, not listed).
+    pub parameters: Vec<Parameter>,
+    /// Covariance of [`FitReport::parameters`] (rows and columns of fixed or
     /// undetermined parameters 0).
-    pub covariance: [[f64; 3]; 3],
+    pub covariance: Vec<Vec<f64>>,
     /// Correlation matrix (1 on the diagonal of fitted parameters).
-    pub correlation: [[f64; 3]; 3],
+    pub correlation: Vec<Vec<f64>>,
     /// `sum ((model - mu)/sigma)^2`.
     pub chi2: f64,
     /// Rows less fitted parameters.
@@ -147,12 +165,12 @@ const START_ROWS: usize = 2_000;
 const MAX_MAGNITUDE: f64 = 1e100;
 /// Largest condition number of the scaled Jacobian that determines every parameter.
 const MAX_CONDITION: f64 = 1e8;
-const NAMES: [&str; 3] = ["mu0", "stiffness_ratio", "u0"];
 
-/// `mu` of the model at `p = (mu0, kx/kz, u0)` for each row, with `(vbar,
-/// amp)`; under load control (loads relative to the reference, [`load`]) each
-/// row's own mean indentation.
-fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f64, [f64; 2])>> {
+/// `mu` of the model at `p` ([`NAMES`]) for each row, with `(vbar, amp)`;
+/// under load control (loads relative to the reference, [`load`]) each
+/// row's own mean indentation; on a system its `kappa` `p[3]` where that is
+/// finite (fitted, or the one held), else the row's own.
+fn model(shape: &Shape, rows: &[Measurement], p: &Values) -> Result<Vec<(f64, [f64; 2])>> {
     PROGRESS.with(|f| f.borrow().as_ref().map(|f| f(rows.len())));
     let q = if rows.iter().any(|r| r.load.is_some()) { load::exponent(shape)? } else { 1.0 };
     crate::numerics::par::map(rows, |r| {
@@ -167,7 +185,13 @@ fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f
         let (vbar, amp) = (p[1] * r.v0 / (p[0] * r.omega * r.du), r.du / u0);
         let ratio = match r.system {
             // On a system friction may stay reduced beyond vbar = 1.
-            Some(sys) => shape.ratio(&Conditions::vbar(vbar, amp)?.with_system(sys))?.mu_ratio,
+            Some(sys) => {
+                let sys = match p[3] {
+                    k if k.is_finite() => with_stiffness(sys, k)?,
+                    _ => sys,
+                };
+                shape.ratio(&Conditions::vbar(vbar, amp)?.with_system(sys))?.mu_ratio
+            }
             None if vbar >= 1.0 => 1.0,
             None => shape.ratio(&Conditions::vbar(vbar, amp)?)?.mu_ratio,
         };
@@ -177,7 +201,27 @@ fn model(shape: &Shape, rows: &[Measurement], p: &Vector3<f64>) -> Result<Vec<(f
     .collect()
 }
 
+/// `sys` with the stiffness `kappa` (its frequency ratio, damping and springs kept).
+fn with_stiffness(sys: crate::system::System, kappa: f64) -> Result<crate::system::System> {
+    crate::system::System::new(kappa, sys.frequency_ratio(), sys.damping())?.with_springs(sys.springs())
+}
+
 impl FitReport {
+    /// The parameter named `name` ([`NAMES`]), where the fit has it.
+    pub fn parameter(&self, name: &str) -> Option<&Parameter> {
+        self.parameters.iter().find(|p| p.name == name)
+    }
+
+    /// The parameter `k` of [`NAMES`] (listed: fitted or held at one value).
+    fn parameter_mut(&mut self, k: usize) -> Option<&mut Parameter> {
+        self.parameters.iter_mut().find(|p| p.name == NAMES[k])
+    }
+
+    /// The values of every parameter ([`NAMES`]; `kappa` NaN where not listed).
+    fn values(&self) -> Values {
+        Values::from_fn(|k, _| self.parameter(NAMES[k]).map_or(f64::NAN, |p| p.value))
+    }
+
     /// The fitted model's `mu` at one row's conditions (`v0` m/s, `du` m,
     /// `omega` rad/s), on the rig's `system` if any, at `load` (N) where the
     /// fit was under load control.
@@ -193,7 +237,7 @@ impl FitReport {
         system: Option<crate::system::System>,
         load: Option<f64>,
     ) -> Result<f64> {
-        let p = Vector3::new(self.mu0.value, self.stiffness_ratio.value, self.u0.value);
+        let p = self.values();
         let load = match (load, self.reference_load) {
             (Some(l), Some(reference)) if l.is_finite() && l > 0.0 => Some(l / reference),
             (None, None) => None,
@@ -284,13 +328,13 @@ pub fn fit_with_progress(
 /// not finite, positive and normal, fewer rows than fitted parameters plus
 /// one, or a mix of rows with and without `sigma`; the solver's errors.
 pub fn fit(shape: &Shape, rows: &[Measurement], fixed: &Fixed) -> Result<FitReport> {
-    let given = [fixed.mu0, fixed.stiffness_ratio, fixed.u0];
-    for (name, v) in NAMES.iter().zip(given) {
+    for (name, v) in NAMES.iter().zip([fixed.mu0, fixed.stiffness_ratio, fixed.u0]) {
         if let Some(v) = v.filter(|v| !(v.is_normal() && *v > 0.0)) {
             return Err(Error::param(name, v, "a fixed parameter must be finite, > 0 and a normal double"));
         }
     }
-    let free = (0..3).filter(|&k| given[k].is_none()).count();
+    let given = given(rows, fixed)?;
+    let free = (0..NP).filter(|&k| given[k].is_none()).count();
     check(rows, free)?;
     if rows.iter().any(|r| r.sigma.is_some()) && rows.iter().any(|r| r.sigma.is_none()) {
         return Err(Error::param("sigma", f64::NAN, "give sigma on every row or on none"));
@@ -301,17 +345,44 @@ pub fn fit(shape: &Shape, rows: &[Measurement], fixed: &Fixed) -> Result<FitRepo
     }
     let mut r = fit_checked(shape, &rows, &given)?;
     r.reference_load = reference;
-    profile::profile(shape, &rows, fixed, &mut r);
-    goodness::judge(shape, &rows, fixed, &mut r)?;
+    profile::profile(shape, &rows, &given, &mut r);
+    goodness::judge(shape, &rows, &given, &mut r)?;
     Ok(r)
 }
 
+/// Each parameter's held value ([`NAMES`]), `None` where it is fitted:
+/// `fixed`'s, and `kappa` the one every row's system has (NaN where they
+/// differ or no row is on a system: each row's own), or fitted.
+fn given(rows: &[Measurement], fixed: &Fixed) -> Result<[Option<f64>; NP]> {
+    let kappas: Vec<Option<f64>> = rows.iter().map(|r| r.system.map(|s| s.stiffness())).collect();
+    let common = kappas.first().copied().flatten().filter(|_| kappas.windows(2).all(|w| w[0] == w[1]));
+    if fixed.fit_system_stiffness && kappas.iter().any(Option::is_none) {
+        let reason = "fitting the system's stiffness needs every row on a system (its kappa the start)";
+        return Err(Error::param("system-stiffness", f64::NAN, reason));
+    }
+    let kappa = if fixed.fit_system_stiffness { None } else { Some(common.unwrap_or(f64::NAN)) };
+    Ok([fixed.mu0, fixed.stiffness_ratio, fixed.u0, kappa])
+}
+
+/// The parameters a fit reports: all but `kappa` where it is neither
+/// fitted nor one value held (`given[3]` NaN).
+fn listed(given: &[Option<f64>; NP]) -> Vec<usize> {
+    (0..NP).filter(|&k| given[k].is_none_or(|v| !v.is_nan())).collect()
+}
+
+/// The median of the rows' system stiffness (the start of a fitted `kappa`), NaN without systems.
+fn median_kappa(rows: &[Measurement]) -> f64 {
+    let mut k: Vec<f64> = rows.iter().filter_map(|r| r.system.map(|s| s.stiffness())).collect();
+    k.sort_by(f64::total_cmp);
+    k.get(k.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
 /// [`fit`] of checked inputs, without the goodness of fit's verdicts.
-fn fit_checked(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3]) -> Result<FitReport> {
-    let free: Vec<usize> = (0..3).filter(|&k| given[k].is_none()).collect();
+fn fit_checked(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; NP]) -> Result<FitReport> {
+    let free: Vec<usize> = (0..NP).filter(|&k| given[k].is_none()).collect();
     let weighted = rows.iter().any(|r| r.sigma.is_some());
     let sigma: Vec<f64> = rows.iter().map(|r| r.sigma.unwrap_or(1.0)).collect();
-    let residuals = |p: &Vector3<f64>| -> Result<DVector<f64>> {
+    let residuals = |p: &Values| -> Result<DVector<f64>> {
         let m = model(shape, rows, p)?;
         Ok(DVector::from_iterator(rows.len(), m.iter().zip(rows).zip(&sigma).map(|((m, r), s)| (m.0 - r.mu) / s)))
     };
@@ -320,27 +391,29 @@ fn fit_checked(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3]) ->
     // The start from the stiff model (on a system each point costs a thousand times more).
     let few: Vec<Measurement> = rows.iter().step_by(every).map(|r| Measurement { system: None, ..*r }).collect();
     let few_sigma: Vec<f64> = few.iter().map(|r| r.sigma.unwrap_or(1.0)).collect();
-    let few_residuals = |p: &Vector3<f64>| -> Result<DVector<f64>> {
+    let few_residuals = |p: &Values| -> Result<DVector<f64>> {
         let m = model(shape, &few, p)?;
         Ok(DVector::from_iterator(few.len(), m.iter().zip(&few).zip(&few_sigma).map(|((m, r), s)| (m.0 - r.mu) / s)))
     };
-    let start = start(shape, &few, given, &few_residuals)?;
+    let mut start = start(shape, &few, given, &few_residuals)?;
+    start[3] = given[3].unwrap_or_else(|| median_kappa(rows));
     let (p, iterations, converged) =
         if free.is_empty() { (start, 0, true) } else { levenberg_marquardt(start, &free, &residuals)? };
     if rows.iter().any(|r| r.load.is_some()) && !residuals(&p)?.iter().all(|x| x.is_finite()) {
         return Err(load::unheld());
     }
-    let mut r = report(shape, rows, p, &free, weighted, iterations, &residuals)?;
+    let mut r = report(shape, rows, p, (&free, &listed(given)), weighted, iterations, &residuals)?;
     r.converged = converged;
     Ok(r)
 }
 
-type Residuals<'a> = dyn Fn(&Vector3<f64>) -> Result<DVector<f64>> + 'a;
+type Residuals<'a> = dyn Fn(&Values) -> Result<DVector<f64>> + 'a;
 
 /// The start: `mu0` the largest `mu` (or fixed), then the best `(u0, kx/kz)`
-/// of a logarithmic grid (the fixed ones as given): `u0` from 0.2 to 20 times
-/// the largest `du`, `kx/kz` where the median row's `vbar` runs from 0.01 to 10.
-fn start(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3], res: &Residuals) -> Result<Vector3<f64>> {
+/// of a logarithmic grid (the fixed ones as given) on the stiff model: `u0`
+/// from 0.2 to 20 times the largest `du`, `kx/kz` where the median row's
+/// `vbar` runs from 0.01 to 10 (`kappa` NaN: the caller's).
+fn start(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; NP], res: &Residuals) -> Result<Values> {
     let mu0 = given[0].unwrap_or_else(|| rows.iter().map(|r| r.mu).fold(f64::MIN, f64::max).max(1e-12));
     let du_max = rows.iter().map(|r| r.du).fold(0.0, f64::max);
     let mut scales: Vec<f64> = rows.iter().filter(|r| r.v0 > 0.0).map(|r| mu0 * r.omega * r.du / r.v0).collect();
@@ -354,10 +427,10 @@ fn start(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3], res: &Re
         Some(r) => vec![r],
         None => (0..=24).map(|k| scale * 10f64.powf(-2.0 + 3.0 * k as f64 / 24.0)).collect(),
     };
-    let mut best = (f64::INFINITY, Vector3::new(mu0, ratios[0], u0s[0]));
+    let mut best = (f64::INFINITY, Values::new(mu0, ratios[0], u0s[0], f64::NAN));
     for &u0 in &u0s {
         for &r in &ratios {
-            let p = Vector3::new(mu0, r, u0);
+            let p = Values::new(mu0, r, u0, f64::NAN);
             if shape.check_amp(du_max / u0).is_err() {
                 continue;
             }
@@ -371,7 +444,7 @@ fn start(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; 3], res: &Re
 }
 
 /// The Jacobian of the residuals in the logarithms of the `free` parameters.
-fn jacobian(p: &Vector3<f64>, free: &[usize], n: usize, res: &Residuals) -> Result<DMatrix<f64>> {
+fn jacobian(p: &Values, free: &[usize], n: usize, res: &Residuals) -> Result<DMatrix<f64>> {
     let mut j = DMatrix::zeros(n, free.len());
     for (c, &k) in free.iter().enumerate() {
         let h: f64 = 1e-5;
@@ -386,7 +459,7 @@ fn jacobian(p: &Vector3<f64>, free: &[usize], n: usize, res: &Residuals) -> Resu
 /// Levenberg-Marquardt in the logarithms of the free parameters from `p`:
 /// the parameters, the iterations, and whether it converged (a step below
 /// 1e-12, a chi-square that no longer falls, or no step that lowers it).
-fn levenberg_marquardt(mut p: Vector3<f64>, free: &[usize], res: &Residuals) -> Result<(Vector3<f64>, usize, bool)> {
+fn levenberg_marquardt(mut p: Values, free: &[usize], res: &Residuals) -> Result<(Values, usize, bool)> {
     let mut r = res(&p)?;
     let mut chi2 = r.norm_squared();
     let mut lambda = 1e-3;
@@ -431,12 +504,13 @@ fn levenberg_marquardt(mut p: Vector3<f64>, free: &[usize], res: &Residuals) -> 
     Ok((p, MAX_ITERATIONS, false))
 }
 
-/// The covariance, standard errors and verdicts at the fitted `p`.
+/// The covariance, standard errors and verdicts at the fitted `p` (the
+/// `free` parameters fitted, the `listed` ones reported).
 fn report(
     shape: &Shape,
     rows: &[Measurement],
-    p: Vector3<f64>,
-    free: &[usize],
+    p: Values,
+    (free, listed): (&[usize], &[usize]),
     weighted: bool,
     iterations: usize,
     res: &Residuals,
@@ -449,7 +523,7 @@ fn report(
     let mut verdicts = vec![];
     let stiff = rows.iter().all(|r| r.system.is_none());
     let determined = determined(&j, free, &fitted, stiff, &mut verdicts);
-    let mut cov = Matrix3::zeros();
+    let mut cov = SMatrix::<f64, NP, NP>::zeros();
     let kept: Vec<usize> = (0..free.len()).filter(|&c| determined[c]).collect();
     if !kept.is_empty() {
         let jk = j.select_columns(&kept);
@@ -470,21 +544,29 @@ fn report(
             Some(c) if determined[c] => Some(cov[(k, k)].sqrt()),
             Some(_) => None,
         };
-        Parameter { value: p[k], stderr, fixed: c.is_none(), profile: None }
-    };
-    let mut correlation = [[0.0; 3]; 3];
-    for (a, row) in correlation.iter_mut().enumerate() {
-        for (b, x) in row.iter_mut().enumerate() {
-            let d = (cov[(a, a)] * cov[(b, b)]).sqrt();
-            *x = if d > 0.0 { cov[(a, b)] / d } else { 0.0 };
+        Parameter {
+            name: NAMES[k],
+            bounds: [0.0, f64::INFINITY],
+            value: p[k],
+            stderr,
+            fixed: c.is_none(),
+            profile: None,
         }
-    }
+    };
+    let correlation = |a: usize, b: usize| {
+        let d = (cov[(a, a)] * cov[(b, b)]).sqrt();
+        if d > 0.0 {
+            cov[(a, b)] / d
+        } else {
+            0.0
+        }
+    };
+    let matrix =
+        |f: &dyn Fn(usize, usize) -> f64| listed.iter().map(|&a| listed.iter().map(|&b| f(a, b)).collect()).collect();
     Ok(FitReport {
-        mu0: param(0),
-        stiffness_ratio: param(1),
-        u0: param(2),
-        covariance: std::array::from_fn(|a| std::array::from_fn(|b| cov[(a, b)])),
-        correlation,
+        parameters: listed.iter().map(|&k| param(k)).collect(),
+        covariance: matrix(&|a, b| cov[(a, b)]),
+        correlation: matrix(&correlation),
         chi2,
         dof,
         reduced_chi2,

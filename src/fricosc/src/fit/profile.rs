@@ -10,7 +10,7 @@
 //! than [`DIFFER`] from one standard error, the profile interval is reported
 //! beside the Gaussian one.
 
-use super::{fit_checked, FitReport, Fixed, Measurement, NAMES};
+use super::{fit_checked, FitReport, Measurement, NAMES, NP};
 use crate::shape::Shape;
 
 /// How far (relative) a profile interval's half-width may differ from the
@@ -34,11 +34,10 @@ const PROFILE_ROWS: usize = 20_000;
 /// The profile of each fitted parameter of `r` (module docs): undetermined
 /// ones lose their standard error (a verdict says why), skewed ones get
 /// their profile interval.
-pub(super) fn profile(shape: &Shape, rows: &[Measurement], fixed: &Fixed, r: &mut FitReport) {
-    let given = [fixed.mu0, fixed.stiffness_ratio, fixed.u0];
+pub(super) fn profile(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; NP], r: &mut FitReport) {
     let scale = if r.weighted { 1.0 } else { r.reduced_chi2 };
     if !r.weighted && r.chi2 == 0.0 && given.iter().any(Option::is_none) {
-        for k in (0..3).filter(|&k| given[k].is_none()) {
+        for k in (0..NP).filter(|&k| given[k].is_none()) {
             set_stderr(r, k, None);
         }
         r.verdicts.push(
@@ -51,14 +50,14 @@ pub(super) fn profile(shape: &Shape, rows: &[Measurement], fixed: &Fixed, r: &mu
     if rows.len() > PROFILE_ROWS || !(scale > 0.0 && scale.is_finite()) {
         return;
     }
-    for k in (0..3).filter(|&k| given[k].is_none()) {
-        let p = [r.mu0, r.stiffness_ratio, r.u0][k];
+    for k in (0..NP).filter(|&k| given[k].is_none()) {
+        let Some(&p) = r.parameter(NAMES[k]) else { continue };
         // Relative errors below MIN_STEP are below the refits' resolution (and
         // the chi-square is quadratic over them): the Gaussian error stands.
         let Some(se) = p.stderr.filter(|&se| se > MIN_STEP * p.value && p.value > 0.0) else { continue };
         // The rise of the chi-square with the parameter held at `ln(value) + t`.
         let rise = |t: f64| -> Option<f64> {
-            let mut held = given;
+            let mut held = *given;
             held[k] = Some(p.value * t.exp());
             let f = fit_checked(shape, rows, &held).ok()?;
             Some(((f.chi2 - r.chi2) / scale).max(0.0))
@@ -107,20 +106,15 @@ pub(super) fn profile(shape: &Shape, rows: &[Measurement], fixed: &Fixed, r: &mu
             continue;
         };
         if ((hi / step) - 1.0).abs() > DIFFER || ((lo / step) - 1.0).abs() > DIFFER {
-            let interval = [p.value * (-lo).exp(), p.value * hi.exp()];
-            match k {
-                0 => r.mu0.profile = Some(interval),
-                1 => r.stiffness_ratio.profile = Some(interval),
-                _ => r.u0.profile = Some(interval),
+            if let Some(q) = r.parameter_mut(k) {
+                q.profile = Some([p.value * (-lo).exp(), p.value * hi.exp()]);
             }
         }
     }
 }
 
 fn set_stderr(r: &mut FitReport, k: usize, stderr: Option<f64>) {
-    match k {
-        0 => r.mu0.stderr = stderr,
-        1 => r.stiffness_ratio.stderr = stderr,
-        _ => r.u0.stderr = stderr,
+    if let Some(p) = r.parameter_mut(k) {
+        p.stderr = stderr;
     }
 }

@@ -13,9 +13,10 @@ from ._api import InputError, ShapeLike, _column, _core, _floats, _scalar, _syst
 
 class FitResult:
     """The model fitted to measured friction (:func:`fit`): ``params`` and
-    ``stderr`` (dicts by ``mu0``, ``stiffness_ratio``, ``u0``; a fixed
-    parameter's stderr is 0, an undetermined one's None), ``cov`` and
-    ``correlation`` (3 x 3 arrays in that order), ``chi2``, ``dof``,
+    ``stderr`` (dicts by ``mu0``, ``stiffness_ratio``, ``u0`` and, on a
+    system, ``system_stiffness``; a fixed parameter's stderr is 0, an
+    undetermined one's None), ``names`` (their order), ``cov`` and
+    ``correlation`` (arrays in that order), ``chi2``, ``dof``,
     ``reduced_chi2``, ``p_value`` (with sigma), ``residuals`` (``mu - model``
     per row), ``outliers`` (rows beyond 3.5 standard uncertainties),
     ``verdicts`` (what is wrong: a model that does not fit and its likely
@@ -23,12 +24,11 @@ class FitResult:
     ``converged``, ``reference_load`` (N, under load control: where ``u0``
     is the static indentation) and ``report`` (the library's report as a dict)."""
 
-    NAMES = ("mu0", "stiffness_ratio", "u0")
-
     def __init__(self, report: Dict[str, Any]) -> None:
         self.report = report
-        self.params: Dict[str, float] = {k: float(report[k]["value"]) for k in self.NAMES}
-        self.stderr: Dict[str, Optional[float]] = {k: report[k]["stderr"] for k in self.NAMES}
+        self.names: List[str] = [str(p["name"]) for p in report["parameters"]]
+        self.params: Dict[str, float] = {p["name"]: float(p["value"]) for p in report["parameters"]}
+        self.stderr: Dict[str, Optional[float]] = {p["name"]: p["stderr"] for p in report["parameters"]}
         self.cov: npt.NDArray[np.float64] = np.asarray(report["covariance"], dtype=np.float64)
         self.correlation: npt.NDArray[np.float64] = np.asarray(report["correlation"], dtype=np.float64)
         self.chi2: float = float(report["chi2"])
@@ -56,6 +56,7 @@ def fit(
     system_stiffness: Optional[float] = None,
     frequency_ratio: Optional[float] = None,
     damping: Optional[float] = None,
+    fit_system_stiffness: bool = False,
 ) -> FitResult:
     """Fit the model to measured friction, as ``fricosc fit`` does: ``table``
     (a dict of arrays or a DataFrame) has the columns ``v0`` (m/s), ``du`` (m),
@@ -63,7 +64,8 @@ def fit(
     and ``load`` (N: load control, ``u0`` then the static indentation at the
     rows' median load, ``reference_load``, each row's from the shape's force law);
     ``mu0``, ``stiffness_ratio`` (kx/kz) and ``u0`` (m) are fitted unless given;
-    ``system_stiffness`` (``frequency_ratio``, ``damping``): the rig's system, held.
+    ``system_stiffness`` (``frequency_ratio``, ``damping``): the rig's system, held;
+    with ``fit_system_stiffness`` its stiffness is fitted from ``system_stiffness``.
 
     >>> rows = {"v0": [1e-5, 2e-5, 4e-5, 6e-5, 2e-4], "du": [5e-7] * 5, "frequency": [100] * 5,
     ...         "mu": [0.21, 0.245, 0.28, 0.295, 0.3]}
@@ -97,6 +99,6 @@ def fit(
     report: Dict[str, Any] = _fricosc.fit(
         _core(shape), col("v0"), col("du"), np.ascontiguousarray(omega), col("mu"),
         col("sigma") if "sigma" in names else None, fixed, _system(system_stiffness, frequency_ratio, damping),
-        col("load") if "load" in names else None,
+        col("load") if "load" in names else None, bool(fit_system_stiffness),
     )
     return FitResult(report)
