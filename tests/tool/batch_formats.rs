@@ -272,3 +272,51 @@ fn streamed_batches_on_each_side_of_a_chunk() {
         assert_eq!(count, n);
     }
 }
+
+/// Rows in the plane (`transverse_amp`, `transverse_phase`): each gets
+/// `transverse_ratio` beside `mu_ratio`, the point's values bit for bit, in
+/// every format; a CSV row without the drive gets 0 (no force across the
+/// sliding direction); a given `transverse_ratio` is replaced where it
+/// stands. What the plane does not solve (a curved shape, a body on a
+/// system, the stepping peer) and a phase without its amplitude are refused
+/// before any output.
+#[test]
+fn rows_in_the_plane_get_the_transverse_ratio() {
+    let point =
+        ok(&["point", "--vhat", "0.6", "--amp", "0.5", "--transverse-amp", "1.2", "--transverse-phase", "0.7"], "");
+    let p: serde_json::Value = serde_json::from_str(&point).unwrap();
+    let (mu, t) = (p["mu_ratio"].as_f64().unwrap(), p["transverse_ratio"].as_f64().unwrap());
+    assert!(t.abs() > 0.1, "{p}");
+    let row = r#"{"shape":"flat","vhat":0.6,"amp":0.5,"transverse_amp":1.2,"transverse_phase":0.7}"#;
+    let given =
+        r#"{"transverse_ratio":9,"shape":"flat","vhat":0.6,"amp":0.5,"transverse_amp":1.2,"transverse_phase":0.7}"#;
+    let out = ok(&["batch", "--format", "jsonl"], &format!("{row}\n{given}\n"));
+    let lines: Vec<serde_json::Value> = out.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    for v in &lines {
+        assert_eq!((v["mu_ratio"].as_f64(), v["transverse_ratio"].as_f64()), (Some(mu), Some(t)), "{v}");
+    }
+    assert!(out.lines().nth(1).unwrap().starts_with(&format!("{{\"transverse_ratio\":{t:?},")), "{out}");
+    let csv = "shape,vhat,amp,transverse_amp,transverse_phase\nflat,0.6,0.5,1.2,0.7\nflat,0.3,0.5,,\n";
+    let out = ok(&["batch", "--format", "csv"], csv);
+    let want = format!(
+        "shape,vhat,amp,transverse_amp,transverse_phase,mu_ratio,reduction,transverse_ratio\n\
+         flat,0.6,0.5,1.2,0.7,{mu:?},{:?},{t:?}\n",
+        1.0 - mu
+    );
+    assert!(out.starts_with(&want) && out.lines().nth(2).unwrap().ends_with(",0.0"), "{out}");
+    for (row, needle) in [
+        (r#"{"shape":"parabolic","vhat":0.6,"amp":0.5,"transverse_amp":1.2}"#, "flat punch only"),
+        (
+            r#"{"shape":"flat","vhat":0.6,"amp":0.5,"transverse_amp":1.2,"system_stiffness":1}"#,
+            "not solved in the plane",
+        ),
+        (
+            r#"{"shape":"flat","vhat":0.6,"amp":0.5,"transverse_phase":1.2}"#,
+            "'transverse_phase' needs 'transverse_amp'",
+        ),
+        (r#"{"shape":"flat","vhat":0.6,"amp":0.5,"transverse_amp":-1}"#, "transverse-amp"),
+    ] {
+        refused(&["batch", "--format", "jsonl"], &format!("{row}\n"), needle);
+    }
+    refused(&["batch", "--format", "jsonl", "--method", "stepping"], &format!("{row}\n"), "solved exactly only");
+}

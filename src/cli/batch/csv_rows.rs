@@ -1,12 +1,14 @@
 //! `batch` in CSV (the `csv` crate reads and writes): every column kept,
-//! `mu_ratio,reduction` appended, or filled where the header has them.
+//! `mu_ratio,reduction` appended, or filled where the header has them; with
+//! a column `transverse_amp`, `transverse_ratio` too (0 on a row without a
+//! transverse oscillation: no force across the sliding direction).
 
 use super::{
-    changed, digest, number, too_many, Inputs, Job, Method, Open, Read, Shapes, CHUNK, MAX_LINE, MAX_STREAM_ROWS,
+    changed, digest, number, too_many, Answer, Inputs, Job, Method, Open, Read, Shapes, CHUNK, MAX_LINE,
+    MAX_STREAM_ROWS,
 };
 use crate::error::{Error, Result};
 use crate::output::io_of;
-use fricosc::Ratio;
 use std::io::{self, BufRead, Write};
 
 /// A record as read: its shape's text and inputs, or why it is malformed.
@@ -24,6 +26,9 @@ struct Columns {
     inputs: Vec<(&'static str, usize)>,
     /// The result columns, where the header has them.
     results: Option<(usize, usize)>,
+    /// With a column `transverse_amp`: the column `transverse_ratio`, where
+    /// the header has it (else appended).
+    transverse: Option<Option<usize>>,
 }
 
 impl Columns {
@@ -50,7 +55,8 @@ impl Columns {
             (None, None) => None,
             _ => return Err(bad("the header has only one of 'mu_ratio', 'reduction'".into())),
         };
-        Ok(Columns { shape, inputs, results })
+        let transverse = find("transverse_amp").map(|_| find("transverse_ratio"));
+        Ok(Columns { shape, inputs, results, transverse })
     }
 
     /// Record `r` of `chunk`: its shape and inputs; an empty cell of an
@@ -269,18 +275,23 @@ impl Records {
             h.push_field(b"mu_ratio");
             h.push_field(b"reduction");
         }
+        if self.columns.transverse == Some(None) {
+            h.push_field(b"transverse_ratio");
+        }
         w.write_byte_record(&h).map_err(io_of)?;
         Ok(w)
     }
 
     /// Write a chunk of records with their results, field by field.
-    fn write(&self, w: &mut csv::Writer<&mut dyn Write>, chunk: &Chunk, results: &[Ratio]) -> io::Result<()> {
+    fn write(&self, w: &mut csv::Writer<&mut dyn Write>, chunk: &Chunk, results: &[Answer]) -> io::Result<()> {
         let mut fmt = zmij::Buffer::new();
-        for (i, r) in results.iter().enumerate() {
+        for (i, a) in results.iter().enumerate() {
+            let (r, t) = (&a.ratio, a.transverse_ratio.unwrap_or(0.0));
             for f in 0..chunk.width {
-                match self.columns.results {
-                    Some((m, _)) if f == m => w.write_field(fmt.format_finite(r.mu_ratio)),
-                    Some((_, d)) if f == d => w.write_field(fmt.format_finite(r.reduction)),
+                match (self.columns.results, self.columns.transverse) {
+                    (Some((m, _)), _) if f == m => w.write_field(fmt.format_finite(r.mu_ratio)),
+                    (Some((_, d)), _) if f == d => w.write_field(fmt.format_finite(r.reduction)),
+                    (_, Some(Some(c))) if f == c => w.write_field(fmt.format_finite(t)),
                     _ => w.write_field(chunk.field(i, f)),
                 }
                 .map_err(io_of)?;
@@ -288,6 +299,9 @@ impl Records {
             if self.columns.results.is_none() {
                 w.write_field(fmt.format_finite(r.mu_ratio)).map_err(io_of)?;
                 w.write_field(fmt.format_finite(r.reduction)).map_err(io_of)?;
+            }
+            if self.columns.transverse == Some(None) {
+                w.write_field(fmt.format_finite(t)).map_err(io_of)?;
             }
             w.write_record(None::<&[u8]>).map_err(io_of)?;
         }

@@ -2,11 +2,10 @@
 //! read once by `serde_json`: its text borrowed from the input, its wanted
 //! fields converted, every other one checked and skipped.
 
-use super::{changed, digest, too_many, Inputs, Job, Method, Open, Read, Shapes};
+use super::{changed, digest, too_many, Answer, Inputs, Job, Method, Open, Read, Shapes};
 use super::{CHUNK, MAX_LINE, MAX_ROWS, MAX_STREAM_ROWS};
 use crate::error::{Error, Result};
 use crate::json::{NumberOf, StringOf};
-use fricosc::Ratio;
 use rayon::prelude::*;
 use serde::de::{self, Deserializer, MapAccess, Visitor};
 use serde_json::value::RawValue;
@@ -29,8 +28,12 @@ struct Row<'a> {
     results: Option<Box<Given>>,
 }
 
-/// Where a row's `mu_ratio` and `reduction` values are, if it gives them.
-type Given = [Option<Range<usize>>; 2];
+/// Where a row's values of [`RESULTS`] are, if it gives them.
+type Given = [Option<Range<usize>>; 3];
+
+/// The fields of a row's answer: `transverse_ratio` where it has a
+/// transverse oscillation (or gives the field).
+const RESULTS: [&str; 3] = ["mu_ratio", "reduction", "transverse_ratio"];
 
 /// A row as read, or why it is malformed.
 type Parsed<'a> = std::result::Result<Row<'a>, String>;
@@ -45,7 +48,7 @@ impl<'a> Row<'a> {
         let inputs = p.inputs;
         let offset = |v: &str| v.as_ptr() as usize - raw.as_ptr() as usize;
         let at = |v: Option<&str>| v.map(|v| offset(v)..offset(v) + v.len());
-        let results = p.results.iter().any(Option::is_some).then(|| Box::new([at(p.results[0]), at(p.results[1])]));
+        let results = p.results.iter().any(Option::is_some).then(|| Box::new(p.results.map(at)));
         Ok(Row { raw, shape, inputs, results })
     }
 }
@@ -69,7 +72,7 @@ fn row(text: &str) -> std::result::Result<Row<'_>, String> {
 struct Picked<'a> {
     shape: Option<Cow<'a, str>>,
     inputs: Inputs,
-    results: [Option<&'a str>; 2],
+    results: [Option<&'a str>; 3],
 }
 
 impl<'de> serde::Deserialize<'de> for Picked<'de> {
@@ -90,7 +93,7 @@ impl<'de> Visitor<'de> for Fields {
         f.write_str("an object")
     }
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> std::result::Result<Self::Value, A::Error> {
-        let mut out = Picked { shape: None, inputs: Inputs::default(), results: [None, None] };
+        let mut out = Picked { shape: None, inputs: Inputs::default(), results: [None; 3] };
         // A field read twice would be ambiguous: refused (a field already set).
         let twice = |key: &str| de::Error::custom(format!("duplicate key '{key}'"));
         while let Some(key) = map.next_key::<Key>()? {
@@ -117,7 +120,7 @@ enum Key {
     Shape,
     /// One of [`Inputs::NAMES`].
     Input(usize),
-    /// `mu_ratio` (0) or `reduction` (1).
+    /// One of [`RESULTS`].
     Result(usize),
     Other,
 }
@@ -127,7 +130,7 @@ impl Key {
         match self {
             Key::Shape => "shape",
             Key::Input(k) => Inputs::NAMES[k],
-            Key::Result(r) => ["mu_ratio", "reduction"][r],
+            Key::Result(r) => RESULTS[r],
             Key::Other => "",
         }
     }
@@ -148,6 +151,7 @@ impl<'de> serde::Deserialize<'de> for Key {
                     "amp" => Key::Input(1),
                     "mu_ratio" => Key::Result(0),
                     "reduction" => Key::Result(1),
+                    "transverse_ratio" => Key::Result(2),
                     _ => Inputs::NAMES.iter().position(|n| *n == s).map_or(Key::Other, Key::Input),
                 })
             }
@@ -241,19 +245,16 @@ fn read<'r>(r: &'r std::result::Result<Row<'_>, String>) -> Read<'r> {
 }
 
 /// Write one row with its results: its text with the values of the results
-/// it gives replaced, or with them spliced in before its closing brace.
-fn write_row(out: &mut Vec<u8>, raw: &str, given: Option<&Given>, r: &Ratio, fmt: &mut zmij::Buffer) {
-    let values = [r.mu_ratio, r.reduction];
-    let Some(given) = given else {
-        out.extend_from_slice(&raw.as_bytes()[..raw.len() - 1]);
-        out.extend_from_slice(b",\"mu_ratio\":");
-        out.extend_from_slice(fmt.format_finite(values[0]).as_bytes());
-        out.extend_from_slice(b",\"reduction\":");
-        out.extend_from_slice(fmt.format_finite(values[1]).as_bytes());
-        out.push(b'}');
-        return;
-    };
-    // A row that gives one of them gets the other spliced in, before its brace.
+/// it gives replaced, or with them spliced in before its closing brace
+/// (`transverse_ratio` where the row has a transverse oscillation or gives
+/// the field; 0 without one: no force across the sliding direction).
+fn write_row(out: &mut Vec<u8>, raw: &str, given: Option<&Given>, a: &Answer, fmt: &mut zmij::Buffer) {
+    let values = [a.ratio.mu_ratio, a.ratio.reduction, a.transverse_ratio.unwrap_or(0.0)];
+    let none: Given = [None, None, None];
+    let given = given.unwrap_or(&none);
+    let wanted = [true, true, a.transverse_ratio.is_some() || given[2].is_some()];
+    // The values the row gives are replaced where they stand; the others
+    // are spliced in before its brace.
     let mut spans: Vec<(Range<usize>, f64)> =
         given.iter().zip(values).filter_map(|(g, x)| g.clone().map(|g| (g, x))).collect();
     spans.sort_by_key(|(g, _)| g.start);
@@ -263,13 +264,10 @@ fn write_row(out: &mut Vec<u8>, raw: &str, given: Option<&Given>, r: &Ratio, fmt
         out.extend_from_slice(fmt.format_finite(x).as_bytes());
         at = g.end;
     }
-    let body = &raw.as_bytes()[at..raw.len() - 1];
-    out.extend_from_slice(body);
-    for (name, g, x) in [("mu_ratio", &given[0], values[0]), ("reduction", &given[1], values[1])] {
-        if g.is_none() {
-            out.extend_from_slice(format!(",\"{name}\":").as_bytes());
-            out.extend_from_slice(fmt.format_finite(x).as_bytes());
-        }
+    out.extend_from_slice(&raw.as_bytes()[at..raw.len() - 1]);
+    for k in (0..RESULTS.len()).filter(|&k| wanted[k] && given[k].is_none()) {
+        out.extend_from_slice(format!(",\"{}\":", RESULTS[k]).as_bytes());
+        out.extend_from_slice(fmt.format_finite(values[k]).as_bytes());
     }
     out.push(b'}');
 }
@@ -277,7 +275,7 @@ fn write_row(out: &mut Vec<u8>, raw: &str, given: Option<&Given>, r: &Ratio, fmt
 /// An evaluated JSON array, borrowing its rows from the input text.
 pub struct Batch<'a> {
     rows: Vec<&'a str>,
-    results: Vec<Ratio>,
+    results: Vec<Answer>,
     /// The rows that give results (sorted by index).
     replace: Vec<Replace>,
 }
@@ -357,8 +355,8 @@ impl Batch<'_> {
         self.rows.is_empty()
     }
 
-    /// `mu_macro/mu0` and the reduction of every row, in order.
-    pub fn results(&self) -> &[Ratio] {
+    /// The answer of every row, in order.
+    pub fn results(&self) -> &[Answer] {
         &self.results
     }
 
@@ -586,7 +584,7 @@ mod tests {
             (r#"{"reduction" : 9, "x":-0,"mu_ratio":[1]}"#, r#"{"reduction" : 0.75, "x":-0,"mu_ratio":0.25}"#),
             (r#"{"mu_ratio":1.0000000000000000001 }"#, r#"{"mu_ratio":0.25 ,"reduction":0.75}"#),
         ] {
-            let mut given = [None, None];
+            let mut given = [None, None, None];
             for (k, name) in ["\"mu_ratio\"", "\"reduction\""].iter().enumerate() {
                 if let Some(i) = text.find(name) {
                     let start = i + name.len() + text[i + name.len()..].find(':').unwrap() + 1;
@@ -597,7 +595,7 @@ mod tests {
             }
             let mut out = vec![];
             let given = given.iter().any(Option::is_some).then_some(&given);
-            write_row(&mut out, text, given, &r, &mut fmt);
+            write_row(&mut out, text, given, &Answer { ratio: r, transverse_ratio: None }, &mut fmt);
             assert_eq!(String::from_utf8(out).unwrap(), want);
         }
     }

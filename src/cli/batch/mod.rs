@@ -88,18 +88,28 @@ impl Format {
 /// numbers are refused where they are read). Eight bytes each, as rows are
 /// moved by the million.
 #[derive(Debug, Clone, Copy)]
-struct Inputs([f64; 8]);
+struct Inputs([f64; 10]);
 
 impl Default for Inputs {
     fn default() -> Self {
-        Inputs([f64::NAN; 8])
+        Inputs([f64::NAN; 10])
     }
 }
 
 impl Inputs {
     /// The numeric fields a row is read for.
-    const NAMES: [&'static str; 8] =
-        ["vbar", "amp", "vhat", "tangential_amp", "phase", "system_stiffness", "frequency_ratio", "damping"];
+    const NAMES: [&'static str; 10] = [
+        "vbar",
+        "amp",
+        "vhat",
+        "tangential_amp",
+        "phase",
+        "system_stiffness",
+        "frequency_ratio",
+        "damping",
+        "transverse_amp",
+        "transverse_phase",
+    ];
 
     /// The slot of the field `name`, if it is one of [`Inputs::NAMES`].
     fn slot(&mut self, name: &str) -> Option<&mut f64> {
@@ -120,6 +130,14 @@ struct Job {
     shape: u32,
     conditions: Conditions,
     system: Option<fricosc::system::System>,
+}
+
+/// A row's answer: `mu_ratio` and `reduction`, and under a transverse
+/// oscillation the mean force across the sliding direction, `<f_y>/<B>`.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Answer {
+    pub ratio: Ratio,
+    pub transverse_ratio: Option<f64>,
 }
 
 /// How rows are solved: by the stepping peer, or exactly (on a system a curved body's `springs`).
@@ -186,10 +204,13 @@ impl Shapes {
             self.list[shape as usize].check_amp(conditions.amp()).map_err(err)?;
             return Ok(Job { shape, conditions, system: None });
         }
-        let [vbar, amp, vhat, tangential_amp, phase, kappa, omega, zeta] = std::array::from_fn(|k| i.get(k));
+        let [vbar, amp, vhat, tangential_amp, phase, kappa, omega, zeta, w, psi] = std::array::from_fn(|k| i.get(k));
         let amp = amp.ok_or("missing field 'amp'")?;
         if phase.is_some() && tangential_amp.is_none() {
             return Err("'phase' needs 'tangential_amp'".into());
+        }
+        if psi.is_some() && w.is_none() {
+            return Err("'transverse_phase' needs 'transverse_amp'".into());
         }
         let conditions = match (vbar, vhat, tangential_amp) {
             (Some(_), Some(_), _) => return Err("give one of 'vbar' and 'vhat', not both".into()),
@@ -227,23 +248,36 @@ impl Shapes {
                 Some(sys)
             }
         };
+        let Some(w) = w else { return Ok(Job { shape, conditions, system }) };
+        if self.stepping.is_some() {
+            return Err("rows in the plane ('transverse_amp') are solved exactly only".into());
+        }
+        let tw = fricosc::plane::Transverse::new(w, psi.unwrap_or(0.0)).map_err(err)?;
+        let conditions = conditions.with_transverse(tw);
+        let on = system.map_or(conditions, |sys| conditions.with_system(sys));
+        fricosc::plane::check(&self.list[shape as usize], &on).map_err(err)?;
         Ok(Job { shape, conditions, system })
     }
 
-    fn evaluate(&self, j: &Job) -> fricosc::Result<Ratio> {
+    fn evaluate(&self, j: &Job) -> fricosc::Result<Answer> {
         let shape = &self.list[j.shape as usize];
+        let ratio = |ratio| Answer { ratio, transverse_ratio: None };
         match (self.stepping, j.system) {
-            (_, Some(sys)) => shape.ratio(&j.conditions.with_system(sys)),
-            (Some(st), None) => fricosc::stepper::evaluate(shape, &j.conditions, st).map(|e| e.ratio),
-            (None, None) => shape.ratio(&j.conditions),
+            (_, Some(sys)) => shape.ratio(&j.conditions.with_system(sys)).map(ratio),
+            (None, None) if j.conditions.transverse().is_some() => {
+                let e = shape.evaluate(&j.conditions)?;
+                Ok(Answer { ratio: e.ratio, transverse_ratio: e.transverse_ratio })
+            }
+            (Some(st), None) => fricosc::stepper::evaluate(shape, &j.conditions, st).map(|e| ratio(e.ratio)),
+            (None, None) => shape.ratio(&j.conditions).map(ratio),
         }
     }
 
     /// Evaluate `jobs` in parallel; `name(i)` names the row `i` of them in
     /// errors, and the first row at fault (in order) is the one reported.
-    fn evaluate_all(&self, jobs: &[Job], source: &str, name: &(dyn Fn(usize) -> String + Sync)) -> Result<Vec<Ratio>> {
+    fn evaluate_all(&self, jobs: &[Job], source: &str, name: &(dyn Fn(usize) -> String + Sync)) -> Result<Vec<Answer>> {
         let mut out = Vec::with_capacity(jobs.len());
-        let filler = Ratio::default();
+        let filler = Answer::default();
         let each = |_, j: &Job| {
             self.bar.inc(1);
             self.evaluate(j)
@@ -412,7 +446,9 @@ mod tests {
     fn a_chunk_at_fault_appends_nothing() {
         type Row = std::result::Result<(&'static str, Inputs), &'static str>;
         let row = |shape: &'static str, vbar: f64| -> Row {
-            Ok((shape, Inputs([vbar, 1.0, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN])))
+            let mut inputs = Inputs::default();
+            (inputs.0[0], inputs.0[1]) = (vbar, 1.0);
+            Ok((shape, inputs))
         };
         let mut shapes = Shapes::new(Method::default());
         let mut jobs = vec![];

@@ -110,6 +110,25 @@ pub struct PlaneEvaluation {
 /// [`Error::InvalidParameter`] for a curved shape or a system (not solved in
 /// the plane yet), [`Error::Internal`] when no attracting orbit is found.
 pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse) -> Result<PlaneEvaluation> {
+    orbit(&spring_of(shape, c, w)?)
+}
+
+/// Whether the conditions `c` (with a transverse oscillation) are solved in
+/// the plane: what [`Shape::evaluate`] would refuse before any work (a
+/// curved shape, a system, a slip too stiff to step), refused now, so that a
+/// batch checks every row before it writes one.
+///
+/// # Errors
+/// [`Error::InvalidParameter`], naming what is refused.
+pub fn check(shape: &Shape, c: &Conditions) -> Result<()> {
+    match c.transverse() {
+        Some(w) => spring_of(shape, c, w).map(drop),
+        None => Ok(()),
+    }
+}
+
+/// The flat punch's spring under `c` and `w`, or what is refused before any work.
+fn spring_of(shape: &Shape, c: &Conditions, w: Transverse) -> Result<Spring> {
     if let Some(sys) = c.system() {
         return Err(Error::param(
             "system-stiffness",
@@ -123,7 +142,7 @@ pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse) -> Result<Plan
     let o = crate::combined::Oscillation::of(c);
     let sp = Spring::new(Drive::sliding(o.vhat, o.tangential_amp, o.phase, w.amp, w.phase), Bound::new(1.0, o.amp));
     check_work(&sp, [("vhat", o.vhat), ("tangential-amp", o.tangential_amp), ("transverse-amp", w.amp)])?;
-    orbit(&sp)
+    Ok(sp)
 }
 
 /// Taylor steps a period may take at most, estimated before any work from

@@ -131,4 +131,5 @@ def fit(
     fixed: Tuple[Optional[float], Optional[float], Optional[float]],
     system: Optional[Tuple[float, float, float]] = None,
     load: Optional[npt.NDArray[np.float64]] = None,
+    fit_system_stiffness: bool = False,
 ) -> Dict[str, Any]: ...
