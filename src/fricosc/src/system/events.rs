@@ -205,4 +205,39 @@ mod tests {
         // Rising throughout the step: no zero in it, the phase ends at once.
         assert_eq!(zero(&[-1e-17, 0.5, 1.0]), None);
     }
+
+    /// Of several event functions in one step, the first zero wins, whichever
+    /// function it belongs to and in whatever order they come: on the step
+    /// from `pi - 0.05` of length 0.2, `cos(pi - 0.05) - cos tau` rises from
+    /// 0 at the start (a stick from a regain) and falls to 0 at 0.1,
+    /// `cos tau - cos(pi - 0.02)` dips below 0 at 0.03 (grazing), and
+    /// `tau_0 + 0.15 - tau` crosses at 0.15.
+    #[test]
+    fn the_first_zero_of_several_wins() {
+        use crate::system::phase::TAU;
+        let p = Params { kappa: 1.0, omega: 0.5, zeta: 0.05, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
+        let a = p.generator_of(Linear::default());
+        let start = std::f64::consts::PI - 0.05;
+        let mut z = State::zeros();
+        (z[ONE], z[COS], z[SIN], z[TAU]) = (1.0, start.cos(), start.sin(), start);
+        let end = advance(&a, &z, 0.2);
+        let row = |one: f64, cos: f64, tau: f64| {
+            let mut w = SMatrix::<f64, 1, 8>::zeros();
+            (w[ONE], w[COS], w[TAU]) = (one, cos, tau);
+            w
+        };
+        let rising = (row(start.cos(), -1.0, 0.0), Kind::Stick);
+        let grazing = (row(-(std::f64::consts::PI - 0.02).cos(), 1.0, 0.0), Kind::Forward);
+        let crossing = (row(start + 0.15, 0.0, -1.0), Kind::Backward);
+        for (events, want) in [
+            (vec![rising, grazing], (0.03, Kind::Forward)),
+            (vec![grazing, rising], (0.03, Kind::Forward)),
+            (vec![crossing, rising], (0.1, Kind::Stick)),
+            (vec![rising, crossing], (0.1, Kind::Stick)),
+            (vec![crossing], (0.15, Kind::Backward)),
+        ] {
+            let (d, kind) = first_event(&a, &with_slopes(&a, events.clone()), &z, 0.2, &end).unwrap();
+            assert!((d - want.0).abs() < 1e-12 && kind == want.1, "{events:?}: {d} {kind:?}");
+        }
+    }
 }
