@@ -204,6 +204,12 @@ mod tests {
         assert_eq!(zero(&[0.0, -1e-12, 1.0, -10.0]), None);
         // Rising throughout the step: no zero in it, the phase ends at once.
         assert_eq!(zero(&[-1e-17, 0.5, 1.0]), None);
+        // The slope's rounding scales with its bound: a slope of -1e-14 is
+        // 0 up to rounding at a bound of 100 (the curvature decides), and
+        // falling at a bound of 1e-3 (cargo-mutants: `/` for `*` passed).
+        let c = [0.0, -1e-14, 1.0, -10.0];
+        assert!((rising_from_zero(&c, 0.2, 100.0).unwrap() - 0.1).abs() < 1e-12);
+        assert_eq!(rising_from_zero(&c, 0.2, 1e-3), None);
     }
 
     /// Of several event functions in one step, the first zero wins, whichever
