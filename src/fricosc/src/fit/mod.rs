@@ -4,7 +4,11 @@
 //! `mu0`, `kx/kz` (the stiffness ratio) and `u0`, each fitted or fixed, and
 //! on a rig's system its stiffness `kappa = K/kx` ([`NAMES`]): held at the
 //! rows' values, or fitted ([`Fixed::fit_system_stiffness`]). Every
-//! parameter is positive, fitted in its logarithm.
+//! parameter is positive, fitted in its logarithm. A system's `kappa` and
+//! `Omega = omega/sqrt(kx/m)` are ratios to the contact's `kx`: held, they
+//! stay as given while `kx/kz` is fitted (the rig's `K` and `m` taken to
+//! follow `kx`); to hold `K` and `m` instead, hold `kx/kz` at the value they
+//! were computed with.
 //!
 //! # Method
 //! Weighted least squares (`sigma` per row, else 1) by Levenberg-Marquardt

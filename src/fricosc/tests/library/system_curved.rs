@@ -28,26 +28,32 @@ fn one_spring_meets_the_flat_references() {
 
 /// `(shape, vbar, amp, kappa, Omega, zeta)`: with and without contact loss,
 /// near resonance, a breakpoint in the profile, a cusp at the centre
-/// (`power:0.5`) and a profile rising steeply there (`power:0.05`, which
-/// cells in `z` left 7e-4 off up to 1,024 springs).
-const CASES: [(&str, f64, f64, f64, f64, f64); 6] = [
+/// (`power:0.5`), a profile rising steeply there (`power:0.05`, which cells
+/// in `z` left 7e-4 off up to 1,024 springs), and two a random scan found
+/// where the estimate from the last two levels missed: Richardson's values
+/// at 128 and 256 springs equally off (`power:0.1`, error 2.5e-10, estimate
+/// 1.3e-10), and changes that fall 13, 71 and 0.01 times from level to
+/// level (the cone: the sum of the last two 1.1e-6 for an error of 1.1e-6).
+const CASES: [(&str, f64, f64, f64, f64, f64); 8] = [
     ("parabolic", 0.3, 0.5, 1.0, 0.5, 0.05),
     ("cone", 0.3, 1.5, 1.0, 0.5, 0.05),
     ("power:3", 0.3, 1.2, 0.5, 0.8, 0.2),
     ("flat-tip:0.5", 0.2, 0.7, 1.0, 0.5, 0.05),
     ("power:0.5", 0.3, 0.5, 1.0, 0.5, 0.05),
     ("power:0.05", 0.3, 0.5, 1.0, 0.5, 0.05),
+    ("power:0.1", 0.2808, 2.495, 0.112, 0.1678, 1.0),
+    ("cone", 0.0951, 0.6185, 1.0359, 0.1653, 0.02),
 ];
 
 /// The estimate at the default springs bounds the error against the
 /// Richardson value of 2,048 and 4,096 springs (its own change below 2 % of
-/// the estimate), and is sharp: at most `SHARP` times the error (observed at
-/// 256 springs: 6 to 25 times, errors 2e-8 to 1.5e-6, `power:0.05` apart;
-/// the change between two levels, the estimate before, was 100 to 150
-/// times). A wrong weight or bound per spring is off by 1e-3 and more.
+/// the estimate), and is at most `SHARP` times the error (observed at 256
+/// springs: 5.5 to 95 times, errors 2.5e-10 to 1.1e-6; `power:0.05`, not
+/// yet in the asymptote, 209 times its 1.5e-6). A wrong weight or bound per
+/// spring is off by 1e-3 and more.
 #[test]
 fn the_estimate_bounds_the_error_against_finer_springs() {
-    const SHARP: f64 = 60.0;
+    const SHARP: f64 = 250.0;
     for (name, vbar, amp, kappa, omega, zeta) in CASES {
         let (shape, c) = (Shape::parse(name).unwrap(), Conditions::vbar(vbar, amp).unwrap());
         let sys = System::new(kappa, omega, zeta).unwrap();
@@ -58,10 +64,7 @@ fn the_estimate_bounds_the_error_against_finer_springs() {
         let reference = m4096 + (m4096 - m2048) / 3.0;
         assert!((m4096 - m2048).abs() / 3.0 < 0.02 * est, "{name}: the reference moved by {:e}", m4096 - m2048);
         let err = (r.mu_ratio - reference).abs();
-        // power:0.05 is not yet in the asymptote at 256 springs: mu_N with the
-        // sum of the changes (observed 88 times its error of 1.5e-6).
-        let sharp = if name == "power:0.05" { 4.0 * SHARP } else { SHARP };
-        assert!(err <= est && est <= sharp * err && est < 1e-3, "{name}: error {err:e}, estimate {est:e}");
+        assert!(err <= est && est <= SHARP * err && est < 1e-3, "{name}: error {err:e}, estimate {est:e}");
         assert_eq!((r.period, r.springs.map(|n| n > 128)), (Some(1), Some(true)), "{name}");
     }
 }
@@ -215,7 +218,8 @@ fn a_stiff_body_is_refined_by_newton_within_the_step_budget() {
     assert_eq!((one.period, one.mu_ratio), (flat.period, flat.mu_ratio), "{one:?} {flat:?}");
     assert!(flat.period == Some(1) && flat.periods_run <= 5 && flat.error_estimate < 1e-10, "{flat:?}");
     let curved = solve(&Shape::parabolic(), &c, &sys.with_springs(32).unwrap()).unwrap();
-    assert!(curved.period == Some(1) && curved.periods_run <= 5 && curved.error_estimate < 1e-4, "{curved:?}");
+    // The estimate is the discretisation's (levels of 4 to 32 springs: 2.6e-4).
+    assert!(curved.period == Some(1) && curved.periods_run <= 5 && curved.error_estimate < 1e-3, "{curved:?}");
 }
 
 /// `amp = 1` exactly on curved bodies: the springs of the worn sphere's flat
@@ -248,6 +252,6 @@ fn a_worn_sphere_settles_at_every_spring_count() {
     for n in [64, 256] {
         let r = solve(&shape, &c, &System::new(2.0, 0.7, 0.05).unwrap().with_springs(n).unwrap()).unwrap();
         assert_eq!(r.period, Some(1), "{n}: {r:?}");
-        assert!(r.periods_run < 100 && r.error_estimate < 1e-4, "{n}: {r:?}");
+        assert!(r.periods_run < 100 && r.error_estimate < 1e-3, "{n}: {r:?}");
     }
 }
