@@ -9,9 +9,17 @@ use fricosc::history::{History, Sample};
 impl crate::export::Report for History {
     /// On a system also the body's lag behind the drive, velocity and the system's force.
     fn columns(&self) -> Vec<String> {
-        let body = self.samples.first().is_some_and(|x| x.body.is_some());
+        let first = self.samples.first();
+        let body = first.is_some_and(|x| x.body.is_some());
         let extra: &[&str] = if body { &["body_lag", "body_velocity", "system_force"] } else { &[] };
-        ["tau", "normal", "tangential", "event"].iter().chain(extra).map(|c| c.to_string()).collect()
+        let across: &[&str] = if first.is_some_and(|x| x.transverse.is_some()) { &["transverse"] } else { &[] };
+        ["tau", "normal", "tangential"]
+            .iter()
+            .chain(across)
+            .chain(&["event"])
+            .chain(extra)
+            .map(|c| c.to_string())
+            .collect()
     }
 
     fn comment(&self) -> Option<String> {
@@ -30,7 +38,13 @@ impl crate::export::Report for History {
                     serde_json::to_value(e).ok().and_then(|v| v.as_str().map(String::from)).unwrap_or_default()
                 });
                 let body = x.body.iter().flat_map(|b| [n(b.body_lag), n(b.body_velocity), n(b.system_force)]);
-                [n(x.tau), n(x.normal), n(x.tangential), ev.unwrap_or_default()].into_iter().chain(body).collect()
+                let across = x.transverse.map(n);
+                [n(x.tau), n(x.normal), n(x.tangential)]
+                    .into_iter()
+                    .chain(across)
+                    .chain([ev.unwrap_or_default()])
+                    .chain(body)
+                    .collect()
             })
             .collect()
     }
@@ -41,7 +55,8 @@ impl crate::export::Report for History {
         let pts = |f: fn(&Sample) -> f64| self.samples.iter().map(|x| (x.tau, f(x))).collect::<Vec<_>>();
         let ymax = self.samples.iter().map(|x| x.normal).fold(0.0, f64::max) * 1.05 + 1e-12;
         // A backward slip (a tangential oscillation) takes the force below 0.
-        let lowest = |x: &Sample| x.tangential.min(x.body.map_or(0.0, |b| b.system_force));
+        let lowest =
+            |x: &Sample| x.tangential.min(x.body.map_or(0.0, |b| b.system_force)).min(x.transverse.unwrap_or(0.0));
         let ymin = self.samples.iter().map(lowest).fold(0.0, f64::min) * 1.05;
         let line = |label: &str, f: fn(&Sample) -> f64, style| Series {
             label: label.into(),
@@ -53,6 +68,10 @@ impl crate::export::Report for History {
             line("μ_{0} × normal force", |x| x.normal, Style::line(OKABE_ITO[4])),
             line("tangential force", |x| x.tangential, Style::line(OKABE_ITO[5]).width(1.5)),
         ];
+        if self.samples.first().is_some_and(|x| x.transverse.is_some()) {
+            let across = |x: &Sample| x.transverse.unwrap_or(f64::NAN);
+            series.push(line("force across the sliding direction", across, Style::line(OKABE_ITO[1])));
+        }
         // On a system, the system spring's force on the body beside the contact's.
         if self.samples.first().is_some_and(|x| x.body.is_some()) {
             let system = |x: &Sample| x.body.map_or(f64::NAN, |b| b.system_force);

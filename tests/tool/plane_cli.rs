@@ -164,3 +164,42 @@ fn table_rows_are_the_librarys() {
         refused(&args, message);
     }
 }
+
+/// `history --transverse-amp`: the force across the sliding direction is a
+/// column, each sample the library's bit for bit, the point names `W` and
+/// `psi`; `W = 0` is today's history byte for byte; the stepped history, a
+/// curved shape and a system are refused.
+#[test]
+fn history_in_the_plane_has_the_force_across() {
+    let base = ["history", "--vhat", "0.2", "--amp", "1.4", "--samples", "50", "--periods", "2"];
+    let mut args = base.to_vec();
+    args.extend(["--transverse-amp", "0.8", "--transverse-phase", "2"]);
+    let v = ok(&cli::run(&args, None));
+    let c = Conditions::vhat(0.2, 1.4).unwrap().with_transverse(Transverse::new(0.8, 2.0).unwrap());
+    let o = fricosc::history::HistoryOptions::default().with_samples(50).with_periods(2);
+    let h = fricosc::history::history(&Shape::flat(), &c, &o).unwrap();
+    let rows = v["samples"].as_array().unwrap();
+    assert_eq!(rows.len(), h.samples.len());
+    assert!(rows.len() > 51, "the events are among the samples");
+    for (r, s) in rows.iter().zip(&h.samples) {
+        assert_eq!(r["tangential"].as_f64(), Some(s.tangential));
+        assert_eq!(r["transverse"].as_f64(), s.transverse);
+    }
+    assert_eq!((v["transverse_amp"].as_f64(), v["transverse_phase"].as_f64()), (Some(0.8), Some(2.0)));
+    args.extend(["--format", "csv"]);
+    let csv = String::from_utf8(cli::run(&args, None).stdout).unwrap();
+    assert_eq!(csv.lines().nth(1), Some("tau,normal,tangential,transverse,event"));
+    let mut zero = base.to_vec();
+    zero.extend(["--transverse-amp", "0"]);
+    assert_eq!(cli::run(&zero, None).stdout, cli::run(&base, None).stdout);
+    for (extra, message) in [
+        (&["--method", "stepping"][..], "transverse-amp"),
+        (&["--shape", "cone"], "flat punch only"),
+        (&["--system-stiffness", "1", "--frequency-ratio", "0.5"], "system"),
+    ] {
+        let mut bad = base.to_vec();
+        bad.extend(["--transverse-amp", "1"]);
+        bad.extend(extra);
+        refused(&bad, message);
+    }
+}

@@ -286,7 +286,7 @@ fn point<'py>(py: Python<'py>, shape: &CoreShape, v: f64, a: f64, vhat: bool, to
 
 /// A force history (`fricosc history`) as a dict of numpy arrays.
 #[pyfunction]
-#[pyo3(signature = (shape, v, a, vhat, tangential, periods, samples, springs, spring_at, system=None))]
+#[pyo3(signature = (shape, v, a, vhat, tangential, periods, samples, springs, spring_at, system=None, transverse=None))]
 #[allow(clippy::too_many_arguments)]
 fn history<'py>(
     py: Python<'py>,
@@ -300,8 +300,21 @@ fn history<'py>(
     springs: usize,
     spring_at: Vec<f64>,
     system: Option<(f64, f64, f64)>,
+    transverse: Option<(f64, f64)>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let c = history_conditions(v, a, vhat, tangential).map_err(to_py)?;
+    let c = match transverse {
+        // The plane asks for vhat only: amp = 0 is the transverse oscillation alone.
+        Some((w, psi)) => {
+            let w = fricosc::plane::Transverse::new(w, psi).map_err(to_py)?;
+            let c = if vhat { Conditions::vhat(v, a) } else { Conditions::vbar(v, a) }.map_err(to_py)?;
+            match tangential {
+                Some((t, p)) => c.with_tangential(t, p).map_err(to_py)?,
+                None => c,
+            }
+            .with_transverse(w)
+        }
+        None => history_conditions(v, a, vhat, tangential).map_err(to_py)?,
+    };
     let shape = &shape.inner;
     let opts = HistoryOptions::default()
         .with_periods(periods)
@@ -323,6 +336,8 @@ fn history<'py>(
         ("amp", Some(h.point.amp)),
         ("tangential_amp", h.point.tangential_amp),
         ("phase", h.point.phase),
+        ("transverse_amp", h.point.transverse_amp),
+        ("transverse_phase", h.point.transverse_phase),
     ] {
         if let Some(x) = value {
             d.set_item(key, x)?;
@@ -333,6 +348,9 @@ fn history<'py>(
     d.set_item("tau", col(|s| s.tau).into_pyarray(py))?;
     d.set_item("normal", col(|s| s.normal).into_pyarray(py))?;
     d.set_item("tangential", col(|s| s.tangential).into_pyarray(py))?;
+    if h.samples.first().is_some_and(|s| s.transverse.is_some()) {
+        d.set_item("transverse", col_of(&h.samples, |s| s.transverse.unwrap_or(f64::NAN)).into_pyarray(py))?;
+    }
     let events: Vec<Option<Bound<'py, PyAny>>> = h
         .samples
         .iter()

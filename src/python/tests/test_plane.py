@@ -26,6 +26,21 @@ def test_point_is_the_command_lines() -> None:
     assert abs(alone["transverse_ratio"]) < 1e-15 and 0.0 < alone["mu_ratio"] < 1.0
 
 
+def test_history_is_the_command_lines() -> None:
+    h = fricosc.history("flat", vhat=0.2, amp=1.4, transverse_amp=0.8, transverse_phase=2.0, samples=50, periods=2)
+    q = json.loads(cli("history", "--vhat", "0.2", "--amp", "1.4", "--transverse-amp", "0.8",
+                       "--transverse-phase", "2", "--samples", "50", "--periods", "2"))
+    assert [s["transverse"] for s in q["samples"]] == list(h["transverse"])
+    assert [s["tangential"] for s in q["samples"]] == list(h["tangential"])
+    assert [s.get("event") for s in q["samples"]] == h["event"]
+    assert (h["transverse_amp"], h["transverse_phase"]) == (0.8, 2.0)
+    plain = fricosc.history("flat", 0.3, 0.5, samples=20)
+    zero = fricosc.history("flat", 0.3, 0.5, samples=20, transverse_amp=0.0)
+    assert "transverse" not in zero and list(zero["tangential"]) == list(plain["tangential"])
+    with pytest.raises(fricosc.InputError, match="flat punch only"):
+        fricosc.history("parabolic", vhat=0.2, amp=0.5, transverse_amp=1.0)
+
+
 def test_no_transverse_amplitude_is_the_point_without_it() -> None:
     assert fricosc.point("flat", 0.3, 0.5, transverse_amp=0.0) == fricosc.point("flat", 0.3, 0.5)
 

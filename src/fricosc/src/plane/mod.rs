@@ -14,6 +14,7 @@
 //! period from contact is its orbit.
 
 mod drive;
+mod history;
 mod layer;
 mod series;
 mod spring;
@@ -25,6 +26,8 @@ use crate::Conditions;
 use drive::{Bound, Drive};
 use spring::{Spring, Start, Walk};
 use std::f64::consts::TAU;
+
+pub(crate) use history::samples;
 
 /// Largest transverse amplitude accepted (pre-slip lengths): as for the
 /// oscillation in the sliding direction, the phase's rounding times `W` is
@@ -110,7 +113,7 @@ pub struct PlaneEvaluation {
 /// [`Error::InvalidParameter`] for a curved shape or a system (not solved in
 /// the plane yet), [`Error::Internal`] when no attracting orbit is found.
 pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse) -> Result<PlaneEvaluation> {
-    orbit(&spring_of(shape, c, w)?)
+    orbit(&spring_of(shape, c, w)?).map(|(e, _)| e)
 }
 
 /// Whether the conditions `c` (with a transverse oscillation) are solved in
@@ -195,11 +198,12 @@ const MAX_NEWTON: usize = 60;
 /// Halvings of one Newton step at most.
 const MAX_HALVINGS: usize = 6;
 
-fn orbit(sp: &Spring) -> Result<PlaneEvaluation> {
+/// The attracting orbit of `sp` and where it starts at `tau = 0`.
+fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
     let total = sp.bound.period_integral();
     if sp.bound.amp >= sp.bound.level {
         let walk = sp.walk(Start::Contact(0.0), TAU)?;
-        return answer(&walk, total, 0.0, 0.0, 1);
+        return Ok((answer(&walk, total, 0.0, 0.0, 1)?, Start::Contact(0.0)));
     }
     let mut f = [0.0; 2];
     let mut periods = 0;
@@ -215,7 +219,7 @@ fn orbit(sp: &Spring) -> Result<PlaneEvaluation> {
             if m >= 1.0 {
                 return relaxed(sp, total, periods);
             }
-            return answer(&w, total, m, res, periods);
+            return Ok((answer(&w, total, m, res, periods)?, Start::Force(0.0, f)));
         }
         let r = [w.end[0] - f[0], w.end[1] - f[1]];
         if w.stuck {
@@ -258,13 +262,13 @@ const MAX_RELAXED: usize = 400;
 /// The orbit the relaxed start reaches, period after period, where Newton's
 /// is neutral (a shakedown into pure stick: every state that sticks all
 /// period is periodic, and the relaxed start picks one).
-fn relaxed(sp: &Spring, total: f64, newton_periods: usize) -> Result<PlaneEvaluation> {
+fn relaxed(sp: &Spring, total: f64, newton_periods: usize) -> Result<(PlaneEvaluation, Start)> {
     let mut f = [0.0; 2];
     for k in 1..=MAX_RELAXED {
         let w = sp.walk(Start::Force(0.0, f), TAU)?;
         let res = (w.end[0] - f[0]).hypot(w.end[1] - f[1]);
         if res <= 8.0 * f64::EPSILON * (1f64.max(f[0].abs()).max(f[1].abs())) {
-            return answer(&w, total, multiplier(&w.jacobian), res, newton_periods + k);
+            return Ok((answer(&w, total, multiplier(&w.jacobian), res, newton_periods + k)?, Start::Force(0.0, f)));
         }
         f = w.end;
     }

@@ -78,6 +78,17 @@ pub(crate) struct Walk {
     pub(crate) steps: usize,
     /// Whether the spring stuck all the way.
     pub(crate) stuck: bool,
+    /// Where it stopped, to go on from ([`Start::Resume`]).
+    pub(crate) resume: Resume,
+}
+
+/// Where a walk stopped: the phase and its state there, so that a walk
+/// resumed from it goes on as the one walk would (a stick's leading zeros
+/// at an event kept).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Resume {
+    tau: f64,
+    phase: Phase,
 }
 
 /// Where a walk starts.
@@ -87,6 +98,8 @@ pub(crate) enum Start {
     Force(f64, [f64; 2]),
     /// At the first contact at or after `tau`, from `f = 0`.
     Contact(f64),
+    /// Where another walk stopped (its Jacobian not carried on).
+    Resume(Resume),
 }
 
 struct Walker<'a> {
@@ -129,6 +142,16 @@ impl Spring {
                 w.tau = tau;
                 w.jac = [[0.0; 2]; 2];
             }
+            Start::Resume(r) => {
+                w.tau = r.tau;
+                // A stick stopped at its slip (the bound reached at the very
+                // end, its zero there not yet a fall) goes on as a start on
+                // the circle would.
+                w.phase = match r.phase {
+                    Phase::Stick { f, skip: 0 } => w.enter(f),
+                    p => p,
+                };
+            }
         }
         while w.tau < end {
             w.steps += 1;
@@ -155,6 +178,7 @@ impl Spring {
             stuck: w.stuck && matches!(w.phase, Phase::Stick { .. }),
             events: w.events,
             steps: w.steps,
+            resume: Resume { tau: w.tau, phase: w.phase },
         })
     }
 }
@@ -311,15 +335,18 @@ impl Walker<'_> {
         let b = bound.series(tau, &cs);
         let xd = self.sp.drive.velocity(&cs, &sn);
         let loss = bound.next_loss(tau).filter(|&l| l <= end);
-        if let (Some(l), false) = (loss, regain) {
+        if let (Some(l), false) = (bound.next_loss(tau), regain) {
+            // The tail before a loss is booked along the slip's direction (a
+            // walk that stops inside it, at `end`, goes on from there).
             let rest = b.integral(l - tau);
             if l - tau < 0.5 && rest <= LOSS_TAIL {
-                let e = direction(y0);
-                self.force[0].add(e[0] * rest);
-                self.force[1].add(e[1] * rest);
-                self.truncation += 2.0 * rest;
-                self.tau = l;
-                return Ok(self.lose());
+                let (e, stop) = (direction(y0), l.min(end));
+                let part = if stop == l { rest } else { b.integral(stop - tau) };
+                self.force[0].add(e[0] * part);
+                self.force[1].add(e[1] * part);
+                self.truncation += 2.0 * part;
+                self.tau = stop;
+                return Ok(if stop == l { self.lose() } else { Phase::Slip { y: y0, regain: false } });
             }
         }
         let mut target = loss.unwrap_or(end);

@@ -1,6 +1,6 @@
 //! The plane's solver on drives the public interface cannot express.
 use super::drive::{Bound, Drive};
-use super::spring::Spring;
+use super::spring::{Spring, Start};
 use super::{orbit, PlaneEvaluation};
 use crate::{Conditions, Shape};
 
@@ -10,7 +10,7 @@ fn rotated(d: Drive, alpha: f64) -> Drive {
 }
 
 fn solve(d: Drive, amp: f64) -> PlaneEvaluation {
-    orbit(&Spring::new(d, Bound::new(1.0, amp))).unwrap()
+    orbit(&Spring::new(d, Bound::new(1.0, amp))).unwrap().0
 }
 
 /// Sliding along any direction of the plane, with or without an oscillation
@@ -88,5 +88,26 @@ fn the_period_maps_derivative_is_its_differences() {
         }
         let e = solve(d, amp);
         assert!(e.multiplier > 1e-4 && e.multiplier < 1.0, "{}", e.multiplier);
+    }
+}
+
+/// A walk stopped 1e-13 before a loss of contact, inside the slip's tail
+/// that is booked without steps, and resumed: the same force integral as
+/// the one walk of the period, to rounding (the resumed slip's series once
+/// met the bound's zero at its radius, and its event did not isolate).
+#[test]
+fn a_walk_resumed_just_before_a_loss_of_contact_goes_on() {
+    let sp = Spring::new(Drive::sliding(0.2, 0.0, 0.0, 0.8, 2.0), Bound::new(1.0, 1.4));
+    let (e, start) = orbit(&sp).unwrap();
+    let one = sp.walk(start, std::f64::consts::TAU).unwrap();
+    let loss = e.events.iter().find(|e| e.kind == crate::spring::EventKind::LossOfContact).unwrap().tau;
+    for before in [1e-13, 1e-10, 1e-7] {
+        let first = sp.walk(start, loss - before).unwrap();
+        let rest = sp.walk(Start::Resume(first.resume), std::f64::consts::TAU).unwrap();
+        for k in 0..2 {
+            let d = (first.force[k] + rest.force[k] - one.force[k]).abs();
+            assert!(d < 1e-15, "{before:e}: axis {k} off by {d:e}");
+        }
+        assert_eq!(rest.events.first().map(|e| e.1), Some(crate::spring::EventKind::LossOfContact));
     }
 }

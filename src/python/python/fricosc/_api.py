@@ -287,6 +287,8 @@ def history(
     system_stiffness: Optional[float] = None,
     frequency_ratio: Optional[float] = None,
     damping: Optional[float] = None,
+    transverse_amp: Optional[float] = None,
+    transverse_phase: Optional[float] = None,
 ) -> Dict[str, Any]:
     """The normal force (times mu0) and the tangential force over ``periods``
     periods (the seed's Fig. 2), as ``fricosc history`` computes them: exact,
@@ -303,12 +305,19 @@ def history(
     system with mass and stiffness, one period of its attractor (a curved
     body's as its springs), with the body's ``body_lag`` behind the drive,
     ``body_velocity`` and the ``system_force`` on it (a body with mass). ``springs``: a curved body's, default 4000 (256
-    on a system).
+    on a system). With ``transverse_amp`` (and ``transverse_phase``) as ``fricosc history --transverse-amp``: the flat
+    punch under an oscillation across the sliding direction, the force across it ``transverse`` beside ``tangential``
+    (along it), every event of the orbit among the samples (``transverse_amp=0`` is the history without it).
 
     >>> h = history("flat", vhat=0.2, amp=0.5, tangential_amp=1.5, phase=1.3, samples=100)
     >>> [e for e in h["event"] if e]
     ['stick', 'backward_slip', 'stick', 'slip']
+    >>> h = history("flat", vhat=0.2, amp=1.4, transverse_amp=0.8, transverse_phase=2.0, samples=100)
+    >>> [e for e in h["event"] if e], round(float(min(h["transverse"])), 6)
+    (['contact', 'slip', 'loss_of_contact'], -1.08656)
     """
+    if transverse_phase is not None and transverse_amp is None:
+        raise TypeError("transverse_phase needs transverse_amp")
     if amp is None:
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
@@ -329,6 +338,10 @@ def history(
         int(springs),
         positions,
         _system(system_stiffness, frequency_ratio, damping),
+        None if transverse_amp is None else (
+            _scalar(transverse_amp, "transverse_amp"),
+            _scalar(0.0 if transverse_phase is None else transverse_phase, "transverse_phase"),
+        ),
     )
     return result
 

@@ -68,6 +68,7 @@ def history(
     springs: int,
     spring_at: List[float],
     system: Optional[Tuple[float, float, float]] = None,
+    transverse: Optional[Tuple[float, float]] = None,
 ) -> Dict[str, Any]: ...
 def point_system(
     shape: CoreShape,

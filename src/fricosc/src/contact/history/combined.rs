@@ -44,7 +44,7 @@ pub(super) fn flat_samples(c: &Conditions, periods: usize, mut taus: Vec<(f64, O
             // the bound at tau reduced to the period, a rounding apart).
             let normal = (1.0 - o.amp * tau.cos()).max(0.0);
             let tangential = sp.force_at(b, d, tau).clamp(-normal, normal);
-            Sample { tau, normal, tangential, event, springs: vec![], body: None }
+            Sample { tau, normal, tangential, transverse: None, event, springs: vec![], body: None }
         })
         .collect()
 }
@@ -85,6 +85,7 @@ pub(super) fn foundation_samples(
             tau,
             normal: contact.static_force(1.0 - o.amp * tau.cos()) / f0,
             tangential,
+            transverse: None,
             event: None,
             springs,
             body: None,
@@ -132,7 +133,7 @@ pub(super) fn on_system(
             .map(|(&tau, [normal, f, x, v, norm])| {
                 let (lag, force) = sys.body(c, tau, x, v);
                 let body = Some(Body { body_lag: lag, body_velocity: v, system_force: force / norm });
-                Sample { tau, normal, tangential: f, event: None, springs: vec![], body }
+                Sample { tau, normal, tangential: f, transverse: None, event: None, springs: vec![], body }
             })
             .collect();
         return Ok(super::History::new(shape, c, units, vec![], samples));
@@ -157,7 +158,7 @@ pub(super) fn on_system(
             let normal = (1.0 - c.amp() * tau.cos()).max(0.0);
             let (lag, force) = sys.body(c, tau, x, v);
             let body = Some(Body { body_lag: lag, body_velocity: v, system_force: force });
-            Sample { tau, normal, tangential: f.clamp(-normal, normal), event, springs: vec![], body }
+            Sample { tau, normal, tangential: f.clamp(-normal, normal), transverse: None, event, springs: vec![], body }
         })
         .collect();
     Ok(super::History::new(shape, c, units, vec![], samples))

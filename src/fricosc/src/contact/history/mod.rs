@@ -30,8 +30,12 @@ pub struct Sample {
     pub tau: f64,
     /// Normal force.
     pub normal: f64,
-    /// Tangential force.
+    /// Tangential force (along the sliding direction).
     pub tangential: f64,
+    /// The tangential force across the sliding direction, under a
+    /// transverse oscillation ([`Conditions::with_transverse`]).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub transverse: Option<f64>,
     /// The event at this phase, if it is one (flat punch only).
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub event: Option<EventKind>,
@@ -98,6 +102,12 @@ pub struct HistoryPoint {
     /// Its phase against the normal oscillation (radians in `[0, 2 pi)`).
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub phase: Option<f64>,
+    /// The transverse amplitude `W = dy/l`, if the body oscillates across the sliding direction.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub transverse_amp: Option<f64>,
+    /// Its phase against the normal oscillation (radians in `[0, 2 pi)`).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub transverse_phase: Option<f64>,
 }
 
 impl HistoryPoint {
@@ -105,23 +115,33 @@ impl HistoryPoint {
     #[must_use]
     pub fn of(c: &Conditions) -> HistoryPoint {
         let tangential = c.tangential();
+        let w = c.transverse();
+        let by_vhat = tangential.is_some() || w.is_some();
         HistoryPoint {
-            vbar: if tangential.is_some() { None } else { c.as_vbar().ok() },
-            vhat: tangential.map(|_| c.as_vhat()),
+            vbar: if by_vhat { None } else { c.as_vbar().ok() },
+            vhat: by_vhat.then(|| c.as_vhat()),
             amp: c.amp(),
             tangential_amp: tangential.map(|x| x.0),
             phase: tangential.map(|x| x.1),
+            transverse_amp: w.map(|w| w.amp()),
+            transverse_phase: w.map(|w| w.phase()),
         }
     }
 }
 
 impl std::fmt::Display for HistoryPoint {
-    /// `vbar 0.3, du/u0 0.5`, or `vhat 0.3, du/u0 0.5, T 1.5, phase 1.3`.
+    /// `vbar 0.3, du/u0 0.5`, or `vhat 0.3, du/u0 0.5, T 1.5, phase 1.3`,
+    /// and `W 1, psi 0.7` across the sliding direction.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match (self.vbar, self.vhat, self.tangential_amp, self.phase) {
-            (_, Some(v), Some(t), Some(p)) => write!(f, "vhat {v}, du/u0 {}, T {t}, phase {p}", self.amp),
-            (Some(v), ..) => write!(f, "vbar {v}, du/u0 {}", self.amp),
-            _ => write!(f, "du/u0 {}", self.amp),
+            (_, Some(v), Some(t), Some(p)) => write!(f, "vhat {v}, du/u0 {}, T {t}, phase {p}", self.amp)?,
+            (_, Some(v), ..) => write!(f, "vhat {v}, du/u0 {}", self.amp)?,
+            (Some(v), ..) => write!(f, "vbar {v}, du/u0 {}", self.amp)?,
+            _ => write!(f, "du/u0 {}", self.amp)?,
+        }
+        match (self.transverse_amp, self.transverse_phase) {
+            (Some(w), Some(psi)) => write!(f, ", W {w}, psi {psi}"),
+            _ => Ok(()),
         }
     }
 }
@@ -296,6 +316,9 @@ pub const MIN_CURVED_AMP: f64 = 1e-300;
 /// oscillation at `amp = 0`), [`Error::TooLarge`] beyond the
 /// limits ([`MAX_SAMPLES`] rows, [`MAX_SPRINGS`] springs, [`MAX_SPRING_WORK`]).
 pub fn history(shape: &Shape, c: &Conditions, opts: &HistoryOptions) -> Result<History> {
+    if let Some(w) = c.transverse() {
+        return in_plane(shape, c, w, opts);
+    }
     if let Some(sys) = c.system() {
         return combined::on_system(shape, c, sys, opts);
     }
@@ -337,6 +360,28 @@ pub fn history(shape: &Shape, c: &Conditions, opts: &HistoryOptions) -> Result<H
     Ok(History::new(shape, c, units, opts.spring_at.clone(), out))
 }
 
+/// The flat punch's history under a transverse oscillation `w`
+/// ([`crate::plane`]): its forces along and across the sliding direction
+/// at the samples and the orbit's events; what the plane does not solve
+/// (a curved shape, a system) refused before any work.
+fn in_plane(shape: &Shape, c: &Conditions, w: crate::plane::Transverse, opts: &HistoryOptions) -> Result<History> {
+    crate::plane::check(shape, c)?;
+    check_history(shape, 0.0, c.amp(), opts)?;
+    let total = TAU * opts.periods as f64;
+    let taus = (0..=opts.samples).map(|j| total * j as f64 / opts.samples as f64).collect();
+    let rows = |n: usize| match n > MAX_SAMPLES {
+        true => Err(Error::TooLarge {
+            what: "history rows (samples + 1 + events)".into(),
+            count: n as u128,
+            limit: MAX_SAMPLES as u128,
+        }),
+        false => Ok(()),
+    };
+    let (_, samples) = crate::plane::samples(shape, c, w, opts.periods, taus, rows)?;
+    let units = format!("{UNITS} (along and across the sliding direction)");
+    Ok(History::new(shape, c, units, vec![], samples))
+}
+
 /// The flat punch's samples at `taus`, with its events added.
 fn flat_samples(vbar: f64, amp: f64, periods: usize, mut taus: Vec<(f64, Option<EventKind>)>) -> Vec<Sample> {
     let sp = crate::flat::spring(vbar, amp, crate::model::spring::Precision::Events);
@@ -349,7 +394,7 @@ fn flat_samples(vbar: f64, amp: f64, periods: usize, mut taus: Vec<(f64, Option<
     taus.iter()
         .map(|&(tau, event)| {
             let (normal, tangential) = crate::flat::forces_at(&sp, amp, tau);
-            Sample { tau, normal, tangential, event, springs: vec![], body: None }
+            Sample { tau, normal, tangential, transverse: None, event, springs: vec![], body: None }
         })
         .collect()
 }
@@ -395,7 +440,7 @@ fn foundation_samples(
                     [nrm, sp.as_ref().map_or(nrm, |s| amp * spring_force(s, tau))]
                 })
                 .collect();
-            Sample { tau, normal, tangential, event: None, springs, body: None }
+            Sample { tau, normal, tangential, transverse: None, event: None, springs, body: None }
         })
         .collect())
 }
@@ -411,6 +456,11 @@ fn foundation_samples(
 /// [`Error::InvalidParameter`] for bad inputs or no oscillation at all,
 /// [`Error::TooLarge`] beyond [`MAX_SAMPLES`] rows.
 pub fn stepped_history(c: &Conditions, periods: usize, steps_per_period: usize) -> Result<History> {
+    if let Some(w) = c.transverse() {
+        let reason =
+            "is not stepped as a history (the exact history in the plane is `history`'s; the 2-D peer answers points)";
+        return Err(Error::param("transverse-amp", w.amp(), reason));
+    }
     let amp = c.amp();
     for (name, v) in [("periods", periods), ("steps-per-period", steps_per_period)] {
         if v == 0 {
@@ -445,7 +495,15 @@ pub fn stepped_history(c: &Conditions, periods: usize, steps_per_period: usize) 
                 None => crate::stepper::update(f, b, df),
             };
         }
-        samples.push(Sample { tau, normal: b, tangential: f, event: None, springs: vec![], body: None });
+        samples.push(Sample {
+            tau,
+            normal: b,
+            tangential: f,
+            transverse: None,
+            event: None,
+            springs: vec![],
+            body: None,
+        });
     }
     let units = format!("{UNITS} (time stepping)");
     Ok(History::new(&Shape::flat(), c, units, vec![], samples))

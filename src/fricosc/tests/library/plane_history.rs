@@ -1,0 +1,98 @@
+//! The flat punch's history in the plane (`history` under
+//! `Conditions::with_transverse`): against the one-dimensional exact history
+//! of a drive along a line (rotated), against the plane's own period means
+//! (`mu_ratio`, `transverse_ratio`, from the series' integrals, not from the
+//! samples), and its refusals.
+use fricosc::history::{history, stepped_history, History, HistoryOptions};
+use fricosc::plane::Transverse;
+use fricosc::{Conditions, Shape};
+
+fn in_plane(c: &Conditions, w: f64, psi: f64, samples: usize) -> History {
+    let c = c.with_transverse(Transverse::new(w, psi).unwrap());
+    history(&Shape::flat(), &c, &HistoryOptions::default().with_samples(samples)).unwrap()
+}
+
+/// Period mean by the trapezoid rule on the (uniform plus event) samples.
+fn mean(h: &History, f: impl Fn(&fricosc::history::Sample) -> f64) -> f64 {
+    let s = &h.samples;
+    let area: f64 = s.windows(2).map(|w| 0.5 * (w[1].tau - w[0].tau) * (f(&w[0]) + f(&w[1]))).sum();
+    area / (s[s.len() - 1].tau - s[0].tau)
+}
+
+/// A drive along one line at an angle `alpha` (`vhat = 0`, both
+/// oscillations in phase): at every sample the force is the
+/// one-dimensional history's (the stop operator's phases), rotated, to a
+/// few ulp of the bound; contact loss included (`amp = 1.5`). A swapped
+/// axis, a sign, or a resumed walk that forgets its phase is off by the
+/// bound.
+#[test]
+fn a_drive_along_a_line_is_the_one_dimensional_history_rotated() {
+    for (amp, a, phase, alpha) in [(0.5, 2.0, 0.4, 0.3), (1.5, 1.5, 1.0, 1.1), (0.8, 3.0, 5.0, 2.5)] {
+        let (t, w) = (a * f64::cos(alpha), a * f64::sin(alpha));
+        let one_d = Conditions::vhat(0.0, amp).unwrap().with_tangential(a, phase).unwrap();
+        let one = history(&Shape::flat(), &one_d, &HistoryOptions::default().with_samples(400)).unwrap();
+        let (t, phase_t) = (t.abs(), if t < 0.0 { phase + std::f64::consts::PI } else { phase });
+        let c = Conditions::vhat(0.0, amp).unwrap().with_tangential(t, phase_t).unwrap();
+        let h = in_plane(&c, w, phase, 400);
+        let uniform = |h: &History| h.samples.iter().filter(|s| s.event.is_none()).cloned().collect::<Vec<_>>();
+        let (p, q) = (uniform(&h), uniform(&one));
+        assert_eq!(p.len(), 401);
+        assert_eq!(p.len(), q.len());
+        for (s, r) in p.iter().zip(&q) {
+            assert_eq!(s.tau, r.tau);
+            let f = r.tangential;
+            let err = (s.tangential - f * alpha.cos()).abs().max((s.transverse.unwrap() - f * alpha.sin()).abs());
+            let scale = 1f64.max(s.normal);
+            assert!(err <= 16.0 * f64::EPSILON * scale, "amp {amp} tau {}: {s:?} against {f}: {err:e}", s.tau);
+            assert!((s.normal - r.normal).abs() <= 4.0 * f64::EPSILON * scale, "{s:?} {r:?}");
+        }
+    }
+}
+
+/// Under all three oscillations, with and without contact loss: the force
+/// stays in its disc, the events are the point's (the orbit's), and the
+/// samples' trapezoidal means are the point's ratios (events among the
+/// samples: second order on each smooth piece, 20,000 samples), over two
+/// periods as over one.
+#[test]
+fn a_history_in_the_plane_averages_to_its_ratios() {
+    for (vhat, amp, t, phase, w, psi) in [(0.3, 0.5, 0.4, 0.2, 1.0, 0.7), (0.2, 1.4, 0.0, 0.0, 0.8, 2.0)] {
+        let c = Conditions::vhat(vhat, amp).unwrap();
+        let c = if t > 0.0 { c.with_tangential(t, phase).unwrap() } else { c };
+        let at = c.with_transverse(Transverse::new(w, psi).unwrap());
+        let e = Shape::flat().evaluate(&at).unwrap();
+        let o = HistoryOptions::default().with_samples(40_000).with_periods(2);
+        let h = history(&Shape::flat(), &at, &o).unwrap();
+        let across = |s: &fricosc::history::Sample| s.transverse.unwrap();
+        let (fx, fy, b) = (mean(&h, |s| s.tangential), mean(&h, across), mean(&h, |s| s.normal));
+        let (mx, my) = (e.ratio.mu_ratio, e.transverse_ratio.unwrap());
+        assert!(
+            (fx / b - mx).abs() < 1e-7 && (fy / b - my).abs() < 1e-7,
+            "{c:?}: {} {} against {mx} {my}",
+            fx / b,
+            fy / b
+        );
+        assert!(h.samples.iter().all(|s| s.tangential.hypot(across(s)) <= s.normal * (1.0 + 4.0 * f64::EPSILON)));
+        let events: Vec<f64> = h.samples.iter().filter(|s| s.event.is_some()).map(|s| s.tau).collect();
+        let Ok(fricosc::Report::Plane(r)) = Shape::flat().report(&at) else { panic!("not a plane report") };
+        let want: Vec<f64> =
+            (0..2).flat_map(|p| r.events.iter().map(move |e| e.tau + std::f64::consts::TAU * p as f64)).collect();
+        assert_eq!(events, want);
+        assert!(h.point.to_string().ends_with(&format!("W {w}, psi {psi}")), "{}", h.point);
+    }
+}
+
+/// What the plane does not solve is refused by name before any work: a
+/// curved shape, a system, the stepped history.
+#[test]
+fn a_history_in_the_plane_refuses_what_it_does_not_solve() {
+    let c = Conditions::vhat(0.3, 0.5).unwrap().with_transverse(Transverse::new(1.0, 0.0).unwrap());
+    let o = HistoryOptions::default();
+    let curved = history(&Shape::parabolic(), &c, &o).unwrap_err().to_string();
+    assert!(curved.contains("transverse-amp"), "{curved}");
+    let sys = fricosc::system::System::new(1.0, 0.5, 0.05).unwrap();
+    let on_system = history(&Shape::flat(), &c.with_system(sys), &o).unwrap_err().to_string();
+    assert!(on_system.contains("system-stiffness"), "{on_system}");
+    let stepped = stepped_history(&c, 1, 1000).unwrap_err().to_string();
+    assert!(stepped.contains("transverse-amp"), "{stepped}");
+}
