@@ -259,7 +259,7 @@ impl Drive {
 #[derive(Args)]
 pub struct TransversePoint {
     /// Amplitude of an oscillation across the sliding direction, in the plane, dy/l in pre-slip
-    /// lengths (>= 0, at most 1e6; 0 is the problem without it, bit for bit). The flat punch only.
+    /// lengths (>= 0, at most 1e6; 0 is the problem without it, bit for bit). A stiff system only.
     #[arg(long, allow_hyphen_values = true, value_parser = number)]
     pub transverse_amp: Option<f64>,
     /// Its phase against the normal oscillation, radians (default 0; |psi| <= 1e6): the body moves

@@ -1,4 +1,4 @@
-//! `fricosc table --transverse-amp`: a grid in the plane (the flat punch under
+//! `fricosc table --transverse-amp`: a grid in the plane (a contact under
 //! an oscillation across the sliding direction, `fricosc::plane`).
 
 use crate::cmd::{io_err, list, List};
@@ -14,7 +14,7 @@ use std::io;
 #[derive(Args)]
 pub struct TransverseList {
     /// Amplitudes of an oscillation across the sliding direction, dy/l in pre-slip lengths (each at
-    /// least 0, at most 1e6; the flat punch only): a comma list or start:stop:count. Adds the
+    /// least 0, at most 1e6; a stiff system only): a comma list or start:stop:count. Adds the
     /// columns transverse_amp, transverse_phase, transverse_ratio and error_estimate; 1e5 rows at most.
     #[arg(long, allow_hyphen_values = true, value_parser = list)]
     pub transverse_amp: Option<List>,

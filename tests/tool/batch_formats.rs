@@ -305,7 +305,7 @@ fn rows_in_the_plane_get_the_transverse_ratio() {
     );
     assert!(out.starts_with(&want) && out.lines().nth(2).unwrap().ends_with(",0.0"), "{out}");
     for (row, needle) in [
-        (r#"{"shape":"parabolic","vhat":0.6,"amp":0.5,"transverse_amp":1.2}"#, "flat punch only"),
+        (r#"{"shape":"parabolic","vhat":0.6,"amp":0.5,"transverse_amp":2e6}"#, "transverse-amp"),
         (
             r#"{"shape":"flat","vhat":0.6,"amp":0.5,"transverse_amp":1.2,"system_stiffness":1}"#,
             "not solved in the plane",

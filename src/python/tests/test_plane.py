@@ -37,7 +37,7 @@ def test_history_is_the_command_lines() -> None:
     plain = fricosc.history("flat", 0.3, 0.5, samples=20)
     zero = fricosc.history("flat", 0.3, 0.5, samples=20, transverse_amp=0.0)
     assert "transverse" not in zero and list(zero["tangential"]) == list(plain["tangential"])
-    with pytest.raises(fricosc.InputError, match="flat punch only"):
+    with pytest.raises(fricosc.InputError, match="flat punch's only"):
         fricosc.history("parabolic", vhat=0.2, amp=0.5, transverse_amp=1.0)
 
 
@@ -61,6 +61,8 @@ def test_bad_input_is_named(kwargs: Dict[str, Any], name: str) -> None:
         fricosc.point("flat", vhat=0.3, amp=0.5, transverse_phase=1.0)
 
 
-def test_curved_shapes_are_refused_by_name() -> None:
-    with pytest.raises(fricosc.InputError, match="flat punch only"):
-        fricosc.point("parabolic", vhat=0.3, amp=0.5, transverse_amp=1.0)
+def test_curved_shapes_are_the_command_lines() -> None:
+    p = fricosc.point("cone", vhat=0.3, amp=1.5, transverse_amp=1.0, transverse_phase=0.7)
+    q = _cli("--shape", "cone", "--vhat", "0.3", "--amp", "1.5", "--transverse-amp", "1", "--transverse-phase", "0.7")
+    for key in ["mu_ratio", "transverse_ratio", "error_estimate"]:
+        assert p[key] == q[key], key

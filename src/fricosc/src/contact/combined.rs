@@ -271,9 +271,6 @@ const FIRST_ORDER: usize = 8;
 /// just appears; they need more than the power laws' 256).
 const MAX_ORDER: usize = 1024;
 
-/// Samples of the phase sequence per band before bisecting for its changes.
-const SCAN: usize = 32;
-
 fn curved(c: &dyn crate::contact::Contact, o: &Oscillation, tol: f64) -> Result<Combined> {
     check_nonneg("tol", tol)?;
     let d = o.drive();
@@ -291,7 +288,7 @@ fn curved(c: &dyn crate::contact::Contact, o: &Oscillation, tol: f64) -> Result<
         let b = Bound { c: 1.0 - c.equivalent_profile(z), amp: o.amp };
         (solve(b, d), b)
     };
-    let edges = band_edges(c, o.amp, zmax, &spring)?;
+    let edges = crate::integrate::bands::edges(c, o.amp, zmax, &|z| Ok(signature(&spring(z).0)))?;
     // The scale of the convergence test; the answer's normal force is the
     // quadrature's own integral of the springs' mean bounds, so that `mu` and
     // the reduction share one normalisation (they add up to 1 to rounding).
@@ -334,82 +331,3 @@ fn curved(c: &dyn crate::contact::Contact, o: &Oscillation, tol: f64) -> Result<
     let ratio = Ratio::signed(mu, red, error_estimate, &c.name())?;
     Ok(Combined { ratio, error_estimate, spring: None, bands })
 }
-
-type Sig = (crate::stop::Touch, Vec<StopKind>);
-
-/// The bands' edges over `[0, zmax]`: the ends, where contact starts to be
-/// lost, where `G` has kinks, and where the phase sequence changes (found by
-/// bisection between [`SCAN`] samples of each piece).
-fn band_edges(
-    c: &dyn crate::contact::Contact,
-    amp: f64,
-    zmax: f64,
-    spring: &dyn Fn(f64) -> (StopSpring, Bound),
-) -> Result<Vec<f64>> {
-    // Edges: the ends, where contact starts to be lost, where G has kinks, and
-    // where the phase sequence changes (found by bisection between samples).
-    let mut cuts = vec![0.0, zmax];
-    if amp > 0.0 && amp < 1.0 {
-        let level = 1.0 - amp;
-        cuts.push(c.level(level));
-    }
-    cuts.extend(c.breakpoints().into_iter().filter(|&z| z > 0.0 && z < zmax));
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
-    let mut edges = vec![];
-    for w in cuts.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let zs: Vec<f64> = (0..=SCAN).map(|k| a + (b - a) * k as f64 / SCAN as f64).collect();
-        // Just inside the ends: the ends themselves may sit on a threshold.
-        let inside = |z: f64| z.clamp(a + (b - a) * 1e-12, b - (b - a) * 1e-12);
-        let sigs: Vec<_> = zs.iter().map(|&z| signature(&spring(inside(z)).0)).collect();
-        edges.push(a);
-        let (mut budget, found) = (BISECTION_BUDGET, edges.len());
-        for k in 0..SCAN {
-            changes(spring, (inside(zs[k]), &sigs[k]), (inside(zs[k + 1]), &sigs[k + 1]), &mut edges, &mut budget);
-        }
-        if budget == 0 {
-            // Changes everywhere are ties of rounding, not regimes: one band.
-            edges.truncate(found);
-        }
-    }
-    edges.push(zmax);
-    edges.sort_by(f64::total_cmp);
-    edges.dedup();
-    Ok(edges)
-}
-
-/// Every change of the phase sequence between `a` (sequence `sa`) and `b`,
-/// by bisection to rounding (both halves, so that a band between two samples
-/// of the same sequence at the ends is still found if the midpoint falls in it).
-///
-/// Where the sequence is decided by ties of rounding at every `z` (the drive
-/// and the bound moving together, `X' = -B'` for instance, where the spring
-/// follows `-B` whichever way it is named), the bisection would branch at every
-/// level: `budget` caps its springs, and a piece that spends it is taken as
-/// one band (each sequence's means agree there, so the bands need no edges);
-/// the quadrature's own convergence check covers what a missed edge would cost.
-fn changes(
-    spring: &dyn Fn(f64) -> (StopSpring, Bound),
-    (a, sa): (f64, &Sig),
-    (b, sb): (f64, &Sig),
-    out: &mut Vec<f64>,
-    budget: &mut usize,
-) {
-    if sa == sb {
-        return;
-    }
-    let m = 0.5 * (a + b);
-    if m <= a || m >= b || b - a <= 4.0 * f64::EPSILON * b.abs() || *budget == 0 {
-        out.push(m);
-        return;
-    }
-    *budget -= 1;
-    let sm = signature(&spring(m).0);
-    changes(spring, (a, sa), (m, &sm), out, budget);
-    changes(spring, (m, &sm), (b, sb), out, budget);
-}
-
-/// Springs one piece's bisections may solve: 16 changes of the phase
-/// sequence, each to rounding.
-const BISECTION_BUDGET: usize = 16 * 64;

@@ -25,6 +25,7 @@
 
 use crate::numerics::quad;
 
+pub(crate) mod bands;
 pub(crate) mod mdr;
 
 /// Highest Gauss order a ladder tries by default.

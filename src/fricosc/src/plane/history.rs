@@ -7,7 +7,7 @@
 //! and events as the one walk of the period, its steps only split).
 
 use super::spring::Start;
-use super::{orbit, spring_of, PlaneEvaluation, Transverse};
+use super::{centre, orbit, PlaneEvaluation, Transverse};
 use crate::contact::history::Sample;
 use crate::error::Result;
 use crate::shape::Shape;
@@ -23,7 +23,7 @@ use std::f64::consts::TAU;
 /// `rows` is called with the number of rows before the samples are taken.
 ///
 /// # Errors
-/// What [`super::check`] refuses; [`crate::Error::Internal`] where no
+/// A curved shape, what [`super::check`] refuses; [`crate::Error::Internal`] where no
 /// attracting orbit is found; `rows`'s error.
 pub(crate) fn samples(
     shape: &Shape,
@@ -33,7 +33,11 @@ pub(crate) fn samples(
     taus: Vec<f64>,
     rows: impl FnOnce(usize) -> Result<()>,
 ) -> Result<(PlaneEvaluation, Vec<Sample>)> {
-    let sp = spring_of(shape, c, w)?;
+    if !shape.contact().single_spring() {
+        let reason = "a history in the plane is the flat punch's only so far (a curved contact's point is answered)";
+        return Err(crate::Error::param("transverse-amp", w.amp(), reason));
+    }
+    let sp = centre(c, w)?;
     let (eval, start) = orbit(&sp)?;
     // Each sample's phase, and its phase in one period (an event's exactly
     // the orbit's, so that the walk stops where the orbit's events are).

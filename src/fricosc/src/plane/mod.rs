@@ -13,6 +13,7 @@
 //! that leaves contact, or touches it (`amp = 1`), forgets its past, and one
 //! period from contact is its orbit.
 
+mod curved;
 mod drive;
 mod history;
 mod layer;
@@ -106,41 +107,47 @@ pub struct PlaneEvaluation {
     pub periods: usize,
 }
 
-/// The flat punch's answer under the conditions `c` and the transverse
-/// oscillation `w` (module docs).
+/// The answer under the conditions `c` and the transverse oscillation `w`:
+/// the flat punch's orbit (module docs), a curved contact's springs
+/// ([`curved`]).
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] for a curved shape or a system (not solved in
-/// the plane yet), [`Error::Internal`] when no attracting orbit is found.
+/// [`Error::InvalidParameter`] for a system (not solved in the plane yet)
+/// or a drive too stiff to step, [`Error::Internal`] when no attracting
+/// orbit is found.
 pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse) -> Result<PlaneEvaluation> {
-    orbit(&spring_of(shape, c, w)?).map(|(e, _)| e)
+    let sp = centre(c, w)?;
+    let contact = shape.contact();
+    if contact.single_spring() {
+        orbit(&sp).map(|(e, _)| e)
+    } else {
+        curved::solve(contact, sp.drive, c.amp(), c.tol())
+    }
 }
 
 /// Whether the conditions `c` (with a transverse oscillation) are solved in
 /// the plane: what [`Shape::evaluate`] would refuse before any work (a
-/// curved shape, a system, a slip too stiff to step), refused now, so that a
-/// batch checks every row before it writes one.
+/// system, a slip too stiff to step), refused now, so that a batch checks
+/// every row before it writes one.
 ///
 /// # Errors
 /// [`Error::InvalidParameter`], naming what is refused.
-pub fn check(shape: &Shape, c: &Conditions) -> Result<()> {
+pub fn check(_shape: &Shape, c: &Conditions) -> Result<()> {
     match c.transverse() {
-        Some(w) => spring_of(shape, c, w).map(drop),
+        Some(w) => centre(c, w).map(drop),
         None => Ok(()),
     }
 }
 
-/// The flat punch's spring under `c` and `w`, or what is refused before any work.
-fn spring_of(shape: &Shape, c: &Conditions, w: Transverse) -> Result<Spring> {
+/// The spring at the centre of the contact (the flat punch's) under `c` and
+/// `w`, or what is refused before any work.
+fn centre(c: &Conditions, w: Transverse) -> Result<Spring> {
     if let Some(sys) = c.system() {
         return Err(Error::param(
             "system-stiffness",
             sys.stiffness(),
             "a body on a system is not solved in the plane yet",
         ));
-    }
-    if !shape.is_flat() {
-        return Err(Error::param("transverse-amp", w.amp, "is solved exactly for the flat punch only so far"));
     }
     let o = crate::combined::Oscillation::of(c);
     let sp = Spring::new(Drive::sliding(o.vhat, o.tangential_amp, o.phase, w.amp, w.phase), Bound::new(1.0, o.amp));
@@ -170,9 +177,24 @@ fn check_work(sp: &Spring, drives: [(&'static str, f64); 3]) -> Result<()> {
             "nearly touches zero at tau = 0 where the body is nearly at rest: the reloading direction is undefined",
         ));
     }
+    let steps = period_steps(sp);
+    if steps > MAX_PERIOD_STEPS {
+        return Err(Error::param(
+            name,
+            value,
+            &format!("makes a slip too stiff to step exactly (about {steps:.0} steps a period, more than 2e4); there friction is the rigid body's to within a pre-slip length over the amplitude"),
+        ));
+    }
+    Ok(())
+}
+
+/// The Taylor steps of a period of `sp`, about `int |X'|/(4 B) dtau`
+/// outside the thin layer (64 samples of the period; [`check_work`]).
+pub(crate) fn period_steps(sp: &Spring) -> f64 {
     let n = 64;
+    let v0 = sp.drive.velocity_at(0.0);
     let floor = 1e-5 * v0[0].hypot(v0[1]).min(1.0).powi(2);
-    let steps: f64 = (0..n)
+    (0..n)
         .map(|k| {
             let tau = TAU * (k as f64 + 0.5) / n as f64;
             let (b, v) = (sp.bound.at(tau), sp.drive.velocity_at(tau));
@@ -182,15 +204,7 @@ fn check_work(sp: &Spring, drives: [(&'static str, f64); 3]) -> Result<()> {
                 0.0
             }
         })
-        .sum();
-    if steps > MAX_PERIOD_STEPS {
-        return Err(Error::param(
-            name,
-            value,
-            &format!("makes a slip too stiff to step exactly (about {steps:.0} steps a period, more than 2e4); there friction is the rigid body's to within a pre-slip length over the amplitude"),
-        ));
-    }
-    Ok(())
+        .sum()
 }
 
 /// Newton's iterations at most.

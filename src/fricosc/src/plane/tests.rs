@@ -111,3 +111,27 @@ fn a_walk_resumed_just_before_a_loss_of_contact_goes_on() {
         assert_eq!(rest.events.first().map(|e| e.1), Some(crate::spring::EventKind::LossOfContact));
     }
 }
+
+/// A curved contact sliding along any direction of the plane, with or
+/// without an oscillation along it: the one-dimensional solver's answer
+/// (its own bands of the stop operator's springs), rotated, within the two
+/// estimates.
+#[test]
+fn a_curved_contact_sliding_along_any_direction_is_the_one_dimensional_answer_rotated() {
+    for (name, vhat, amp, t, phase, alpha) in
+        [("parabolic", 0.3, 0.5, 1.0, 0.3, 0.7), ("cone", 0.2, 1.5, 1.5, 0.7, -2.0)]
+    {
+        let shape = Shape::parse(name).unwrap();
+        let c = Conditions::vhat(vhat, amp).unwrap().with_tangential(t, phase).unwrap();
+        let one = shape.evaluate(&c).unwrap();
+        let d = rotated(Drive::sliding(vhat, t, phase, 0.0, 0.0), alpha);
+        let e = super::curved::solve(shape.contact(), d, amp, crate::DEFAULT_TOL).unwrap();
+        let m = one.ratio.mu_ratio;
+        let err = (e.ratio.mu_ratio - m * alpha.cos()).abs().max((e.transverse_ratio - m * alpha.sin()).abs());
+        assert!(
+            err <= e.error_estimate + one.error_estimate && e.error_estimate < 1e-7,
+            "{name}: {err:e} {:e}",
+            e.error_estimate
+        );
+    }
+}

@@ -19,6 +19,7 @@ mod history;
 mod mdr;
 mod mdr_independent;
 mod plane;
+mod plane_curved;
 mod plane_history;
 mod profile;
 mod properties;

@@ -184,8 +184,8 @@ fn the_report_shows_events_and_the_multiplier() {
     assert_eq!(r.events.first().map(|e| e.kind.name()), Some("contact"));
 }
 
-/// Bad transverse inputs are refused by name; curved shapes and a system
-/// are refused, not answered in one dimension.
+/// Bad transverse inputs are refused by name; a system is refused, not
+/// answered in one dimension.
 #[test]
 fn bad_input_is_refused_by_name() {
     for (w, psi, name) in [
@@ -199,9 +199,10 @@ fn bad_input_is_refused_by_name() {
         assert!(matches!(err, fricosc::Error::InvalidParameter { name: n, .. } if n == name), "{err}");
     }
     let c = conditions(0.3, 0.5, 0.0, 0.0).with_transverse(Transverse::new(1.0, 0.0).unwrap());
+    let sys = fricosc::system::System::new(1.0, 0.5, 0.05).unwrap();
     assert!(matches!(
-        Shape::parabolic().evaluate(&c),
-        Err(fricosc::Error::InvalidParameter { name: "transverse-amp", .. })
+        Shape::parabolic().evaluate(&c.with_system(sys)),
+        Err(fricosc::Error::InvalidParameter { name: "system-stiffness", .. })
     ));
 }
 

@@ -1,0 +1,257 @@
+//! Curved contacts in the plane: the MDR foundation's springs, each the
+//! flat punch's spring in the plane at its own level (the bound `(1 - G(z) -
+//! amp cos tau)_+`) under the same drive, so that `mu = int <f_x> dz / int
+//! <B> dz` and the transverse ratio `int <f_y> dz / int <B> dz`.
+//!
+//! # Bands
+//! As under an oscillation in the sliding direction (`contact::combined`):
+//! edges where a spring's sequence of events changes
+//! ([`crate::integrate::bands`]), each band by Gauss-Legendre in `theta`
+//! (`z = a + (b - a)(1 - cos theta)/2`, which absorbs the square root at
+//! the edges) with the order doubled from 8 until two orders agree to the
+//! tolerance relative to the contact's normal force; a pass's error is its
+//! difference from the one before (an event that appears between two
+//! samples of the band search leaves a kink that the coefficients' decay
+//! would not see).
+//!
+//! # The edge of the contact
+//! A spring whose bound is small against the drive slips along a direction
+//! that relaxes at the rate `|X'|/B`: its period takes about `int
+//! |X'|/(4 B) dtau` Taylor steps. The springs beyond [`SPRING_STEPS`] such
+//! steps (at the edge of the contact, `z` up to `z_max`) are not walked:
+//! their `int <B> dz` is in the normal force, their forces are the last
+//! walked spring's ratios times it, with an error from the approach of
+//! those ratios to their limit ([`Tail`]).
+//!
+//! # Error estimate
+//! The ladder's last differences (`|dF| + |dN|` over `N`), the tail, the
+//! springs' own estimates integrated by the same rule, and rounding.
+
+use super::drive::{Bound, Drive};
+use super::spring::Spring;
+use super::{orbit, period_steps, PlaneEvaluation};
+use crate::contact::Contact;
+use crate::error::{Error, Result};
+use crate::integrate::{bands, cosine_pass, Ladder, Sums};
+use crate::spring::EventKind;
+use std::cell::{Cell, RefCell};
+use std::f64::consts::TAU;
+
+/// Taylor steps a period one spring may take at most (estimated before its
+/// walk); the springs beyond, at the contact's edge, are the tail.
+pub(crate) const SPRING_STEPS: f64 = 5000.0;
+
+/// Smallest peak of a walked spring's bound, `level + amp`: a spring that
+/// touches for a moment about `tau = pi` has a slip whose events did not
+/// isolate from a peak of 1e-6 down (its estimate grows like 1/peak: 2e-11
+/// of its `<B>` at 1e-5), and [`period_steps`] does not count where the
+/// bound is below its floor.
+const MIN_PEAK: f64 = 1e-5;
+/// First Gauss-Legendre order of a band (the next doubles it).
+const FIRST_ORDER: usize = 8;
+/// Largest Gauss-Legendre order of a band.
+const MAX_ORDER: usize = 1024;
+/// Order of the tail's `int <B> dz` (a smooth integrand in `theta`).
+const TAIL_ORDER: usize = 32;
+/// Rounding of one spring's means, in eps of its bound's scale.
+const SPRING_ROUNDING: f64 = 8.0;
+
+/// What the nodes of a quadrature learned besides their means: the first
+/// error, the largest multiplier, the periods walked.
+#[derive(Default)]
+struct Springs {
+    error: RefCell<Option<Error>>,
+    multiplier: Cell<f64>,
+    periods: Cell<usize>,
+}
+
+impl Springs {
+    /// The ratios `(mu, transverse)` of the spring at `z`, recorded; `None`
+    /// after the first error.
+    fn solve(&self, spring: &dyn Fn(f64) -> Spring, z: f64, zmax: f64) -> Option<[f64; 3]> {
+        if self.error.borrow().is_some() {
+            return None;
+        }
+        match beside_a_tie(z, zmax, |z| orbit(&spring(z)).map(|(e, _)| e)) {
+            Ok((e, moved)) => {
+                self.multiplier.set(self.multiplier.get().max(e.multiplier));
+                self.periods.set(self.periods.get() + e.periods);
+                Some([e.ratio.mu_ratio, e.transverse_ratio, e.error_estimate + moved])
+            }
+            Err(err) => {
+                *self.error.borrow_mut() = Some(err);
+                None
+            }
+        }
+    }
+}
+
+/// The shortest phase a spring's sequence names ([`sequence_of`]).
+const SHORT: f64 = 1e-6;
+
+/// The kinds of the events of a spring's period, without those that start
+/// a phase shorter than [`SHORT`] (a stick for an instant where the body
+/// turns as the contact is lost: its share of the mean is of the order of
+/// its length squared, and at the threshold where it appears the phases
+/// tie to rounding, which a bisection would chase).
+fn sequence_of(e: &PlaneEvaluation) -> Vec<EventKind> {
+    let n = e.events.len();
+    let length = |i: usize| {
+        let next = e.events[(i + 1) % n].tau;
+        (next - e.events[i].tau).rem_euclid(TAU)
+    };
+    (0..n).filter(|&i| n == 1 || length(i) >= SHORT).map(|i| e.events[i].kind).collect()
+}
+
+/// Relative steps in `z` to either side of a spring at a tie ([`beside_a_tie`]).
+const BESIDE: [f64; 3] = [1e-9, 1e-7, 1e-5];
+
+/// The orbit of the spring at `z`, and 0; or, where its walk fails at a tie
+/// of two phase sequences (an event function that vanishes to rounding
+/// over an interval: a contact regained as fast as the bound grows, from
+/// 1e-10 either side of the threshold in the level), the mean of the
+/// springs [`BESIDE`] either side of it (the nearest pair that walks), with
+/// their difference (the means are continuous in the level).
+fn beside_a_tie(z: f64, zmax: f64, orbit: impl Fn(f64) -> Result<PlaneEvaluation>) -> Result<(PlaneEvaluation, f64)> {
+    let err = match orbit(z) {
+        Err(e @ Error::Internal { .. }) => e,
+        other => return other.map(|e| (e, 0.0)),
+    };
+    for step in BESIDE {
+        let h = step * zmax;
+        let (Ok(lo), Ok(hi)) = (orbit((z - h).max(0.0)), orbit((z + h).min(zmax))) else { continue };
+        let moved =
+            (lo.ratio.mu_ratio - hi.ratio.mu_ratio).abs().max((lo.transverse_ratio - hi.transverse_ratio).abs());
+        let mut e = hi.clone();
+        e.ratio.mu_ratio = 0.5 * (lo.ratio.mu_ratio + hi.ratio.mu_ratio);
+        e.ratio.reduction = 1.0 - e.ratio.mu_ratio;
+        e.transverse_ratio = 0.5 * (lo.transverse_ratio + hi.transverse_ratio);
+        e.error_estimate = lo.error_estimate.max(hi.error_estimate);
+        return Ok((e, moved));
+    }
+    Err(err)
+}
+
+/// `mu_macro/mu0` and the transverse ratio of the contact `c` under the
+/// drive `d` and the normal amplitude `amp`, to the relative tolerance `tol`
+/// (module docs).
+pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<PlaneEvaluation> {
+    crate::error::check_nonneg("tol", tol)?;
+    let zmax = c.reach(amp)?;
+    let spring = |z: f64| Spring::new(d, Bound::new(1.0 - c.equivalent_profile(z), amp));
+    let zcap = walked_up_to(&spring, zmax);
+    let springs = Springs::default();
+    let sequence = |z: f64| -> Result<Vec<EventKind>> {
+        Ok(sequence_of(&beside_a_tie(z, zmax, |z| orbit(&spring(z)).map(|(e, _)| e))?.0))
+    };
+    let edges = bands::edges(c, amp, zcap, &sequence)?;
+    let node = |z: f64| {
+        let sp = spring(z);
+        let b = sp.bound.period_integral() / TAU;
+        let scale = sp.bound.level.abs() + amp;
+        match springs.solve(&|z| spring(z), z, zmax) {
+            Some([mu, tr, err]) => ([mu * b, tr * b, b, err * b], scale),
+            None => ([0.0; 4], scale),
+        }
+    };
+    let ladder = Ladder { tol, max_order: MAX_ORDER, noise: SPRING_ROUNDING * f64::EPSILON, difference: true };
+    let scale = c.mean_normal(amp)?;
+    let (mut total, mut truncation) = (Sums::<4>::default(), 0.0);
+    // The fourth integrand, the springs' own errors, is summed by the same
+    // rule (positive weights: a bound of their share) and not converged.
+    for w in edges.windows(2).filter(|w| w[1] > w[0]) {
+        let r = ladder.run(
+            FIRST_ORDER,
+            |m| cosine_pass(w[0], w[1], m, [true; 4], &node),
+            [scale, scale, scale, f64::INFINITY],
+        );
+        truncation += r.error[0].max(r.error[1]) + r.error[2];
+        total += r;
+    }
+    if let Some(e) = springs.error.take() {
+        return Err(e);
+    }
+    let tail = Tail::of(c, &spring, amp, zcap, zmax)?;
+    let normal = total.value[2] + tail.bound;
+    if !(normal > 0.0 && normal.is_finite()) {
+        return Err(Error::Internal { what: format!("mean normal force {normal:?} in the plane ({})", c.name()) });
+    }
+    let (mu, tr) = ((total.value[0] + tail.force[0]) / normal, (total.value[1] + tail.force[1]) / normal);
+    let rounding = SPRING_ROUNDING * f64::EPSILON * total.magnitude / normal;
+    let error_estimate = (truncation + tail.error + total.value[3]) / normal + rounding;
+    if !(tr.is_finite() && tr.abs() <= 1.0 + error_estimate) {
+        return Err(Error::Internal { what: format!("transverse_ratio = {tr:?} in the plane ({})", c.name()) });
+    }
+    Ok(PlaneEvaluation {
+        ratio: crate::Ratio::signed(mu, 1.0 - mu, error_estimate, &c.name())?,
+        transverse_ratio: tr,
+        error_estimate,
+        multiplier: springs.multiplier.get(),
+        events: vec![],
+        periods: springs.periods.get(),
+    })
+}
+
+/// The springs beyond the walked ones, `[zcap, zmax]`: their `int <B> dz`
+/// (Gauss-Legendre in `theta`, a smooth integrand), their forces as the
+/// ratios of the last walked spring times it, and the error of that. A
+/// spring's ratios approach their limit of a vanishing bound (the rigid
+/// slip) linearly in its bound's peak: the spring at half the last one's
+/// peak is half as far from it, so twice their difference bounds how far
+/// the tail's springs are from the last one (twice that again is the
+/// estimate); where it cannot be walked, the tail's forces are only known
+/// to be within their bounds.
+struct Tail {
+    bound: f64,
+    force: [f64; 2],
+    error: f64,
+}
+
+impl Tail {
+    fn of(c: &dyn Contact, spring: &dyn Fn(f64) -> Spring, amp: f64, zcap: f64, zmax: f64) -> Result<Tail> {
+        if zcap >= zmax {
+            return Ok(Tail { bound: 0.0, force: [0.0; 2], error: 0.0 });
+        }
+        let mean = |z: f64| ([spring(z).bound.period_integral() / TAU], 0.0);
+        let bound = cosine_pass(zcap, zmax, TAIL_ORDER, [true], &mean).sum[0].max(0.0);
+        let ratios = |z: f64| beside_a_tie(z, zmax, |z| orbit(&spring(z)).map(|(e, _)| e)).ok();
+        let last = spring(zcap).bound;
+        let half = c.level(1.0 - (0.5 * (last.level + amp) - amp));
+        match (ratios(zcap), (half > zcap && half < zmax).then(|| ratios(half)).flatten()) {
+            (Some((e, m0)), Some((h, m1))) => {
+                let (mu, tr) = (e.ratio.mu_ratio, e.transverse_ratio);
+                let moved = (mu - h.ratio.mu_ratio).abs().max((tr - h.transverse_ratio).abs()) + m0 + m1;
+                Ok(Tail { bound, force: [mu * bound, tr * bound], error: 4.0 * moved * bound })
+            }
+            _ => Ok(Tail { bound, force: [0.0; 2], error: bound }),
+        }
+    }
+}
+
+/// The largest `z` up to `zmax` whose spring takes at most [`SPRING_STEPS`]
+/// Taylor steps a period and whose bound's peak is at least [`MIN_PEAK`]
+/// (both fall towards the edge): `zmax` itself, or the bisection's.
+fn walked_up_to(spring: &dyn Fn(f64) -> Spring, zmax: f64) -> f64 {
+    let steps = |z: f64| {
+        let sp = spring(z);
+        if sp.bound.level + sp.bound.amp < MIN_PEAK {
+            f64::INFINITY
+        } else {
+            period_steps(&sp)
+        }
+    };
+    let edge = zmax * (1.0 - 1e-12);
+    if steps(edge) <= SPRING_STEPS {
+        return zmax;
+    }
+    let (mut lo, mut hi) = (0.0, edge);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if steps(mid) <= SPRING_STEPS {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
