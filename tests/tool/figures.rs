@@ -4,11 +4,18 @@
 //! of the stated size.
 use fricosc::Shape;
 use fricosc_cli::chart::{self, Rgb};
-use fricosc_cli::figures::{build, chart, XAxis};
+use fricosc_cli::figures::{build, chart, Figure, XAxis};
+
+/// The figures, built once for every test here (the paraboloid's across the
+/// sliding direction take seconds).
+fn figures() -> &'static [Figure] {
+    static FIGURES: std::sync::OnceLock<Vec<Figure>> = std::sync::OnceLock::new();
+    FIGURES.get_or_init(|| build().unwrap())
+}
 
 #[test]
 fn exact_curves_equal_the_solver_and_every_figure_is_there() {
-    let figs = build().unwrap();
+    let figs = figures();
     let names: Vec<&str> = figs.iter().map(|f| f.name.as_str()).collect();
     assert_eq!(
         names,
@@ -26,6 +33,8 @@ fn exact_curves_equal_the_solver_and_every_figure_is_there() {
             "combined-regimes",
             "transverse-flat",
             "transverse-phase",
+            "directions-flat",
+            "directions-parabolic",
             "system-resonance",
             "system-frequency"
         ]
@@ -63,10 +72,10 @@ fn oscillation_figures_are_the_solvers_values() {
     let mu = |shape: &Shape, vhat: f64, amp: f64, t: f64, p: f64| {
         crate::common::at::combined(shape, vhat, amp, t, p).unwrap()
     };
-    let figs = build().unwrap();
-    for f in &figs {
+    let figs = figures();
+    for f in figs {
         let shape = if f.name.ends_with("parabolic") { Shape::parabolic() } else { Shape::flat() };
-        let beyond = !f.name.starts_with("fig") && !f.name.starts_with("system-") && !f.name.starts_with("transverse-");
+        let beyond = ["fig", "system-", "transverse-", "directions-"].iter().all(|p| !f.name.starts_with(p));
         for c in f.curves.iter().filter(|c| c.kind == "exact" && beyond) {
             let t = c.amp.unwrap();
             assert_eq!(f.family, "tangential_amp", "{}", f.name);
@@ -109,7 +118,7 @@ fn oscillation_figures_are_the_solvers_values() {
 fn the_resonance_figure_is_the_systems_values() {
     use fricosc_cli::figures::RESONANCE;
     let (kappa, zeta, amp) = RESONANCE;
-    let figs = build().unwrap();
+    let figs = figures();
     let f = figs.iter().find(|f| f.name == "system-resonance").unwrap();
     assert_eq!(f.family, "frequency_ratio");
     for c in &f.curves {
@@ -135,7 +144,7 @@ fn the_resonance_figure_is_the_systems_values() {
 fn the_frequency_figure_is_the_systems_values() {
     use fricosc_cli::figures::FREQUENCY;
     let (vbar, amp, zeta) = FREQUENCY;
-    let figs = build().unwrap();
+    let figs = figures();
     let f = figs.iter().find(|f| f.name == "system-frequency").unwrap();
     assert_eq!(f.family, "system_stiffness");
     let c = fricosc::Conditions::vbar(vbar, amp).unwrap();
@@ -162,8 +171,8 @@ fn the_frequency_figure_is_the_systems_values() {
 /// is exact there); the seed's amplitudes and the line at du/u0 = 0 where it has them.
 #[test]
 fn approximations_are_drawn_where_the_seed_uses_them() {
-    let figs = build().unwrap();
-    for f in &figs {
+    let figs = figures();
+    for f in figs {
         for c in f.curves.iter().filter(|c| c.kind == "approximation") {
             let eq = c.equation.as_deref().unwrap();
             match (eq, c.amp) {
@@ -210,7 +219,8 @@ fn plane_figures_are_the_solvers_values() {
         Shape::flat().evaluate(&c).unwrap()
     };
     let (vhat, amp) = fricosc_cli::figures::SIDEWAYS;
-    for f in build().unwrap().iter().filter(|f| f.name.starts_with("transverse-")) {
+    let figs = figures();
+    for f in figs.iter().filter(|f| f.name.starts_with("transverse-")) {
         assert_eq!(f.family, "transverse_amp");
         for c in &f.curves {
             for p in c.points.iter().step_by(9) {
@@ -254,8 +264,8 @@ fn series_styles(svg: &str) -> Vec<(String, Rgb, String, String)> {
 
 #[test]
 fn every_drawing_parses_tells_curves_apart_and_renders() {
-    for f in build().unwrap() {
-        let svg = fricosc_cli::export::export(&f, fricosc_cli::export::Format::Svg).unwrap();
+    for f in figures() {
+        let svg = fricosc_cli::export::export(f, fricosc_cli::export::Format::Svg).unwrap();
         let (w, h) = chart::parse_size(&svg).unwrap_or_else(|e| panic!("{}: {e}", f.name));
         assert_eq!(w, chart::WIDTH, "{}: 8.5 cm wide", f.name);
         // Axis symbols in Unicode, never the ASCII stand-ins.
@@ -301,7 +311,7 @@ fn every_drawing_parses_tells_curves_apart_and_renders() {
 /// The checker itself: two series in one style are caught.
 #[test]
 fn distinct_catches_a_repeated_style() {
-    let mut c = chart(&build().unwrap()[0]);
+    let mut c = chart(&figures()[0]);
     assert!(chart::distinct(&c, 8.0).is_ok());
     c.series[2].style = c.series[0].style;
     assert!(chart::distinct(&c, 8.0).is_err());
@@ -323,4 +333,33 @@ fn the_largest_user_plot_tells_its_curves_apart() {
     let mut more = amps.clone();
     more.push(9.0);
     assert!(fricosc_cli::figures::user(&Shape::flat(), &more, &xs, false).is_err());
+}
+
+/// The three directions at one physical amplitude: every point is the
+/// library's answer to the one oscillation it names (normal `du/u0`, along
+/// `T`, across `W`, with `d/l = (d/u0)(kx/kz)/mu0`), on the flat punch and
+/// the paraboloid.
+#[test]
+fn the_directions_figures_are_the_solvers_values() {
+    use fricosc::plane::Transverse;
+    use fricosc::Conditions;
+    let (d, stiffness, mu0) = fricosc_cli::figures::DIRECTIONS;
+    let a = d * stiffness / mu0;
+    for f in figures().iter().filter(|f| f.name.starts_with("directions-")) {
+        let shape = Shape::parse(f.name.trim_start_matches("directions-")).unwrap();
+        assert_eq!(f.curves.len(), 3, "{}", f.name);
+        for c in &f.curves {
+            for p in c.points.iter().step_by(7) {
+                let at = match c.label.split(',').next() {
+                    Some("normal") => Conditions::vhat(p[0], d).unwrap(),
+                    Some("along") => Conditions::vhat(p[0], 0.0).unwrap().with_tangential(a, 0.0).unwrap(),
+                    Some("across") => {
+                        Conditions::vhat(p[0], 0.0).unwrap().with_transverse(Transverse::new(a, 0.0).unwrap())
+                    }
+                    other => panic!("{}: {other:?}", f.name),
+                };
+                assert_eq!(p[1], shape.evaluate(&at).unwrap().ratio.mu_ratio, "{} {} at {}", f.name, c.label, p[0]);
+            }
+        }
+    }
 }

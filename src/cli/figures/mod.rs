@@ -16,7 +16,7 @@ mod system;
 pub use oscillation::{against_phase, COMBINED, COMBINED_TS, MAP_T, TANGENTIAL_AMPS};
 use oscillation::{combined_mu, oscillation_figures};
 mod plane;
-pub use plane::{SIDEWAYS, SIDEWAYS_WS, TRANSVERSE_AMPS};
+pub use plane::{DIRECTIONS, SIDEWAYS, SIDEWAYS_WS, TRANSVERSE_AMPS};
 pub use system::{FREQUENCY, KAPPAS, OMEGAS, RESONANCE};
 
 /// One curve of a figure.

@@ -1,5 +1,5 @@
 //! The figures of oscillation across the sliding direction
-//! (`Conditions::with_transverse`, the flat punch).
+//! (`Conditions::with_transverse`), and the three directions compared.
 
 use super::{approx, figure, grid, Curve, Figure, XAxis};
 use crate::error::Result;
@@ -12,6 +12,10 @@ pub const TRANSVERSE_AMPS: [f64; 5] = [0.5, 0.9, 2.0, 5.0, 20.0];
 pub const SIDEWAYS: (f64, f64) = (0.3, 0.5);
 /// Its transverse amplitudes.
 pub const SIDEWAYS_WS: [f64; 2] = [1.0, 2.0];
+
+/// The comparison of the three directions at one physical amplitude `d`:
+/// `(d/u0, kx/kz, mu0)`, so that `d/l = (d/u0) (kx/kz)/mu0` in pre-slip lengths.
+pub const DIRECTIONS: (f64, f64, f64) = (0.5, 0.8, 0.3);
 
 /// `(mu_ratio, transverse_ratio)` of the flat punch.
 fn plane(vhat: f64, amp: f64, w: f64, psi: f64) -> Result<(f64, f64)> {
@@ -74,5 +78,41 @@ pub(super) fn plane_figures() -> Result<Vec<Figure>> {
         c,
     );
     sideways.family = "transverse_amp".into();
-    Ok(vec![across, sideways])
+    Ok(vec![across, sideways, directions(&Shape::flat(), 100)?, directions(&Shape::parabolic(), 40)?])
+}
+
+/// Friction against `vhat` under an oscillation of one physical amplitude
+/// ([`DIRECTIONS`]) normal to the plane, along the sliding direction and
+/// across it, on `shape` (`n` velocities).
+fn directions(shape: &Shape, n: usize) -> Result<Figure> {
+    use rayon::prelude::*;
+    let (d, stiffness, mu0) = DIRECTIONS;
+    let a = d * stiffness / mu0;
+    let xs = grid(0.02, 3.0, n);
+    let curve = |label: String, at: &(dyn Fn(f64) -> fricosc::Result<fricosc::Conditions> + Sync)| -> Result<Curve> {
+        let points = xs
+            .par_iter()
+            .map(|&x| Ok([x, shape.evaluate(&at(x)?)?.ratio.mu_ratio]))
+            .collect::<fricosc::Result<Vec<_>>>()?;
+        // Each its own colour and legend entry (no family of amplitudes).
+        Ok(Curve { label, kind: "exact".into(), equation: None, amp: None, points })
+    };
+    let curves = vec![
+        curve(format!("normal, Δu/u0 = {d}"), &|x| fricosc::Conditions::vhat(x, d))?,
+        curve(format!("along, Δx/l = {a:.3}"), &|x| fricosc::Conditions::vhat(x, 0.0)?.with_tangential(a, 0.0))?,
+        curve(format!("across, Δy/l = {a:.3}"), &|x| {
+            Ok(fricosc::Conditions::vhat(x, 0.0)?.with_transverse(Transverse::new(a, 0.0)?))
+        })?,
+    ];
+    Ok(figure(
+        &format!("directions-{}", shape.name()),
+        &format!(
+            "One amplitude Δ = {d} u0 in each direction ({shape}, k_x/k_z = {stiffness}, μ0 = {mu0}, so Δ/l = {a:.3}): \
+             friction against the sliding velocity under normal, in-direction and transverse oscillation",
+            shape = shape.name()
+        ),
+        XAxis::Vhat,
+        [0.0, 3.0, 0.0, 1.05],
+        curves,
+    ))
 }
