@@ -285,7 +285,7 @@ fn every_drawing_parses_tells_curves_apart_and_renders() {
             assert!(!text.contains(ascii), "{}: '{ascii}' printed", f.name);
         }
         // No two series alike: the library's own check, and the same read back from the SVG.
-        let c = chart(&f);
+        let c = chart(f);
         chart::distinct(&c, 8.0).unwrap_or_else(|e| panic!("{}: {e}", f.name));
         let styles = series_styles(&svg);
         assert_eq!(styles.len(), f.curves.len(), "{}", f.name);

@@ -35,6 +35,13 @@ pub struct Curve {
     pub points: Vec<[f64; 2]>,
 }
 
+impl Curve {
+    /// A curve of `kind` without an equation.
+    pub fn new(label: String, kind: &str, amp: Option<f64>, points: Vec<[f64; 2]>) -> Curve {
+        Curve { label, kind: kind.into(), equation: None, amp, points }
+    }
+}
+
 /// What a figure's horizontal axis is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -142,7 +149,7 @@ fn exact(shape: &Shape, amp: f64, xs: &[f64], vhat: bool) -> Result<Curve> {
         .iter()
         .map(|&x| fricosc::Conditions::vbar(vbar_of(x), amp).and_then(|c| shape.ratio(&c)).map(|r| [x, r.mu_ratio]))
         .collect::<fricosc::Result<Vec<_>>>()?;
-    Ok(Curve { label: format!("exact, du/u0 = {amp}"), kind: "exact".into(), equation: None, amp: Some(amp), points })
+    Ok(Curve::new(format!("exact, du/u0 = {amp}"), "exact", Some(amp), points))
 }
 
 fn approx(eq: &str, amp: Option<f64>, xs: &[f64], f: impl Fn(f64) -> f64) -> Curve {
@@ -271,13 +278,7 @@ fn jumping_figures() -> Result<Vec<Figure>> {
         XAxis::Amp,
         [1.0, 5.0, 0.0, 3.5],
         vec![
-            Curve {
-                label: "exact (the solver at v\u{304} = 10^{−10})".into(),
-                kind: "exact".into(),
-                equation: None,
-                amp: None,
-                points: slope_exact,
-            },
+            Curve::new("exact (the solver at v\u{304} = 10^{−10})".into(), "exact", None, slope_exact),
             approx("eq. 21 corrected", None, &aa, |a| Eq21Slope.value(a)),
             approx("eq. 21 as printed (π too small)", None, &aa, |a| Eq21SlopePrinted.value(a)),
             approx("eq. 22 corrected, π²/4", None, &aa, |a| Eq22Corrected.value(a)),
@@ -369,13 +370,7 @@ pub fn user_with(
             (Some((t, p)), None) => {
                 let points =
                     xs.iter().map(|&x| Ok([x, combined_mu(shape, x, a, t, p)?])).collect::<Result<Vec<_>>>()?;
-                Ok(Curve {
-                    label: format!("exact, du/u0 = {a}"),
-                    kind: "exact".into(),
-                    equation: None,
-                    amp: Some(a),
-                    points,
-                })
+                Ok(Curve::new(format!("exact, du/u0 = {a}"), "exact", Some(a), points))
             }
         })
         .collect::<Result<Vec<_>>>()?;
@@ -425,7 +420,7 @@ fn on_system(
             Ok([x, shape.ratio(&c.with_system(*sys))?.mu_ratio])
         })
         .collect::<Result<Vec<_>>>()?;
-    Ok(Curve { label: format!("exact, du/u0 = {amp}"), kind: "exact".into(), equation: None, amp: Some(amp), points })
+    Ok(Curve::new(format!("exact, du/u0 = {amp}"), "exact", Some(amp), points))
 }
 
 /// The values of a plot's axis (option `--{option}`), sorted without repeats,
@@ -490,13 +485,7 @@ pub fn overlay(f: &mut Figure, rows: &[(f64, f64, f64)], x_as_is: bool, name: &s
     for a in amps {
         let x = |v: f64, amp: f64| if vhat && !x_as_is { v * amp } else { v };
         let points = rows.iter().filter(|r| r.1 == a).map(|&(v, amp, mu)| [x(v, amp), mu]).collect();
-        f.curves.push(Curve {
-            label: format!("{name}, du/u0 = {a}"),
-            kind: "yours".into(),
-            equation: None,
-            amp: Some(a),
-            points,
-        });
+        f.curves.push(Curve::new(format!("{name}, du/u0 = {a}"), "yours", Some(a), points));
     }
     Ok(())
 }

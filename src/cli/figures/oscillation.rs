@@ -34,13 +34,7 @@ pub(super) fn oscillation_figures() -> Result<Vec<Figure>> {
         for &t in &TANGENTIAL_AMPS {
             let points =
                 xs.iter().map(|&x| Ok([x, combined_mu(&shape, x * t, 0.0, t, 0.0)?])).collect::<Result<Vec<_>>>()?;
-            c.push(Curve {
-                label: format!("exact, T = {t}"),
-                kind: "exact".into(),
-                equation: None,
-                amp: Some(t),
-                points,
-            });
+            c.push(Curve::new(format!("exact, T = {t}"), "exact", Some(t), points));
         }
         c.push(approx("rigid body, (2/π) arcsin", None, &xs, |x| 2.0 / std::f64::consts::PI * x.min(1.0).asin()));
         let mut f = figure(
@@ -65,7 +59,7 @@ pub(super) fn oscillation_figures() -> Result<Vec<Figure>> {
             .iter()
             .map(|&p| Ok([p, combined_mu(&Shape::flat(), vhat, amp, t, p)?]))
             .collect::<Result<Vec<_>>>()?;
-        c.push(Curve { label: format!("exact, T = {t}"), kind: "exact".into(), equation: None, amp: Some(t), points });
+        c.push(Curve::new(format!("exact, T = {t}"), "exact", Some(t), points));
     }
     let mut f = figure(
         "combined-phase",
@@ -151,21 +145,9 @@ fn regime_map() -> Result<Figure> {
         .iter()
         .zip(points)
         .filter(|(_, pts)| !pts.is_empty())
-        .map(|(name, pts)| Curve {
-            label: (*name).into(),
-            kind: "regime".into(),
-            equation: None,
-            amp: None,
-            points: pts,
-        })
+        .map(|(name, pts)| Curve::new((*name).into(), "regime", None, pts))
         .collect();
-    curves.push(Curve {
-        label: "μ_{macro} = 0 (< 0 on the side of φ = 1)".into(),
-        kind: "sign change".into(),
-        equation: None,
-        amp: None,
-        points: zero,
-    });
+    curves.push(Curve::new("μ_{macro} = 0 (< 0 on the side of φ = 1)".into(), "sign change", None, zero));
     let mut f = figure(
         "combined-regimes",
         &format!(
@@ -195,13 +177,7 @@ pub fn against_phase(shape: &Shape, amps: &[f64], vhat: f64, t: f64, phases: &[f
             continue;
         }
         let points = xs.iter().map(|&p| Ok([p, combined_mu(shape, vhat, a, t, p)?])).collect::<Result<Vec<_>>>()?;
-        curves.push(Curve {
-            label: format!("exact, du/u0 = {a}"),
-            kind: "exact".into(),
-            equation: None,
-            amp: Some(a),
-            points,
-        });
+        curves.push(Curve::new(format!("exact, du/u0 = {a}"), "exact", Some(a), points));
     }
     let negative = curves.iter().flat_map(|c| &c.points).any(|p| p[1] < 0.0);
     let title =

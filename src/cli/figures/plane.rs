@@ -32,7 +32,7 @@ pub(super) fn plane_figures() -> Result<Vec<Figure>> {
     let mut c = vec![];
     for &w in &TRANSVERSE_AMPS {
         let points = xs.iter().map(|&x| Ok([x, plane(x * w, 0.0, w, 0.0)?.0])).collect::<Result<Vec<_>>>()?;
-        c.push(Curve { label: format!("exact, W = {w}"), kind: "exact".into(), equation: None, amp: Some(w), points });
+        c.push(Curve::new(format!("exact, W = {w}"), "exact", Some(w), points));
     }
     c.push(approx("rigid limit, 1/AGM(1, √(1 + (W/v̂)²))", None, &xs, |x| fricosc::stepper::rigid_limit(1.0 / x)));
     let mut across = figure(
@@ -51,13 +51,7 @@ pub(super) fn plane_figures() -> Result<Vec<Figure>> {
         let values = phases.iter().map(|&p| plane(vhat, amp, w, p)).collect::<Result<Vec<_>>>()?;
         let along = phases.iter().zip(&values).map(|(&p, v)| [p, v.0]).collect();
         let side = phases.iter().zip(&values).map(|(&p, v)| [p, v.1]).collect();
-        c.push(Curve {
-            label: format!("along, W = {w}"),
-            kind: "exact".into(),
-            equation: None,
-            amp: Some(w),
-            points: along,
-        });
+        c.push(Curve::new(format!("along, W = {w}"), "exact", Some(w), along));
         // Exact too: drawn dashed, its legend entry the quantity.
         c.push(Curve {
             label: format!("sideways, W = {w}"),

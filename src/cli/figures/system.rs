@@ -24,13 +24,7 @@ pub(super) fn resonance() -> Result<Figure> {
                 Ok([v, fricosc::Shape::flat().ratio(&fricosc::Conditions::vbar(v, amp)?.with_system(sys))?.mu_ratio])
             })
             .collect::<Result<Vec<_>>>()?;
-        curves.push(Curve {
-            label: format!("exact, Ω = {om}"),
-            kind: "exact".into(),
-            equation: None,
-            amp: Some(om),
-            points,
-        });
+        curves.push(Curve::new(format!("exact, Ω = {om}"), "exact", Some(om), points));
     }
     let mut f = figure(
         "system-resonance",
