@@ -163,7 +163,7 @@ fn critical_velocity_and_two_parameter_claims_agree_with_the_stepper() {
 #[test]
 fn every_claim_states_its_criterion() {
     let cs = claims();
-    assert_eq!(cs.len(), 15);
+    assert_eq!(cs.len(), 18);
     assert!(cs.iter().all(|c| c.criterion.len() > 20 && !c.measured.is_empty()));
     let names = ["holds", "holds approximately", "overstated", "misprint", "wrong"];
     assert!(cs.iter().all(|c| names.contains(&c.verdict.name())));
@@ -238,4 +238,33 @@ fn part_two_claims_rest_on_independent_values() {
     let c = get(&cs, "Part II: a very soft system");
     assert_eq!(c.verdict, Verdict::Holds);
     assert!((m(c, "ratio") - 4.0).abs() < 0.2);
+}
+
+/// The transverse claims: the verdicts hold, and what they rest on is
+/// checked independently: the rigid limit at `v0/(omega dy) = 10` is
+/// Gauss's `1/AGM(1, sqrt(1.01))` and the exact answer approaches it (within
+/// 1e-5, as the rigid limit's `B/|X'|` says); the three directions'
+/// across-value on the flat punch is the plane's time stepper's,
+/// extrapolated (first order, 40,000 and 80,000 steps).
+#[test]
+fn transverse_claims_rest_on_independent_values() {
+    use fricosc::plane::Transverse;
+    use fricosc::stepper::{transverse, Stepping};
+    let cs = claims();
+    let c = get(&cs, "Transverse: no critical velocity");
+    assert_eq!(c.verdict, Verdict::Holds);
+    let (mut a, mut g) = (1.0f64, 1.01f64.sqrt());
+    for _ in 0..8 {
+        (a, g) = (0.5 * (a + g), (a * g).sqrt());
+    }
+    assert!((m(c, "rigid_10") - 1.0 / a).abs() < 1e-15, "{}", m(c, "rigid_10"));
+    assert!((m(c, "mu_10") - m(c, "rigid_10")).abs() < 1e-5);
+    let c = get(&cs, "Transverse: three directions");
+    assert_eq!(c.verdict, Verdict::Holds);
+    let at = fricosc::Conditions::vhat(0.3, 0.0).unwrap();
+    let tw = Transverse::new(0.5 * 0.8 / 0.3, 0.0).unwrap();
+    let run = |n: usize| transverse(&fricosc::Shape::flat(), &at, tw, Stepping { steps_per_period: n, springs: 1 }, 12);
+    let (x, y) = (run(40_000).unwrap().mu_ratio, run(80_000).unwrap().mu_ratio);
+    assert!((2.0 * y - x - m(c, "flat_across")).abs() < 1e-7, "{} against {}", 2.0 * y - x, m(c, "flat_across"));
+    assert_eq!(get(&cs, "Transverse: a sideways force").verdict, Verdict::Holds);
 }

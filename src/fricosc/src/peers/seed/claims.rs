@@ -168,6 +168,9 @@ pub fn claims() -> Vec<Claim> {
         super::part_two::stiff_system(),
         super::part_two::heavy_soft_system(),
         super::part_two::resonance_removes_critical_velocity(),
+        super::transverse::three_directions(),
+        super::transverse::no_critical_velocity(),
+        super::transverse::sideways_force(),
     ]
 }
 

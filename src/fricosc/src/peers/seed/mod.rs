@@ -7,6 +7,7 @@ use std::f64::consts::PI;
 
 mod claims;
 mod part_two;
+mod transverse;
 
 pub use claims::{claims, exact_slope, Claim, Verdict};
 
