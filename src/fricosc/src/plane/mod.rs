@@ -273,16 +273,36 @@ fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
 /// Periods run from the relaxed start at most, where the orbit is neutral.
 const MAX_RELAXED: usize = 400;
 
+/// Periods whose residuals, falling geometrically, bound the rest of a
+/// relaxation that has not closed ([`relaxed`]).
+const GEOMETRIC_TAIL: usize = 20;
+
 /// The orbit the relaxed start reaches, period after period, where Newton's
 /// is neutral (a shakedown into pure stick: every state that sticks all
-/// period is periodic, and the relaxed start picks one).
+/// period is periodic, and the relaxed start picks one). Where it does not
+/// close within [`MAX_RELAXED`] periods but its last [`GEOMETRIC_TAIL`]
+/// residuals fall at least by a ratio `q < 1` a period, the start is within
+/// `r q/(1 - q)` (`r` the last residual) of the limit's, and so is the
+/// force all period (the stop operator does not expand a difference of
+/// starts): that is the answer's residual.
 fn relaxed(sp: &Spring, total: f64, newton_periods: usize) -> Result<(PlaneEvaluation, Start)> {
     let mut f = [0.0; 2];
+    let mut residuals = Vec::with_capacity(MAX_RELAXED);
     for k in 1..=MAX_RELAXED {
         let w = sp.walk(Start::Force(0.0, f), TAU)?;
         let res = (w.end[0] - f[0]).hypot(w.end[1] - f[1]);
+        let periods = newton_periods + k;
         if res <= 8.0 * f64::EPSILON * (1f64.max(f[0].abs()).max(f[1].abs())) {
-            return Ok((answer(&w, total, multiplier(&w.jacobian), res, newton_periods + k)?, Start::Force(0.0, f)));
+            return Ok((answer(&w, total, multiplier(&w.jacobian), res, periods)?, Start::Force(0.0, f)));
+        }
+        residuals.push(res);
+        if k == MAX_RELAXED {
+            let tail = &residuals[residuals.len() - GEOMETRIC_TAIL..];
+            let q = tail.windows(2).map(|p| p[1] / p[0]).fold(0.0, f64::max);
+            if q < 1.0 {
+                let rest = res * q / (1.0 - q);
+                return Ok((answer(&w, total, multiplier(&w.jacobian), rest, periods)?, Start::Force(0.0, f)));
+            }
         }
         f = w.end;
     }

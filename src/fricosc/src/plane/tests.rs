@@ -135,3 +135,24 @@ fn a_curved_contact_sliding_along_any_direction_is_the_one_dimensional_answer_ro
         );
     }
 }
+
+/// A neutral orbit approached only geometrically (a spring of a paraboloid
+/// near the level where the drive's ellipse meets its bound; it stopped a
+/// curved point with "not reached in 400 periods"): answered with the
+/// geometric tail's bound as its residual, which bounds the difference from
+/// the relaxation run 20 times longer.
+#[test]
+fn a_neutral_orbit_approached_geometrically_is_bounded_by_its_tail() {
+    let d = Drive::sliding(0.0, 0.4282972974941186, 5.453837475392799, 0.5774519258454313, 0.6403992456521888);
+    let sp = Spring::new(d, Bound::new(0.5815433181349653, 0.0));
+    let (e, _) = orbit(&sp).unwrap();
+    let mut f = [0.0; 2];
+    for _ in 0..8000 {
+        f = sp.walk(Start::Force(0.0, f), std::f64::consts::TAU).unwrap().end;
+    }
+    let long = sp.walk(Start::Force(0.0, f), std::f64::consts::TAU).unwrap();
+    let total = sp.bound.period_integral();
+    let err = (long.force[0] / total - e.ratio.mu_ratio).abs().max((long.force[1] / total - e.transverse_ratio).abs());
+    assert!(err <= e.error_estimate && e.error_estimate < 1e-4, "{err:e} {:e}", e.error_estimate);
+    assert!(err > 0.0 && e.periods > 400, "{e:?}");
+}
