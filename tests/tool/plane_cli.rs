@@ -229,3 +229,18 @@ fn a_curved_point_is_the_librarys() {
     assert_eq!(v["transverse_ratio"].as_f64(), e.transverse_ratio);
     assert_eq!(v["error_estimate"].as_f64(), Some(e.error_estimate));
 }
+
+/// A batch row in the plane without normal oscillation (`amp` 0, the
+/// velocity as `vhat`) is answered as `point` answers it (a row of today's
+/// problem at `amp` 0 with `vhat` is still refused: `vbar` is undefined).
+#[test]
+fn a_batch_row_across_without_normal_oscillation_is_the_points() {
+    let out = cli::run(&["batch", "-", "--format", "csv"], Some("shape,vhat,amp,transverse_amp\ncone,0.3,0,1.0\n"));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let v = ok(&cli::run(&["point", "--shape", "cone", "--vhat", "0.3", "--amp", "0", "--transverse-amp", "1"], None));
+    let want = format!("cone,0.3,0,1.0,{:?},", v["mu_ratio"].as_f64().unwrap());
+    assert!(text.lines().nth(1).is_some_and(|l| l.starts_with(&want)), "{text}");
+    let plain = cli::run(&["batch", "-", "--format", "csv"], Some("shape,vhat,amp\ncone,0.3,0\n"));
+    assert_eq!(plain.status.code(), Some(2));
+    assert!(plain.stdout.is_empty() && String::from_utf8_lossy(&plain.stderr).contains("vbar"));
+}

@@ -223,7 +223,10 @@ impl Shapes {
             (Some(v), None, None) => Conditions::vbar(v, amp).map_err(err)?,
             (None, Some(h), None) => {
                 let c = Conditions::vhat(h, amp).map_err(err)?;
-                c.as_vbar().map_err(err)?;
+                // The plane asks for vhat only: amp = 0 is the transverse oscillation alone.
+                if w.is_none() {
+                    c.as_vbar().map_err(err)?;
+                }
                 c
             }
             (None, Some(h), Some(t)) => {

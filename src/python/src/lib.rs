@@ -25,7 +25,7 @@ use pyo3::types::PyDict;
 use std::sync::Arc;
 
 mod vectorised;
-use vectorised::{evaluate, evaluate_oscillation, evaluate_system};
+use vectorised::{evaluate, evaluate_oscillation, evaluate_plane, evaluate_system};
 
 create_exception!(fricosc, InputError, PyValueError, "Bad input: a value, a shape or a table fricosc refuses.");
 create_exception!(fricosc, InternalError, PyRuntimeError, "A bug of fricosc (please report it).");
@@ -604,6 +604,7 @@ fn _fricosc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(point, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate_oscillation, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate_system, m)?)?;
+    m.add_function(wrap_pyfunction!(evaluate_plane, m)?)?;
     m.add_function(wrap_pyfunction!(point_oscillation, m)?)?;
     m.add_function(wrap_pyfunction!(point_plane, m)?)?;
     m.add_function(wrap_pyfunction!(point_system, m)?)?;

@@ -170,23 +170,73 @@ pub(crate) fn evaluate_system<'py>(
     Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
     let how = Posed { vhat, tangential, springs, tol };
     let out = zeros(py, arrays[0].shape())?;
-    let mut iters: Vec<_> = arrays.iter().map(|a| a.iter()).collect();
-    let mut each = std::iter::from_fn(move || {
-        let mut row = [0.0; 7];
-        for (r, it) in row.iter_mut().zip(iters.iter_mut()) {
-            *r = *it.next()?;
-        }
-        Some(row)
-    });
-    let mut check = each.clone();
-    for i in 0.. {
-        let Some(row) = check.next() else { break };
+    let mut each = rows::<7>(&arrays);
+    for (i, row) in rows::<7>(&arrays).enumerate() {
         on_system(&row, how).map_err(|e| at_index(e, i))?;
         check_signals_at(py, i)?;
     }
     let shape = &shape.inner;
     chunked(py, out, &mut each, nan, &|row: &[f64; 7]| {
         let r = shape.ratio(&on_system(row, how)?)?;
+        Ok(if reduction { r.reduction } else { r.mu_ratio })
+    })
+}
+
+/// The elements of `N` arrays of one shape, a row of `N` at a time (C order).
+fn rows<'a, 'b: 'a, const N: usize>(
+    arrays: &'a [numpy::ndarray::ArrayViewD<'b, f64>],
+) -> impl Iterator<Item = [f64; N]> + 'a {
+    let mut iters: Vec<_> = arrays.iter().map(|a| a.iter()).collect();
+    std::iter::from_fn(move || {
+        let mut row = [0.0; N];
+        for (r, it) in row.iter_mut().zip(iters.iter_mut()) {
+            *r = *it.next()?;
+        }
+        Some(row)
+    })
+}
+
+/// One element in the plane, as `fricosc point` poses it with
+/// `--transverse-amp`: `x` is `[v, amp, T, phase, W, psi]`, the velocity as
+/// `vhat` (else `vbar`), with a tangential drive where `tangential`.
+fn in_plane(x: &[f64; 6], vhat: bool, tangential: bool, tol: f64) -> fricosc::Result<Conditions> {
+    let [v, a, t, p, w, psi] = *x;
+    let c = if vhat { Conditions::vhat(v, a)? } else { Conditions::vbar(v, a)? };
+    let c = if tangential { c.with_tangential(t, p)? } else { c };
+    Ok(c.with_tol(tol)?.with_transverse(fricosc::plane::Transverse::new(w, psi)?))
+}
+
+/// `mu_ratio` (or the reduction) under an oscillation across the sliding
+/// direction ([`fricosc::plane`]) at every element of the broadcast arrays
+/// (`x` as [`in_plane`] reads them); checked first, as [`evaluate`], what
+/// the plane refuses before any work included.
+#[pyfunction]
+#[pyo3(signature = (shape, x, vhat, tangential, tol, reduction))]
+pub(crate) fn evaluate_plane<'py>(
+    py: Python<'py>,
+    shape: &CoreShape,
+    x: Vec<PyReadonlyArrayDyn<'py, f64>>,
+    vhat: bool,
+    tangential: bool,
+    tol: f64,
+    reduction: bool,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let arrays: Vec<_> = x.iter().map(|a| a.as_array()).collect();
+    if arrays.len() != 6 || arrays.iter().any(|a| a.shape() != arrays[0].shape()) {
+        return Err(InternalError::new_err("evaluate_plane takes six arrays of one shape".to_string()));
+    }
+    Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
+    let out = zeros(py, arrays[0].shape())?;
+    let shape = &shape.inner;
+    for (i, row) in rows::<6>(&arrays).enumerate() {
+        in_plane(&row, vhat, tangential, tol)
+            .and_then(|c| fricosc::plane::check(shape, &c))
+            .map_err(|e| at_index(e, i))?;
+        check_signals_at(py, i)?;
+    }
+    let mut each = rows::<6>(&arrays);
+    chunked(py, out, &mut each, false, &|row: &[f64; 6]| {
+        let r = shape.evaluate(&in_plane(row, vhat, tangential, tol)?)?.ratio;
         Ok(if reduction { r.reduction } else { r.mu_ratio })
     })
 }

@@ -4,6 +4,7 @@ point without it, and bad input is refused by name."""
 import json
 from typing import Any, Dict
 
+import numpy as np
 import pytest
 
 import fricosc
@@ -66,3 +67,21 @@ def test_curved_shapes_are_the_command_lines() -> None:
     q = _cli("--shape", "cone", "--vhat", "0.3", "--amp", "1.5", "--transverse-amp", "1", "--transverse-phase", "0.7")
     for key in ["mu_ratio", "transverse_ratio", "error_estimate"]:
         assert p[key] == q[key], key
+
+
+def test_mu_ratio_in_the_plane_is_the_point_at_every_element() -> None:
+    ws = np.array([0.0, 0.5, 1.2, 3.0])
+    got = np.asarray(fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, tangential_amp=0.4, phase=0.2, transverse_amp=ws, transverse_phase=[[0.7], [2.0]]))
+    assert got.shape == (2, 4)
+    for i, psi in enumerate([0.7, 2.0]):
+        for j, w in enumerate(ws):
+            p = fricosc.point("flat", vhat=0.3, amp=0.5, tangential_amp=0.4, phase=0.2, transverse_amp=float(w), transverse_phase=psi)
+            assert got[i, j] == p["mu_ratio"], (psi, w)
+    red = fricosc.reduction("cone", vhat=0.3, amp=1.5, transverse_amp=1.0, transverse_phase=0.7)
+    assert red == 1.0 - fricosc.point("cone", vhat=0.3, amp=1.5, transverse_amp=1.0, transverse_phase=0.7)["mu_ratio"]
+    with pytest.raises(fricosc.InputError, match="transverse-amp"):
+        fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, transverse_amp=[1.0, -1.0])
+    with pytest.raises(fricosc.InputError, match="system_stiffness"):
+        fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, transverse_amp=1.0, system_stiffness=1.0)
+    with pytest.raises(TypeError, match="transverse_phase needs transverse_amp"):
+        fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, transverse_phase=1.0)

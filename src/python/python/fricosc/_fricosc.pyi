@@ -5,7 +5,7 @@ from typing import Any, Dict, List, Optional, Tuple, final
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "evaluate_system", "point_oscillation", "point_plane", "point_system", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "fit", "__version__"]
+__all__ = ["CoreShape", "InputError", "InternalError", "evaluate", "point", "evaluate_oscillation", "evaluate_system", "evaluate_plane", "point_oscillation", "point_plane", "point_system", "history", "validate", "scene", "validate_history", "validate_series", "default_tol", "fit", "__version__"]
 __version__: str
 
 class InputError(ValueError): ...
@@ -44,6 +44,14 @@ def evaluate_system(
     tol: float,
     reduction: bool,
     nan: bool,
+) -> npt.NDArray[np.float64]: ...
+def evaluate_plane(
+    shape: CoreShape,
+    x: List[npt.NDArray[np.float64]],
+    vhat: bool,
+    tangential: bool,
+    tol: float,
+    reduction: bool,
 ) -> npt.NDArray[np.float64]: ...
 def point_oscillation(
     shape: CoreShape, vhat: float, amp: float, t: float, phase: float, tol: float

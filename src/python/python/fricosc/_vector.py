@@ -27,6 +27,7 @@ def _inputs(
     tangential_amp: Any,
     phase: Any,
     system: Optional[Tuple[Any, Any, Any]],
+    transverse: Tuple[Any, Any] = (None, None),
 ) -> Dict[str, Any]:
     """The named inputs (not yet converted), in the order they broadcast."""
     if amp is None:
@@ -40,6 +41,12 @@ def _inputs(
         named.update(tangential_amp=tangential_amp, phase=0.0 if phase is None else phase)
     if system is not None:
         named.update(system_stiffness=system[0], frequency_ratio=system[1], damping=system[2])
+    if transverse[1] is not None and transverse[0] is None:
+        raise TypeError("transverse_phase needs transverse_amp")
+    if transverse[0] is not None:
+        if system is not None:
+            raise InputError("transverse_amp does not apply with system_stiffness (the plane on a stiff system only)")
+        named.update(transverse_amp=transverse[0], transverse_phase=0.0 if transverse[1] is None else transverse[1])
     return named
 
 
@@ -63,6 +70,12 @@ def _compute(
     names = list(named)
     arrays = np.broadcast_arrays(*(_floats(named[n], n) for n in names))
     is_vhat = names[0] == "vhat"
+    if "transverse_amp" in named:
+        by = dict(zip(names, arrays))
+        zero = np.broadcast_to(np.float64(0.0), arrays[0].shape)  # a view: no memory an element
+        t, p = (by["tangential_amp"], by["phase"]) if "tangential_amp" in by else (zero, zero)
+        x = [arrays[0], by["amp"], t, p, by["transverse_amp"], by["transverse_phase"]]
+        return _fricosc.evaluate_plane(core, x, is_vhat, "tangential_amp" in by, tol, reduction)
     if "system_stiffness" in named:
         by = dict(zip(names, arrays))
         zero = np.broadcast_to(np.float64(0.0), arrays[0].shape)  # a view: no memory an element
@@ -96,6 +109,7 @@ def _evaluate(
     phase: Optional[npt.ArrayLike],
     system: Tuple[Any, Any, Any, Any],
     errors: str,
+    transverse: Tuple[Any, Any] = (None, None),
 ) -> Any:
     """``mu_ratio`` (or the reduction) over the broadcast inputs: numpy in
     process, or a lazy dask array where any input is one."""
@@ -113,7 +127,7 @@ def _evaluate(
     if springs is not None and (isinstance(springs, bool) or not isinstance(springs, (int, np.integer))):
         raise TypeError(f"springs must be an integer, not {type(springs).__name__}")
     triple = None if stiffness is None else (stiffness, 0.0 if frequency_ratio is None else frequency_ratio, 0.0 if damping is None else damping)
-    named = _inputs(v, is_vhat, amp, tangential_amp, phase, triple)
+    named = _inputs(v, is_vhat, amp, tangential_amp, phase, triple, transverse)
     how = dict(tol=_tol(tol), reduction=reduction, springs=None if springs is None else int(springs), nan=errors == "nan")
     if any(_is_dask(x) for x in named.values()):
         return _lazy(shape, named, how)
@@ -160,6 +174,8 @@ def mu_ratio(
     damping: Optional[npt.ArrayLike] = None,
     springs: Optional[int] = None,
     errors: str = "raise",
+    transverse_amp: Optional[npt.ArrayLike] = None,
+    transverse_phase: Optional[npt.ArrayLike] = None,
 ) -> FloatOrArray:
     """``mu_macro / mu0`` of ``shape`` at velocity ``vbar`` (or ``vhat``) and amplitude ``amp``.
 
@@ -186,6 +202,11 @@ def mu_ratio(
     run, one too light to resolve) raises :class:`InputError` with its index,
     or is NaN with ``errors="nan"``.
 
+    With ``transverse_amp`` (``dy/l``; and ``transverse_phase``, radians,
+    default 0, both broadcast with the rest) the body also oscillates across
+    the sliding direction, as ``fricosc point --transverse-amp`` (every shape,
+    on a stiff system; ``transverse_amp = 0`` is the problem without it).
+
     Any dask array among the inputs makes the result a lazy dask array of the
     broadcast shape and chunks, computed block by block where the blocks lie
     (``pip install "./src/python[dask]"``; README: maps beyond one machine).
@@ -196,9 +217,12 @@ def mu_ratio(
     -0.9271222646980088
     >>> mu_ratio("flat", 0.3, 0.5, system_stiffness=1.0, frequency_ratio=[0.5, 1.0], damping=0.05).round(12).tolist()
     [0.631146223864, 0.661542318254]
+    >>> mu_ratio("flat", vhat=0.3, amp=0.5, transverse_amp=[0.0, 1.2], transverse_phase=0.7).round(12).tolist()
+    [0.937263340948, 0.614622340126]
     """
     system = (system_stiffness, frequency_ratio, damping, springs)
-    result: FloatOrArray = _evaluate(shape, vbar, amp, vhat, tol, False, tangential_amp, phase, system, errors)
+    transverse = (transverse_amp, transverse_phase)
+    result: FloatOrArray = _evaluate(shape, vbar, amp, vhat, tol, False, tangential_amp, phase, system, errors, transverse)
     return result
 
 
@@ -216,6 +240,8 @@ def reduction(
     damping: Optional[npt.ArrayLike] = None,
     springs: Optional[int] = None,
     errors: str = "raise",
+    transverse_amp: Optional[npt.ArrayLike] = None,
+    transverse_phase: Optional[npt.ArrayLike] = None,
 ) -> FloatOrArray:
     """``1 - mu_macro / mu0``, computed with its own relative accuracy (not as a
     difference): the friction that the oscillation removes (up to 2 under
@@ -225,5 +251,6 @@ def reduction(
     3.580986935971103e-13
     """
     system = (system_stiffness, frequency_ratio, damping, springs)
-    result: FloatOrArray = _evaluate(shape, vbar, amp, vhat, tol, True, tangential_amp, phase, system, errors)
+    transverse = (transverse_amp, transverse_phase)
+    result: FloatOrArray = _evaluate(shape, vbar, amp, vhat, tol, True, tangential_amp, phase, system, errors, transverse)
     return result
