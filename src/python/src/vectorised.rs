@@ -163,11 +163,7 @@ pub(crate) fn evaluate_system<'py>(
     reduction: bool,
     nan: bool,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let arrays: Vec<_> = x.iter().map(|a| a.as_array()).collect();
-    if arrays.len() != 7 || arrays.iter().any(|a| a.shape() != arrays[0].shape()) {
-        return Err(InternalError::new_err("evaluate_system takes seven arrays of one shape".to_string()));
-    }
-    Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
+    let arrays = views(&x, 7, "evaluate_system", tol)?;
     let how = Posed { vhat, tangential, springs, tol };
     let out = zeros(py, arrays[0].shape())?;
     let mut each = rows::<7>(&arrays);
@@ -180,6 +176,22 @@ pub(crate) fn evaluate_system<'py>(
         let r = shape.ratio(&on_system(row, how)?)?;
         Ok(if reduction { r.reduction } else { r.mu_ratio })
     })
+}
+
+/// The `n` arrays of `x` as views, checked to be of one shape (for
+/// `what`), and the tolerance `tol` checked.
+fn views<'a>(
+    x: &'a [PyReadonlyArrayDyn<'_, f64>],
+    n: usize,
+    what: &str,
+    tol: f64,
+) -> PyResult<Vec<numpy::ndarray::ArrayViewD<'a, f64>>> {
+    let arrays: Vec<_> = x.iter().map(|a| a.as_array()).collect();
+    if arrays.len() != n || arrays.iter().any(|a| a.shape() != arrays[0].shape()) {
+        return Err(InternalError::new_err(format!("{what} takes {n} arrays of one shape")));
+    }
+    Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
+    Ok(arrays)
 }
 
 /// The elements of `N` arrays of one shape, a row of `N` at a time (C order).
@@ -221,11 +233,7 @@ pub(crate) fn evaluate_plane<'py>(
     tol: f64,
     reduction: bool,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let arrays: Vec<_> = x.iter().map(|a| a.as_array()).collect();
-    if arrays.len() != 6 || arrays.iter().any(|a| a.shape() != arrays[0].shape()) {
-        return Err(InternalError::new_err("evaluate_plane takes six arrays of one shape".to_string()));
-    }
-    Conditions::vbar(0.0, 0.0).and_then(|c| c.with_tol(tol)).map_err(to_py)?;
+    let arrays = views(&x, 6, "evaluate_plane", tol)?;
     let out = zeros(py, arrays[0].shape())?;
     let shape = &shape.inner;
     for (i, row) in rows::<6>(&arrays).enumerate() {
