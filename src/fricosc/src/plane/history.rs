@@ -7,7 +7,7 @@
 //! and events as the one walk of the period, its steps only split).
 
 use super::spring::Start;
-use super::{centre, orbit, PlaneEvaluation, Transverse};
+use super::{centre, orbit, Transverse};
 use crate::contact::history::Sample;
 use crate::error::Result;
 use crate::shape::Shape;
@@ -15,7 +15,7 @@ use crate::spring::EventKind;
 use crate::Conditions;
 use std::f64::consts::TAU;
 
-/// The orbit of the flat punch under `c` and `w`, and its samples at the
+/// The samples of the flat punch's orbit under `c` and `w` at the
 /// phases of `taus` (each in `[0, 2 pi periods]`, ascending) with the
 /// orbit's events of each of `periods` periods among them: the normal
 /// force `B`, the tangential force along the sliding direction
@@ -32,7 +32,7 @@ pub(crate) fn samples(
     periods: usize,
     taus: Vec<f64>,
     rows: impl FnOnce(usize) -> Result<()>,
-) -> Result<(PlaneEvaluation, Vec<Sample>)> {
+) -> Result<Vec<Sample>> {
     if !shape.contact().single_spring() {
         let reason = "a history in the plane is the flat punch's only so far (a curved contact's point is answered)";
         return Err(crate::Error::param("transverse-amp", w.amp(), reason));
@@ -59,7 +59,7 @@ pub(crate) fn samples(
         }
         force[i] = f;
     }
-    let samples = at
+    Ok(at
         .iter()
         .zip(force)
         .map(|(&(tau, _, event), [fx, fy])| Sample {
@@ -71,8 +71,7 @@ pub(crate) fn samples(
             springs: vec![],
             body: None,
         })
-        .collect();
-    Ok((eval, samples))
+        .collect())
 }
 
 /// The force at the start of a walk from `start` at `tau = 0`.

@@ -369,15 +369,16 @@ fn in_plane(shape: &Shape, c: &Conditions, w: crate::plane::Transverse, opts: &H
     check_history(shape, 0.0, c.amp(), opts)?;
     let total = TAU * opts.periods as f64;
     let taus = (0..=opts.samples).map(|j| total * j as f64 / opts.samples as f64).collect();
-    let rows = |n: usize| match n > MAX_SAMPLES {
-        true => Err(Error::TooLarge {
-            what: "history rows (samples + 1 + events)".into(),
-            count: n as u128,
-            limit: MAX_SAMPLES as u128,
-        }),
-        false => Ok(()),
+    let rows = |n: usize| {
+        let (count, limit) = (n as u128, MAX_SAMPLES as u128);
+        let what = "history rows (samples + 1 + events)".into();
+        if count > limit {
+            Err(Error::TooLarge { what, count, limit })
+        } else {
+            Ok(())
+        }
     };
-    let (_, samples) = crate::plane::samples(shape, c, w, opts.periods, taus, rows)?;
+    let samples = crate::plane::samples(shape, c, w, opts.periods, taus, rows)?;
     let units = format!("{UNITS} (along and across the sliding direction)");
     Ok(History::new(shape, c, units, vec![], samples))
 }
