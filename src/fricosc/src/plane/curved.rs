@@ -68,15 +68,15 @@ struct Springs {
 impl Springs {
     /// The ratios `(mu, transverse)` of the spring at `z`, recorded; `None`
     /// after the first error.
-    fn solve(&self, spring: &dyn Fn(f64) -> Spring, z: f64, zmax: f64) -> Option<[f64; 3]> {
+    fn solve(&self, spring: &Spring) -> Option<[f64; 3]> {
         if self.error.borrow().is_some() {
             return None;
         }
-        match beside_a_tie(z, zmax, |z| orbit(&spring(z)).map(|(e, _)| e)) {
-            Ok((e, moved)) => {
+        match orbit(spring) {
+            Ok((e, _)) => {
                 self.multiplier.set(self.multiplier.get().max(e.multiplier));
                 self.periods.set(self.periods.get() + e.periods);
-                Some([e.ratio.mu_ratio, e.transverse_ratio, e.error_estimate + moved])
+                Some([e.ratio.mu_ratio, e.transverse_ratio, e.error_estimate])
             }
             Err(err) => {
                 *self.error.borrow_mut() = Some(err);
@@ -103,35 +103,6 @@ fn sequence_of(e: &PlaneEvaluation) -> Vec<EventKind> {
     (0..n).filter(|&i| n == 1 || length(i) >= SHORT).map(|i| e.events[i].kind).collect()
 }
 
-/// Relative steps in `z` to either side of a spring at a tie ([`beside_a_tie`]).
-const BESIDE: [f64; 3] = [1e-9, 1e-7, 1e-5];
-
-/// The orbit of the spring at `z`, and 0; or, where its walk fails at a tie
-/// of two phase sequences (an event function that vanishes to rounding
-/// over an interval: a contact regained as fast as the bound grows, from
-/// 1e-10 either side of the threshold in the level), the mean of the
-/// springs [`BESIDE`] either side of it (the nearest pair that walks), with
-/// their difference (the means are continuous in the level).
-fn beside_a_tie(z: f64, zmax: f64, orbit: impl Fn(f64) -> Result<PlaneEvaluation>) -> Result<(PlaneEvaluation, f64)> {
-    let err = match orbit(z) {
-        Err(e @ Error::Internal { .. }) => e,
-        other => return other.map(|e| (e, 0.0)),
-    };
-    for step in BESIDE {
-        let h = step * zmax;
-        let (Ok(lo), Ok(hi)) = (orbit((z - h).max(0.0)), orbit((z + h).min(zmax))) else { continue };
-        let moved =
-            (lo.ratio.mu_ratio - hi.ratio.mu_ratio).abs().max((lo.transverse_ratio - hi.transverse_ratio).abs());
-        let mut e = hi.clone();
-        e.ratio.mu_ratio = 0.5 * (lo.ratio.mu_ratio + hi.ratio.mu_ratio);
-        e.ratio.reduction = 1.0 - e.ratio.mu_ratio;
-        e.transverse_ratio = 0.5 * (lo.transverse_ratio + hi.transverse_ratio);
-        e.error_estimate = lo.error_estimate.max(hi.error_estimate);
-        return Ok((e, moved));
-    }
-    Err(err)
-}
-
 /// `mu_macro/mu0` and the transverse ratio of the contact `c` under the
 /// drive `d` and the normal amplitude `amp`, to the relative tolerance `tol`
 /// (module docs).
@@ -141,15 +112,13 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     let spring = |z: f64| Spring::new(d, Bound::new(1.0 - c.equivalent_profile(z), amp));
     let zcap = walked_up_to(&spring, zmax);
     let springs = Springs::default();
-    let sequence = |z: f64| -> Result<Vec<EventKind>> {
-        Ok(sequence_of(&beside_a_tie(z, zmax, |z| orbit(&spring(z)).map(|(e, _)| e))?.0))
-    };
+    let sequence = |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit(&spring(z))?.0)) };
     let edges = bands::edges(c, amp, zcap, &sequence)?;
     let node = |z: f64| {
         let sp = spring(z);
         let b = sp.bound.period_integral() / TAU;
         let scale = sp.bound.level.abs() + amp;
-        match springs.solve(&|z| spring(z), z, zmax) {
+        match springs.solve(&spring(z)) {
             Some([mu, tr, err]) => ([mu * b, tr * b, b, err * b], scale),
             None => ([0.0; 4], scale),
         }
@@ -214,13 +183,13 @@ impl Tail {
         }
         let mean = |z: f64| ([spring(z).bound.period_integral() / TAU], 0.0);
         let bound = cosine_pass(zcap, zmax, TAIL_ORDER, [true], &mean).sum[0].max(0.0);
-        let ratios = |z: f64| beside_a_tie(z, zmax, |z| orbit(&spring(z)).map(|(e, _)| e)).ok();
+        let ratios = |z: f64| orbit(&spring(z)).ok().map(|(e, _)| e);
         let last = spring(zcap).bound;
         let half = c.level(1.0 - (0.5 * (last.level + amp) - amp));
         match (ratios(zcap), (half > zcap && half < zmax).then(|| ratios(half)).flatten()) {
-            (Some((e, m0)), Some((h, m1))) => {
+            (Some(e), Some(h)) => {
                 let (mu, tr) = (e.ratio.mu_ratio, e.transverse_ratio);
-                let moved = (mu - h.ratio.mu_ratio).abs().max((tr - h.transverse_ratio).abs()) + m0 + m1;
+                let moved = (mu - h.ratio.mu_ratio).abs().max((tr - h.transverse_ratio).abs());
                 Ok(Tail { bound, force: [mu * bound, tr * bound], error: 4.0 * moved * bound })
             }
             _ => Ok(Tail { bound, force: [0.0; 2], error: bound }),

@@ -136,9 +136,10 @@ impl Bound {
             None if self.amp == self.level => 0.0,
             None => return None,
         };
-        let k = ((tau + e) / TAU).floor();
-        let mut t = TAU * (k + 1.0) - e;
-        if t <= tau {
+        // From the period of `tau` (rounded down, so that a `tau` an ulp
+        // before a loss does not skip it), a period at a time.
+        let mut t = TAU * ((tau + e) / TAU).floor() - e;
+        while t <= tau {
             t += TAU;
         }
         Some(t)
@@ -152,5 +153,22 @@ pub(crate) fn reduce(tau: f64) -> f64 {
         r + TAU
     } else {
         r
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The next loss from an ulp before a loss is that loss, not the next
+    /// period's (`tau + t_c` rounds up to `2 pi` there).
+    #[test]
+    fn the_next_loss_from_an_ulp_before_it() {
+        let b = Bound::new(0.42230932523727416, 1.5);
+        let loss = TAU - b.edge.unwrap();
+        let before = loss - loss * f64::EPSILON;
+        assert_eq!(b.next_loss(before), Some(loss));
+        assert_eq!(b.next_loss(loss), Some(loss + TAU));
+        assert_eq!(b.next_loss(0.0), Some(loss));
     }
 }

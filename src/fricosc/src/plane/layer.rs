@@ -41,7 +41,9 @@ impl Layer {
         let v = drive.velocity_at(0.0);
         let b = LAYER_B * v[0].hypot(v[1]).min(1.0).powi(2);
         let gap = bound.level - bound.amp;
-        (bound.amp > 0.0 && gap < b).then(|| Layer { half_width: 2.0 * ((b - gap) / (2.0 * bound.amp)).sqrt().asin() })
+        // A bound whose peak is below `b` is in the layer all period (`w = pi`).
+        let s = ((b - gap) / (2.0 * bound.amp)).sqrt().min(1.0);
+        (bound.amp > 0.0 && gap < b).then(|| Layer { half_width: 2.0 * s.asin() })
     }
 
     /// The layer's end if `tau` is in one (before its end).

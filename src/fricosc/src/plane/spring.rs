@@ -286,13 +286,19 @@ impl Walker<'_> {
         self.truncation += (fx.tail(h) + fy.tail(h)) * h;
         let fe = [fx.eval(t), fy.eval(t)];
         self.advance(t, horizon, target);
+        // An event on the loss of contact is the loss (the force is 0 there).
+        if loss.is_some() && self.tau == target {
+            return Ok(self.lose());
+        }
         if fall.is_some() {
             self.events.push((self.tau, EventKind::Slip));
             let (r, b) = (fe[0].hypot(fe[1]), self.sp.bound.at(self.tau));
+            if r == 0.0 {
+                // A stick from a regained contact that lasted no time (`f = X' t`
+                // to first order): the slip starts along `X'` ([`Walker::regain`]).
+                return Ok(Phase::Slip { y: half(self.sp.drive.velocity_at(self.tau)), regain: true });
+            }
             return Ok(self.on_circle([fe[0] / r, fe[1] / r], b, b));
-        }
-        if loss.is_some() && self.tau == target {
-            return Ok(self.lose());
         }
         Ok(Phase::Stick { f: fe, skip: 0 })
     }
@@ -306,6 +312,25 @@ impl Walker<'_> {
     fn stalled(&self, what: &str) -> Error {
         Error::Internal { what: format!("the plane's {what} event at tau = {} did not isolate", self.tau) }
     }
+}
+
+/// Whether a spring that regains contact at the rate `beta` (its bound's
+/// level `level`) where the body moves at `xd` and accelerates at `xa` slips
+/// at once. From `f = 0` a stick's force is `f =
+/// X' t + X'' t^2/2 + ...` and its bound `B = beta t + B'' t^2/2 + ...`
+/// (`beta = amp sin t_c`, `B'' = amp cos t_c = level`), so
+///
+/// `B^2 - |f|^2 = (beta^2 - |X'|^2) t^2 + (beta B'' - X'.X'') t^3 + ...`:
+///
+/// it sticks where the first term is positive; where it ties with `|X'|`
+/// to rounding, the second decides (a stick of no length otherwise, whose
+/// end no bisection could isolate).
+fn slips_on_contact(xd: [f64; 2], xa: [f64; 2], beta: f64, level: f64) -> bool {
+    let speed = xd[0].hypot(xd[1]);
+    if (speed - beta).abs() > 8.0 * f64::EPSILON * beta {
+        return speed > beta;
+    }
+    beta * level < xd[0] * xa[0] + xd[1] * xa[1]
 }
 
 /// The half-angle series of a slip from `y0` (`|y0| = 1`): `y' = M y` (module docs).
@@ -383,11 +408,11 @@ impl Walker<'_> {
         }
         let ye = [ye[0] / norm, ye[1] / norm];
         self.advance(t, horizon, target);
-        if fall.is_some() {
-            return Ok(self.slip_ends(direction(ye)));
-        }
         if loss == Some(self.tau) {
             return Ok(self.lose());
+        }
+        if fall.is_some() {
+            return Ok(self.slip_ends(direction(ye)));
         }
         Ok(Phase::Slip { y: ye, regain: false })
     }
@@ -426,7 +451,7 @@ impl Walker<'_> {
             }
             return Ok(Phase::Slip { y: half(xd), regain: true });
         }
-        if speed > bound.amp * e.sin() {
+        if slips_on_contact(xd, self.sp.drive.acceleration_at(tc), bound.amp * e.sin(), bound.level) {
             Ok(Phase::Slip { y: [0.0, 1.0], regain: true })
         } else {
             Ok(Phase::Stick { f: [0.0; 2], skip: 2 })
@@ -457,7 +482,13 @@ impl Walker<'_> {
             w.force[1].add(f[1]);
             w.truncation += err;
         };
+        self.jac = [[0.0; 2]; 2];
         if let Some(c) = closes {
+            if let Some(t) = self.manifold_sticks(c) {
+                book(self, self.tau, t);
+                self.tau = t;
+                return Ok(self.slip_ends(layer::manifold(&drive, &bound, t).0));
+            }
             book(self, self.tau, c);
             self.tau = c;
             if bound.edge.is_some() {
@@ -466,9 +497,30 @@ impl Walker<'_> {
             self.events.push((c, EventKind::LossOfContact));
             self.events.push((c, EventKind::Contact));
         }
+        let stop = self.manifold_sticks(stop).unwrap_or(stop);
         book(self, self.tau, stop);
         self.tau = stop;
-        self.jac = [[0.0; 2]; 2];
-        Ok(Phase::Slip { y: half(layer::manifold(&drive, &bound, stop).0), regain: false })
+        let m = layer::manifold(&drive, &bound, stop).0;
+        if stop < exit.min(end) {
+            return Ok(self.slip_ends(m));
+        }
+        Ok(Phase::Slip { y: half(m), regain: false })
+    }
+
+    /// Where a slip on the layer's manifold from `tau` stops before `b`: its
+    /// rate `X'.e(th_m) - B'` falls through 0 (near a contact regained about
+    /// as fast as the bound grows; `None` where it stays positive at `b`).
+    fn manifold_sticks(&self, b: f64) -> Option<f64> {
+        let (drive, bound) = (self.sp.drive, self.sp.bound);
+        let rate = |t: f64| {
+            let (m, v) = (layer::manifold(&drive, &bound, t).0, drive.velocity_at(t));
+            v[0] * m[0] + v[1] * m[1] - bound.amp * t.sin()
+        };
+        match (rate(self.tau), rate(b)) {
+            // A body at rest in the layer has no manifold (its integral fails).
+            (a, r) if r > 0.0 || a.is_nan() || r.is_nan() => None,
+            (r, _) if r <= 0.0 => Some(self.tau),
+            _ => Some(crate::root::bracketed(rate, self.tau, b, 4.0 * f64::EPSILON).x),
+        }
     }
 }

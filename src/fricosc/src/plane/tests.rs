@@ -156,3 +156,56 @@ fn a_neutral_orbit_approached_geometrically_is_bounded_by_its_tail() {
     assert!(err <= e.error_estimate && e.error_estimate < 1e-4, "{err:e} {:e}", e.error_estimate);
     assert!(err > 0.0 && e.periods > 400, "{e:?}");
 }
+
+/// Springs whose contact is regained where the bound grows exactly as fast
+/// as the body moves (levels found by curved contacts' bands, where the walk
+/// once failed: a stick of no length): each walks, and its means lie between
+/// those of its neighbours 1e-9 either side, as the means are continuous
+/// in the level.
+#[test]
+fn a_contact_regained_at_the_tie_of_stick_and_slip() {
+    for (d, level, amp) in [
+        (
+            Drive { v: [0.0, 0.0], s: [0.0, -0.3076466358020981], c: [0.0, 0.4693601894916645] },
+            -1.445709234772215,
+            1.4639,
+        ),
+        (
+            Drive { v: [0.0, 0.0], s: [2.354, 5.6658074949191395], c: [0.0, -1.6353635193797444] },
+            -0.49566082919250243,
+            1.2662,
+        ),
+        (
+            Drive { v: [0.8609, 0.0], s: [0.1654, 2.84569591475809], c: [0.0, 2.2360455207193612] },
+            0.14954375092842764,
+            2.2232,
+        ),
+    ] {
+        let at = |dl: f64| orbit(&Spring::new(d, Bound::new(level + dl, amp))).unwrap().0;
+        let (lo, tie, hi) = (at(-1e-9), at(0.0), at(1e-9));
+        for f in [|e: &PlaneEvaluation| e.ratio.mu_ratio, |e: &PlaneEvaluation| e.transverse_ratio] {
+            let (a, b, c) = (f(&lo), f(&tie), f(&hi));
+            let slack = 4.0 * tie.error_estimate;
+            assert!(b >= a.min(c) - slack && b <= a.max(c) + slack, "{level}: {a} {b} {c}");
+        }
+    }
+}
+
+/// A spring at a curved contact's edge, whose bound peaks at 5e-6 (below
+/// the layer's, so in the layer all period), walks, and its ratios approach
+/// their limit linearly in the peak (within 1e-10 of the spring at 1e-5);
+/// and a slip that reaches the loss of contact at the tie of stick and slip
+/// (the slip ends 3e-8 before it, the stick an ulp before it) loses contact.
+#[test]
+fn springs_at_the_edge_of_a_contact_and_at_its_loss() {
+    let d = Drive {
+        v: [0.0, 0.0],
+        s: [0.3676185455086262, 0.7222820874717766],
+        c: [0.5725319625015342, 1.1248877024084125],
+    };
+    let at = |level: f64| orbit(&Spring::new(d, Bound::new(level, 1.5))).unwrap().0;
+    let (edge, inner) = (at(-1.499995), at(-1.49999));
+    assert!((edge.ratio.mu_ratio - inner.ratio.mu_ratio).abs() < 1e-10, "{edge:?} {inner:?}");
+    let (tie, beside) = (at(0.42230932523727416), at(0.4223093253));
+    assert!((tie.ratio.mu_ratio - beside.ratio.mu_ratio).abs() < 1e-10, "{tie:?} {beside:?}");
+}

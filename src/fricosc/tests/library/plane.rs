@@ -137,6 +137,29 @@ fn continuous_through_amp_one_and_vanishing_w() {
     }
 }
 
+/// Continuity through the tie where a regained contact's bound grows exactly
+/// as fast as the body moves (`|X'(t_c)| = amp sin t_c`): the third-order
+/// term decides between a slip at once and a stick (`plane/spring.rs`); the
+/// walk once failed there. Either side, 1e-12 to 1e-6 away in the phase,
+/// the answers change by at most the phase's change (their slope is about
+/// 0.13).
+#[test]
+fn continuous_through_the_tie_of_stick_and_slip_on_contact() {
+    // amp 1.25: contact regained at t_c = acos(0.8), at the rate 0.75; the
+    // body across at 0.75 there, accelerating to slip (-1.2) or to stick (0.5).
+    let tc = 0.8f64.acos();
+    for across in [-1.2f64, 0.5] {
+        let (w, psi) = (0.75f64.hypot(across), across.atan2(0.75) - tc);
+        let at = |psi: f64| plane(&conditions(0.0, 1.25, 0.0, 0.0), w, psi);
+        let tie = at(psi);
+        for d in [-1e-6, -1e-9, -1e-12, 1e-12, 1e-9, 1e-6] {
+            let e = at(psi + d);
+            let jump = (e.transverse_ratio.unwrap() - tie.transverse_ratio.unwrap()).abs();
+            assert!(jump <= d.abs() + e.error_estimate + tie.error_estimate, "{across} {d}: {jump:e}");
+        }
+    }
+}
+
 /// Symmetries (module docs): with `vhat = 0` and `T = 0` nothing drives
 /// along `x` and `<f_x> = 0` (to rounding); with `amp = 0` and `T = 0` half a
 /// period mirrors `y` and `<f_y> = 0`; `psi + pi` mirrors `y` always. With
