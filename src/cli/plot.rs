@@ -3,6 +3,7 @@
 use crate::cmd::{drawing_kind, emit, list, write_drawing, List, VelocityList};
 use crate::error::Result;
 use clap::Args;
+use fricosc::validation::OscillationInput;
 #[derive(Args)]
 pub struct PlotArgs {
     /// Indenter shape: flat, parabolic, cone, power:N, flat-tip:E, profile:FILE@U0, gx:FILE@U0.
@@ -125,7 +126,7 @@ enum Fixed {
 /// `(x, amp, mu_ratio)` of a table under oscillation in the sliding direction
 /// on the plot's axis (`vhat`, or the phase reduced to `[0, 2 pi)` as the
 /// solver reduces it), every row at the plot's `T` and fixed value.
-fn oscillation_points(rows: &[[f64; 5]], t: f64, fixed: Fixed, source: &str) -> Result<Vec<(f64, f64, f64)>> {
+fn oscillation_points(rows: &[OscillationInput], t: f64, fixed: Fixed, source: &str) -> Result<Vec<(f64, f64, f64)>> {
     let reduce = |p: f64| {
         let c = fricosc::Conditions::vhat(0.0, 0.0).and_then(|c| c.with_tangential(1.0, p));
         c.ok().and_then(|c| c.tangential()).map_or(p, |x| x.1)
@@ -134,20 +135,22 @@ fn oscillation_points(rows: &[[f64; 5]], t: f64, fixed: Fixed, source: &str) -> 
         Fixed::Phase(p) => ("phase", reduce(p)),
         Fixed::Vhat(v) => ("vhat", v),
     };
-    let held = |r: &[f64; 5]| match fixed {
-        Fixed::Phase(_) => (reduce(r[3]), r[0]),
-        Fixed::Vhat(_) => (r[0], reduce(r[3])),
+    let held = |r: &OscillationInput| match fixed {
+        Fixed::Phase(_) => (reduce(r.phase), r.vhat),
+        Fixed::Vhat(_) => (r.vhat, reduce(r.phase)),
     };
-    match rows.iter().position(|r| r[2] != t || held(r).0 != plot) {
+    // Rows across the sliding direction are not overlaid (validate compares them).
+    match rows.iter().position(|r| r.tangential_amp != t || held(r).0 != plot || r.transverse_amp != 0.0) {
         Some(i) => Err(crate::error::Error::Parse {
             context: source.into(),
             reason: format!(
-                "row {i} is at tangential_amp {}, {other} {}; the plot is at --tangential-amp {t}, --{other} {plot} \
-                 (overlay one oscillation at a time)",
-                rows[i][2],
-                held(&rows[i]).0
+                "row {i} is at tangential_amp {}, {other} {}, transverse_amp {}; the plot is at --tangential-amp {t}, \
+                 --{other} {plot}, no oscillation across (overlay one oscillation at a time)",
+                rows[i].tangential_amp,
+                held(&rows[i]).0,
+                rows[i].transverse_amp
             ),
         }),
-        None => Ok(rows.iter().map(|r| (held(r).1, r[1], r[4])).collect()),
+        None => Ok(rows.iter().map(|r| (held(r).1, r.amp, r.mu_ratio)).collect()),
     }
 }

@@ -244,3 +244,39 @@ fn a_batch_row_across_without_normal_oscillation_is_the_points() {
     assert_eq!(plain.status.code(), Some(2));
     assert!(plain.stdout.is_empty() && String::from_utf8_lossy(&plain.stderr).contains("vbar"));
 }
+
+/// `validate` reads a table in the plane from its columns: the force across
+/// is compared and written (csv), a row off across is beyond `--max-error`
+/// (exit 1), and the correct table passes (exit 0). `--peer` runs the
+/// plane's stepper.
+#[test]
+fn validate_compares_a_table_in_the_plane() {
+    let c = Conditions::vhat(0.3, 1.5).unwrap();
+    let e = Shape::flat().evaluate(&c.with_transverse(Transverse::new(1.2, 0.7).unwrap())).unwrap();
+    let (mu, tr) = (e.ratio.mu_ratio, e.transverse_ratio.unwrap());
+    let table = |across: f64| {
+        format!(
+            "vhat,amp,transverse_amp,transverse_phase,mu_ratio,transverse_ratio\n0.3,1.5,1.2,0.7,{mu:?},{across:?}\n"
+        )
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("plane.csv");
+    let file = path.to_str().unwrap();
+    std::fs::write(&path, table(tr)).unwrap();
+    let out = cli::run(&["validate", file, "--format", "csv", "--max-error", "1e-14"], None);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    for name in ["transverse_amp", "transverse_phase", "transverse_ratio", "transverse_exact", "transverse_error"] {
+        assert!(header.contains(&name), "{header:?}");
+    }
+    std::fs::write(&path, table(tr + 1e-6)).unwrap();
+    let out = cli::run(&["validate", file, "--format", "summary", "--max-error", "1e-9"], None);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains("the force across: largest error 1.000e-6") && text.contains("max_error"), "{text}");
+    let out = cli::run(&["validate", file, "--format", "json", "--peer", "1000"], None);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let peer = v["rows"][0]["transverse_peer_error"].as_f64().unwrap();
+    assert!(peer != 0.0 && peer.abs() < 1e-2, "{v}");
+}

@@ -490,7 +490,7 @@ type Planted = (&'static str, fn([f64; 4]) -> [f64; 4], Option<&'static str>);
 /// `large_errors`; the correct table gets nothing.
 #[test]
 fn conventions_of_a_combined_table_are_named() {
-    use fricosc::validation::compare_oscillation;
+    use fricosc::validation::{compare_oscillation, OscillationInput};
     let shape = Shape::parabolic();
     let exact = |v: f64, a: f64, t: f64, p: f64| {
         let c = fricosc::Conditions::vhat(v, a).unwrap().with_tangential(t, p).unwrap();
@@ -507,11 +507,11 @@ fn conventions_of_a_combined_table_are_named() {
         ("half the velocity", |[v, a, t, p]| [0.5 * v, a, t, p], None),
     ];
     for (what, read, named) in planted {
-        let rows: Vec<[f64; 5]> = inputs
+        let rows: Vec<OscillationInput> = inputs
             .iter()
             .map(|&x| {
                 let [v, a, t, p] = read(x);
-                [x[0], x[1], x[2], x[3], exact(v, a, t, p)]
+                OscillationInput::new(x[0], x[1], exact(v, a, t, p)).with_tangential(x[2], x[3])
             })
             .collect();
         let r = compare_oscillation(&shape, &rows, &Check::default()).unwrap();
@@ -526,8 +526,10 @@ fn conventions_of_a_combined_table_are_named() {
         }
     }
     // Degrees: phases written as 30, 90, 150.
-    let rows: Vec<[f64; 5]> =
-        [30.0f64, 90.0, 150.0].iter().map(|&d| [0.3, 1.5, 2.0, d, exact(0.3, 1.5, 2.0, d.to_radians())]).collect();
+    let rows: Vec<OscillationInput> = [30.0f64, 90.0, 150.0]
+        .iter()
+        .map(|&d| OscillationInput::new(0.3, 1.5, exact(0.3, 1.5, 2.0, d.to_radians())).with_tangential(2.0, d))
+        .collect();
     let r = compare_oscillation(&shape, &rows, &Check::default()).unwrap();
     assert!(
         r.findings.iter().any(|f| f.kind == FindingKind::Convention && f.hint.contains("degrees")),

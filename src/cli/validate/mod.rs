@@ -26,7 +26,8 @@ pub struct ValidateArgs {
     /// CSV 'shape' column decides; giving a different one is an error). Default: flat.
     #[arg(long)]
     pub shape: Option<String>,
-    /// Table file (JSON or CSV; columns vbar or vhat, amp, mu_ratio or mu); stdin when '-'.
+    /// Table file (JSON or CSV; columns vbar or vhat, amp, mu_ratio or mu; optionally
+    /// tangential_amp and phase, transverse_amp, transverse_phase and transverse_ratio); stdin when '-'.
     /// With --series: several, each with its resolution (run@1000.csv, or run.csv@1000).
     #[arg(required = true)]
     pub files: Vec<String>,

@@ -6,27 +6,20 @@
 use crate::error::Result;
 use crate::output::csv_records;
 use crate::tables::{read_columns, Kind};
-use fricosc::validation::{Column, OscillationValidation, Table, Validation};
+use fricosc::validation::{Column, OscillationValidation, Table, TransverseRow, Validation};
 
 /// Most rows one file may hold.
 pub const MAX_ROWS: usize = crate::grid::MAX_ROWS;
 
-/// [`Table::COLUMNS`] with what each holds.
-const TABLE_COLUMNS: [(&str, Kind); 8] = {
-    let mut c = [("", Kind::Number); 8];
+/// [`Table::COLUMNS`] with what each holds: `shape` text; `mu_ratio`, `mu`,
+/// `transverse_ratio` values that may have diverged (a finding, not a parse error).
+const TABLE_COLUMNS: [(&str, Kind); Table::COLUMNS.len()] = {
+    let mut c = [("", Kind::Number); Table::COLUMNS.len()];
     let mut k = 0;
-    while k < 8 {
-        // mu_ratio and mu may be diverged values (a finding, not a parse error).
-        c[k] = (
-            Table::COLUMNS[k],
-            if k == 5 {
-                Kind::Label
-            } else if k == 3 || k == 4 {
-                Kind::Value
-            } else {
-                Kind::Number
-            },
-        );
+    while k < c.len() {
+        let kind = if matches!(k, 3 | 4 | 10) { Kind::Value } else { Kind::Number };
+        let kind = if k == 5 { Kind::Label } else { kind };
+        c[k] = (Table::COLUMNS[k], kind);
         k += 1;
     }
     c
@@ -54,6 +47,11 @@ pub fn oscillation_csv(v: &OscillationValidation) -> Result<String> {
     let mut header =
         vec!["row", "vhat", "amp", "tangential_amp", "phase", "mu_ratio", "exact", "error", "relative_error", "regime"];
     header.extend(v.system.map(|_| "exact_error_estimate"));
+    let plane = v.rows.iter().any(|r| r.transverse.is_some()); // the force across and its errors
+    if plane {
+        header.extend("transverse_amp transverse_phase transverse_ratio transverse_exact transverse_error".split(' '));
+        header.extend(v.peer.map(|_| "transverse_peer_error"));
+    }
     let rows = v.rows.iter().map(|r| {
         let mut cells = vec![
             r.row.to_string(),
@@ -68,6 +66,12 @@ pub fn oscillation_csv(v: &OscillationValidation) -> Result<String> {
             r.regime.clone(),
         ];
         cells.extend(v.system.map(|_| r.exact_error_estimate.map(n).unwrap_or_default()));
+        if let (true, t) = (plane, r.transverse.as_ref()) {
+            let f = |g: fn(&TransverseRow) -> Option<f64>| t.and_then(g).map(n).unwrap_or_default();
+            cells.extend([f(|t| Some(t.transverse_amp)), f(|t| Some(t.transverse_phase)), f(|t| t.transverse_ratio)]);
+            cells.extend([f(|t| Some(t.transverse_exact)), f(|t| t.transverse_error)]);
+            cells.extend(v.peer.map(|_| f(|t| t.transverse_peer_error)));
+        }
         (cells, r.peer_error)
     });
     compared_csv(&header, v.peer.is_some(), rows)

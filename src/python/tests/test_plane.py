@@ -85,3 +85,19 @@ def test_mu_ratio_in_the_plane_is_the_point_at_every_element() -> None:
         fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, transverse_amp=1.0, system_stiffness=1.0)
     with pytest.raises(TypeError, match="transverse_phase needs transverse_amp"):
         fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, transverse_phase=1.0)
+
+
+def test_validate_reads_a_table_in_the_plane_as_the_command_line(tmp_path: Any) -> None:
+    """A table in the plane (``transverse_amp``, ``transverse_phase``,
+    ``transverse_ratio``) off across by 1e-6: Python reads and compares it as
+    ``fricosc validate`` does (the same report), the force across compared."""
+    p = fricosc.point("flat", vhat=0.3, amp=1.5, transverse_amp=1.2, transverse_phase=0.7)
+    rows = {"vhat": [0.3], "amp": [1.5], "transverse_amp": [1.2], "transverse_phase": [0.7],
+            "mu_ratio": [p["mu_ratio"]], "transverse_ratio": [p["transverse_ratio"] + 1e-6]}
+    path = tmp_path / "plane.csv"
+    path.write_text(",".join(rows) + "\n" + ",".join(repr(v[0]) for v in rows.values()) + "\n")
+    expected = json.loads(cli("validate", str(path), "--format", "json"))
+    expected.pop("format")
+    got = fricosc.validate(rows)
+    assert json.loads(json.dumps(got)) == expected
+    assert 0.99e-6 < got["transverse"]["max_abs_error"] < 1.01e-6 and got["max_abs_error"] == 0.0

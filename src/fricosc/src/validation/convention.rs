@@ -4,7 +4,8 @@
 //! the usual causes are conventions, each cheap to try against the exact
 //! solver: the phase's sign, the phase measured from the normal force's
 //! maximum instead of its minimum (`phase + pi`), a phase in degrees read as
-//! radians, and the tangential amplitude as peak to peak (or half of it). A
+//! radians, and the tangential amplitude as peak to peak (or half of it);
+//! across the sliding direction the same for its phase and amplitude. A
 //! convention fits where the table's values, read with it, are within a
 //! tenth of the largest error and within [`LARGE_ERROR`] everywhere; the best
 //! fit is named.
@@ -17,18 +18,26 @@ use std::f64::consts::PI;
 /// The largest error a discretisation is credited with.
 pub(crate) const LARGE_ERROR: f64 = 0.05;
 
-/// How a convention reads a row's `[vhat, amp, T, phase]`.
-type Read = fn([f64; 4]) -> [f64; 4];
+/// How a convention reads a row's `[vhat, amp, T, phase, W, psi]`.
+type Read = fn([f64; 6]) -> [f64; 6];
 
 /// A convention: how it reads a row, and its name.
 type Convention = (Read, &'static str);
 
-const CONVENTIONS: [Convention; 5] = [
-    (|[v, a, t, p]| [v, a, t, -p], "the phase's sign reversed (-phase)"),
-    (|[v, a, t, p]| [v, a, t, p + PI], "the phase measured from the normal force's maximum (phase + pi)"),
-    (|[v, a, t, p]| [v, a, t, p * (PI / 180.0)], "the phase in degrees (phase pi/180)"),
-    (|[v, a, t, p]| [v, a, 0.5 * t, p], "the tangential amplitude as peak to peak (T/2)"),
-    (|[v, a, t, p]| [v, a, 2.0 * t, p], "the tangential amplitude as half of it (2 T)"),
+const CONVENTIONS: [Convention; 10] = [
+    (|[v, a, t, p, w, q]| [v, a, t, -p, w, q], "the phase's sign reversed (-phase)"),
+    (|[v, a, t, p, w, q]| [v, a, t, p + PI, w, q], "the phase measured from the normal force's maximum (phase + pi)"),
+    (|[v, a, t, p, w, q]| [v, a, t, p * (PI / 180.0), w, q], "the phase in degrees (phase pi/180)"),
+    (|[v, a, t, p, w, q]| [v, a, 0.5 * t, p, w, q], "the tangential amplitude as peak to peak (T/2)"),
+    (|[v, a, t, p, w, q]| [v, a, 2.0 * t, p, w, q], "the tangential amplitude as half of it (2 T)"),
+    (|[v, a, t, p, w, q]| [v, a, t, p, w, -q], "the transverse phase's sign reversed (-psi)"),
+    (
+        |[v, a, t, p, w, q]| [v, a, t, p, w, q + PI],
+        "the transverse phase measured from the normal force's maximum (psi + pi)",
+    ),
+    (|[v, a, t, p, w, q]| [v, a, t, p, w, q * (PI / 180.0)], "the transverse phase in degrees (psi pi/180)"),
+    (|[v, a, t, p, w, q]| [v, a, t, p, 0.5 * w, q], "the transverse amplitude as peak to peak (W/2)"),
+    (|[v, a, t, p, w, q]| [v, a, t, p, 2.0 * w, q], "the transverse amplitude as half of it (2 W)"),
 ];
 
 /// The rows whose error is of order one.
@@ -48,9 +57,9 @@ pub(crate) fn large_errors(rows: Vec<usize>, worst: f64) -> Option<Finding> {
 }
 
 /// Under oscillation in the sliding direction: which convention, if any,
-/// explains errors of order one in `rows` (`[vhat, amp, T, phase, mu_ratio]`,
-/// with their `errors`). `None` when the errors are not of order one.
-pub(crate) fn oscillation_finding(shape: &Shape, rows: &[[f64; 5]], errors: &[f64]) -> Option<Finding> {
+/// explains errors of order one in `rows` (with their `errors`, the larger
+/// of along and across). `None` when the errors are not of order one.
+pub(crate) fn oscillation_finding(shape: &Shape, rows: &[super::OscillationInput], errors: &[f64]) -> Option<Finding> {
     let bad = large(errors.iter().copied().enumerate());
     if bad.is_empty() {
         return None;
@@ -58,8 +67,14 @@ pub(crate) fn oscillation_finding(shape: &Shape, rows: &[[f64; 5]], errors: &[f6
     let worst = errors.iter().fold(0.0f64, |m, e| m.max(e.abs()));
     let fit = |read: Read| -> Option<f64> {
         let errs = crate::numerics::par::map(rows, |r| {
-            let c = conditions(read, [r[0], r[1], r[2], r[3]])?;
-            shape.ratio(&c).map(|x| (r[4] - x.mu_ratio).abs())
+            let c = conditions(read, [r.vhat, r.amp, r.tangential_amp, r.phase, r.transverse_amp, r.transverse_phase])?;
+            let e = shape.evaluate(&c)?;
+            let across = match (r.transverse_ratio, e.transverse_ratio) {
+                (Some(v), Some(x)) => (v - x).abs(),
+                (Some(v), None) => v.abs(),
+                _ => 0.0,
+            };
+            Ok::<f64, crate::error::Error>((r.mu_ratio - e.ratio.mu_ratio).abs().max(across))
         });
         let mut m = 0.0f64;
         for e in errs {
@@ -80,14 +95,18 @@ pub(crate) fn history_finding(
     error_under: &dyn Fn(&Conditions) -> Option<f64>,
 ) -> Option<Finding> {
     let (t, phase) = c.tangential()?;
-    let point = [c.as_vhat(), c.amp(), t, phase];
+    let point = [c.as_vhat(), c.amp(), t, phase, 0.0, 0.0];
     named(bad, worst, &|read| error_under(&conditions(read, point).ok()?))
 }
 
-/// `[vhat, amp, T, phase]` read with a convention, as conditions.
-fn conditions(read: Read, point: [f64; 4]) -> crate::error::Result<Conditions> {
-    let [v, a, t, p] = read(point);
-    Conditions::vhat(v, a)?.with_tangential(t, p)
+/// `[vhat, amp, T, phase, W, psi]` read with a convention, as conditions.
+fn conditions(read: Read, point: [f64; 6]) -> crate::error::Result<Conditions> {
+    let [v, a, t, p, w, q] = read(point);
+    let c = Conditions::vhat(v, a)?.with_tangential(t, p)?;
+    if w == 0.0 {
+        return Ok(c);
+    }
+    Ok(c.with_transverse(crate::plane::Transverse::new(w, q)?))
 }
 
 /// The finding naming the convention with the smallest largest error

@@ -35,7 +35,8 @@ mod table;
 mod text;
 
 pub use oscillation::{
-    compare_oscillation, OscillationRegime, OscillationRow, OscillationValidation, SYSTEM_PEER_PERIODS,
+    compare_oscillation, OscillationInput, OscillationRegime, OscillationRow, OscillationValidation, TransverseRow,
+    SYSTEM_PEER_PERIODS,
 };
 
 pub use history::{

@@ -2,7 +2,9 @@
 //! `vhat` (eq. 15, `vbar = vhat / amp`), `amp`, the friction as `mu_ratio` or
 //! `mu` (then `mu_ratio = mu / mu0`), optionally `shape` (one for the whole
 //! table) and, under oscillation in the sliding direction, `tangential_amp`
-//! and `phase` (0 where missing). The command line's reader and Python's
+//! and `phase` (0 where missing); across it, `transverse_amp`,
+//! `transverse_phase` (0 where missing) and, if the table gives the mean
+//! force across, `transverse_ratio`. The command line's reader and Python's
 //! DataFrames both end here, so a table means the same in both.
 
 use crate::error::{Error, Result};
@@ -17,6 +19,8 @@ pub struct Table {
     amp: Vec<f64>,
     friction: Vec<f64>,
     tangential: Option<Vec<(f64, f64)>>,
+    transverse: Option<Vec<(f64, f64)>>,
+    transverse_ratio: Option<Vec<f64>>,
     ignored_columns: Vec<String>,
     format: String,
 }
@@ -32,8 +36,19 @@ pub enum Column {
 
 impl Table {
     /// The columns a table may have; `shape` is text, the others numbers.
-    pub const COLUMNS: [&'static str; 8] =
-        ["vbar", "vhat", "amp", "mu_ratio", "mu", "shape", "tangential_amp", "phase"];
+    pub const COLUMNS: [&'static str; 11] = [
+        "vbar",
+        "vhat",
+        "amp",
+        "mu_ratio",
+        "mu",
+        "shape",
+        "tangential_amp",
+        "phase",
+        "transverse_amp",
+        "transverse_phase",
+        "transverse_ratio",
+    ];
 
     /// A table from the columns its source has: `names` every column's name
     /// (those not in [`Table::COLUMNS`] are reported as not read), `columns`
@@ -43,8 +58,9 @@ impl Table {
     /// # Errors
     /// [`Error::Parse`] where a column is missing or given twice over
     /// (`vbar` and `vhat`), names more than one shape, `phase` comes without
-    /// `tangential_amp`, or `tangential_amp` with `vbar`; columns of different
-    /// lengths.
+    /// `tangential_amp` (`transverse_phase` or `transverse_ratio` without
+    /// `transverse_amp`), or either amplitude with `vbar`; columns of
+    /// different lengths.
     pub fn from_columns(names: &[String], columns: Vec<(&str, Column)>, format: &str, source: &str) -> Result<Table> {
         let err = |reason: String| Error::Parse { context: source.into(), reason };
         let mut numbers: Vec<Option<Vec<f64>>> = vec![None; Table::COLUMNS.len()];
@@ -87,13 +103,26 @@ impl Table {
                 named.join(", ")
             )));
         }
-        let tangential = tangential_of(numbers[6].take(), numbers[7].take(), vhat).map_err(|r| err(r.into()))?;
+        let tangential =
+            pairs_of(numbers[6].take(), numbers[7].take(), vhat, ["tangential_amp", "phase"]).map_err(&err)?;
+        let transverse = pairs_of(numbers[8].take(), numbers[9].take(), vhat, ["transverse_amp", "transverse_phase"])
+            .map_err(&err)?;
+        let transverse_ratio = numbers[10].take();
+        if transverse_ratio.is_some() && transverse.is_none() {
+            return Err(err("a column 'transverse_ratio' without 'transverse_amp'".into()));
+        }
         let rows = amp.len();
-        if velocity.len() != rows || friction.len() != rows || tangential.as_ref().is_some_and(|t| t.len() != rows) {
+        let long = |c: Option<usize>| c.is_some_and(|n| n != rows);
+        if velocity.len() != rows
+            || friction.len() != rows
+            || long(tangential.as_ref().map(Vec::len))
+            || long(transverse.as_ref().map(Vec::len))
+            || long(transverse_ratio.as_ref().map(Vec::len))
+        {
             return Err(err("the columns differ in length".into()));
         }
         let read = [if vhat { "vhat" } else { "vbar" }, "amp", if mu { "mu" } else { "mu_ratio" }, "shape"];
-        let read_also = ["tangential_amp", "phase"];
+        let read_also = &Table::COLUMNS[6..];
         let ignored_columns =
             names.iter().filter(|h| !read.contains(&h.as_str()) && !read_also.contains(&h.as_str())).cloned().collect();
         Ok(Table {
@@ -104,6 +133,8 @@ impl Table {
             amp,
             friction,
             tangential,
+            transverse,
+            transverse_ratio,
             ignored_columns,
             format: format.into(),
         })
@@ -127,11 +158,11 @@ impl Table {
         &self.ignored_columns
     }
 
-    /// Whether the table is under oscillation in the sliding direction (it has
-    /// `tangential_amp`).
+    /// Whether the table is under oscillation in the sliding direction or
+    /// across it (it has `tangential_amp` or `transverse_amp`).
     #[must_use]
     pub fn is_oscillation(&self) -> bool {
-        self.tangential.is_some()
+        self.tangential.is_some() || self.transverse.is_some()
     }
 
     /// Row `i`'s velocity as the table gives it: `("vhat", value)` or
@@ -147,11 +178,11 @@ impl Table {
     /// [`Error::Parse`] for a table under oscillation in the sliding direction,
     /// `mu` without `mu0` (or `mu0` with `mu_ratio`), a bad row.
     pub fn rows(&self, mu0: Option<f64>, source: &str) -> Result<Vec<(f64, f64, f64)>> {
-        if self.tangential.is_some() {
+        if self.is_oscillation() {
             return Err(Error::Parse {
                 context: source.into(),
-                reason: "a table under oscillation in the sliding direction (column 'tangential_amp'): only a single \
-                         table's validate compares it"
+                reason: "a table under oscillation in or across the sliding direction (column 'tangential_amp' or \
+                         'transverse_amp'): only a single table's validate compares it"
                     .into(),
             });
         }
@@ -159,16 +190,17 @@ impl Table {
             .map_err(|e| Error::Parse { context: source.into(), reason: e.to_string() })
     }
 
-    /// `[vhat, amp, tangential_amp, phase, mu_ratio]` of every row of a table
-    /// under oscillation in the sliding direction, the input of
-    /// [`super::compare_oscillation`].
+    /// Every row of a table under oscillation in or across the sliding
+    /// direction, the input of [`super::compare_oscillation`].
     ///
     /// # Errors
-    /// [`Error::Parse`] without `tangential_amp`, or for `mu` without `mu0`
-    /// (or `mu0` with `mu_ratio`).
-    pub fn oscillation_rows(&self, mu0: Option<f64>, source: &str) -> Result<Vec<[f64; 5]>> {
+    /// [`Error::Parse`] without `tangential_amp` or `transverse_amp`, or for
+    /// `mu` without `mu0` (or `mu0` with `mu_ratio`).
+    pub fn oscillation_rows(&self, mu0: Option<f64>, source: &str) -> Result<Vec<super::OscillationInput>> {
         let bad = |reason: &str| Error::Parse { context: source.into(), reason: reason.into() };
-        let tangential = self.tangential.as_ref().ok_or_else(|| bad("no column 'tangential_amp'"))?;
+        if !self.is_oscillation() {
+            return Err(bad("no column 'tangential_amp' or 'transverse_amp'"));
+        }
         let scale = match (self.mu, mu0) {
             (true, Some(m)) if m.is_finite() && m > 0.0 => m,
             (true, Some(m)) => return Err(Error::param("mu0", m, "must be finite and > 0")),
@@ -176,25 +208,38 @@ impl Table {
             (false, Some(_)) => return Err(bad("--mu0 applies to a column 'mu'; this table has 'mu_ratio'")),
             (false, None) => 1.0,
         };
-        let rows = self.velocity.iter().zip(&self.amp).zip(&self.friction).zip(tangential);
-        Ok(rows.map(|(((&v, &a), &f), &(t, p))| [v, a, t, p, f / scale]).collect())
+        let pair = |p: &Option<Vec<(f64, f64)>>, i: usize| p.as_ref().map_or((0.0, 0.0), |p| p[i]);
+        let rows = (0..self.amp.len()).map(|i| {
+            let ((t, p), (w, q)) = (pair(&self.tangential, i), pair(&self.transverse, i));
+            // The force across is a ratio to mu0 like the one along.
+            let across = self.transverse_ratio.as_ref().map(|r| r[i] / scale);
+            super::OscillationInput::new(self.velocity[i], self.amp[i], self.friction[i] / scale)
+                .with_tangential(t, p)
+                .with_transverse(w, q, across)
+        });
+        Ok(rows.collect())
     }
 }
 
-/// `(tangential_amp, phase)` of every row, where the table has `tangential_amp`
-/// (a missing `phase` is 0); it needs the velocities as `vhat`.
-fn tangential_of(
-    t: Option<Vec<f64>>,
+/// `(amplitude, phase)` of every row, where the table has the amplitude
+/// column (a missing phase is 0); it needs the velocities as `vhat`.
+/// `names`: the two columns' names.
+fn pairs_of(
+    amp: Option<Vec<f64>>,
     phase: Option<Vec<f64>>,
     vhat: bool,
-) -> std::result::Result<Option<Vec<(f64, f64)>>, &'static str> {
-    match (t, phase) {
-        (None, Some(_)) => Err("a column 'phase' without 'tangential_amp'"),
+    names: [&str; 2],
+) -> std::result::Result<Option<Vec<(f64, f64)>>, String> {
+    let [a, p] = names;
+    match (amp, phase) {
+        (None, Some(_)) => Err(format!("a column '{p}' without '{a}'")),
         (None, None) => Ok(None),
-        (Some(_), _) if !vhat => Err("a table with 'tangential_amp' needs its velocities as 'vhat' (vbar = vhat/amp \
-                                      is undefined without normal oscillation)"),
-        (Some(t), Some(p)) if p.len() != t.len() => Err("the columns differ in length"),
-        (Some(t), p) => Ok(Some(t.iter().enumerate().map(|(i, &t)| (t, p.as_ref().map_or(0.0, |p| p[i]))).collect())),
+        (Some(_), _) if !vhat => Err(format!(
+            "a table with '{a}' needs its velocities as 'vhat' (vbar = vhat/amp is undefined without normal \
+             oscillation)"
+        )),
+        (Some(t), Some(q)) if q.len() != t.len() => Err("the columns differ in length".into()),
+        (Some(t), q) => Ok(Some(t.iter().enumerate().map(|(i, &t)| (t, q.as_ref().map_or(0.0, |q| q[i]))).collect())),
     }
 }
 

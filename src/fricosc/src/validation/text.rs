@@ -173,6 +173,7 @@ impl OscillationValidation {
         let s = &v.summary;
         let setting = match &v.system {
             Some(sys) => format!("on a system {}", system_params(sys)),
+            None if v.rows.iter().any(|r| r.transverse.is_some()) => "under oscillation in the plane".into(),
             None => "under oscillation in the sliding direction".into(),
         };
         let mut out = format!(
@@ -180,6 +181,13 @@ impl OscillationValidation {
              largest error {:.3e} (row {}), rms {:.3e}, largest relative {:.3e}\n",
             s.n, v.shape, s.max_abs_error, s.worst_row, s.rms_error, s.max_rel_error
         );
+        if let Some(t) = &v.transverse {
+            let _ = writeln!(
+                out,
+                "the force across: largest error {:.3e} (row {}), rms {:.3e}",
+                t.max_abs_error, t.worst_row, t.rms_error
+            );
+        }
         if let Some(e) = v.rows.iter().filter_map(|r| r.exact_error_estimate).reduce(f64::max) {
             let _ = writeln!(out, "the exact values' largest error estimate {e:.3e}");
         }

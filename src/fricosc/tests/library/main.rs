@@ -21,6 +21,7 @@ mod mdr_independent;
 mod plane;
 mod plane_curved;
 mod plane_history;
+mod plane_validate;
 mod profile;
 mod properties;
 mod reference;

@@ -346,7 +346,10 @@ def history(
     return result
 
 
-_READ = ("vbar", "vhat", "amp", "mu_ratio", "mu", "tangential_amp", "phase")
+_READ = (
+    "vbar", "vhat", "amp", "mu_ratio", "mu", "tangential_amp", "phase",
+    "transverse_amp", "transverse_phase", "transverse_ratio",
+)
 
 
 def _table(table: Any) -> Tuple[List[str], List[Tuple[str, npt.NDArray[np.float64]]]]:
@@ -394,7 +397,10 @@ def validate(
     read as ``fricosc validate`` reads a file's: ``vbar`` or ``vhat``, ``amp``,
     ``mu_ratio`` or ``mu`` (then ``mu0`` is required), under oscillation in the
     sliding direction ``tangential_amp`` and ``phase`` (with ``vhat``; the
-    report is then the oscillation's), and optionally ``shape`` (one value for the whole table; ``shape=``
+    report is then the oscillation's), across it ``transverse_amp``,
+    ``transverse_phase`` and, if your code gives the mean force across,
+    ``transverse_ratio`` (compared too: ``transverse_error`` per row, the
+    summary ``transverse``), and optionally ``shape`` (one value for the whole table; ``shape=``
     only where the table names none, an error where they disagree; the flat
     punch by default). ``at_rest``: ``"sliding"`` or ``"relaxed"`` (what a
     ``vbar = 0`` row is compared with). ``peer=M``: run fricosc's stepping peer
