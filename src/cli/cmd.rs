@@ -283,10 +283,10 @@ impl TransversePoint {
 fn vhat_for_tangential(has_vbar: bool, vhat: Option<f64>) -> Result<f64> {
     match (has_vbar, vhat) {
         (false, Some(v)) => Ok(v),
-        _ => Err(Error::Parse {
-            context: "--tangential-amp".into(),
-            reason: "give the velocity as --vhat (vbar = vhat/amp is undefined without normal oscillation)".into(),
-        }),
+        _ => Err(Error::parse(
+            "--tangential-amp",
+            "give the velocity as --vhat (vbar = vhat/amp is undefined without normal oscillation)",
+        )),
     }
 }
 
@@ -381,10 +381,7 @@ impl MethodArgs {
                 .find(|(_, v)| v.is_some())
                 .map(|(n, _)| *n)
             {
-                return Err(Error::Parse {
-                    context: name.into(),
-                    reason: "applies only with --method stepping".into(),
-                });
+                return Err(Error::parse(name, "applies only with --method stepping"));
             }
             return Ok(None);
         }

@@ -73,6 +73,11 @@ impl Error {
         Error::Io { path: path.into(), source }
     }
 
+    /// An [`Error::Parse`] of `context` (a file, a flag) for `reason`.
+    pub fn parse(context: impl Into<String>, reason: impl Into<String>) -> Self {
+        Error::Parse { context: context.into(), reason: reason.into() }
+    }
+
     /// Shorthand for the library's [`fricosc::Error::InvalidParameter`].
     pub fn param(name: &'static str, value: f64, reason: &str) -> Self {
         Error::Core(fricosc::Error::param(name, value, reason))

@@ -4,7 +4,7 @@ use crate::cmd::{emit, positive, read_input, Outcome};
 use crate::error::{Error, Result};
 use crate::tables::{read_columns, Kind};
 use clap::Args;
-use fricosc::fit::{FitReport, Fixed, Measurement, Parameter};
+use fricosc::fit::{FitReport, Fixed, Measurement, Parameter, NAMES};
 use std::io::IsTerminal;
 
 #[derive(Args)]
@@ -33,6 +33,10 @@ pub struct FitArgs {
     /// --damping held).
     #[arg(long, requires = "system_stiffness")]
     pub fit_system_stiffness: bool,
+    /// Keep a fitted parameter within LO..HI (HI may be inf): NAME=LO:HI, NAME one of mu0,
+    /// stiffness-ratio, u0, system-stiffness; repeatable. One that ends on its bound is named.
+    #[arg(long = "bound", value_name = "NAME=LO:HI")]
+    pub bounds: Vec<String>,
     /// summary or json (default: summary at a terminal, else json).
     #[arg(long)]
     pub format: Option<String>,
@@ -61,12 +65,7 @@ pub fn run(a: FitArgs) -> Result<Outcome> {
     let json = match a.format.as_deref() {
         Some("json") => true,
         Some("summary") => false,
-        Some(other) => {
-            return Err(Error::Parse {
-                context: "--format".into(),
-                reason: format!("'{other}' is not summary or json"),
-            })
-        }
+        Some(other) => return Err(Error::parse("--format", format!("'{other}' is not summary or json"))),
         None => !std::io::stdout().is_terminal(),
     };
     if let Some(path) = &a.plot {
@@ -83,6 +82,7 @@ pub fn run(a: FitArgs) -> Result<Outcome> {
         stiffness_ratio: a.stiffness_ratio,
         u0: a.u0,
         fit_system_stiffness: a.fit_system_stiffness,
+        bounds: bounds_of(&a.bounds)?,
     };
     let bar = std::sync::Arc::new(crate::progress::Bar::new(None, "fit: rows evaluated"));
     let seen = bar.clone();
@@ -95,6 +95,20 @@ pub fn run(a: FitArgs) -> Result<Outcome> {
         crate::cmd::write_drawing("--plot", path, &drawing(&shape, &rows, &r)?)?;
     }
     Ok(if r.verdicts.is_empty() { Outcome::Done } else { Outcome::Negative })
+}
+
+/// `--bound NAME=LO:HI` options as [`Fixed::bounds`] (a name given twice refused).
+fn bounds_of(given: &[String]) -> Result<[Option<[f64; 2]>; 4]> {
+    let mut out = [None; 4];
+    for b in given {
+        let bad = || Error::parse("--bound", format!("'{b}' is not NAME=LO:HI (NAME one of {})", NAMES.join(", ")));
+        let (name, range) = b.split_once('=').ok_or_else(bad)?;
+        let k = NAMES.iter().position(|n| *n == name.trim().replace('-', "_")).filter(|&k| out[k].is_none());
+        let ((lo, hi), k) = (range.split_once(':').ok_or_else(bad)?, k.ok_or_else(bad)?);
+        let num = |x: &str| x.trim().parse::<f64>().map_err(|_| bad());
+        out[k] = Some([num(lo)?, num(hi)?]);
+    }
+    Ok(out)
 }
 
 /// The rows of a measurement file (named columns; a missing one named).
@@ -135,7 +149,8 @@ fn measurements(text: &str, source: &str) -> Result<(Vec<Measurement>, Vec<u64>)
 }
 
 fn parameter(p: &Parameter) -> serde_json::Value {
-    serde_json::json!({"value": p.value, "stderr": p.stderr, "fixed": p.fixed, "profile": p.profile})
+    // The bounds as set ([0, null]: none; JSON has no infinity).
+    serde_json::json!({"value": p.value, "stderr": p.stderr, "fixed": p.fixed, "profile": p.profile, "bounds": p.bounds})
 }
 
 /// Every row of the JSON report, each made as it is written (a million rows
@@ -184,6 +199,7 @@ fn summary(shape: &str, source: &str, r: &FitReport, lines: &[u64]) -> String {
             let profile = p.profile.map(|[a, b]| format!(" (profile interval {a:.3e} to {b:.3e})"));
             format!("  {name:<16} {}{}\n", rounded(p.value, se), profile.unwrap_or_default())
         }
+        (false, None) if p.bounds.contains(&p.value) => format!("  {name:<16} {} (on its bound)\n", p.value),
         (false, None) => format!("  {name:<16} {} (not determined)\n", crate::output::num(p.value)),
     };
     let mut out = format!("{source}: {} rows fitted with the {shape} model\n", r.residuals.len());

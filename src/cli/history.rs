@@ -128,12 +128,7 @@ const DEFAULT_HISTORY_SPRINGS: usize = 4000;
 pub fn run(a: HistoryArgs) -> Result<()> {
     let stepping = match (a.method, a.steps_per_period) {
         (MethodArg::Stepping, m) => Some(m.unwrap_or(DEFAULT_STEPPING)),
-        (_, Some(_)) => {
-            return Err(Error::Parse {
-                context: "--steps-per-period".into(),
-                reason: "applies only with --method stepping".into(),
-            })
-        }
+        (_, Some(_)) => return Err(Error::parse("--steps-per-period", "applies only with --method stepping")),
         (_, None) => None,
     };
     let chosen = a.spring_at.map(|l| l.0).unwrap_or_default();

@@ -31,10 +31,10 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
         path.file_name().ok_or_else(|| Error::Parse { context: name.clone(), reason: "not a file name".into() })?;
     match std::fs::symlink_metadata(path) {
         Ok(m) if !m.is_file() && !m.file_type().is_symlink() => {
-            return Err(Error::Parse {
-                context: name.clone(),
-                reason: "exists and is not a regular file (a folder, named pipe or device is not replaced)".into(),
-            })
+            return Err(Error::parse(
+                name.clone(),
+                "exists and is not a regular file (a folder, named pipe or device is not replaced)",
+            ))
         }
         _ => {}
     }

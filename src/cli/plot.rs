@@ -47,30 +47,30 @@ pub fn run(a: PlotArgs) -> Result<()> {
     }
     let shape = crate::input::parse_shape(&a.shape)?;
     if a.velocity.over_t() {
-        return Err(crate::error::Error::Parse {
-            context: "--vhat-over-t".into(),
-            reason: "applies to table; plot draws against --vhat (or the phase)".into(),
-        });
+        return Err(crate::error::Error::parse(
+            "--vhat-over-t",
+            "applies to table; plot draws against --vhat (or the phase)",
+        ));
     }
     let (xs, vhat) = a.velocity.values();
     let phases = a.phase.as_ref().map_or(&[0.0][..], |p| &p.0[..]);
     crate::cmd::warn_degrees(phases);
     let system = a.system.system(a.springs)?;
     if system.is_some() && phases.len() > 1 {
-        return Err(crate::error::Error::Parse {
-            context: "--system-stiffness".into(),
-            reason: "a plot on a system draws against the velocity (one --phase)".into(),
-        });
+        return Err(crate::error::Error::parse(
+            "--system-stiffness",
+            "a plot on a system draws against the velocity (one --phase)",
+        ));
     }
     let (mut fig, fixed) = match (a.tangential_amp, phases, xs) {
         (Some(t), [_, _, ..], &[v]) if vhat => {
             (crate::figures::against_phase(&shape, &a.amp.0, v, t, phases)?, Fixed::Vhat(v))
         }
         (Some(_), [_, _, ..], _) => {
-            return Err(crate::error::Error::Parse {
-                context: "--phase".into(),
-                reason: "several phases are drawn against the phase at one --vhat".into(),
-            })
+            return Err(crate::error::Error::parse(
+                "--phase",
+                "several phases are drawn against the phase at one --vhat",
+            ))
         }
         (t, _, _) => {
             let tangential = t.map(|t| (t, phases[0]));
@@ -85,10 +85,10 @@ pub fn run(a: PlotArgs) -> Result<()> {
         let table = crate::validate::read_table(&text, &source)?;
         if let Some(named) = table.shape() {
             if crate::input::parse_shape(named)?.name() != shape.name() {
-                return Err(crate::error::Error::Parse {
-                    context: source,
-                    reason: format!("its points are for shape '{named}', the plot is for '{}'", shape.name()),
-                });
+                return Err(crate::error::Error::parse(
+                    source,
+                    format!("its points are for shape '{named}', the plot is for '{}'", shape.name()),
+                ));
             }
         }
         let name = std::path::Path::new(&source).file_name().map_or(source.clone(), |n| n.to_string_lossy().into());

@@ -295,9 +295,6 @@ pub fn run(a: SuiteArgs) -> Result<Outcome> {
                 Ok(Outcome::Negative)
             }
         }
-        _ => Err(crate::error::Error::Parse {
-            context: "suite".into(),
-            reason: "give exactly one of --out DIR (write) and --check DIR (verify)".into(),
-        }),
+        _ => Err(crate::error::Error::parse("suite", "give exactly one of --out DIR (write) and --check DIR (verify)")),
     }
 }

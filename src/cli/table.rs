@@ -90,10 +90,7 @@ fn grid(a: &TableArgs, on_system: bool) -> Result<Grid> {
 /// missing where none was found), standard_error (where none) and error_estimate.
 fn general_table(a: &TableArgs, shape: &fricosc::Shape, system: Option<fricosc::system::System>) -> Result<()> {
     if system.is_some() && (a.common.method.stepping_with(true)?.is_some() || a.velocity.over_t()) {
-        return Err(Error::Parse {
-            context: "--system-stiffness".into(),
-            reason: "is solved exactly, at --vbar or --vhat".into(),
-        });
+        return Err(Error::parse("--system-stiffness", "is solved exactly, at --vbar or --vhat"));
     }
     let g = grid(a, system.is_some())?;
     let stepping = if system.is_some() { None } else { a.common.method.stepping()? };

@@ -30,10 +30,7 @@ pub const MAX_PLANE_ROWS: u128 = 100_000;
 /// before any work, solved in parallel, written with the velocity as given.
 pub fn plane_table(a: &TableArgs, shape: &fricosc::Shape, ws: &List) -> Result<()> {
     if a.system.system_stiffness.is_some() || a.common.method.stepping()?.is_some() || a.velocity.over_t() {
-        return Err(Error::Parse {
-            context: "--transverse-amp".into(),
-            reason: "is solved exactly on a stiff system, at --vbar or --vhat".into(),
-        });
+        return Err(Error::parse("--transverse-amp", "is solved exactly on a stiff system, at --vbar or --vhat"));
     }
     let (vels, is_vhat) = a.velocity.values();
     let (ts, phases) = a.tangential.values(is_vhat)?.unwrap_or((vec![0.0], vec![0.0]));

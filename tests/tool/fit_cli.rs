@@ -25,7 +25,7 @@ fn fit_gives_the_parameters_back() {
     let v = json(&["fit", SYNTHETIC, "--format", "json", "--u0", "1e-6"], None);
     assert_eq!(
         v["parameters"]["u0"],
-        serde_json::json!({"value": 1e-6, "stderr": 0.0, "fixed": true, "profile": null})
+        serde_json::json!({"value": 1e-6, "stderr": 0.0, "fixed": true, "profile": null, "bounds": [0.0, null]})
     );
     let out = fricosc(&["fit", SYNTHETIC, "--format", "summary"], None);
     let text = String::from_utf8(out.stdout).unwrap();
@@ -169,4 +169,35 @@ fn an_outlier_is_named_by_its_line() {
     assert_eq!(out.status.code(), Some(1));
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.contains("outliers beyond 3.5 standard uncertainties: row 5 (line 10)\n"), "{text}");
+}
+
+/// `--bound NAME=LO:HI`: a bound that excludes the truth leaves the
+/// parameter on it, said in the summary and a verdict (exit 1), its bounds
+/// in the JSON; a malformed, doubled or unknown bound, or one on a held
+/// parameter, is refused (exit 2, one line, nothing on stdout).
+#[test]
+fn bounds_are_kept_and_named() {
+    let out = fricosc(&["fit", SYNTHETIC, "--format", "summary", "--bound", "mu0=0.1:0.3"], None);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains("0.3 (on its bound)") && text.contains("verdict: mu0 rests on its bound"), "{text}");
+    let out = fricosc(&["fit", SYNTHETIC, "--format", "json", "--bound", "stiffness-ratio=0.5:inf"], None);
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["parameters"]["stiffness_ratio"]["bounds"], serde_json::json!([0.5, null]));
+    for (bound, says) in [
+        ("mu0=0.3", "is not NAME=LO:HI"),
+        ("mu=0.1:0.3", "is not NAME=LO:HI"),
+        ("mu0=0.3:0.1", "above the lower bound"),
+        ("u0=a:1", "is not NAME=LO:HI"),
+    ] {
+        let out = fricosc(&["fit", SYNTHETIC, "--bound", bound], None);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{bound}: {err}");
+        assert!(out.stdout.is_empty() && err.lines().count() == 1 && err.contains(says), "{bound}: {err}");
+    }
+    let out = fricosc(&["fit", SYNTHETIC, "--bound", "mu0=0.1:0.5", "--bound", "mu0=0.2:0.4"], None);
+    assert_eq!(out.status.code(), Some(2));
+    let out = fricosc(&["fit", SYNTHETIC, "--bound", "mu0=0.1:0.5", "--mu0", "0.3"], None);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("not a held one"));
 }

@@ -228,10 +228,10 @@ impl Records {
             self.seen.borrow_mut().since = 0;
             let line = self.line(self.record.position());
             if self.record.as_slice().len() > MAX_LINE {
-                return Err(Error::Parse {
-                    context: self.source.clone(),
-                    reason: format!("line {line}: a record of more than {MAX_LINE} bytes"),
-                });
+                return Err(Error::parse(
+                    self.source.clone(),
+                    format!("line {line}: a record of more than {MAX_LINE} bytes"),
+                ));
             }
             for f in &self.record {
                 chunk.bytes.extend_from_slice(f);
@@ -260,10 +260,9 @@ impl Records {
     fn check(&self, chunk: &Chunk, shapes: &mut Shapes) -> Result<Vec<Job>> {
         let mut jobs = Vec::with_capacity(chunk.len());
         let read: Vec<Record> = (0..chunk.len()).map(|r| self.columns.read(chunk, r)).collect();
-        shapes.check(&read, &view, &mut jobs).map_err(|(j, reason)| Error::Parse {
-            context: self.source.clone(),
-            reason: format!("line {}: {reason}", chunk.lines[j]),
-        })?;
+        shapes
+            .check(&read, &view, &mut jobs)
+            .map_err(|(j, reason)| Error::parse(self.source.clone(), format!("line {}: {reason}", chunk.lines[j])))?;
         Ok(jobs)
     }
 

@@ -466,10 +466,9 @@ impl Lines {
 fn check_lines<'a>(lines: &'a Lines, shapes: &mut Shapes, source: &str) -> Result<(Vec<Parsed<'a>>, Vec<Job>)> {
     let rows = lines.rows();
     let mut jobs = Vec::with_capacity(rows.len());
-    shapes.check(&rows, &read, &mut jobs).map_err(|(j, reason)| Error::Parse {
-        context: source.into(),
-        reason: format!("line {}: {reason}", lines.numbers[j]),
-    })?;
+    shapes
+        .check(&rows, &read, &mut jobs)
+        .map_err(|(j, reason)| Error::parse(source, format!("line {}: {reason}", lines.numbers[j])))?;
     Ok((rows, jobs))
 }
 

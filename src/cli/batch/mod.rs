@@ -65,10 +65,7 @@ impl Format {
             Some("json") => Ok(Format::Json),
             Some("jsonl") => Ok(Format::JsonLines),
             Some("csv") => Ok(Format::Csv),
-            Some(other) => Err(Error::Parse {
-                context: "--format".into(),
-                reason: format!("'{other}' is not one of json, jsonl, csv"),
-            }),
+            Some(other) => Err(Error::parse("--format", format!("'{other}' is not one of json, jsonl, csv"))),
             None => {
                 let p = path.to_ascii_lowercase();
                 Ok(if p.ends_with(".jsonl") || p.ends_with(".ndjson") {

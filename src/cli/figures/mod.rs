@@ -334,10 +334,10 @@ pub fn user_with(
     system: Option<&fricosc::system::System>,
 ) -> Result<Figure> {
     if tangential.is_some() && !vhat {
-        return Err(Error::Parse {
-            context: "--tangential-amp".into(),
-            reason: "give the velocities as --vhat (vbar = vhat/amp is undefined without normal oscillation)".into(),
-        });
+        return Err(Error::parse(
+            "--tangential-amp",
+            "give the velocities as --vhat (vbar = vhat/amp is undefined without normal oscillation)",
+        ));
     }
     check_family(amps, xs.len(), "velocities")?;
     let what = if vhat { "vhat" } else { "vbar" };

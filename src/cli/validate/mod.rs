@@ -169,22 +169,12 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
     let at_rest = match a.at_rest.as_str() {
         "sliding" => AtRest::Sliding,
         "relaxed" => AtRest::Relaxed,
-        other => {
-            return Err(Error::Parse {
-                context: "--at-rest".into(),
-                reason: format!("'{other}' is neither 'sliding' nor 'relaxed'"),
-            })
-        }
+        other => return Err(Error::parse("--at-rest", format!("'{other}' is neither 'sliding' nor 'relaxed'"))),
     };
     let (mu0, tolerance) = (a.mu0, a.tolerance);
     let format = match a.format.as_deref() {
         Some(f @ ("summary" | "json" | "csv")) => f.to_string(),
-        Some(other) => {
-            return Err(Error::Parse {
-                context: "--format".into(),
-                reason: format!("'{other}' is not one of summary, json, csv"),
-            })
-        }
+        Some(other) => return Err(Error::parse("--format", format!("'{other}' is not one of summary, json, csv"))),
         // A person at a terminal reads the summary; a pipe gets JSON.
         None if io::stdout().is_terminal() => "summary".into(),
         None => "json".into(),
@@ -203,10 +193,7 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
         return run_history(&a, h, mu0, tolerance, &format);
     }
     if a.files.len() != 1 || a.target.is_some() || a.plot.is_some() {
-        return Err(Error::Parse {
-            context: "validate".into(),
-            reason: "several files, --target and --plot need --series".into(),
-        });
+        return Err(Error::parse("validate", "several files, --target and --plot need --series"));
     }
     let (text, source) = read_input(Some(a.files[0].clone()))?;
     let table = read_table(&text, &source)?;
@@ -268,10 +255,7 @@ fn choose_shape(file: Option<&str>, option: Option<&str>, source: &str) -> Resul
         (Some(f), Some(o)) => {
             let (fs, os) = (crate::input::parse_shape(f)?, crate::input::parse_shape(o)?);
             if fs.name() != os.name() {
-                return Err(Error::Parse {
-                    context: source.into(),
-                    reason: format!("the table is for shape '{f}', --shape says '{o}'"),
-                });
+                return Err(Error::parse(source, format!("the table is for shape '{f}', --shape says '{o}'")));
             }
             (fs, ShapeSource::File)
         }
@@ -284,19 +268,13 @@ fn choose_shape(file: Option<&str>, option: Option<&str>, source: &str) -> Resul
 /// `FILE@N` (the resolution after the last `@`), or a file named like
 /// `run@1000.csv` (the digits after the last `@` of its name).
 fn file_and_resolution(arg: &str) -> Result<(String, f64)> {
-    let bad = || Error::Parse {
-        context: arg.into(),
-        reason: "a series file needs its resolution: run@1000.csv or run.csv@1000".into(),
-    };
+    let bad = || Error::parse(arg, "a series file needs its resolution: run@1000.csv or run.csv@1000");
     let (head, tail) = arg.rsplit_once('@').ok_or_else(bad)?;
     let checked = |n: f64| {
         if n.is_finite() && n > 0.0 {
             Ok(n)
         } else {
-            Err(Error::Parse {
-                context: arg.into(),
-                reason: format!("the resolution {n:?} must be a finite number > 0"),
-            })
+            Err(Error::parse(arg, format!("the resolution {n:?} must be a finite number > 0")))
         }
     };
     if let Ok(n) = tail.trim().parse::<f64>() {
@@ -332,10 +310,10 @@ fn run_series(a: &ValidateArgs, check: &Check, mu0: Option<f64>, format: &str) -
         let (shape, src) = choose_shape(table.shape(), a.shape.as_deref(), &source)?;
         if let Some((s, _)) = &chosen {
             if s.name() != shape.name() {
-                return Err(Error::Parse {
-                    context: source,
-                    reason: format!("its shape '{}' differs from the series' '{}'", shape.name(), s.name()),
-                });
+                return Err(Error::parse(
+                    source,
+                    format!("its shape '{}' differs from the series' '{}'", shape.name(), s.name()),
+                ));
             }
         }
         chosen = Some((shape, src));
@@ -386,10 +364,7 @@ fn history_of(
     drop(text);
     let time = if c.is_tau { TimeAxis::Phase(&c.time) } else { TimeAxis::Time { t: &c.time, omega: h.omega } };
     if c.is_tau && h.omega.is_some() {
-        return Err(Error::Parse {
-            context: source,
-            reason: "--omega is given, but the time column is the phase tau".into(),
-        });
+        return Err(Error::parse(source, "--omega is given, but the time column is the phase tau"));
     }
     let body = c.body.as_ref().map(|(l, v)| (&l[..], &v[..]));
     let data = HistoryData { time, tangential: &c.tangential, normal: c.normal.as_deref(), body };
@@ -402,10 +377,7 @@ fn history_of(
 
 fn run_history(a: &ValidateArgs, h: &HistoryArgs, mu0: Option<f64>, tolerance: f64, format: &str) -> Result<Outcome> {
     if a.files.len() != 1 {
-        return Err(Error::Parse {
-            context: "--history".into(),
-            reason: "takes one file (several with --series)".into(),
-        });
+        return Err(Error::parse("--history", "takes one file (several with --series)"));
     }
     let (v, read_as) = history_of(a, h, &a.files[0], mu0, tolerance)?;
     let body = match format {

@@ -446,9 +446,10 @@ fn validate<'py>(
 /// `fricosc fit`'s report as a dict: the model fitted to the rows `(v0, du,
 /// omega, mu, sigma)` with the `fixed` parameters `(mu0, kx/kz, u0)` held,
 /// on the rig's `system` `(kappa, Omega, zeta)` if any (its `kappa` fitted
-/// from there where `fit_system_stiffness`).
+/// from there where `fit_system_stiffness`), each fitted parameter within
+/// its `bounds` `[lo, hi]` where given (in the order of `fricosc::fit::NAMES`).
 #[pyfunction]
-#[pyo3(signature = (shape, v0, du, omega, mu, sigma, fixed, system=None, load=None, fit_system_stiffness=false))]
+#[pyo3(signature = (shape, v0, du, omega, mu, sigma, fixed, system=None, load=None, fit_system_stiffness=false, bounds=None))]
 #[allow(clippy::too_many_arguments)]
 fn fit<'py>(
     py: Python<'py>,
@@ -462,6 +463,7 @@ fn fit<'py>(
     system: Option<(f64, f64, f64)>,
     load: Option<PyReadonlyArray1<'py, f64>>,
     fit_system_stiffness: bool,
+    bounds: Option<[Option<[f64; 2]>; 4]>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let system = system.map(|(k, om, z)| fricosc::system::System::new(k, om, z)).transpose().map_err(to_py)?;
     let (v0, du, omega, mu) = (v0.as_slice()?, du.as_slice()?, omega.as_slice()?, mu.as_slice()?);
@@ -483,7 +485,9 @@ fn fit<'py>(
             load: load.map(|l| l[i]),
         })
         .collect();
-    let fixed = fricosc::fit::Fixed { mu0: fixed.0, stiffness_ratio: fixed.1, u0: fixed.2, fit_system_stiffness };
+    let bounds = bounds.unwrap_or_default();
+    let fixed =
+        fricosc::fit::Fixed { mu0: fixed.0, stiffness_ratio: fixed.1, u0: fixed.2, fit_system_stiffness, bounds };
     let shape = &shape.inner;
     let r = interruptible(py, || fricosc::fit::fit(shape, &rows, &fixed))?;
     pythonize::pythonize(py, &r).map_err(serialise_err)

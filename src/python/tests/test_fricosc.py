@@ -690,3 +690,9 @@ def test_fit_is_the_command_lines() -> None:
     assert mine.reference_load == theirs["reference_load"] == 1.0
     assert all(mine.params[k] == theirs["parameters"][k]["value"] for k in mine.names)
     assert abs(mine.params["u0"] / 1e-6 - 1) < 1e-7 and frame.shape[0] == 27
+    # Bounds, as --bound: mu0 kept below its truth rests on the bound, named.
+    bound = fricosc.fit(frame, bounds={"mu0": (0.1, 0.3)})
+    theirs = json.loads(cli("fit", str(path), "--bound", "mu0=0.1:0.3", "--format", "json", status=1))
+    assert bound.verdicts == theirs["verdicts"] and bound.params["mu0"] == 0.3 and bound.stderr["mu0"] is None
+    with pytest.raises(fricosc.InputError, match="fit's parameters are"):
+        fricosc.fit(frame, bounds={"mu": (0.1, 0.3)})

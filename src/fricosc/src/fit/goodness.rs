@@ -2,6 +2,7 @@
 //! the rows far from the model, and where the model does not fit, its
 //! likely cause, each tried by a refit.
 
+use super::bounds::Bounds;
 use super::{fit_checked, FitReport, Measurement, NAMES, NP};
 use crate::error::Result;
 use crate::shape::Shape;
@@ -31,7 +32,12 @@ fn p_value(chi2: f64, dof: usize) -> Option<f64> {
 
 /// The goodness of fit of `r` (fitted to `rows` with `fixed` held): its
 /// normalised residuals, outliers, p-value, notes and verdicts.
-pub(super) fn judge(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; NP], r: &mut FitReport) -> Result<()> {
+pub(super) fn judge(
+    shape: &Shape,
+    rows: &[Measurement],
+    (given, bounds): (&[Option<f64>; NP], &Bounds),
+    r: &mut FitReport,
+) -> Result<()> {
     let scale = if r.weighted { 1.0 } else { r.reduced_chi2.sqrt() };
     r.normalised_residuals = r
         .residuals
@@ -50,7 +56,7 @@ pub(super) fn judge(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; N
     if r.weighted {
         r.p_value = p_value(r.chi2, r.dof);
         if let Some(p) = r.p_value.filter(|&p| p < SIGNIFICANCE) {
-            let verdict = bad_fit(shape, rows, given, r, p);
+            let verdict = bad_fit(shape, rows, (given, bounds), r, p);
             r.verdicts.push(verdict);
             return Ok(());
         }
@@ -83,14 +89,20 @@ fn list(rows: &[usize]) -> String {
 /// with the causes that a refit confirms: without the outlying rows, with a
 /// held parameter freed, or with another shape, the p-value reaches 0.01
 /// (on at most [`CAUSE_ROWS`] rows).
-fn bad_fit(shape: &Shape, all: &[Measurement], given: &[Option<f64>; NP], r: &FitReport, p: f64) -> String {
+fn bad_fit(
+    shape: &Shape,
+    all: &[Measurement],
+    (given, bounds): (&[Option<f64>; NP], &Bounds),
+    r: &FitReport,
+    p: f64,
+) -> String {
     // The refits on at most CAUSE_ROWS rows, evenly spread, the outliers among them.
     let every = all.len().div_ceil(CAUSE_ROWS);
     let rows: Vec<Measurement> = all.iter().step_by(every).copied().collect();
     let outlying: Vec<usize> = r.outliers.iter().filter(|&&i| i % every == 0).map(|&i| i / every).collect();
     let refit = |shape: &Shape, rows: &[Measurement], given: &[Option<f64>; NP]| {
         let free = given.iter().filter(|g| g.is_none()).count();
-        let f = (rows.len() > free).then(|| fit_checked(shape, rows, given).ok()).flatten()?;
+        let f = (rows.len() > free).then(|| fit_checked(shape, rows, given, bounds).ok()).flatten()?;
         let p = p_value(f.chi2, f.dof)?;
         (p >= SIGNIFICANCE).then_some((f, p))
     };

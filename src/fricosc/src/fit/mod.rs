@@ -4,7 +4,8 @@
 //! `mu0`, `kx/kz` (the stiffness ratio) and `u0`, each fitted or fixed, and
 //! on a rig's system its stiffness `kappa = K/kx` ([`NAMES`]): held at the
 //! rows' values, or fitted ([`Fixed::fit_system_stiffness`]). Every
-//! parameter is positive, fitted in its logarithm. A system's `kappa` and
+//! parameter is positive, fitted in its logarithm, within the bounds the
+//! user sets ([`Fixed::bounds`]; [`bounds`]). A system's `kappa` and
 //! `Omega = omega/sqrt(kx/m)` are ratios to the contact's `kx`: held, they
 //! stay as given while `kx/kz` is fitted (the rig's `K` and `m` taken to
 //! follow `kx`); to hold `K` and `m` instead, hold `kx/kz` at the value they
@@ -30,6 +31,7 @@
 //! residual exceeds [`OUTLIER`] are named. Without `sigma` the scale of the
 //! errors is the scatter's (a note says what that assumes).
 
+mod bounds;
 mod goodness;
 mod load;
 mod profile;
@@ -85,6 +87,10 @@ pub struct Fixed {
     /// row on a system; the rows' own `kappa` is the start, their frequency
     /// ratio and damping held). Otherwise each row's system is held as given.
     pub fit_system_stiffness: bool,
+    /// Bounds `[lo, hi]` on fitted parameters, in the order of [`NAMES`]
+    /// (`0 <= lo < hi <= inf`; none: `(0, inf)`): the fit keeps within them,
+    /// and a parameter that ends on one is named in a verdict.
+    pub bounds: [Option<[f64; 2]>; NP],
 }
 
 /// One parameter's value and standard error.
@@ -94,7 +100,8 @@ pub struct Fixed {
 pub struct Parameter {
     /// Its name ([`NAMES`]).
     pub name: &'static str,
-    /// The open interval it lies in (every parameter is positive: `(0, inf)`).
+    /// The interval it lies in: `[0, inf)` (every parameter is positive),
+    /// or the bounds set ([`Fixed::bounds`]).
     pub bounds: [f64; 2],
     /// The fitted (or fixed) value.
     pub value: f64,
@@ -338,6 +345,7 @@ pub fn fit(shape: &Shape, rows: &[Measurement], fixed: &Fixed) -> Result<FitRepo
         }
     }
     let given = given(rows, fixed)?;
+    let bounds = bounds::checked(fixed, &given)?;
     let free = (0..NP).filter(|&k| given[k].is_none()).count();
     check(rows, free)?;
     if rows.iter().any(|r| r.sigma.is_some()) && rows.iter().any(|r| r.sigma.is_none()) {
@@ -347,10 +355,10 @@ pub fn fit(shape: &Shape, rows: &[Measurement], fixed: &Fixed) -> Result<FitRepo
     if reference.is_some() {
         load::exponent(shape)?;
     }
-    let mut r = fit_checked(shape, &rows, &given)?;
+    let mut r = fit_checked(shape, &rows, &given, &bounds)?;
     r.reference_load = reference;
-    profile::profile(shape, &rows, &given, &mut r);
-    goodness::judge(shape, &rows, &given, &mut r)?;
+    profile::profile(shape, &rows, (&given, &bounds), &mut r);
+    goodness::judge(shape, &rows, (&given, &bounds), &mut r)?;
     Ok(r)
 }
 
@@ -381,8 +389,14 @@ fn median_kappa(rows: &[Measurement]) -> f64 {
     k.get(k.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
-/// [`fit`] of checked inputs, without the goodness of fit's verdicts.
-fn fit_checked(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; NP]) -> Result<FitReport> {
+/// [`fit`] of checked inputs within `bounds`, without the goodness of fit's
+/// verdicts; a parameter resting on a bound is reported as [`bounds`] says.
+fn fit_checked(
+    shape: &Shape,
+    rows: &[Measurement],
+    given: &[Option<f64>; NP],
+    bounds: &bounds::Bounds,
+) -> Result<FitReport> {
     let free: Vec<usize> = (0..NP).filter(|&k| given[k].is_none()).collect();
     let weighted = rows.iter().any(|r| r.sigma.is_some());
     let sigma: Vec<f64> = rows.iter().map(|r| r.sigma.unwrap_or(1.0)).collect();
@@ -401,13 +415,23 @@ fn fit_checked(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; NP]) -
     };
     let mut start = start(shape, &few, given, &few_residuals)?;
     start[3] = given[3].unwrap_or_else(|| median_kappa(rows));
+    let start = bounds::project(start, &free, bounds);
     let (p, iterations, converged) =
-        if free.is_empty() { (start, 0, true) } else { levenberg_marquardt(start, &free, &residuals)? };
+        if free.is_empty() { (start, 0, true) } else { levenberg_marquardt(start, &free, bounds, &residuals)? };
     if rows.iter().any(|r| r.load.is_some()) && !residuals(&p)?.iter().all(|x| x.is_finite()) {
         return Err(load::unheld());
     }
-    let mut r = report(shape, rows, p, (&free, &listed(given)), weighted, iterations, &residuals)?;
+    let resting = bounds::resting(&p, &free, bounds);
+    let moving: Vec<usize> = free.iter().copied().filter(|k| !resting.contains(k)).collect();
+    let mut r = report(shape, rows, p, (&moving, &listed(given)), weighted, iterations, &residuals)?;
     r.converged = converged;
+    for (k, q) in listed(given).into_iter().zip(r.parameters.iter_mut()) {
+        q.bounds = bounds[k];
+        if resting.contains(&k) {
+            (q.fixed, q.stderr) = (false, None);
+        }
+    }
+    r.verdicts.extend(resting.iter().map(|&k| bounds::verdict(k, p[k])));
     Ok(r)
 }
 
@@ -460,28 +484,44 @@ fn jacobian(p: &Values, free: &[usize], n: usize, res: &Residuals) -> Result<DMa
     Ok(j)
 }
 
-/// Levenberg-Marquardt in the logarithms of the free parameters from `p`:
-/// the parameters, the iterations, and whether it converged (a step below
-/// 1e-12, a chi-square that no longer falls, or no step that lowers it).
-fn levenberg_marquardt(mut p: Values, free: &[usize], res: &Residuals) -> Result<(Values, usize, bool)> {
+/// Levenberg-Marquardt in the logarithms of the free parameters from `p`,
+/// each step projected onto `bounds`: the parameters, the iterations, and
+/// whether it converged (a step below 1e-12, a chi-square that no longer
+/// falls, or no step that lowers it).
+fn levenberg_marquardt(
+    mut p: Values,
+    free: &[usize],
+    bounds: &bounds::Bounds,
+    res: &Residuals,
+) -> Result<(Values, usize, bool)> {
     let mut r = res(&p)?;
     let mut chi2 = r.norm_squared();
     let mut lambda = 1e-3;
     for it in 1..=MAX_ITERATIONS {
         let j = jacobian(&p, free, r.len(), res)?;
         let jtj = j.transpose() * &j;
-        let g = j.transpose() * &r;
+        let mut g = j.transpose() * &r;
+        let held = bounds::held_columns(&p, free, bounds, g.as_slice());
         let mut improved = false;
         while lambda < 1e16 {
             let mut a = jtj.clone();
             for d in 0..free.len() {
                 a[(d, d)] += lambda * jtj[(d, d)].max(1e-300);
             }
+            for &c in &held {
+                // No step for a parameter the descent pushes beyond its bound.
+                a.row_mut(c).fill(0.0);
+                a.column_mut(c).fill(0.0);
+                (a[(c, c)], g[c]) = (1.0, 0.0);
+            }
             let Some(step) = a.lu().solve(&(-&g)) else { break };
             let mut q = p;
             for (c, &k) in free.iter().enumerate() {
                 q[k] *= step[c].exp();
             }
+            // Projected onto the bounds: the step taken is what is left of it.
+            let q = bounds::project(q, free, bounds);
+            let taken = free.iter().map(|&k| (q[k] / p[k]).ln().abs()).fold(0.0, f64::max);
             let rq = match res(&q) {
                 Ok(rq) => rq,
                 Err(_) => {
@@ -491,7 +531,7 @@ fn levenberg_marquardt(mut p: Values, free: &[usize], res: &Residuals) -> Result
             };
             let chi2q = rq.norm_squared();
             if chi2q <= chi2 {
-                let small = step.amax() < 1e-12 || chi2 - chi2q <= 1e-15 * chi2;
+                let small = taken < 1e-12 || chi2 - chi2q <= 1e-15 * chi2;
                 (p, r, chi2, improved) = (q, rq, chi2q, true);
                 lambda = (lambda / 10.0).max(1e-12);
                 if small {

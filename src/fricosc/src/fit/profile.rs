@@ -10,6 +10,7 @@
 //! than [`DIFFER`] from one standard error, the profile interval is reported
 //! beside the Gaussian one.
 
+use super::bounds::Bounds;
 use super::{fit_checked, FitReport, Measurement, NAMES, NP};
 use crate::shape::Shape;
 
@@ -34,7 +35,12 @@ const PROFILE_ROWS: usize = 20_000;
 /// The profile of each fitted parameter of `r` (module docs): undetermined
 /// ones lose their standard error (a verdict says why), skewed ones get
 /// their profile interval.
-pub(super) fn profile(shape: &Shape, rows: &[Measurement], given: &[Option<f64>; NP], r: &mut FitReport) {
+pub(super) fn profile(
+    shape: &Shape,
+    rows: &[Measurement],
+    (given, bounds): (&[Option<f64>; NP], &Bounds),
+    r: &mut FitReport,
+) {
     let scale = if r.weighted { 1.0 } else { r.reduced_chi2 };
     if !r.weighted && r.chi2 == 0.0 && given.iter().any(Option::is_none) {
         for k in (0..NP).filter(|&k| given[k].is_none()) {
@@ -59,7 +65,7 @@ pub(super) fn profile(shape: &Shape, rows: &[Measurement], given: &[Option<f64>;
         let rise = |t: f64| -> Option<f64> {
             let mut held = *given;
             held[k] = Some(p.value * t.exp());
-            let f = fit_checked(shape, rows, &held).ok()?;
+            let f = fit_checked(shape, rows, &held, bounds).ok()?;
             Some(((f.chi2 - r.chi2) / scale).max(0.0))
         };
         let step = se / p.value;

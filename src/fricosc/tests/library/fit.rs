@@ -481,3 +481,55 @@ fn each_rows_indentation_follows_the_force_law() {
         assert!((got / want - 1.0).abs() < 2e-15, "load {l}: {got:e} vs {want:e}");
     }
 }
+
+/// Bounds on fitted parameters (`Fixed::bounds`). One that holds the truth
+/// changes nothing (the exact rows' parameters to 1e-7, no verdict, the
+/// bounds reported); one that excludes it leaves the parameter on the bound,
+/// named in a verdict without a standard error, and the others where a fit
+/// with it held there puts them (the constrained minimum: at an active bound
+/// the others minimise with it fixed); a start outside is moved in (`u0`
+/// above its truth); bad bounds are refused by name.
+#[test]
+fn bounds_keep_a_parameter_within_them_and_name_it_on_one() {
+    let rows = synthetic();
+    let within = |k: usize, b: [f64; 2]| {
+        let mut bounds = [None; 4];
+        bounds[k] = Some(b);
+        fit(&Shape::flat(), &rows, &Fixed { bounds, ..Fixed::default() })
+    };
+    let r = within(0, [0.1, 0.5]).unwrap();
+    assert!(r.verdicts.is_empty() && (r.parameters[0].value / 0.35 - 1.0).abs() < 1e-7, "{r:?}");
+    assert_eq!(r.parameters[0].bounds, [0.1, 0.5]);
+    assert_eq!(r.parameters[1].bounds, [0.0, f64::INFINITY]);
+    for (k, bound, held) in [
+        (0, [0.1, 0.3], Fixed { mu0: Some(0.3), ..Fixed::default() }),
+        (2, [2e-6, 1e-5], Fixed { u0: Some(2e-6), ..Fixed::default() }),
+    ] {
+        let on = within(k, bound).unwrap();
+        let h = fit(&Shape::flat(), &rows, &held).unwrap();
+        let p = &on.parameters[k];
+        assert!(p.value == bound[0] || p.value == bound[1], "{p:?}");
+        assert!(p.stderr.is_none() && !p.fixed && on.converged, "{on:?}");
+        assert!(on.verdicts.iter().any(|v| v.contains(&format!("{} rests on its bound", p.name))), "{:?}", on.verdicts);
+        for j in (0..3).filter(|&j| j != k) {
+            let (a, b) = (&on.parameters[j], &h.parameters[j]);
+            assert!((a.value / b.value - 1.0).abs() < 1e-6, "{a:?} {b:?}");
+            let (sa, sb) = (a.stderr.unwrap(), b.stderr.unwrap());
+            assert!((sa / sb - 1.0).abs() < 1e-3, "{a:?} {b:?}");
+        }
+        assert!((on.chi2 / h.chi2 - 1.0).abs() < 1e-6, "{} {}", on.chi2, h.chi2);
+    }
+    for (k, b, says) in [
+        (0, [0.5, 0.3], "above the lower bound"),
+        (0, [f64::NAN, 0.3], "finite and >= 0"),
+        (1, [-1.0, 2.0], "finite and >= 0"),
+        (2, [1e-6, f64::NAN], "above the lower bound"),
+    ] {
+        let e = within(k, b).unwrap_err().to_string();
+        assert!(e.contains(says), "{e}");
+    }
+    let mut bounds = [None; 4];
+    bounds[0] = Some([0.1, 0.5]);
+    let e = fit(&Shape::flat(), &rows, &Fixed { mu0: Some(0.3), bounds, ..Fixed::default() }).unwrap_err();
+    assert!(e.to_string().contains("not a held one"), "{e}");
+}

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Any, Dict, List, Optional
+from typing import Any, Dict, List, Mapping, Optional, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -57,6 +57,7 @@ def fit(
     frequency_ratio: Optional[float] = None,
     damping: Optional[float] = None,
     fit_system_stiffness: bool = False,
+    bounds: Optional[Mapping[str, Tuple[float, float]]] = None,
 ) -> FitResult:
     """Fit the model to measured friction, as ``fricosc fit`` does: ``table``
     (a dict of arrays or a DataFrame) has the columns ``v0`` (m/s), ``du`` (m),
@@ -66,6 +67,9 @@ def fit(
     ``mu0``, ``stiffness_ratio`` (kx/kz) and ``u0`` (m) are fitted unless given;
     ``system_stiffness`` (``frequency_ratio``, ``damping``): the rig's system, held;
     with ``fit_system_stiffness`` its stiffness is fitted from ``system_stiffness``.
+    ``bounds``: ``{name: (lo, hi)}`` keeps a fitted parameter within them
+    (``fricosc fit --bound``; ``hi`` may be ``inf``); one that ends on its
+    bound is named in a verdict and has no standard error.
 
     >>> rows = {"v0": [1e-5, 2e-5, 4e-5, 6e-5, 2e-4], "du": [5e-7] * 5, "frequency": [100] * 5,
     ...         "mu": [0.21, 0.245, 0.28, 0.295, 0.3]}
@@ -96,9 +100,15 @@ def fit(
         return None if x is None else _scalar(x, n)
 
     fixed = (held(mu0, "mu0"), held(stiffness_ratio, "stiffness_ratio"), held(u0, "u0"))
+    order = ("mu0", "stiffness_ratio", "u0", "system_stiffness")
+    for name in bounds or {}:
+        if name not in order:
+            raise InputError(f"fit: bounds for '{name}': fit's parameters are {', '.join(order)}")
+    given = dict(bounds or {})
+    ranges = tuple((float(given[n][0]), float(given[n][1])) if n in given else None for n in order)
     report: Dict[str, Any] = _fricosc.fit(
         _core(shape), col("v0"), col("du"), np.ascontiguousarray(omega), col("mu"),
         col("sigma") if "sigma" in names else None, fixed, _system(system_stiffness, frequency_ratio, damping),
-        col("load") if "load" in names else None, bool(fit_system_stiffness),
+        col("load") if "load" in names else None, bool(fit_system_stiffness), ranges,
     )
     return FitResult(report)

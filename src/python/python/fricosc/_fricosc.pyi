@@ -141,4 +141,5 @@ def fit(
     system: Optional[Tuple[float, float, float]] = None,
     load: Optional[npt.NDArray[np.float64]] = None,
     fit_system_stiffness: bool = False,
+    bounds: Optional[Tuple[Optional[Tuple[float, float]], ...]] = None,
 ) -> Dict[str, Any]: ...
