@@ -113,7 +113,9 @@ pub(super) fn profile(
         };
         if ((hi / step) - 1.0).abs() > DIFFER || ((lo / step) - 1.0).abs() > DIFFER {
             if let Some(q) = r.parameter_mut(k) {
-                q.profile = Some([p.value * (-lo).exp(), p.value * hi.exp()]);
+                // Within the bounds set (the held fits beyond them are the model's, not the fit's).
+                let [b0, b1] = bounds[k];
+                q.profile = Some([(p.value * (-lo).exp()).max(b0), (p.value * hi.exp()).min(b1)]);
             }
         }
     }

@@ -532,4 +532,12 @@ fn bounds_keep_a_parameter_within_them_and_name_it_on_one() {
     bounds[0] = Some([0.1, 0.5]);
     let e = fit(&Shape::flat(), &rows, &Fixed { mu0: Some(0.3), bounds, ..Fixed::default() }).unwrap_err();
     assert!(e.to_string().contains("not a held one"), "{e}");
+    // With mu0 held at 0.3, kx/kz's profile interval (0.82 to 1.05 about
+    // 0.917) ends at bounds inside it.
+    let mut bounds = [None; 4];
+    bounds[1] = Some([0.85, 1.0]);
+    let r = fit(&Shape::flat(), &rows, &Fixed { mu0: Some(0.3), bounds, ..Fixed::default() }).unwrap();
+    let p = &r.parameters[1];
+    assert!(p.value > 0.85 && p.value < 1.0 && r.verdicts.is_empty(), "{r:?}");
+    assert_eq!(p.profile, Some([0.85, 1.0]), "{p:?}");
 }
