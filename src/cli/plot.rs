@@ -31,6 +31,9 @@ pub struct PlotArgs {
     #[arg(long, allow_hyphen_values = true, value_parser = list, requires = "tangential_amp")]
     pub phase: Option<List>,
     /// The body on a system with mass and stiffness: the curves are its attractors'.
+    /// Across the sliding direction (with --vhat): the curves are the plane's mu_ratio.
+    #[command(flatten)]
+    pub transverse: crate::cmd::TransversePoint,
     #[command(flatten)]
     pub system: crate::cmd::SystemPoint,
     /// With --system-stiffness, a curved body: its springs (32 to 16384, default 256).
@@ -62,6 +65,11 @@ pub fn run(a: PlotArgs) -> Result<()> {
             "a plot on a system draws against the velocity (one --phase)",
         ));
     }
+    let transverse = a.transverse.oscillation()?;
+    if transverse.is_some() && (system.is_some() || phases.len() > 1 || !vhat) {
+        let reason = "a plot across the sliding direction draws against --vhat, stiff, at one --phase";
+        return Err(crate::error::Error::parse("--transverse-amp", reason));
+    }
     let (mut fig, fixed) = match (a.tangential_amp, phases, xs) {
         (Some(t), [_, _, ..], &[v]) if vhat => {
             (crate::figures::against_phase(&shape, &a.amp.0, v, t, phases)?, Fixed::Vhat(v))
@@ -75,7 +83,7 @@ pub fn run(a: PlotArgs) -> Result<()> {
         (t, _, _) => {
             let tangential = t.map(|t| (t, phases[0]));
             (
-                crate::figures::user_with(&shape, &a.amp.0, xs, vhat, tangential, system.as_ref())?,
+                crate::figures::user_with(&shape, &a.amp.0, xs, vhat, (tangential, transverse), system.as_ref())?,
                 Fixed::Phase(phases[0]),
             )
         }
@@ -92,19 +100,20 @@ pub fn run(a: PlotArgs) -> Result<()> {
             }
         }
         let name = std::path::Path::new(&source).file_name().map_or(source.clone(), |n| n.to_string_lossy().into());
-        let (rows, x_as_is) = match a.tangential_amp {
-            Some(t) if table.is_oscillation() => {
-                (oscillation_points(&table.oscillation_rows(a.mu0, &source)?, t, fixed, &source)?, true)
+        let across = transverse.map_or((0.0, 0.0), |w| (w.amp(), w.phase()));
+        let (rows, x_as_is) = match (a.tangential_amp, transverse) {
+            (None, None) if table.is_oscillation() => {
+                return Err(crate::error::Error::parse(
+                    source,
+                    "its rows are under oscillation (column 'tangential_amp' or 'transverse_amp'): plot them with \
+                     --vhat and --tangential-amp (--phase) or --transverse-amp (--transverse-phase)",
+                ))
             }
-            None if table.is_oscillation() => {
-                return Err(crate::error::Error::Parse {
-                    context: source,
-                    reason: "its rows are under oscillation in the sliding direction (column 'tangential_amp'): \
-                             plot them with --vhat, --tangential-amp and --phase"
-                        .into(),
-                })
+            (None, None) => (table.rows(a.mu0, &source)?, false),
+            (t, _) => {
+                let rows = table.oscillation_rows(a.mu0, &source)?;
+                (oscillation_points(&rows, (t.unwrap_or(0.0), across), fixed, &source)?, true)
             }
-            _ => (table.rows(a.mu0, &source)?, false),
         };
         crate::figures::overlay(&mut fig, &rows, x_as_is, &name)?;
     }
@@ -123,10 +132,15 @@ enum Fixed {
     Vhat(f64),
 }
 
-/// `(x, amp, mu_ratio)` of a table under oscillation in the sliding direction
-/// on the plot's axis (`vhat`, or the phase reduced to `[0, 2 pi)` as the
-/// solver reduces it), every row at the plot's `T` and fixed value.
-fn oscillation_points(rows: &[OscillationInput], t: f64, fixed: Fixed, source: &str) -> Result<Vec<(f64, f64, f64)>> {
+/// `(x, amp, mu_ratio)` of a table under oscillation on the plot's axis
+/// (`vhat`, or the phase reduced to `[0, 2 pi)` as the solver reduces it),
+/// every row at the plot's `T`, fixed value and `(W, psi)` across.
+fn oscillation_points(
+    rows: &[OscillationInput],
+    (t, across): (f64, (f64, f64)),
+    fixed: Fixed,
+    source: &str,
+) -> Result<Vec<(f64, f64, f64)>> {
     let reduce = |p: f64| {
         let c = fricosc::Conditions::vhat(0.0, 0.0).and_then(|c| c.with_tangential(1.0, p));
         c.ok().and_then(|c| c.tangential()).map_or(p, |x| x.1)
@@ -139,18 +153,18 @@ fn oscillation_points(rows: &[OscillationInput], t: f64, fixed: Fixed, source: &
         Fixed::Phase(_) => (reduce(r.phase), r.vhat),
         Fixed::Vhat(_) => (r.vhat, reduce(r.phase)),
     };
-    // Rows across the sliding direction are not overlaid (validate compares them).
-    match rows.iter().position(|r| r.tangential_amp != t || held(r).0 != plot || r.transverse_amp != 0.0) {
-        Some(i) => Err(crate::error::Error::Parse {
-            context: source.into(),
-            reason: format!(
-                "row {i} is at tangential_amp {}, {other} {}, transverse_amp {}; the plot is at --tangential-amp {t}, \
-                 --{other} {plot}, no oscillation across (overlay one oscillation at a time)",
+    let off = |r: &OscillationInput| (r.transverse_amp, r.transverse_phase) != across;
+    match rows.iter().position(|r| r.tangential_amp != t || held(r).0 != plot || off(r)) {
+        Some(i) => Err(crate::error::Error::parse(
+            source,
+            format!(
+                "row {i} is at tangential_amp {}, {other} {}, across {:?}; the plot is at --tangential-amp {t}, \
+                 --{other} {plot}, across {across:?} (overlay one oscillation at a time)",
                 rows[i].tangential_amp,
                 held(&rows[i]).0,
-                rows[i].transverse_amp
+                (rows[i].transverse_amp, rows[i].transverse_phase)
             ),
-        }),
+        )),
         None => Ok(rows.iter().map(|r| (held(r).1, r.amp, r.mu_ratio)).collect()),
     }
 }

@@ -280,3 +280,32 @@ fn validate_compares_a_table_in_the_plane() {
     let peer = v["rows"][0]["transverse_peer_error"].as_f64().unwrap();
     assert!(peer != 0.0 && peer.abs() < 1e-2, "{v}");
 }
+
+/// `plot --transverse-amp`: the plane's curves against `vhat`, a table of
+/// the same oscillation overlaid (`table --transverse-amp`'s CSV), one at
+/// another `W` refused naming its row; on a system, against `vbar` or at
+/// several phases, refused by name.
+#[test]
+fn plot_draws_the_plane_and_overlays_its_table() {
+    let dir = tempfile::tempdir().unwrap();
+    let table = dir.path().join("plane.csv");
+    let rows = ["table", "--vhat", "0.1,0.3", "--amp", "0.5", "--transverse-amp", "1", "--format", "csv"];
+    let out = cli::run(&rows, None);
+    assert!(out.status.success());
+    std::fs::write(&table, &out.stdout).unwrap();
+    let plot = ["plot", "--vhat", "0.05,0.2,0.4", "--amp", "0,0.5", "--overlay", table.to_str().unwrap()];
+    let out = cli::run(&[&plot[..], &["--transverse-amp", "1"]].concat(), None);
+    let svg = String::from_utf8(out.stdout).unwrap();
+    assert!(out.status.success() && svg.contains("yours") && svg.contains("<svg"), "{svg}");
+    let out = cli::run(&[&plot[..], &["--transverse-amp", "2"]].concat(), None);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.code() == Some(2) && err.contains("row 0") && err.contains("across (2.0, 0.0)"), "{err}");
+    let out = cli::run(&plot, None);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("'transverse_amp'"));
+    let refused_message = "a plot across the sliding direction draws against --vhat, stiff, at one --phase";
+    let base = ["plot", "--vhat", "0.1,0.2", "--amp", "0.5", "--transverse-amp", "1"];
+    for extra in [vec!["--system-stiffness", "1"], vec!["--tangential-amp", "1", "--phase", "0,1"]] {
+        refused(&[&base[..], &extra[..]].concat(), refused_message);
+    }
+    refused(&["plot", "--vbar", "0.1,0.2", "--amp", "0.5", "--transverse-amp", "1"], refused_message);
+}

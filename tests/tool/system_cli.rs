@@ -193,8 +193,9 @@ fn validate_on_a_system_names_the_mistake() {
 #[test]
 fn plot_on_a_system_draws_the_attractors() {
     let sys = System::new(1.0, 1.0, 0.05).unwrap().with_springs(32).unwrap();
-    let fig = fricosc_cli::figures::user_with(&Shape::cone(), &[0.5, 1.5], &[0.1, 0.5, 1.0], false, None, Some(&sys))
-        .unwrap();
+    let fig =
+        fricosc_cli::figures::user_with(&Shape::cone(), &[0.5, 1.5], &[0.1, 0.5, 1.0], false, (None, None), Some(&sys))
+            .unwrap();
     for curve in &fig.curves {
         let amp = curve.amp.unwrap();
         for p in &curve.points {

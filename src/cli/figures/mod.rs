@@ -320,7 +320,7 @@ pub const MAX_POINTS: usize = 100_000;
 /// `shape` at each amplitude over the velocities `xs` (`vbar`, or `vhat` where
 /// `vhat` is set), in the style of the seed's figures.
 pub fn user(shape: &Shape, amps: &[f64], xs: &[f64], vhat: bool) -> Result<Figure> {
-    user_with(shape, amps, xs, vhat, None, None)
+    user_with(shape, amps, xs, vhat, (None, None), None)
 }
 
 /// [`user`], under an oscillation in the sliding direction `(T, phase)` where
@@ -330,7 +330,7 @@ pub fn user_with(
     amps: &[f64],
     xs: &[f64],
     vhat: bool,
-    tangential: Option<(f64, f64)>,
+    (tangential, transverse): (Option<(f64, f64)>, Option<fricosc::plane::Transverse>),
     system: Option<&fricosc::system::System>,
 ) -> Result<Figure> {
     if tangential.is_some() && !vhat {
@@ -364,24 +364,26 @@ pub fn user_with(
             seen.push(**a);
             new
         })
-        .map(|&a| match (tangential, system) {
-            (_, Some(sys)) => on_system(shape, a, &xs, vhat, tangential, sys),
-            (None, None) => exact(shape, a, &xs, vhat),
-            (Some((t, p)), None) => {
-                let points =
-                    xs.iter().map(|&x| Ok([x, combined_mu(shape, x, a, t, p)?])).collect::<Result<Vec<_>>>()?;
+        .map(|&a| match (tangential, transverse, system) {
+            (_, _, Some(sys)) => on_system(shape, a, &xs, vhat, tangential, sys),
+            (None, None, None) => exact(shape, a, &xs, vhat),
+            (t, w, None) => {
+                let (t, p) = t.unwrap_or((0.0, 0.0));
+                let mu = |x: f64| combined_mu(shape, x, a, t, p, w);
+                let points = xs.iter().map(|&x| Ok([x, mu(x)?])).collect::<Result<Vec<_>>>()?;
                 Ok(Curve::new(format!("exact, du/u0 = {a}"), "exact", Some(a), points))
             }
         })
         .collect::<Result<Vec<_>>>()?;
     let (x, title) = if vhat { (XAxis::Vhat, "vhat") } else { (XAxis::Vbar, "vbar") };
     let negative = curves.iter().flat_map(|c| &c.points).any(|p| p[1] < 0.0);
-    let title = match tangential {
-        None => format!("{}: mu/mu0 against {title}", shape.name()),
-        Some((t, p)) => {
-            format!("{}: mu/mu0 against {title}, tangential oscillation dx/l = {t}, phase {p}", shape.name())
-        }
-    };
+    let mut title = format!("{}: mu/mu0 against {title}", shape.name());
+    if let Some((t, p)) = tangential {
+        title += &format!(", tangential oscillation dx/l = {t}, phase {p}");
+    }
+    if let Some(w) = transverse {
+        title += &format!(", across dy/l = {}, phase {}", w.amp(), w.phase());
+    }
     let mut f = figure("plot", &title, x, [lo, hi, if negative { -1.05 } else { 0.0 }, 1.05], curves);
     f.bold_critical = amps.len() > 1 && amps.contains(&1.0);
     if let Some((t, p)) = tangential {

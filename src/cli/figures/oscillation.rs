@@ -14,10 +14,17 @@ pub const COMBINED_TS: [f64; 4] = [0.5, 1.0, 2.0, 3.0];
 /// The tangential amplitude of the regime map.
 pub const MAP_T: f64 = 2.0;
 
-/// `mu_macro/mu0` under oscillation (the solver's value).
-pub(super) fn combined_mu(shape: &Shape, vhat: f64, amp: f64, t: f64, phase: f64) -> Result<f64> {
+/// `mu_macro/mu0` under oscillation, in the sliding direction and `across` it (the solver's value).
+pub(super) fn combined_mu(
+    shape: &Shape,
+    vhat: f64,
+    amp: f64,
+    t: f64,
+    phase: f64,
+    across: Option<fricosc::plane::Transverse>,
+) -> Result<f64> {
     let c = fricosc::Conditions::vhat(vhat, amp)?.with_tangential(t, phase)?;
-    Ok(shape.ratio(&c)?.mu_ratio)
+    Ok(shape.ratio(&across.map_or(c, |w| c.with_transverse(w)))?.mu_ratio)
 }
 
 /// The figures beyond the seed (README: oscillation in the sliding direction): pure
@@ -32,8 +39,10 @@ pub(super) fn oscillation_figures() -> Result<Vec<Figure>> {
     {
         let mut c = vec![];
         for &t in &TANGENTIAL_AMPS {
-            let points =
-                xs.iter().map(|&x| Ok([x, combined_mu(&shape, x * t, 0.0, t, 0.0)?])).collect::<Result<Vec<_>>>()?;
+            let points = xs
+                .iter()
+                .map(|&x| Ok([x, combined_mu(&shape, x * t, 0.0, t, 0.0, None)?]))
+                .collect::<Result<Vec<_>>>()?;
             c.push(Curve::new(format!("exact, T = {t}"), "exact", Some(t), points));
         }
         c.push(approx("rigid body, (2/π) arcsin", None, &xs, |x| 2.0 / std::f64::consts::PI * x.min(1.0).asin()));
@@ -57,7 +66,7 @@ pub(super) fn oscillation_figures() -> Result<Vec<Figure>> {
     for &t in &COMBINED_TS {
         let points = phases
             .iter()
-            .map(|&p| Ok([p, combined_mu(&Shape::flat(), vhat, amp, t, p)?]))
+            .map(|&p| Ok([p, combined_mu(&Shape::flat(), vhat, amp, t, p, None)?]))
             .collect::<Result<Vec<_>>>()?;
         c.push(Curve::new(format!("exact, T = {t}"), "exact", Some(t), points));
     }
@@ -176,7 +185,8 @@ pub fn against_phase(shape: &Shape, amps: &[f64], vhat: f64, t: f64, phases: &[f
         if amps[..i].contains(&a) {
             continue;
         }
-        let points = xs.iter().map(|&p| Ok([p, combined_mu(shape, vhat, a, t, p)?])).collect::<Result<Vec<_>>>()?;
+        let points =
+            xs.iter().map(|&p| Ok([p, combined_mu(shape, vhat, a, t, p, None)?])).collect::<Result<Vec<_>>>()?;
         curves.push(Curve::new(format!("exact, du/u0 = {a}"), "exact", Some(a), points));
     }
     let negative = curves.iter().flat_map(|c| &c.points).any(|p| p[1] < 0.0);
