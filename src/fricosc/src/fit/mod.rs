@@ -5,7 +5,7 @@
 //! on a rig's system its stiffness `kappa = K/kx` ([`NAMES`]): held at the
 //! rows' values, or fitted ([`Fixed::fit_system_stiffness`]). Every
 //! parameter is positive, fitted in its logarithm, within the bounds the
-//! user sets ([`Fixed::bounds`]; [`bounds`]). A system's `kappa` and
+//! user sets ([`Fixed::bounds`]). A system's `kappa` and
 //! `Omega = omega/sqrt(kx/m)` are ratios to the contact's `kx`: held, they
 //! stay as given while `kx/kz` is fitted (the rig's `K` and `m` taken to
 //! follow `kx`); to hold `K` and `m` instead, hold `kx/kz` at the value they
