@@ -76,20 +76,22 @@ pub(crate) fn manifold(drive: &Drive, bound: &Bound, tau: f64) -> ([f64; 2], f64
     (m, neglected)
 }
 
-/// `int_a^b B e(th_m) dtau` and the bound on its neglected part (module docs),
-/// by the 16-point Gauss-Legendre rule (the integrand is analytic on a scale
-/// of 1, the interval at most the layer's width).
-pub(crate) fn integral(drive: &Drive, bound: &Bound, a: f64, b: f64) -> ([f64; 2], f64) {
+/// `int_a^b B e(th_m) dtau`, `int_a^b B dtau` and the bound on the former's
+/// neglected part (module docs), by the 16-point Gauss-Legendre rule (the
+/// integrand is analytic on a scale of 1, the interval at most the layer's
+/// width).
+pub(crate) fn integral(drive: &Drive, bound: &Bound, a: f64, b: f64) -> ([f64; 3], f64) {
     let rule = crate::quad::rule(16, 0.0);
     let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-    let (mut f, mut err) = ([0.0; 2], 0.0);
+    let (mut f, mut err) = ([0.0; 3], 0.0);
     for (x, w) in rule.nodes.iter().zip(&rule.weights) {
         let tau = mid + half * x;
         let bt = bound.at(tau);
         let (m, neglected) = manifold(drive, bound, tau);
         f[0] += w * bt * m[0];
         f[1] += w * bt * m[1];
+        f[2] += w * bt;
         err += w * bt * neglected;
     }
-    ([f[0] * half, f[1] * half], err * half)
+    (f.map(|v| v * half), err * half)
 }

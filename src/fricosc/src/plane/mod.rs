@@ -354,9 +354,14 @@ fn multiplier(j: &[[f64; 2]; 2]) -> f64 {
 
 fn answer(w: &Walk, total: f64, multiplier: f64, residual: f64, periods: usize) -> Result<PlaneEvaluation> {
     let (mu, tr) = (w.force[0] / total, w.force[1] / total);
-    // Each step's sum rounds at about an ulp of the running total, at random.
-    let rounding = f64::EPSILON * ((w.steps as f64).sqrt() + 2.0) * 1f64.max(mu.abs()).max(tr.abs());
-    let error_estimate = (w.truncation + TAU * residual) / total + rounding;
+    // Each step's sum rounds at about an ulp of the running total, at random;
+    // `int B` summed as the force is, against its closed form, measures the
+    // rounding of the steps' integrals and of the normalisation together
+    // (a slip throughout has `|<f>| = <B>` exactly).
+    let scale = 1f64.max(mu.abs()).max(tr.abs());
+    let rounding = f64::EPSILON * ((w.steps as f64).sqrt() + 2.0) * scale;
+    let consistency = if w.bound > 0.0 { (w.bound - total).abs() / total * scale } else { 0.0 };
+    let error_estimate = (w.truncation + TAU * residual) / total + rounding + consistency;
     if !(tr.is_finite() && tr.abs() <= 1.0 + error_estimate) {
         return Err(Error::Internal { what: format!("transverse_ratio = {tr:?} in the plane") });
     }

@@ -66,6 +66,9 @@ enum Phase {
 pub(crate) struct Walk {
     /// `int f dtau`.
     pub(crate) force: [f64; 2],
+    /// `int B dtau`, summed step by step as the force is: its difference from
+    /// the closed form measures the rounding of both.
+    pub(crate) bound: f64,
     /// The force at the end.
     pub(crate) end: [f64; 2],
     /// `d end / d start` (0 once contact is lost).
@@ -107,6 +110,8 @@ struct Walker<'a> {
     tau: f64,
     phase: Phase,
     force: [Kahan; 2],
+    /// `int B` along the walk, by the same series as the force.
+    bound: Kahan,
     truncation: f64,
     /// `d f / d f_start` in stick; row 0 holds `d th / d f_start` in slip.
     jac: [[f64; 2]; 2],
@@ -127,6 +132,7 @@ impl Spring {
             tau: 0.0,
             phase: Phase::Out,
             force: [Kahan::default(), Kahan::default()],
+            bound: Kahan::default(),
             truncation: 0.0,
             jac: [[1.0, 0.0], [0.0, 1.0]],
             events: Vec::new(),
@@ -172,6 +178,7 @@ impl Spring {
         };
         Ok(Walk {
             force: [w.force[0].sum, w.force[1].sum],
+            bound: w.bound.sum,
             end: end_force,
             jacobian: w.end_jacobian(),
             truncation: w.truncation,
@@ -254,7 +261,8 @@ impl Walker<'_> {
         }
     }
 
-    fn book(&mut self, fx: &Series, fy: &Series, t: f64) {
+    fn book(&mut self, fx: &Series, fy: &Series, b: &Series, t: f64) {
+        self.bound.add(b.integral(t));
         self.force[0].add(fx.integral(t));
         self.force[1].add(fy.integral(t));
     }
@@ -282,7 +290,7 @@ impl Walker<'_> {
             .fold(horizon.min(MAX_STICK_STEP), f64::min);
         let fall = g.first_fall(skip, h).map_err(|()| self.stalled("stick"))?;
         let t = fall.map_or(h, |(a, c)| refine(&g, a, c));
-        self.book(&fx, &fy, t);
+        self.book(&fx, &fy, &b, t);
         self.truncation += (fx.tail(h) + fy.tail(h)) * h;
         let fe = [fx.eval(t), fy.eval(t)];
         self.advance(t, horizon, target);
@@ -367,6 +375,7 @@ impl Walker<'_> {
             if l - tau < 0.5 && rest <= LOSS_TAIL {
                 let (e, stop) = (direction(y0), l.min(end));
                 let part = if stop == l { rest } else { b.integral(stop - tau) };
+                self.bound.add(part);
                 self.force[0].add(e[0] * part);
                 self.force[1].add(e[1] * part);
                 self.truncation += 2.0 * part;
@@ -396,7 +405,7 @@ impl Walker<'_> {
         }
         let fall = ev.first_fall(0, h).map_err(|()| self.stalled("slip"))?;
         let t = fall.map_or(h, |(a, c)| refine(&ev, a, c));
-        self.book(&fx, &fy, t);
+        self.book(&fx, &fy, &b, t);
         // The force's tail on this step, and the direction's (an angle), felt
         // by a force of about this size for up to a period.
         self.truncation += (fx.tail(h) + fy.tail(h)) * h + 2.0 * (y[0].tail(h) + y[1].tail(h)) * b.0[0].abs() * TAU;
@@ -480,6 +489,7 @@ impl Walker<'_> {
             let (f, err) = layer::integral(&drive, &bound, a, b);
             w.force[0].add(f[0]);
             w.force[1].add(f[1]);
+            w.bound.add(f[2]);
             w.truncation += err;
         };
         self.jac = [[0.0; 2]; 2];
