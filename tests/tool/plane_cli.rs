@@ -309,3 +309,19 @@ fn plot_draws_the_plane_and_overlays_its_table() {
     }
     refused(&["plot", "--vbar", "0.1,0.2", "--amp", "0.5", "--transverse-amp", "1"], refused_message);
 }
+
+/// `validate --history` of a history in the plane (`history --transverse-amp`'s
+/// CSV, with its `transverse` column) is refused by name: it compares along
+/// one line only (it was compared as the line's history, the force across
+/// ignored).
+#[test]
+fn validate_history_refuses_a_history_in_the_plane() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("plane-history.csv");
+    let args = ["history", "--vhat", "0.3", "--amp", "0.5", "--transverse-amp", "1.2", "--format", "csv"];
+    let out = cli::run(&args, None);
+    assert!(out.status.success());
+    std::fs::write(&path, &out.stdout).unwrap();
+    let file = path.to_str().unwrap();
+    refused(&["validate", "--history", file, "--vhat", "0.3", "--amp", "0.5"], "a history in the plane ('transverse')");
+}

@@ -35,6 +35,9 @@ pub fn read_history(text: &str, source: &str, static_force: f64, mu0: f64) -> Re
     let err = |reason: String| Error::Parse { context: source.into(), reason };
     let mut c = read_columns(text, source, &HISTORY_COLUMNS, crate::grid::MAX_ROWS)?;
     let names = || format!("this one ({}) has {}", c.format, c.names.join(", "));
+    if c.names.iter().any(|n| n == "transverse") {
+        return Err(err("a history in the plane ('transverse'): validate --history compares along a line".into()));
+    }
     let is_tau = match (c.has(0), c.has(1)) {
         (true, false) => true,
         (false, true) => false,
