@@ -501,6 +501,9 @@ fn bounds_keep_a_parameter_within_them_and_name_it_on_one() {
     assert!(r.verdicts.is_empty() && (r.parameters[0].value / 0.35 - 1.0).abs() < 1e-7, "{r:?}");
     assert_eq!(r.parameters[0].bounds, [0.1, 0.5]);
     assert_eq!(r.parameters[1].bounds, [0.0, f64::INFINITY]);
+    // A bound far from the value in a parameter's own units (u0 in m) is not rested on.
+    let r = within(2, [1e-7, 1e-5]).unwrap();
+    assert!(r.verdicts.is_empty() && r.parameters[2].stderr.is_some(), "{r:?}");
     for (k, bound, held) in [
         (0, [0.1, 0.3], Fixed { mu0: Some(0.3), ..Fixed::default() }),
         (2, [2e-6, 1e-5], Fixed { u0: Some(2e-6), ..Fixed::default() }),
