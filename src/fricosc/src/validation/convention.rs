@@ -99,14 +99,11 @@ pub(crate) fn history_finding(
     named(bad, worst, &|read| error_under(&conditions(read, point).ok()?))
 }
 
-/// `[vhat, amp, T, phase, W, psi]` read with a convention, as conditions.
+/// `[vhat, amp, T, phase, W, psi]` read with a convention, as conditions
+/// (as a table's row is read).
 fn conditions(read: Read, point: [f64; 6]) -> crate::error::Result<Conditions> {
     let [v, a, t, p, w, q] = read(point);
-    let c = Conditions::vhat(v, a)?.with_tangential(t, p)?;
-    if w == 0.0 {
-        return Ok(c);
-    }
-    Ok(c.with_transverse(crate::plane::Transverse::new(w, q)?))
+    super::OscillationInput::new(v, a, 0.0).with_tangential(t, p).with_transverse(w, q, None).conditions()
 }
 
 /// The finding naming the convention with the smallest largest error
