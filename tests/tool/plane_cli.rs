@@ -166,8 +166,9 @@ fn table_rows_are_the_librarys() {
 
 /// `history --transverse-amp`: the force across the sliding direction is a
 /// column, each sample the library's bit for bit, the point names `W` and
-/// `psi`; `W = 0` is today's history byte for byte; the stepped history, a
-/// curved shape and a system are refused.
+/// `psi`; `W = 0` is today's history byte for byte; a curved shape's is the
+/// library's too; the stepped history, chosen springs and a system are
+/// refused.
 #[test]
 fn history_in_the_plane_has_the_force_across() {
     let base = ["history", "--vhat", "0.2", "--amp", "1.4", "--samples", "50", "--periods", "2"];
@@ -188,12 +189,33 @@ fn history_in_the_plane_has_the_force_across() {
     args.extend(["--format", "csv"]);
     let csv = String::from_utf8(cli::run(&args, None).stdout).unwrap();
     assert_eq!(csv.lines().nth(1), Some("tau,normal,tangential,transverse,event"));
+    let cone = [
+        "history",
+        "--shape",
+        "cone",
+        "--vhat",
+        "0.2",
+        "--amp",
+        "1.4",
+        "--transverse-amp",
+        "0.8",
+        "--transverse-phase",
+        "2",
+    ];
+    let v = ok(&cli::run(&[&cone[..], &["--samples", "10", "--springs", "50"]].concat(), None));
+    let h =
+        fricosc::history::history(&Shape::cone(), &c, &o.with_periods(1).with_samples(10).with_springs(50)).unwrap();
+    let rows = v["samples"].as_array().unwrap();
+    assert_eq!(rows.len(), 11);
+    for (r, s) in rows.iter().zip(&h.samples) {
+        assert_eq!((r["tangential"].as_f64(), r["transverse"].as_f64()), (Some(s.tangential), s.transverse));
+    }
     let mut zero = base.to_vec();
     zero.extend(["--transverse-amp", "0"]);
     assert_eq!(cli::run(&zero, None).stdout, cli::run(&base, None).stdout);
     for (extra, message) in [
         (&["--method", "stepping"][..], "transverse-amp"),
-        (&["--shape", "cone"], "flat punch's only"),
+        (&["--shape", "cone", "--spring-at", "0.5"], "spring-at"),
         (&["--system-stiffness", "1", "--frequency-ratio", "0.5"], "system"),
     ] {
         let mut bad = base.to_vec();

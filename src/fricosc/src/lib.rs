@@ -92,8 +92,8 @@ pub mod spring {
 /// normal total in closed form and its tangential total over a grid of springs).
 pub mod history {
     pub use crate::contact::history::{
-        history, stepped_history, Body, History, HistoryOptions, HistoryPoint, Sample, MAX_SAMPLES, MAX_SPRINGS,
-        MAX_SPRING_WORK, MIN_CURVED_AMP,
+        history, stepped_history, Body, History, HistoryOptions, HistoryPoint, Sample, MAX_PLANE_SPRINGS, MAX_SAMPLES,
+        MAX_SPRINGS, MAX_SPRING_WORK, MIN_CURVED_AMP,
     };
 }
 

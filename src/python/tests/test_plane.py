@@ -38,8 +38,12 @@ def test_history_is_the_command_lines() -> None:
     plain = fricosc.history("flat", 0.3, 0.5, samples=20)
     zero = fricosc.history("flat", 0.3, 0.5, samples=20, transverse_amp=0.0)
     assert "transverse" not in zero and list(zero["tangential"]) == list(plain["tangential"])
-    with pytest.raises(fricosc.InputError, match="flat punch's only"):
-        fricosc.history("parabolic", vhat=0.2, amp=0.5, transverse_amp=1.0)
+    cone = fricosc.history("cone", vhat=0.2, amp=0.5, transverse_amp=1.0, samples=10, springs=50)
+    q = json.loads(cli("history", "--shape", "cone", "--vhat", "0.2", "--amp", "0.5", "--transverse-amp", "1",
+                       "--samples", "10", "--springs", "50"))
+    assert [s["transverse"] for s in q["samples"]] == list(cone["transverse"])
+    with pytest.raises(fricosc.InputError, match="spring-at"):
+        fricosc.history("parabolic", vhat=0.2, amp=0.5, transverse_amp=1.0, spring_at=(0.5,))
 
 
 def test_no_transverse_amplitude_is_the_point_without_it() -> None:

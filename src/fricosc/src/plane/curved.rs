@@ -197,26 +197,25 @@ impl Tail {
     }
 }
 
+/// Whether a spring of a curved contact is walked: its bound's peak is at
+/// least [`MIN_PEAK`] and its period takes at most [`SPRING_STEPS`] Taylor
+/// steps (both fail towards the contact's edge).
+fn walked(sp: &Spring) -> bool {
+    sp.bound.level + sp.bound.amp >= MIN_PEAK && period_steps(sp) <= SPRING_STEPS
+}
+
 /// The largest `z` up to `zmax` whose spring takes at most [`SPRING_STEPS`]
 /// Taylor steps a period and whose bound's peak is at least [`MIN_PEAK`]
 /// (both fall towards the edge): `zmax` itself, or the bisection's.
-fn walked_up_to(spring: &dyn Fn(f64) -> Spring, zmax: f64) -> f64 {
-    let steps = |z: f64| {
-        let sp = spring(z);
-        if sp.bound.level + sp.bound.amp < MIN_PEAK {
-            f64::INFINITY
-        } else {
-            period_steps(&sp)
-        }
-    };
+pub(super) fn walked_up_to(spring: &dyn Fn(f64) -> Spring, zmax: f64) -> f64 {
     let edge = zmax * (1.0 - 1e-12);
-    if steps(edge) <= SPRING_STEPS {
+    if walked(&spring(edge)) {
         return zmax;
     }
     let (mut lo, mut hi) = (0.0, edge);
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);
-        if steps(mid) <= SPRING_STEPS {
+        if walked(&spring(mid)) {
             lo = mid;
         } else {
             hi = mid;

@@ -177,6 +177,10 @@ pub(crate) fn spring_force(sp: &Spring, tau: f64) -> f64 {
 /// Most springs summed for an MDR history.
 pub const MAX_SPRINGS: usize = 1_000_000;
 
+/// Most springs summed for a curved history in the plane (each an orbit
+/// walked through the samples: about a minute on two cores).
+pub const MAX_PLANE_SPRINGS: usize = 100_000;
+
 /// Most spring-force evaluations one history may take (rows x springs: about a
 /// minute on two cores).
 pub const MAX_SPRING_WORK: u128 = 4_000_000_000;
@@ -360,13 +364,23 @@ pub fn history(shape: &Shape, c: &Conditions, opts: &HistoryOptions) -> Result<H
     Ok(History::new(shape, c, units, opts.spring_at.clone(), out))
 }
 
-/// The flat punch's history under a transverse oscillation `w`
-/// ([`crate::plane`]): its forces along and across the sliding direction
-/// at the samples and the orbit's events; what the plane does not solve
-/// (a curved shape, a system) refused before any work.
+/// The history under a transverse oscillation `w` ([`crate::plane`]): the
+/// forces along and across the sliding direction at the samples, the flat
+/// punch's orbit's events among them, a curved contact's springs summed as
+/// under the other oscillations; what the plane does not solve (a system,
+/// chosen springs) refused before any work.
 fn in_plane(shape: &Shape, c: &Conditions, w: crate::plane::Transverse, opts: &HistoryOptions) -> Result<History> {
     crate::plane::check(shape, c)?;
     check_history(shape, 0.0, c.amp(), opts)?;
+    if !opts.spring_at.is_empty() {
+        let reason = "chosen springs are not reported in the plane (the contact's total forces are)";
+        return Err(Error::Parse { context: "spring-at".into(), reason: reason.into() });
+    }
+    if !shape.is_flat() && opts.springs > MAX_PLANE_SPRINGS {
+        let (what, count, limit) =
+            ("history springs in the plane".into(), opts.springs as u128, MAX_PLANE_SPRINGS as u128);
+        return Err(Error::TooLarge { what, count, limit });
+    }
     let total = TAU * opts.periods as f64;
     let taus = (0..=opts.samples).map(|j| total * j as f64 / opts.samples as f64).collect();
     let rows = |n: usize| {
@@ -378,7 +392,7 @@ fn in_plane(shape: &Shape, c: &Conditions, w: crate::plane::Transverse, opts: &H
             Ok(())
         }
     };
-    let samples = crate::plane::samples(shape, c, w, opts.periods, taus, rows)?;
+    let samples = crate::plane::samples(shape, c, w, (opts.periods, opts.springs), taus, rows)?;
     let units = format!("{UNITS} (along and across the sliding direction)");
     Ok(History::new(shape, c, units, vec![], samples))
 }
