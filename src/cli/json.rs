@@ -163,28 +163,6 @@ impl<'de> serde::Deserialize<'de> for MembersOf<'de> {
     }
 }
 
-struct ElementsOf<'a>(Vec<&'a RawValue>);
-
-impl<'de> serde::Deserialize<'de> for ElementsOf<'de> {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = ElementsOf<'de>;
-            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("an array")
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<ElementsOf<'de>, A::Error> {
-                let mut out = Vec::with_capacity(seq.size_hint().unwrap_or(0));
-                while let Some(v) = seq.next_element()? {
-                    out.push(v);
-                }
-                Ok(ElementsOf(out))
-            }
-        }
-        d.deserialize_seq(V)
-    }
-}
-
 /// `serde_json`'s message without its position (`... at line 1 column 9`),
 /// prefixed `malformed JSON: ` where the text is not JSON.
 pub fn message(e: &serde_json::Error) -> String {
@@ -204,7 +182,7 @@ pub fn members(text: &str) -> Result<Members<'_>, String> {
 
 /// The elements of the array `text`.
 pub fn elements(text: &str) -> Result<Vec<&RawValue>, String> {
-    serde_json::from_str::<ElementsOf>(text).map(|m| m.0).map_err(|e| message(&e))
+    serde_json::from_str::<Vec<&RawValue>>(text).map_err(|e| message(&e))
 }
 
 /// The value `text` (any JSON value, nothing but whitespace around it).

@@ -332,18 +332,45 @@ fn plot_draws_the_plane_and_overlays_its_table() {
     refused(&["plot", "--vbar", "0.1,0.2", "--amp", "0.5", "--transverse-amp", "1"], refused_message);
 }
 
-/// `validate --history` of a history in the plane (`history --transverse-amp`'s
-/// CSV, with its `transverse` column) is refused by name: it compares along
-/// one line only (it was compared as the line's history, the force across
-/// ignored).
+/// `validate --history --transverse-amp` of a history in the plane
+/// (`history --transverse-amp`'s CSV, with its `transverse` column): the
+/// exact history passes with both forces compared (the CSV's columns
+/// `transverse_exact`, `transverse_yours`), its force across negated fails;
+/// the file without `--transverse-amp` is refused naming the column (it was
+/// compared as the line's history, the force across ignored), and
+/// `--transverse-amp` without `--history` by name.
 #[test]
-fn validate_history_refuses_a_history_in_the_plane() {
+fn validate_history_compares_a_history_in_the_plane() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("plane-history.csv");
-    let args = ["history", "--vhat", "0.3", "--amp", "0.5", "--transverse-amp", "1.2", "--format", "csv"];
+    let args =
+        ["history", "--vhat", "0.3", "--amp", "0.5", "--transverse-amp", "1.2", "--periods", "2", "--format", "csv"];
     let out = cli::run(&args, None);
     assert!(out.status.success());
-    std::fs::write(&path, &out.stdout).unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    std::fs::write(&path, &text).unwrap();
     let file = path.to_str().unwrap();
-    refused(&["validate", "--history", file, "--vhat", "0.3", "--amp", "0.5"], "a history in the plane ('transverse')");
+    let base = ["validate", "--history", file, "--vhat", "0.3", "--amp", "0.5"];
+    let v = ok(&cli::run(&[&base[..], &["--transverse-amp", "1.2", "--format", "json"]].concat(), None));
+    assert!(v["findings"].as_array().unwrap().is_empty(), "{v}");
+    assert!(v["transverse"]["max_abs_error"].as_f64().unwrap() < 1e-14, "{v}");
+    let kinds: Vec<&str> = v["events"].as_array().unwrap().iter().map(|e| e["kind"].as_str().unwrap()).collect();
+    assert_eq!(kinds, ["stick", "slip"]);
+    let out = cli::run(&[&base[..], &["--transverse-amp", "1.2", "--format", "csv"]].concat(), None);
+    let csv = String::from_utf8(out.stdout).unwrap();
+    assert!(csv.lines().next().unwrap().ends_with(",transverse_exact,transverse_yours"), "{csv}");
+    // The force across negated: the largest errors are named.
+    let mut rows: Vec<String> = text.lines().map(String::from).collect();
+    for row in rows.iter_mut().skip(2) {
+        let mut cells: Vec<String> = row.split(',').map(String::from).collect();
+        cells[3] = format!("{}", -cells[3].parse::<f64>().unwrap());
+        *row = cells.join(",");
+    }
+    std::fs::write(&path, rows.join("\n")).unwrap();
+    let out = cli::run(&[&base[..], &["--transverse-amp", "1.2", "--format", "json"]].concat(), None);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(1), "{v}");
+    assert!(v["transverse"]["max_abs_error"].as_f64().unwrap() > 0.1, "{v}");
+    refused(&base, "transverse");
+    refused(&["validate", file, "--transverse-amp", "1"], "--transverse-amp");
 }

@@ -39,7 +39,7 @@ fn table(mu: impl Fn(f64, f64) -> f64) -> Vec<(f64, f64, f64)> {
 
 /// A history on the seed's phase axis against the exact one (tolerance 1e-9).
 fn compare_history(shape: &Shape, v: f64, a: f64, t: &[f64], f: &[f64], n: Option<&[f64]>) -> HistoryValidation {
-    let data = HistoryData { time: TimeAxis::Phase(t), tangential: f, normal: n, body: None };
+    let data = HistoryData { time: TimeAxis::Phase(t), tangential: f, normal: n, transverse: None, body: None };
     fricosc::validation::compare_history(shape, &fricosc::Conditions::vbar(v, a).unwrap(), &data, 1e-9).unwrap()
 }
 

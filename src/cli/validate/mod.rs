@@ -84,7 +84,7 @@ pub struct ValidateArgs {
 /// The options of `validate --history`.
 #[derive(clap::Args)]
 pub struct HistoryArgs {
-    /// The file is a force history (columns tau or t, tangential, optionally normal; forces in
+    /// The file is a force history (columns tau or t, tangential, optionally normal, transverse; forces in
     /// units of the static force F0 and mu0 F0, or yours with --static-force and --mu0) at --vbar
     /// (or --vhat) and --amp: the time origin from the normal force, errors of both forces over the
     /// last period, periodicity, and the stick/slip/contact events with timing errors.
@@ -116,6 +116,9 @@ pub struct HistoryArgs {
     /// Default: already normalised.
     #[arg(long, visible_alias = "kz-u0", allow_hyphen_values = true, value_parser = positive, requires = "on")]
     pub static_force: Option<f64>,
+    /// With --history: a history in the plane (its column transverse compared where given).
+    #[command(flatten)]
+    pub transverse: crate::cmd::TransversePoint,
 }
 
 /// Where the shape came from.
@@ -191,6 +194,9 @@ pub fn run(a: ValidateArgs) -> Result<Outcome> {
     }
     if h.on {
         return run_history(&a, h, mu0, tolerance, &format);
+    }
+    if h.transverse.transverse_amp.is_some() {
+        return Err(Error::parse("--transverse-amp", "goes with --history (a table's rows give theirs)"));
     }
     if a.files.len() != 1 || a.target.is_some() || a.plot.is_some() {
         return Err(Error::parse("validate", "several files, --target and --plot need --series"));
@@ -359,6 +365,7 @@ fn history_of(
     }
     let mut conditions = crate::cmd::conditions(velocity, h.amp.unwrap_or(0.0), tangential)?;
     conditions = a.system.system(a.springs)?.map_or(conditions, |s| conditions.with_system(s));
+    conditions = h.transverse.oscillation()?.map_or(conditions, |w| conditions.with_transverse(w));
     let (text, source) = read_input(Some(file.to_string()))?;
     let c = read_history(&text, &source, h.static_force.unwrap_or(1.0), mu0.unwrap_or(1.0))?;
     drop(text);
@@ -367,7 +374,13 @@ fn history_of(
         return Err(Error::parse(source, "--omega is given, but the time column is the phase tau"));
     }
     let body = c.body.as_ref().map(|(l, v)| (&l[..], &v[..]));
-    let data = HistoryData { time, tangential: &c.tangential, normal: c.normal.as_deref(), body };
+    let data = HistoryData {
+        time,
+        tangential: &c.tangential,
+        normal: c.normal.as_deref(),
+        transverse: c.transverse.as_deref(),
+        body,
+    };
     let v = fricosc::validation::compare_history(&shape, &conditions, &data, tolerance).map_err(|e| match e {
         fricosc::Error::Parse { context, reason } => Error::Parse { context: format!("{source}: {context}"), reason },
         e => Error::Core(e),

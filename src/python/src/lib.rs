@@ -531,7 +531,7 @@ fn validate_series<'py>(
 /// A force history against the exact one (`fricosc validate --history`'s
 /// report) as a dict.
 #[pyfunction]
-#[pyo3(signature = (shape, time, is_tau, tangential, normal, v, a, vhat, oscillation, omega, tolerance, static_force, mu0, system, body))]
+#[pyo3(signature = (shape, time, is_tau, tangential, normal, v, a, vhat, oscillation, omega, tolerance, static_force, mu0, system, body, transverse=None, across=None))]
 #[allow(clippy::too_many_arguments)]
 fn validate_history<'py>(
     py: Python<'py>,
@@ -550,8 +550,17 @@ fn validate_history<'py>(
     mu0: f64,
     system: Option<(f64, f64, f64)>,
     body: Option<(PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>)>,
+    transverse: Option<(f64, f64)>,
+    across: Option<PyReadonlyArray1<'py, f64>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let mut c = history_conditions(v, a, vhat, oscillation).map_err(to_py)?;
+    if let Some((w, psi)) = transverse {
+        c = c.with_transverse(fricosc::plane::Transverse::new(w, psi).map_err(to_py)?);
+    }
+    let mut y: Option<Vec<f64>> = across.map(|x| x.as_array().to_vec());
+    if let Some(y) = y.as_deref_mut() {
+        to_static_units(y, None, static_force, mu0).map_err(to_py)?;
+    }
     if let Some((k, om, z)) = system {
         c = c.with_system(fricosc::system::System::new(k, om, z).map_err(to_py)?);
     }
@@ -562,7 +571,7 @@ fn validate_history<'py>(
     to_static_units(&mut f, n.as_deref_mut(), static_force, mu0).map_err(to_py)?;
     let time = if is_tau { TimeAxis::Phase(&t) } else { TimeAxis::Time { t: &t, omega } };
     let body = body.as_ref().map(|(l, v)| (&l[..], &v[..]));
-    let data = HistoryData { time, tangential: &f, normal: n.as_deref(), body };
+    let data = HistoryData { time, tangential: &f, normal: n.as_deref(), transverse: y.as_deref(), body };
     let shape = &shape.inner;
     let result = interruptible(py, || compare_history(shape, &c, &data, tolerance))?;
     pythonize::pythonize(py, &result).map_err(serialise_err)

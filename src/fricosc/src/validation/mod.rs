@@ -41,7 +41,7 @@ pub use oscillation::{
 
 pub use history::{
     compare_history, to_static_units, EventSeries, FoundEvent, HistoryData, HistorySample, HistorySeries,
-    HistoryValidation, NormalComparison, OriginSource, TimeAxis, TimeOrigin,
+    HistoryValidation, NormalComparison, OriginSource, TimeAxis, TimeOrigin, TransverseComparison,
 };
 pub(crate) use series::observed_order;
 pub use series::{convergence, Convergence, Needed, RegimeOrder, RowStatus, SeriesRow};

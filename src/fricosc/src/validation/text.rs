@@ -256,6 +256,14 @@ impl HistoryValidation {
                 100,
             );
         }
+        if let Some(t) = &v.transverse {
+            let line = format!(
+                "Force across the sliding direction: largest |error| {}, rms {}.",
+                e(t.max_abs_error),
+                e(t.rms_error)
+            );
+            s += &wrap("", &line, 100);
+        }
         if let Some(b) = &v.body {
             let line = format!(
                 "The body (pre-slip lengths): its lag X_d - x errs by {} at most (range {}), its velocity by {} (range {}).",

@@ -150,3 +150,50 @@ fn a_history_in_the_plane_refuses_what_it_does_not_solve() {
     let stepped = stepped_history(&c, 1, 1000).unwrap_err().to_string();
     assert!(stepped.contains("transverse-amp"), "{stepped}");
 }
+
+/// `compare_history` in the plane: the exact history (the flat punch's and
+/// a cone's, whose grid is the reference's) passes with both forces within
+/// a few ulp; the column across with conditions along a line is refused
+/// naming it; the flat punch's forces 10 % above the circle are named above
+/// the bound (the magnitude, not the force along, against `B`); without the
+/// column across only the force along is compared and no events are sought.
+#[test]
+fn a_history_in_the_plane_is_validated_with_its_force_across() {
+    use fricosc::validation::{compare_history, FindingKind, HistoryData, TimeAxis};
+    let c = Conditions::vhat(0.2, 1.4).unwrap().with_transverse(Transverse::new(0.8, 2.0).unwrap());
+    for (shape, events) in [(Shape::flat(), 3), (Shape::cone(), 0)] {
+        let o = HistoryOptions::default().with_periods(2).with_samples(400);
+        let h = history(&shape, &c, &o).unwrap();
+        let col = |f: fn(&fricosc::history::Sample) -> f64| h.samples.iter().map(f).collect::<Vec<f64>>();
+        let (tau, n, fx, fy) =
+            (col(|s| s.tau), col(|s| s.normal), col(|s| s.tangential), col(|s| s.transverse.unwrap()));
+        let data = HistoryData {
+            time: TimeAxis::Phase(&tau),
+            tangential: &fx,
+            normal: Some(&n),
+            transverse: Some(&fy),
+            body: None,
+        };
+        let v = compare_history(&shape, &c, &data, 1e-9).unwrap();
+        let across = v.transverse.unwrap().max_abs_error;
+        assert!(v.findings.is_empty() && v.max_abs_error < 1e-14 && across < 1e-14, "{}: {v:?}", shape.name());
+        // Each exact event found within a sample's spacing (a contact that
+        // starts in stick is found as contact and stick, the orbit's as contact).
+        assert_eq!(v.exact_events.len(), events, "{}", shape.name());
+        for e in &v.exact_events {
+            let timing = v.events.iter().filter(|f| f.kind == e.kind).filter_map(|f| f.timing_error);
+            assert!(timing.map(f64::abs).fold(f64::INFINITY, f64::min) < 0.032, "{e:?} in {:?}", v.events);
+        }
+        let err = compare_history(&shape, &Conditions::vhat(0.2, 1.4).unwrap(), &data, 1e-9).unwrap_err().to_string();
+        assert!(err.contains("transverse") && err.contains("--transverse-amp"), "{err}");
+        if !shape.is_flat() {
+            continue;
+        }
+        let (gx, gy): (Vec<f64>, Vec<f64>) = fx.iter().zip(&fy).map(|(x, y)| (1.1 * x, 1.1 * y)).unzip();
+        let over = HistoryData { tangential: &gx, transverse: Some(&gy), ..data };
+        let v = compare_history(&shape, &c, &over, 1e-9).unwrap();
+        assert!(v.findings.iter().any(|f| f.kind == FindingKind::AboveBound), "{}: {:?}", shape.name(), v.findings);
+        let along = compare_history(&shape, &c, &HistoryData { transverse: None, ..data }, 1e-9).unwrap();
+        assert!(along.findings.is_empty() && along.transverse.is_none() && along.events.is_empty(), "{along:?}");
+    }
+}

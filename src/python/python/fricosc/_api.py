@@ -305,9 +305,9 @@ def history(
     system with mass and stiffness, one period of its attractor (a curved
     body's as its springs), with the body's ``body_lag`` behind the drive,
     ``body_velocity`` and the ``system_force`` on it (a body with mass). ``springs``: a curved body's, default 4000 (256
-    on a system). With ``transverse_amp`` (and ``transverse_phase``) as ``fricosc history --transverse-amp``: the flat
-    punch under an oscillation across the sliding direction, the force across it ``transverse`` beside ``tangential``
-    (along it), every event of the orbit among the samples (``transverse_amp=0`` is the history without it).
+    on a system). With ``transverse_amp`` (and ``transverse_phase``) as ``fricosc history --transverse-amp``: an
+    oscillation across the sliding direction, the force across it ``transverse`` beside ``tangential`` (along it), the
+    flat punch's every event of the orbit among the samples (``transverse_amp=0`` is the history without it).
 
     >>> h = history("flat", vhat=0.2, amp=0.5, tangential_amp=1.5, phase=1.3, samples=100)
     >>> [e for e in h["event"] if e]
@@ -528,6 +528,8 @@ def validate_history(
     system_stiffness: Optional[float] = None,
     frequency_ratio: Optional[float] = None,
     damping: Optional[float] = None,
+    transverse_amp: Optional[float] = None,
+    transverse_phase: Optional[float] = None,
 ) -> Dict[str, Any]:
     """Compare a force history with the steady state of ``shape`` (exact for the
     flat punch; for curved shapes the normal force exact and the tangential one
@@ -551,7 +553,11 @@ def validate_history(
     ``damping``) the history is a body's on a system, compared with its
     period-1 attractor (any other is refused), and the columns ``body_lag``
     and ``body_velocity`` (as :func:`history` gives them), where present,
-    with the exact body's.
+    with the exact body's. With ``transverse_amp`` (and ``transverse_phase``)
+    the history is one in the plane, as ``fricosc validate --history
+    --transverse-amp``: its column ``transverse`` (the force across the
+    sliding direction), where present, compared too, and the events found
+    from the force's magnitude.
 
     >>> h = history("flat", 0.3, 1.5, periods=2, samples=2000)
     >>> r = validate_history({"tau": h["tau"], "tangential": h["tangential"]}, 0.3, 1.5)
@@ -566,6 +572,12 @@ def validate_history(
         raise TypeError("amp (du/u0) is required")
     v, is_vhat = _velocity(vbar, vhat)
     oscillation = _tangential(tangential_amp, phase, is_vhat)
+    if transverse_phase is not None and transverse_amp is None:
+        raise TypeError("transverse_phase needs transverse_amp")
+    across = None if transverse_amp is None else (
+        _scalar(transverse_amp, "transverse_amp"),
+        _scalar(0.0 if transverse_phase is None else transverse_phase, "transverse_phase"),
+    )
     if ("tau" in columns) == ("t" in columns):
         raise ValueError("give exactly one time column: 'tau' (phase) or 't' (time)")
     if "tangential" not in columns:
@@ -593,5 +605,7 @@ def validate_history(
         1.0 if mu0 is None else _scalar(mu0, "mu0"),
         _system(system_stiffness, frequency_ratio, damping),
         body,
+        across,
+        _column(_floats(history["transverse"], "transverse"), "transverse") if "transverse" in columns else None,
     )
     return result

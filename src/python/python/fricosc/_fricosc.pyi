@@ -128,6 +128,8 @@ def validate_history(
     mu0: float,
     system: Optional[Tuple[float, float, float]],
     body: Optional[Tuple[npt.NDArray[np.float64], ...]],
+    transverse: Optional[Tuple[float, float]] = None,
+    across: Optional[npt.NDArray[np.float64]] = None,
 ) -> Dict[str, Any]: ...
 def default_tol() -> float: ...
 def fit(

@@ -58,6 +58,14 @@ impl Exact {
         Ok(Exact { flat, amp, springs, scale, f0 })
     }
 
+    /// The normal force only (a history in the plane has its forces from
+    /// [`super::plane`]).
+    pub(super) fn normal_only(shape: &Shape, amp: f64) -> Exact {
+        let flat = shape.is_flat();
+        let f0 = if flat { 1.0 } else { shape.contact().static_force(1.0) };
+        Exact { flat, amp, springs: Springs::Seed(vec![]), scale: 0.0, f0 }
+    }
+
     pub(super) fn normal(&self, shape: &Shape, tau: f64) -> f64 {
         if self.flat {
             (1.0 - self.amp * tau.cos()).max(0.0)

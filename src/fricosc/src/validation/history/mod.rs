@@ -17,16 +17,20 @@
 use super::*;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
+mod events;
 mod exact;
+mod plane;
 mod series;
 mod signal;
 mod system;
 
+pub use plane::TransverseComparison;
 pub use series::{EventSeries, HistorySeries};
 pub use system::BodyComparison;
 
+use events::find_events;
 use exact::Exact;
-use signal::{drift, origin_offset, period_from_normal, periodic_mean, SNAP_SAMPLES};
+use signal::{origin_offset, period_from_normal, periodic_mean, Drifts, SNAP_SAMPLES};
 
 /// The time column of a history.
 #[derive(Debug, Clone, Copy)]
@@ -52,6 +56,9 @@ pub struct HistoryData<'a> {
     pub tangential: &'a [f64],
     /// Normal force, units `F0`, if the file has it.
     pub normal: Option<&'a [f64]>,
+    /// In the plane (`Conditions::with_transverse`): the force across the
+    /// sliding direction, units `mu0 F0`, if the file has it.
+    pub transverse: Option<&'a [f64]>,
     /// On a system: the body's lag `X_d - x` and velocity `dx/dtau` (pre-slip
     /// lengths), if the file has them.
     pub body: Option<(&'a [f64], &'a [f64])>,
@@ -121,6 +128,10 @@ pub struct HistorySample {
     pub normal_yours: Option<f64>,
     /// `normal_yours - normal_exact`.
     pub normal_error: Option<f64>,
+    /// In the plane: the exact force across the sliding direction (units `mu0 F0`).
+    pub transverse_exact: Option<f64>,
+    /// The file's, if given.
+    pub transverse_yours: Option<f64>,
     /// On a system: the exact body's lag and velocity.
     pub body_exact: Option<[f64; 2]>,
     /// The file's, if given.
@@ -165,6 +176,8 @@ pub struct HistoryValidation {
     pub rms_error: f64,
     /// The normal force against the exact one, if the file gives it.
     pub normal: Option<NormalComparison>,
+    /// In the plane, the force across against the exact one, if the file gives it.
+    pub transverse: Option<TransverseComparison>,
     /// On a system, the body's columns against the exact body, if the file gives them.
     pub body: Option<BodyComparison>,
     /// Largest change of the tangential force from the previous period to the
@@ -178,8 +191,9 @@ pub struct HistoryValidation {
     /// drift's decay between the last periods (absent if it does not decay).
     pub periods_needed: Option<f64>,
     /// The events found in the last period (stick, slip, contact, loss of
-    /// contact: from the force against its Coulomb bound), with their timing
-    /// errors (the flat punch; a curved contact's total has none).
+    /// contact: from the force against its Coulomb bound, in the plane its
+    /// magnitude), with their timing errors (the flat punch; a curved
+    /// contact's total has none; in the plane a file with the force across).
     pub events: Vec<FoundEvent>,
     /// Samples (seed's phases, at most 5) of the last period where the
     /// tangential force exceeds the Coulomb bound `mu0 N` (beyond the tolerance).
@@ -234,12 +248,14 @@ pub(crate) const NORMAL_SHAPE_TOLERANCE: f64 = 1e-2;
 /// Check the columns: equal lengths, finite values, time not decreasing.
 fn check_columns(time: &[f64], data: &HistoryData) -> Result<()> {
     let n = time.len();
-    if data.tangential.len() != n || data.normal.is_some_and(|x| x.len() != n) {
+    let other = [data.normal, data.transverse];
+    if data.tangential.len() != n || other.iter().flatten().any(|x| x.len() != n) {
         return Err(Error::Parse { context: "history".into(), reason: "the columns differ in length".into() });
     }
     for i in 0..n {
         let bad = |what: &str| Error::Parse { context: format!("history sample {i}"), reason: what.into() };
-        if !time[i].is_finite() || !data.tangential[i].is_finite() || data.normal.is_some_and(|x| !x[i].is_finite()) {
+        if !time[i].is_finite() || !data.tangential[i].is_finite() || other.iter().flatten().any(|x| !x[i].is_finite())
+        {
             return Err(bad("values must be finite"));
         }
         if i > 0 && time[i] < time[i - 1] {
@@ -347,6 +363,7 @@ pub fn compare_history(
     if amp == 0.0 {
         return Err(Error::param("amp", amp, "a history without oscillation has no period"));
     }
+    plane::check(c, data.transverse)?;
     let raw_time = match data.time {
         TimeAxis::Phase(t) | TimeAxis::Time { t, .. } => t,
     };
@@ -361,60 +378,56 @@ pub fn compare_history(
     let offset = time_origin.offset;
     let seed_tau = |i: usize| taus[i] + offset;
     let seed_taus: Vec<f64> = last.iter().map(|&i| seed_tau(i).rem_euclid(TAU)).collect();
-    let (exact, (exact_t, exact_body, exact_events)) = exact_forces(shape, c, data, &seed_taus)?;
+    let (exact, forces) = exact_forces(shape, c, data, &seed_taus)?;
     let exact_n: Vec<f64> = last.iter().map(|&i| exact.normal(shape, seed_tau(i))).collect();
-    let samples = last_samples(data, (&last, &seed_taus), (&exact_t, &exact_n, &exact_body));
-    let max_abs = samples.iter().fold(0.0f64, |m, s| m.max(s.error.abs()));
+    let samples = last_samples(data, (&last, &seed_taus), (&forces, &exact_n));
     let normal = user_normal.as_ref().map(|nl| NormalComparison {
         max_abs_error: samples.iter().filter_map(|s| s.normal_error).fold(0.0f64, |m, e| m.max(e.abs())),
         rms_error: super::rms(samples.iter().filter_map(|s| s.normal_error)),
         mean_ratio: periodic_mean(&last_taus, nl) / periodic_mean(&last_taus, &exact_n),
     });
+    let across_errors = || samples.iter().filter_map(|s| Some(s.transverse_yours? - s.transverse_exact?));
+    let transverse = data.transverse.map(|_| TransverseComparison {
+        max_abs_error: across_errors().fold(0.0f64, |m, e| m.max(e.abs())),
+        rms_error: super::rms(across_errors()),
+    });
     // The bound at each sample: the file's normal force where given.
     let bound = |i: usize| data.normal.map_or_else(|| exact.normal(shape, seed_tau(i)), |x| x[i]);
     let peak = (0..n).map(bound).fold(0.0f64, f64::max).max(f64::MIN_POSITIVE);
-    let period_drift = (periods >= 2).then(|| drift(&taus, data.tangential, start, end)).flatten();
-    let previous_drift = (periods >= 3).then(|| drift(&taus, data.tangential, start - TAU, start)).flatten();
     let bar = tolerance * peak;
-    let periodic = period_drift.map(|d| d <= bar);
-    let periods_needed = match (period_drift, previous_drift) {
-        (Some(d), _) if d <= bar => Some(0.0),
-        (Some(d), Some(p)) if d < p && d > 0.0 => Some(((bar / d).ln() / (d / p).ln()).ceil()),
-        _ => None,
-    };
+    let drifts = Drifts::of(&taus, data, (start, end), periods, bar);
     let body = data.body.is_some().then(|| {
         let yours: Vec<[f64; 2]> = samples.iter().filter_map(|s| s.body_yours).collect();
-        system::compare_body(&yours, &exact_body)
+        system::compare_body(&yours, &forces.body)
     });
     // Out of contact (the bound at 0 or below) a force is the spring's not
     // relaxing, not a missed slip; a normal force below 0 is contact loss not modelled.
-    let loose = |i: usize| bound(i) <= bar && data.tangential[i].abs() > bar;
+    let force = plane::bounded(data.tangential, data.transverse);
+    let loose = |i: usize| bound(i) <= bar && force[i].abs() > bar;
     let out_of_contact: Vec<usize> = last.iter().copied().filter(|&i| loose(i)).collect();
-    let above: Vec<usize> =
-        last.iter().copied().filter(|&i| !loose(i) && data.tangential[i].abs() > bound(i) + bar).collect();
+    let above: Vec<usize> = last.iter().copied().filter(|&i| !loose(i) && force[i].abs() > bound(i) + bar).collect();
     let lowest = data.normal.map(|x| last.iter().map(|&i| x[i]).fold(f64::INFINITY, f64::min));
     let contact = Contact { out_of_contact, negative: lowest.filter(|&m| m < -bar) };
-    let events = if exact.flat {
-        find_events(&last, &taus, offset, data.tangential, &bound, bar, &exact_events)
-    } else {
-        vec![]
-    };
-    let units = "normal: F0 (the static normal force at depth u0); tangential: mu0 F0".to_string();
+    // The flat punch's, in the plane where the file has the force across.
+    let searched = exact.flat && (c.transverse().is_none() || data.transverse.is_some());
+    let exact_events = if searched { forces.events } else { vec![] };
+    let events = if searched { find_events(&last, &taus, offset, &force, &bound, bar, &exact_events) } else { vec![] };
     let mut v = HistoryValidation {
         shape: shape.name().to_string(),
-        units,
+        units: format!("normal: F0 (the static normal force at depth u0); tangential: mu0 F0{}", forces.units),
         point: crate::history::HistoryPoint::of(c),
         time_origin,
         periods,
         samples: last.len(),
-        max_abs_error: max_abs,
+        max_abs_error: samples.iter().fold(0.0f64, |m, s| m.max(s.error.abs())),
         rms_error: super::rms(samples.iter().map(|s| s.error)),
         normal,
+        transverse,
         body,
-        period_drift,
-        previous_drift,
-        periodic,
-        periods_needed,
+        period_drift: drifts.last,
+        previous_drift: drifts.previous,
+        periodic: drifts.periodic,
+        periods_needed: drifts.needed,
         events,
         above_bound_count: above.len(),
         above_bound: above.iter().take(FINDING_ROWS).map(|&i| seed_tau(i).rem_euclid(TAU)).collect(),
@@ -429,57 +442,73 @@ pub fn compare_history(
 }
 
 /// The samples `last` of the last period (at the seed's phases `taus`) against
-/// the exact tangential force, normal force and body there.
+/// the exact forces and body there.
 fn last_samples(
     data: &HistoryData,
     (last, taus): (&[usize], &[f64]),
-    (tangential, normal, body): (&[f64], &[f64], &[[f64; 2]]),
+    (exact, normal): (&Forces, &[f64]),
 ) -> Vec<HistorySample> {
     let sample = |(k, &i): (usize, &usize)| {
         let yours_n = data.normal.map(|x| x[i]);
         HistorySample {
             index: i,
             tau: taus[k],
-            exact: tangential[k],
+            exact: exact.along[k],
             yours: data.tangential[i],
-            error: data.tangential[i] - tangential[k],
+            error: data.tangential[i] - exact.along[k],
             normal_exact: normal[k],
             normal_yours: yours_n,
             normal_error: yours_n.map(|y| y - normal[k]),
-            body_exact: body.get(k).copied(),
+            transverse_exact: exact.across.as_ref().map(|y| y[k]),
+            transverse_yours: data.transverse.map(|y| y[i]),
+            body_exact: exact.body.get(k).copied(),
             body_yours: data.body.map(|(l, v)| [l[i], v[i]]),
         }
     };
     last.iter().enumerate().map(sample).collect()
 }
 
+/// The exact forces at the seed's phases of the last period.
+struct Forces {
+    along: Vec<f64>,
+    /// In the plane.
+    across: Option<Vec<f64>>,
+    /// On a system with mass.
+    body: Vec<[f64; 2]>,
+    events: Vec<crate::model::spring::Event>,
+    /// What the units say besides the line's.
+    units: &'static str,
+}
+
 /// The exact forces at the seed's phases `taus` of the last period: the
 /// stiff problem's (a massless body's: the stiff one at the drive scaled,
 /// `crate::system::massless`) one by one, a body with mass's attractor once
-/// ([`system::exact`], its body too); with [`Exact`] for the normal force
-/// (and, stiff, the forces under other conventions).
-fn exact_forces(
-    shape: &Shape,
-    c: &crate::Conditions,
-    data: &HistoryData,
-    taus: &[f64],
-) -> Result<(Exact, system::Exact)> {
+/// ([`system::exact`], its body too), the plane's orbit once
+/// ([`plane::exact`]); with [`Exact`] for the normal force (and, stiff along
+/// a line, the forces under other conventions).
+fn exact_forces(shape: &Shape, c: &crate::Conditions, data: &HistoryData, taus: &[f64]) -> Result<(Exact, Forces)> {
     let with_mass = c.system().filter(|s| s.frequency_ratio() > 0.0);
     if data.body.is_some() && with_mass.is_none() {
         let reason = "body columns compare a body with mass on a system: give --system-stiffness and \
                       --frequency-ratio, or leave the columns out";
         return Err(Error::Parse { context: "body_lag".into(), reason: reason.into() });
     }
+    if let Some(w) = c.transverse() {
+        let f = plane::exact(shape, c, w, taus)?;
+        let units = " (along and across the sliding direction)";
+        let forces = Forces { along: f.along, across: Some(f.across), body: vec![], events: f.events, units };
+        return Ok((Exact::normal_only(shape, c.amp()), forces));
+    }
     let stiff = match c.system() {
         Some(s) if with_mass.is_none() => crate::system::massless(c, s)?,
         _ => c.stiff(),
     };
     let exact = Exact::new(shape, &stiff)?;
-    let forces = match with_mass {
+    let (along, body, events) = match with_mass {
         Some(sys) => system::exact(shape, c, sys, taus)?,
         None => (crate::numerics::par::map(taus, |&t| exact.tangential(t)), vec![], exact.events(&stiff)?),
     };
-    Ok((exact, forces))
+    Ok((exact, Forces { along, across: None, body, events, units: "" }))
 }
 
 /// Errors of order one in a history: beyond `LARGE_ERROR` of the `peak` and
@@ -494,15 +523,22 @@ fn large_error_findings(
     (last, seed_taus): (&[usize], &[f64]),
     peak: f64,
 ) {
-    let step = last.windows(2).map(|w| (data.tangential[w[1]] - data.tangential[w[0]]).abs()).fold(0.0, f64::max);
+    let steps = |f: &[f64]| last.windows(2).map(|w| (f[w[1]] - f[w[0]]).abs()).fold(0.0, f64::max);
+    let step = steps(data.tangential).max(data.transverse.map_or(0.0, steps));
     let large = (super::convention::LARGE_ERROR * peak).max(4.0 * step);
+    // In the plane the force across counts as the force along does.
+    let error = |s: &HistorySample| {
+        s.error.abs().max(s.transverse_yours.zip(s.transverse_exact).map_or(0.0, |(y, e)| (y - e).abs()))
+    };
     let bad: Vec<usize> =
-        v.last_period.iter().filter(|s| s.error.is_nan() || s.error.abs() > large).map(|s| s.index).collect();
+        v.last_period.iter().filter(|s| s.error.is_nan() || error(s) > large).map(|s| s.index).collect();
     if bad.is_empty() {
         return;
     }
     let yours: Vec<f64> = last.iter().map(|&i| data.tangential[i]).collect();
     let named = match c.system().filter(|s| s.frequency_ratio() > 0.0) {
+        // The conventions are a line's (the plane's are a table's: `validate`).
+        _ if c.transverse().is_some() => None,
         Some(sys) => system::mistake(shape, (c, sys), seed_taus, (&yours, bad.clone()), v.max_abs_error),
         None => {
             let under = |other: &crate::Conditions| -> Option<f64> {
@@ -517,61 +553,6 @@ fn large_error_findings(
         None if v.findings.is_empty() => v.findings.extend(super::convention::large_errors(bad, v.max_abs_error)),
         None => {}
     }
-}
-
-/// The events between consecutive samples of the last period: the state (0 no
-/// contact, 1 on the bound, 2 below it) changes; each matched to the nearest
-/// exact event of its kind.
-fn find_events(
-    last: &[usize],
-    taus: &[f64],
-    offset: f64,
-    tangential: &[f64],
-    bound: &dyn Fn(usize) -> f64,
-    bar: f64,
-    exact_events: &[crate::model::spring::Event],
-) -> Vec<FoundEvent> {
-    use crate::model::spring::EventKind;
-    // 0 no contact, 1 on the bound, 2 below it, 3 on the bound's negative (a backward slip).
-    let state = |i: usize| {
-        let b = bound(i);
-        if b <= bar {
-            0
-        } else if (tangential[i] - b).abs() <= bar {
-            1
-        } else if (tangential[i] + b).abs() <= bar {
-            3
-        } else {
-            2
-        }
-    };
-    let mut found = vec![];
-    let mut prev = last.first().map(|&i| state(i));
-    for &i in last.iter().skip(1) {
-        let s = state(i);
-        let kinds: &[EventKind] = match (prev, s) {
-            (Some(0), 1) => &[EventKind::Contact],
-            (Some(0), 2) => &[EventKind::Contact, EventKind::Stick],
-            (Some(0), 3) => &[EventKind::Contact, EventKind::BackwardSlip],
-            (Some(1..=3), 0) => &[EventKind::LossOfContact],
-            (Some(1 | 3), 2) => &[EventKind::Stick],
-            (Some(2 | 3), 1) => &[EventKind::Slip],
-            (Some(1 | 2), 3) => &[EventKind::BackwardSlip],
-            _ => &[],
-        };
-        // The event lies between the two samples: their midpoint.
-        let tau = (0.5 * (taus[i - 1] + taus[i]) + offset).rem_euclid(TAU);
-        for &kind in kinds {
-            let exact = exact_events
-                .iter()
-                .filter(|e| e.kind == kind)
-                .map(|e| (e.tau, (tau - e.tau + 0.5 * TAU).rem_euclid(TAU) - 0.5 * TAU))
-                .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()));
-            found.push(FoundEvent { kind, tau, exact_tau: exact.map(|x| x.0), timing_error: exact.map(|x| x.1) });
-        }
-        prev = Some(s);
-    }
-    found
 }
 
 /// What a history shows of contact loss: samples with a tangential force

@@ -124,3 +124,40 @@ pub(super) fn drift(taus: &[f64], f: &[f64], from: f64, to: f64) -> Option<f64> 
     }
     worst
 }
+
+/// How the last periods of a history drift (the largest change of a force
+/// at the same phase, linear interpolation; in the plane of either force):
+/// the last from the one before, the one before from its own, whether the
+/// last is within `bar`, and the periods still needed for that.
+pub(super) struct Drifts {
+    pub(super) last: Option<f64>,
+    pub(super) previous: Option<f64>,
+    pub(super) periodic: Option<bool>,
+    pub(super) needed: Option<f64>,
+}
+
+impl Drifts {
+    pub(super) fn of(
+        taus: &[f64],
+        data: &super::HistoryData,
+        (start, end): (f64, f64),
+        periods: usize,
+        bar: f64,
+    ) -> Drifts {
+        let worst = |from: f64, to: f64| {
+            let of = |f: &[f64]| drift(taus, f, from, to);
+            match data.transverse {
+                Some(y) => of(data.tangential).zip(of(y)).map(|(a, b)| a.max(b)),
+                None => of(data.tangential),
+            }
+        };
+        let last = (periods >= 2).then(|| worst(start, end)).flatten();
+        let previous = (periods >= 3).then(|| worst(start - TAU, start)).flatten();
+        let needed = match (last, previous) {
+            (Some(d), _) if d <= bar => Some(0.0),
+            (Some(d), Some(p)) if d < p && d > 0.0 => Some(((bar / d).ln() / (d / p).ln()).ceil()),
+            _ => None,
+        };
+        Drifts { last, previous, periodic: last.map(|d| d <= bar), needed }
+    }
+}
