@@ -122,9 +122,11 @@ impl Series {
             scale *= h;
         }
         let p = &p[..LEN - skip];
-        // Most steps hold no event: the disc of radius 1 about 0 covers the
-        // step (a sign the series keeps has no fall, as `isolate` would find).
-        if excluded(p, 1.0) {
+        // Most steps hold no event: the series stays positive on [0, 1], where
+        // it is at least `p_0 + sum min(p_k, 0)` (a sign the series keeps has
+        // no fall, as `isolate` would find).
+        let low: f64 = p[1..].iter().map(|c| c.min(0.0)).sum();
+        if p[0] + low > -1e-12 * low {
             return Ok(None);
         }
         let mut budget = 4096usize;
@@ -166,8 +168,7 @@ fn isolate(p: &[f64], a: f64, b: f64, budget: &mut usize) -> Result<Option<(f64,
     *budget -= 1;
     let m = 0.5 * (a + b);
     let r = 0.5 * (b - a);
-    let q = shift(p, m);
-    if excluded(&q[..p.len()], r) {
+    if excluded(p, m, r) {
         return Ok(None);
     }
     if b - a <= LEAF {
@@ -180,15 +181,26 @@ fn isolate(p: &[f64], a: f64, b: f64, budget: &mut usize) -> Result<Option<(f64,
     isolate(p, m, b, budget)
 }
 
-/// Whether the series `q` (about the centre of an interval of half-width `r`)
-/// has no zero on it: its constant term exceeds the sum of the others.
-fn excluded(q: &[f64], r: f64) -> bool {
-    let (mut rest, mut rk) = (0.0, 1.0);
-    for c in &q[1..] {
+/// Whether `p` has no zero on the real interval `[m - r, m + r]`: shifted to
+/// its centre, `p(m + s) = sum q_k s^k`, it is at least `q_0 - sum_odd |q_k|
+/// r^k + sum_even min(q_k, 0) r^k` there and at most the mirror bound (`s^k`
+/// is in `[-r^k, r^k]` for odd `k`, in `[0, r^k]` for even), and one of
+/// them keeps its sign. On the interval alone, so tighter than the disc of
+/// radius `r` (where the constant term must exceed every other term's size).
+fn excluded(p: &[f64], m: f64, r: f64) -> bool {
+    let q = shift(p, m);
+    let (mut odd, mut low, mut high, mut rk) = (0.0, 0.0, 0.0, 1.0);
+    for (k, c) in q[..p.len()].iter().enumerate().skip(1) {
         rk *= r;
-        rest += c.abs() * rk;
+        if k % 2 == 1 {
+            odd += c.abs() * rk;
+        } else {
+            (low, high) = (low + c.min(0.0) * rk, high + c.max(0.0) * rk);
+        }
     }
-    q[0].abs() > rest * (1.0 + 1e-12)
+    // A margin for the rounding of these sums.
+    let margin = 1e-12 * (odd + high - low);
+    q[0] - odd + low > margin || q[0] + odd + high < -margin
 }
 
 impl Add for Series {
@@ -298,5 +310,49 @@ mod tests {
         assert_eq!(r.first_fall(2, 0.4).unwrap(), None);
         // A series that keeps its sign has no fall, negative or positive.
         assert_eq!((r * -1.0).first_fall(2, 0.4).unwrap(), None);
+    }
+
+    /// Products of simple real roots in `[-0.5, 1.5]` and a complex pair
+    /// close to the real axis (`(t - s)^2 + d^2`, `d` down to 0.01: a disc
+    /// about `s` holds a zero, the real interval none): the fall is the
+    /// first real root in `(0, 1]`, bracketed within 2e-9, or none. A wrong
+    /// bound of the odd or even terms excludes an interval that holds a root
+    /// (a later root or none is found) or none near the pair (the budget).
+    #[test]
+    fn first_fall_finds_the_first_real_root_beside_a_complex_pair() {
+        let mut seed = 12345u64;
+        let mut rand = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for _ in 0..2000 {
+            let roots: Vec<f64> = (0..3).map(|_| -0.5 + 2.0 * rand()).collect();
+            let (centre, d) = (rand(), 10f64.powf(-1.0 - rand()));
+            let mut p = Series::ZERO;
+            p.0[0] = 1.0;
+            let mut factor = |c: [f64; 3]| {
+                p = p * Series(
+                    [c[0], c[1], c[2], 0.0, 0.0]
+                        .iter()
+                        .copied()
+                        .chain([0.0; LEN - 5])
+                        .collect::<Vec<_>>()
+                        .try_into()
+                        .unwrap(),
+                )
+            };
+            for &r in &roots {
+                factor([-r, 1.0, 0.0]);
+            }
+            factor([centre * centre + d * d, -2.0 * centre, 1.0]);
+            if p.0[0] < 0.0 {
+                p = p * -1.0;
+            }
+            let first = roots.iter().copied().filter(|&r| r > 0.0 && r <= 1.0).fold(f64::INFINITY, f64::min);
+            match p.first_fall(0, 1.0).unwrap() {
+                Some((a, b)) => assert!(a <= first && first <= b && b - a < 2e-9, "{roots:?} {centre} {d}: {a} {b}"),
+                None => assert!(first.is_infinite(), "{roots:?} {centre} {d}: none, first {first}"),
+            }
+        }
     }
 }
