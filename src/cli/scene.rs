@@ -68,7 +68,7 @@ pub fn family_chart(results: &[(String, SceneResult)]) -> crate::chart::Chart {
                 positive_min = positive_min.min(x.velocity_m_per_s);
             }
         }
-        mumax = mumax.max(r.mu_static.max(r.rows.iter().map(|x| x.mu_macro).fold(0.0, f64::max)));
+        mumax = mumax.max(r.mu_static.unwrap_or(0.0).max(r.rows.iter().map(|x| x.mu_macro).fold(0.0, f64::max)));
     }
     let mu0s: Vec<f64> = results.iter().map(|(_, r)| r.mu0).collect();
     let log = vmin > 0.0 && vmax >= 100.0 * vmin;
@@ -122,43 +122,6 @@ pub fn family_chart(results: &[(String, SceneResult)]) -> crate::chart::Chart {
         key,
         rules,
     }
-}
-
-impl crate::export::Report for SceneResult {
-    /// One row per velocity.
-    fn columns(&self) -> Vec<String> {
-        [
-            "velocity_m_per_s",
-            "vbar",
-            "vhat",
-            "mu_macro",
-            "mu_ratio",
-            "mean_friction_force_n",
-            "mean_normal_force_n",
-            "regime",
-        ]
-        .map(String::from)
-        .to_vec()
-    }
-
-    fn rows(&self) -> Vec<Vec<String>> {
-        self.rows.iter().map(|x| row_cells(&x).to_vec()).collect()
-    }
-}
-
-/// One scene row as text, in the order of the report's columns.
-pub fn row_cells(x: &fricosc::scene::Row) -> [String; 8] {
-    let n = crate::output::num;
-    [
-        n(x.velocity_m_per_s),
-        n(x.vbar),
-        n(x.vhat),
-        n(x.mu_macro),
-        n(x.mu_ratio),
-        n(x.mean_friction_force_n),
-        n(x.mean_normal_force_n),
-        x.regime.name().to_string(),
-    ]
 }
 
 #[derive(clap::Args)]
@@ -235,30 +198,43 @@ pub fn run(a: SceneArgs) -> Result<()> {
 
 /// Every scene's rows in one CSV table: the scene (its name, or its file), the
 /// scene-level results repeated on each row (one amplitude of a family each),
-/// then the row's own columns.
-fn scenes_csv(out: &mut dyn Write, results: &[(String, fricosc::scene::SceneResult)]) -> io::Result<()> {
-    use crate::export::Report;
+/// then the row's own columns. The columns of the oscillations in the plane
+/// are there when a scene has them (empty cells in the others), `mu_static`
+/// is empty under them.
+fn scenes_csv(out: &mut dyn Write, results: &[(String, SceneResult)]) -> io::Result<()> {
     let n = crate::output::num;
+    let opt = |x: Option<f64>| x.map_or_else(String::new, n);
+    let tangential = results.iter().any(|(_, r)| r.tangential_amp.is_some());
+    let transverse = results.iter().any(|(_, r)| r.transverse_amp.is_some());
     let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(out);
     let fail = crate::output::io_of;
-    let scene_cols = ["scene", "u0_m", "du_m", "amp", "contact_radius_m", "critical_velocity_m_per_s", "mu_static"];
-    let mut header: Vec<String> = scene_cols.map(String::from).to_vec();
-    if let Some((_, r)) = results.first() {
-        header.extend(r.columns());
-    }
+    let mut header = vec!["scene", "u0_m", "du_m", "amp", "contact_radius_m", "critical_velocity_m_per_s", "mu_static"];
+    header.extend(if tangential { &["tangential_amp", "phase"][..] } else { &[] });
+    header.extend(if transverse { &["transverse_amp", "transverse_phase"][..] } else { &[] });
+    header.extend(["velocity_m_per_s", "vbar", "vhat", "mu_macro", "mu_ratio", "mean_friction_force_n"]);
+    header.push("mean_normal_force_n");
+    header.extend(if transverse { &["transverse_ratio", "mean_transverse_force_n"][..] } else { &[] });
+    header.push("regime");
     w.write_record(&header).map_err(fail)?;
     for (label, r) in results {
-        let scene = [
-            label.clone(),
-            n(r.mean_indentation_m),
-            n(r.amplitude_m),
-            n(r.amplitude_ratio),
-            n(r.contact_radius_m),
-            n(r.critical_velocity_m_per_s),
-            n(r.mu_static),
-        ];
+        let (du, radius, v_crit) = (r.amplitude_m, r.contact_radius_m, r.critical_velocity_m_per_s);
+        let mut scene = vec![label.clone(), n(r.mean_indentation_m), n(du), n(r.amplitude_ratio), n(radius)];
+        scene.extend([n(v_crit), opt(r.mu_static)]);
+        if tangential {
+            scene.extend([opt(r.tangential_amp), opt(r.phase)]);
+        }
+        if transverse {
+            scene.extend([opt(r.transverse_amp), opt(r.transverse_phase)]);
+        }
         for x in r.rows.iter() {
-            w.write_record(scene.iter().chain(&crate::scene::row_cells(&x))).map_err(fail)?;
+            let mut cells =
+                [x.velocity_m_per_s, x.vbar, x.vhat, x.mu_macro, x.mu_ratio, x.mean_friction_force_n].map(n).to_vec();
+            cells.push(n(x.mean_normal_force_n));
+            if transverse {
+                cells.extend([opt(x.transverse_ratio), opt(x.mean_transverse_force_n)]);
+            }
+            cells.push(x.regime.name().to_string());
+            w.write_record(scene.iter().chain(&cells)).map_err(fail)?;
         }
     }
     w.flush()

@@ -16,6 +16,7 @@ mod fuzz_mirror;
 mod hostile;
 mod plane_cli;
 mod scene;
+mod scene_plane;
 mod suite;
 mod system_cli;
 mod tidy;

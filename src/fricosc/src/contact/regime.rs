@@ -30,7 +30,8 @@ pub enum ContactRegime {
     /// Curved contact, `amp < 1`: the centre stays in contact, the springs at
     /// the edge lose it (a share [`Shape::jumping_share`] of the load).
     Mixed,
-    /// Curved contact, `amp >= 1`: every spring loses contact in each period.
+    /// Curved contact, `amp >= 1`: every spring loses contact in each period
+    /// (also a flat punch at `amp > 1` under an oscillation in the plane).
     Jumping,
 }
 

@@ -19,6 +19,7 @@
 //!   equals the given force. With contact loss (jumping) that differs from the
 //!   static force-indentation relation; the output says so.
 
+mod inplane;
 mod solve;
 
 pub use solve::solve_with;
@@ -164,6 +165,22 @@ pub struct Oscillation {
     pub amplitude_fraction: Option<Values>,
     /// Frequency `f` (Hz) (`omega = 2 pi f`).
     pub frequency_hz: f64,
+    /// Oscillation in the sliding direction, `dx sin(2 pi f t + phase)`: `dx`
+    /// (m), finite and `>= 0` (0 or absent: none); `T = dx/l` in pre-slip
+    /// lengths `l = mu0 u_z0 E*/G*` at most 1e6.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub tangential_amplitude_m: Option<f64>,
+    /// Its phase (radians, finite) against the normal oscillation (default 0).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub tangential_phase_rad: f64,
+    /// Oscillation in the plane across the sliding direction, `dy sin(2 pi f
+    /// t + psi)`: `dy` (m), finite and `>= 0` (0 or absent: none); `W = dy/l` at
+    /// most 1e6. Not with a `system` (not solved in the plane yet).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub transverse_amplitude_m: Option<f64>,
+    /// Its phase `psi` (radians, `|psi| <= 1e6`) against the normal oscillation (default 0).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub transverse_phase_rad: f64,
 }
 
 /// One value, a list of values, or a sweep (of amplitudes).
@@ -257,11 +274,21 @@ pub struct Row {
     pub mean_friction_force_n: f64,
     /// Mean normal force (N).
     pub mean_normal_force_n: f64,
+    /// Under an oscillation across the sliding direction: `<f_y>/<B>`, the
+    /// mean force across it over the mean bound (`mu0` times the mean normal force).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub transverse_ratio: Option<f64>,
+    /// Under an oscillation across the sliding direction: the mean force across it (N).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub mean_transverse_force_n: Option<f64>,
     /// What the springs do ([`crate::Shape::regime`]: `sliding` at or above the
     /// critical velocity; below it `permanent_contact`, `jumping_slip_first` or
     /// `jumping_stick_first` for the flat punch, `mixed` or `jumping` for a
     /// curved contact). On a system `sliding` from its own critical velocity,
     /// below it what the contact does: `permanent_contact`, `mixed` or `jumping`.
+    /// Under an oscillation in the plane (either direction) only what the
+    /// contact does normally: `permanent_contact` (flat punch, `amp <= 1`),
+    /// `mixed` (curved, `amp < 1`) or `jumping`.
     pub regime: crate::report::ContactRegime,
 }
 
@@ -272,6 +299,11 @@ pub struct Row {
 pub struct Rows {
     velocity: Vec<f64>,
     mu_ratio: Vec<f64>,
+    /// Under an oscillation across the sliding direction: `<f_y>/<B>` per velocity.
+    transverse_ratio: Option<Vec<f64>>,
+    /// Under an oscillation in the plane (either direction): the regime says
+    /// only what the contact does normally.
+    in_plane: bool,
     /// The critical velocity (m/s), `du/u0`, `mu0`, and the mean normal force (N).
     v_crit: f64,
     amp: f64,
@@ -288,6 +320,7 @@ impl Rows {
     pub fn get(&self, i: usize) -> Option<Row> {
         let (v0, mu) = (*self.velocity.get(i)?, self.mu_ratio[i]);
         let vbar = v0 / self.v_crit;
+        let across = self.transverse_ratio.as_ref().map(|t| t[i]);
         Some(Row {
             velocity_m_per_s: v0,
             vbar,
@@ -296,7 +329,14 @@ impl Rows {
             mu_ratio: mu,
             mean_friction_force_n: mu * self.mu0 * self.normal,
             mean_normal_force_n: self.normal,
+            transverse_ratio: across,
+            mean_transverse_force_n: across.map(|t| t * self.mu0 * self.normal),
             regime: match self.system_vbar {
+                _ if self.in_plane => match (self.flat, self.amp) {
+                    (true, a) if a <= 1.0 => crate::report::ContactRegime::PermanentContact,
+                    (false, a) if a < 1.0 => crate::report::ContactRegime::Mixed,
+                    _ => crate::report::ContactRegime::Jumping,
+                },
                 None => crate::contact::regime::regime_of(self.flat, vbar, self.amp),
                 Some(c) if vbar >= c || self.amp == 0.0 => crate::report::ContactRegime::Sliding,
                 Some(_) if self.amp >= 1.0 => crate::report::ContactRegime::Jumping,
@@ -354,19 +394,38 @@ pub struct SceneResult {
     /// Tangential contact stiffness [N/m].
     pub kx_n_per_m: f64,
     /// Critical velocity (eq. 26) (m/s): the unit of `vbar`; on a stiff
-    /// system no reduction at or above it.
+    /// system, without an oscillation in the plane, no reduction at or above it.
     pub critical_velocity_m_per_s: f64,
     /// On a system: the velocity (m/s) from which its reduction vanishes
     /// ([`crate::system::critical_vbar`] critical velocities); absent where
-    /// steady slip has no periodic response (then a warning says so).
+    /// steady slip has no periodic response (then a warning says so), and
+    /// under an oscillation in the sliding direction.
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub system_critical_velocity_m_per_s: Option<f64>,
-    /// Static coefficient of friction (the limit `v -> 0+`).
-    pub mu_static: f64,
+    /// Static coefficient of friction (the limit `v -> 0+`); absent under an
+    /// oscillation in the plane (which makes the contact slip at rest).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub mu_static: Option<f64>,
     /// Period-averaged normal force (N).
     pub mean_normal_force_n: f64,
     /// Whether the contact centre loses contact during each period.
     pub jumping: bool,
+    /// Under an oscillation in the plane: the pre-slip length `l = mu0 u_z0
+    /// E*/G*` (m), the unit of `vhat`, `T` and `W`.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub pre_slip_length_m: Option<f64>,
+    /// The oscillation in the sliding direction: `T = dx/l`.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub tangential_amp: Option<f64>,
+    /// Its phase (radians, reduced to `[0, 2 pi)`).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub phase: Option<f64>,
+    /// The oscillation across the sliding direction: `W = dy/l`.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub transverse_amp: Option<f64>,
+    /// Its phase `psi` (radians, reduced to `[0, 2 pi)`).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub transverse_phase: Option<f64>,
     /// Notes on the loading.
     pub note: String,
     /// On a system: its parameters in the contact's units.

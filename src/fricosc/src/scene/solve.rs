@@ -1,16 +1,20 @@
 //! Solving a scene: its fields checked, the indenter's geometry, load control,
 //! and the rows of every amplitude.
 
+use super::inplane::{in_plane, pre_slip, Drives};
 use super::*;
 use crate::root;
 
-struct Checked {
+pub(super) struct Checked {
     e_star: f64,
     g_star: f64,
     mu0: f64,
     omega: f64,
     geometry: Geometry,
     velocities: Vec<f64>,
+    /// The oscillations in the plane: `(dx, phase)` and `(dy, psi)` (m, radians), where given and > 0.
+    pub(super) tangential: Option<(f64, f64)>,
+    pub(super) transverse: Option<(f64, f64)>,
 }
 
 /// The indenter of a scene, checked, in SI units.
@@ -39,7 +43,7 @@ impl Geometry {
     }
 }
 
-fn field(source: &str, path: &str, value: f64, ok: bool, what: &str) -> Result<f64> {
+pub(super) fn field(source: &str, path: &str, value: f64, ok: bool, what: &str) -> Result<f64> {
     if value.is_finite() && ok {
         Ok(value)
     } else {
@@ -110,7 +114,8 @@ fn check(s: &Scene, source: &str, read: crate::contact::Reader) -> Result<Checke
             })
         }
     };
-    Ok(Checked { e_star, g_star, mu0, omega, geometry, velocities })
+    let (tangential, transverse) = in_plane(s, source)?;
+    Ok(Checked { e_star, g_star, mu0, omega, geometry, velocities, tangential, transverse })
 }
 
 /// The indenter's geometry in the solver's terms, checked.
@@ -317,24 +322,22 @@ fn solve_amplitude(
     let amp = du / u0;
     let (xc, kz, fbar) = contact(c, u0, du)?;
     let ratio = c.g_star / c.e_star;
-    let v_crit = c.mu0 * c.omega * du / ratio;
+    let v_crit = critical_velocity(c, du, source)?;
     let warnings = sphere_warnings(s, xc, u0, source)?;
-    let mu_static = shape.mu_static(amp, crate::DEFAULT_TOL)? * c.mu0;
-    // eq. 3 with kx/kz = G*/E*: vbar = v0 / v_crit. The velocity scale must be an
-    // ordinary number, else every vbar is 0, infinite or NaN.
-    if !(v_crit.is_normal() && v_crit > 0.0) {
-        return Err(Error::Parse {
-            context: source.into(),
-            reason: format!(
-                "the critical velocity mu0 omega du E*/G* = {v_crit:?} m/s is outside double precision \
-                 (check mu0, oscillation.frequency_hz, the amplitude and the materials)"
-            ),
-        });
-    }
+    let mu_static = if c.tangential.is_some() || c.transverse.is_some() {
+        None
+    } else {
+        Some(shape.mu_static(amp, crate::DEFAULT_TOL)? * c.mu0)
+    };
     let system = s.system.as_ref().map(|spec| system_of(spec, kz * ratio, c.omega, source)).transpose()?;
     let vbars: Vec<f64> = c.velocities.iter().map(|v0| v0 / v_crit).collect();
-    let mu_ratio = mu_ratios(&shape, &vbars, amp, system.as_ref(), progress)?;
+    let l = c.mu0 * u0 / ratio;
+    let plane = pre_slip(c, l, amp, vbars.iter().copied().fold(0.0, f64::max), source)?;
+    let in_plane = plane.any();
+    let (mu_ratio, transverse_ratio) = mu_ratios(&shape, (&vbars, amp), system.as_ref(), plane, progress)?;
     let system_vbar = match &system {
+        // The critical velocity is the normal oscillation's: none under one in the sliding direction.
+        Some(_) if in_plane => None,
         Some(sys) => Some(crate::system::critical_vbar(&shape, amp, sys)?.unwrap_or(f64::INFINITY)),
         None => None,
     };
@@ -343,8 +346,18 @@ fn solve_amplitude(
         warnings.push("on this system steady slip has no periodic response (an undamped slip resonance): the reduction does not vanish at any velocity".into());
     }
     let flat = shape.is_flat();
-    let rows =
-        Rows { velocity: c.velocities.clone(), mu_ratio, v_crit, amp, mu0: c.mu0, normal: fbar, flat, system_vbar };
+    let rows = Rows {
+        velocity: c.velocities.clone(),
+        mu_ratio,
+        transverse_ratio,
+        in_plane,
+        v_crit,
+        amp,
+        mu0: c.mu0,
+        normal: fbar,
+        flat,
+        system_vbar,
+    };
     // Every number of the answer must be finite: an overflow names its field.
     let scalars = [
         ("e_star_pa", c.e_star),
@@ -356,28 +369,11 @@ fn solve_amplitude(
         ("kz_n_per_m", kz),
         ("kx_n_per_m", kz * ratio),
         ("critical_velocity_m_per_s", v_crit),
-        ("mu_static", mu_static),
+        ("mu_static", mu_static.unwrap_or(0.0)),
         ("mean_normal_force_n", fbar),
+        ("pre_slip_length_m", l),
     ];
-    let overflow = |name: &str, v: f64| Error::Parse {
-        context: source.into(),
-        reason: format!("{name} = {v:?}: the scene's values overflow double precision"),
-    };
-    if let Some((name, v)) = scalars.iter().find(|(_, v)| !v.is_finite()) {
-        return Err(overflow(name, *v));
-    }
-    for (i, r) in rows.iter().enumerate() {
-        for (name, v) in [
-            ("vbar", r.vbar),
-            ("vhat", r.vhat),
-            ("mu_macro", r.mu_macro),
-            ("mean_friction_force_n", r.mean_friction_force_n),
-        ] {
-            if !v.is_finite() {
-                return Err(overflow(&format!("rows[{i}].{name} (velocity {:?} m/s)", r.velocity_m_per_s), v));
-            }
-        }
-    }
+    finite(&scalars, &rows, source)?;
     Ok(SceneResult {
         name: s.name.clone(),
         mu0: c.mu0,
@@ -394,6 +390,11 @@ fn solve_amplitude(
         mu_static,
         mean_normal_force_n: fbar,
         jumping: amp > 1.0,
+        pre_slip_length_m: in_plane.then_some(l),
+        tangential_amp: plane.tangential.map(|t| t.0),
+        phase: plane.tangential.map(|t| t.1),
+        transverse_amp: plane.transverse.map(|w| w.amp()),
+        transverse_phase: plane.transverse.map(|w| w.phase()),
         note,
         system,
         warnings,
@@ -401,32 +402,86 @@ fn solve_amplitude(
     })
 }
 
-/// `mu/mu0` at every `vbar` (on every core, in chunks that report `progress`),
-/// on `system` if any.
+/// Eq. 26's critical velocity `mu0 omega du E*/G*` (m/s), the unit of `vbar`
+/// (eq. 3 with `kx/kz = G*/E*`: `vbar = v0/v_crit`): refused unless an
+/// ordinary number, else every `vbar` is 0, infinite or NaN.
+fn critical_velocity(c: &Checked, du: f64, source: &str) -> Result<f64> {
+    let v_crit = c.mu0 * c.omega * du / (c.g_star / c.e_star);
+    if v_crit.is_normal() && v_crit > 0.0 {
+        return Ok(v_crit);
+    }
+    Err(Error::Parse {
+        context: source.into(),
+        reason: format!(
+            "the critical velocity mu0 omega du E*/G* = {v_crit:?} m/s is outside double precision \
+             (check mu0, oscillation.frequency_hz, the amplitude and the materials)"
+        ),
+    })
+}
+
+/// Every number of a scene's answer finite: an overflow names its field.
+fn finite(scalars: &[(&str, f64)], rows: &Rows, source: &str) -> Result<()> {
+    let overflow = |name: &str, v: f64| Error::Parse {
+        context: source.into(),
+        reason: format!("{name} = {v:?}: the scene's values overflow double precision"),
+    };
+    if let Some((name, v)) = scalars.iter().find(|(_, v)| !v.is_finite()) {
+        return Err(overflow(name, *v));
+    }
+    for (i, r) in rows.iter().enumerate() {
+        for (name, v) in [
+            ("vbar", r.vbar),
+            ("vhat", r.vhat),
+            ("mu_macro", r.mu_macro),
+            ("mean_friction_force_n", r.mean_friction_force_n),
+            ("mean_transverse_force_n", r.mean_transverse_force_n.unwrap_or(0.0)),
+        ] {
+            if !v.is_finite() {
+                return Err(overflow(&format!("rows[{i}].{name} (velocity {:?} m/s)", r.velocity_m_per_s), v));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// `mu/mu0` and, under a transverse oscillation, `<f_y>/<B>` at every `vbar`
+/// (on every core, in chunks that report `progress`), on the system if any,
+/// with the oscillations in the plane if any.
 fn mu_ratios(
     shape: &crate::Shape,
-    vbars: &[f64],
-    amp: f64,
+    (vbars, amp): (&[f64], f64),
     system: Option<&crate::system::System>,
+    drives: Drives,
     progress: &(dyn Fn(u64) + Sync),
-) -> Result<Vec<f64>> {
+) -> Result<(Vec<f64>, Option<Vec<f64>>)> {
     let mut mu_ratio = Vec::with_capacity(vbars.len());
+    let mut across = drives.transverse.map(|_| Vec::with_capacity(vbars.len()));
+    let in_plane = drives.any();
     for chunk in vbars.chunks(1024) {
-        let mus = crate::numerics::par::map(chunk, |&vbar| -> Result<f64> {
-            let c = || crate::Conditions::vbar(vbar, amp);
+        let mus = crate::numerics::par::map(chunk, |&vbar| -> Result<(f64, Option<f64>)> {
+            // At or above the critical velocity no spring is computed.
+            if vbar >= 1.0 && !in_plane && system.is_none() {
+                return Ok((1.0, None));
+            }
+            let c = drives.conditions(vbar, amp)?;
             Ok(match system {
-                Some(&sys) => shape.ratio(&c()?.with_system(sys))?.mu_ratio,
-                // At or above the critical velocity no spring is computed.
-                None if vbar >= 1.0 => 1.0,
-                None => shape.ratio(&c()?)?.mu_ratio,
+                Some(&sys) => (shape.ratio(&c.with_system(sys))?.mu_ratio, None),
+                None => {
+                    let e = shape.evaluate(&c)?;
+                    (e.ratio.mu_ratio, e.transverse_ratio)
+                }
             })
         });
         for m in mus {
-            mu_ratio.push(m?);
+            let (mu, t) = m?;
+            mu_ratio.push(mu);
+            if let (Some(a), Some(t)) = (across.as_mut(), t) {
+                a.push(t);
+            }
         }
         progress(chunk.len() as u64);
     }
-    Ok(mu_ratio)
+    Ok((mu_ratio, across))
 }
 
 /// The system in the contact's units (`kx` its tangential stiffness, `omega`

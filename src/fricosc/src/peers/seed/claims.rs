@@ -568,7 +568,15 @@ fn two_parameters() -> Claim {
             mu0: 0.4,
             indenter: Indenter::Sphere { radius_m: r },
             loading: Loading { mean_indentation_m: Some(u), mean_normal_force_n: None },
-            oscillation: Oscillation { amplitude_m: Some(Values::One(d)), amplitude_fraction: None, frequency_hz: f },
+            oscillation: Oscillation {
+                amplitude_m: Some(Values::One(d)),
+                amplitude_fraction: None,
+                frequency_hz: f,
+                tangential_amplitude_m: None,
+                tangential_phase_rad: 0.0,
+                transverse_amplitude_m: None,
+                transverse_phase_rad: 0.0,
+            },
             velocity: VelocitySpec { values_m_per_s: Some(vec![v]), sweep: None },
             system: None,
         };
