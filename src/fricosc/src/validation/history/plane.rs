@@ -32,20 +32,18 @@ pub(super) fn exact(shape: &Shape, c: &crate::Conditions, w: Transverse, taus: &
     let mut order: Vec<usize> = (0..taus.len()).collect();
     order.sort_by(|&a, &b| taus[a].total_cmp(&taus[b]));
     let sorted: Vec<f64> = order.iter().map(|&i| taus[i]).collect();
-    let samples = crate::plane::samples(shape, c, w, (0, PLANE_REFERENCE_SPRINGS), sorted, |_| Ok(()))?;
+    // One walk: the samples, and the flat punch's events of one period among them.
+    let periods = usize::from(shape.is_flat());
+    let samples = crate::plane::samples(shape, c, w, (periods, PLANE_REFERENCE_SPRINGS), sorted, |_| Ok(()))?;
     let (mut along, mut across) = (vec![0.0; taus.len()], vec![0.0; taus.len()]);
-    for (&i, s) in order.iter().zip(&samples) {
+    let (at_taus, at_events): (Vec<_>, Vec<_>) = samples.iter().partition(|s| s.event.is_none());
+    for (&i, s) in order.iter().zip(at_taus) {
         (along[i], across[i]) = (s.tangential, s.transverse.unwrap_or(0.0));
     }
-    let events = if shape.is_flat() {
-        let at_events = crate::plane::samples(shape, c, w, (1, 1), vec![], |_| Ok(()))?;
-        at_events
-            .iter()
-            .filter_map(|s| Some(Event { kind: s.event?, tau: s.tau, normal: s.normal, tangential: s.tangential }))
-            .collect()
-    } else {
-        vec![]
-    };
+    let events = at_events
+        .iter()
+        .filter_map(|s| Some(Event { kind: s.event?, tau: s.tau, normal: s.normal, tangential: s.tangential }))
+        .collect();
     Ok(PlaneForces { along, across, events })
 }
 
