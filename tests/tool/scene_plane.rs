@@ -70,6 +70,36 @@ fn a_scene_in_the_plane_is_the_point_at_its_pre_slip_amplitudes() {
     }
 }
 
+/// Each drive alone (the flat punch): the other's fields absent, the rows the
+/// point's with that drive only (a velocity above the normal oscillation's critical one among them).
+#[test]
+fn each_oscillation_in_the_plane_alone_is_the_point_with_it_alone() {
+    let (l, omega, flat) = (pre_slip_length(), 2.0 * PI * 100.0, r#"{"flat_punch": {"radius_m": 0.001}}"#);
+    let v = [0.0, 1e-4, 2.5e-4];
+    for along in [true, false] {
+        let extra = if along {
+            r#", "tangential_amplitude_m": 5e-7, "tangential_phase_rad": 1.1"#
+        } else {
+            r#", "transverse_amplitude_m": 1e-6, "transverse_phase_rad": 0.7"#
+        };
+        let r = solve(&parse(&scene(flat, 0.5, extra, &v), "s.json").unwrap(), "s.json").unwrap().remove(0);
+        assert_eq!((r.tangential_amp.is_some(), r.transverse_amp.is_some()), (along, !along));
+        for (row, &v0) in r.rows.iter().zip(&v) {
+            let c = Conditions::vhat(v0 / (omega * l), 0.5).unwrap();
+            let c = if along {
+                c.with_tangential(5e-7 / l, 1.1).unwrap()
+            } else {
+                c.with_transverse(Transverse::new(1e-6 / l, 0.7).unwrap())
+            };
+            let e = Shape::flat().evaluate(&c).unwrap();
+            assert!((row.mu_ratio - e.ratio.mu_ratio).abs() < 1e-15, "{along} {v0}: {}", row.mu_ratio);
+            assert_eq!(row.transverse_ratio.is_some(), !along);
+            assert!((row.transverse_ratio.unwrap_or(0.0) - e.transverse_ratio.unwrap_or(0.0)).abs() < 1e-15);
+            assert!(row.mu_ratio < 0.95, "{along} {v0}: a row that tests nothing");
+        }
+    }
+}
+
 /// Amplitudes of zero in the plane are the scene without them, bit for bit.
 #[test]
 fn zero_amplitudes_in_the_plane_are_the_scene_without_them() {
@@ -95,6 +125,12 @@ fn bad_oscillations_in_the_plane_name_their_field() {
         (r#", "transverse_amplitude_m": 1e-7, "transverse_phase_rad": 2e6"#, "oscillation.transverse_phase_rad"),
         (r#", "tangential_amplitude_m": 1e-7, "tangential_phase_rad": 1e400"#, "number out of range"),
     ];
+    // vhat = v0/(omega l) beyond 1e6 pre-slip lengths, at 1e3 m/s.
+    let e = parse(&scene(flat, 0.5, r#", "tangential_amplitude_m": 1e-7"#, &[1e-4, 1e3]), "s.json")
+        .and_then(|s| solve(&s, "s.json"))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("s.json: velocity") && e.contains("vhat"), "{e}");
     for (extra, frag) in cases {
         let e = parse(&scene(flat, 0.5, extra, &[1e-4]), "s.json").and_then(|s| solve(&s, "s.json"));
         let e = e.unwrap_err().to_string();
