@@ -204,8 +204,8 @@ pub fn run(a: SceneArgs) -> Result<()> {
 fn scenes_csv(out: &mut dyn Write, results: &[(String, SceneResult)]) -> io::Result<()> {
     let n = crate::output::num;
     let opt = |x: Option<f64>| x.map_or_else(String::new, n);
-    let tangential = results.iter().any(|(_, r)| r.tangential_amp.is_some());
-    let transverse = results.iter().any(|(_, r)| r.transverse_amp.is_some());
+    let tangential = results.iter().any(|(_, r)| r.in_plane.tangential_amp.is_some());
+    let transverse = results.iter().any(|(_, r)| r.in_plane.transverse_amp.is_some());
     let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(out);
     let fail = crate::output::io_of;
     let mut header = vec!["scene", "u0_m", "du_m", "amp", "contact_radius_m", "critical_velocity_m_per_s", "mu_static"];
@@ -221,10 +221,10 @@ fn scenes_csv(out: &mut dyn Write, results: &[(String, SceneResult)]) -> io::Res
         let mut scene = vec![label.clone(), n(r.mean_indentation_m), n(du), n(r.amplitude_ratio), n(radius)];
         scene.extend([n(v_crit), opt(r.mu_static)]);
         if tangential {
-            scene.extend([opt(r.tangential_amp), opt(r.phase)]);
+            scene.extend([opt(r.in_plane.tangential_amp), opt(r.in_plane.phase)]);
         }
         if transverse {
-            scene.extend([opt(r.transverse_amp), opt(r.transverse_phase)]);
+            scene.extend([opt(r.in_plane.transverse_amp), opt(r.in_plane.transverse_phase)]);
         }
         for x in r.rows.iter() {
             let mut cells =

@@ -47,9 +47,9 @@ fn a_scene_in_the_plane_is_the_point_at_its_pre_slip_amplitudes() {
         let mut r = solve(&parse(&scene(indenter, amp, &extra, &v), "s.json").unwrap(), "s.json").unwrap();
         let r = r.remove(0);
         assert!((r.pre_slip_length_m.unwrap() / l - 1.0).abs() < 4e-16, "{:?} vs {l}", r.pre_slip_length_m);
-        assert!((r.tangential_amp.unwrap() / (dx / l) - 1.0).abs() < 1e-15);
-        assert!((r.transverse_amp.unwrap() / (dy / l) - 1.0).abs() < 1e-15);
-        assert_eq!((r.phase, r.transverse_phase), (Some(phase), Some(psi)));
+        assert!((r.in_plane.tangential_amp.unwrap() / (dx / l) - 1.0).abs() < 1e-15);
+        assert!((r.in_plane.transverse_amp.unwrap() / (dy / l) - 1.0).abs() < 1e-15);
+        assert_eq!((r.in_plane.phase, r.in_plane.transverse_phase), (Some(phase), Some(psi)));
         assert_eq!(r.mu_static, None, "at rest the contact slips under the oscillations in the plane");
         for (row, &v0) in r.rows.iter().zip(&v) {
             let c = Conditions::vhat(v0 / (omega * l), amp)
@@ -83,7 +83,7 @@ fn each_oscillation_in_the_plane_alone_is_the_point_with_it_alone() {
             r#", "transverse_amplitude_m": 1e-6, "transverse_phase_rad": 0.7"#
         };
         let r = solve(&parse(&scene(flat, 0.5, extra, &v), "s.json").unwrap(), "s.json").unwrap().remove(0);
-        assert_eq!((r.tangential_amp.is_some(), r.transverse_amp.is_some()), (along, !along));
+        assert_eq!((r.in_plane.tangential_amp.is_some(), r.in_plane.transverse_amp.is_some()), (along, !along));
         for (row, &v0) in r.rows.iter().zip(&v) {
             let c = Conditions::vhat(v0 / (omega * l), 0.5).unwrap();
             let c = if along {
@@ -110,7 +110,7 @@ fn zero_amplitudes_in_the_plane_are_the_scene_without_them() {
     let zeros = solve(&parse(&scene(flat, 0.5, zero, &v), "s.json").unwrap(), "s.json").unwrap();
     assert_eq!(plain[0].rows, zeros[0].rows);
     assert_eq!(plain[0].mu_static, zeros[0].mu_static);
-    assert!(zeros[0].pre_slip_length_m.is_none() && zeros[0].transverse_amp.is_none());
+    assert!(zeros[0].pre_slip_length_m.is_none() && zeros[0].in_plane.transverse_amp.is_none());
 }
 
 /// Bad amplitudes and phases in the plane, and the plane on a system, are

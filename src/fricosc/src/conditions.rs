@@ -237,6 +237,50 @@ impl Conditions {
     }
 }
 
+/// The oscillations in the plane of a point, as outputs report them: `T` and
+/// its phase along the sliding direction, `W` and `psi` across it (phases in
+/// `[0, 2 pi)`), each absent without that oscillation.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct InPlane {
+    /// The tangential amplitude `T = dx/l`, if the body oscillates in the sliding direction.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub tangential_amp: Option<f64>,
+    /// Its phase against the normal oscillation (radians in `[0, 2 pi)`).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub phase: Option<f64>,
+    /// The transverse amplitude `W = dy/l`, if the body oscillates across the sliding direction.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub transverse_amp: Option<f64>,
+    /// Its phase against the normal oscillation (radians in `[0, 2 pi)`).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub transverse_phase: Option<f64>,
+}
+
+impl InPlane {
+    /// The oscillations in the plane of `c`.
+    #[must_use]
+    pub fn of(c: &Conditions) -> InPlane {
+        InPlane::new(c.tangential(), c.transverse())
+    }
+
+    /// From `(T, phase)` and the transverse drive.
+    pub(crate) fn new(tangential: Option<(f64, f64)>, w: Option<Transverse>) -> InPlane {
+        InPlane {
+            tangential_amp: tangential.map(|x| x.0),
+            phase: tangential.map(|x| x.1),
+            transverse_amp: w.map(|w| w.amp()),
+            transverse_phase: w.map(|w| w.phase()),
+        }
+    }
+
+    /// Whether the body oscillates in the plane at all.
+    #[must_use]
+    pub fn any(&self) -> bool {
+        self.tangential_amp.is_some() || self.transverse_amp.is_some()
+    }
+}
+
 /// `vbar` (eq. 3) from `vhat = vbar amp` (eq. 15): `vhat / amp`, refused where
 /// `amp` is 0 (the velocity has no `vbar` then) or the quotient overflows.
 fn vbar_from_vhat(vhat: f64, amp: f64) -> Result<f64> {

@@ -72,7 +72,7 @@ pub mod scene;
 pub mod system;
 pub mod validation;
 
-pub use conditions::{Conditions, Velocity, DEFAULT_TOL};
+pub use conditions::{Conditions, InPlane, Velocity, DEFAULT_TOL};
 pub use contact::shape::{Evaluation, Report, Shape, MAX_EXPONENT, MIN_EXPONENT};
 pub use error::{Error, Result};
 pub use model::ratio::Ratio;

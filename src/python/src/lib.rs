@@ -334,10 +334,10 @@ fn history<'py>(
         ("vbar", h.point.vbar),
         ("vhat", h.point.vhat),
         ("amp", Some(h.point.amp)),
-        ("tangential_amp", h.point.tangential_amp),
-        ("phase", h.point.phase),
-        ("transverse_amp", h.point.transverse_amp),
-        ("transverse_phase", h.point.transverse_phase),
+        ("tangential_amp", h.point.in_plane.tangential_amp),
+        ("phase", h.point.in_plane.phase),
+        ("transverse_amp", h.point.in_plane.transverse_amp),
+        ("transverse_phase", h.point.in_plane.transverse_phase),
     ] {
         if let Some(x) = value {
             d.set_item(key, x)?;

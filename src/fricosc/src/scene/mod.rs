@@ -414,18 +414,9 @@ pub struct SceneResult {
     /// E*/G*` (m), the unit of `vhat`, `T` and `W`.
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub pre_slip_length_m: Option<f64>,
-    /// The oscillation in the sliding direction: `T = dx/l`.
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
-    pub tangential_amp: Option<f64>,
-    /// Its phase (radians, reduced to `[0, 2 pi)`).
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
-    pub phase: Option<f64>,
-    /// The oscillation across the sliding direction: `W = dy/l`.
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
-    pub transverse_amp: Option<f64>,
-    /// Its phase `psi` (radians, reduced to `[0, 2 pi)`).
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
-    pub transverse_phase: Option<f64>,
+    /// The oscillations in the plane in pre-slip lengths, if any.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub in_plane: crate::InPlane,
     /// Notes on the loading.
     pub note: String,
     /// On a system: its parameters in the contact's units.

@@ -268,7 +268,7 @@ fn a_curved_combined_history_averages_to_the_exact_mu() {
     let centre_n: Vec<(f64, f64)> = h.samples.iter().map(|s| (s.tau, s.springs[0][0])).collect();
     let flat = Shape::flat().ratio(&c).unwrap().mu_ratio;
     assert!((mean(&centre) / mean(&centre_n) - flat).abs() < 1e-6);
-    assert_eq!(h.point.tangential_amp, Some(1.5));
+    assert_eq!(h.point.in_plane.tangential_amp, Some(1.5));
 }
 
 /// On a system with mass and stiffness the history is one period of the

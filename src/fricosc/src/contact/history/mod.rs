@@ -96,35 +96,22 @@ pub struct HistoryPoint {
     pub vhat: Option<f64>,
     /// Amplitude `du/u0`.
     pub amp: f64,
-    /// The tangential amplitude `T = dx/l`, if the body oscillates in the sliding direction.
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
-    pub tangential_amp: Option<f64>,
-    /// Its phase against the normal oscillation (radians in `[0, 2 pi)`).
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
-    pub phase: Option<f64>,
-    /// The transverse amplitude `W = dy/l`, if the body oscillates across the sliding direction.
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
-    pub transverse_amp: Option<f64>,
-    /// Its phase against the normal oscillation (radians in `[0, 2 pi)`).
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
-    pub transverse_phase: Option<f64>,
+    /// The oscillations in the plane, if any.
+    #[cfg_attr(feature = "serde", serde(flatten))]
+    pub in_plane: crate::InPlane,
 }
 
 impl HistoryPoint {
     /// The point of the conditions `c`.
     #[must_use]
     pub fn of(c: &Conditions) -> HistoryPoint {
-        let tangential = c.tangential();
-        let w = c.transverse();
-        let by_vhat = tangential.is_some() || w.is_some();
+        let in_plane = crate::InPlane::of(c);
+        let by_vhat = in_plane.any();
         HistoryPoint {
             vbar: if by_vhat { None } else { c.as_vbar().ok() },
             vhat: by_vhat.then(|| c.as_vhat()),
             amp: c.amp(),
-            tangential_amp: tangential.map(|x| x.0),
-            phase: tangential.map(|x| x.1),
-            transverse_amp: w.map(|w| w.amp()),
-            transverse_phase: w.map(|w| w.phase()),
+            in_plane,
         }
     }
 }
@@ -133,13 +120,14 @@ impl std::fmt::Display for HistoryPoint {
     /// `vbar 0.3, du/u0 0.5`, or `vhat 0.3, du/u0 0.5, T 1.5, phase 1.3`,
     /// and `W 1, psi 0.7` across the sliding direction.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match (self.vbar, self.vhat, self.tangential_amp, self.phase) {
+        let p = &self.in_plane;
+        match (self.vbar, self.vhat, p.tangential_amp, p.phase) {
             (_, Some(v), Some(t), Some(p)) => write!(f, "vhat {v}, du/u0 {}, T {t}, phase {p}", self.amp)?,
             (_, Some(v), ..) => write!(f, "vhat {v}, du/u0 {}", self.amp)?,
             (Some(v), ..) => write!(f, "vbar {v}, du/u0 {}", self.amp)?,
             _ => write!(f, "du/u0 {}", self.amp)?,
         }
-        match (self.transverse_amp, self.transverse_phase) {
+        match (p.transverse_amp, p.transverse_phase) {
             (Some(w), Some(psi)) => write!(f, ", W {w}, psi {psi}"),
             _ => Ok(()),
         }
