@@ -27,6 +27,7 @@ mod properties;
 mod reference;
 #[allow(clippy::excessive_precision)]
 mod report_fields;
+mod scene_plane;
 mod stepper;
 mod stress;
 mod system;
