@@ -78,7 +78,6 @@ pub(super) fn pre_slip(c: &Checked, l: f64, amp: f64, fastest: f64, source: &str
         let name = match &e {
             Error::InvalidParameter { name: "transverse-amp", .. } => "oscillation.transverse_amplitude_m",
             Error::InvalidParameter { name: "transverse-phase", .. } => "oscillation.transverse_phase_rad",
-            Error::InvalidParameter { name: "phase", .. } => "oscillation.tangential_phase_rad",
             Error::InvalidParameter { name: "tangential-amp", .. } => "oscillation.tangential_amplitude_m",
             Error::InvalidParameter { name: "vhat" | "vbar", .. } => "velocity",
             _ => "oscillation",
