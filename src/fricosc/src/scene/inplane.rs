@@ -79,7 +79,7 @@ pub(super) fn pre_slip(c: &Checked, l: f64, amp: f64, fastest: f64, source: &str
             Error::InvalidParameter { name: "transverse-amp", .. } => "oscillation.transverse_amplitude_m",
             Error::InvalidParameter { name: "transverse-phase", .. } => "oscillation.transverse_phase_rad",
             Error::InvalidParameter { name: "tangential-amp", .. } => "oscillation.tangential_amplitude_m",
-            Error::InvalidParameter { name: "vhat" | "vbar", .. } => "velocity",
+            Error::InvalidParameter { name: "vhat", .. } => "velocity",
             _ => "oscillation",
         };
         Error::Parse {
