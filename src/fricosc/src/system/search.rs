@@ -23,9 +23,9 @@ use crate::error::Result;
 /// iterations from there (each about a period's work). A return this near
 /// that Newton cannot close (the sequence of phases still changing, or a
 /// slow quasi-periodic drift) costs an attempt ([`NEWTON_ATTEMPTS`]), and
-/// the next must come [`TIGHTEN`] times nearer. At 1e-3, and a single
-/// attempt per return, the flat rows of the bench's table on a system ran
-/// 1.73 M instructions each; at 1e-1 1.22 M.
+/// the next must come [`TIGHTEN`] times nearer. A loose threshold hands
+/// Newton an orbit periods earlier than a tight one; what that costs is in
+/// `fricosc bench`'s table on a system.
 const NEAR: f64 = 1e-1;
 
 /// How much nearer a return must come after an attempt Newton could not close.
