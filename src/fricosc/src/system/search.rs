@@ -193,7 +193,8 @@ mod tests {
     /// `REFINE` orbits with the geometric tail of `mu`'s changes, which must
     /// bound the gap to Newton's orbit and stay within 10 times it (the tail
     /// at the last measured rate alone fell 1e-4 short of the gap at zeta =
-    /// 20). `periods_run` counts every period mapped: `REFINE` and the first
+    /// 20). It stops once closed (the fast one in two orbits). `periods_run`
+    /// counts every period mapped: `REFINE` and the first
     /// where the contraction is slow; else as many as the steps run in the
     /// contraction are periods of the closed orbit's steps.
     #[test]
@@ -225,8 +226,24 @@ mod tests {
                 assert!(gap > 1e-13 && est <= 10.0 * gap, "{zeta}: {gap:e} {mine:?}");
             } else {
                 assert!(est > 0.0 && est < 1e-12 && super::distance(&end, &at) < 1e-9, "{mine:?}");
+                assert!(mine.periods_run <= 40 + 4, "closed, yet run on: {mine:?}");
                 assert!(super::distance(&back, &end) < 1e-12);
             }
         }
+    }
+    /// An undamped body's state that drifts (a multiplier of modulus 1, the
+    /// distance between returns growing at times) is no orbit: the
+    /// contraction gives none, and the search goes on.
+    #[test]
+    fn a_drift_is_not_contracted_into_an_orbit() {
+        let p = Params { kappa: 1.0, omega: 0.5, zeta: 0.0, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
+        let springs = crate::system::springs(&crate::shape::Shape::parabolic(), p.amp, 64).unwrap();
+        let fd = Foundation::new(p, &springs);
+        let mut s = stated_start(&fd);
+        for _ in 0..40 {
+            s = map_k(&fd, &s, 1).0;
+        }
+        let found = contracted(&fd, &s, 1, 40).unwrap();
+        assert!(found.is_none(), "{:?}", found.map(|f| f.0));
     }
 }
