@@ -231,6 +231,7 @@ mod tests {
             }
         }
     }
+
     /// An undamped body's state that drifts (a multiplier of modulus 1, the
     /// distance between returns growing at times) is no orbit: the
     /// contraction gives none, and the search goes on.
@@ -245,5 +246,29 @@ mod tests {
         }
         let found = contracted(&fd, &s, 1, 40).unwrap();
         assert!(found.is_none(), "{:?}", found.map(|f| f.0));
+    }
+
+    /// The contraction keeps to its step budget (twice `MAX_STEPS`, the
+    /// search's included): a slow contraction charged to within ten and a
+    /// half orbits of it stops after eleven (not `REFINE`), its estimate
+    /// still bounding the gap to Newton's orbit.
+    #[test]
+    fn the_contraction_keeps_to_its_step_budget() {
+        let p = Params { kappa: 0.01, omega: 0.3, zeta: 20.0, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
+        let springs = crate::system::springs(&crate::shape::Shape::parabolic(), p.amp, 64).unwrap();
+        let fd = Foundation::new(p, &springs);
+        let mut s = stated_start(&fd);
+        for _ in 0..40 {
+            s = map_k(&fd, &s, 1).0;
+        }
+        let newton = orbit(&fd, s.clone(), 1, 40).expect("Newton's orbit").0;
+        let one = fd.steps_run();
+        map_k(&fd, &s, 1);
+        let one = (fd.steps_run() - one) as f64;
+        fd.count((2.0 * super::MAX_STEPS - 10.5 * one - fd.steps_run() as f64) as u64);
+        let mine = contracted(&fd, &s, 1, 40).unwrap().expect("the contraction's orbit").0;
+        assert!((50..=53).contains(&mine.periods_run), "{mine:?}");
+        let gap = (mine.mu_ratio - newton.mu_ratio).abs();
+        assert!(gap <= mine.error_estimate + newton.error_estimate, "{gap:e} {mine:?}");
     }
 }
