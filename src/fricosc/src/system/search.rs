@@ -182,7 +182,20 @@ fn contracted(fd: &Foundation, s: &Reduced, k: usize, run: usize) -> Result<Opti
 mod tests {
     use super::{contracted, orbit, Foundation, REFINE};
     use crate::system::phase::Params;
-    use crate::system::reduced::{map_k, stated_start};
+    use crate::system::reduced::{map_k, stated_start, Reduced};
+
+    /// A paraboloid's 64 springs at `vhat = 0.3`, `amp = 0.5` on the system
+    /// `(kappa, Omega, zeta)`, and the state 40 periods from the stated start.
+    fn forty_periods_on(kappa: f64, omega: f64, zeta: f64) -> (Foundation, Reduced) {
+        let p = Params { kappa, omega, zeta, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
+        let springs = crate::system::springs(&crate::shape::Shape::parabolic(), p.amp, 64).unwrap();
+        let fd = Foundation::new(p, &springs);
+        let mut s = stated_start(&fd);
+        for _ in 0..40 {
+            s = map_k(&fd, &s, 1).0;
+        }
+        (fd, s)
+    }
 
     /// The map's contraction (the refinement beyond `MAX_NEWTON` springs)
     /// closes the same orbit as Newton, on a paraboloid's 64 springs from a
@@ -199,16 +212,10 @@ mod tests {
     /// contraction are periods of the closed orbit's steps.
     #[test]
     fn the_contraction_closes_newtons_orbit() {
-        let springs = crate::system::springs(&crate::shape::Shape::parabolic(), 0.5, 64).unwrap();
         for (kappa, omega, zeta, slow) in
             [(1.0, 0.5, 0.05, false), (0.05, 1.0, 5.0, true), (0.02, 0.5, 10.0, true), (0.01, 0.3, 20.0, true)]
         {
-            let p = Params { kappa, omega, zeta, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
-            let fd = Foundation::new(p, &springs);
-            let mut s = stated_start(&fd);
-            for _ in 0..40 {
-                s = map_k(&fd, &s, 1).0;
-            }
+            let (fd, s) = forty_periods_on(kappa, omega, zeta);
             let (newton, at) = orbit(&fd, s.clone(), 1, 40).expect("Newton's orbit");
             let before = fd.steps_run();
             let (mine, end) = contracted(&fd, &s, 1, 40).unwrap().expect("the contraction's orbit");
@@ -237,13 +244,7 @@ mod tests {
     /// contraction gives none, and the search goes on.
     #[test]
     fn a_drift_is_not_contracted_into_an_orbit() {
-        let p = Params { kappa: 1.0, omega: 0.5, zeta: 0.0, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
-        let springs = crate::system::springs(&crate::shape::Shape::parabolic(), p.amp, 64).unwrap();
-        let fd = Foundation::new(p, &springs);
-        let mut s = stated_start(&fd);
-        for _ in 0..40 {
-            s = map_k(&fd, &s, 1).0;
-        }
+        let (fd, s) = forty_periods_on(1.0, 0.5, 0.0);
         let found = contracted(&fd, &s, 1, 40).unwrap();
         assert!(found.is_none(), "{:?}", found.map(|f| f.0));
     }
@@ -254,13 +255,7 @@ mod tests {
     /// still bounding the gap to Newton's orbit.
     #[test]
     fn the_contraction_keeps_to_its_step_budget() {
-        let p = Params { kappa: 0.01, omega: 0.3, zeta: 20.0, vhat: 0.3, amp: 0.5, t: 0.0, phase: 0.0 };
-        let springs = crate::system::springs(&crate::shape::Shape::parabolic(), p.amp, 64).unwrap();
-        let fd = Foundation::new(p, &springs);
-        let mut s = stated_start(&fd);
-        for _ in 0..40 {
-            s = map_k(&fd, &s, 1).0;
-        }
+        let (fd, s) = forty_periods_on(0.01, 0.3, 20.0);
         let newton = orbit(&fd, s.clone(), 1, 40).expect("Newton's orbit").0;
         let one = fd.steps_run();
         map_k(&fd, &s, 1);
