@@ -32,8 +32,8 @@
 //! error exceeds ten times that reference's own uncertainty (1,415 of
 //! 1,800 answers); at 256 springs it is 54 times the error at the median
 //! (a tenth below 12), as the remainder is at times far below its
-//! envelope. Constants tuned to the first half of the cases gained at most
-//! 1.4 times on the second: what `R_N` leaves is not smooth in `N`, and a
+//! envelope. Constants tuned to the first 200 cases gained at most 1.4
+//! times on the other 105: what `R_N` leaves is not smooth in `N`, and a
 //! sharper estimate needs cells cut at the levels where a spring's phases
 //! change. Each adds the orbits' estimates
 //! (`attractor`); without a period the answer is `mu_N`'s long-time mean,

@@ -205,7 +205,9 @@ fn a_curved_orbit_reports_its_least_period() {
 /// A body that slips throughout has `mu/mu0 = 1` exactly (`F = B` at every
 /// instant), so what 8,192 springs (the map's contraction) leave of it is
 /// rounding, and the estimate must count it: observed 8.3e-15 off, against
-/// 3e-16 at 64 springs (Newton), which shows the slip is complete.
+/// 3e-16 at 64 springs (Newton), where a stick anywhere would take far more
+/// than rounding off it. The test asks that the rounding shows (above
+/// 1e-15), or it could not tell an estimate without its rounding term.
 #[test]
 fn the_contraction_counts_its_rounding() {
     let c = Conditions::vhat(1.106, 1.269).unwrap().with_system(System::new(1.423, 1.473, 0.2761).unwrap());
