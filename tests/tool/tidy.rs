@@ -23,9 +23,9 @@ const MAX_FILE_LINES: usize = 700;
 /// body columns, fit's values rounded to their errors, unknown columns
 /// refused, the rig's system), and the plane (`--transverse-amp` and
 /// `--transverse-phase` for `point` and `table`, the plane's output columns,
-/// its stepper, its two figures and its bench case). Growing it is a
-/// decision for a commit of its own.
-const MAX_CLI_LINES: usize = 9_000;
+/// its stepper, its two figures and its bench cases, flat and curved).
+/// Growing it is a decision for a commit of its own.
+const MAX_CLI_LINES: usize = 9_100;
 
 /// The files under `dir` (recursively) whose names end in one of `exts`,
 /// build outputs left out.
