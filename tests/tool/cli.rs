@@ -260,10 +260,15 @@ fn quick_bench_writes_json_csv_and_svg_without_failures() {
     let report: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("work-precision.json")).unwrap()).unwrap();
     assert_eq!(report["failures"].as_array().unwrap().len(), 0);
-    assert_eq!(report["ratios"].as_array().unwrap().len(), 4, "three stiff cases and the plane");
+    assert_eq!(report["ratios"].as_array().unwrap().len(), 5, "three stiff cases and two in the plane");
     for r in report["ratios"].as_array().unwrap() {
-        assert!(r["exact_error"].as_f64().unwrap() <= 1e-13);
-        assert!(r["time_ratio"].as_f64().unwrap() > 1.0, "stepping beat the exact solver: {r}");
+        let exact = r["exact_error"].as_f64().unwrap();
+        assert!(exact <= 1e-13 && exact < r["stepping_error"].as_f64().unwrap(), "{r}");
+        // A curved contact in the plane is slower than the quick run's
+        // coarse stepping (README states its cost).
+        if r["case"] != "parabolic transverse" {
+            assert!(r["time_ratio"].as_f64().unwrap() > 1.0, "stepping beat the exact solver: {r}");
+        }
     }
     // Points a second on one core for the four kinds (stiff, on a system; flat, curved).
     let kinds: Vec<&str> =

@@ -14,14 +14,12 @@ use fricosc::stepper::Stepping;
 use fricosc::Shape;
 use serde::Serialize;
 use std::time::Instant;
+
+mod plane;
 /// The reference values this benchmark uses: `data/reference-values.json`, the
 /// project's public 40-digit values (independent evaluation, cross-checked by a
 /// converged time stepper; `src/fricosc/tests/library/reference.rs` reads and checks them).
-const REFERENCES: &str = include_str!("../../data/reference-values.json");
-/// The plane's 20-digit values (`data/scripts/plane_reference.py`).
-const PLANE_REFERENCES: &str = include_str!("../../data/plane-reference.json");
-/// The plane's case: its first reference point (`vhat` 0.3, `amp` 0.5, `W` 1.2, `psi` 0.7).
-const PLANE_CASE: &str = "flat transverse";
+const REFERENCES: &str = include_str!("../../../data/reference-values.json");
 
 /// One benchmarked case.
 #[derive(Debug, Clone, Serialize)]
@@ -279,64 +277,6 @@ fn stepping_runs(c: &mut Collector, shape: &Shape, vbar: f64, amp: f64, tm: Timi
     best
 }
 
-/// The plane's case: the exact solver against the plane's stepper at 30
-/// periods (the first-order scheme's error against its steps).
-fn plane_case(
-    cases: &mut Vec<Case>,
-    points: &mut Vec<Point>,
-    failures: &mut Vec<String>,
-    ratios: &mut Vec<Ratio>,
-    tm: Timing,
-    quick: bool,
-) {
-    let v: serde_json::Value = serde_json::from_str(PLANE_REFERENCES).unwrap_or_default();
-    let case = &v["cases"][0];
-    let (Some(vhat), Some(amp), Some(w), Some(psi), Some(reference)) = (
-        case["vhat"].as_f64(),
-        case["amp"].as_f64(),
-        case["transverse_amp"].as_f64(),
-        case["transverse_phase"].as_f64(),
-        case["mu_ratio"].as_str(),
-    ) else {
-        failures.push(format!("{PLANE_CASE}: no reference value"));
-        return;
-    };
-    let refv = reference.parse().unwrap_or(f64::NAN);
-    let (name, shape) = (PLANE_CASE, Shape::flat());
-    let vbar = vhat / amp;
-    cases.push(Case {
-        name: name.into(),
-        shape: "flat".into(),
-        vbar,
-        amp,
-        reference: reference.into(),
-        transverse: Some([w, psi]),
-    });
-    let mut c = Collector { case: name, reference: refv, points, failures };
-    let conditions = || {
-        let tw = fricosc::plane::Transverse::new(w, psi)?;
-        Ok::<_, fricosc::Error>((fricosc::Conditions::vhat(vhat, amp)?, tw))
-    };
-    let exact = || conditions().and_then(|(c, tw)| shape.evaluate(&c.with_transverse(tw))).map(|e| e.ratio.mu_ratio);
-    let t = time_per_call(tm.k, tm.sample, || exact().unwrap_or(f64::NAN));
-    let exact_best = c.record("exact", "default".into(), exact(), t).map(|e| (e, t));
-    let steps: &[usize] = if quick { &[100, 1000] } else { &[100, 1000, 10_000, 100_000, 1_000_000] };
-    let mut stepping_best: Option<(f64, f64)> = None;
-    for &m in steps {
-        let st = Stepping { steps_per_period: m, springs: 1 };
-        let run = || {
-            conditions().and_then(|(c, tw)| fricosc::stepper::transverse(&shape, &c, tw, st, 30)).map(|e| e.mu_ratio)
-        };
-        let t = time_per_call(tm.k.min(3), tm.sample, || run().unwrap_or(f64::NAN));
-        if let Some(err) = c.record("stepping", format!("M={m},N=1"), run(), t) {
-            stepping_best = stepping_best.filter(|&(e, _)| e <= err).or(Some((err, t)));
-        }
-    }
-    if let (Some(exact), Some(stepping)) = (exact_best, stepping_best) {
-        ratios.push(Ratio::of(name, exact, stepping));
-    }
-}
-
 impl Ratio {
     /// The case's `(error, time)` of the exact solver and of the stepper.
     fn of(case: &str, (exact_error, exact_time_s): (f64, f64), (stepping_error, stepping_time_s): (f64, f64)) -> Ratio {
@@ -381,7 +321,9 @@ pub fn measure(quick: bool) -> Report {
             }
         }
     }
-    plane_case(&mut cases, &mut points, &mut failures, &mut ratios, tm, quick);
+    let mut out = plane::Out { cases: &mut cases, points: &mut points, failures: &mut failures, ratios: &mut ratios };
+    plane::flat(&mut out, tm, quick);
+    plane::parabolic(&mut out, tm, quick);
     let throughput = throughput(tm).unwrap_or_else(|e| {
         failures.push(format!("throughput: {e}"));
         vec![]
