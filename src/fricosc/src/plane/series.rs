@@ -350,6 +350,12 @@ mod tests {
         assert_eq!(r.first_fall(2, 0.4).unwrap(), None);
         // A series that keeps its sign has no fall, negative or positive.
         assert_eq!((r * -1.0).first_fall(2, 0.4).unwrap(), None);
+        // A fall to 0 exactly at the step's end, which the shortcut for a
+        // series that stays positive must not take for none (its margin is
+        // above 0, not below).
+        let mut s = Series::ZERO;
+        s.0[..2].copy_from_slice(&[1.0, -1.0]);
+        assert_eq!(s.first_fall(0, 1.0).unwrap().map(|(_, b)| b), Some(1.0));
     }
 
     /// Products of simple real roots in `[-0.5, 1.5]` and a complex pair
