@@ -356,6 +356,9 @@ mod tests {
         let mut s = Series::ZERO;
         s.0[..2].copy_from_slice(&[1.0, -1.0]);
         assert_eq!(s.first_fall(0, 1.0).unwrap().map(|(_, b)| b), Some(1.0));
+        // A series that vanishes over the whole step never isolates: its
+        // budget of intervals runs out (none would mean a hang).
+        assert_eq!(Series::ZERO.first_fall(0, 1.0), Err(()));
     }
 
     /// Products of simple real roots in `[-0.5, 1.5]` and a complex pair
