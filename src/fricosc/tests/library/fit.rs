@@ -235,6 +235,34 @@ fn what_the_profile_cannot_bound_has_no_standard_error() {
     assert!(r.verdicts.iter().any(|v| v.contains("no scatter")), "{:?}", r.verdicts);
 }
 
+/// The profile is computed for up to 20,000 rows (README), not beyond: the
+/// eight rows at two conditions above, each repeated 2,500 times with its
+/// sigma 50 times larger, are the same fit (the same chi-square and scaled
+/// Jacobian), whose profile leaves `u0` unbounded; one row more, of no
+/// weight (sigma 1e6), leaves `u0` the Gaussian error the condition number
+/// left it.
+#[test]
+fn the_profile_stops_at_its_row_limit() {
+    let rows = noisy(2_024);
+    let mut normal = normals(77);
+    let eight: Vec<Measurement> = [3, 14]
+        .iter()
+        .flat_map(|&i| std::iter::repeat_n(rows[i], 4))
+        .map(|m| Measurement { mu: m.mu + 0.004 * normal(), sigma: Some(0.2), ..m })
+        .collect();
+    let mut many: Vec<Measurement> = eight.iter().flat_map(|&m| std::iter::repeat_n(m, 2_500)).collect();
+    // Whether the profile found `u0` unbounded, and whether `u0` has a standard error.
+    let u0 = |r: &fricosc::fit::FitReport| {
+        let stderr = r.parameters.iter().find(|p| p.name == "u0").and_then(|p| p.stderr);
+        (r.verdicts.iter().any(|v| v.contains("u0: not bounded")), stderr.is_some())
+    };
+    let r = fit(&Shape::flat(), &many, &Fixed::default()).unwrap();
+    assert_eq!((many.len(), u0(&r)), (20_000, (true, false)), "{:?}", r.verdicts);
+    many.push(Measurement { sigma: Some(1e6), ..eight[0] });
+    let r = fit(&Shape::flat(), &many, &Fixed::default()).unwrap();
+    assert_eq!(u0(&r), (false, true), "{:?}", r.verdicts);
+}
+
 /// Where the chi-square is not quadratic over one standard error, the
 /// profile interval is reported: at its ends the chi-square, the parameter
 /// held there and the others refitted, is 1 above its minimum (within 10 %;
