@@ -58,9 +58,9 @@ pub(super) fn profile(
     }
     for k in (0..NP).filter(|&k| given[k].is_none()) {
         let Some(&p) = r.parameter(NAMES[k]) else { continue };
-        // Relative errors below MIN_STEP are below the refits' resolution (and
-        // the chi-square is quadratic over them): the Gaussian error stands.
-        let Some(se) = p.stderr.filter(|&se| se > MIN_STEP * p.value && p.value > 0.0) else { continue };
+        // Over relative errors below MIN_STEP the chi-square is quadratic:
+        // the Gaussian error stands, and refits would only confirm it.
+        let Some(se) = p.stderr.filter(|&se| se > MIN_STEP * p.value) else { continue };
         // The rise of the chi-square with the parameter held at `ln(value) + t`.
         let rise = |t: f64| -> Option<f64> {
             let mut held = *given;
