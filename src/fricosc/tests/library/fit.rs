@@ -270,7 +270,7 @@ fn the_profile_stops_at_its_row_limit() {
 /// (the full synthetic rows) none is reported.
 #[test]
 fn a_skewed_profile_is_reported_with_its_interval() {
-    let mut found = 0;
+    let (mut found, mut far) = (0, 0);
     for seed in 1..=12 {
         let mut normal = normals(seed * 7_919);
         for _ in 0..20 {
@@ -285,6 +285,9 @@ fn a_skewed_profile_is_reported_with_its_interval() {
         for (k, p) in [r.parameters[0], r.parameters[1], r.parameters[2]].into_iter().enumerate() {
             let Some([lo, hi]) = p.profile else { continue };
             found += 1;
+            // Half-widths in standard errors (in the logarithm, the fit's coordinate).
+            let se = p.stderr.map_or(f64::NAN, |se| se / p.value);
+            far += [(p.value / lo).ln(), (hi / p.value).ln()].iter().filter(|w| **w > 1.5 * se).count();
             for end in [lo, hi] {
                 let mut held = Fixed::default();
                 *[&mut held.mu0, &mut held.stiffness_ratio, &mut held.u0][k] = Some(end);
@@ -293,7 +296,9 @@ fn a_skewed_profile_is_reported_with_its_interval() {
             }
         }
     }
-    assert!(found >= 2, "{found} profiles");
+    // Observed: 6 profiles, 2 ends beyond 1.5 standard errors (there the
+    // bracket had to be widened: the rise at one standard error was below 1).
+    assert!(found >= 5 && far >= 2, "{found} profiles, {far} ends beyond 1.5 standard errors");
     let r = fit(&Shape::flat(), &noisy(5), &Fixed::default()).unwrap();
     assert!([r.parameters[0], r.parameters[1], r.parameters[2]].iter().all(|p| p.profile.is_none()), "{r:?}");
 }
