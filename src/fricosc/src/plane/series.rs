@@ -378,6 +378,14 @@ mod tests {
         assert_eq!(Series::ZERO.first_fall(0, 1.0), Err(()));
     }
 
+    /// A deterministic uniform sample in `[0, 1)` (Knuth's LCG, top 53 bits).
+    fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
+        move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
     /// Products of simple real roots in `[-0.5, 1.5]` and a complex pair
     /// close to the real axis (`(t - s)^2 + d^2`, `d` down to 0.001: a disc
     /// about `s` holds a zero, the real interval none): the fall is the
@@ -390,11 +398,7 @@ mod tests {
     /// end shows the fall (the seed's first case with `d` = 0.0024).
     #[test]
     fn first_fall_finds_the_first_real_root_beside_a_complex_pair() {
-        let mut seed = 12345u64;
-        let mut rand = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rand = uniform(12345);
         for _ in 0..2000 {
             let roots: Vec<f64> = (0..3).map(|_| -0.5 + 2.0 * rand()).collect();
             let (centre, d) = (rand(), 10f64.powf(-1.0 - 2.0 * rand()));
@@ -440,11 +444,7 @@ mod tests {
     /// negative beyond rounding, steps over the dip (about 1 in 100 here).
     #[test]
     fn first_fall_finds_a_dip_just_beyond_rounding() {
-        let mut seed = 987u64;
-        let mut rand = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rand = uniform(987);
         let mut deep = 0;
         for _ in 0..4000 {
             let (u0, depth, k) =
