@@ -3,7 +3,9 @@
 //! others refitted, the chi-square rises by 1 (in units of the errors'
 //! scale) one standard error out where the Gaussian error is right. The
 //! ends where it rises by 1 are found on each side by regula falsi on the
-//! square root of the rise, bracketed by doubling the step. Where it has not
+//! square root of the rise, bracketed by doubling the step (an end it does
+//! not reach within [`SECANT_STEPS`] is not known: the Gaussian error
+//! stands, with no interval beside it). Where it has not
 //! risen by 1 at 32 standard errors out, the rows do not bound the parameter
 //! on that side (a direction the Jacobian's condition number did not show:
 //! rows at two conditions, say): no standard error; where an end is more
@@ -83,13 +85,13 @@ pub(super) fn profile(
                 gb = rise(sign * b)?.sqrt() - 1.0;
                 doublings += 1;
             }
-            // Regula falsi on `sqrt(rise) - 1`, nearly linear in the half-width.
-            let mut w = b;
+            // Regula falsi on `sqrt(rise) - 1`, nearly linear in the half-width;
+            // an end it does not reach within its steps is not known (`None`).
             for _ in 0..SECANT_STEPS {
-                w = a - ga * (b - a) / (gb - ga);
+                let w = a - ga * (b - a) / (gb - ga);
                 let g = rise(sign * w)?.sqrt() - 1.0;
                 if g.abs() <= RISE_TOLERANCE {
-                    break;
+                    return Some(Some(w));
                 }
                 if g < 0.0 {
                     (a, ga) = (w, g);
@@ -97,7 +99,7 @@ pub(super) fn profile(
                     (b, gb) = (w, g);
                 }
             }
-            Some(Some(w))
+            None
         };
         let (Some(hi), Some(lo)) = (side(1.0), side(-1.0)) else { continue };
         let (Some(hi), Some(lo)) = (hi, lo) else {

@@ -267,40 +267,49 @@ fn the_profile_stops_at_its_row_limit() {
 /// profile interval is reported: at its ends the chi-square, the parameter
 /// held there and the others refitted, is 1 above its minimum (its square
 /// root within the profile's tolerance, 0.005; observed 0.9928 to 1.0024
-/// for the rise); where it is quadratic
-/// (the full synthetic rows) none is reported.
+/// for the rise); where it is quadratic (the full synthetic rows) none is
+/// reported. With noise of 0.08, two parameters' ends are not reached
+/// within the secant steps (`K/kx` at seeds 3 and 4, the first with a
+/// relative error of 6e4): the intervals once reported there had rises of
+/// 5.3 and 0.61 at their ends.
 #[test]
 fn a_skewed_profile_is_reported_with_its_interval() {
-    let (mut found, mut far) = (0, 0);
-    for seed in 1..=12 {
-        let mut normal = normals(seed * 7_919);
-        for _ in 0..20 {
-            normal();
-        }
-        let rows: Vec<Measurement> = synthetic()
-            .iter()
-            .step_by(3)
-            .map(|m| Measurement { mu: m.mu + 0.03 * normal(), sigma: Some(0.03), ..*m })
-            .collect();
-        let r = fit(&Shape::flat(), &rows, &Fixed::default()).unwrap();
-        for (k, p) in [r.parameters[0], r.parameters[1], r.parameters[2]].into_iter().enumerate() {
-            let Some([lo, hi]) = p.profile else { continue };
-            found += 1;
-            // Half-widths in standard errors (in the logarithm, the fit's coordinate).
-            let se = p.stderr.map_or(f64::NAN, |se| se / p.value);
-            far += [(p.value / lo).ln(), (hi / p.value).ln()].iter().filter(|w| **w > 1.5 * se).count();
-            for end in [lo, hi] {
-                let mut held = Fixed::default();
-                *[&mut held.mu0, &mut held.stiffness_ratio, &mut held.u0][k] = Some(end);
-                let rise = fit(&Shape::flat(), &rows, &held).unwrap().chi2 - r.chi2;
-                // The profile's stopping rule: `sqrt(rise)` within 0.005 of 1.
-                assert!((rise.sqrt() - 1.0).abs() < 0.0051, "seed {seed}, parameter {k}: rise {rise} at {end}");
+    let (mut found, mut far) = ([0; 2], 0);
+    for (n, noise) in [0.03, 0.08].into_iter().enumerate() {
+        for seed in 1..=12 {
+            let mut normal = normals(seed * 7_919);
+            for _ in 0..20 {
+                normal();
+            }
+            let rows: Vec<Measurement> = synthetic()
+                .iter()
+                .step_by(3)
+                .map(|m| Measurement { mu: m.mu + noise * normal(), sigma: Some(noise), ..*m })
+                .collect();
+            let r = fit(&Shape::flat(), &rows, &Fixed::default()).unwrap();
+            for (k, p) in [r.parameters[0], r.parameters[1], r.parameters[2]].into_iter().enumerate() {
+                let Some([lo, hi]) = p.profile else { continue };
+                found[n] += 1;
+                // Half-widths in standard errors (in the logarithm, the fit's coordinate).
+                let se = p.stderr.map_or(f64::NAN, |se| se / p.value);
+                far += [(p.value / lo).ln(), (hi / p.value).ln()].iter().filter(|w| n == 0 && **w > 1.5 * se).count();
+                for end in [lo, hi] {
+                    let mut held = Fixed::default();
+                    *[&mut held.mu0, &mut held.stiffness_ratio, &mut held.u0][k] = Some(end);
+                    let rise = fit(&Shape::flat(), &rows, &held).unwrap().chi2 - r.chi2;
+                    // The profile's stopping rule: `sqrt(rise)` within 0.005 of 1.
+                    assert!(
+                        (rise.sqrt() - 1.0).abs() < 0.0051,
+                        "{noise} seed {seed}, parameter {k}: rise {rise} at {end}"
+                    );
+                }
             }
         }
     }
-    // Observed: 6 profiles, 2 ends beyond 1.5 standard errors (there the
-    // bracket had to be widened: the rise at one standard error was below 1).
-    assert!(found >= 5 && far >= 2, "{found} profiles, {far} ends beyond 1.5 standard errors");
+    // Observed: 6 profiles at 0.03, 2 ends beyond 1.5 standard errors (there
+    // the bracket had to be widened: the rise at one standard error was
+    // below 1); 15 profiles at 0.08.
+    assert!(found[0] >= 5 && far >= 2 && found[1] >= 14, "{found:?} profiles, {far} ends beyond 1.5 standard errors");
     let r = fit(&Shape::flat(), &noisy(5), &Fixed::default()).unwrap();
     assert!([r.parameters[0], r.parameters[1], r.parameters[2]].iter().all(|p| p.profile.is_none()), "{r:?}");
 }
