@@ -441,7 +441,8 @@ mod tests {
     /// crossing is flat to rounding, so the intervals beside it are decided
     /// within rounding of zero; an isolation that forgets the positive run
     /// before them, or asks the whole interval (not its centre) to be
-    /// negative beyond rounding, steps over the dip (about 1 in 100 here).
+    /// negative beyond rounding, steps over the dip (the old isolation missed 38
+    /// of these 4,000 dips deeper than four times the bound).
     #[test]
     fn first_fall_finds_a_dip_just_beyond_rounding() {
         let mut rand = uniform(987);

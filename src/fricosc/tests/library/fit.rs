@@ -267,7 +267,7 @@ fn the_profile_stops_at_its_row_limit() {
 /// profile interval is reported: at its ends the chi-square, the parameter
 /// held there and the others refitted, is 1 above its minimum (its square
 /// root within the profile's tolerance, 0.005; observed 0.9928 to 1.0024
-/// for the rise); where it is quadratic (the full synthetic rows) none is
+/// for the rise at noise 0.03); where it is quadratic (the full synthetic rows) none is
 /// reported. With noise of 0.08, two parameters' ends are not reached
 /// within the secant steps (`K/kx` at seeds 3 and 4, the first with a
 /// relative error of 6e4): the intervals once reported there had rises of
