@@ -413,7 +413,7 @@ pub fn system(shape: &crate::Shape, c: &crate::Conditions, steps_per_period: usi
     if om == 0.0 {
         return Err(Error::param("frequency-ratio", om, "stepping needs a body with mass (> 0)"));
     }
-    let springs = crate::system::springs(shape, c.amp(), sys.springs())?;
+    let springs = crate::system::banded_springs(shape, c, sys)?;
     let work = steps_per_period as u128 * periods as u128 * springs.len() as u128;
     if steps_per_period == 0 || periods == 0 || work > MAX_STEPPING_WORK {
         return Err(Error::param(

@@ -5,41 +5,45 @@
 //!
 //! # The discretisation and its error
 //! `[0, z_max]` (`z_max` the contact's reach at the amplitude) is cut into
-//! pieces at the geometry's breakpoints, at `z = 1` and where a spring leaves
-//! permanent contact (`G = 1 - amp`). Each piece `[a, b]` gets cells in
-//! proportion to its rise in the level `G`, equal in `theta` with `G = G(a) +
-//! (G(b) - G(a))(1 - cos theta)/2` (which absorbs the square-root behaviour
-//! of the springs' means at a piece's ends); a cell is one spring at the
-//! level of its midpoint, weighted by its length in `z` (the stiffness
-//! density is 1: the springs in contact at the mean indentation have the
-//! contact's stiffness). Cells in the level, not in `z`, follow a profile
-//! that rises steeply near the centre (`power:0.05`, which cells in `z`
-//! left at an error of 7e-4 up to 1,024 springs). A flat piece is one
-//! spring. The force and the mean normal force are the same rule's sums, so
-//! `mu_N` is a ratio of two midpoint rules, its error falling like `N^-2`.
+//! pieces at the geometry's breakpoints, at `z = 1`, where a spring leaves
+//! permanent contact (`G = 1 - amp`), and at the levels where the sequence
+//! of phases a spring goes through in the orbit changes ([`super::bands`],
+//! on the attractor of `N/8` springs, at least [`CHANGE_SPRINGS`]). A
+//! spring's mean force has a kink or a root at such a level; with cells
+//! across it, `R_N` below moved by steps of either sign from level to level
+//! (on a paraboloid `+7.8e-5, -8.3e-6, +7.6e-7, -2.3e-7` from 32 to 256
+//! springs), with the cuts it falls by about 16 a level. Each piece `[a,
+//! b]` gets cells in proportion to its rise in the level `G` at the
+//! coarsest level (at least one), twice as many at each finer level, equal
+//! in `theta` with `G = G(a) + (G(b) - G(a))(1 - cos theta)/2` (which
+//! absorbs the square-root behaviour of the springs' means at a piece's
+//! ends); a cell is one spring at the level of its midpoint, weighted by its
+//! length in `z` (the stiffness density is 1: the springs in contact at the
+//! mean indentation have the contact's stiffness). Cells in the level, not
+//! in `z`, follow a profile that rises steeply near the centre
+//! (`power:0.05`, which cells in `z` left at an error of 7e-4 up to 1,024
+//! springs). A flat piece is one spring. The force and the mean normal force
+//! are the same rule's sums, so `mu_N` is a ratio of two midpoint rules, its
+//! error falling like `N^-2`. Where the phases change at many levels, a
+//! body has more springs than `N` (one cell a piece at the coarsest level).
 //!
 //! The answer ([`extrapolate`]) is the Richardson value `R_N = mu_N + (mu_N -
 //! mu_{N/2})/3` where `N/8` to `N` show that asymptote (changes of one sign,
-//! the ratio of the last two near 4). Its remainder is not smooth in `N`: a
-//! spring's phases change at levels the cells cross, so `R_N` moves by
-//! steps of either sign. The estimate is the envelope of those steps over
-//! the levels, `2 max(|R_N - R_{N/2}|, |R_{N/2} - R_{N/4}|/4) + |mu_N -
-//! mu_{N/2}|/16`; outside the asymptote `mu_N` with the sum of the three
-//! changes. Against the Richardson value of 4,096 and 8,192 springs on 300
-//! random cases (paraboloids, cones, power laws, flat tips; a third with
-//! a drive in the sliding direction; kappa 0.1 to 31, Omega 0.1 to 1.6,
-//! zeta 0.02 to 1) it bounds the error at 32 to 1,024 springs wherever the
-//! error exceeds ten times that reference's own uncertainty (1,415 of
-//! 1,800 answers); at 256 springs it is 54 times the error at the median
-//! (a tenth below 12), as the remainder is at times far below its
-//! envelope. Constants tuned to the first 200 cases gained at most 1.4
-//! times on the other 105: what `R_N` leaves is not smooth in `N`, and a
-//! sharper estimate needs cells cut at the levels where a spring's phases
-//! change. Each adds the orbits' estimates
-//! (`attractor`); without a period the answer is `mu_N`'s long-time mean,
-//! whose error estimate (standard error and drift) is added.
+//! the ratio of the last two near 4), with the estimate `2 max(|R_N -
+//! R_{N/2}|/4, |R_{N/2} - R_{N/4}|/64)` (`R_N` falling at least like
+//! `N^-2` beyond, about like `N^-4` as observed); outside the asymptote
+//! `mu_N` with the sum of the three changes. Against the answer at 4,096
+//! springs on 180 random cases (paraboloids, cones, power laws, flat tips;
+//! 55 with a drive in the sliding direction; kappa 0.1 to 31, Omega 0.1 to
+//! 1.6, zeta 0.02 to 1) it bounds the error at 32 to 1,024 springs
+//! wherever the error exceeds ten times that answer's estimate (798
+//! answers); at 256 springs it is 15 times the error at the median (a tenth
+//! below 6.5, a tenth above 170), at 1,024 springs 9 times. Each adds the orbits'
+//! estimates (`attractor`); without a period the answer is `mu_N`'s
+//! long-time mean, whose error estimate (standard error and drift) is added.
 
-use super::springs::{Foundation, Record, Spring};
+use super::bands::Body;
+use super::springs::{Foundation, Record};
 use super::{Params, SystemReport};
 use crate::error::{Error, Result};
 use crate::shape::Shape;
@@ -60,6 +64,55 @@ pub const MAX_CURVED_PERIODS: usize = 600;
 /// The springs `(w_i, b_i)` of `shape` at the amplitude `amp`, about `n`
 /// midpoints in the level `G` (module docs).
 pub(crate) fn discretise(shape: &Shape, amp: f64, n: usize) -> Result<Vec<(f64, f64)>> {
+    cells(shape, amp, base(n), LEVELS, &[])
+}
+
+/// The springs of `shape` at `p`, about `n`: [`discretise`]'s pieces cut
+/// again at the levels where a spring's phases change (module docs).
+pub(crate) fn banded(shape: &Shape, p: Params, n: usize) -> Result<Vec<(f64, f64)>> {
+    cells(shape, p.amp, base(n), LEVELS, &changes(shape, p, n)?)
+}
+
+/// Cells of the coarsest of four levels for `n` springs at the finest.
+fn base(n: usize) -> usize {
+    (n / LEVELS).max(1)
+}
+
+/// The finest level's cells over the coarsest's.
+const LEVELS: usize = 8;
+/// Changes of phases nearer than this (relative to the levels' range) to a cut are at it.
+const KINK_GAP: f64 = 1e-9;
+/// Changes of phases nearer than this (relative to the levels' range) to the
+/// centre cut nothing: where `amp -> 1` the springs there touch for an
+/// instant, and changes found within 1e-8 of it came and went with the last
+/// ulp of `amp` (a jump of 3.8e-9 in `mu` on 64 springs).
+const CENTRE: f64 = 1e-6;
+/// Fewest springs whose attractor places the changes of phases.
+const CHANGE_SPRINGS: usize = 32;
+/// Springs of no weight that look for the changes of phases, in equal steps of the level.
+const PROBES: usize = 2048;
+
+/// The levels `b` where the sequence of phases of a spring changes, on the
+/// attractor of `n/8` springs (at least [`CHANGE_SPRINGS`]); none where that
+/// has no period or the body is one spring.
+fn changes(shape: &Shape, p: Params, n: usize) -> Result<Vec<f64>> {
+    let springs = cells(shape, p.amp, base(n).max(CHANGE_SPRINGS), 1, &[])?;
+    if springs.len() == 1 {
+        return Ok(vec![]);
+    }
+    let fd = Foundation::new(p, &springs);
+    let (found, body) = attractor(&fd)?;
+    Ok(match found.period {
+        Some(k) => super::bands::changes(&fd, &body, k, -p.amp, 1.0, PROBES),
+        None => vec![],
+    })
+}
+
+/// The springs of `base` cells in all (each piece's share in the level,
+/// rounded, at least one), each piece's cells times `factor`; the pieces
+/// cut at the levels `kinks` too.
+fn cells(shape: &Shape, amp: f64, base: usize, factor: usize, kinks: &[f64]) -> Result<Vec<(f64, f64)>> {
+    let n = base;
     let c = shape.contact();
     if c.single_spring() {
         return Ok(vec![(1.0, 1.0)]);
@@ -92,6 +145,18 @@ pub(crate) fn discretise(shape: &Shape, amp: f64, n: usize) -> Result<Vec<(f64, 
             *last = (z, g);
         }
     }
+    // A change of phases cuts its piece however thin (module docs), unless
+    // within rounding of a cut already there (its bisection's own resolution)
+    // or within half a cell of the centre (as `G = 1 - amp` is, for the same reason).
+    let (first, last) = (levels[0] + CENTRE * total, levels[levels.len() - 1]);
+    for &b in kinks {
+        let g = 1.0 - b;
+        let gap = |cut: &(f64, f64)| (cut.1 - g).abs() <= KINK_GAP * total;
+        if first < g && g < last && !kept.iter().any(gap) {
+            kept.push((c.level(g), g));
+            kept.sort_by(|x, y| x.1.total_cmp(&y.1));
+        }
+    }
     let pieces: Vec<[f64; 4]> = kept.windows(2).map(|p| [p[0].0, p[1].0, p[0].1, p[1].1]).collect();
     let mut springs: Vec<(f64, f64)> = vec![];
     let mut push = |w: f64, b: f64| match springs.last_mut() {
@@ -103,7 +168,7 @@ pub(crate) fn discretise(shape: &Shape, amp: f64, n: usize) -> Result<Vec<(f64, 
             push(zb - za, 1.0 - gb);
             continue;
         }
-        let cells = ((n as f64 * (gb - ga) / total).round() as usize).max(1);
+        let cells = ((n as f64 * (gb - ga) / total).round() as usize).max(1) * factor;
         let h = std::f64::consts::PI / cells as f64;
         let level_at = |theta: f64| ga + 0.5 * (gb - ga) * (1.0 - theta.cos());
         let z_at = |j: usize| match j {
@@ -152,14 +217,11 @@ fn attractor(fd: &Foundation) -> Result<(Found, Body)> {
     Ok((found, super::reduced::expand(fd, &at)))
 }
 
-/// The body `(x, x')` and its springs' states at `tau = 0`.
-type Body = (f64, f64, Vec<Spring>);
-
 /// The attractor of `shape` discretised into about `n` springs, its error
 /// estimate that of the discretised problem (the orbit's closure, or the
 /// mean's).
 pub(crate) fn discretised(shape: &Shape, p: Params, n: usize) -> Result<SystemReport> {
-    let springs = discretise(shape, p.amp, n)?;
+    let springs = banded(shape, p, n)?;
     let f = attractor(&Foundation::new(p, &springs))?.0;
     Ok(report(&f, f.error, springs.len()))
 }
@@ -185,12 +247,13 @@ pub(crate) fn solve(shape: &Shape, p: Params, springs: usize) -> Result<SystemRe
     if p.omega == 0.0 {
         return Err(massless());
     }
-    let level = |n: usize| -> Result<(Found, usize)> {
-        let nodes = discretise(shape, p.amp, n)?;
+    let kinks = changes(shape, p, springs)?;
+    let level = |factor: usize| -> Result<(Found, usize)> {
+        let nodes = cells(shape, p.amp, base(springs), factor, &kinks)?;
         Ok((attractor(&Foundation::new(p, &nodes))?.0, nodes.len()))
     };
-    let (fine, count) = level(springs)?;
-    let coarser = [level(springs / 8)?.0, level(springs / 4)?.0, level(springs / 2)?.0];
+    let (fine, count) = level(LEVELS)?;
+    let coarser = [level(1)?.0, level(2)?.0, level(4)?.0];
     let (mu, estimate) = extrapolate(&coarser, &fine);
     Ok(report(&Found { mu, ..fine }, estimate, count))
 }
@@ -199,12 +262,9 @@ pub(crate) fn solve(shape: &Shape, p: Params, springs: usize) -> Result<SystemRe
 /// `N/2` (`coarser`) and `N` springs (module docs): Richardson's value
 /// `R_N = mu_N + (mu_N - mu_{N/2})/3` where the four are the same orbit and
 /// their changes fall like `N^-2` (one sign, and the ratio of the last two
-/// within [`ASYMPTOTIC`]). What Richardson leaves is not smooth in `N` (a
-/// spring's phases change at levels the cells cross), so its estimate is
-/// the envelope of that remainder over the levels, `2 max(|R_N - R_{N/2}|,
-/// |R_{N/2} - R_{N/4}|/4)`, plus `|mu_N - mu_{N/2}|/16`; otherwise `mu_N`
-/// with the sum of the three changes. Each adds the orbits' closures and
-/// rounding (or the means' estimates).
+/// within [`ASYMPTOTIC`]), its estimate `2 max(|R_N - R_{N/2}|/4,
+/// |R_{N/2} - R_{N/4}|/64)`; otherwise `mu_N` with the sum of the three
+/// changes. Each adds the orbits' closures and rounding (or the means' estimates).
 fn extrapolate(coarser: &[Found; 3], f: &Found) -> (f64, f64) {
     let [e, q, h] = coarser;
     let closure = e.error + q.error + h.error + f.error;
@@ -213,8 +273,8 @@ fn extrapolate(coarser: &[Found; 3], f: &Found) -> (f64, f64) {
     let monotone = (d0 > 0.0 && d1 > 0.0 && d2 > 0.0) || (d0 < 0.0 && d1 < 0.0 && d2 < 0.0);
     if same && monotone && ASYMPTOTIC.contains(&(d1 / d2)) {
         let (rf, rh, rq) = (f.mu + d2 / 3.0, h.mu + d1 / 3.0, q.mu + d0 / 3.0);
-        let envelope = (rf - rh).abs().max((rh - rq).abs() / 4.0);
-        (rf, 2.0 * envelope + d2.abs() / 16.0 + closure)
+        let envelope = ((rf - rh).abs() / 4.0).max((rh - rq).abs() / 64.0);
+        (rf, 2.0 * envelope + closure)
     } else {
         (f.mu, d0.abs() + d1.abs() + d2.abs() + closure)
     }
@@ -233,7 +293,7 @@ pub(crate) fn history(shape: &Shape, p: Params, n: usize, taus: &[f64]) -> Resul
     if p.omega == 0.0 {
         return Err(massless());
     }
-    let nodes = discretise(shape, p.amp, n)?;
+    let nodes = banded(shape, p, n)?;
     let fd = Foundation::new(p, &nodes);
     let (found, (x, v, mut state)) = attractor(&fd)?;
     let mut rec = Record { samples: taus, ..Record::default() };

@@ -30,6 +30,7 @@
 //! by `kappa/(1 + kappa)` (the springs in series): answered by the stiff
 //! solver exactly.
 
+mod bands;
 mod critical;
 mod curved;
 mod events;
@@ -292,6 +293,13 @@ fn within_bounds(r: &mut SystemReport) -> Result<()> {
 /// `n` (the `curved` module's; the flat punch's one).
 pub(crate) fn springs(shape: &crate::Shape, amp: f64, n: usize) -> Result<Vec<(f64, f64)>> {
     curved::discretise(shape, amp, n)
+}
+
+/// The springs `(weight, 1 - G)` of `shape` on `sys` at `c`: those the
+/// system's answer at [`System::springs`] has at its finest level (the
+/// `curved` module's, cut where a spring's phases change; the flat punch's one).
+pub(crate) fn banded_springs(shape: &crate::Shape, c: &Conditions, sys: &System) -> Result<Vec<(f64, f64)>> {
+    curved::banded(shape, params(shape, c, sys)?, sys.springs)
 }
 
 /// One period of a curved body's attractor on `sys` ([`System::springs`]

@@ -104,6 +104,8 @@ pub(crate) struct Record<'a> {
     pub(crate) forces: Vec<[f64; 3]>,
     pub(crate) events: Option<Vec<SystemEvent>>,
     pub(crate) tangent: Option<Tangent>,
+    /// Each spring's kinds in the order it enters them, where given.
+    pub(crate) kinds: Option<Vec<Vec<Kind>>>,
 }
 
 /// The springs of one discretisation and the drive.
@@ -392,6 +394,9 @@ impl Foundation {
     /// Spring `i` becomes `new`: in `springs`, the index and the derivative.
     fn changed(&self, i: usize, springs: &mut [Spring], new: Spring, ix: &mut Index, rec: &mut Record) {
         ix.change(i, springs[i], new);
+        if let Some(k) = rec.kinds.as_mut() {
+            k[i].push(new.kind());
+        }
         if let Some(t) = rec.tangent.as_mut() {
             t.change(i, self.w[i], springs[i], new);
         }
