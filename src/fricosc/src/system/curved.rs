@@ -33,12 +33,12 @@
 //! R_{N/2}|/4, |R_{N/2} - R_{N/4}|/64)` (`R_N` falling at least like
 //! `N^-2` beyond, about like `N^-4` as observed); outside the asymptote
 //! `mu_N` with the sum of the three changes. Against the answer at 4,096
-//! springs on 180 random cases (paraboloids, cones, power laws, flat tips;
-//! 55 with a drive in the sliding direction; kappa 0.1 to 31, Omega 0.1 to
+//! springs on 280 random cases (paraboloids, cones, power laws, flat tips;
+//! 89 with a drive in the sliding direction; kappa 0.1 to 31, Omega 0.1 to
 //! 1.6, zeta 0.02 to 1) it bounds the error at 32 to 1,024 springs
-//! wherever the error exceeds ten times that answer's estimate (798
-//! answers); at 256 springs it is 15 times the error at the median (a tenth
-//! below 6.5, a tenth above 170), at 1,024 springs 9 times. Each adds the orbits'
+//! wherever the error exceeds ten times that answer's estimate (1,197
+//! answers); at 256 springs it is 14 times the error at the median (a tenth
+//! below 7.3, a tenth above 150), at 1,024 springs 10 times. Each adds the orbits'
 //! estimates (`attractor`); without a period the answer is `mu_N`'s
 //! long-time mean, whose error estimate (standard error and drift) is added.
 
