@@ -81,7 +81,7 @@ fn base(n: usize) -> usize {
 /// The finest level's cells over the coarsest's.
 const LEVELS: usize = 8;
 /// Changes of phases nearer than this (relative to the levels' range) to a cut are at it.
-const KINK_GAP: f64 = 1e-9;
+const KINK_GAP: f64 = 1e-7;
 /// Changes of phases nearer than this (relative to the levels' range) to the
 /// centre cut nothing: where `amp -> 1` the springs there touch for an
 /// instant, and changes found within 1e-8 of it came and went with the last
@@ -90,7 +90,7 @@ const CENTRE: f64 = 1e-6;
 /// Fewest springs whose attractor places the changes of phases.
 const CHANGE_SPRINGS: usize = 32;
 /// Springs of no weight that look for the changes of phases, in equal steps of the level.
-const PROBES: usize = 2048;
+const PROBES: usize = 512;
 
 /// The levels `b` where the sequence of phases of a spring changes, on the
 /// attractor of `n/8` springs (at least [`CHANGE_SPRINGS`]); none where that
