@@ -8,6 +8,7 @@
 
 use super::phase::{Kind, V, X};
 use super::springs::{Foundation, Record, Spring};
+use crate::error::Result;
 
 /// The body `(x, x')` and its springs' states at `tau = 0`.
 pub(crate) type Body = (f64, f64, Vec<Spring>);
@@ -53,7 +54,7 @@ fn canonical(first: Kind, entered: &[Kind]) -> Vec<u8> {
 
 /// The sequences of phases of springs of no weight at `levels` driven by the
 /// orbit of `fd` (`period` periods from `body`), after one orbit to settle.
-fn sequences(fd: &Foundation, body: &Body, period: usize, levels: &[f64]) -> Vec<Vec<u8>> {
+fn sequences(fd: &Foundation, body: &Body, period: usize, levels: &[f64]) -> Result<Vec<Vec<u8>>> {
     let n = fd.w.len();
     let mut all: Vec<(f64, f64)> = fd.w.iter().copied().zip(fd.b.iter().copied()).collect();
     all.extend(levels.iter().map(|&b| (0.0, b)));
@@ -64,22 +65,31 @@ fn sequences(fd: &Foundation, body: &Body, period: usize, levels: &[f64]) -> Vec
     let mut springs = body.2.clone();
     springs.extend_from_slice(&probe.start(&z)[n..]);
     for _ in 0..period {
+        crate::interrupt::check()?;
         (x, v, _) = probe.period(x, v, &mut springs, &mut Record::default());
     }
     let first: Vec<Kind> = springs.iter().map(Spring::kind).collect();
     let mut rec = Record { kinds: Some(vec![vec![]; all.len()]), ..Record::default() };
     for _ in 0..period {
+        crate::interrupt::check()?;
         (x, v, _) = probe.period(x, v, &mut springs, &mut rec);
     }
     let kinds = rec.kinds.unwrap_or_default();
-    (n..all.len()).map(|i| canonical(first[i], &kinds[i])).collect()
+    Ok((n..all.len()).map(|i| canonical(first[i], &kinds[i])).collect())
 }
 
 /// The levels in `(lo, hi)` where the sequence of phases of a spring driven
 /// by the orbit changes, from `probes` equal steps bisected.
-pub(crate) fn changes(fd: &Foundation, body: &Body, period: usize, lo: f64, hi: f64, probes: usize) -> Vec<f64> {
+pub(crate) fn changes(
+    fd: &Foundation,
+    body: &Body,
+    period: usize,
+    lo: f64,
+    hi: f64,
+    probes: usize,
+) -> Result<Vec<f64>> {
     let levels: Vec<f64> = (1..=probes).map(|j| lo + (hi - lo) * j as f64 / probes as f64).collect();
-    let seqs = sequences(fd, body, period, &levels);
+    let seqs = sequences(fd, body, period, &levels)?;
     let mut open: Vec<(f64, f64, Vec<u8>, Vec<u8>)> = (0..levels.len() - 1)
         .filter(|&j| seqs[j] != seqs[j + 1])
         .map(|j| (levels[j], levels[j + 1], seqs[j].clone(), seqs[j + 1].clone()))
@@ -94,7 +104,7 @@ pub(crate) fn changes(fd: &Foundation, body: &Body, period: usize, lo: f64, hi: 
             break;
         }
         let mids: Vec<f64> = rest.iter().map(|o| 0.5 * (o.0 + o.1)).collect();
-        let got = sequences(fd, body, period, &mids);
+        let got = sequences(fd, body, period, &mids)?;
         open = vec![];
         for ((a, b, sa, sb), (m, s)) in rest.into_iter().zip(mids.into_iter().zip(got)) {
             if s != sa {
@@ -108,7 +118,7 @@ pub(crate) fn changes(fd: &Foundation, body: &Body, period: usize, lo: f64, hi: 
     }
     found.sort_by(f64::total_cmp);
     found.dedup_by(|later, earlier| *later - *earlier <= SAME * (hi - lo));
-    found
+    Ok(found)
 }
 
 #[cfg(test)]
@@ -139,7 +149,7 @@ mod tests {
             let fd = Foundation::new(p, &springs);
             let (r, state) = crate::system::search::attractor(&fd, 600).unwrap();
             let body = crate::system::reduced::expand(&fd, &state);
-            let found = changes(&fd, &body, r.period.unwrap(), -amp, 1.0, 512);
+            let found = changes(&fd, &body, r.period.unwrap(), -amp, 1.0, 512).unwrap();
             let range = 1.0 + amp;
             assert!(found.iter().any(|b| (b - amp).abs() <= SAME * range), "{amp}: {found:?}");
         }

@@ -102,10 +102,10 @@ fn changes(shape: &Shape, p: Params, n: usize) -> Result<Vec<f64>> {
     }
     let fd = Foundation::new(p, &springs);
     let (found, body) = attractor(&fd)?;
-    Ok(match found.period {
+    match found.period {
         Some(k) => super::bands::changes(&fd, &body, k, -p.amp, 1.0, PROBES),
-        None => vec![],
-    })
+        None => Ok(vec![]),
+    }
 }
 
 /// The springs of `base` cells in all (each piece's share in the level,
