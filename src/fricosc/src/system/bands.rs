@@ -17,8 +17,9 @@ pub(crate) type Body = (f64, f64, Vec<Spring>);
 const MAX_ROUNDS: usize = 64;
 /// Most changes found (each cuts a piece: at most 8 springs more at the finest level).
 const MAX_CHANGES: usize = 256;
-/// Changes nearer than this (relative to the range of levels) are one.
-const SAME: f64 = 1e-7;
+/// Changes nearer than this (relative to the range of levels) are one; a
+/// bracket is not split below it.
+pub(crate) const SAME: f64 = 1e-7;
 
 fn code(k: Kind) -> u8 {
     match k {

@@ -11,8 +11,8 @@
 //! on the attractor of `N/8` springs, at least [`CHANGE_SPRINGS`]). A
 //! spring's mean force has a kink or a root at such a level; with cells
 //! across it, `R_N` below moved by steps of either sign from level to level
-//! (on a paraboloid `+7.8e-5, -8.3e-6, +7.6e-7, -2.3e-7` from 32 to 256
-//! springs), with the cuts it falls by about 16 a level. Each piece `[a,
+//! (on a paraboloid `+2.5e-5, -5.5e-7, +7.3e-7, -2.2e-7` from 32 to 256
+//! springs), with the cuts it falls by 16 to 20 a level. Each piece `[a,
 //! b]` gets cells in proportion to its rise in the level `G` at the
 //! coarsest level (at least one), twice as many at each finer level, equal
 //! in `theta` with `G = G(a) + (G(b) - G(a))(1 - cos theta)/2` (which
@@ -80,8 +80,6 @@ fn base(n: usize) -> usize {
 
 /// The finest level's cells over the coarsest's.
 const LEVELS: usize = 8;
-/// Changes of phases nearer than this (relative to the levels' range) to a cut are at it.
-const KINK_GAP: f64 = 1e-7;
 /// Changes of phases nearer than this (relative to the levels' range) to the
 /// centre cut nothing: where `amp -> 1` the springs there touch for an
 /// instant, and changes found within 1e-8 of it came and went with the last
@@ -146,12 +144,12 @@ fn cells(shape: &Shape, amp: f64, base: usize, factor: usize, kinks: &[f64]) -> 
         }
     }
     // A change of phases cuts its piece however thin (module docs), unless
-    // within rounding of a cut already there (its bisection's own resolution)
-    // or within half a cell of the centre (as `G = 1 - amp` is, for the same reason).
+    // within its bisection's resolution of a cut already there, or within
+    // [`CENTRE`] of the centre.
     let (first, last) = (levels[0] + CENTRE * total, levels[levels.len() - 1]);
     for &b in kinks {
         let g = 1.0 - b;
-        let gap = |cut: &(f64, f64)| (cut.1 - g).abs() <= KINK_GAP * total;
+        let gap = |cut: &(f64, f64)| (cut.1 - g).abs() <= super::bands::SAME * total;
         if first < g && g < last && !kept.iter().any(gap) {
             kept.push((c.level(g), g));
             kept.sort_by(|x, y| x.1.total_cmp(&y.1));
