@@ -50,13 +50,14 @@ const CASES: [(&str, f64, f64, f64, f64, f64); 8] = [
 /// is below a quarter of the tested one (7 of the 8 cases; `power:0.05`,
 /// whose answers converge slowly, 6.8e-7 at 256 springs and 3.5e-6 at
 /// 4,096, 7.9e-8 apart, need only agree within both), and is at most
-/// `SHARP` times that error (observed 2.6 to 91 times, 10 at the median;
-/// without the cuts where a spring's phases change, the cone's reference
-/// is not resolved). A wrong weight or bound per spring is off by 1e-3 and
+/// `SHARP` times that error (observed 1.4 to 35 times, 8.7 at the median;
+/// the sum of the changes outside the `N^-2` asymptote gave 91 times, and
+/// without the cuts where a spring's phases change, the cone's reference is
+/// not resolved). A wrong weight or bound per spring is off by 1e-3 and
 /// more.
 #[test]
 fn the_estimate_bounds_the_error_against_finer_springs() {
-    const SHARP: f64 = 120.0;
+    const SHARP: f64 = 50.0;
     let mut ratios = vec![];
     for (name, vbar, amp, kappa, omega, zeta) in CASES {
         let (shape, c) = (Shape::parse(name).unwrap(), Conditions::vbar(vbar, amp).unwrap());
@@ -74,7 +75,7 @@ fn the_estimate_bounds_the_error_against_finer_springs() {
         assert_eq!((r.period, r.springs.map(|n| n > 128)), (Some(1), Some(true)), "{name}");
     }
     ratios.sort_by(f64::total_cmp);
-    assert!(ratios.len() >= 7 && ratios[ratios.len() / 2] <= 15.0, "{ratios:?}");
+    assert!(ratios.len() >= 7 && ratios[ratios.len() / 2] <= 12.0, "{ratios:?}");
 }
 
 /// A stiff system is the curved seed answer: at `kappa = 1e6` within the
