@@ -47,14 +47,13 @@ const CASES: [(&str, f64, f64, f64, f64, f64); 8] = [
 
 /// The estimate at the default springs bounds the error against the answer
 /// at 4,096 springs, the error counted with that answer's estimate where it
-/// is below a quarter of the tested one (7 of the 8 cases; `power:0.05`,
-/// whose answers converge slowly, 6.8e-7 at 256 springs and 3.5e-6 at
-/// 4,096, 7.9e-8 apart, need only agree within both), and is at most
-/// `SHARP` times that error (observed 1.4 to 35 times, 8.7 at the median;
-/// the sum of the changes outside the `N^-2` asymptote gave 91 times, and
-/// without the cuts where a spring's phases change, the cone's reference is
-/// not resolved). A wrong weight or bound per spring is off by 1e-3 and
-/// more.
+/// is below a quarter of the tested one (7 of the 8 cases; the last cone,
+/// 3.4e-8 at 256 springs and 1.8e-8 at 4,096, 1.2e-9 apart, need only agree
+/// within both), and is at most `SHARP` times that error (observed 1.4 to
+/// 35 times, 8.7 at the median; the sum of the changes outside the `N^-2`
+/// asymptote gave 91 times, and without the cuts where a spring's phases
+/// change, the cone's reference is not resolved). A wrong weight or bound
+/// per spring is off by 1e-3 and more.
 #[test]
 fn the_estimate_bounds_the_error_against_finer_springs() {
     const SHARP: f64 = 50.0;
