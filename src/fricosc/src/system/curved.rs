@@ -320,3 +320,46 @@ fn massless() -> Error {
         "a massless body on a curved contact is not solved: give a frequency ratio > 0",
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{extrapolate, Found};
+
+    fn found(mu: f64, error: f64, period: Option<usize>) -> Found {
+        Found { mu, period, periods_run: 0, error, standard_error: None, held: 0 }
+    }
+
+    /// Changes that fall by 4 exactly are the `N^-2` asymptote: Richardson's
+    /// value is the limit, and the estimate the envelope of its own changes
+    /// (here none) plus every level's closure.
+    #[test]
+    fn the_asymptote_gives_the_limit_and_the_closures() {
+        let (limit, c) = (0.5, 1.0e-3);
+        let levels = [limit + 64.0 * c, limit + 16.0 * c, limit + 4.0 * c, limit + c];
+        let coarser = [levels[0], levels[1], levels[2]].map(|mu| found(mu, 1e-9, Some(1)));
+        let (mu, estimate) = extrapolate(&coarser, &found(levels[3], 2e-9, Some(1)));
+        assert!((mu - limit).abs() < 1e-15, "{mu}");
+        assert!((estimate - 5e-9).abs() < 1e-15, "{estimate:e}");
+    }
+
+    /// Outside the asymptote (an orbit of another period, or changes of two
+    /// signs) the answer is the finest level, its estimate the envelope
+    /// `max(|d_N|, |d_{N/2}|/4, |d_{N/4}|/16)` plus the closures.
+    #[test]
+    fn outside_the_asymptote_the_envelope_of_the_changes() {
+        let cases = [
+            // d = 1.6e-2, 8e-4, 1e-4 (ratios 20 and 8): the first change rules.
+            ([0.5, 0.516, 0.5168, 0.5169], [Some(1); 4], 1e-3),
+            // d = -1e-3, 2e-3, -1e-4: the middle one.
+            ([0.5, 0.499, 0.501, 0.5009], [Some(1); 4], 5e-4),
+            // Changes of 4 exactly (each carried to N is 3e-3), the coarsest of period 2.
+            ([0.564, 0.516, 0.504, 0.501], [Some(2), Some(1), Some(1), Some(1)], 3e-3),
+        ];
+        for (mus, periods, envelope) in cases {
+            let coarser = [0, 1, 2].map(|i| found(mus[i], 1e-12, periods[i]));
+            let (mu, estimate) = extrapolate(&coarser, &found(mus[3], 1e-12, periods[3]));
+            assert_eq!(mu, mus[3]);
+            assert!((estimate - envelope - 4e-12).abs() < 1e-14 * envelope.max(1.0) + 1e-15, "{mus:?}: {estimate:e}");
+        }
+    }
+}

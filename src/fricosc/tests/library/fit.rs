@@ -428,12 +428,16 @@ fn load_controlled_rows_give_the_parameters_back() {
     let one: Vec<Measurement> = rows.iter().map(|m| Measurement { load: None, ..*m }).collect();
     let d = fit(&Shape::flat(), &one, &Fixed::default()).unwrap();
     assert!(d.chi2 > 1e-3 && d.reference_load.is_none(), "{d:?}");
-    // A prediction under load control needs the row's load, and only then.
+    // A prediction under load control needs the row's load (> 0, finite), and only then.
     let at = (rows[4].v0, rows[4].du, rows[4].omega);
     assert!((r.predict(&Shape::flat(), at, None, Some(1.0)).unwrap() - rows[4].mu).abs() < 1e-9);
     assert!(
         r.predict(&Shape::flat(), at, None, None).is_err() && d.predict(&Shape::flat(), at, None, Some(1.0)).is_err()
     );
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let e = r.predict(&Shape::flat(), at, None, Some(bad)).unwrap_err().to_string();
+        assert!(e.contains("load"), "{bad}: {e}");
+    }
 }
 
 /// A Hertz contact on a dead weight sinks as it oscillates: at the static
