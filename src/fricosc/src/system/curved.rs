@@ -354,6 +354,9 @@ mod tests {
             ([0.5, 0.499, 0.501, 0.5009], [Some(1); 4], 5e-4),
             // Changes of 4 exactly (each carried to N is 3e-3), the coarsest of period 2.
             ([0.564, 0.516, 0.504, 0.501], [Some(2), Some(1), Some(1), Some(1)], 3e-3),
+            // The last two fall by 4, the first is of the other sign (either way).
+            ([0.5, 0.532, 0.528, 0.527], [Some(1); 4], 2e-3),
+            ([0.5, 0.49, 0.494, 0.495], [Some(1); 4], 1e-3),
         ];
         for (mus, periods, envelope) in cases {
             let coarser = [0, 1, 2].map(|i| found(mus[i], 1e-12, periods[i]));

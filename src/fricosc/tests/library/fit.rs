@@ -205,6 +205,13 @@ fn magnitudes_beyond_a_double_are_refused() {
     assert!(fit(&Shape::flat(), &rows, &Fixed::default()).unwrap_err().to_string().contains("invalid mu"));
     let e = fit(&Shape::flat(), &noisy(12_345), &Fixed { mu0: Some(5e-324), ..Fixed::default() }).unwrap_err();
     assert!(e.to_string().starts_with("invalid mu0 = 5e-324"), "{e}");
+    // A row's amplitude and frequency: finite and > 0, named with the row.
+    for (name, value) in [("du", 0.0), ("du", f64::INFINITY), ("omega", 0.0), ("omega", f64::INFINITY)] {
+        let mut rows = noisy(12_345);
+        *(if name == "du" { &mut rows[3].du } else { &mut rows[3].omega }) = value;
+        let e = fit(&Shape::flat(), &rows, &Fixed::default()).unwrap_err().to_string();
+        assert!(e.starts_with(&format!("invalid {name} = ")) && e.contains("row 3"), "{name} {value}: {e}");
+    }
 }
 
 /// Identifiability by the profile: rows at two conditions (four each) leave
@@ -434,6 +441,12 @@ fn load_controlled_rows_give_the_parameters_back() {
     assert!(
         r.predict(&Shape::flat(), at, None, None).is_err() && d.predict(&Shape::flat(), at, None, Some(1.0)).is_err()
     );
+    // Loads in other units (three times each) fit the same, and a row's load is read in them.
+    let thrice: Vec<Measurement> = rows.iter().map(|m| Measurement { load: m.load.map(|l| 3.0 * l), ..*m }).collect();
+    let t = fit(&Shape::flat(), &thrice, &Fixed::default()).unwrap();
+    let at5 = (rows[5].v0, rows[5].du, rows[5].omega);
+    assert_eq!((rows[5].load, t.reference_load), (Some(2.0), Some(3.0)));
+    assert!((t.predict(&Shape::flat(), at5, None, Some(6.0)).unwrap() - rows[5].mu).abs() < 1e-9, "{t:?}");
     for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         let e = r.predict(&Shape::flat(), at, None, Some(bad)).unwrap_err().to_string();
         assert!(e.contains("load"), "{bad}: {e}");
