@@ -274,7 +274,8 @@ fn extrapolate(coarser: &[Found; 3], f: &Found) -> (f64, f64) {
     let closure = e.error + q.error + h.error + f.error;
     let (d0, d1, d2) = (q.mu - e.mu, h.mu - q.mu, f.mu - h.mu);
     let same = f.period.is_some() && coarser.iter().all(|c| c.period == f.period);
-    let monotone = (d0 > 0.0 && d1 > 0.0 && d2 > 0.0) || (d0 < 0.0 && d1 < 0.0 && d2 < 0.0);
+    // One sign: `d1` and `d2` share one where their ratio is in `ASYMPTOTIC`.
+    let monotone = d0 != 0.0 && d0.signum() == d1.signum();
     if same && monotone && ASYMPTOTIC.contains(&(d1 / d2)) {
         let (rf, rh, rq) = (f.mu + d2 / 3.0, h.mu + d1 / 3.0, q.mu + d0 / 3.0);
         let envelope = ((rf - rh).abs() / 4.0).max((rh - rq).abs() / 64.0);
@@ -357,6 +358,8 @@ mod tests {
             // The last two fall by 4, the first is of the other sign (either way).
             ([0.5, 0.532, 0.528, 0.527], [Some(1); 4], 2e-3),
             ([0.5, 0.49, 0.494, 0.495], [Some(1); 4], 1e-3),
+            // No first change: not one sign.
+            ([0.5, 0.5, 0.504, 0.505], [Some(1); 4], 1e-3),
         ];
         for (mus, periods, envelope) in cases {
             let coarser = [0, 1, 2].map(|i| found(mus[i], 1e-12, periods[i]));

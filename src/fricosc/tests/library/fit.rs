@@ -605,3 +605,21 @@ fn bounds_keep_a_parameter_within_them_and_name_it_on_one() {
     assert!(p.value > 0.85 && p.value < 1.0 && r.verdicts.is_empty(), "{r:?}");
     assert_eq!(p.profile, Some([0.85, 1.0]), "{p:?}");
 }
+
+/// A system's frequency ratio `Omega = omega/omega_c` holds at one
+/// frequency: rows at several frequencies on one system with mass are
+/// refused by name, on a massless one (no `Omega`) they are fitted.
+#[test]
+fn a_system_with_mass_holds_at_one_frequency() {
+    let on = |sys: fricosc::system::System| -> Vec<Measurement> {
+        // Every other row at twice the frequency.
+        let rows = synthetic().into_iter().enumerate();
+        rows.map(|(i, m)| Measurement { system: Some(sys), omega: m.omega * (1 + i % 2) as f64, ..m }).collect()
+    };
+    let massless = on(fricosc::system::System::new(1.0, 0.0, 0.0).unwrap());
+    assert!(massless.iter().any(|m| m.omega != massless[0].omega));
+    assert!(fit(&Shape::flat(), &massless, &Fixed::default()).is_ok());
+    let heavy = on(fricosc::system::System::new(1.0, 0.5, 0.3).unwrap());
+    let e = fit(&Shape::flat(), &heavy, &Fixed::default()).unwrap_err().to_string();
+    assert!(e.starts_with("invalid frequency-ratio = 0.5") && e.contains("one frequency"), "{e}");
+}
