@@ -608,7 +608,8 @@ fn bounds_keep_a_parameter_within_them_and_name_it_on_one() {
 
 /// A system's frequency ratio `Omega = omega/omega_c` holds at one
 /// frequency: rows at several frequencies on one system with mass are
-/// refused by name, on a massless one (no `Omega`) they are fitted.
+/// refused by name, on a massless one (no `Omega`) they are fitted, and so
+/// are two systems each at its own frequency.
 #[test]
 fn a_system_with_mass_holds_at_one_frequency() {
     let on = |sys: fricosc::system::System| -> Vec<Measurement> {
@@ -622,4 +623,10 @@ fn a_system_with_mass_holds_at_one_frequency() {
     let heavy = on(fricosc::system::System::new(1.0, 0.5, 0.3).unwrap());
     let e = fit(&Shape::flat(), &heavy, &Fixed::default()).unwrap_err().to_string();
     assert!(e.starts_with("invalid frequency-ratio = 0.5") && e.contains("one frequency"), "{e}");
+    // Two rigs, each at its own frequency: every parameter held, one chi-square.
+    let other = fricosc::system::System::new(2.0, 0.5, 0.3).unwrap();
+    let two: Vec<Measurement> =
+        heavy.iter().enumerate().map(|(i, m)| Measurement { system: [m.system, Some(other)][i % 2], ..*m }).collect();
+    let held = Fixed { mu0: Some(0.35), stiffness_ratio: Some(0.8), u0: Some(1e-6), ..Fixed::default() };
+    assert!(fit(&Shape::flat(), &two, &held).unwrap().chi2.is_finite());
 }
