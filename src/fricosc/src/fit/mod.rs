@@ -382,6 +382,12 @@ fn listed(given: &[Option<f64>; NP]) -> Vec<usize> {
     (0..NP).filter(|&k| given[k].is_none_or(|v| !v.is_nan())).collect()
 }
 
+/// The rows' residuals `(model - mu)/sigma` (`sigma` 1 where none is given) at `p`.
+fn scaled_residuals(shape: &Shape, rows: &[Measurement], p: &Values) -> Result<DVector<f64>> {
+    let m = model(shape, rows, p)?;
+    Ok(DVector::from_iterator(rows.len(), m.iter().zip(rows).map(|(m, r)| (m.0 - r.mu) / r.sigma.unwrap_or(1.0))))
+}
+
 /// The median of the rows' system stiffness (the start of a fitted `kappa`), NaN without systems.
 fn median_kappa(rows: &[Measurement]) -> f64 {
     let mut k: Vec<f64> = rows.iter().filter_map(|r| r.system.map(|s| s.stiffness())).collect();
@@ -399,20 +405,12 @@ fn fit_checked(
 ) -> Result<FitReport> {
     let free: Vec<usize> = (0..NP).filter(|&k| given[k].is_none()).collect();
     let weighted = rows.iter().any(|r| r.sigma.is_some());
-    let sigma: Vec<f64> = rows.iter().map(|r| r.sigma.unwrap_or(1.0)).collect();
-    let residuals = |p: &Values| -> Result<DVector<f64>> {
-        let m = model(shape, rows, p)?;
-        Ok(DVector::from_iterator(rows.len(), m.iter().zip(rows).zip(&sigma).map(|((m, r), s)| (m.0 - r.mu) / s)))
-    };
+    let residuals = |p: &Values| scaled_residuals(shape, rows, p);
     // The start's grid on at most START_ROWS rows, evenly spread (a large file's start costs no more).
     let every = rows.len().div_ceil(START_ROWS);
     // The start from the stiff model (on a system each point costs a thousand times more).
     let few: Vec<Measurement> = rows.iter().step_by(every).map(|r| Measurement { system: None, ..*r }).collect();
-    let few_sigma: Vec<f64> = few.iter().map(|r| r.sigma.unwrap_or(1.0)).collect();
-    let few_residuals = |p: &Values| -> Result<DVector<f64>> {
-        let m = model(shape, &few, p)?;
-        Ok(DVector::from_iterator(few.len(), m.iter().zip(&few).zip(&few_sigma).map(|((m, r), s)| (m.0 - r.mu) / s)))
-    };
+    let few_residuals = |p: &Values| scaled_residuals(shape, &few, p);
     let mut start = start(shape, &few, given, &few_residuals)?;
     start[3] = given[3].unwrap_or_else(|| median_kappa(rows));
     let start = bounds::project(start, &free, bounds);
