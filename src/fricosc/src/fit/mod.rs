@@ -571,10 +571,12 @@ fn report(
         let jk = j.select_columns(&kept);
         if let Some(inv) = (jk.transpose() * &jk).try_inverse() {
             let scale = if weighted { 1.0 } else { reduced_chi2 };
+            // The upper triangle, mirrored: the inverse is symmetric to rounding only.
             for (a, &ca) in kept.iter().enumerate() {
-                for (b, &cb) in kept.iter().enumerate() {
+                for (b, &cb) in kept.iter().enumerate().skip(a) {
                     let (ka, kb) = (free[ca], free[cb]);
                     cov[(ka, kb)] = inv[(a, b)] * scale * p[ka] * p[kb];
+                    cov[(kb, ka)] = cov[(ka, kb)];
                 }
             }
         }
