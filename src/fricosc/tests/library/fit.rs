@@ -100,7 +100,8 @@ fn fixed_parameters_and_a_wrong_shape() {
 }
 
 /// Rows all at or above the critical velocity determine `mu0` only: said,
-/// and `kx/kz`, `u0` get no standard error. Bad rows are named.
+/// and `kx/kz`, `u0` get no standard error; `mu0`'s profile (its alone)
+/// finds it unbounded above. Bad rows are named.
 #[test]
 fn what_the_rows_cannot_determine_is_named() {
     let plateau: Vec<Measurement> = (1..=6)
@@ -109,7 +110,7 @@ fn what_the_rows_cannot_determine_is_named() {
             du: 1e-7,
             omega: 100.0,
             mu: 0.4,
-            sigma: None,
+            sigma: Some(0.01),
             system: None,
             load: None,
         })
@@ -118,6 +119,11 @@ fn what_the_rows_cannot_determine_is_named() {
     assert!((r.parameters[0].value - 0.4).abs() < 1e-12, "{r:?}");
     assert!(r.verdicts.iter().any(|v| v.contains("kx/kz")), "{:?}", r.verdicts);
     assert_eq!((r.parameters[1].stderr, r.parameters[2].stderr), (None, None));
+    // Only mu0 is profiled, and a larger one, its reduction bringing the
+    // rows back below vbar = 1, fits them as well: no standard error at all.
+    assert!(r.verdicts.iter().any(|v| v.starts_with("mu0: not bounded above")), "{:?}", r.verdicts);
+    assert!(!r.verdicts.iter().any(|v| v.starts_with("stiffness_ratio") || v.starts_with("u0")), "{:?}", r.verdicts);
+    assert_eq!(r.parameters[0].stderr, None);
     let mut bad = synthetic();
     bad[3].v0 = -1.0;
     assert!(fit(&Shape::flat(), &bad, &Fixed::default()).unwrap_err().to_string().contains("v0"));
@@ -234,6 +240,7 @@ fn what_the_profile_cannot_bound_has_no_standard_error() {
         r.verdicts
     );
     assert!(r.verdicts.iter().any(|v| v.contains("u0: not bounded")), "{:?}", r.verdicts);
+    assert!(r.verdicts[0].starts_with("mu0 and stiffness_ratio are not determined separately"), "{:?}", r.verdicts);
     let four: Vec<Measurement> = std::iter::repeat_n(Measurement { sigma: None, ..synthetic()[3] }, 4).collect();
     let r = fit(&Shape::flat(), &four, &Fixed::default()).unwrap();
     assert_eq!(r.parameters[0].stderr, None, "{r:?}");
