@@ -124,6 +124,8 @@ fn what_the_rows_cannot_determine_is_named() {
     assert!(r.verdicts.iter().any(|v| v.starts_with("mu0: not bounded above")), "{:?}", r.verdicts);
     assert!(!r.verdicts.iter().any(|v| v.starts_with("stiffness_ratio") || v.starts_with("u0")), "{:?}", r.verdicts);
     assert_eq!(r.parameters[0].stderr, None);
+    // Parameters the Jacobian leaves free have no covariance: correlations 0, not 0/0.
+    assert!(r.correlation[1].iter().chain(&r.correlation[2]).all(|c| *c == 0.0), "{:?}", r.correlation);
     let mut bad = synthetic();
     bad[3].v0 = -1.0;
     assert!(fit(&Shape::flat(), &bad, &Fixed::default()).unwrap_err().to_string().contains("v0"));
