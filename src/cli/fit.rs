@@ -178,6 +178,7 @@ fn to_json(shape: &str, rows: &[Measurement], r: &FitReport) -> Result<String> {
         "covariance": r.covariance, "correlation": r.correlation,
         "chi2": r.chi2, "dof": r.dof, "reduced_chi2": r.reduced_chi2, "weighted": r.weighted,
         "p_value": r.p_value, "verdicts": r.verdicts, "notes": r.notes, "outliers": r.outliers,
+        "outlier_threshold": r.outlier_threshold,
         "iterations": r.iterations, "converged": r.converged, "reference_load": r.reference_load,
     });
     #[derive(serde::Serialize)]
@@ -233,7 +234,8 @@ fn summary(shape: &str, source: &str, r: &FitReport, lines: &[u64]) -> String {
         })
         .collect();
     if !named.is_empty() {
-        out += &format!("outliers beyond {} standard uncertainties: {}\n", fricosc::fit::OUTLIER, named.join(", "));
+        let beyond = r.outlier_threshold;
+        out += &format!("outliers beyond {beyond:.2} standard uncertainties: {}\n", named.join(", "));
     }
     out
 }

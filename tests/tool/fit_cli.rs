@@ -168,7 +168,7 @@ fn an_outlier_is_named_by_its_line() {
     let out = fricosc(&["fit", "-", "--format", "summary"], Some(&file));
     assert_eq!(out.status.code(), Some(1));
     let text = String::from_utf8(out.stdout).unwrap();
-    assert!(text.contains("outliers beyond 3.5 standard uncertainties: row 5 (line 10)\n"), "{text}");
+    assert!(text.contains("outliers beyond 3.56 standard uncertainties: row 5 (line 10)\n"), "{text}");
 }
 
 /// `--bound NAME=LO:HI`: a bound that excludes the truth leaves the

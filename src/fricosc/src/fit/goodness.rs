@@ -6,12 +6,29 @@ use super::bounds::Bounds;
 use super::{fit_checked, FitReport, Measurement, NAMES, NP};
 use crate::error::Result;
 use crate::shape::Shape;
-use statrs::distribution::{ChiSquared, ContinuousCDF};
+use statrs::distribution::{ChiSquared, ContinuousCDF, Normal};
 
-/// A row is named as outlying where its normalised residual exceeds this in
-/// size: a normal error does so with probability 4.7e-4 (one false alarm in
-/// about 2,000 rows).
-pub const OUTLIER: f64 = 3.5;
+/// The least threshold of an outlier: a normal error exceeds 3.5 in size
+/// with probability 4.7e-4.
+const LEAST_OUTLIER: f64 = 3.5;
+
+/// The chance that any of `n` rows whose errors are normal is named an
+/// outlier.
+const FALSE_ALARM: f64 = 0.01;
+
+/// The normalised residual beyond which one of `rows` rows is named as
+/// outlying: the size a normal error exceeds with probability
+/// `FALSE_ALARM / rows` (so that rows with normal errors name none with
+/// probability at least 99 %, by the union bound), at least 3.5. It is 3.5 up
+/// to 21 rows, 4.4 at 1,000 and 5.7 at 10^6: a fixed threshold would name
+/// 4.7e-4 of every set of normal rows.
+#[must_use]
+pub fn outlier_threshold(rows: usize) -> f64 {
+    let tail = 0.5 * FALSE_ALARM / rows.max(1) as f64;
+    // The standard normal exists (mean 0, deviation 1 are valid).
+    let z = Normal::new(0.0, 1.0).map_or(f64::NAN, |n| -n.inverse_cdf(tail));
+    z.max(LEAST_OUTLIER)
+}
 
 /// The p-value below which the model does not explain the rows.
 const SIGNIFICANCE: f64 = 0.01;
@@ -45,7 +62,8 @@ pub(super) fn judge(
         .zip(rows)
         .map(|(e, m)| if scale > 0.0 { e / (m.sigma.unwrap_or(1.0) * scale) } else { 0.0 })
         .collect();
-    r.outliers = (0..rows.len()).filter(|&i| r.normalised_residuals[i].abs() > OUTLIER).collect();
+    let threshold = r.outlier_threshold;
+    r.outliers = (0..rows.len()).filter(|&i| r.normalised_residuals[i].abs() > threshold).collect();
     if !r.converged {
         r.verdicts.push(format!(
             "the iteration stopped after {} iterations without converging: the parameters are not at the \
@@ -69,8 +87,8 @@ pub(super) fn judge(
     }
     if !r.outliers.is_empty() {
         r.verdicts.push(format!(
-            "rows {} (counted from 0, in the order given) are more than {OUTLIER} standard uncertainties from the \
-             model (normalised residuals {})",
+            "rows {} (counted from 0, in the order given) are more than {threshold:.2} standard uncertainties from \
+             the model (normalised residuals {})",
             list(&r.outliers),
             r.outliers.iter().map(|&i| format!("{:.1}", r.normalised_residuals[i])).collect::<Vec<_>>().join(", ")
         ));

@@ -28,7 +28,8 @@
 //! With `sigma` the chi-square's p-value (`goodness`); below 0.01 a verdict
 //! that names the likely cause, each tried by a refit: the outlying rows
 //! left out, a held parameter freed, another shape. Rows whose normalised
-//! residual exceeds [`OUTLIER`] are named. Without `sigma` the scale of the
+//! residual exceeds [`outlier_threshold`] (which grows with the
+//! number of rows) are named. Without `sigma` the scale of the
 //! errors is the scatter's (a note says what that assumes).
 
 mod bounds;
@@ -36,7 +37,7 @@ mod goodness;
 mod load;
 mod profile;
 
-pub use goodness::OUTLIER;
+pub use goodness::outlier_threshold;
 
 use crate::error::{Error, Result};
 use crate::shape::Shape;
@@ -155,8 +156,10 @@ pub struct FitReport {
     /// Per row the residual over its uncertainty (`sigma`, else the scatter's
     /// `sqrt(reduced_chi2)`).
     pub normalised_residuals: Vec<f64>,
-    /// Rows (indices) whose normalised residual exceeds [`OUTLIER`] in size.
+    /// Rows (indices) whose normalised residual exceeds `outlier_threshold` in size.
     pub outliers: Vec<usize>,
+    /// [`outlier_threshold`] of the number of rows.
+    pub outlier_threshold: f64,
     /// Levenberg-Marquardt iterations.
     pub iterations: usize,
     /// Whether Levenberg-Marquardt reached a minimum (no step improves the
@@ -622,6 +625,7 @@ fn report(
         p_value: None,
         normalised_residuals: vec![],
         outliers: vec![],
+        outlier_threshold: outlier_threshold(rows.len()),
         iterations,
         converged: true,
         reference_load: None,

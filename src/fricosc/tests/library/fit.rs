@@ -7,7 +7,7 @@ use fricosc::fit::{fit, Fixed, Measurement};
 use fricosc::Shape;
 
 /// The rows of `data/fit-synthetic-flat.csv` (`mu0 = 0.35`, `kx/kz = 0.8`, `u0 = 1e-6` m).
-fn synthetic() -> Vec<Measurement> {
+pub(crate) fn synthetic() -> Vec<Measurement> {
     let text =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/fit-synthetic-flat.csv")).unwrap();
     text.lines()
@@ -38,7 +38,7 @@ fn exact_rows_give_the_parameters_back() {
 }
 
 /// A deterministic standard normal sample (xorshift and Box-Muller).
-fn normals(mut seed: u64) -> impl FnMut() -> f64 {
+pub(crate) fn normals(mut seed: u64) -> impl FnMut() -> f64 {
     let mut uniform = move || {
         seed ^= seed << 13;
         seed ^= seed >> 7;
@@ -163,14 +163,15 @@ fn a_model_that_does_not_fit_names_its_cause() {
 }
 
 /// One row six standard uncertainties off is named (normalised residual
-/// above 3.5), and leaving it out is the cause the verdict gives.
+/// above 3.56, the threshold of 27 rows), and leaving it out is the cause the
+/// verdict gives.
 #[test]
 fn an_outlier_is_named() {
     let mut rows = noisy(54_321);
     rows[5].mu += 6.0 * 0.002;
     let r = fit(&Shape::flat(), &rows, &Fixed::default()).unwrap();
     assert_eq!(r.outliers, vec![5], "{:?}", r.normalised_residuals);
-    assert!(r.normalised_residuals[5] > 3.5);
+    assert!(r.normalised_residuals[5] > 3.56);
     assert!(
         r.verdicts.iter().any(|v| v.contains("likely: the outlying rows 5 (from 0; without them p = ")),
         "{:?}",
@@ -183,7 +184,7 @@ fn an_outlier_is_named() {
     let r = fit(&Shape::flat(), &rows, &Fixed::default()).unwrap();
     assert_eq!(r.outliers, vec![5], "{:?}", r.normalised_residuals);
     // Named by their index counted from 0 (the command line adds each one's line in the file).
-    let said = "rows 5 (counted from 0, in the order given) are more than 3.5 standard uncertainties";
+    let said = "rows 5 (counted from 0, in the order given) are more than 3.56 standard uncertainties";
     assert!(r.verdicts.iter().any(|v| v.starts_with(said)), "{:?}", r.verdicts);
 }
 

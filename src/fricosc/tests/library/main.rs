@@ -11,6 +11,7 @@ mod contact;
 mod degenerate;
 mod edges;
 mod fit;
+mod fit_outliers;
 #[allow(clippy::excessive_precision)]
 mod flat;
 mod flat_events;
