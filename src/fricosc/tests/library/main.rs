@@ -11,6 +11,7 @@ mod contact;
 mod degenerate;
 mod edges;
 mod fit;
+#[allow(clippy::excessive_precision)]
 mod fit_outliers;
 #[allow(clippy::excessive_precision)]
 mod flat;
