@@ -483,7 +483,9 @@ impl Walker<'_> {
         let center = std::f64::consts::TAU * (self.tau / std::f64::consts::TAU).round();
         let closes = match bound.edge {
             Some(e) => Some(center - e).filter(|&l| self.tau < l && l <= stop),
-            None => Some(center).filter(|&c| self.tau < c && c <= stop),
+            // A touch of zero loses and regains contact at an instant; a
+            // bound that stays above zero, however little, keeps it.
+            None => Some(center).filter(|&c| bound.level <= bound.amp && self.tau < c && c <= stop),
         };
         let book = |w: &mut Self, a: f64, b: f64| {
             let (f, err) = layer::integral(&drive, &bound, a, b);

@@ -137,6 +137,22 @@ fn continuous_through_amp_one_and_vanishing_w() {
     }
 }
 
+/// Contact is lost only where the bound reaches zero: at `amp = 1` (a
+/// touch) at `tau = 0`, at `1 + 1e-7` for a window of `2 acos(1/amp)`; at
+/// `1 - 1e-7` the bound stays above 1e-7 and the slip through its minimum
+/// (on the layer's manifold) is no loss of contact.
+#[test]
+fn contact_is_lost_only_where_the_bound_vanishes() {
+    let kinds = |amp: f64| -> Vec<&'static str> {
+        let c = conditions(0.3, amp, 0.0, 0.0).with_transverse(Transverse::new(1.2, 0.7).unwrap());
+        let Report::Plane(r) = Shape::flat().report(&c).unwrap() else { panic!() };
+        r.events.iter().map(|e| e.kind.name()).collect()
+    };
+    assert_eq!(kinds(1.0 - 1e-7), ["stick", "slip"]);
+    assert_eq!(kinds(1.0), ["contact", "stick", "slip", "loss_of_contact", "contact"]);
+    assert_eq!(kinds(1.0 + 1e-7), ["contact", "stick", "slip", "loss_of_contact"]);
+}
+
 /// Continuity through the tie where a regained contact's bound grows exactly
 /// as fast as the body moves (`|X'(t_c)| = amp sin t_c`): the third-order
 /// term decides between a slip at once and a stick (`plane/spring.rs`); the
