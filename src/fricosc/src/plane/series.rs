@@ -70,6 +70,32 @@ impl Series {
         Series(r)
     }
 
+    /// `self / d`; `d.0[0]` must not be 0 (`q_k = (a_k - sum_{j>=1} d_j
+    /// q_{k-j}) / d_0`: one pass, where `self * d.recip()` takes two).
+    pub(crate) fn div(&self, d: &Series) -> Series {
+        let (a, d) = (&self.0, &d.0);
+        let mut q = [0.0; LEN];
+        let inv = 1.0 / d[0];
+        q[0] = a[0] * inv;
+        for k in 1..LEN {
+            let s: f64 = (1..=k).map(|j| d[j] * q[k - j]).sum();
+            q[k] = (a[k] - s) * inv;
+        }
+        Series(q)
+    }
+
+    /// `self * self`, each coefficient's symmetric terms taken once (half
+    /// the products of [`Mul`]).
+    pub(crate) fn square(&self) -> Series {
+        let a = &self.0;
+        let mut r = [0.0; LEN];
+        for (k, rk) in r.iter_mut().enumerate() {
+            let s: f64 = (0..k.div_ceil(2)).map(|j| a[j] * a[k - j]).sum();
+            *rk = 2.0 * s + if k % 2 == 0 { a[k / 2] * a[k / 2] } else { 0.0 };
+        }
+        Series(r)
+    }
+
     /// `self` without its constant term.
     pub(crate) fn without_constant(mut self) -> Series {
         self.0[0] = 0.0;
@@ -106,8 +132,10 @@ impl Series {
     /// The first sign change of the series on `(0, h]`, given that it is
     /// positive just after 0 (where its first `skip` coefficients vanish
     /// exactly, the series is taken divided by `t^skip`): a bracket `[a, b]`
-    /// with `self(a) > 0 >= self(b)`, isolated by excluding intervals on which
-    /// the constant term of the shifted series exceeds the sum of the others.
+    /// with `self(a) > 0 >= self(b)` that holds one root, isolated by
+    /// excluding intervals on which the constant term of the shifted series
+    /// exceeds the sum of the others, and ended where the derivative's
+    /// series excludes 0 in the same way.
     /// `None` when it stays positive (a touch of zero without a sign change is
     /// no event); `Err` when the isolation does not terminate (a series that
     /// vanishes to rounding over a whole interval).
@@ -129,7 +157,12 @@ impl Series {
         if p[0] + low > -1e-12 * low {
             return Ok(None);
         }
-        let mut walk = Isolation { budget: 4096, positive_from: None, in_run: false };
+        let mut slope = [0.0; LEN];
+        for k in 1..p.len() {
+            slope[k - 1] = k as f64 * p[k];
+        }
+        let mut walk =
+            Isolation { budget: 4096, positive_from: None, in_run: false, slope: &slope[..p.len().max(2) - 1] };
         let found = walk.isolate(p, 0.0, 1.0)?;
         Ok(found.map(|(a, b)| (a * h, b * h)))
     }
@@ -164,14 +197,17 @@ const LEAF: f64 = 1e-9;
 /// found positive starts, and whether the last interval decided belongs to
 /// it. A stretch within rounding of zero after the run (neither sign
 /// certain) keeps its start: a fall beyond rounding that follows is the
-/// first fall, somewhere after that start, however flat the crossing.
-struct Isolation {
+/// first fall, somewhere after that start, however flat the crossing. The
+/// derivative's coefficients (`slope`) end the bisection early: where they
+/// exclude 0 on an interval with a sign change at its ends, it holds one root.
+struct Isolation<'a> {
     budget: usize,
     positive_from: Option<f64>,
     in_run: bool,
+    slope: &'a [f64],
 }
 
-impl Isolation {
+impl Isolation<'_> {
     /// The first interval of `[a, b]` where `p` falls to `<= 0`, by bisection
     /// with exclusion (module docs of [`Series::first_fall`]). An interval
     /// found negative right after one found positive brackets a fall at
@@ -191,6 +227,15 @@ impl Isolation {
                 return Ok(None);
             }
             Sign::Undecided => {}
+        }
+        // Falling throughout, positive at `a` and negative beyond rounding at
+        // `b`: its one root (not from 0, where the caller's series, not
+        // divided by `u^skip`, vanishes; a fall to within rounding of 0 is
+        // left to the bisection, which tells a touch from a fall).
+        if let (true, Sign::Negative { .. }) = (a > 0.0, excluded(self.slope, m, 0.5 * (b - a))) {
+            if horner(p, a) > 0.0 && horner(p, b) < -rounding(p, b) {
+                return Ok(Some((a, b)));
+            }
         }
         if b - a <= LEAF {
             let (pa, pb) = (horner(p, a), horner(p, b));
@@ -228,6 +273,12 @@ enum Sign {
     Undecided,
 }
 
+/// The rounding of Horner's value of `p` at `u`: within `2n eps sum |p_k|
+/// |u|^k` of the true one.
+fn rounding(p: &[f64], u: f64) -> f64 {
+    2.0 * p.len() as f64 * f64::EPSILON * p.iter().rev().fold(0.0, |acc, c| acc * u.abs() + c.abs())
+}
+
 /// The sign `p` keeps on the real interval `[m - r, m + r]`, if any.
 /// Shifted to its centre, `p(m + s) = sum q_k s^k`, it is at least `q_0 -
 /// sum_odd |q_k| r^k + sum_even min(q_k, 0) r^k` there and at most the
@@ -251,10 +302,7 @@ fn excluded(p: &[f64], m: f64, r: f64) -> Sign {
     if q[0] - odd + low > margin {
         Sign::Positive
     } else if high < -margin {
-        // The shift's constant term is Horner's value at `m`: within `2n eps
-        // sum |p_k| m^k` of the true one.
-        let rounding = 2.0 * p.len() as f64 * f64::EPSILON * p.iter().rev().fold(0.0, |acc, c| acc * m.abs() + c.abs());
-        Sign::Negative { beyond_rounding: q[0] < -(margin + rounding) }
+        Sign::Negative { beyond_rounding: q[0] < -(margin + rounding(p, m)) }
     } else {
         Sign::Undecided
     }
@@ -352,7 +400,8 @@ mod tests {
         // -(t - 0.3)(t - 0.5)(t - 0.9) = 0.135 - 0.87 t + 1.7 t^2 - t^3: positive at 0, falls at 0.3.
         p.0[..4].copy_from_slice(&[0.135, -0.87, 1.7, -1.0]);
         let (a, b) = p.first_fall(0, 1.0).unwrap().unwrap();
-        assert!(a <= 0.3 && 0.3 <= b && b - a < 2e-9, "{a} {b}");
+        // A bracket of that root alone (the next is at 0.5), its signs at its ends.
+        assert!(a <= 0.3 && (0.3..0.5).contains(&b) && p.eval(a) > 0.0 && p.eval(b) <= 0.0, "{a} {b}");
         // (t - 0.4)^2 + 0: a touch, no sign change.
         let mut q = Series::ZERO;
         q.0[..3].copy_from_slice(&[0.16, -0.8, 1.0]);

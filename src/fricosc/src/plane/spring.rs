@@ -279,7 +279,7 @@ impl Walker<'_> {
         let b = self.sp.bound.series(tau, &cs);
         let dx = self.sp.drive.displacement(&cs, &sn);
         let (fx, fy) = (dx[0] + Series::constant(f[0]), dx[1] + Series::constant(f[1]));
-        let mut g = b * b - fx * fx - fy * fy;
+        let mut g = b.square() - fx.square() - fy.square();
         g.0[..skip].iter_mut().for_each(|a| *a = 0.0);
         let loss = self.sp.bound.next_loss(tau).filter(|&l| l < end);
         let target = loss.unwrap_or(end);
@@ -394,10 +394,10 @@ impl Walker<'_> {
         // A slip from contact starts inside the layer, on its manifold (above).
         let (y, rho) = (regular(&b, &xd, y0), bound.singularity_distance(tau));
         let horizon = target - tau;
-        let n = y[0] * y[0] + y[1] * y[1];
-        let (c2, s2) = ((y[1] - y[0]) * (y[1] + y[0]), y[0] * y[1] * 2.0);
-        let rn = n.recip();
-        let (fx, fy) = (b * c2 * rn, b * s2 * rn);
+        let (q0, q1) = (y[0].square(), y[1].square());
+        let (n, c2, s2) = (q0 + q1, q1 - q0, y[0] * y[1] * 2.0);
+        let bn = b.div(&n);
+        let (fx, fy) = (bn * c2, bn * s2);
         let h = [y[0], y[1], fx, fy].iter().map(|s| s.step_for(STEP_TOL)).fold(horizon.min(0.5 * rho), f64::min);
         let ev = xd[0] * c2 + xd[1] * s2 - bound.rate(&sn) * n;
         if ev.0[0] <= 0.0 && !regain {
