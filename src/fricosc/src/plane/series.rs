@@ -393,6 +393,24 @@ mod tests {
         assert_eq!(geometric.tail(0.5), 0.5f64.powi(23) + 0.5f64.powi(24));
     }
 
+    /// `(1 + t + t^2)^2 = 1 + 2t + 3t^2 + 2t^3 + t^4` (odd and even orders
+    /// alike); `(1 - t^2)/(1 - t) = 1 + t` and `2/(2 - t) = sum (t/2)^k`,
+    /// truncated where the orders end.
+    #[test]
+    fn squares_and_quotients_by_their_closed_forms() {
+        let mut a = Series::ZERO;
+        a.0[..3].copy_from_slice(&[1.0, 1.0, 1.0]);
+        assert_eq!(a.square().0[..6], [1.0, 2.0, 3.0, 2.0, 1.0, 0.0]);
+        let (mut num, mut den) = (Series::ZERO, Series::ZERO);
+        num.0[0] = 1.0;
+        num.0[2] = -1.0;
+        den.0[..2].copy_from_slice(&[1.0, -1.0]);
+        assert_eq!(num.div(&den).0[..4], [1.0, 1.0, 0.0, 0.0]);
+        den.0[..2].copy_from_slice(&[2.0, -1.0]);
+        let q = Series::constant(2.0).div(&den);
+        assert!((0..LEN).all(|k| q.0[k] == 0.5f64.powi(k as i32)), "{q:?}");
+    }
+
     #[test]
     fn first_fall_finds_the_first_root_and_skips_touches() {
         // (t - 0.3)(t - 0.5)(t - 0.9): falls at 0.5? positive at 0 is -0.135: use the negative.
