@@ -19,11 +19,11 @@ const BISECTION_BUDGET: usize = 16 * 64;
 
 /// The bands' edges over `[0, zmax]` (module docs), `sequence(z)` the phase
 /// sequence of the spring at `z`.
-pub(crate) fn edges<S: PartialEq>(
+pub(crate) fn edges<S: PartialEq + Send>(
     c: &dyn crate::contact::Contact,
     amp: f64,
     zmax: f64,
-    sequence: &dyn Fn(f64) -> Result<S>,
+    sequence: &(dyn Fn(f64) -> Result<S> + Sync),
 ) -> Result<Vec<f64>> {
     let mut cuts = vec![0.0, zmax];
     if amp > 0.0 && amp < 1.0 {
@@ -39,7 +39,7 @@ pub(crate) fn edges<S: PartialEq>(
         let zs: Vec<f64> = (0..=SCAN).map(|k| a + (b - a) * k as f64 / SCAN as f64).collect();
         // Just inside the ends: the ends themselves may sit on a threshold.
         let inside = |z: f64| z.clamp(a + (b - a) * 1e-12, b - (b - a) * 1e-12);
-        let seqs = zs.iter().map(|&z| sequence(inside(z))).collect::<Result<Vec<S>>>()?;
+        let seqs = crate::numerics::par::map(&zs, |&z| sequence(inside(z))).into_iter().collect::<Result<Vec<S>>>()?;
         edges.push(a);
         let (mut budget, found) = (BISECTION_BUDGET, edges.len());
         for k in 0..SCAN {

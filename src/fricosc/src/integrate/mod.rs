@@ -146,12 +146,37 @@ pub(crate) fn cosine_pass<const N: usize>(
     active: [bool; N],
     f: &dyn Fn(f64) -> ([f64; N], f64),
 ) -> Pass<N> {
+    cosine_pass_by(a, b, m, active, |zs| zs.iter().map(|&z| f(z)).collect())
+}
+
+/// [`cosine_pass`] with the nodes spread over the cores
+/// ([`crate::numerics::par`]): for integrands that take long (a spring's
+/// steady state in the plane each); the same bits.
+pub(crate) fn cosine_pass_parallel<const N: usize>(
+    a: f64,
+    b: f64,
+    m: usize,
+    active: [bool; N],
+    f: &(dyn Fn(f64) -> ([f64; N], f64) + Sync),
+) -> Pass<N> {
+    cosine_pass_by(a, b, m, active, |zs| crate::numerics::par::map(zs, |&z| f(z)))
+}
+
+/// [`cosine_pass`] with the integrand evaluated at every node by `eval` (in order).
+fn cosine_pass_by<const N: usize>(
+    a: f64,
+    b: f64,
+    m: usize,
+    active: [bool; N],
+    eval: impl FnOnce(&[f64]) -> Vec<([f64; N], f64)>,
+) -> Pass<N> {
     let rule = quad::rule(m, 0.0);
     let half = 0.5 * (b - a);
+    let angles: Vec<(f64, f64)> =
+        rule.nodes.iter().map(|&x| (0.5 * std::f64::consts::PI * (1.0 + x)).sin_cos()).collect();
+    let zs: Vec<f64> = angles.iter().map(|&(_, ct)| a + half * (1.0 - ct)).collect();
     let mut acc = Acc::new(&rule, active);
-    for &x in &rule.nodes {
-        let (st, ct) = (0.5 * std::f64::consts::PI * (1.0 + x)).sin_cos();
-        let (v, mag) = f(a + half * (1.0 - ct));
+    for ((v, mag), &(st, _)) in eval(&zs).into_iter().zip(&angles) {
         acc.add(v.map(|v| v * st), mag * st);
     }
     acc.finish(&rule, 0.5 * std::f64::consts::PI * half)

@@ -32,10 +32,10 @@ use super::spring::Spring;
 use super::{orbit, period_steps, PlaneEvaluation};
 use crate::contact::Contact;
 use crate::error::{Error, Result};
-use crate::integrate::{bands, cosine_pass, Ladder, Sums};
+use crate::integrate::{bands, cosine_pass, cosine_pass_parallel, Ladder, Sums};
 use crate::spring::EventKind;
-use std::cell::{Cell, RefCell};
 use std::f64::consts::TAU;
+use std::sync::Mutex;
 
 /// Taylor steps a period one spring may take at most (estimated before its
 /// walk); the springs beyond, at the contact's edge, are the tail.
@@ -56,33 +56,44 @@ const TAIL_ORDER: usize = 32;
 /// Rounding of one spring's means, in eps of its bound's scale.
 const SPRING_ROUNDING: f64 = 8.0;
 
-/// What the nodes of a quadrature learned besides their means: the first
-/// error, the largest multiplier, the periods walked.
+/// What the nodes of a quadrature learned besides their means (from every
+/// core): the first error, the largest multiplier, the periods walked.
 #[derive(Default)]
-struct Springs {
-    error: RefCell<Option<Error>>,
-    multiplier: Cell<f64>,
-    periods: Cell<usize>,
+struct Springs(Mutex<Learned>);
+
+#[derive(Default)]
+struct Learned {
+    error: Option<Error>,
+    multiplier: f64,
+    periods: usize,
 }
 
 impl Springs {
     /// The ratios `(mu, transverse)` of the spring at `z`, recorded; `None`
     /// after the first error.
     fn solve(&self, spring: &Spring) -> Option<[f64; 3]> {
-        if self.error.borrow().is_some() {
+        if self.learned().error.is_some() {
             return None;
         }
-        match orbit(spring) {
+        let solved = orbit(spring);
+        let mut learned = self.learned();
+        match solved {
             Ok((e, _)) => {
-                self.multiplier.set(self.multiplier.get().max(e.multiplier));
-                self.periods.set(self.periods.get() + e.periods);
+                learned.multiplier = learned.multiplier.max(e.multiplier);
+                learned.periods += e.periods;
                 Some([e.ratio.mu_ratio, e.transverse_ratio, e.error_estimate])
             }
             Err(err) => {
-                *self.error.borrow_mut() = Some(err);
+                learned.error.get_or_insert(err);
                 None
             }
         }
+    }
+
+    /// The record (a panic elsewhere that poisoned it left it whole: each
+    /// update is one assignment).
+    fn learned(&self) -> std::sync::MutexGuard<'_, Learned> {
+        self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
     }
 }
 
@@ -131,13 +142,14 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     for w in edges.windows(2).filter(|w| w[1] > w[0]) {
         let r = ladder.run(
             FIRST_ORDER,
-            |m| cosine_pass(w[0], w[1], m, [true; 4], &node),
+            |m| cosine_pass_parallel(w[0], w[1], m, [true; 4], &node),
             [scale, scale, scale, f64::INFINITY],
         );
         truncation += r.error[0].max(r.error[1]) + r.error[2];
         total += r;
     }
-    if let Some(e) = springs.error.take() {
+    let learned = springs.0.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Some(e) = learned.error {
         return Err(e);
     }
     let tail = Tail::of(c, &spring, amp, zcap, zmax)?;
@@ -155,9 +167,9 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
         ratio: crate::Ratio::signed(mu, 1.0 - mu, error_estimate, &c.name())?,
         transverse_ratio: tr,
         error_estimate,
-        multiplier: springs.multiplier.get(),
+        multiplier: learned.multiplier,
         events: vec![],
-        periods: springs.periods.get(),
+        periods: learned.periods,
     })
 }
 
