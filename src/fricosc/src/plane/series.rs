@@ -20,14 +20,16 @@ use std::ops::{Add, Mul, Sub};
 pub(crate) const ORDER: usize = 24;
 const LEN: usize = ORDER + 1;
 
-/// `1/k!`, `k = 0..=ORDER`.
-fn inverse_factorials() -> [f64; LEN] {
+/// `1/k!`, `k = 0..=ORDER` (each the one before divided by `k`, rounded).
+const INVERSE_FACTORIALS: [f64; LEN] = {
     let mut r = [1.0; LEN];
-    for k in 1..LEN {
+    let mut k = 1;
+    while k < LEN {
         r[k] = r[k - 1] / k as f64;
+        k += 1;
     }
     r
-}
+};
 
 /// A power series `sum a_k t^k`, `k = 0..=ORDER`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,7 +51,7 @@ impl Series {
         let (s, c) = tau0.sin_cos();
         let cycle_c = [c, -s, -c, s];
         let cycle_s = [s, c, -s, -c];
-        let inv = inverse_factorials();
+        let inv = &INVERSE_FACTORIALS;
         let (mut cs, mut sn) = ([0.0; LEN], [0.0; LEN]);
         for k in 0..LEN {
             cs[k] = cycle_c[k % 4] * inv[k];
