@@ -676,6 +676,8 @@ def test_fit_is_the_command_lines() -> None:
     assert wrong.verdicts == theirs["verdicts"]
     assert wrong.p_value == theirs["p_value"] and wrong.p_value is not None and wrong.p_value < 0.01
     assert "likely: the held mu0 = 0.3" in wrong.verdicts[0] and wrong.converged and wrong.notes == []
+    # The outlier threshold of 27 rows (mpmath: sqrt(2) erfinv(1 - 0.01/27)), as the command line's.
+    assert wrong.outlier_threshold == theirs["outlier_threshold"] and abs(wrong.outlier_threshold - 3.5603432) < 1e-7
     with pytest.raises(fricosc.InputError, match="did you mean 'sigma'"):
         fricosc.fit(example.rename(columns={"sigma": "Sigma"}))
     rig = fricosc.fit(frame, system_stiffness=1.0, frequency_ratio=0.5, damping=0.3)

@@ -12,7 +12,8 @@
 //! tolerance relative to the contact's normal force; a pass's error is its
 //! difference from the one before (an event that appears between two
 //! samples of the band search leaves a kink that the coefficients' decay
-//! would not see).
+//! would not see). A pass's nodes, and the search's samples, are solved on
+//! every core (`parallel`; the same bits).
 //!
 //! # The edge of the contact
 //! A spring whose bound is small against the drive slips along a direction
