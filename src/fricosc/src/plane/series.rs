@@ -422,6 +422,17 @@ mod tests {
         let (a, b) = p.first_fall(0, 1.0).unwrap().unwrap();
         // A bracket of that root alone (the next is at 0.5), its signs at its ends.
         assert!(a <= 0.3 && (0.3..0.5).contains(&b) && p.eval(a) > 0.0 && p.eval(b) <= 0.0, "{a} {b}");
+        // -(t - 0.30)(t - 0.31)(t - 0.32): falls, rises and falls within 0.02;
+        // the first fall's bracket ends before the rise (where the slope's
+        // sign changes, no interval is taken for falling throughout).
+        let mut f = Series::ZERO;
+        f.0[..4].copy_from_slice(&[0.02976, -0.2882, 0.93, -1.0]);
+        // Times `e^t` (its roots, every coefficient nonzero).
+        let exp = Series(INVERSE_FACTORIALS);
+        for g in [f, f * exp] {
+            let (a, b) = g.first_fall(0, 1.0).unwrap().unwrap();
+            assert!(a <= 0.30 && (0.30..0.31).contains(&b), "{a} {b}");
+        }
         // (t - 0.4)^2 + 0: a touch, no sign change.
         let mut q = Series::ZERO;
         q.0[..3].copy_from_slice(&[0.16, -0.8, 1.0]);
