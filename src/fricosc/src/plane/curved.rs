@@ -58,7 +58,7 @@ const TAIL_ORDER: usize = 32;
 const SPRING_ROUNDING: f64 = 8.0;
 
 /// What the nodes of a quadrature learned besides their means (from every
-/// core): the first error, the largest multiplier, the periods walked.
+/// core): the first error recorded, the largest multiplier, the periods walked.
 #[derive(Default)]
 struct Springs(Mutex<Learned>);
 
@@ -130,7 +130,7 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
         let sp = spring(z);
         let b = sp.bound.period_integral() / TAU;
         let scale = sp.bound.level.abs() + amp;
-        match springs.solve(&spring(z)) {
+        match springs.solve(&sp) {
             Some([mu, tr, err]) => ([mu * b, tr * b, b, err * b], scale),
             None => ([0.0; 4], scale),
         }
