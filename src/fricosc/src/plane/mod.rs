@@ -229,8 +229,10 @@ fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
         if res <= 8.0 * f64::EPSILON * (1f64.max(f[0].abs()).max(f[1].abs())) {
             let m = multiplier(&w.jacobian);
             // A neutral orbit (a period that only sticks repeats from any
-            // start): the one the relaxed start reaches is the answer.
-            if m >= 1.0 {
+            // start): the one the relaxed start reaches is the answer. The
+            // Jacobian is a product of the steps' factors, each rounded: a
+            // multiplier within their rounding of 1 is neutral.
+            if m >= 1.0 - 4.0 * f64::EPSILON * (w.steps as f64 + 1.0) {
                 return relaxed(sp, total, periods);
             }
             return Ok((answer(&w, total, m, res, periods)?, Start::Force(0.0, f)));

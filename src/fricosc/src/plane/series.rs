@@ -60,42 +60,50 @@ impl Series {
         (Series(cs), Series(sn))
     }
 
-    /// `1/self`; `self.0[0]` must not be 0.
-    pub(crate) fn recip(&self) -> Series {
-        let a = &self.0;
-        let mut r = [0.0; LEN];
-        r[0] = 1.0 / a[0];
-        for k in 1..LEN {
-            let s: f64 = (1..=k).map(|j| a[j] * r[k - j]).sum();
-            r[k] = -s * r[0];
-        }
-        Series(r)
-    }
-
-    /// `self / d`; `d.0[0]` must not be 0 (`q_k = (a_k - sum_{j>=1} d_j
-    /// q_{k-j}) / d_0`: one pass, where `self * d.recip()` takes two).
+    /// `self / d`; `d.0[0]` must not be 0: `q_k = (a_k - sum_{j>=1} d_j
+    /// q_{k-j}) / d_0`, each `q_k`'s terms subtracted from the later
+    /// numerators as soon as it is known (rows the compiler vectorises, where
+    /// a sum per `q_k` waits on each addition in turn).
     pub(crate) fn div(&self, d: &Series) -> Series {
-        let (a, d) = (&self.0, &d.0);
-        let mut q = [0.0; LEN];
+        let d = &d.0;
+        let (mut num, mut q) = (self.0, [0.0; LEN]);
         let inv = 1.0 / d[0];
-        q[0] = a[0] * inv;
-        for k in 1..LEN {
-            let s: f64 = (1..=k).map(|j| d[j] * q[k - j]).sum();
-            q[k] = (a[k] - s) * inv;
+        for k in 0..LEN {
+            let qk = num[k] * inv;
+            q[k] = qk;
+            for (n, &dj) in num[k + 1..].iter_mut().zip(&d[1..]) {
+                *n -= dj * qk;
+            }
         }
         Series(q)
     }
 
     /// `self * self`, each coefficient's symmetric terms taken once (half
-    /// the products of [`Mul`]).
+    /// the products of [`Mul`]), row by row.
     pub(crate) fn square(&self) -> Series {
         let a = &self.0;
         let mut r = [0.0; LEN];
-        for (k, rk) in r.iter_mut().enumerate() {
-            let s: f64 = (0..k.div_ceil(2)).map(|j| a[j] * a[k - j]).sum();
-            *rk = 2.0 * s + if k % 2 == 0 { a[k / 2] * a[k / 2] } else { 0.0 };
+        for i in 0..LEN {
+            if 2 * i < LEN {
+                r[2 * i] += a[i] * a[i];
+            }
+            let twice = 2.0 * a[i];
+            if 2 * i + 1 < LEN {
+                for (rk, &b) in r[2 * i + 1..].iter_mut().zip(&a[i + 1..]) {
+                    *rk += twice * b;
+                }
+            }
         }
         Series(r)
+    }
+
+    /// `d/dt` of the series (its last coefficient 0: one order lost).
+    pub(crate) fn derivative(&self) -> Series {
+        let mut d = [0.0; LEN];
+        for k in 1..LEN {
+            d[k - 1] = k as f64 * self.0[k];
+        }
+        Series(d)
     }
 
     /// `self` without its constant term.
@@ -170,16 +178,37 @@ impl Series {
     }
 }
 
-/// The Taylor coefficients of `p` at `m`: `p(m + s) = sum q_k s^k` (repeated
-/// synthetic division).
+/// `k!`, `k = 0..=ORDER` (exact to `22!`, rounded beyond).
+const FACTORIALS: [f64; LEN] = {
+    let mut r = [1.0; LEN];
+    let mut k = 1;
+    while k < LEN {
+        r[k] = r[k - 1] * k as f64;
+        k += 1;
+    }
+    r
+};
+
+/// The Taylor coefficients of `p` at `m`: `p(m + s) = sum q_k s^k`, with
+/// `k! q_k = p^(k)(m) = sum_i (m^i / i!) (k + i)! p_{k+i}`, summed row by
+/// row in `i` (rows the compiler vectorises, where synthetic division waits
+/// on each addition in turn).
 fn shift(p: &[f64], m: f64) -> [f64; LEN] {
-    let mut q = [0.0; LEN];
-    q[..p.len()].copy_from_slice(p);
     let n = p.len();
+    let mut d = [0.0; LEN];
+    for (j, (dj, &c)) in d.iter_mut().zip(p).enumerate() {
+        *dj = c * FACTORIALS[j];
+    }
+    let mut q = [0.0; LEN];
+    let mut e = 1.0;
     for i in 0..n {
-        for k in (i..n - 1).rev() {
-            q[k] += m * q[k + 1];
+        for (qk, &dk) in q[..n - i].iter_mut().zip(&d[i..n]) {
+            *qk += e * dk;
         }
+        e *= m / (i + 1) as f64;
+    }
+    for (qk, &inv) in q.iter_mut().zip(&INVERSE_FACTORIALS) {
+        *qk *= inv;
     }
     q
 }
@@ -362,11 +391,40 @@ mod tests {
         assert!((one.0[0] - 1.0).abs() < 1e-15);
         assert!(one.0[1..].iter().all(|a| a.abs() < 1e-15));
         // tan = sin / cos at t, against the library.
-        let tan = s * c.recip();
+        let tan = s.div(&c);
         let miss = (tan.eval(t) - 0.8f64.tan()).abs();
         assert!(miss < 8e-16, "{miss:e}");
         // int_0^t cos(0.7 + x) dx = sin(1.0) - sin(0.7).
         assert!((c.integral(t) - (0.8f64.sin() - 0.7f64.sin())).abs() < 2e-16);
+    }
+
+    /// `(1 + t)^n` about `m` is `(1 + m + s)^n`: `q_k = C(n, k) (1 + m)^(n - k)`
+    /// (each order's factorial and power; to the rounding of the sum, whose
+    /// terms cancel where `m < 0`), and `d/dt` of `sin` is `cos`.
+    #[test]
+    fn shifts_and_derivatives_by_their_closed_forms() {
+        let n = ORDER;
+        let mut p = [0.0; LEN];
+        let mut binom = 1.0;
+        for (k, c) in p.iter_mut().enumerate() {
+            *c = binom;
+            binom = binom * (n - k) as f64 / (k + 1) as f64;
+        }
+        for m in [0.0, 0.3, -0.7, 1.0] {
+            let q = shift(&p, m);
+            let mut binom = 1.0;
+            for (k, &c) in q.iter().enumerate() {
+                let want = binom * (1.0 + m).powi((n - k) as i32);
+                // The rounding of the sum: `n eps` of its terms' sizes.
+                let terms = binom * (1.0 + m.abs()).powi((n - k) as i32);
+                assert!((c - want).abs() <= 4.0 * n as f64 * f64::EPSILON * terms, "{m} {k}: {c} {want}");
+                binom = binom * (n - k) as f64 / (k + 1) as f64;
+            }
+        }
+        let (c, s) = Series::trig(0.4);
+        let d = s.derivative();
+        assert!(d.0[..ORDER].iter().zip(&c.0).all(|(a, b)| (a - b).abs() <= 4.0 * f64::EPSILON * b.abs()));
+        assert_eq!(d.0[ORDER], 0.0);
     }
 
     #[test]
@@ -375,12 +433,13 @@ mod tests {
         let h = c.step_for(1e-17);
         assert!(c.tail(h) <= 1.0001e-17 && c.tail(h) > 1e-18);
         // 1/(1 - t): radius 1, coefficients 1; the step is tol^(1/N)-ish.
-        let geometric = (Series::constant(1.0) - Series::trig(0.0).1 * 0.0 - {
-            let mut x = Series::ZERO;
-            x.0[1] = 1.0;
-            x
-        })
-        .recip();
+        let geometric = Series::constant(1.0).div(
+            &(Series::constant(1.0) - Series::trig(0.0).1 * 0.0 - {
+                let mut x = Series::ZERO;
+                x.0[1] = 1.0;
+                x
+            }),
+        );
         assert!(geometric.0.iter().all(|&a| (a - 1.0).abs() < 1e-15));
         let h = geometric.step_for(1e-17);
         assert!(h > 0.15 && h < 0.25, "{h}");

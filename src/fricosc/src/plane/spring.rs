@@ -341,21 +341,22 @@ fn slips_on_contact(xd: [f64; 2], xa: [f64; 2], beta: f64, level: f64) -> bool {
     beta * level < xd[0] * xa[0] + xd[1] * xa[1]
 }
 
-/// The half-angle series of a slip from `y0` (`|y0| = 1`): `y' = M y` (module docs).
+/// The half-angle series of a slip from `y0` (`|y0| = 1`): `y' = M y` (module
+/// docs), `(k + 1) y_{k+1} = sum_j M_j y_{k-j}`, each `y_k`'s terms added to
+/// the later sums as soon as it is known (rows the compiler vectorises).
 fn regular(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> [Series; 2] {
-    let r = b.recip();
-    let (ma, mb) = (xd[0] * r * 0.5, xd[1] * r * 0.5);
+    let half = *b * 2.0;
+    let (ma, mb) = (xd[0].div(&half), xd[1].div(&half));
     let (mut y1, mut y2) = (Series::constant(y0[0]), Series::constant(y0[1]));
+    let (mut s1, mut s2) = ([0.0; ORDER], [0.0; ORDER]);
     for k in 0..ORDER {
-        let (mut s1, mut s2) = (0.0, 0.0);
-        for j in 0..=k {
-            let (a, c) = (ma.0[j], mb.0[j]);
-            let (u, v) = (y1.0[k - j], y2.0[k - j]);
-            s1 += c * v - a * u;
-            s2 += c * u + a * v;
+        let (u, v) = (y1.0[k], y2.0[k]);
+        for (((t1, t2), &a), &c) in s1[k..].iter_mut().zip(&mut s2[k..]).zip(&ma.0).zip(&mb.0) {
+            *t1 += c * v - a * u;
+            *t2 += c * u + a * v;
         }
-        y1.0[k + 1] = s1 / (k + 1) as f64;
-        y2.0[k + 1] = s2 / (k + 1) as f64;
+        y1.0[k + 1] = s1[k] / (k + 1) as f64;
+        y2.0[k + 1] = s2[k] / (k + 1) as f64;
     }
     [y1, y2]
 }
@@ -399,7 +400,10 @@ impl Walker<'_> {
         let bn = b.div(&n);
         let (fx, fy) = (bn * c2, bn * s2);
         let h = [y[0], y[1], fx, fy].iter().map(|s| s.step_for(STEP_TOL)).fold(horizon.min(0.5 * rho), f64::min);
-        let ev = xd[0] * c2 + xd[1] * s2 - bound.rate(&sn) * n;
+        // `X'.(c2, s2) = y^T (2B M) y = B n'`: the slip rate times `n` is `B
+        // n' - B' n`, to the order `n'` keeps.
+        let mut ev = b * n.derivative() - bound.rate(&sn) * n;
+        ev.0[ORDER] = 0.0;
         if ev.0[0] <= 0.0 && !regain {
             return Ok(self.slip_ends(direction(y0)));
         }
@@ -533,6 +537,31 @@ impl Walker<'_> {
             (a, r) if r > 0.0 || a.is_nan() || r.is_nan() => None,
             (r, _) if r <= 0.0 => Some(self.tau),
             _ => Some(crate::root::bracketed(rate, self.tau, b, 4.0 * f64::EPSILON).x),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The slip rate's series by `B n'` (`n = |y|^2`) is the rate's
+    /// definition `X'.(y2^2 - y1^2, 2 y1 y2)` up to the order `n'` keeps:
+    /// a wrong factor of `M` (the half, a sign) breaks it at order 0 or 1.
+    #[test]
+    fn the_slip_rate_by_the_norms_derivative_is_its_definition() {
+        let sp = Spring::new(Drive::sliding(0.3, 0.4, 1.1, 1.2, 0.7), Bound::new(1.0, 0.5));
+        for (tau, y0) in [(0.3, [0.6, 0.8]), (2.0, [-0.28, 0.96]), (4.5, [1.0, 0.0])] {
+            let (cs, sn) = Series::trig(tau);
+            let (b, xd) = (sp.bound.series(tau, &cs), sp.drive.velocity(&cs, &sn));
+            let y = regular(&b, &xd, y0);
+            let n = y[0].square() + y[1].square();
+            let by_norm = b * n.derivative();
+            let definition = xd[0] * (y[1].square() - y[0].square()) + xd[1] * (y[0] * y[1] * 2.0);
+            for k in 0..ORDER {
+                let scale = 1f64.max(definition.0[k].abs());
+                assert!((by_norm.0[k] - definition.0[k]).abs() < 1e-14 * scale, "{tau} {k}");
+            }
         }
     }
 }
