@@ -97,11 +97,6 @@ impl Bound {
         }
     }
 
-    /// `B'(tau0 + t) = amp sin(tau0 + t)`.
-    pub(crate) fn rate(&self, sin: &Series) -> Series {
-        *sin * self.amp
-    }
-
     /// The distance from the real `tau0` to the nearest zero of the analytic
     /// `level - amp cos tau`: complex, `2 pi k +- i arccosh(level/amp)`, while
     /// in contact always; real, `+-t_c + 2 pi k`, otherwise.

@@ -31,6 +31,17 @@ const INVERSE_FACTORIALS: [f64; LEN] = {
     r
 };
 
+/// `1/(k + 1)`, `k = 0..=ORDER` (rounded).
+pub(crate) const RECIPROCALS: [f64; LEN] = {
+    let mut r = [1.0; LEN];
+    let mut k = 1;
+    while k < LEN {
+        r[k] = 1.0 / (k + 1) as f64;
+        k += 1;
+    }
+    r
+};
+
 /// A power series `sum a_k t^k`, `k = 0..=ORDER`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Series(pub(crate) [f64; LEN]);
@@ -97,13 +108,30 @@ impl Series {
         Series(r)
     }
 
-    /// `d/dt` of the series (its last coefficient 0: one order lost).
-    pub(crate) fn derivative(&self) -> Series {
-        let mut d = [0.0; LEN];
-        for k in 1..LEN {
-            d[k - 1] = k as f64 * self.0[k];
+    /// The Wronskian `self n' - self' n` (the last order, which needs
+    /// `n_{N+1}`, left 0): its `t^k` coefficient is `sum_{i + j = k + 1} (i -
+    /// j) a_j n_i`, both products in one pass, row by row.
+    pub(crate) fn wronskian(&self, n: &Series) -> Series {
+        let (a, n) = (&self.0, &n.0);
+        let (da, dn) = (self.weighted(), Series(*n).weighted());
+        let mut r = [0.0; LEN];
+        for j in 0..LEN {
+            // `k = i + j - 1`: from `i = 1` for `j = 0`, else from `i = 0`.
+            let (i0, k0) = if j == 0 { (1, 0) } else { (0, j - 1) };
+            for ((rk, &ni), &dni) in r[k0..ORDER].iter_mut().zip(&n[i0..]).zip(&dn[i0..]) {
+                *rk += a[j] * dni - da[j] * ni;
+            }
         }
-        Series(d)
+        Series(r)
+    }
+
+    /// `k a_k`.
+    fn weighted(&self) -> [f64; LEN] {
+        let mut w = self.0;
+        for (k, c) in w.iter_mut().enumerate() {
+            *c *= k as f64;
+        }
+        w
     }
 
     /// `self` without its constant term.
@@ -121,7 +149,7 @@ impl Series {
     pub(crate) fn integral(&self, t: f64) -> f64 {
         let mut acc = 0.0;
         for k in (0..LEN).rev() {
-            acc = acc * t + self.0[k] / (k + 1) as f64;
+            acc = acc * t + self.0[k] * RECIPROCALS[k];
         }
         acc * t
     }
@@ -132,11 +160,18 @@ impl Series {
         self.0[ORDER - 1].abs() * h.powi(n - 1) + self.0[ORDER].abs() * h.powi(n)
     }
 
-    /// The largest `h` with each of the last two terms at most `tol / 2`.
-    pub(crate) fn step_for(&self, tol: f64) -> f64 {
+    /// The largest `h` with each series' last two terms at most its `tol /
+    /// 2`: `(tol / 2|a_k|)^(1/k)` is monotone in `|a_k|/tol`, so the largest
+    /// of these ratios at each order sets the step (one root an order).
+    pub(crate) fn step_for(series: &[(&Series, f64)]) -> f64 {
+        let (mut last, mut before) = (0.0f64, 0.0f64);
+        for (s, tol) in series {
+            before = before.max(s.0[ORDER - 1].abs() / tol);
+            last = last.max(s.0[ORDER].abs() / tol);
+        }
         let n = ORDER as f64;
-        let of = |a: f64, k: f64| if a == 0.0 { f64::INFINITY } else { (0.5 * tol / a.abs()).powf(1.0 / k) };
-        of(self.0[ORDER - 1], n - 1.0).min(of(self.0[ORDER], n))
+        let of = |r: f64, k: f64| if r == 0.0 { f64::INFINITY } else { (0.5 / r).powf(1.0 / k) };
+        of(before, n - 1.0).min(of(last, n))
     }
 
     /// The first sign change of the series on `(0, h]`, given that it is
@@ -341,6 +376,7 @@ fn excluded(p: &[f64], m: f64, r: f64) -> Sign {
 
 impl Add for Series {
     type Output = Series;
+    #[inline]
     fn add(mut self, o: Series) -> Series {
         self.0.iter_mut().zip(o.0).for_each(|(a, b)| *a += b);
         self
@@ -349,6 +385,7 @@ impl Add for Series {
 
 impl Sub for Series {
     type Output = Series;
+    #[inline]
     fn sub(mut self, o: Series) -> Series {
         self.0.iter_mut().zip(o.0).for_each(|(a, b)| *a -= b);
         self
@@ -357,6 +394,7 @@ impl Sub for Series {
 
 impl Mul<f64> for Series {
     type Output = Series;
+    #[inline]
     fn mul(mut self, s: f64) -> Series {
         self.0.iter_mut().for_each(|a| *a *= s);
         self
@@ -400,9 +438,9 @@ mod tests {
 
     /// `(1 + t)^n` about `m` is `(1 + m + s)^n`: `q_k = C(n, k) (1 + m)^(n - k)`
     /// (each order's factorial and power; to the rounding of the sum, whose
-    /// terms cancel where `m < 0`), and `d/dt` of `sin` is `cos`.
+    /// terms cancel where `m < 0`); Wronskians of sines and exponentials.
     #[test]
-    fn shifts_and_derivatives_by_their_closed_forms() {
+    fn shifts_and_wronskians_by_their_closed_forms() {
         let n = ORDER;
         let mut p = [0.0; LEN];
         let mut binom = 1.0;
@@ -421,16 +459,21 @@ mod tests {
                 binom = binom * (n - k) as f64 / (k + 1) as f64;
             }
         }
+        // `sin cos' - sin' cos = -1`; against `e^t`, `W(e^t, e^{2t}) = e^{3t}`.
         let (c, s) = Series::trig(0.4);
-        let d = s.derivative();
-        assert!(d.0[..ORDER].iter().zip(&c.0).all(|(a, b)| (a - b).abs() <= 4.0 * f64::EPSILON * b.abs()));
-        assert_eq!(d.0[ORDER], 0.0);
+        let w = s.wronskian(&c);
+        assert!((w.0[0] + 1.0).abs() <= 4.0 * f64::EPSILON, "{w:?}");
+        assert!(w.0[1..].iter().all(|a| a.abs() <= 4.0 * f64::EPSILON), "{w:?}");
+        let exp = |r: f64| Series(std::array::from_fn(|k| r.powi(k as i32) * INVERSE_FACTORIALS[k]));
+        let (w, want) = (exp(1.0).wronskian(&exp(2.0)), exp(3.0));
+        assert!((0..ORDER).all(|k| (w.0[k] - want.0[k]).abs() <= 64.0 * f64::EPSILON * want.0[k]), "{w:?}");
+        assert_eq!(w.0[ORDER], 0.0);
     }
 
     #[test]
     fn step_for_keeps_the_tail_at_the_tolerance() {
         let (c, _) = Series::trig(0.2);
-        let h = c.step_for(1e-17);
+        let h = Series::step_for(&[(&c, 1e-17)]);
         assert!(c.tail(h) <= 1.0001e-17 && c.tail(h) > 1e-18);
         // 1/(1 - t): radius 1, coefficients 1; the step is tol^(1/N)-ish.
         let geometric = Series::constant(1.0).div(
@@ -441,15 +484,20 @@ mod tests {
             }),
         );
         assert!(geometric.0.iter().all(|&a| (a - 1.0).abs() < 1e-15));
-        let h = geometric.step_for(1e-17);
+        let h = Series::step_for(&[(&geometric, 1e-17)]);
         assert!(h > 0.15 && h < 0.25, "{h}");
         // Each of the last two terms alone sets the step at its own order.
         for k in [ORDER - 1, ORDER] {
             let mut one = Series::ZERO;
             one.0[k] = 1.0;
-            let h = one.step_for(1e-17);
+            let h = Series::step_for(&[(&one, 1e-17)]);
             assert!((one.tail(h) / 0.5e-17 - 1.0).abs() < 1e-12, "order {k}: {}", one.tail(h));
         }
+        // Several series: the smallest of their own steps, each at its tolerance.
+        let (one, two) = (Series::step_for(&[(&c, 1e-17)]), Series::step_for(&[(&geometric, 3e-17)]));
+        assert_eq!(Series::step_for(&[(&c, 1e-17), (&geometric, 3e-17)]), one.min(two));
+        assert_eq!(Series::step_for(&[(&geometric, 3e-17), (&c, 1e-17)]), one.min(two));
+        assert!(two < one && Series::step_for(&[(&c, 1e-17), (&geometric, 1e-10)]) > two);
         // The tail is the last two terms' sum: 2^-23 + 2^-24 at h = 1/2.
         assert_eq!(geometric.tail(0.5), 0.5f64.powi(23) + 0.5f64.powi(24));
     }
