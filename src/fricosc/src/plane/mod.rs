@@ -13,6 +13,7 @@
 //! that leaves contact, or touches it (`amp = 1`), forgets its past, and one
 //! period from contact is its orbit.
 
+mod clock;
 mod curved;
 mod drive;
 mod history;

@@ -18,10 +18,10 @@ use std::ops::{Add, Mul, Sub};
 /// The highest order kept: about `-ln(eps)/2 + 6`, where the Jorba-Zou step
 /// (the last two terms at the tolerance) is a fifth of the radius of convergence.
 pub(crate) const ORDER: usize = 24;
-const LEN: usize = ORDER + 1;
+pub(crate) const LEN: usize = ORDER + 1;
 
 /// `1/k!`, `k = 0..=ORDER` (each the one before divided by `k`, rounded).
-const INVERSE_FACTORIALS: [f64; LEN] = {
+pub(crate) const INVERSE_FACTORIALS: [f64; LEN] = {
     let mut r = [1.0; LEN];
     let mut k = 1;
     while k < LEN {
@@ -106,32 +106,6 @@ impl Series {
             }
         }
         Series(r)
-    }
-
-    /// The Wronskian `self n' - self' n` (the last order, which needs
-    /// `n_{N+1}`, left 0): its `t^k` coefficient is `sum_{i + j = k + 1} (i -
-    /// j) a_j n_i`, both products in one pass, row by row.
-    pub(crate) fn wronskian(&self, n: &Series) -> Series {
-        let (a, n) = (&self.0, &n.0);
-        let (da, dn) = (self.weighted(), Series(*n).weighted());
-        let mut r = [0.0; LEN];
-        for j in 0..LEN {
-            // `k = i + j - 1`: from `i = 1` for `j = 0`, else from `i = 0`.
-            let (i0, k0) = if j == 0 { (1, 0) } else { (0, j - 1) };
-            for ((rk, &ni), &dni) in r[k0..ORDER].iter_mut().zip(&n[i0..]).zip(&dn[i0..]) {
-                *rk += a[j] * dni - da[j] * ni;
-            }
-        }
-        Series(r)
-    }
-
-    /// `k a_k`.
-    fn weighted(&self) -> [f64; LEN] {
-        let mut w = self.0;
-        for (k, c) in w.iter_mut().enumerate() {
-            *c *= k as f64;
-        }
-        w
     }
 
     /// `self` without its constant term.
@@ -438,9 +412,9 @@ mod tests {
 
     /// `(1 + t)^n` about `m` is `(1 + m + s)^n`: `q_k = C(n, k) (1 + m)^(n - k)`
     /// (each order's factorial and power; to the rounding of the sum, whose
-    /// terms cancel where `m < 0`); Wronskians of sines and exponentials.
+    /// terms cancel where `m < 0`).
     #[test]
-    fn shifts_and_wronskians_by_their_closed_forms() {
+    fn shifts_by_their_closed_form() {
         let n = ORDER;
         let mut p = [0.0; LEN];
         let mut binom = 1.0;
@@ -459,15 +433,6 @@ mod tests {
                 binom = binom * (n - k) as f64 / (k + 1) as f64;
             }
         }
-        // `sin cos' - sin' cos = -1`; against `e^t`, `W(e^t, e^{2t}) = e^{3t}`.
-        let (c, s) = Series::trig(0.4);
-        let w = s.wronskian(&c);
-        assert!((w.0[0] + 1.0).abs() <= 4.0 * f64::EPSILON, "{w:?}");
-        assert!(w.0[1..].iter().all(|a| a.abs() <= 4.0 * f64::EPSILON), "{w:?}");
-        let exp = |r: f64| Series(std::array::from_fn(|k| r.powi(k as i32) * INVERSE_FACTORIALS[k]));
-        let (w, want) = (exp(1.0).wronskian(&exp(2.0)), exp(3.0));
-        assert!((0..ORDER).all(|k| (w.0[k] - want.0[k]).abs() <= 64.0 * f64::EPSILON * want.0[k]), "{w:?}");
-        assert_eq!(w.0[ORDER], 0.0);
     }
 
     #[test]

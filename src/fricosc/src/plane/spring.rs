@@ -25,6 +25,7 @@
 //! The layer also holds a touch of zero (`amp = level`) and a window of
 //! contact that barely closes.
 
+use super::clock::{Clock, LOG_REACH};
 use super::drive::{Bound, Drive};
 use super::layer::{self, Layer, ON_MANIFOLD};
 use super::series::{Series, ORDER, RECIPROCALS};
@@ -235,16 +236,28 @@ impl Walker<'_> {
 
     /// The force `b e` on the circle at `tau`, reached from a force of size
     /// `r` (`b` itself but where a start beyond the circle is projected onto
-    /// it): it slips if the slip rate `X'.e - B'` is positive, and sticks
-    /// otherwise (a touch of the circle).
+    /// it): it slips if the slip rate `X'.e - B'` is positive, or 0 to its
+    /// rounding and rising ([`slips`]), and sticks otherwise (a touch of the
+    /// circle).
     fn on_circle(&mut self, e: [f64; 2], b: f64, r: f64) -> Phase {
-        let xd = self.sp.drive.velocity_at(self.tau);
-        if xd[0] * e[0] + xd[1] * e[1] - self.sp.bound.amp * self.tau.sin() > 0.0 {
+        let (cs, sn) = Series::trig(self.tau);
+        let (xd, bdot) = (self.sp.drive.velocity(&cs, &sn), sn * self.sp.bound.amp);
+        let (rate, tol) = slip_rate(&xd, &bdot, &quadratics(&half(e).map(Series::constant)));
+        if slips(rate.0[0], tol, self.rate_slope(e, b)) {
             let jt = [0, 1].map(|j| (-e[1] * self.jac[0][j] + e[0] * self.jac[1][j]) / r);
             self.jac = [jt, [0.0; 2]];
             return Phase::Slip { y: half(e), regain: false };
         }
-        Phase::Stick { f: scaled(e, b), skip: 2 }
+        Phase::Stick { f: scaled(e, b), skip: zeros(rate.0[0], tol) }
+    }
+
+    /// `d lambda/d tau` of a slip along `e` with the bound `b > 0`, where its
+    /// rate is 0: with `th' = X'.e_perp/B`, `lambda' = X''.e + (X'.e_perp)^2/B
+    /// - B''` (not a number where `b = 0` and `X'` is along `e`: no rise).
+    fn rate_slope(&self, e: [f64; 2], b: f64) -> f64 {
+        let (xd, xa) = (self.sp.drive.velocity_at(self.tau), self.sp.drive.acceleration_at(self.tau));
+        let across = xd[1] * e[0] - xd[0] * e[1];
+        xa[0] * e[0] + xa[1] * e[1] + across * across / b - self.sp.bound.amp * self.tau.cos()
     }
 
     /// `d f / d f_start` of a stick that starts at the direction `e` with `|f| = b`.
@@ -287,6 +300,11 @@ impl Walker<'_> {
         let scale = 1f64.max(f[0].abs()).max(f[1].abs());
         let h = Series::step_for(&[(&fx, STEP_TOL * scale), (&fy, STEP_TOL * scale), (&b, STEP_TOL)])
             .min(horizon.min(MAX_STICK_STEP));
+        if skip > 0 && g.0[skip] < -16.0 * f64::EPSILON * (b.square() + fx.square() + fy.square()).0[skip] {
+            // A stick on the circle that leaves it at once, beyond the
+            // rounding of `g`, would have slipped ([`slips`]).
+            return Err(self.stalled("stick"));
+        }
         let fall = g.first_fall(skip, h).map_err(|()| self.stalled("stick"))?;
         let t = fall.map_or(h, |(a, c)| refine(&g, a, c));
         self.book(&fx, &fy, &b, t);
@@ -340,10 +358,14 @@ fn slips_on_contact(xd: [f64; 2], xa: [f64; 2], beta: f64, level: f64) -> bool {
     beta * level < xd[0] * xa[0] + xd[1] * xa[1]
 }
 
-/// The half-angle series of a slip from `y0` (`|y0| = 1`): `y' = M y` (module
-/// docs), `(k + 1) y_{k+1} = sum_j M_j y_{k-j}`, each `y_k`'s terms added to
-/// the later sums as soon as it is known (rows the compiler vectorises).
-fn regular(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> [Series; 2] {
+/// The half-angle series of a slip from `y0` (`|y0| = 1`), scaled by
+/// `e^(-lam t)`: `z = e^(-lam t) y` with `y' = M y` (module docs) has `z' =
+/// (M - lam) z`, `(k + 1) z_{k+1} = sum_j M_j z_{k-j} - lam z_k`, each
+/// `z_k`'s terms added to the later sums as soon as it is known (rows the
+/// compiler vectorises). With `lam` the growth of `|y|` at the start, `z`
+/// keeps the size `y` would gain along a stiff slip, and the cancellation
+/// that size brings to the force `B (c2, s2)/n`, out of the series.
+fn regular(b: &Series, xd: &[Series; 2], y0: [f64; 2], lam: f64) -> [Series; 2] {
     let half = *b * 2.0;
     let (ma, mb) = (xd[0].div(&half), xd[1].div(&half));
     let (mut y1, mut y2) = (Series::constant(y0[0]), Series::constant(y0[1]));
@@ -354,27 +376,62 @@ fn regular(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> [Series; 2] {
             *t1 += c * v - a * u;
             *t2 += c * u + a * v;
         }
-        y1.0[k + 1] = s1[k] * RECIPROCALS[k];
-        y2.0[k + 1] = s2[k] * RECIPROCALS[k];
+        y1.0[k + 1] = (s1[k] - lam * u) * RECIPROCALS[k];
+        y2.0[k + 1] = (s2[k] - lam * v) * RECIPROCALS[k];
     }
     [y1, y2]
 }
 
-/// The slip rate `lambda = X'.e - B'` times `n = |y|^2`, from `B` and `n`:
-/// with `X'.(c2, s2) = y^T (2B M) y = B n'`, `lambda n = B n' - B' n`, the
-/// Wronskian of `B` and `n` (to the order `n'` keeps; no division by `n`,
-/// whose complex zeros may lie nearer than the bound's).
-fn slip_rate(b: &Series, n: &Series) -> Series {
-    b.wronskian(n)
+/// The growth rate of `|y|` at the start of a slip from `y0` (`|y0| = 1`):
+/// `y0^T M_0 y0 = (X'_0 . (y2^2 - y1^2, 2 y1 y2)) / (2 B_0)`.
+fn growth(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> f64 {
+    let (u, v) = (y0[0], y0[1]);
+    let lam = (xd[0].0[0] * (v * v - u * u) + xd[1].0[0] * 2.0 * u * v) / (2.0 * b.0[0]);
+    if lam.is_finite() {
+        lam
+    } else {
+        0.0
+    }
+}
+
+/// `n = |y|^2`, `c2 = y2^2 - y1^2`, `s2 = 2 y1 y2`: `e = (c2, s2)/n`.
+fn quadratics(y: &[Series; 2]) -> [Series; 3] {
+    let (q0, q1) = (y[0].square(), y[1].square());
+    [q0 + q1, q1 - q0, y[0] * y[1] * 2.0]
+}
+
+/// The slip rate `lambda = X'.e - B'` times `n` (of any scale of `y`),
+/// `X'_x c2 + X'_y s2 - B' n`, from `X'`, `B'` and [`quadratics`]; with the
+/// rounding of its constant term (16 ulp of its terms' sizes), within which
+/// a rate is taken as 0.
+fn slip_rate(xd: &[Series; 2], bdot: &Series, [n, c2, s2]: &[Series; 3]) -> (Series, f64) {
+    let sizes = (xd[0].0[0] * c2.0[0]).abs() + (xd[1].0[0] * s2.0[0]).abs() + (bdot.0[0] * n.0[0]).abs();
+    (xd[0] * *c2 + xd[1] * *s2 - *bdot * *n, 16.0 * f64::EPSILON * sizes)
+}
+
+/// The leading zeros of `B^2 - |f|^2` in a stick from a force on its
+/// bound: its value, and its slope `-2 B lambda` where the rate `lambda n`
+/// is 0 to its rounding `tol` (a touch).
+fn zeros(rate: f64, tol: f64) -> usize {
+    if rate < -tol {
+        1
+    } else {
+        2
+    }
+}
+
+/// Whether a force on its bound slips, from the slip rate `rate` (within
+/// `tol` of 0 where it rides on the bound) and its slope: a rate that is
+/// positive, or 0 and rising (a stick would leave the disc at once).
+fn slips(rate: f64, tol: f64, slope: f64) -> bool {
+    rate > tol || (rate >= -tol && slope > 0.0)
 }
 
 impl Walker<'_> {
     /// One slip step along the half-angle series until the slip rate falls through 0.
     fn slip(&mut self, y0: [f64; 2], regain: bool, end: f64) -> Result<Phase> {
         let (tau, bound) = (self.tau, self.sp.bound);
-        let (cs, sn) = Series::trig(tau);
-        let b = bound.series(tau, &cs);
-        let xd = self.sp.drive.velocity(&cs, &sn);
+        let b = bound.series(tau, &Series::trig(tau).0);
         let loss = bound.next_loss(tau).filter(|&l| l <= end);
         if let (Some(l), false) = (bound.next_loss(tau), regain) {
             // The tail before a loss is booked along the slip's direction (a
@@ -400,47 +457,75 @@ impl Walker<'_> {
             }
         }
         // A slip from contact starts inside the layer, on its manifold (above).
-        let (y, rho) = (regular(&b, &xd, y0), bound.singularity_distance(tau));
-        let horizon = target - tau;
-        let (q0, q1) = (y[0].square(), y[1].square());
-        let (n, c2, s2) = (q0 + q1, q1 - q0, y[0] * y[1] * 2.0);
-        let bn = b.div(&n);
-        let (fx, fy) = (bn * c2, bn * s2);
+        let clock = match (loss, bound.edge) {
+            (Some(l), Some(e)) if !regain && l - tau <= LOG_REACH * (TAU - 2.0 * e) => {
+                Clock::Log { loss: l, s: l - tau, behind: TAU - 2.0 * e, ahead: 2.0 * e }
+            }
+            _ => Clock::Tau,
+        };
+        self.slip_step(y0, regain, clock, target, loss)
+    }
+
+    /// One slip step by `clock` from `y0` towards `target`.
+    fn slip_step(&mut self, y0: [f64; 2], regain: bool, clock: Clock, target: f64, loss: Option<f64>) -> Result<Phase> {
+        let (tau, bound) = (self.tau, self.sp.bound);
+        let (cs, sn, rate) = clock.trig(tau);
+        let b = bound.series(tau, &cs);
+        // `X'` and `B'` in `tau`; `X'` and `B` times `dtau/dt` in the clock's time.
+        let (xd_tau, bdot) = (self.sp.drive.velocity(&cs, &sn), sn * bound.amp);
+        let (xd, bt) = match rate {
+            Some(w) => (xd_tau.map(|v| v * w), b * w),
+            None => (xd_tau, b),
+        };
+        let lam = growth(&b, &xd, y0);
+        let (y, rho) = (regular(&b, &xd, y0, lam), clock.radius(&bound, tau));
+        let horizon = clock.horizon(tau, target);
+        let quad = quadratics(&y);
+        let bn = bt.div(&quad[0]);
+        let (fx, fy) = (bn * quad[1], bn * quad[2]);
         let tols = [(&y[0], STEP_TOL), (&y[1], STEP_TOL), (&fx, STEP_TOL), (&fy, STEP_TOL)];
         let h = Series::step_for(&tols).min(horizon.min(0.5 * rho));
-        let ev = slip_rate(&b, &n);
-        if ev.0[0] <= 0.0 && !regain {
-            return Ok(self.slip_ends(direction(y0)));
+        let (mut ev, tol) = slip_rate(&xd_tau, &bdot, &quad);
+        // A rate on 0 to rounding is 0: the slip goes on if it rises.
+        let skip = usize::from(!regain && ev.0[0] <= tol);
+        if skip == 1 {
+            if !slips(ev.0[0], tol, ev.0[1]) {
+                return Ok(self.slip_ends(direction(y0), zeros(ev.0[0], tol)));
+            }
+            ev.0[0] = 0.0;
         }
-        let fall = ev.first_fall(0, h).map_err(|()| self.stalled("slip"))?;
+        let fall = ev.first_fall(skip, h).map_err(|()| self.stalled("slip"))?;
         let t = fall.map_or(h, |(a, c)| refine(&ev, a, c));
-        self.book(&fx, &fy, &b, t);
+        self.book(&fx, &fy, &bt, t);
         // The force's tail on this step, and the direction's (an angle), felt
         // by a force of about this size for up to a period.
         self.truncation += (fx.tail(h) + fy.tail(h)) * h + 2.0 * (y[0].tail(h) + y[1].tail(h)) * b.0[0].abs() * TAU;
         let ye = [y[0].eval(t), y[1].eval(t)];
         let norm = ye[0].hypot(ye[1]);
         if !regain {
-            let d = 1.0 / (norm * norm);
+            // `d angle_end / d angle_0 = det Phi / |y(t)|^2`, `det Phi = 1`
+            // (`M` is traceless), `|y(t)| = e^(lam t) |z(t)|`.
+            let d = (-2.0 * lam * t).exp() / (norm * norm);
             self.jac[0] = self.jac[0].map(|j| j * d);
         }
         let ye = [ye[0] / norm, ye[1] / norm];
-        self.advance(t, horizon, target);
+        self.tau = if t >= horizon { target } else { clock.time(tau, t) };
         if loss == Some(self.tau) {
             return Ok(self.lose());
         }
         if fall.is_some() {
-            return Ok(self.slip_ends(direction(ye)));
+            return Ok(self.slip_ends(direction(ye), 2));
         }
         Ok(Phase::Slip { y: ye, regain: false })
     }
 
-    /// The slip ends at `tau` with the direction `e`: stick from `f = B e`.
-    fn slip_ends(&mut self, e: [f64; 2]) -> Phase {
+    /// The slip ends at `tau` with the direction `e`: stick from `f = B e`
+    /// (`skip` leading zeros of `B^2 - |f|^2`, [`zeros`]).
+    fn slip_ends(&mut self, e: [f64; 2], skip: usize) -> Phase {
         let b = self.sp.bound.at(self.tau);
         self.events.push((self.tau, EventKind::Stick));
         self.jac = self.stick_jacobian(e, b);
-        Phase::Stick { f: scaled(e, b), skip: 2 }
+        Phase::Stick { f: scaled(e, b), skip }
     }
 
     /// Out of contact until the next contact (before `end`): stick or slip from `f = 0`.
@@ -508,7 +593,7 @@ impl Walker<'_> {
             if let Some(t) = self.manifold_sticks(c) {
                 book(self, self.tau, t);
                 self.tau = t;
-                return Ok(self.slip_ends(layer::manifold(&drive, &bound, t).0));
+                return Ok(self.slip_ends(layer::manifold(&drive, &bound, t).0, 2));
             }
             book(self, self.tau, c);
             self.tau = c;
@@ -523,7 +608,7 @@ impl Walker<'_> {
         self.tau = stop;
         let m = layer::manifold(&drive, &bound, stop).0;
         if stop < exit.min(end) {
-            return Ok(self.slip_ends(m));
+            return Ok(self.slip_ends(m, 2));
         }
         Ok(Phase::Slip { y: half(m), regain: false })
     }
@@ -550,23 +635,45 @@ impl Walker<'_> {
 mod tests {
     use super::*;
 
-    /// The slip rate's series times `n` by the Wronskian is the rate's
-    /// definition `X'.(y2^2 - y1^2, 2 y1 y2) - B' n` up to the order it keeps:
-    /// a wrong factor of `M` (the half, a sign) breaks it at order 0 or 1.
+    /// The slip rate's series over `n`, along the slip of a plain and of a
+    /// scaled half-angle series, is `X'(tau).e(tau) - B'(tau)` evaluated
+    /// directly (a wrong sign or factor of a term breaks it at once).
     #[test]
-    fn the_slip_rate_by_the_wronskian_is_its_definition() {
+    fn the_slip_rate_is_its_definition_along_the_slip() {
+        let sp = Spring::new(Drive::sliding(0.3, 0.4, 1.1, 1.2, 0.7), Bound::new(1.0, 0.5));
+        for (tau, y0) in [(0.3, [0.6, 0.8]), (2.0, [-0.28, 0.96]), (4.5, [1.0, 0.0])] {
+            let (cs, sn) = Series::trig(tau);
+            let (b, xd, bdot) = (sp.bound.series(tau, &cs), sp.drive.velocity(&cs, &sn), sn * sp.bound.amp);
+            for lam in [0.0, growth(&b, &xd, y0)] {
+                let y = regular(&b, &xd, y0, lam);
+                let quad = quadratics(&y);
+                let (ev, n) = (slip_rate(&xd, &bdot, &quad).0, quad[0]);
+                for t in [0.0, 0.05, 0.2] {
+                    let (v, e) = (sp.drive.velocity_at(tau + t), direction([y[0].eval(t), y[1].eval(t)]));
+                    let rate = v[0] * e[0] + v[1] * e[1] - sp.bound.amp * (tau + t).sin();
+                    assert!((ev.eval(t) / n.eval(t) - rate).abs() < 1e-13, "{tau} {lam} {t}");
+                }
+            }
+        }
+    }
+
+    /// The scaled half-angle series is the plain one times `e^(-lam t)`, its
+    /// norm stationary at the start (`lam` is the growth there).
+    #[test]
+    fn the_scaled_slip_is_the_plain_one_rescaled() {
         let sp = Spring::new(Drive::sliding(0.3, 0.4, 1.1, 1.2, 0.7), Bound::new(1.0, 0.5));
         for (tau, y0) in [(0.3, [0.6, 0.8]), (2.0, [-0.28, 0.96]), (4.5, [1.0, 0.0])] {
             let (cs, sn) = Series::trig(tau);
             let (b, xd) = (sp.bound.series(tau, &cs), sp.drive.velocity(&cs, &sn));
-            let y = regular(&b, &xd, y0);
-            let n = y[0].square() + y[1].square();
-            let by_norm = slip_rate(&b, &n);
-            let definition =
-                xd[0] * (y[1].square() - y[0].square()) + xd[1] * (y[0] * y[1] * 2.0) - sn * sp.bound.amp * n;
-            for k in 0..ORDER {
-                let scale = 1f64.max(definition.0[k].abs());
-                assert!((by_norm.0[k] - definition.0[k]).abs() < 1e-12 * scale, "{tau} {k}");
+            let lam = growth(&b, &xd, y0);
+            let (y, z) = (regular(&b, &xd, y0, 0.0), regular(&b, &xd, y0, lam));
+            let nz = z[0].square() + z[1].square();
+            assert!(lam.abs() > 0.1 && nz.0[1].abs() < 1e-15, "{tau} {lam} {:e}", nz.0[1]);
+            for t in [0.05, 0.2] {
+                let g = (lam * t).exp();
+                for i in 0..2 {
+                    assert!((z[i].eval(t) * g - y[i].eval(t)).abs() < 1e-14, "{tau} {t} {i}");
+                }
             }
         }
     }
