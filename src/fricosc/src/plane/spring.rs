@@ -28,7 +28,7 @@
 use super::clock::{Clock, LOG_REACH};
 use super::drive::{Bound, Drive};
 use super::layer::{self, Layer, ON_MANIFOLD};
-use super::series::{Series, ORDER, RECIPROCALS};
+use super::series::{Series, LEN, ORDER, RECIPROCALS};
 use crate::error::{Error, Result};
 use crate::special::Kahan;
 use crate::spring::EventKind;
@@ -216,9 +216,14 @@ fn scaled(e: [f64; 2], b: f64) -> [f64; 2] {
     [e[0] * b, e[1] * b]
 }
 
-/// The root of `g` in the bracket `[a, b]` from [`Series::first_fall`].
-fn refine(g: &Series, a: f64, b: f64) -> f64 {
-    crate::root::bracketed(|t| g.eval(t), a, b, 4.0 * f64::EPSILON).x
+/// The root of `g` in the bracket `[a, b]` from [`Series::first_fall`]
+/// with the same `skip`: of `g / t^skip`, which a bracket from 0 holds
+/// where `g` itself is 0 at 0.
+fn refine(g: &Series, skip: usize, a: f64, b: f64) -> f64 {
+    let mut d = [0.0; LEN];
+    d[..LEN - skip].copy_from_slice(&g.0[skip..]);
+    let d = Series(d);
+    crate::root::bracketed(|t| d.eval(t), a, b, 4.0 * f64::EPSILON).x
 }
 
 impl Walker<'_> {
@@ -306,7 +311,7 @@ impl Walker<'_> {
             return Err(self.stalled("stick"));
         }
         let fall = g.first_fall(skip, h).map_err(|()| self.stalled("stick"))?;
-        let t = fall.map_or(h, |(a, c)| refine(&g, a, c));
+        let t = fall.map_or(h, |(a, c)| refine(&g, skip, a, c));
         self.book(&fx, &fy, &b, t);
         self.truncation += (fx.tail(h) + fy.tail(h)) * h;
         let fe = [fx.eval(t), fy.eval(t)];
@@ -495,7 +500,7 @@ impl Walker<'_> {
             ev.0[0] = 0.0;
         }
         let fall = ev.first_fall(skip, h).map_err(|()| self.stalled("slip"))?;
-        let t = fall.map_or(h, |(a, c)| refine(&ev, a, c));
+        let t = fall.map_or(h, |(a, c)| refine(&ev, skip, a, c));
         self.book(&fx, &fy, &bt, t);
         // The force's tail on this step, and the direction's (an angle), felt
         // by a force of about this size for up to a period.
@@ -676,5 +681,42 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A stick from a touch of its circle (`g = B^2 - |f|^2` with a double
+    /// zero at 0) that falls later: the root is of `g/t^2`, in closed form
+    /// (once `g` itself was refined, and its zero at 0 found again and
+    /// again: a walk that took 100,000 steps at one instant).
+    #[test]
+    fn a_fall_after_a_touch_is_refined_away_from_the_touch() {
+        let (a, b, c) = (0.11623207766759142, -0.3724660164456372, 0.16890829937580254);
+        let mut g = Series::constant(0.0);
+        g.0[2..5].copy_from_slice(&[c, b, a]);
+        let (lo, hi) = g.first_fall(2, 1.0).unwrap().unwrap();
+        let want = (-b - (b * b - 4.0 * a * c).sqrt()) / (2.0 * a);
+        assert!((refine(&g, 2, lo, hi) - want).abs() < 1e-15, "{lo} {hi} {want}");
+        // The stick that met it, on a spring of a cone: it ends at its fall,
+        // not at its start.
+        let d = Drive {
+            v: [0.823618, 0.0],
+            s: [1.7922575767612408, 0.04981575516450942],
+            c: [-0.3385356422031879, 1.0482439691533598],
+        };
+        let sp = Spring::new(d, Bound::new(0.9262475684516962, 0.118382));
+        let tau = 3.0245306924689777;
+        let mut w = Walker {
+            sp: &sp,
+            tau,
+            phase: Phase::Out,
+            force: [Kahan::default(), Kahan::default()],
+            bound: Kahan::default(),
+            truncation: 0.0,
+            jac: [[1.0, 0.0], [0.0, 1.0]],
+            events: Vec::new(),
+            steps: 0,
+            stuck: true,
+        };
+        w.stick([0.1771336428089036, -1.0286800038553499], 2, TAU).unwrap();
+        assert!(w.tau > tau + 0.1 && w.events.len() == 1, "{} {:?}", w.tau, w.events);
     }
 }
