@@ -1,0 +1,83 @@
+//! The walk's own parts: the slip rate, the scaled half-angle series, events after a touch.
+
+use super::*;
+
+/// The slip rate's series over `n`, along the slip of a plain and of a
+/// scaled half-angle series, is `X'(tau).e(tau) - B'(tau)` evaluated
+/// directly (a wrong sign or factor of a term breaks it at once).
+#[test]
+fn the_slip_rate_is_its_definition_along_the_slip() {
+    let sp = Spring::new(Drive::sliding(0.3, 0.4, 1.1, 1.2, 0.7), Bound::new(1.0, 0.5));
+    for (tau, y0) in [(0.3, [0.6, 0.8]), (2.0, [-0.28, 0.96]), (4.5, [1.0, 0.0])] {
+        let (cs, sn) = Series::trig(tau);
+        let (b, xd, bdot) = (sp.bound.series(tau, &cs), sp.drive.velocity(&cs, &sn), sn * sp.bound.amp);
+        for lam in [0.0, growth(&b, &xd, y0)] {
+            let y = regular(&b, &xd, y0, lam);
+            let quad = quadratics(&y);
+            let (ev, n) = (slip_rate(&xd, &bdot, &quad).0, quad[0]);
+            for t in [0.0, 0.05, 0.2] {
+                let (v, e) = (sp.drive.velocity_at(tau + t), direction([y[0].eval(t), y[1].eval(t)]));
+                let rate = v[0] * e[0] + v[1] * e[1] - sp.bound.amp * (tau + t).sin();
+                assert!((ev.eval(t) / n.eval(t) - rate).abs() < 1e-13, "{tau} {lam} {t}");
+            }
+        }
+    }
+}
+
+/// The scaled half-angle series is the plain one times `e^(-lam t)`, its
+/// norm stationary at the start (`lam` is the growth there).
+#[test]
+fn the_scaled_slip_is_the_plain_one_rescaled() {
+    let sp = Spring::new(Drive::sliding(0.3, 0.4, 1.1, 1.2, 0.7), Bound::new(1.0, 0.5));
+    for (tau, y0) in [(0.3, [0.6, 0.8]), (2.0, [-0.28, 0.96]), (4.5, [1.0, 0.0])] {
+        let (cs, sn) = Series::trig(tau);
+        let (b, xd) = (sp.bound.series(tau, &cs), sp.drive.velocity(&cs, &sn));
+        let lam = growth(&b, &xd, y0);
+        let (y, z) = (regular(&b, &xd, y0, 0.0), regular(&b, &xd, y0, lam));
+        let nz = z[0].square() + z[1].square();
+        assert!(lam.abs() > 0.1 && nz.0[1].abs() < 1e-15, "{tau} {lam} {:e}", nz.0[1]);
+        for t in [0.05, 0.2] {
+            let g = (lam * t).exp();
+            for i in 0..2 {
+                assert!((z[i].eval(t) * g - y[i].eval(t)).abs() < 1e-14, "{tau} {t} {i}");
+            }
+        }
+    }
+}
+
+/// A stick from a touch of its circle (`g = B^2 - |f|^2` with a double
+/// zero at 0) that falls later: the root is of `g/t^2`, in closed form
+/// (once `g` itself was refined, and its zero at 0 found again and
+/// again: a walk that took 100,000 steps at one instant).
+#[test]
+fn a_fall_after_a_touch_is_refined_away_from_the_touch() {
+    let (a, b, c) = (0.11623207766759142, -0.3724660164456372, 0.16890829937580254);
+    let mut g = Series::constant(0.0);
+    g.0[2..5].copy_from_slice(&[c, b, a]);
+    let (lo, hi) = g.first_fall(2, 1.0).unwrap().unwrap();
+    let want = (-b - (b * b - 4.0 * a * c).sqrt()) / (2.0 * a);
+    assert!((refine(&g, 2, lo, hi) - want).abs() < 1e-15, "{lo} {hi} {want}");
+    // The stick that met it, on a spring of a cone: it ends at its fall,
+    // not at its start.
+    let d = Drive {
+        v: [0.823618, 0.0],
+        s: [1.7922575767612408, 0.04981575516450942],
+        c: [-0.3385356422031879, 1.0482439691533598],
+    };
+    let sp = Spring::new(d, Bound::new(0.9262475684516962, 0.118382));
+    let tau = 3.0245306924689777;
+    let mut w = Walker {
+        sp: &sp,
+        tau,
+        phase: Phase::Out,
+        force: [Kahan::default(), Kahan::default()],
+        bound: Kahan::default(),
+        truncation: 0.0,
+        jac: [[1.0, 0.0], [0.0, 1.0]],
+        events: Vec::new(),
+        steps: 0,
+        stuck: true,
+    };
+    w.stick([0.1771336428089036, -1.0286800038553499], 2, TAU).unwrap();
+    assert!(w.tau > tau + 0.1 && w.events.len() == 1, "{} {:?}", w.tau, w.events);
+}
