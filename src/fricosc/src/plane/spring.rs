@@ -128,18 +128,7 @@ impl Spring {
 
     /// The walk from `start` to `end` (`end - start <= 2 pi`-ish).
     pub(crate) fn walk(&self, start: Start, end: f64) -> Result<Walk> {
-        let mut w = Walker {
-            sp: self,
-            tau: 0.0,
-            phase: Phase::Out,
-            force: [Kahan::default(), Kahan::default()],
-            bound: Kahan::default(),
-            truncation: 0.0,
-            jac: [[1.0, 0.0], [0.0, 1.0]],
-            events: Vec::new(),
-            steps: 0,
-            stuck: true,
-        };
+        let mut w = Walker::at(self, 0.0);
         match start {
             Start::Force(tau, f) => {
                 w.tau = tau;
@@ -224,6 +213,24 @@ fn refine(g: &Series, skip: usize, a: f64, b: f64) -> f64 {
     d[..LEN - skip].copy_from_slice(&g.0[skip..]);
     let d = Series(d);
     crate::root::bracketed(|t| d.eval(t), a, b, 4.0 * f64::EPSILON).x
+}
+
+impl<'a> Walker<'a> {
+    /// A walker on `sp` at `tau`, out of contact, with nothing booked.
+    fn at(sp: &'a Spring, tau: f64) -> Walker<'a> {
+        Walker {
+            sp,
+            tau,
+            phase: Phase::Out,
+            force: [Kahan::default(), Kahan::default()],
+            bound: Kahan::default(),
+            truncation: 0.0,
+            jac: [[1.0, 0.0], [0.0, 1.0]],
+            events: Vec::new(),
+            steps: 0,
+            stuck: true,
+        }
+    }
 }
 
 impl Walker<'_> {

@@ -66,18 +66,7 @@ fn a_fall_after_a_touch_is_refined_away_from_the_touch() {
     };
     let sp = Spring::new(d, Bound::new(0.9262475684516962, 0.118382));
     let tau = 3.0245306924689777;
-    let mut w = Walker {
-        sp: &sp,
-        tau,
-        phase: Phase::Out,
-        force: [Kahan::default(), Kahan::default()],
-        bound: Kahan::default(),
-        truncation: 0.0,
-        jac: [[1.0, 0.0], [0.0, 1.0]],
-        events: Vec::new(),
-        steps: 0,
-        stuck: true,
-    };
+    let mut w = Walker::at(&sp, tau);
     w.stick([0.1771336428089036, -1.0286800038553499], 2, TAU).unwrap();
     assert!(w.tau > tau + 0.1 && w.events.len() == 1, "{} {:?}", w.tau, w.events);
 }
