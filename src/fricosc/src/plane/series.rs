@@ -273,8 +273,8 @@ impl Isolation<'_> {
         // divided by `u^skip`, vanishes; a fall to within rounding of 0 is
         // left to the bisection, which tells a touch from a fall).
         if let (true, Sign::Negative { .. }) = (a > 0.0, excluded(self.slope, m, 0.5 * (b - a))) {
-            if horner(p, a) > 0.0 && horner(p, b) < -rounding(p, b) {
-                return Ok(Some((a, b)));
+            if let Some(found) = falls_across(p, a, b) {
+                return Ok(Some(found));
             }
         }
         if b - a <= LEAF {
@@ -298,6 +298,12 @@ impl Isolation<'_> {
         }
         None
     }
+}
+
+/// `(a, b)` where `p` is positive at `a` and negative beyond rounding at
+/// `b` (a bracket of its one root where it falls throughout).
+fn falls_across(p: &[f64], a: f64, b: f64) -> Option<(f64, f64)> {
+    (horner(p, a) > 0.0 && horner(p, b) < -rounding(p, b)).then_some((a, b))
 }
 
 /// The sign `p` keeps on an interval, as far as [`excluded`] tells.
@@ -326,6 +332,9 @@ fn rounding(p: &[f64], u: f64) -> f64 {
 /// even). On the interval alone, so tighter than the disc of radius `r`
 /// (where the constant term must exceed every other term's size).
 fn excluded(p: &[f64], m: f64, r: f64) -> Sign {
+    if let Some(sign) = excluded_by_sizes(p, m, r) {
+        return sign;
+    }
     let q = shift(p, m);
     let (mut odd, mut low, mut high, mut rk) = (0.0, 0.0, 0.0, 1.0);
     for (k, c) in q[..p.len()].iter().enumerate().skip(1) {
@@ -345,6 +354,31 @@ fn excluded(p: &[f64], m: f64, r: f64) -> Sign {
         Sign::Negative { beyond_rounding: q[0] < -(margin + rounding(p, m)) }
     } else {
         Sign::Undecided
+    }
+}
+
+/// The sign `p` keeps on `[m - r, m + r]` within `[0, 1]`, decided without
+/// shifting `p` where it can be: there `|p(u) - p(m)| <= sum |p_k| |u^k -
+/// m^k| <= D = sum |p_k| ((m + r)^k - m^k)` (`u^k` is convex for `u >= 0`,
+/// so it rises at least as much over `[m, m + r]` as over `[m - r, m]`), and
+/// `p(m)` beyond `D` and the rounding of both keeps its sign. A looser bound
+/// than [`excluded`]'s (which it only spares the `O(N^2)` shift), so it
+/// decides far from the roots; `None` where it does not.
+fn excluded_by_sizes(p: &[f64], m: f64, r: f64) -> Option<Sign> {
+    let (mut value, mut near, mut far) = (0.0, 0.0, 0.0);
+    for &c in p.iter().rev() {
+        value = value * m + c;
+        near = near * m + c.abs();
+        far = far * (m + r) + c.abs();
+    }
+    // `D` and its rounding (`far` and `near` each within `2n eps` of theirs).
+    let reach = (far - near) + 1e-12 * (far - near) + 4.0 * p.len() as f64 * f64::EPSILON * far;
+    if value > reach {
+        Some(Sign::Positive)
+    } else if value < -reach {
+        Some(Sign::Negative { beyond_rounding: true })
+    } else {
+        None
     }
 }
 
