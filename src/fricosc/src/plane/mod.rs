@@ -208,8 +208,9 @@ pub(crate) fn period_steps(sp: &Spring) -> f64 {
         .sum()
 }
 
-/// Newton's iterations at most.
-const MAX_NEWTON: usize = 60;
+/// Periods one orbit's search may walk at most (Newton's steps, their
+/// halvings and the leaps; a relaxation has its own budget).
+const MAX_ORBIT_PERIODS: usize = 2000;
 /// Halvings of one Newton step at most.
 const MAX_HALVINGS: usize = 6;
 
@@ -221,11 +222,10 @@ fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
         return Ok((answer(&walk, total, 0.0, 0.0, 1)?, Start::Contact(0.0)));
     }
     let mut f = [0.0; 2];
-    let mut periods = 0;
-    let residual = |f: [f64; 2], w: &Walk| (w.end[0] - f[0]).hypot(w.end[1] - f[1]);
+    let mut periods = 1;
     let mut w = sp.walk(Start::Force(0.0, f), TAU)?;
-    periods += 1;
-    for _ in 0..MAX_NEWTON {
+    let mut leaping = false;
+    while periods < MAX_ORBIT_PERIODS {
         let res = residual(f, &w);
         if res <= 8.0 * f64::EPSILON * (1f64.max(f[0].abs()).max(f[1].abs())) {
             let m = multiplier(&w.jacobian);
@@ -236,41 +236,105 @@ fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
             if m >= 1.0 - 4.0 * f64::EPSILON * (w.steps as f64 + 1.0) {
                 return relaxed(sp, total, periods);
             }
-            return Ok((answer(&w, total, m, res, periods)?, Start::Force(0.0, f)));
+            // Contracting at rate `m`, the map puts the start within
+            // `res / (1 - m)` of the orbit's.
+            return Ok((answer(&w, total, m, res / (1.0 - m), periods)?, Start::Force(0.0, f)));
         }
-        let r = [w.end[0] - f[0], w.end[1] - f[1]];
         if w.stuck {
             // A period of stick only drifts by X(2 pi) - X(0): go where the drift first slips.
-            f = first_slip(sp, f, r)?;
+            f = first_slip(sp, f, [w.end[0] - f[0], w.end[1] - f[1]])?;
             w = sp.walk(Start::Force(0.0, f), TAU)?;
             periods += 1;
             continue;
         }
-        // Newton's step, halved until the residual falls (the map is only
-        // piecewise smooth: a step may cross where its events change); else
-        // one period of the map itself, which contracts.
-        let step = newton_step(&w.jacobian, r).unwrap_or(r);
-        let mut next = None;
-        let mut lambda = 1.0;
-        for _ in 0..MAX_HALVINGS {
-            let g = [f[0] + lambda * step[0], f[1] + lambda * step[1]];
-            let wg = sp.walk(Start::Force(0.0, g), TAU)?;
-            periods += 1;
-            if residual(g, &wg) < res {
-                next = Some((g, wg));
-                break;
-            }
-            lambda *= 0.5;
-        }
-        (f, w) = match next {
-            Some(n) => n,
+        // Newton's step; where it fails, a leap along the map's drift (and
+        // more leaps while they go on: Newton again once one does not).
+        let (tried, walked) = if leaping { (None, 0) } else { newton(sp, f, &w, res)? };
+        periods += walked;
+        (f, w, leaping) = match tried {
+            Some((g, wg)) => (g, wg, false),
             None => {
-                periods += 1;
-                (w.end, sp.walk(Start::Force(0.0, w.end), TAU)?)
+                let ((g, wg), walked, leapt) = leap(sp, f, &w)?;
+                periods += walked;
+                (g, wg, leapt)
             }
         };
     }
     Err(Error::Internal { what: format!("no attracting periodic orbit in the plane after {periods} periods") })
+}
+
+/// A start of the period map and the walk of its period.
+type Visit = ([f64; 2], Walk);
+
+/// The residual `|P(f) - f|` of the walk `w` from `f`.
+fn residual(f: [f64; 2], w: &Walk) -> f64 {
+    (w.end[0] - f[0]).hypot(w.end[1] - f[1])
+}
+
+/// Newton's step from `f` (its walk `w`, its residual `res`), halved until
+/// the residual falls (the map is only piecewise smooth: a step may cross
+/// where its events change): the start and walk it reached, if any, and the
+/// periods walked.
+fn newton(sp: &Spring, f: [f64; 2], w: &Walk, res: f64) -> Result<(Option<Visit>, usize)> {
+    let r = [w.end[0] - f[0], w.end[1] - f[1]];
+    let step = newton_step(&w.jacobian, r).unwrap_or(r);
+    let mut lambda = 1.0;
+    for walked in 1..=MAX_HALVINGS {
+        let g = [f[0] + lambda * step[0], f[1] + lambda * step[1]];
+        let wg = sp.walk(Start::Force(0.0, g), TAU)?;
+        if residual(g, &wg) < res {
+            return Ok((Some((g, wg)), walked));
+        }
+        lambda *= 0.5;
+    }
+    Ok((None, MAX_HALVINGS))
+}
+
+/// The largest leap along the map's drift, in periods ([`leap`]).
+const MAX_LEAP: f64 = 1e6;
+/// How far a leap may move the start, relative to its size (or 1).
+const LEAP_REACH: f64 = 0.05;
+/// How much larger than before a leap's residual may be: along the slow
+/// drift the residual changes little, and the leap's error across it (the
+/// drift's curvature times the leap squared) is what this admits.
+const LEAP_GROWTH: f64 = 1.25;
+
+/// Where Newton's step fails (the orbit beyond a change of the period's
+/// events, which its linearisation does not see) and the map is nearly
+/// neutral, the map drifts along its slow direction by about the residual
+/// `r` a period (a spring that only grazes its bound under a slow slide
+/// turns its force round the circle over thousands of periods). From
+/// `P(f)`, `k` periods of that drift are leapt at once (in polar
+/// coordinates, as the force turns) and one period walked from there to
+/// settle what the leap missed across the drift; `k` runs from
+/// `LEAP_REACH / |r|` (at most [`MAX_LEAP`]) down by 4 until the settled
+/// start has moved at least `k |r| / 2`, still drifts the same way, and has
+/// a residual at most [`LEAP_GROWTH`] times that at `f`; else `k = 1`, the
+/// map's own next period. Only a way towards the orbit: only a walked
+/// residual ends the search. The start, its walk, the periods walked and
+/// whether it leapt.
+fn leap(sp: &Spring, f: [f64; 2], w: &Walk) -> Result<(Visit, usize, bool)> {
+    let r = [w.end[0] - f[0], w.end[1] - f[1]];
+    let size = r[0].hypot(r[1]);
+    let reach = LEAP_REACH * 1f64.max(f[0].abs()).max(f[1].abs());
+    let mut k = (reach / size).min(MAX_LEAP).floor();
+    let mut walked = 0;
+    let polar = |x: [f64; 2]| (x[0].hypot(x[1]), x[1].atan2(x[0]));
+    let ((r0, a0), (r1, a1)) = (polar(f), polar(w.end));
+    while k > 1.0 {
+        let (rg, ag) = (r1 + k * (r1 - r0), a1 + k * (a1 - a0));
+        let g = [rg * ag.cos(), rg * ag.sin()];
+        let h = sp.walk(Start::Force(0.0, g), TAU)?.end;
+        let wh = sp.walk(Start::Force(0.0, h), TAU)?;
+        walked += 2;
+        let moved = (h[0] - w.end[0]).hypot(h[1] - w.end[1]);
+        let ahead = (wh.end[0] - h[0]) * r[0] + (wh.end[1] - h[1]) * r[1] > 0.0;
+        if residual(h, &wh) <= LEAP_GROWTH * size && moved >= 0.5 * k * size && ahead {
+            return Ok(((h, wh), walked, true));
+        }
+        k = (k / 4.0).floor();
+    }
+    Ok(((w.end, sp.walk(Start::Force(0.0, w.end), TAU)?), walked + 1, false))
 }
 
 /// Periods run from the relaxed start at most, where the orbit is neutral.
@@ -355,7 +419,10 @@ fn multiplier(j: &[[f64; 2]; 2]) -> f64 {
     }
 }
 
-fn answer(w: &Walk, total: f64, multiplier: f64, residual: f64, periods: usize) -> Result<PlaneEvaluation> {
+/// The evaluation of the period walked by `w`, whose start is within
+/// `start_error` of the orbit's: so is its force all period (the stop
+/// operator does not expand a difference of starts).
+fn answer(w: &Walk, total: f64, multiplier: f64, start_error: f64, periods: usize) -> Result<PlaneEvaluation> {
     let (mu, tr) = (w.force[0] / total, w.force[1] / total);
     // Each step's sum rounds at about an ulp of the running total, at random;
     // `int B` summed as the force is, against its closed form, measures the
@@ -364,7 +431,7 @@ fn answer(w: &Walk, total: f64, multiplier: f64, residual: f64, periods: usize) 
     let scale = 1f64.max(mu.abs()).max(tr.abs());
     let rounding = f64::EPSILON * ((w.steps as f64).sqrt() + 2.0) * scale;
     let consistency = if w.bound > 0.0 { (w.bound - total).abs() / total * scale } else { 0.0 };
-    let error_estimate = (w.truncation + TAU * residual) / total + rounding + consistency;
+    let error_estimate = (w.truncation + TAU * start_error) / total + rounding + consistency;
     if !(tr.is_finite() && tr.abs() <= 1.0 + error_estimate) {
         return Err(Error::Internal { what: format!("transverse_ratio = {tr:?} in the plane") });
     }

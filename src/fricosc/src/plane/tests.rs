@@ -3,6 +3,7 @@ use super::drive::{Bound, Drive};
 use super::spring::{Spring, Start};
 use super::{orbit, relaxed, PlaneEvaluation};
 use crate::{Conditions, Shape};
+use std::f64::consts::TAU;
 
 fn rotated(d: Drive, alpha: f64) -> Drive {
     let (s, c) = alpha.sin_cos();
@@ -58,7 +59,7 @@ fn a_rotated_drive_through_a_touch_of_zero() {
 #[test]
 fn the_period_maps_derivative_is_its_differences() {
     use super::spring::Start;
-    use std::f64::consts::TAU;
+
     let cases = [
         (Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7), 0.5),
         (Drive::sliding(0.1, 1.0, 0.3, 0.8, 2.0), 0.8),
@@ -268,4 +269,42 @@ fn a_start_projected_onto_the_disc_sticks_inwards_where_the_rate_is_negative() {
     }
     let (e, _) = orbit(&sp).unwrap();
     assert!(e.ratio.mu_ratio.hypot(e.transverse_ratio) <= 1.0, "{e:?}");
+}
+
+/// A slow slide whose force grazes the bound once a period drifts round
+/// the circle over thousands of periods (a multiplier of 1 - 1e-4) before it
+/// meets the orbit that grazes twice, beyond Newton's one-slip
+/// linearisation. The search reaches that orbit within its budget, and the
+/// map itself, iterated from rest until it closes, reaches the same start
+/// and mean force.
+#[test]
+fn a_slow_slide_that_grazes_its_bound_finds_its_orbit() {
+    for (vbar, amp, w, psi) in [
+        (0.11856560226613679, 0.0005614663273108556, 0.35820186718754876, 0.8450721073800264),
+        (0.010833593000068349, 0.0001597082191596014, 0.28893029818811744, 1.4868226040419652),
+    ] {
+        let sp = Spring::new(Drive::sliding(vbar * amp, 0.0, 0.0, w, psi), Bound::new(1.0, amp));
+        let (e, start) = orbit(&sp).unwrap();
+        let Start::Force(_, f) = start else { panic!("{vbar}: an orbit in contact starts with a force") };
+        assert!(e.multiplier < 0.9 && e.periods < super::MAX_ORBIT_PERIODS, "{vbar}: {} {}", e.multiplier, e.periods);
+        let mut g = [0.0; 2];
+        let mut walk = sp.walk(Start::Force(0.0, g), TAU).unwrap();
+        let mut plain_periods = 1;
+        while super::residual(g, &walk) > 8.0 * f64::EPSILON {
+            assert!(plain_periods < 1_000_000, "{vbar}: the map from rest has not closed");
+            g = walk.end;
+            walk = sp.walk(Start::Force(0.0, g), TAU).unwrap();
+            plain_periods += 1;
+        }
+        let m = super::multiplier(&walk.jacobian);
+        let closed = super::residual(g, &walk) / (1.0 - m);
+        let plain = super::answer(&walk, sp.bound.period_integral(), m, closed, plain_periods).unwrap();
+        let apart = (g[0] - f[0]).hypot(g[1] - f[1]);
+        let (dmu, dtr) =
+            ((plain.ratio.mu_ratio - e.ratio.mu_ratio).abs(), (plain.transverse_ratio - e.transverse_ratio).abs());
+        assert!(
+            apart < 1e-13 && dmu.max(dtr) <= e.error_estimate + plain.error_estimate,
+            "{vbar}: {apart:e} {dmu:e} {dtr:e}"
+        );
+    }
 }
