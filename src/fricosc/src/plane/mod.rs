@@ -236,9 +236,11 @@ fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
             if m >= 1.0 - 4.0 * f64::EPSILON * (w.steps as f64 + 1.0) {
                 return relaxed(sp, total, periods);
             }
-            // Contracting at rate `m`, the map puts the start within
-            // `res / (1 - m)` of the orbit's.
-            return Ok((answer(&w, total, m, res / (1.0 - m), periods)?, Start::Force(0.0, f)));
+            // Contracting at rate `m`, the start is within `(res + m e) /
+            // (1 - m)` of the orbit's, `e` the rounding of one period (the
+            // periods before the last; the last one's is the mean's own).
+            let e = rounding(&w, 1f64.max(f[0].abs()).max(f[1].abs()));
+            return Ok((answer(&w, total, m, (res + m * e) / (1.0 - m), periods)?, Start::Force(0.0, f)));
         }
         if w.stuck {
             // A period of stick only drifts by X(2 pi) - X(0): go where the drift first slips.
@@ -306,7 +308,9 @@ const LEAP_GROWTH: f64 = 1.25;
 /// turns its force round the circle over thousands of periods). From
 /// `P(f)`, `k` periods of that drift are leapt at once (in polar
 /// coordinates, as the force turns) and one period walked from there to
-/// settle what the leap missed across the drift; `k` runs from
+/// settle what the leap missed across the drift (a leap that lands among
+/// the states that stick all period goes on along their drift to where the
+/// spring slips, then settles); `k` runs from
 /// `LEAP_REACH / |r|` (at most [`MAX_LEAP`]) down by 4 until the settled
 /// start has moved at least `k |r| / 2`, still drifts the same way, and has
 /// a residual at most [`LEAP_GROWTH`] times that at `f`; else `k = 1`, the
@@ -323,8 +327,15 @@ fn leap(sp: &Spring, f: [f64; 2], w: &Walk) -> Result<(Visit, usize, bool)> {
     let ((r0, a0), (r1, a1)) = (polar(f), polar(w.end));
     while k > 1.0 {
         let (rg, ag) = (r1 + k * (r1 - r0), a1 + k * (a1 - a0));
-        let g = [rg * ag.cos(), rg * ag.sin()];
-        let h = sp.walk(Start::Force(0.0, g), TAU)?.end;
+        let mut g = [rg * ag.cos(), rg * ag.sin()];
+        let mut wg = sp.walk(Start::Force(0.0, g), TAU)?;
+        if wg.stuck {
+            // Leapt inside the states that stick all period: on along their drift to where it slips.
+            g = first_slip(sp, g, [wg.end[0] - g[0], wg.end[1] - g[1]])?;
+            wg = sp.walk(Start::Force(0.0, g), TAU)?;
+            walked += 1;
+        }
+        let h = wg.end;
         let wh = sp.walk(Start::Force(0.0, h), TAU)?;
         walked += 2;
         let moved = (h[0] - w.end[0]).hypot(h[1] - w.end[1]);
@@ -419,6 +430,12 @@ fn multiplier(j: &[[f64; 2]; 2]) -> f64 {
     }
 }
 
+/// The rounding of a sum over the steps of the walk `w` (each rounds at
+/// about an ulp of the running total `scale`, at random).
+fn rounding(w: &Walk, scale: f64) -> f64 {
+    f64::EPSILON * ((w.steps as f64).sqrt() + 2.0) * scale
+}
+
 /// The evaluation of the period walked by `w`, whose start is within
 /// `start_error` of the orbit's: so is its force all period (the stop
 /// operator does not expand a difference of starts).
@@ -429,7 +446,7 @@ fn answer(w: &Walk, total: f64, multiplier: f64, start_error: f64, periods: usiz
     // rounding of the steps' integrals and of the normalisation together
     // (a slip throughout has `|<f>| = <B>` exactly).
     let scale = 1f64.max(mu.abs()).max(tr.abs());
-    let rounding = f64::EPSILON * ((w.steps as f64).sqrt() + 2.0) * scale;
+    let rounding = rounding(w, scale);
     let consistency = if w.bound > 0.0 { (w.bound - total).abs() / total * scale } else { 0.0 };
     let error_estimate = (w.truncation + TAU * start_error) / total + rounding + consistency;
     if !(tr.is_finite() && tr.abs() <= 1.0 + error_estimate) {

@@ -308,3 +308,25 @@ fn a_slow_slide_that_grazes_its_bound_finds_its_orbit() {
         );
     }
 }
+
+/// Slower still, and driven along and across: the leaps land among the
+/// states that stick all period (inside the slipping ones' curved edge) and
+/// go on along their drift to where it slips. Millions of periods for the
+/// map itself; the search answers within its budget with the orbit that
+/// grazes twice, which its own walk closes.
+#[test]
+fn a_leap_inside_the_sticking_states_goes_on_to_where_they_slip() {
+    let d = Drive::sliding(
+        6.922195488923614e-08,
+        0.049779774548592996,
+        -2.7935685676295137,
+        0.3393088949052198,
+        1.9538692663920267,
+    );
+    let sp = Spring::new(d, Bound::new(1.0, 1.2281372866067405e-05));
+    let (e, start) = orbit(&sp).unwrap();
+    let Start::Force(_, f) = start else { panic!("an orbit in contact starts with a force") };
+    assert!(e.multiplier < 0.9 && e.periods < super::MAX_ORBIT_PERIODS, "{} {}", e.multiplier, e.periods);
+    let walk = sp.walk(Start::Force(0.0, f), TAU).unwrap();
+    assert!(super::residual(f, &walk) <= 8.0 * f64::EPSILON && walk.events.len() == 4, "{:?}", walk.events);
+}
