@@ -12,7 +12,8 @@ Independent of fricosc's solver (src/fricosc/src/plane/):
   stick, the slip rate X'.e - B' in slip), refined by bisection; fricosc
   isolates the roots of its series by exclusion;
 - the steady state: periods from the relaxed start (f = 0 at tau = 0, or at
-  first contact) until the force at the period's start repeats to 21 digits;
+  first contact; for a drift too slow for that, a start given to 9 digits)
+  until the force at the period's start repeats to 21 digits;
   fricosc uses Newton with the period map's derivative;
 - the means are mpmath quadratures over each phase.
 Where contact is regained into slip (a regular singular point) the slip starts
@@ -41,6 +42,19 @@ CASES = [
     (0.2, 1.2, 0.0, 0.0, 3.0, 1.5),
     # A slip that reaches the loss of contact slower than the bound closes (|X'| < B').
     (0.47192399278273217, 1.991211363583415, 0.0, 0.0, 1.2836110893577237, 2.009461847020906),
+    # A force on its bound at tau = 0 with a slip rate 0 to rounding (X' along y).
+    (0.034864029987338035, 0.06651488676441611, 0.0, 0.0, 0.0014911485989938318, 1.5707963267948966),
+    # Slow sliding, psi = pi/2: the body rests at tau = 0, out of contact,
+    # and moves fast at the edges of contact, where the layer is.
+    (0.0001897527803131793, 1.830260786990638, 0.0, 0.0, 2.0, 1.5707963267948966),
+    # A drift too slow to relax from rest (about 1e9 periods, 2e-10 a period
+    # near the orbit): relaxed from the force on its bound at the angle
+    # 0.192923867 (9 digits), the reference checks the orbit, not the way to it.
+    (1.31439828865443e-10, 1.0322297640969256e-06, 0.0, 0.0, 0.19173451864957627, 1.5707963267948966,
+     ("0.9814468269604643728498", "0.1917291354770411702053")),
+    # Contact regained where the body moves fast, and at tau = 0 slowly: the
+    # thin layer at the edges of contact is set by the speed there.
+    (0.09570414317035912, 1.6531710215547686, 0.0, -0.23240803896986684, 1.3943611366611741, 2.270458130923907),
 ]
 
 
@@ -159,14 +173,15 @@ def mean_b(amp):
 
 
 def solve(case):
+    case, start = case[:6], case[6] if len(case) > 6 else ("0", "0")
     vhat, amp, t, phase, w, psi = case
     events = []
     if amp > 1:
         sums, _ = period(case, 0, None, 2 * pi, events)
         periods = 1
     else:
-        f = (mpf(0), mpf(0))
-        for periods in range(1, 200):
+        f = (mpf(start[0]), mpf(start[1]))
+        for periods in range(1, 400):
             events = []
             sums, f_end = period(case, 0, f, 2 * pi, events)
             change = abs(f_end[0] - f[0]) + abs(f_end[1] - f[1])

@@ -16,8 +16,11 @@
 //! (B'/|X'|)^2`, `kappa = (|alpha'| + |X''|/|X'|)/|X'|`, times 16) is taken
 //! to be on it and its force `B e(th_m)` integrated by Gauss-Legendre
 //! quadrature; the neglected part costs at most `int B` times it, which
-//! `b_layer = 1e-5 min(1, |X'(0)|^2)` keeps near `1e-17` (the estimate books
-//! it). Off the manifold the Taylor steps go on until the transient has decayed.
+//! `b_layer = 1e-5 min(1, |X'|^2)` keeps near `1e-17` (the estimate books
+//! it), with `|X'|` where the layer is: at `tau = 0` for a bound that stays
+//! in contact, at the edges of contact (the smaller) for one that loses it
+//! ([`thickness`]). Off the manifold the Taylor steps go on until the
+//! transient has decayed.
 
 use super::drive::{Bound, Drive};
 use std::f64::consts::TAU;
@@ -38,8 +41,7 @@ impl Layer {
     /// The layer of `bound` under `drive`, if its minimum `level - amp` is
     /// below the layer's `B`: `1 - cos w = (b_layer - (level - amp))/amp`.
     pub(crate) fn of(drive: &Drive, bound: &Bound) -> Option<Layer> {
-        let v = drive.velocity_at(0.0);
-        let b = LAYER_B * v[0].hypot(v[1]).min(1.0).powi(2);
+        let b = thickness(drive, bound);
         let gap = bound.level - bound.amp;
         // A bound whose peak is below `b` is in the layer all period (`w = pi`).
         let s = ((b - gap) / (2.0 * bound.amp)).sqrt().min(1.0);
@@ -57,6 +59,18 @@ impl Layer {
     pub(crate) fn next_entry(&self, tau: f64) -> f64 {
         TAU * (tau / TAU).ceil() - self.half_width
     }
+}
+
+/// `B` at the layer's edges (module docs): `1e-5 min(1, |X'|^2)`, `|X'|` at
+/// `tau = 0`, or the smaller at the edges of contact `+-edge` where the
+/// bound loses it (there, not at `tau = 0` out of contact, a slip is stiff).
+pub(crate) fn thickness(drive: &Drive, bound: &Bound) -> f64 {
+    let speed = |tau: f64| {
+        let v = drive.velocity_at(tau);
+        v[0].hypot(v[1])
+    };
+    let v = bound.edge.map_or_else(|| speed(0.0), |e| speed(e).min(speed(-e)));
+    LAYER_B * v.min(1.0).powi(2)
 }
 
 /// The slow manifold's direction `e(th_m)` at `tau`, and the bound on the

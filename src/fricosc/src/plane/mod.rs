@@ -193,8 +193,7 @@ fn check_work(sp: &Spring, drives: [(&'static str, f64); 3]) -> Result<()> {
 /// outside the thin layer (64 samples of the period; [`check_work`]).
 pub(crate) fn period_steps(sp: &Spring) -> f64 {
     let n = 64;
-    let v0 = sp.drive.velocity_at(0.0);
-    let floor = 1e-5 * v0[0].hypot(v0[1]).min(1.0).powi(2);
+    let floor = layer::thickness(&sp.drive, &sp.bound);
     (0..n)
         .map(|k| {
             let tau = TAU * (k as f64 + 0.5) / n as f64;
@@ -254,7 +253,9 @@ fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
         let (tried, walked) = if leaping { (None, 0) } else { newton(sp, f, &w, res)? };
         periods += walked;
         (f, w, leaping) = match tried {
-            Some((g, wg)) => (g, wg, false),
+            // A step halved thrice or more is held back by the drift's
+            // curvature (a force that turns round its circle): leap next.
+            Some((g, wg)) => (g, wg, walked > 3),
             None => {
                 let ((g, wg), walked, leapt) = leap(sp, f, &w)?;
                 periods += walked;
@@ -293,7 +294,7 @@ fn newton(sp: &Spring, f: [f64; 2], w: &Walk, res: f64) -> Result<(Option<Visit>
 }
 
 /// The largest leap along the map's drift, in periods ([`leap`]).
-const MAX_LEAP: f64 = 1e6;
+const MAX_LEAP: f64 = 1e9;
 /// How far a leap may move the start, relative to its size (or 1).
 const LEAP_REACH: f64 = 0.05;
 /// How much larger than before a leap's residual may be: along the slow
@@ -310,8 +311,9 @@ const LEAP_GROWTH: f64 = 1.25;
 /// coordinates, as the force turns) and one period walked from there to
 /// settle what the leap missed across the drift (a leap that lands among
 /// the states that stick all period goes on along their drift to where the
-/// spring slips, then settles); `k` runs from
-/// `LEAP_REACH / |r|` (at most [`MAX_LEAP`]) down by 4 until the settled
+/// spring slips, then settles); `k` runs from `LEAP_REACH / |r|` (at most
+/// `1 / (1 - m)`, over which the drift decays at the multiplier `m`, and
+/// [`MAX_LEAP`]) down by 4 until the settled
 /// start has moved at least `k |r| / 2`, still drifts the same way, and has
 /// a residual at most [`LEAP_GROWTH`] times that at `f`; else `k = 1`, the
 /// map's own next period. Only a way towards the orbit: only a walked
@@ -321,7 +323,9 @@ fn leap(sp: &Spring, f: [f64; 2], w: &Walk) -> Result<(Visit, usize, bool)> {
     let r = [w.end[0] - f[0], w.end[1] - f[1]];
     let size = r[0].hypot(r[1]);
     let reach = LEAP_REACH * 1f64.max(f[0].abs()).max(f[1].abs());
-    let mut k = (reach / size).min(MAX_LEAP).floor();
+    // Beyond `1 / (1 - m)` periods the drift has decayed: Newton's to take.
+    let decay = 1.0 / (1.0 - multiplier(&w.jacobian)).max(1.0 / MAX_LEAP);
+    let mut k = (reach / size).min(decay).floor();
     let mut walked = 0;
     let polar = |x: [f64; 2]| (x[0].hypot(x[1]), x[1].atan2(x[0]));
     let ((r0, a0), (r1, a1)) = (polar(f), polar(w.end));

@@ -414,10 +414,12 @@ fn quadratics(y: &[Series; 2]) -> [Series; 3] {
 
 /// The slip rate `lambda = X'.e - B'` times `n` (of any scale of `y`),
 /// `X'_x c2 + X'_y s2 - B' n`, from `X'`, `B'` and [`quadratics`]; with the
-/// rounding of its constant term (16 ulp of its terms' sizes), within which
-/// a rate is taken as 0.
+/// rounding of its constant term, within which a rate is taken as 0: 16
+/// ulp of `(|X'_x| + |X'_y| + |B'|) n`, as `c2` and `s2` carry an ulp of `n`
+/// each (a direction along an axis has a component of rounding size) and
+/// each component of `X'` an ulp of `|X'|` (a drive rotated or composed).
 fn slip_rate(xd: &[Series; 2], bdot: &Series, [n, c2, s2]: &[Series; 3]) -> (Series, f64) {
-    let sizes = (xd[0].0[0] * c2.0[0]).abs() + (xd[1].0[0] * s2.0[0]).abs() + (bdot.0[0] * n.0[0]).abs();
+    let sizes = (xd[0].0[0].abs() + xd[1].0[0].abs() + bdot.0[0].abs()) * n.0[0];
     (xd[0] * *c2 + xd[1] * *s2 - *bdot * *n, 16.0 * f64::EPSILON * sizes)
 }
 

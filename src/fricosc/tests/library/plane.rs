@@ -23,12 +23,12 @@ fn plane(c: &Conditions, w: f64, psi: f64) -> Evaluation {
 
 /// `mu_ratio` and the transverse ratio against the 20-digit reference, each
 /// within 1e-14 and within the error estimate, which stays within 30 times
-/// the larger error (observed: errors at most 3.3e-16, estimates 5 to 28
+/// the larger error (observed: errors at most 1.4e-15, estimates 1.3 to 25
 /// times the error, floored at 1e-16); the events are the reference's.
 #[test]
 fn matches_the_independent_reference() {
     let cases = data_cases("plane-reference.json");
-    assert_eq!(cases.len(), 8);
+    assert_eq!(cases.len(), 12);
     for case in cases {
         let g = |k: &str| case[k].as_f64().unwrap();
         let c = conditions(g("vhat"), g("amp"), g("tangential_amp"), g("phase"));
@@ -45,8 +45,12 @@ fn matches_the_independent_reference() {
         let kinds: Vec<&str> = r.events.iter().map(|e| e.kind.name()).collect();
         let expected: Vec<&str> = case["events"].as_array().unwrap().iter().map(|e| e[1].as_str().unwrap()).collect();
         assert_eq!(kinds, expected, "{case}");
+        // Under the slowest drift the force grazes its bound where it starts
+        // to slip: that time is conditioned as the square root of the
+        // start's rounding (observed 8.6e-11).
+        let bar = if g("vhat") < 1e-9 { 1e-9 } else { 1e-13 };
         for (e, x) in r.events.iter().zip(case["events"].as_array().unwrap()) {
-            assert!(exact_error(e.tau, x[0].as_str().unwrap()) < 1e-13, "{case}: {e:?}");
+            assert!(exact_error(e.tau, x[0].as_str().unwrap()) < bar, "{case}: {e:?}");
         }
         assert!(
             !exceeds(worst, 1e-14) && !exceeds(worst, e.error_estimate),
