@@ -226,7 +226,7 @@ fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
     let mut leaping = false;
     while periods < MAX_ORBIT_PERIODS {
         let res = residual(f, &w);
-        if res <= 8.0 * f64::EPSILON * (1f64.max(f[0].abs()).max(f[1].abs())) {
+        if res <= 8.0 * f64::EPSILON * force_scale(f) {
             let m = multiplier(&w.jacobian);
             // A neutral orbit (a period that only sticks repeats from any
             // start): the one the relaxed start reaches is the answer. The
@@ -238,7 +238,7 @@ fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
             // Contracting at rate `m`, the start is within `(res + m e) /
             // (1 - m)` of the orbit's, `e` the rounding of one period (the
             // periods before the last; the last one's is the mean's own).
-            let e = rounding(&w, 1f64.max(f[0].abs()).max(f[1].abs()));
+            let e = rounding(&w, force_scale(f));
             return Ok((answer(&w, total, m, (res + m * e) / (1.0 - m), periods)?, Start::Force(0.0, f)));
         }
         if w.stuck {
@@ -322,7 +322,7 @@ const LEAP_GROWTH: f64 = 1.25;
 fn leap(sp: &Spring, f: [f64; 2], w: &Walk) -> Result<(Visit, usize, bool)> {
     let r = [w.end[0] - f[0], w.end[1] - f[1]];
     let size = r[0].hypot(r[1]);
-    let reach = LEAP_REACH * 1f64.max(f[0].abs()).max(f[1].abs());
+    let reach = LEAP_REACH * force_scale(f);
     // Beyond `1 / (1 - m)` periods the drift has decayed: Newton's to take.
     let decay = 1.0 / (1.0 - multiplier(&w.jacobian)).max(1.0 / MAX_LEAP);
     let mut k = (reach / size).min(decay).floor();
@@ -374,7 +374,7 @@ fn relaxed(sp: &Spring, total: f64, newton_periods: usize) -> Result<(PlaneEvalu
         let w = sp.walk(Start::Force(0.0, f), TAU)?;
         let res = (w.end[0] - f[0]).hypot(w.end[1] - f[1]);
         let periods = newton_periods + k;
-        if res <= 8.0 * f64::EPSILON * (1f64.max(f[0].abs()).max(f[1].abs())) {
+        if res <= 8.0 * f64::EPSILON * force_scale(f) {
             return Ok((answer(&w, total, multiplier(&w.jacobian), res, periods)?, Start::Force(0.0, f)));
         }
         residuals.push(res);
@@ -432,6 +432,11 @@ fn multiplier(j: &[[f64; 2]; 2]) -> f64 {
     } else {
         det.abs().sqrt()
     }
+}
+
+/// The scale of a force's rounding: its largest component, at least 1.
+pub(crate) fn force_scale(f: [f64; 2]) -> f64 {
+    1f64.max(f[0].abs()).max(f[1].abs())
 }
 
 /// The rounding of a sum over the steps of the walk `w` (each rounds at

@@ -309,7 +309,7 @@ impl Walker<'_> {
         let loss = self.sp.bound.next_loss(tau).filter(|&l| l < end);
         let target = loss.unwrap_or(end);
         let horizon = target - tau;
-        let scale = 1f64.max(f[0].abs()).max(f[1].abs());
+        let scale = super::force_scale(f);
         let h = Series::step_for(&[(&fx, STEP_TOL * scale), (&fy, STEP_TOL * scale), (&b, STEP_TOL)])
             .min(horizon.min(MAX_STICK_STEP));
         if skip > 0 && g.0[skip] < -16.0 * f64::EPSILON * (b.square() + fx.square() + fy.square()).0[skip] {
