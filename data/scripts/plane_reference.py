@@ -21,7 +21,7 @@ at DELTA after contact along X'; where it is lost, the slip stops DELTA before
 (the parts left out are below 1e-40 of <B>).
 
 Run: python3 data/scripts/plane_reference.py > data/plane-reference.json
-(needs mpmath; about 15 minutes; `... plane_reference.py 0 2` runs cases 0 and 2 only.) Inputs are the f64 values the test passes.
+(needs mpmath; about 25 minutes; `... plane_reference.py 0 2` runs cases 0 and 2 only.) Inputs are the f64 values the test passes.
 """
 import json
 import sys
@@ -55,6 +55,8 @@ CASES = [
     # Contact regained where the body moves fast, and at tau = 0 slowly: the
     # thin layer at the edges of contact is set by the speed there.
     (0.09570414317035912, 1.6531710215547686, 0.0, -0.23240803896986684, 1.3943611366611741, 2.270458130923907),
+    # A slow contraction (the period map's multiplier 0.69): 131 periods from rest.
+    (0.0325026, 0.039, 0.0, 0.0, 0.3244, 4.5526),
 ]
 
 

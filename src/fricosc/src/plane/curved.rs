@@ -30,7 +30,7 @@
 
 use super::drive::{Bound, Drive};
 use super::spring::Spring;
-use super::{orbit, period_steps, PlaneEvaluation};
+use super::{orbit_to, period_steps, PlaneEvaluation, Precision};
 use crate::contact::Contact;
 use crate::error::{Error, Result};
 use crate::integrate::{bands, cosine_pass, cosine_pass_parallel, Ladder, Sums};
@@ -54,6 +54,10 @@ const FIRST_ORDER: usize = 8;
 const MAX_ORDER: usize = 1024;
 /// Order of the tail's `int <B> dz` (a smooth integrand in `theta`).
 const TAIL_ORDER: usize = 32;
+/// The tolerance from which the springs are walked coarsely
+/// ([`Precision::Coarse`]: each spring's means within about `1e-9` of its
+/// `<B>`, and estimated).
+const COARSE_TOL: f64 = 1e-7;
 /// Rounding of one spring's means, in eps of its bound's scale.
 const SPRING_ROUNDING: f64 = 8.0;
 
@@ -72,11 +76,11 @@ struct Learned {
 impl Springs {
     /// The ratios `(mu, transverse)` of the spring at `z`, recorded; `None`
     /// after the first error.
-    fn solve(&self, spring: &Spring) -> Option<[f64; 3]> {
+    fn solve(&self, spring: &Spring, precision: Precision) -> Option<[f64; 3]> {
         if self.learned().error.is_some() {
             return None;
         }
-        let solved = orbit(spring);
+        let solved = orbit_to(spring, precision);
         let mut learned = self.learned();
         match solved {
             Ok((e, _)) => {
@@ -124,13 +128,17 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     let spring = |z: f64| Spring::new(d, Bound::new(1.0 - c.equivalent_profile(z), amp));
     let zcap = walked_up_to(&spring, zmax);
     let springs = Springs::default();
-    let sequence = |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit(&spring(z))?.0)) };
+    // A sequence of events needs no exact means: its thresholds move by
+    // about the coarse walks' error, and a band's edge that far off costs
+    // the integral about its square.
+    let sequence = |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit_to(&spring(z), Precision::Coarse)?.0)) };
+    let precision = if tol >= COARSE_TOL { Precision::Coarse } else { Precision::Exact };
     let edges = bands::edges(c, amp, zcap, &sequence)?;
     let node = |z: f64| {
         let sp = spring(z);
         let b = sp.bound.period_integral() / TAU;
         let scale = sp.bound.level.abs() + amp;
-        match springs.solve(&sp) {
+        match springs.solve(&sp, precision) {
             Some([mu, tr, err]) => ([mu * b, tr * b, b, err * b], scale),
             None => ([0.0; 4], scale),
         }
@@ -153,7 +161,7 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     if let Some(e) = learned.error {
         return Err(e);
     }
-    let tail = Tail::of(c, &spring, amp, zcap, zmax)?;
+    let tail = Tail::of(c, &spring, amp, (zcap, zmax), precision)?;
     let normal = total.value[2] + tail.bound;
     if !(normal > 0.0 && normal.is_finite()) {
         return Err(Error::Internal { what: format!("mean normal force {normal:?} in the plane ({})", c.name()) });
@@ -190,13 +198,19 @@ struct Tail {
 }
 
 impl Tail {
-    fn of(c: &dyn Contact, spring: &dyn Fn(f64) -> Spring, amp: f64, zcap: f64, zmax: f64) -> Result<Tail> {
+    fn of(
+        c: &dyn Contact,
+        spring: &dyn Fn(f64) -> Spring,
+        amp: f64,
+        (zcap, zmax): (f64, f64),
+        precision: Precision,
+    ) -> Result<Tail> {
         if zcap >= zmax {
             return Ok(Tail { bound: 0.0, force: [0.0; 2], error: 0.0 });
         }
         let mean = |z: f64| ([spring(z).bound.period_integral() / TAU], 0.0);
         let bound = cosine_pass(zcap, zmax, TAIL_ORDER, [true], &mean).sum[0].max(0.0);
-        let ratios = |z: f64| orbit(&spring(z)).ok().map(|(e, _)| e);
+        let ratios = |z: f64| orbit_to(&spring(z), precision).ok().map(|(e, _)| e);
         let last = spring(zcap).bound;
         let half = c.level(1.0 - (0.5 * (last.level + amp) - amp));
         match (ratios(zcap), (half > zcap && half < zmax).then(|| ratios(half)).flatten()) {

@@ -207,33 +207,84 @@ pub(crate) fn period_steps(sp: &Spring) -> f64 {
         .sum()
 }
 
+/// The residual (relative to the force's scale) below which the orbit's
+/// search walks exactly ([`Spring::coarse`] above it).
+const COARSE_UNTIL: f64 = 1e-3;
+
 /// Periods one orbit's search may walk at most (Newton's steps, their
 /// halvings and the leaps; a relaxation has its own budget).
 const MAX_ORBIT_PERIODS: usize = 2000;
 /// Halvings of one Newton step at most.
 const MAX_HALVINGS: usize = 6;
 
-/// The attracting orbit of `sp` and where it starts at `tau = 0`.
+/// How closely an orbit is walked: to full precision, or by
+/// [`Spring::coarse`] walks only (about `1e-10` a period, within its
+/// estimate: a band search's sequence of events, a loose tolerance).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Precision {
+    Exact,
+    Coarse,
+}
+
+/// The residual (relative to the force's scale) at which a coarse orbit is
+/// closed: its share of the answer, `2 pi` times it over `1 - m`, counted
+/// in the estimate, about the walks' own truncation (their rounding of the
+/// map, from how their steps fall, is below it).
+const COARSE_CLOSE: f64 = 1e-9;
+
+/// The attracting orbit of `sp` and where it starts at `tau = 0`, exact.
 fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
+    orbit_to(sp, Precision::Exact)
+}
+
+/// The attracting orbit of `sp` walked to `precision`, and where it starts.
+pub(crate) fn orbit_to(sp: &Spring, precision: Precision) -> Result<(PlaneEvaluation, Start)> {
     let total = sp.bound.period_integral();
     if sp.bound.amp >= sp.bound.level {
         let walk = sp.walk(Start::Contact(0.0), TAU)?;
         return Ok((answer(&walk, total, 0.0, 0.0, 1)?, Start::Contact(0.0)));
     }
+    // Far from the orbit the walks are coarse (`Spring::coarse`); from a
+    // residual of [`COARSE_UNTIL`] on, exact: Newton's next start is then
+    // within about the square of it, and two exact walks close the search.
+    let coarse = sp.coarse();
+    let mut cur = &coarse;
     let mut f = [0.0; 2];
     let mut periods = 1;
-    let mut w = sp.walk(Start::Force(0.0, f), TAU)?;
+    let mut w = cur.walk(Start::Force(0.0, f), TAU)?;
     let mut leaping = false;
     while periods < MAX_ORBIT_PERIODS {
         let res = residual(f, &w);
-        if res <= 8.0 * f64::EPSILON * force_scale(f) {
+        if !cur.is_exact() {
+            // Near the orbit (where an exact one is asked), or a period that
+            // only sticks: on exactly, Newton's step taken as it is where it
+            // stays that near (not along a slow drift, which leaps).
+            let near = precision == Precision::Exact && res <= COARSE_UNTIL * force_scale(f);
+            if near || w.stuck {
+                let r = [w.end[0] - f[0], w.end[1] - f[1]];
+                let step = newton_step(&w.jacobian, r)
+                    .filter(|s| near && s[0].hypot(s[1]) <= COARSE_UNTIL * force_scale(f))
+                    .unwrap_or([0.0; 2]);
+                (cur, f) = (sp, [f[0] + step[0], f[1] + step[1]]);
+                w = cur.walk(Start::Force(0.0, f), TAU)?;
+                (periods, leaping) = (periods + 1, false);
+                continue;
+            }
+        }
+        // An exact orbit closes on an exact walk only.
+        let close = match (precision, cur.is_exact()) {
+            (_, true) => 8.0 * f64::EPSILON,
+            (Precision::Coarse, false) => COARSE_CLOSE,
+            (Precision::Exact, false) => f64::NEG_INFINITY,
+        };
+        if res <= close * force_scale(f) {
             let m = multiplier(&w.jacobian);
             // A neutral orbit (a period that only sticks repeats from any
             // start): the one the relaxed start reaches is the answer. The
             // Jacobian is a product of the steps' factors, each rounded: a
             // multiplier within their rounding of 1 is neutral.
             if m >= 1.0 - 4.0 * f64::EPSILON * (w.steps as f64 + 1.0) {
-                return relaxed(sp, total, periods);
+                return relaxed(cur, total, periods);
             }
             // Contracting at rate `m`, the start is within `(res + m e) /
             // (1 - m)` of the orbit's, `e` the rounding of one period (the
@@ -243,21 +294,29 @@ fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
         }
         if w.stuck {
             // A period of stick only drifts by X(2 pi) - X(0): go where the drift first slips.
-            f = first_slip(sp, f, [w.end[0] - f[0], w.end[1] - f[1]])?;
-            w = sp.walk(Start::Force(0.0, f), TAU)?;
+            f = first_slip(cur, f, [w.end[0] - f[0], w.end[1] - f[1]])?;
+            w = cur.walk(Start::Force(0.0, f), TAU)?;
             periods += 1;
             continue;
         }
         // Newton's step; where it fails, a leap along the map's drift (and
         // more leaps while they go on: Newton again once one does not).
-        let (tried, walked) = if leaping { (None, 0) } else { newton(sp, f, &w, res)? };
+        let (tried, walked) = if leaping { (None, 0) } else { newton(cur, f, &w, res)? };
         periods += walked;
+        if !cur.is_exact() && (tried.is_none() || walked > 1) {
+            // Only Newton's plain steps are coarse: on exactly from where it got.
+            cur = sp;
+            f = tried.map_or(f, |(g, _)| g);
+            w = cur.walk(Start::Force(0.0, f), TAU)?;
+            periods += 1;
+            continue;
+        }
         (f, w, leaping) = match tried {
             // A step halved thrice or more is held back by the drift's
             // curvature (a force that turns round its circle): leap next.
             Some((g, wg)) => (g, wg, walked > 3),
             None => {
-                let ((g, wg), walked, leapt) = leap(sp, f, &w)?;
+                let ((g, wg), walked, leapt) = leap(cur, f, &w)?;
                 periods += walked;
                 (g, wg, leapt)
             }

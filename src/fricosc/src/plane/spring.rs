@@ -36,6 +36,10 @@ use std::f64::consts::TAU;
 
 /// A step's truncation target, relative to the state (`|y| = 1`, `|f| <= 1`).
 const STEP_TOL: f64 = 1e-17;
+/// The target of a [`Spring::coarse`] walk's steps: about `1e-10` a period,
+/// far below the residuals it serves, and `(1e-17/1e-11)^(1/ORDER)`, 1.8
+/// times, longer steps.
+const COARSE_STEP_TOL: f64 = 1e-9;
 /// The longest stick step (the series are entire; this keeps `h^k` tame).
 const MAX_STICK_STEP: f64 = 1.0;
 /// The rest of `int B` before a loss of contact that is booked without steps.
@@ -49,6 +53,8 @@ pub(crate) struct Spring {
     pub(crate) drive: Drive,
     pub(crate) bound: Bound,
     layer: Option<Layer>,
+    /// Each step's truncation target ([`STEP_TOL`] or [`COARSE_STEP_TOL`]).
+    step_tol: f64,
 }
 
 /// The state between steps.
@@ -123,7 +129,22 @@ struct Walker<'a> {
 
 impl Spring {
     pub(crate) fn new(drive: Drive, bound: Bound) -> Spring {
-        Spring { drive, bound, layer: Layer::of(&drive, &bound) }
+        Spring { drive, bound, layer: Layer::of(&drive, &bound), step_tol: STEP_TOL }
+    }
+
+    /// The same spring walked to about `1e-10` a period ([`COARSE_STEP_TOL`]):
+    /// for the search of an orbit far from it. Not where it has a thin layer
+    /// (a bound that nearly touches zero): a slip enters it on the layer's
+    /// manifold only to [`ON_MANIFOLD`], which a coarse walk's direction
+    /// does not meet (it would step on through the layer).
+    pub(crate) fn coarse(&self) -> Spring {
+        let step_tol = if self.layer.is_some() { STEP_TOL } else { COARSE_STEP_TOL };
+        Spring { step_tol, ..*self }
+    }
+
+    /// Whether its walks are to full precision (not [`Spring::coarse`]).
+    pub(crate) fn is_exact(&self) -> bool {
+        self.step_tol == STEP_TOL
     }
 
     /// The walk from `start` to `end` (`end - start <= 2 pi`-ish).
@@ -254,13 +275,13 @@ impl Walker<'_> {
     fn on_circle(&mut self, e: [f64; 2], b: f64, r: f64) -> Phase {
         let (cs, sn) = Series::trig(self.tau);
         let (xd, bdot) = (self.sp.drive.velocity(&cs, &sn), sn * self.sp.bound.amp);
-        let (rate, tol) = slip_rate(&xd, &bdot, &quadratics(&half(e).map(Series::constant)));
-        if slips(rate.0[0], tol, self.rate_slope(e, b)) {
+        let ([rate, _], tol) = slip_rate(&xd, &bdot, &quadratics(&half(e).map(Series::constant)));
+        if slips(rate, tol, self.rate_slope(e, b)) {
             let jt = [0, 1].map(|j| (-e[1] * self.jac[0][j] + e[0] * self.jac[1][j]) / r);
             self.jac = [jt, [0.0; 2]];
             return Phase::Slip { y: half(e), regain: false };
         }
-        Phase::Stick { f: scaled(e, b), skip: zeros(rate.0[0], tol) }
+        Phase::Stick { f: scaled(e, b), skip: zeros(rate, tol) }
     }
 
     /// `d lambda/d tau` of a slip along `e` with the bound `b > 0`, where its
@@ -310,8 +331,8 @@ impl Walker<'_> {
         let target = loss.unwrap_or(end);
         let horizon = target - tau;
         let scale = super::force_scale(f);
-        let h = Series::step_for(&[(&fx, STEP_TOL * scale), (&fy, STEP_TOL * scale), (&b, STEP_TOL)])
-            .min(horizon.min(MAX_STICK_STEP));
+        let tol = self.sp.step_tol;
+        let h = Series::step_for(&[(&fx, tol * scale), (&fy, tol * scale), (&b, tol)]).min(horizon.min(MAX_STICK_STEP));
         if skip > 0 && g.0[skip] < -16.0 * f64::EPSILON * (b.square() + fx.square() + fy.square()).0[skip] {
             // A stick on the circle that leaves it at once, beyond the
             // rounding of `g`, would have slipped ([`slips`]).
@@ -413,14 +434,32 @@ fn quadratics(y: &[Series; 2]) -> [Series; 3] {
 }
 
 /// The slip rate `lambda = X'.e - B'` times `n` (of any scale of `y`),
-/// `X'_x c2 + X'_y s2 - B' n`, from `X'`, `B'` and [`quadratics`]; with the
+/// `X'_x c2 + X'_y s2 - B' n`, from `X'`, `B'` and [`quadratics`]: its
+/// first two coefficients (its value and slope at the start), with the
 /// rounding of its constant term, within which a rate is taken as 0: 16
 /// ulp of `(|X'_x| + |X'_y| + |B'|) n`, as `c2` and `s2` carry an ulp of `n`
 /// each (a direction along an axis has a component of rounding size) and
 /// each component of `X'` an ulp of `|X'|` (a drive rotated or composed).
-fn slip_rate(xd: &[Series; 2], bdot: &Series, [n, c2, s2]: &[Series; 3]) -> (Series, f64) {
+fn slip_rate(xd: &[Series; 2], bdot: &Series, [n, c2, s2]: &[Series; 3]) -> ([f64; 2], f64) {
     let sizes = (xd[0].0[0].abs() + xd[1].0[0].abs() + bdot.0[0].abs()) * n.0[0];
-    (xd[0] * *c2 + xd[1] * *s2 - *bdot * *n, 16.0 * f64::EPSILON * sizes)
+    let low = |a: &Series, b: &Series| [a.0[0] * b.0[0], a.0[0] * b.0[1] + a.0[1] * b.0[0]];
+    let (x, y, z) = (low(&xd[0], c2), low(&xd[1], s2), low(bdot, n));
+    ([x[0] + y[0] - z[0], x[1] + y[1] - z[1]], 16.0 * f64::EPSILON * sizes)
+}
+
+/// A positive multiple of the slip rate along a slip, `w lambda / n`, from
+/// `q = B/n` (`n = |z|^2` of the scaled half-angle series [`regular`] with
+/// its `lam`, `w = dtau/dt` of the clock, `q` in the clock's time): as
+/// `|y|^2' = 2 y.My = (X'_x c2 + X'_y s2)/B = |y|^2 (lambda + B')/B`,
+/// `(B/|y|^2)' = -lambda/|y|^2`, and with `n = e^(-2 lam t) |y|^2`,
+/// `2 lam q - q' = w lambda / n`. No product: `q` is the force's own factor.
+/// Its last order needs `q`'s next, and is left out.
+fn rate_series(q: &Series, lam: f64) -> Series {
+    let mut r = [0.0; LEN];
+    for (k, (rk, w)) in r.iter_mut().zip(q.0.windows(2)).enumerate() {
+        *rk = 2.0 * lam * w[0] - (k + 1) as f64 * w[1];
+    }
+    Series(r)
 }
 
 /// The leading zeros of `B^2 - |f|^2` in a stick from a force on its
@@ -495,19 +534,26 @@ impl Walker<'_> {
         let (y, rho) = (regular(&b, &xd, y0, lam), clock.radius(&bound, tau));
         let horizon = clock.horizon(tau, target);
         let quad = quadratics(&y);
-        let bn = bt.div(&quad[0]);
+        let q = b.div(&quad[0]);
+        let bn = match rate {
+            Some(w) => q * w,
+            None => q,
+        };
         let (fx, fy) = (bn * quad[1], bn * quad[2]);
-        let tols = [(&y[0], STEP_TOL), (&y[1], STEP_TOL), (&fx, STEP_TOL), (&fy, STEP_TOL)];
+        let st = self.sp.step_tol;
+        let tols = [(&y[0], st), (&y[1], st), (&fx, st), (&fy, st)];
         let h = Series::step_for(&tols).min(horizon.min(0.5 * rho));
-        let (mut ev, tol) = slip_rate(&xd_tau, &bdot, &quad);
+        let ([r0, r1], tol) = slip_rate(&xd_tau, &bdot, &quad);
         // A rate on 0 to rounding is 0: the slip goes on if it rises.
-        let skip = usize::from(!regain && ev.0[0] <= tol);
-        if skip == 1 {
-            if !slips(ev.0[0], tol, ev.0[1]) {
-                return Ok(self.slip_ends(direction(y0), zeros(ev.0[0], tol)));
-            }
-            ev.0[0] = 0.0;
+        let skip = usize::from(!regain && r0 <= tol);
+        if skip == 1 && !slips(r0, tol, r1) {
+            return Ok(self.slip_ends(direction(y0), zeros(r0, tol)));
         }
+        // The rate's series; its value at the start as decided above
+        // (`w lambda n / n^2`), 0 where it is 0 to rounding and rises.
+        let mut ev = rate_series(&q, lam);
+        let w0 = rate.map_or(1.0, |w| w.0[0]);
+        ev.0[0] = if skip == 1 { 0.0 } else { r0 * w0 / (quad[0].0[0] * quad[0].0[0]) };
         let fall = ev.first_fall(skip, h).map_err(|()| self.stalled("slip"))?;
         let t = fall.map_or(h, |(a, c)| refine(&ev, skip, a, c));
         self.book(&fx, &fy, &bt, t);

@@ -2,24 +2,53 @@
 
 use super::*;
 
-/// The slip rate's series over `n`, along the slip of a plain and of a
-/// scaled half-angle series, is `X'(tau).e(tau) - B'(tau)` evaluated
-/// directly (a wrong sign or factor of a term breaks it at once).
+/// The slip rate's series (`w lambda / n`, [`rate_series`]) along the slip
+/// of a plain and of a scaled half-angle series, by `tau` and by the
+/// logarithmic clock towards a loss of contact, is `X'(tau).e(tau) -
+/// B'(tau)` evaluated directly (a wrong sign or factor of a term, or of
+/// `lam` or `w`, breaks it at once); the value and slope of [`slip_rate`]
+/// are `lambda n` and its central difference.
 #[test]
 fn the_slip_rate_is_its_definition_along_the_slip() {
-    let sp = Spring::new(Drive::sliding(0.3, 0.4, 1.1, 1.2, 0.7), Bound::new(1.0, 0.5));
-    for (tau, y0) in [(0.3, [0.6, 0.8]), (2.0, [-0.28, 0.96]), (4.5, [1.0, 0.0])] {
-        let (cs, sn) = Series::trig(tau);
-        let (b, xd, bdot) = (sp.bound.series(tau, &cs), sp.drive.velocity(&cs, &sn), sn * sp.bound.amp);
+    use super::super::clock::Clock;
+    let direct = |sp: &Spring, tau: f64, e: [f64; 2]| {
+        let v = sp.drive.velocity_at(tau);
+        v[0] * e[0] + v[1] * e[1] - sp.bound.amp * tau.sin()
+    };
+    let flat = Spring::new(Drive::sliding(0.3, 0.4, 1.1, 1.2, 0.7), Bound::new(1.0, 0.5));
+    let lifts = Spring::new(Drive::sliding(0.3, 0.4, 1.1, 1.2, 0.7), Bound::new(1.0, 1.5));
+    let loss = lifts.bound.next_loss(3.0).unwrap();
+    let edge = lifts.bound.edge.unwrap();
+    let log = Clock::Log { loss, s: loss - 4.6, behind: TAU - 2.0 * edge, ahead: 2.0 * edge };
+    let cases = [
+        (&flat, Clock::Tau, 0.3, [0.6, 0.8]),
+        (&flat, Clock::Tau, 2.0, [-0.28, 0.96]),
+        (&flat, Clock::Tau, 4.5, [1.0, 0.0]),
+        (&lifts, log, 4.6, [0.6, -0.8]),
+    ];
+    for (sp, clock, tau, y0) in cases {
+        let (cs, sn, w) = clock.trig(tau);
+        let w = w.unwrap_or(Series::constant(1.0));
+        let (b, xd_tau, bdot) = (sp.bound.series(tau, &cs), sp.drive.velocity(&cs, &sn), sn * sp.bound.amp);
+        let xd = xd_tau.map(|v| v * w);
         for lam in [0.0, growth(&b, &xd, y0)] {
             let y = regular(&b, &xd, y0, lam);
             let quad = quadratics(&y);
-            let (ev, n) = (slip_rate(&xd, &bdot, &quad).0, quad[0]);
+            let n = quad[0];
+            let ev = rate_series(&b.div(&n), lam);
+            let at = |t: f64| (clock.time(tau, t), direction([y[0].eval(t), y[1].eval(t)]));
             for t in [0.0, 0.05, 0.2] {
-                let (v, e) = (sp.drive.velocity_at(tau + t), direction([y[0].eval(t), y[1].eval(t)]));
-                let rate = v[0] * e[0] + v[1] * e[1] - sp.bound.amp * (tau + t).sin();
-                assert!((ev.eval(t) / n.eval(t) - rate).abs() < 1e-13, "{tau} {lam} {t}");
+                let (tt, e) = at(t);
+                let want = direct(sp, tt, e);
+                let got = ev.eval(t) * n.eval(t) / w.eval(t);
+                assert!((got - want).abs() < 1e-13, "{tau} {lam} {t}: {got} {want}");
             }
+            let ([value, slope], _) = slip_rate(&xd_tau, &bdot, &quad);
+            let h = 1e-5;
+            let times_n = |t: f64| direct(sp, at(t).0, at(t).1) * n.eval(t);
+            assert!((value - times_n(0.0)).abs() < 1e-15, "{tau} {lam}: {value}");
+            let diff = (times_n(h) - times_n(-h)) / (2.0 * h);
+            assert!((slope - diff).abs() < 1e-8, "{tau} {lam}: {slope} {diff}");
         }
     }
 }

@@ -1,7 +1,7 @@
 //! The plane's solver on drives the public interface cannot express.
 use super::drive::{Bound, Drive};
 use super::spring::{Spring, Start};
-use super::{orbit, relaxed, PlaneEvaluation};
+use super::{orbit, orbit_to, relaxed, PlaneEvaluation, Precision};
 use crate::{Conditions, Shape};
 use std::f64::consts::TAU;
 
@@ -329,4 +329,39 @@ fn a_leap_inside_the_sticking_states_goes_on_to_where_they_slip() {
     assert!(e.multiplier < 0.9 && e.periods < super::MAX_ORBIT_PERIODS, "{} {}", e.multiplier, e.periods);
     let walk = sp.walk(Start::Force(0.0, f), TAU).unwrap();
     assert!(super::residual(f, &walk) <= 8.0 * f64::EPSILON && walk.events.len() == 4, "{:?}", walk.events);
+}
+
+/// A coarse orbit ([`Precision::Coarse`]: the band search's, a loose
+/// tolerance's) is within its estimate of the exact one, the estimate near
+/// `1e-9` (a coarse walk that were exact would claim `1e-15`; one that
+/// skipped its truncation, nothing), and its walks take fewer steps. A
+/// spring whose bound nearly touches zero (a cone's, `5e-13` from it: its
+/// slips enter the thin layer) is walked exactly however asked (coarsely,
+/// its direction missed the layer's manifold and stepped on through the
+/// layer, 1e5 steps).
+#[test]
+fn a_coarse_orbit_is_within_its_estimate_of_the_exact_one() {
+    let drives = [
+        (Drive::sliding(0.6, 0.0, 0.0, 1.2, 0.7), 0.5),
+        (Drive::sliding(0.2, 0.0, 0.0, 2.3, 1.6), 0.8),
+        (Drive::sliding(0.05, 0.0, 0.0, 0.3, 2.0), 0.9),
+        (Drive::sliding(0.1, 1.0, 0.3, 0.8, 2.0), 0.8),
+    ];
+    for (d, amp) in drives {
+        let sp = Spring::new(d, Bound::new(1.0, amp));
+        let (exact, start) = orbit(&sp).unwrap();
+        let coarse = orbit_to(&sp, Precision::Coarse).unwrap().0;
+        let err = (coarse.ratio.mu_ratio - exact.ratio.mu_ratio)
+            .abs()
+            .max((coarse.transverse_ratio - exact.transverse_ratio).abs());
+        let est = coarse.error_estimate;
+        assert!(err <= est && est > 1e-12 && est < 1e-8, "{d:?} {amp}: {err:e} est {est:e}");
+        let Start::Force(_, f) = start else { panic!() };
+        let steps = |s: &Spring| s.walk(Start::Force(0.0, f), TAU).unwrap().steps;
+        assert!(steps(&sp.coarse()) < steps(&sp), "{d:?} {amp}");
+    }
+    let d = Drive::sliding(0.3, 0.0, 0.0, 1.0, 0.0);
+    let sp = Spring::new(d, Bound::new(0.5000000000005, 0.5));
+    let (exact, coarse) = (orbit(&sp).unwrap().0, orbit_to(&sp, Precision::Coarse).unwrap().0);
+    assert_eq!(exact, coarse);
 }

@@ -28,7 +28,7 @@ fn plane(c: &Conditions, w: f64, psi: f64) -> Evaluation {
 #[test]
 fn matches_the_independent_reference() {
     let cases = data_cases("plane-reference.json");
-    assert_eq!(cases.len(), 12);
+    assert_eq!(cases.len(), 13);
     for case in cases {
         let g = |k: &str| case[k].as_f64().unwrap();
         let c = conditions(g("vhat"), g("amp"), g("tangential_amp"), g("phase"));
