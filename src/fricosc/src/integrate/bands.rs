@@ -5,8 +5,9 @@
 //! Edges: the ends, where a spring starts to lose contact (`G = 1 - amp`,
 //! closed form), where `G` itself is not smooth
 //! ([`crate::contact::Contact::breakpoints`]), and where the sequence changes
-//! (an event appears or disappears: found by bisection to rounding between
-//! [`SCAN`] samples of each piece). What a sequence is, is the caller's.
+//! (an event appears or disappears: found by bisection, to rounding or to
+//! a width the caller sets, between [`SCAN`] samples of each piece). What a
+//! sequence is, is the caller's.
 
 use crate::error::Result;
 
@@ -18,11 +19,14 @@ pub(crate) const SCAN: usize = 32;
 const BISECTION_BUDGET: usize = 16 * 64;
 
 /// The bands' edges over `[0, zmax]` (module docs), `sequence(z)` the phase
-/// sequence of the spring at `z`.
+/// sequence of the spring at `z`, each change found to rounding or to
+/// `resolution` times `zmax` (a sequence known only that well: a band's edge
+/// that far off leaves the quadrature a sliver of the neighbouring band's
+/// means, whose difference vanishes at the edge).
 pub(crate) fn edges<S: PartialEq + Send>(
     c: &dyn crate::contact::Contact,
-    amp: f64,
-    zmax: f64,
+    (amp, zmax): (f64, f64),
+    resolution: f64,
     sequence: &(dyn Fn(f64) -> Result<S> + Sync),
 ) -> Result<Vec<f64>> {
     let mut cuts = vec![0.0, zmax];
@@ -44,7 +48,7 @@ pub(crate) fn edges<S: PartialEq + Send>(
         let (mut budget, found) = (BISECTION_BUDGET, edges.len());
         for k in 0..SCAN {
             let (lo, hi) = ((inside(zs[k]), &seqs[k]), (inside(zs[k + 1]), &seqs[k + 1]));
-            changes(sequence, lo, hi, &mut edges, &mut budget)?;
+            changes(sequence, lo, hi, &mut edges, (&mut budget, resolution * zmax))?;
         }
         if budget == 0 {
             // Changes everywhere are ties of rounding, not regimes: one band.
@@ -58,8 +62,9 @@ pub(crate) fn edges<S: PartialEq + Send>(
 }
 
 /// Every change of the sequence between `a` (sequence `sa`) and `b`, by
-/// bisection to rounding (both halves, so that a band between two samples
-/// of the same sequence at the ends is still found if the midpoint falls in it).
+/// bisection to rounding or to the width `stop` (both halves, so that a
+/// band between two samples of the same sequence at the ends is still found
+/// if the midpoint falls in it).
 ///
 /// Where the sequence is decided by ties of rounding at every `z` (the drive
 /// and the bound moving together, `X' = -B'` for instance, where the spring
@@ -72,18 +77,18 @@ fn changes<S: PartialEq>(
     (a, sa): (f64, &S),
     (b, sb): (f64, &S),
     out: &mut Vec<f64>,
-    budget: &mut usize,
+    (budget, stop): (&mut usize, f64),
 ) -> Result<()> {
     if sa == sb {
         return Ok(());
     }
     let m = 0.5 * (a + b);
-    if m <= a || m >= b || b - a <= 4.0 * f64::EPSILON * b.abs() || *budget == 0 {
+    if m <= a || m >= b || b - a <= (4.0 * f64::EPSILON * b.abs()).max(stop) || *budget == 0 {
         out.push(m);
         return Ok(());
     }
     *budget -= 1;
     let sm = sequence(m)?;
-    changes(sequence, (a, sa), (m, &sm), out, budget)?;
-    changes(sequence, (m, &sm), (b, sb), out, budget)
+    changes(sequence, (a, sa), (m, &sm), out, (&mut *budget, stop))?;
+    changes(sequence, (m, &sm), (b, sb), out, (budget, stop))
 }

@@ -13,7 +13,10 @@
 //! difference from the one before (an event that appears between two
 //! samples of the band search leaves a kink that the coefficients' decay
 //! would not see). A pass's nodes, and the search's samples, are solved on
-//! every core (`parallel`; the same bits).
+//! every core (`parallel`; the same bits). The search's orbits are coarse
+//! (`Precision::Coarse`), and so are the nodes' from a tolerance of
+//! [`COARSE_TOL`]; a node's search starts between the starts the passes
+//! before found on either side of it.
 //!
 //! # The edge of the contact
 //! A spring whose bound is small against the drive slips along a direction
@@ -29,7 +32,7 @@
 //! springs' own estimates integrated by the same rule, and rounding.
 
 use super::drive::{Bound, Drive};
-use super::spring::Spring;
+use super::spring::{Spring, Start};
 use super::{orbit_to, period_steps, PlaneEvaluation, Precision};
 use crate::contact::Contact;
 use crate::error::{Error, Result};
@@ -58,11 +61,20 @@ const TAIL_ORDER: usize = 32;
 /// ([`Precision::Coarse`]: each spring's means within about `1e-9` of its
 /// `<B>`, and estimated).
 const COARSE_TOL: f64 = 1e-7;
+/// How closely (relative to `z_max`) a band's edge is found: about where
+/// the coarse orbits of the band search place it. A phase that appears at
+/// the edge lasts like the square root of the distance from it (a touch
+/// that becomes a crossing) and changes the means like its cube, so an edge
+/// off by `d` leaves the integral about `d^2.5` off: `1e-25` here.
+const EDGE_RESOLUTION: f64 = 1e-10;
 /// Rounding of one spring's means, in eps of its bound's scale.
 const SPRING_ROUNDING: f64 = 8.0;
 
 /// What the nodes of a quadrature learned besides their means (from every
-/// core): the first error recorded, the largest multiplier, the periods walked.
+/// core): the first error recorded, the largest multiplier, the periods
+/// walked, the orbits' starts (a pass's nodes start from those of the
+/// passes before it in their band: not from its own, whose order across
+/// cores would make the bits depend on timing).
 #[derive(Default)]
 struct Springs(Mutex<Learned>);
 
@@ -71,21 +83,44 @@ struct Learned {
     error: Option<Error>,
     multiplier: f64,
     periods: usize,
+    /// Each solved spring's `z` and its orbit's force at `tau = 0`.
+    starts: Vec<(f64, [f64; 2])>,
+}
+
+/// A start for the spring at `z` from those recorded (0 where none is):
+/// between the nearest on either side, linear (within about the square of
+/// their distance of the orbit's start, where Newton is near), else the
+/// nearest.
+fn nearest(starts: &[(f64, [f64; 2])], z: f64) -> [f64; 2] {
+    let below = starts.iter().filter(|s| s.0 <= z).max_by(|a, b| a.0.total_cmp(&b.0));
+    let above = starts.iter().filter(|s| s.0 > z).min_by(|a, b| a.0.total_cmp(&b.0));
+    match (below, above) {
+        (Some(&(a, fa)), Some(&(b, fb))) => {
+            let t = (z - a) / (b - a);
+            [fa[0] + t * (fb[0] - fa[0]), fa[1] + t * (fb[1] - fa[1])]
+        }
+        (Some(s), None) | (None, Some(s)) => s.1,
+        (None, None) => [0.0; 2],
+    }
 }
 
 impl Springs {
-    /// The ratios `(mu, transverse)` of the spring at `z`, recorded; `None`
-    /// after the first error.
-    fn solve(&self, spring: &Spring, precision: Precision) -> Option<[f64; 3]> {
+    /// The ratios `(mu, transverse)` and the estimate of the spring at `z`,
+    /// its search from `from`, recorded with its start; `None` after the
+    /// first error.
+    fn solve(&self, z: f64, spring: &Spring, precision: Precision, from: [f64; 2]) -> Option<[f64; 3]> {
         if self.learned().error.is_some() {
             return None;
         }
-        let solved = orbit_to(spring, precision);
+        let solved = orbit_to(spring, precision, from);
         let mut learned = self.learned();
         match solved {
-            Ok((e, _)) => {
+            Ok((e, start)) => {
                 learned.multiplier = learned.multiplier.max(e.multiplier);
                 learned.periods += e.periods;
+                if let Start::Force(_, f) = start {
+                    learned.starts.push((z, f));
+                }
                 Some([e.ratio.mu_ratio, e.transverse_ratio, e.error_estimate])
             }
             Err(err) => {
@@ -93,6 +128,11 @@ impl Springs {
                 None
             }
         }
+    }
+
+    /// The starts recorded so far in `[a, b]`.
+    fn starts_within(&self, a: f64, b: f64) -> Vec<(f64, [f64; 2])> {
+        self.learned().starts.iter().copied().filter(|&(z, _)| a <= z && z <= b).collect()
     }
 
     /// The record (a panic elsewhere that poisoned it left it whole: each
@@ -129,16 +169,16 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     let zcap = walked_up_to(&spring, zmax);
     let springs = Springs::default();
     // A sequence of events needs no exact means: its thresholds move by
-    // about the coarse walks' error, and a band's edge that far off costs
-    // the integral about its square.
-    let sequence = |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit_to(&spring(z), Precision::Coarse)?.0)) };
+    // about the coarse walks' error ([`EDGE_RESOLUTION`]).
+    let sequence =
+        |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit_to(&spring(z), Precision::Coarse, [0.0; 2])?.0)) };
     let precision = if tol >= COARSE_TOL { Precision::Coarse } else { Precision::Exact };
-    let edges = bands::edges(c, amp, zcap, &sequence)?;
-    let node = |z: f64| {
+    let edges = bands::edges(c, (amp, zcap), EDGE_RESOLUTION, &sequence)?;
+    let node = |z: f64, from: [f64; 2]| {
         let sp = spring(z);
         let b = sp.bound.period_integral() / TAU;
         let scale = sp.bound.level.abs() + amp;
-        match springs.solve(&sp, precision) {
+        match springs.solve(z, &sp, precision, from) {
             Some([mu, tr, err]) => ([mu * b, tr * b, b, err * b], scale),
             None => ([0.0; 4], scale),
         }
@@ -151,7 +191,10 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     for w in edges.windows(2).filter(|w| w[1] > w[0]) {
         let r = ladder.run(
             FIRST_ORDER,
-            |m| cosine_pass_parallel(w[0], w[1], m, [true; 4], &node),
+            |m| {
+                let known = springs.starts_within(w[0], w[1]);
+                cosine_pass_parallel(w[0], w[1], m, [true; 4], &|z| node(z, nearest(&known, z)))
+            },
             [scale, scale, scale, f64::INFINITY],
         );
         truncation += r.error[0].max(r.error[1]) + r.error[2];
@@ -210,7 +253,7 @@ impl Tail {
         }
         let mean = |z: f64| ([spring(z).bound.period_integral() / TAU], 0.0);
         let bound = cosine_pass(zcap, zmax, TAIL_ORDER, [true], &mean).sum[0].max(0.0);
-        let ratios = |z: f64| orbit_to(&spring(z), precision).ok().map(|(e, _)| e);
+        let ratios = |z: f64| orbit_to(&spring(z), precision, [0.0; 2]).ok().map(|(e, _)| e);
         let last = spring(zcap).bound;
         let half = c.level(1.0 - (0.5 * (last.level + amp) - amp));
         match (ratios(zcap), (half > zcap && half < zmax).then(|| ratios(half)).flatten()) {

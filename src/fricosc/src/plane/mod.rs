@@ -234,11 +234,13 @@ const COARSE_CLOSE: f64 = 1e-9;
 
 /// The attracting orbit of `sp` and where it starts at `tau = 0`, exact.
 fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
-    orbit_to(sp, Precision::Exact)
+    orbit_to(sp, Precision::Exact, [0.0; 2])
 }
 
-/// The attracting orbit of `sp` walked to `precision`, and where it starts.
-pub(crate) fn orbit_to(sp: &Spring, precision: Precision) -> Result<(PlaneEvaluation, Start)> {
+/// The attracting orbit of `sp` walked to `precision`, and where it starts,
+/// searched from the force `from` at `tau = 0` (0, or a neighbour's start:
+/// only the way to the orbit depends on it).
+pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Result<(PlaneEvaluation, Start)> {
     let total = sp.bound.period_integral();
     if sp.bound.amp >= sp.bound.level {
         let walk = sp.walk(Start::Contact(0.0), TAU)?;
@@ -249,7 +251,7 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision) -> Result<(PlaneEvalua
     // within about the square of it, and two exact walks close the search.
     let coarse = sp.coarse();
     let mut cur = &coarse;
-    let mut f = [0.0; 2];
+    let mut f = from;
     let mut periods = 1;
     let mut w = cur.walk(Start::Force(0.0, f), TAU)?;
     let mut leaping = false;
