@@ -1,11 +1,11 @@
 //! The time a slip step's series run in: `tau`, or a logarithmic clock
-//! towards a loss of contact.
+//! towards a loss of contact or away from a contact regained.
 
 use super::drive::Bound;
 use super::series::{Series, INVERSE_FACTORIALS, ORDER, RECIPROCALS};
 
-/// How close to a loss of contact (against the contact's length) a slip's
-/// steps run in the log clock.
+/// How close to a loss of contact, or to the contact regained (against the
+/// contact's length), a slip's steps run in a log clock.
 pub(super) const LOG_REACH: f64 = 0.25;
 
 /// The time a slip step's series run in: `tau`, or towards a loss of
@@ -16,10 +16,17 @@ pub(super) const LOG_REACH: f64 = 0.25;
 /// behind (`behind` away in `tau`: `t = ln(s/behind)`) and ahead (`t =
 /// ln(s/ahead) + i pi`), where in `tau` they reach only the loss itself: a
 /// step covers a fixed fraction of `ln s`, not of `s`.
+///
+/// After a contact regained at `contact` (`s = tau - contact` ago), the
+/// mirror image `Grow`: `tau = contact + s e^t`, whose series reach the loss
+/// ahead (`window` away from the contact: `t = ln(window/s)`) and the loss
+/// before the contact (`gap` before it: `t = ln(gap/s) + i pi`), not the
+/// contact itself.
 #[derive(Debug, Clone, Copy)]
 pub(super) enum Clock {
     Tau,
     Log { loss: f64, s: f64, behind: f64, ahead: f64 },
+    Grow { contact: f64, s: f64, gap: f64, window: f64 },
 }
 
 impl Clock {
@@ -35,6 +42,11 @@ impl Clock {
                 let (c, sn) = trig_along(tau, &w);
                 (c, sn, Some(w))
             }
+            Clock::Grow { s, .. } => {
+                let w = Series(INVERSE_FACTORIALS) * s;
+                let (c, sn) = trig_along(tau, &w);
+                (c, sn, Some(w))
+            }
         }
     }
 
@@ -43,6 +55,7 @@ impl Clock {
         match *self {
             Clock::Tau => bound.singularity_distance(tau),
             Clock::Log { s, behind, ahead, .. } => (behind / s).ln().min((ahead / s).ln().hypot(std::f64::consts::PI)),
+            Clock::Grow { s, gap, window, .. } => (window / s).ln().min((gap / s).ln().hypot(std::f64::consts::PI)),
         }
     }
 
@@ -52,6 +65,7 @@ impl Clock {
             Clock::Tau => target - tau,
             Clock::Log { loss, s, .. } if target < loss => (s / (loss - target)).ln(),
             Clock::Log { .. } => f64::INFINITY,
+            Clock::Grow { contact, s, .. } => ((target - contact) / s).ln(),
         }
     }
 
@@ -60,6 +74,7 @@ impl Clock {
         match *self {
             Clock::Tau => tau + t,
             Clock::Log { loss, s, .. } => loss - s * (-t).exp(),
+            Clock::Grow { contact, s, .. } => contact + s * t.exp(),
         }
     }
 }
@@ -98,8 +113,9 @@ mod tests {
     use crate::plane::series::LEN;
 
     /// `cos` and `sin` along `u' = 1` are [`Series::trig`]; along `u = l - s
-    /// e^(-t)` they are `cos(l - s e^(-t))` (the log clock towards a loss)
-    /// within the steps it takes (at `t = 1` the truncation is 1e-12).
+    /// e^(-t)` they are `cos(l - s e^(-t))` (the log clock towards a loss),
+    /// and along `u = l + s e^t` (away from a contact) `cos(l + s e^t)`,
+    /// within the steps they take (at `t = 1` the truncation is 1e-12).
     #[test]
     fn trig_along_a_series_by_its_values() {
         let (c, s) = Series::trig(0.9);
@@ -118,5 +134,26 @@ mod tests {
             );
         }
         assert_eq!(decaying(2.0).0[..3], [2.0, -2.0, 1.0]);
+        // Away from a contact at `l`, `u = l + s e^t`: `Clock::Grow`'s series.
+        let s = 0.02;
+        let grow = Clock::Grow { contact: l, s, gap: 10.0, window: 4.0 };
+        let (cg, sg, w) = grow.trig(l + s);
+        let w = w.unwrap();
+        for t in [0.25f64, 0.5, 1.0] {
+            let u = l + s * t.exp();
+            // To the rounding of the argument `u` (about 5) itself.
+            let (ec, es) = (cg.eval(t) - u.cos(), sg.eval(t) - u.sin());
+            assert!(ec.abs().max(es.abs()) < 2.0 * f64::EPSILON * u, "{t}: {ec:e} {es:e}");
+            assert!((w.eval(t) - s * t.exp()).abs() < 4e-16 * u, "{t}");
+            assert!((grow.time(l + s, t) - u).abs() <= 4.0 * f64::EPSILON * u);
+        }
+        // Its horizon reaches a target in its time; its radius is the loss
+        // ahead (`ln(4/s)`) where the loss behind the contact (`|ln(10/s) +
+        // i pi|`) is farther, that loss where it is nearer.
+        assert!((grow.time(l + s, grow.horizon(l + s, l + 0.5)) - (l + 0.5)).abs() < 1e-15);
+        let bound = Bound::new(1.0, 2.0);
+        assert_eq!(grow.radius(&bound, l + s), (4.0f64 / s).ln());
+        let near = Clock::Grow { contact: l, s, gap: 0.01, window: 4.0 };
+        assert!((near.radius(&bound, l + s) - (0.5f64).ln().hypot(std::f64::consts::PI)).abs() < 1e-15);
     }
 }

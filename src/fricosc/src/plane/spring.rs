@@ -514,6 +514,16 @@ impl Walker<'_> {
             (Some(l), Some(e)) if !regain && l - tau <= LOG_REACH * (TAU - 2.0 * e) => {
                 Clock::Log { loss: l, s: l - tau, behind: TAU - 2.0 * e, ahead: 2.0 * e }
             }
+            (_, Some(e)) if !regain => {
+                // Away from the contact regained last (at `2 pi k + t_c`).
+                let contact = TAU * ((tau - e) / TAU).floor() + e;
+                let s = tau - contact;
+                if s > 0.0 && s <= LOG_REACH * (TAU - 2.0 * e) {
+                    Clock::Grow { contact, s, gap: 2.0 * e, window: TAU - 2.0 * e }
+                } else {
+                    Clock::Tau
+                }
+            }
             _ => Clock::Tau,
         };
         self.slip_step(y0, regain, clock, target, loss)

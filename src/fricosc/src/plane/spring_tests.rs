@@ -4,7 +4,8 @@ use super::*;
 
 /// The slip rate's series (`w lambda / n`, [`rate_series`]) along the slip
 /// of a plain and of a scaled half-angle series, by `tau` and by the
-/// logarithmic clock towards a loss of contact, is `X'(tau).e(tau) -
+/// logarithmic clocks towards a loss of contact and away from a contact
+/// regained, is `X'(tau).e(tau) -
 /// B'(tau)` evaluated directly (a wrong sign or factor of a term, or of
 /// `lam` or `w`, breaks it at once); the value and slope of [`slip_rate`]
 /// are `lambda n` and its central difference.
@@ -20,11 +21,14 @@ fn the_slip_rate_is_its_definition_along_the_slip() {
     let loss = lifts.bound.next_loss(3.0).unwrap();
     let edge = lifts.bound.edge.unwrap();
     let log = Clock::Log { loss, s: loss - 4.6, behind: TAU - 2.0 * edge, ahead: 2.0 * edge };
+    let contact = TAU + edge;
+    let grow = Clock::Grow { contact, s: 0.03, gap: 2.0 * edge, window: TAU - 2.0 * edge };
     let cases = [
         (&flat, Clock::Tau, 0.3, [0.6, 0.8]),
         (&flat, Clock::Tau, 2.0, [-0.28, 0.96]),
         (&flat, Clock::Tau, 4.5, [1.0, 0.0]),
         (&lifts, log, 4.6, [0.6, -0.8]),
+        (&lifts, grow, contact + 0.03, [0.28, 0.96]),
     ];
     for (sp, clock, tau, y0) in cases {
         let (cs, sn, w) = clock.trig(tau);

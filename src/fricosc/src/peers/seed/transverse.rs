@@ -90,7 +90,9 @@ pub(super) fn sideways_force() -> Claim {
                     let excess = if t.is_nan() || m.is_nan() { f64::NEG_INFINITY } else { t.abs() - m };
                     larger += usize::from(excess > 0.0);
                     total += 1;
-                    if excess > best.0 {
+                    // `psi + pi` is the mirror image (`X_y` reversed), its
+                    // excess the same to rounding: the first of a tie is kept.
+                    if excess > best.0 + 1e-12 {
                         best = (excess, [vhat, amp, w, psi], t, m);
                     }
                 }
