@@ -270,10 +270,15 @@ fn quick_bench_writes_json_csv_and_svg_without_failures() {
             assert!(r["time_ratio"].as_f64().unwrap() > 1.0, "stepping beat the exact solver: {r}");
         }
     }
-    // Points a second on one core for the four kinds (stiff, on a system; flat, curved).
+    // Points a second on one core for the six kinds (stiff, on a system, in
+    // the plane; flat, curved), the plane's with their targets.
     let kinds: Vec<&str> =
         report["throughput"].as_array().unwrap().iter().map(|t| t["kind"].as_str().unwrap()).collect();
-    assert!(kinds.len() == 4 && kinds[2].contains("on a system") && kinds[3].contains("parabolic"), "{kinds:?}");
+    assert!(kinds.len() == 6 && kinds[2].contains("on a system") && kinds[3].contains("parabolic"), "{kinds:?}");
+    assert!(kinds[4].starts_with("flat in the plane") && kinds[5].starts_with("parabolic in the plane"));
+    let targets: Vec<Option<f64>> =
+        report["throughput"].as_array().unwrap().iter().map(|t| t["target"].as_f64()).collect();
+    assert_eq!(targets, [None, None, None, None, Some(2e4), Some(200.0)]);
     assert!(report["throughput"]
         .as_array()
         .unwrap()

@@ -106,11 +106,15 @@ pub struct Throughput {
     pub kind: String,
     /// Points a second on one core (the best of a few samples).
     pub points_per_second_per_core: f64,
+    /// The points a second on one core the kind should reach, where one is set.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target: Option<f64>,
 }
 
-/// [`Throughput`] of the four kinds of point: the stiff flat punch and
-/// paraboloid, and both on a system (`kappa` 1, `Omega` 0.5, `zeta` 0.05;
-/// the paraboloid at its default 256 springs).
+/// [`Throughput`] of the six kinds of point: the stiff flat punch and
+/// paraboloid, both on a system (`kappa` 1, `Omega` 0.5, `zeta` 0.05; the
+/// paraboloid at its default 256 springs), and both in the plane ([`plane`]'s
+/// point, one thread: issue 62's targets, 50 us and 5 ms a point).
 fn throughput(tm: Timing) -> fricosc::Result<Vec<Throughput>> {
     let sys = fricosc::system::System::new(1.0, 0.5, 0.05)?;
     let c = fricosc::Conditions::vhat(0.15, 0.5)?;
@@ -126,8 +130,9 @@ fn throughput(tm: Timing) -> fricosc::Result<Vec<Throughput>> {
         shape.ratio(&c)?;
         let k = if system.is_some() { 2 } else { tm.k };
         let per = time_per_call(k, tm.sample, || shape.ratio(&c).map_or(f64::NAN, |r| r.mu_ratio));
-        out.push(Throughput { kind: kind.into(), points_per_second_per_core: 1.0 / per });
+        out.push(Throughput { kind: kind.into(), points_per_second_per_core: 1.0 / per, target: None });
     }
+    out.extend(plane::throughput(tm)?);
     Ok(out)
 }
 
@@ -454,7 +459,12 @@ pub fn run(a: BenchArgs) -> Result<()> {
         );
     }
     for t in &report.throughput {
-        o += &format!("{}: {:.3e} points a second on one core\n", t.kind, t.points_per_second_per_core);
+        o += &format!(
+            "{}: {:.3e} points a second on one core{}\n",
+            t.kind,
+            t.points_per_second_per_core,
+            t.target.map_or(String::new(), |g| format!("; target at least {g:.0}"))
+        );
     }
     for c in &report.instructions {
         o += &format!(

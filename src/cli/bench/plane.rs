@@ -11,7 +11,7 @@
 //! `src/fricosc/tests/library/plane_curved.rs`), and its exact points are the
 //! looser tolerances measured against it.
 
-use super::{time_per_call, Case, Collector, Point, Ratio, Timing};
+use super::{time_per_call, Case, Collector, Point, Ratio, Throughput, Timing};
 use fricosc::plane::Transverse;
 use fricosc::stepper::Stepping;
 use fricosc::{Conditions, Shape};
@@ -62,6 +62,33 @@ fn conditions(tol: Option<f64>) -> fricosc::Result<(Conditions, Transverse)> {
 
 fn exact(shape: &Shape, tol: Option<f64>) -> fricosc::Result<fricosc::Evaluation> {
     conditions(tol).and_then(|(c, tw)| shape.evaluate(&c.with_transverse(tw)))
+}
+
+/// Points a second on one core (a pool of one thread) at the point, at the
+/// default tolerance: the flat punch and the paraboloid, each with the target
+/// of issue 62 (a point in 50 us and in 5 ms).
+pub(super) fn throughput(tm: Timing) -> fricosc::Result<Vec<Throughput>> {
+    let [vhat, amp, w, psi] = POINT;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .map_err(|e| fricosc::Error::Internal { what: format!("a pool of one thread: {e}") })?;
+    let kinds = [("flat", 2e4, tm.k), ("parabolic", 200.0, 2)];
+    let mut out = vec![];
+    for (name, target, k) in kinds {
+        let shape = Shape::parse(name)?;
+        let (c, tw) = conditions(None)?;
+        let c = c.with_transverse(tw);
+        shape.evaluate(&c)?;
+        let per =
+            pool.install(|| time_per_call(k, tm.sample, || shape.evaluate(&c).map_or(f64::NAN, |e| e.ratio.mu_ratio)));
+        out.push(Throughput {
+            kind: format!("{name} in the plane, vhat {vhat}, amp {amp}, W {w}, psi {psi}"),
+            points_per_second_per_core: 1.0 / per,
+            target: Some(target),
+        });
+    }
+    Ok(out)
 }
 
 /// The flat punch against its 20-digit reference: the exact solver at the
