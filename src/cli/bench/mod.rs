@@ -459,12 +459,8 @@ pub fn run(a: BenchArgs) -> Result<()> {
         );
     }
     for t in &report.throughput {
-        o += &format!(
-            "{}: {:.3e} points a second on one core{}\n",
-            t.kind,
-            t.points_per_second_per_core,
-            t.target.map_or(String::new(), |g| format!("; target at least {g:.0}"))
-        );
+        let target = t.target.map_or(String::new(), |g| format!("; target at least {g:.0}"));
+        o += &format!("{}: {:.3e} points a second on one core{target}\n", t.kind, t.points_per_second_per_core);
     }
     for c in &report.instructions {
         o += &format!(

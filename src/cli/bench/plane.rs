@@ -69,26 +69,18 @@ fn exact(shape: &Shape, tol: Option<f64>) -> fricosc::Result<fricosc::Evaluation
 /// of issue 62 (a point in 50 us and in 5 ms).
 pub(super) fn throughput(tm: Timing) -> fricosc::Result<Vec<Throughput>> {
     let [vhat, amp, w, psi] = POINT;
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(1)
-        .build()
-        .map_err(|e| fricosc::Error::Internal { what: format!("a pool of one thread: {e}") })?;
-    let kinds = [("flat", 2e4, tm.k), ("parabolic", 200.0, 2)];
-    let mut out = vec![];
-    for (name, target, k) in kinds {
+    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build();
+    let pool = one.map_err(|e| fricosc::Error::Internal { what: format!("a pool of one thread: {e}") })?;
+    let c = conditions(None).map(|(c, tw)| c.with_transverse(tw))?;
+    let mu = |shape: &Shape| shape.evaluate(&c).map_or(f64::NAN, |e| e.ratio.mu_ratio);
+    let of = |(name, target, k): (&str, f64, usize)| {
         let shape = Shape::parse(name)?;
-        let (c, tw) = conditions(None)?;
-        let c = c.with_transverse(tw);
         shape.evaluate(&c)?;
-        let per =
-            pool.install(|| time_per_call(k, tm.sample, || shape.evaluate(&c).map_or(f64::NAN, |e| e.ratio.mu_ratio)));
-        out.push(Throughput {
-            kind: format!("{name} in the plane, vhat {vhat}, amp {amp}, W {w}, psi {psi}"),
-            points_per_second_per_core: 1.0 / per,
-            target: Some(target),
-        });
-    }
-    Ok(out)
+        let per = pool.install(|| time_per_call(k, tm.sample, || mu(&shape)));
+        let kind = format!("{name} in the plane, vhat {vhat}, amp {amp}, W {w}, psi {psi}");
+        Ok(Throughput { kind, points_per_second_per_core: 1.0 / per, target: Some(target) })
+    };
+    [("flat", 2e4, tm.k), ("parabolic", 200.0, 2)].into_iter().map(of).collect()
 }
 
 /// The flat punch against its 20-digit reference: the exact solver at the

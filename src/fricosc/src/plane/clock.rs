@@ -3,10 +3,11 @@
 
 use super::drive::Bound;
 use super::series::{Series, INVERSE_FACTORIALS, ORDER, RECIPROCALS};
+use std::f64::consts::TAU;
 
 /// How close to a loss of contact, or to the contact regained (against the
 /// contact's length), a slip's steps run in a log clock.
-pub(super) const LOG_REACH: f64 = 0.25;
+const LOG_REACH: f64 = 0.25;
 
 /// The time a slip step's series run in: `tau`, or towards a loss of
 /// contact at `loss` (a simple zero of `B`, `s = loss - tau` away) the log
@@ -30,6 +31,23 @@ pub(super) enum Clock {
 }
 
 impl Clock {
+    /// The clock of a slip step from `tau` under `bound` (`loss`, its next
+    /// loss of contact, if any): within [`LOG_REACH`] of the contact's length
+    /// before the loss, `Log`; as near after the contact regained last (at
+    /// `2 pi k + t_c`), `Grow`; else `Tau`.
+    pub(super) fn for_slip(bound: &Bound, tau: f64, loss: Option<f64>) -> Clock {
+        let Some(e) = bound.edge else { return Clock::Tau };
+        let (window, reach) = (TAU - 2.0 * e, LOG_REACH * (TAU - 2.0 * e));
+        let contact = TAU * ((tau - e) / TAU).floor() + e;
+        match loss {
+            Some(l) if l - tau <= reach => Clock::Log { loss: l, s: l - tau, behind: window, ahead: 2.0 * e },
+            _ if tau > contact && tau - contact <= reach => {
+                Clock::Grow { contact, s: tau - contact, gap: 2.0 * e, window }
+            }
+            _ => Clock::Tau,
+        }
+    }
+
     /// `cos tau`, `sin tau` and `dtau/dt` (`None`: 1) as series in the clock's time.
     pub(super) fn trig(&self, tau: f64) -> (Series, Series, Option<Series>) {
         match *self {

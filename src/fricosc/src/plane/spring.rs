@@ -25,7 +25,7 @@
 //! The layer also holds a touch of zero (`amp = level`) and a window of
 //! contact that barely closes.
 
-use super::clock::{Clock, LOG_REACH};
+use super::clock::Clock;
 use super::drive::{Bound, Drive};
 use super::layer::{self, Layer, ON_MANIFOLD};
 use super::series::{Series, LEN, ORDER, RECIPROCALS};
@@ -510,22 +510,7 @@ impl Walker<'_> {
             }
         }
         // A slip from contact starts inside the layer, on its manifold (above).
-        let clock = match (loss, bound.edge) {
-            (Some(l), Some(e)) if !regain && l - tau <= LOG_REACH * (TAU - 2.0 * e) => {
-                Clock::Log { loss: l, s: l - tau, behind: TAU - 2.0 * e, ahead: 2.0 * e }
-            }
-            (_, Some(e)) if !regain => {
-                // Away from the contact regained last (at `2 pi k + t_c`).
-                let contact = TAU * ((tau - e) / TAU).floor() + e;
-                let s = tau - contact;
-                if s > 0.0 && s <= LOG_REACH * (TAU - 2.0 * e) {
-                    Clock::Grow { contact, s, gap: 2.0 * e, window: TAU - 2.0 * e }
-                } else {
-                    Clock::Tau
-                }
-            }
-            _ => Clock::Tau,
-        };
+        let clock = if regain { Clock::Tau } else { Clock::for_slip(&bound, tau, loss) };
         self.slip_step(y0, regain, clock, target, loss)
     }
 
