@@ -218,7 +218,7 @@ const MAX_ORBIT_PERIODS: usize = 2000;
 const MAX_HALVINGS: usize = 6;
 
 /// How closely an orbit is walked: to full precision, or by
-/// [`Spring::coarse`] walks only (about `1e-10` a period, within its
+/// [`Spring::coarse`] walks only (about `1e-9` a period, within its
 /// estimate: a band search's sequence of events, a loose tolerance).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Precision {

@@ -36,8 +36,8 @@ use std::f64::consts::TAU;
 
 /// A step's truncation target, relative to the state (`|y| = 1`, `|f| <= 1`).
 const STEP_TOL: f64 = 1e-17;
-/// The target of a [`Spring::coarse`] walk's steps: about `1e-10` a period,
-/// far below the residuals it serves, and `(1e-17/1e-11)^(1/ORDER)`, 1.8
+/// The target of a [`Spring::coarse`] walk's steps: about `1e-9` a period,
+/// far below the residuals it serves, and `(1e-17/1e-9)^(1/ORDER)`, 2.2
 /// times, longer steps.
 const COARSE_STEP_TOL: f64 = 1e-9;
 /// The longest stick step (the series are entire; this keeps `h^k` tame).
@@ -132,7 +132,7 @@ impl Spring {
         Spring { drive, bound, layer: Layer::of(&drive, &bound), step_tol: STEP_TOL }
     }
 
-    /// The same spring walked to about `1e-10` a period ([`COARSE_STEP_TOL`]):
+    /// The same spring walked to about `1e-9` a period ([`COARSE_STEP_TOL`]):
     /// for the search of an orbit far from it. Not where it has a thin layer
     /// (a bound that nearly touches zero): a slip enters it on the layer's
     /// manifold only to [`ON_MANIFOLD`], which a coarse walk's direction
