@@ -16,6 +16,7 @@
 mod clock;
 mod curved;
 mod drive;
+mod fused;
 mod history;
 mod layer;
 mod series;

@@ -400,7 +400,7 @@ fn slips_on_contact(xd: [f64; 2], xa: [f64; 2], beta: f64, level: f64) -> bool {
 /// that size brings to the force `B (c2, s2)/n`, out of the series.
 fn regular(b: &Series, xd: &[Series; 2], y0: [f64; 2], lam: f64) -> [Series; 2] {
     let half = *b * 2.0;
-    let (ma, mb) = (xd[0].div(&half), xd[1].div(&half));
+    let [ma, mb] = Series::div_pair(xd, &half);
     let (mut y1, mut y2) = (Series::constant(y0[0]), Series::constant(y0[1]));
     let (mut s1, mut s2) = ([0.0; ORDER], [0.0; ORDER]);
     for k in 0..ORDER {
@@ -429,8 +429,8 @@ fn growth(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> f64 {
 
 /// `n = |y|^2`, `c2 = y2^2 - y1^2`, `s2 = 2 y1 y2`: `e = (c2, s2)/n`.
 fn quadratics(y: &[Series; 2]) -> [Series; 3] {
-    let (q0, q1) = (y[0].square(), y[1].square());
-    [q0 + q1, q1 - q0, y[0] * y[1] * 2.0]
+    let [q0, q1, p] = Series::quadratics(y);
+    [q0 + q1, q1 - q0, p * 2.0]
 }
 
 /// The slip rate `lambda = X'.e - B'` times `n` (of any scale of `y`),
@@ -484,11 +484,11 @@ impl Walker<'_> {
     /// One slip step along the half-angle series until the slip rate falls through 0.
     fn slip(&mut self, y0: [f64; 2], regain: bool, end: f64) -> Result<Phase> {
         let (tau, bound) = (self.tau, self.sp.bound);
-        let b = bound.series(tau, &Series::trig(tau).0);
         let loss = bound.next_loss(tau).filter(|&l| l <= end);
         if let (Some(l), false) = (bound.next_loss(tau), regain) {
             // The tail before a loss is booked along the slip's direction (a
             // walk that stops inside it, at `end`, goes on from there).
+            let b = bound.series(tau, &Series::trig(tau).0);
             let rest = b.integral(l - tau);
             if l - tau < 0.5 && rest <= LOSS_TAIL {
                 let (e, stop) = (direction(y0), l.min(end));
@@ -534,7 +534,7 @@ impl Walker<'_> {
             Some(w) => q * w,
             None => q,
         };
-        let (fx, fy) = (bn * quad[1], bn * quad[2]);
+        let [fx, fy] = bn.mul_pair(&quad[1], &quad[2]);
         let st = self.sp.step_tol;
         let tols = [(&y[0], st), (&y[1], st), (&fx, st), (&fy, st)];
         let h = Series::step_for(&tols).min(horizon.min(0.5 * rho));
