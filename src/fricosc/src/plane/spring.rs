@@ -427,6 +427,13 @@ fn growth(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> f64 {
     }
 }
 
+/// The truncation of `int_0^h` of the series `f`: its omitted terms
+/// `a_k t^k`, `k > N`, integrate to `a_k h^(k+1)/(k + 1)`, at most `h/(N +
+/// 2)` times their sum at `h`, which [`Series::tail`] estimates.
+fn integral_tail(f: &Series, h: f64) -> f64 {
+    f.tail(h) * h / (ORDER + 2) as f64
+}
+
 /// `n = |y|^2`, `c2 = y2^2 - y1^2`, `s2 = 2 y1 y2`: `e = (c2, s2)/n`.
 fn quadratics(y: &[Series; 2]) -> [Series; 3] {
     let [q0, q1, p] = Series::quadratics(y);
@@ -536,8 +543,12 @@ impl Walker<'_> {
         };
         let [fx, fy] = bn.mul_pair(&quad[1], &quad[2]);
         let st = self.sp.step_tol;
-        let tols = [(&y[0], st), (&y[1], st), (&fx, st), (&fy, st)];
-        let h = Series::step_for(&tols).min(horizon.min(0.5 * rho));
+        // The force's series serve its integral, whose truncation is about
+        // `h/(N + 2)` times the series' at `h` ([`integral_tail`]): they may
+        // stop short of `st` by that factor, at the step the direction's allow.
+        let cap = Series::step_for(&[(&y[0], st), (&y[1], st)]).min(horizon.min(0.5 * rho));
+        let sf = st * (ORDER + 2) as f64 / cap;
+        let h = Series::step_for(&[(&fx, sf), (&fy, sf)]).min(cap);
         let ([r0, r1], tol) = slip_rate(&xd_tau, &bdot, &quad);
         // A rate on 0 to rounding is 0: the slip goes on if it rises.
         let skip = usize::from(!regain && r0 <= tol);
@@ -554,7 +565,8 @@ impl Walker<'_> {
         self.book(&fx, &fy, &bt, t);
         // The force's tail on this step, and the direction's (an angle), felt
         // by a force of about this size for up to a period.
-        self.truncation += (fx.tail(h) + fy.tail(h)) * h + 2.0 * (y[0].tail(h) + y[1].tail(h)) * b.0[0].abs() * TAU;
+        self.truncation +=
+            integral_tail(&fx, h) + integral_tail(&fy, h) + 2.0 * (y[0].tail(h) + y[1].tail(h)) * b.0[0].abs() * TAU;
         let ye = [y[0].eval(t), y[1].eval(t)];
         let norm = ye[0].hypot(ye[1]);
         if !regain {
