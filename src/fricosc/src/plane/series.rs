@@ -134,6 +134,13 @@ impl Series {
         self.0[ORDER - 1].abs() * h.powi(n - 1) + self.0[ORDER].abs() * h.powi(n)
     }
 
+    /// The truncation of `int_0^h` of the series: its omitted terms `a_k
+    /// t^k`, `k > N`, integrate to `a_k h^(k+1)/(k + 1)`, at most `h/(N +
+    /// 2)` times their sum at `h`, which [`Series::tail`] estimates.
+    pub(crate) fn integral_tail(&self, h: f64) -> f64 {
+        self.tail(h) * h / (ORDER + 2) as f64
+    }
+
     /// The largest `h` with each series' last two terms at most its `tol /
     /// 2`: `(tol / 2|a_k|)^(1/k)` is monotone in `|a_k|/tol`, so the largest
     /// of these ratios at each order sets the step (one root an order).

@@ -427,13 +427,6 @@ fn growth(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> f64 {
     }
 }
 
-/// The truncation of `int_0^h` of the series `f`: its omitted terms
-/// `a_k t^k`, `k > N`, integrate to `a_k h^(k+1)/(k + 1)`, at most `h/(N +
-/// 2)` times their sum at `h`, which [`Series::tail`] estimates.
-fn integral_tail(f: &Series, h: f64) -> f64 {
-    f.tail(h) * h / (ORDER + 2) as f64
-}
-
 /// `n = |y|^2`, `c2 = y2^2 - y1^2`, `s2 = 2 y1 y2`: `e = (c2, s2)/n`.
 fn quadratics(y: &[Series; 2]) -> [Series; 3] {
     let [q0, q1, p] = Series::quadratics(y);
@@ -544,7 +537,7 @@ impl Walker<'_> {
         let [fx, fy] = bn.mul_pair(&quad[1], &quad[2]);
         let st = self.sp.step_tol;
         // The force's series serve its integral, whose truncation is about
-        // `h/(N + 2)` times the series' at `h` ([`integral_tail`]): they may
+        // `h/(N + 2)` times the series' at `h` ([`Series::integral_tail`]): they may
         // stop short of `st` by that factor, at the step the direction's allow.
         let cap = Series::step_for(&[(&y[0], st), (&y[1], st)]).min(horizon.min(0.5 * rho));
         let sf = st * (ORDER + 2) as f64 / cap;
@@ -566,7 +559,7 @@ impl Walker<'_> {
         // The force's tail on this step, and the direction's (an angle), felt
         // by a force of about this size for up to a period.
         self.truncation +=
-            integral_tail(&fx, h) + integral_tail(&fy, h) + 2.0 * (y[0].tail(h) + y[1].tail(h)) * b.0[0].abs() * TAU;
+            fx.integral_tail(h) + fy.integral_tail(h) + 2.0 * (y[0].tail(h) + y[1].tail(h)) * b.0[0].abs() * TAU;
         let ye = [y[0].eval(t), y[1].eval(t)];
         let norm = ye[0].hypot(ye[1]);
         if !regain {

@@ -158,7 +158,7 @@ fn the_slip_rates_rounding_bound_holds_it_and_is_tight() {
     assert!(worst > 1.0 / 16.0, "{worst}");
 }
 
-/// The integral's truncation ([`integral_tail`]) of a series with a pole at
+/// The integral's truncation ([`Series::integral_tail`]) of a series with a pole at
 /// `R` (`a_k = R^-k`, the remainder known in closed form) bounds the
 /// integral of the omitted terms and stays within 32 times it over the
 /// ratios `h/R` a step takes (0.2 to 0.6); the series' own tail at `h`,
@@ -170,7 +170,7 @@ fn the_integrals_truncation_bounds_the_omitted_terms() {
         let f = Series(std::array::from_fn(|k| big.powi(-(k as i32))));
         // sum_{k > N} h^(k+1)/((k + 1) R^k), to convergence.
         let omitted: f64 = (LEN..LEN + 400).map(|k| h * r.powi(k as i32) / (k + 1) as f64).sum();
-        let est = integral_tail(&f, h);
+        let est = f.integral_tail(h);
         assert!(est >= omitted && est <= 32.0 * omitted, "h/R {r}: {est:e} for {omitted:e}");
         assert!(f.tail(h) * h > 20.0 * omitted, "h/R {r}");
     }
