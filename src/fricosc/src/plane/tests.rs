@@ -381,3 +381,19 @@ fn a_search_from_a_neighbours_start_reaches_the_same_orbit() {
     assert!(err <= plain.error_estimate.min(warm.error_estimate), "{err:e}");
     assert!(warm.periods < plain.periods, "{} {}", warm.periods, plain.periods);
 }
+
+/// The clocks ([`super::clock::Clock::for_slip`]: log time within a
+/// quarter of the contact's length of a loss or of the contact regained,
+/// `tau` between) set how many steps a lifting spring's period takes: these
+/// counts, each within one (a clock chosen too early, too late, or never
+/// takes more, or fewer that miss the series' radius; the answers stay
+/// within rounding either way, so only the counts tell).
+#[test]
+fn the_clocks_set_a_lifting_springs_steps() {
+    let d = Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7);
+    for (level, amp, want) in [(0.2, 0.5, 37), (-0.3, 0.5, 33), (1.0, 1.5, 28), (0.45, 0.5, 46), (0.499, 0.5, 78)] {
+        let sp = Spring::new(d, Bound::new(level, amp));
+        let steps = sp.walk(Start::Contact(0.0), TAU).unwrap().steps;
+        assert!(steps.abs_diff(want) <= 1, "level {level}, amp {amp}: {steps} steps");
+    }
+}
