@@ -61,12 +61,13 @@ const TAIL_ORDER: usize = 32;
 /// ([`Precision::Coarse`]: each spring's means within about `1e-9` of its
 /// `<B>`, and estimated).
 const COARSE_TOL: f64 = 1e-7;
-/// How closely (relative to `z_max`) a band's edge is found: about where
-/// the coarse orbits of the band search place it. A phase that appears at
-/// the edge lasts like the square root of the distance from it (a touch
-/// that becomes a crossing) and changes the means like its cube, so an edge
-/// off by `d` leaves the integral about `d^2.5` off: `1e-25` here.
-const EDGE_RESOLUTION: f64 = 1e-10;
+/// How closely (relative to `z_max`) a band's edge is found. A phase that
+/// appears at the edge lasts like the square root of the distance from it
+/// (a touch that becomes a crossing) and changes the means like its cube,
+/// so an edge off by `d` leaves the integral about `d^2.5` off: `3e-18`
+/// here, below the default tolerance's share of a band; the nodes nearest
+/// an edge are farther from it (`6e-5` of a band of order 64).
+const EDGE_RESOLUTION: f64 = 1e-7;
 /// Rounding of one spring's means, in eps of its bound's scale.
 const SPRING_ROUNDING: f64 = 8.0;
 
@@ -169,7 +170,7 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     let zcap = walked_up_to(&spring, zmax);
     let springs = Springs::default();
     // A sequence of events needs no exact means: its thresholds move by
-    // about the coarse walks' error ([`EDGE_RESOLUTION`]).
+    // about the coarse walks' error, far below [`EDGE_RESOLUTION`].
     let sequence =
         |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit_to(&spring(z), Precision::Coarse, [0.0; 2])?.0)) };
     let precision = if tol >= COARSE_TOL { Precision::Coarse } else { Precision::Exact };
