@@ -61,6 +61,26 @@ fn matches_the_independent_reference() {
     }
 }
 
+/// The search for each reference orbit walks at most these periods (coarse
+/// walks until Newton is near, two exact ones to close; one period for a
+/// spring that loses contact; leaps along a slow drift at `vhat` 1e-10): a
+/// search that loses its way, or closes on walks it did not need, takes more.
+#[test]
+fn the_reference_orbits_are_found_in_few_periods() {
+    let most = [5, 1, 4, 1, 5, 4, 1, 1, 12, 1, 281, 1, 14];
+    for (case, most) in data_cases("plane-reference.json").iter().zip(most) {
+        let g = |k: &str| case[k].as_f64().unwrap();
+        let c = conditions(g("vhat"), g("amp"), g("tangential_amp"), g("phase"));
+        let Report::Plane(r) = Shape::flat()
+            .report(&c.with_transverse(Transverse::new(g("transverse_amp"), g("transverse_phase")).unwrap()))
+            .unwrap()
+        else {
+            panic!()
+        };
+        assert!(r.periods <= most, "{case}: {} periods", r.periods);
+    }
+}
+
 /// `W = 0` asks today's question: the answer is today's bit for bit, and no
 /// transverse ratio is reported.
 #[test]
