@@ -26,7 +26,7 @@ impl Series {
 
     /// `[a^2, b^2, a b]` for `[a, b] = y` by [`Series::square`] and [`Mul`],
     /// in one pass (each result's operations, and so its bits, theirs).
-    pub(crate) fn quadratics(y: &[Series; 2]) -> [Series; 3] {
+    pub(crate) fn squares_and_product(y: &[Series; 2]) -> [Series; 3] {
         let (a, b) = (&y[0].0, &y[1].0);
         let (mut sa, mut sb, mut p) = ([0.0; LEN], [0.0; LEN], [0.0; LEN]);
         for i in 0..LEN {
@@ -86,7 +86,7 @@ mod tests {
             let (a, b, mut d) = (series(seed), series(seed + 100), series(seed + 200));
             d.0[0] += 1.0;
             assert_eq!(Series::div_pair(&[a, b], &d), [a.div(&d), b.div(&d)]);
-            assert_eq!(Series::quadratics(&[a, b]), [a.square(), b.square(), a * b]);
+            assert_eq!(Series::squares_and_product(&[a, b]), [a.square(), b.square(), a * b]);
             assert_eq!(d.mul_pair(&a, &b), [d * a, d * b]);
         }
     }

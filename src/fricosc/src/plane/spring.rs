@@ -429,7 +429,7 @@ fn growth(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> f64 {
 
 /// `n = |y|^2`, `c2 = y2^2 - y1^2`, `s2 = 2 y1 y2`: `e = (c2, s2)/n`.
 fn quadratics(y: &[Series; 2]) -> [Series; 3] {
-    let [q0, q1, p] = Series::quadratics(y);
+    let [q0, q1, p] = Series::squares_and_product(y);
     [q0 + q1, q1 - q0, p * 2.0]
 }
 
@@ -556,8 +556,9 @@ impl Walker<'_> {
         let fall = ev.first_fall(skip, h).map_err(|()| self.stalled("slip"))?;
         let t = fall.map_or(h, |(a, c)| refine(&ev, skip, a, c));
         self.book(&fx, &fy, &bt, t);
-        // The force's tail on this step, and the direction's (an angle), felt
-        // by a force of about this size for up to a period.
+        // The truncation of the force's integral on this step, and the
+        // direction's tail (an angle), felt by a force of about this size for
+        // up to a period.
         self.truncation +=
             fx.integral_tail(h) + fy.integral_tail(h) + 2.0 * (y[0].tail(h) + y[1].tail(h)) * b.0[0].abs() * TAU;
         let ye = [y[0].eval(t), y[1].eval(t)];
