@@ -165,6 +165,22 @@ fn continuous_through_amp_one_and_vanishing_w() {
     }
 }
 
+/// At `vhat = 0` a spring that sticks all period has many steady states
+/// (README's conventions): under `T = 0.7` (phase 1) the plane keeps the
+/// relaxed start's, which slips back to `-B` once and then sticks, `f` in
+/// `[-1, 0.4]`: mean `T - 1 = -0.3`; without `W` the one-dimensional
+/// answer is the limit `vhat -> 0+`, the state touching `+B`: `1 - T`.
+/// With `vhat = 1e-6` the plane slides to the latter too.
+#[test]
+fn a_spring_stuck_all_period_keeps_the_relaxed_starts_state() {
+    let c = conditions(0.0, 0.0, 0.7, 1.0);
+    let (relaxed, one) = (plane(&c, 1e-300, 0.0), Shape::flat().evaluate(&c).unwrap());
+    assert!((relaxed.ratio.mu_ratio + 0.3).abs() <= relaxed.error_estimate.max(4e-16), "{relaxed:?}");
+    assert!((one.ratio.mu_ratio - 0.3).abs() <= one.error_estimate.max(4e-16), "{one:?}");
+    let sliding = plane(&conditions(1e-6, 0.0, 0.7, 1.0), 1e-300, 0.0);
+    assert!((sliding.ratio.mu_ratio - 0.3).abs() < 1e-5, "{sliding:?}");
+}
+
 /// Contact is lost only where the bound reaches zero: at `amp = 1` (a
 /// touch) at `tau = 0`, at `1 + 1e-7` for a window of `2 acos(1/amp)`; at
 /// `1 - 1e-7` the bound stays above 1e-7 and the slip through its minimum
