@@ -150,14 +150,18 @@ const SHORT: f64 = 1e-6;
 /// a phase shorter than [`SHORT`] (a stick for an instant where the body
 /// turns as the contact is lost: its share of the mean is of the order of
 /// its length squared, and at the threshold where it appears the phases
-/// tie to rounding, which a bisection would chase).
+/// tie to rounding, which a bisection would chase), as a cycle: from its
+/// least rotation (the kinds' order), not from `tau = 0` (an event that
+/// passes through `tau = 0` moves the means smoothly: no band's edge).
 fn sequence_of(e: &PlaneEvaluation) -> Vec<EventKind> {
     let n = e.events.len();
     let length = |i: usize| {
         let next = e.events[(i + 1) % n].tau;
         (next - e.events[i].tau).rem_euclid(TAU)
     };
-    (0..n).filter(|&i| n == 1 || length(i) >= SHORT).map(|i| e.events[i].kind).collect()
+    let kinds: Vec<EventKind> = (0..n).filter(|&i| n == 1 || length(i) >= SHORT).map(|i| e.events[i].kind).collect();
+    let rotated = |r: usize| -> Vec<EventKind> { kinds[r..].iter().chain(&kinds[..r]).copied().collect() };
+    (0..kinds.len()).map(rotated).min_by_key(|v| v.iter().map(|&k| k as u8).collect::<Vec<u8>>()).unwrap_or_default()
 }
 
 /// `mu_macro/mu0` and the transverse ratio of the contact `c` under the
@@ -293,4 +297,38 @@ pub(super) fn walked_up_to(spring: &dyn Fn(f64) -> Spring, zmax: f64) -> f64 {
         }
     }
     lo
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plane::PlaneEvent;
+
+    /// A spring's events as a cycle: the same phases with `tau = 0` in a
+    /// different one are one sequence, a phase shorter than [`SHORT`] is
+    /// not named, and another order is another sequence.
+    #[test]
+    fn a_sequence_is_a_cycle_of_its_phases() {
+        let of = |events: &[(EventKind, f64)]| {
+            let events = events.iter().map(|&(kind, tau)| PlaneEvent { kind, tau }).collect();
+            let ratio = crate::Ratio::signed(0.5, 0.5, 0.0, "test").unwrap();
+            let e = PlaneEvaluation {
+                ratio,
+                transverse_ratio: 0.0,
+                error_estimate: 0.0,
+                multiplier: 0.0,
+                events,
+                periods: 1,
+            };
+            sequence_of(&e)
+        };
+        use EventKind::{Contact, LossOfContact as Loss, Slip, Stick};
+        let a = of(&[(Stick, 0.1), (Slip, 2.0), (Loss, 5.0), (Contact, 5.5)]);
+        let b = of(&[(Contact, 0.2), (Stick, 0.3), (Slip, 2.0), (Loss, 5.0)]);
+        let short = of(&[(Contact, 0.3 - 0.5 * SHORT), (Stick, 0.3), (Slip, 2.0), (Loss, 5.0)]);
+        assert_eq!(a, vec![Contact, Stick, Slip, Loss]);
+        assert_eq!(b, a);
+        assert_eq!(short, vec![Loss, Stick, Slip]);
+        assert_ne!(of(&[(Stick, 0.1), (Contact, 2.0), (Slip, 3.0), (Loss, 5.0)]), a);
+    }
 }
