@@ -13,8 +13,8 @@
 //! but coincide (a caller's sequence that omits a phase shorter than some
 //! length, for instance, changes both where the phase appears and where it
 //! reaches that length); its neighbours' rules take it in, at the cost of an
-//! edge off by at most the sliver's width, which the caller's resolution
-//! already allows for.
+//! edge off by at most half the merged width (two resolutions: the caller
+//! sets what that costs).
 
 use crate::error::Result;
 

@@ -65,8 +65,9 @@ const COARSE_TOL: f64 = 1e-7;
 /// appears at the edge lasts like the square root of the distance from it
 /// (a touch that becomes a crossing) and changes the means like its cube,
 /// so an edge off by `d` leaves the integral about `d^2.5` off: `3e-18`
-/// here, below the default tolerance's share of a band; the nodes nearest
-/// an edge are farther from it (`6e-5` of a band of order 64).
+/// here, `2e-17` for an edge merged with a neighbour ([`bands`]: up to two
+/// resolutions off), below the default tolerance's share of a band; the
+/// nodes nearest an edge are farther from it (`6e-5` of a band of order 64).
 const EDGE_RESOLUTION: f64 = 1e-7;
 /// Rounding of one spring's means, in eps of its bound's scale.
 const SPRING_ROUNDING: f64 = 8.0;
