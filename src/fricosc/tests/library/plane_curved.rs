@@ -18,7 +18,7 @@ fn plane(shape: &Shape, c: &Conditions, w: f64, psi: f64) -> Evaluation {
 /// 1e-7 (observed errors 6e-15 to 9e-14, estimates 2.6 to 1,900 times
 /// them; a spring whose own walk estimates 3e-5 puts `flat-tip:0.5` at
 /// 1.8e-8). A wrong weight, level or normalisation of the springs is off
-/// by 1e-3 and more.
+/// by 1e-3 and more. The reduction is `1 - mu_ratio` along `x`.
 #[test]
 fn a_drive_along_a_line_is_the_one_dimensional_answer_rotated() {
     for name in ["parabolic", "cone", "power:3", "flat-tip:0.5"] {
@@ -34,6 +34,9 @@ fn a_drive_along_a_line_is_the_one_dimensional_answer_rotated() {
                 (e.ratio.mu_ratio - m * alpha.cos()).abs().max((e.transverse_ratio.unwrap() - m * alpha.sin()).abs());
             let est = e.error_estimate;
             assert!(err <= est + one.error_estimate && est < 1e-7, "{name} amp {amp}: error {err:e}, estimate {est:e}");
+            // The reduction along `x`, `1 - m cos(alpha)` (absolute, as README says).
+            let off = (e.ratio.reduction - (1.0 - m * alpha.cos())).abs();
+            assert!(off <= est + one.error_estimate, "{name} amp {amp}: reduction off by {off:e}");
         }
     }
 }
