@@ -24,7 +24,8 @@ fn plane(c: &Conditions, w: f64, psi: f64) -> Evaluation {
 /// `mu_ratio` and the transverse ratio against the 20-digit reference, each
 /// within 1e-14 and within the error estimate, which stays within 30 times
 /// the larger error (observed: errors at most 1.4e-15, estimates 1.3 to 25
-/// times the error, floored at 1e-16); the events are the reference's.
+/// times the error, floored at 1e-16); the events are the reference's; the
+/// reduction is `1 - mu_ratio`.
 #[test]
 fn matches_the_independent_reference() {
     let cases = data_cases("plane-reference.json");
@@ -58,6 +59,10 @@ fn matches_the_independent_reference() {
             e.error_estimate
         );
         assert!(e.error_estimate < 30.0 * worst.max(1e-16), "{case}: est {:e} for {worst:e}", e.error_estimate);
+        // The reduction is `1 - mu_ratio` to absolute accuracy (README): `1 -`
+        // it against the reference's `mu_ratio`, within an ulp of 1 more.
+        let red = exact_error(1.0 - e.ratio.reduction, case["mu_ratio"].as_str().unwrap());
+        assert!(!exceeds(red, e.error_estimate + f64::EPSILON), "{case}: reduction off by {red:e}");
     }
 }
 
