@@ -20,6 +20,7 @@ mod fused;
 mod history;
 mod layer;
 mod series;
+mod slip;
 mod spring;
 
 use crate::error::{check_nonneg, Error, Result};
