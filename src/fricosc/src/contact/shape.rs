@@ -179,7 +179,7 @@ impl Shape {
     /// tangential oscillation); [`Error::Internal`] for a bug.
     pub fn evaluate(&self, c: &Conditions) -> Result<Evaluation> {
         if let Some(w) = c.transverse() {
-            let r = crate::plane::solve(self, c, w)?;
+            let r = crate::plane::solve(self, c, w, false)?;
             return Ok(Evaluation {
                 transverse_ratio: Some(r.transverse_ratio),
                 ..Evaluation::of(r.ratio, r.error_estimate)
@@ -225,7 +225,7 @@ impl Shape {
     /// As [`Shape::evaluate`].
     pub fn report(&self, c: &Conditions) -> Result<Report> {
         if let Some(w) = c.transverse() {
-            return Ok(Report::Plane(crate::plane::solve(self, c, w)?));
+            return Ok(Report::Plane(crate::plane::solve(self, c, w, true)?));
         }
         if let Some(sys) = c.system() {
             return Ok(Report::System(crate::system::solve(self, c, sys)?));

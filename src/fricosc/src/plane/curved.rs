@@ -178,7 +178,7 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     // about the coarse walks' error, far below [`EDGE_RESOLUTION`].
     let sequence =
         |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit_to(&spring(z), Precision::Coarse, [0.0; 2])?.0)) };
-    let precision = if tol >= COARSE_TOL { Precision::Coarse } else { Precision::Exact };
+    let precision = if tol >= COARSE_TOL { Precision::Coarse } else { Precision::Means };
     let edges = bands::edges(c, (amp, zcap), EDGE_RESOLUTION, &sequence)?;
     let node = |z: f64, from: [f64; 2]| {
         let sp = spring(z);

@@ -111,18 +111,20 @@ pub struct PlaneEvaluation {
 }
 
 /// The answer under the conditions `c` and the transverse oscillation `w`:
-/// the flat punch's orbit (module docs), a curved contact's springs
-/// ([`curved`]).
+/// the flat punch's orbit (module docs), with its events where `events` is
+/// set (else its means only, the same bits, [`Precision::Means`]), or a curved contact's
+/// springs ([`curved`]).
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] for a system (not solved in the plane yet)
 /// or a drive too stiff to step, [`Error::Internal`] when no attracting
 /// orbit is found.
-pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse) -> Result<PlaneEvaluation> {
+pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse, events: bool) -> Result<PlaneEvaluation> {
     let sp = centre(c, w)?;
     let contact = shape.contact();
     if contact.single_spring() {
-        orbit(&sp).map(|(e, _)| e)
+        let precision = if events { Precision::Exact } else { Precision::Means };
+        orbit_to(&sp, precision, [0.0; 2]).map(|(e, _)| e)
     } else {
         curved::solve(contact, sp.drive, c.amp(), c.tol())
     }
@@ -219,12 +221,16 @@ const MAX_ORBIT_PERIODS: usize = 2000;
 /// Halvings of one Newton step at most.
 const MAX_HALVINGS: usize = 6;
 
-/// How closely an orbit is walked: to full precision, or by
-/// [`Spring::coarse`] walks only (about `1e-9` a period, within its
-/// estimate: a band search's sequence of events, a loose tolerance).
+/// How closely an orbit is walked: to full precision, its means to full
+/// precision (the same bits; from a walk a Newton step off the orbit,
+/// [`corrected`], whose events are not the orbit's and are not given), or
+/// by [`Spring::coarse`]
+/// walks only (about `1e-9` a period, within its estimate: a band search's
+/// sequence of events, a loose tolerance).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Precision {
     Exact,
+    Means,
     Coarse,
 }
 
@@ -252,24 +258,31 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
     // residual of [`COARSE_UNTIL`] on, exact: Newton's next start is then
     // within about the square of it, and two exact walks close the search.
     let coarse = sp.coarse();
+    // An exact walk from a start that Newton's step is not expected to
+    // close finds its sensitivity ([`SENSE_ABOVE`]): it may close the search
+    // itself ([`corrected`]); where the events are asked, one more walk from
+    // the orbit's start gives them (the means are the same either way).
+    let exact = [*sp, sp.sensing()];
+    let sensing = usize::from(precision != Precision::Coarse);
     let mut cur = &coarse;
     let mut f = from;
     let mut periods = 1;
     let mut w = cur.walk(Start::Force(0.0, f), TAU)?;
     let mut leaping = false;
+    let mut seen: Option<Seen> = None;
     while periods < MAX_ORBIT_PERIODS {
         let res = residual(f, &w);
         if !cur.is_exact() {
             // Near the orbit (where an exact one is asked), or a period that
             // only sticks: on exactly, Newton's step taken as it is where it
             // stays that near (not along a slow drift, which leaps).
-            let near = precision == Precision::Exact && res <= COARSE_UNTIL * force_scale(f);
+            let near = precision != Precision::Coarse && res <= COARSE_UNTIL * force_scale(f);
             if near || w.stuck {
                 let r = [w.end[0] - f[0], w.end[1] - f[1]];
                 let step = newton_step(&w.jacobian, r)
                     .filter(|s| near && s[0].hypot(s[1]) <= COARSE_UNTIL * force_scale(f))
                     .unwrap_or([0.0; 2]);
-                (cur, f) = (sp, [f[0] + step[0], f[1] + step[1]]);
+                (cur, f) = (&exact[sensing], [f[0] + step[0], f[1] + step[1]]);
                 w = cur.walk(Start::Force(0.0, f), TAU)?;
                 (periods, leaping) = (periods + 1, false);
                 continue;
@@ -279,8 +292,15 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
         let close = match (precision, cur.is_exact()) {
             (_, true) => 8.0 * f64::EPSILON,
             (Precision::Coarse, false) => COARSE_CLOSE,
-            (Precision::Exact, false) => f64::NEG_INFINITY,
+            (_, false) => f64::NEG_INFINITY,
         };
+        let before = seen.replace(Seen { f, force: w.force, end: w.end });
+        if cur.is_exact() && res > close * force_scale(f) {
+            if let Some(done) = before.and_then(|b| corrected(&w, f, &b, total, periods)) {
+                return with_events(done, precision, &exact[0]);
+            }
+            cur = &exact[sensing * usize::from(res > SENSE_ABOVE * force_scale(f))];
+        }
         if res <= close * force_scale(f) {
             let m = multiplier(&w.jacobian);
             // A neutral orbit (a period that only sticks repeats from any
@@ -309,7 +329,7 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
         periods += walked;
         if !cur.is_exact() && (tried.is_none() || walked > 1) {
             // Only Newton's plain steps are coarse: on exactly from where it got.
-            cur = sp;
+            cur = &exact[sensing];
             f = tried.map_or(f, |(g, _)| g);
             w = cur.walk(Start::Force(0.0, f), TAU)?;
             periods += 1;
@@ -415,6 +435,82 @@ fn leap(sp: &Spring, f: [f64; 2], w: &Walk) -> Result<(Visit, usize, bool)> {
     Ok(((w.end, sp.walk(Start::Force(0.0, w.end), TAU)?), walked + 1, false))
 }
 
+/// The residual (relative to the force's scale) above which an exact walk
+/// is followed by one that finds its sensitivity:
+/// from below it, Newton's next residual, about the square of it times the
+/// map's curvature (of order 1), is expected to close the search by itself.
+const SENSE_ABOVE: f64 = 1e-8;
+
+/// A start the orbit's search walked from: where its walk ended, and its
+/// force's integral.
+struct Seen {
+    f: [f64; 2],
+    force: [f64; 2],
+    end: [f64; 2],
+}
+
+/// The means of the orbit from the exact walk `w` that starts at `f`, a
+/// Newton step `s` short of it, without walking from `f + s`: the walk's
+/// `int f` plus `G s` (`G` its [`Walk::sensitivity`]), and the start `f + s`.
+/// What is left is second order in `s`: `K |s|^2` of the force's integral,
+/// and `C |s|^2/(1 - m)` of the start, felt `|G|` times, with `K` and `C`
+/// bounded by what the walk from the previous start `before` (a distance
+/// `d` away) shows: `|int f - int f_before - G d| / |d|^2` and `|r -
+/// r_before - (J - I) d| / |d|^2` (their rounding and truncation, and the
+/// previous walk's, only add to them). `f + s` closes the walk's own map,
+/// rounding and all: as for a closing walk, the periods before it leave
+/// `m e/(1 - m)` (`e` a period's rounding, [`rounding`]). `None` where the
+/// second-order part exceeds what a closing walk's residual (`8 eps`) would
+/// leave: then Newton's walk is taken, as for [`Precision::Exact`].
+fn corrected(
+    w: &Walk,
+    f: [f64; 2],
+    before: &Seen,
+    total: f64,
+    periods: usize,
+) -> Option<Result<(PlaneEvaluation, [f64; 2])>> {
+    let g = &w.sensitivity?;
+    let j = &w.jacobian;
+    let m = multiplier(j);
+    let r = [w.end[0] - f[0], w.end[1] - f[1]];
+    let s = newton_step(j, r)?;
+    let d = [f[0] - before.f[0], f[1] - before.f[1]];
+    let dd = d[0] * d[0] + d[1] * d[1];
+    let lin = |m: &[[f64; 2]; 2], v: [f64; 2]| [m[0][0] * v[0] + m[0][1] * v[1], m[1][0] * v[0] + m[1][1] * v[1]];
+    let (gd, jd) = (lin(g, d), lin(j, d));
+    let k = (w.force[0] - before.force[0] - gd[0]).hypot(w.force[1] - before.force[1] - gd[1]) / dd;
+    let rb = [before.end[0] - before.f[0], before.end[1] - before.f[1]];
+    let c = (r[0] - rb[0] - jd[0] + d[0]).hypot(r[1] - rb[1] - jd[1] + d[1]) / dd;
+    let (ss, scale) = (s[0] * s[0] + s[1] * s[1], force_scale(f));
+    let size = g.iter().flatten().map(|x| x * x).sum::<f64>().sqrt();
+    let second = k * ss + size * c * ss / (1.0 - m);
+    if !(m < 1.0 && second <= TAU * 8.0 * f64::EPSILON * scale) {
+        return None;
+    }
+    let gs = lin(g, s);
+    let mut moved = w.clone();
+    moved.force = [w.force[0] + gs[0], w.force[1] + gs[1]];
+    moved.events.clear();
+    let start_error = (second + size * m * rounding(w, scale) / (1.0 - m)) / TAU;
+    Some(answer(&moved, total, m, start_error, periods).map(|e| (e, [f[0] + s[0], f[1] + s[1]])))
+}
+
+/// An orbit's means and start from [`corrected`]: with the events of a
+/// walk from that start where [`Precision::Exact`] asks for them (the same
+/// means).
+fn with_events(
+    done: Result<(PlaneEvaluation, [f64; 2])>,
+    precision: Precision,
+    sp: &Spring,
+) -> Result<(PlaneEvaluation, Start)> {
+    let (mut e, s) = done?;
+    if precision == Precision::Exact {
+        e.events = events(&sp.walk(Start::Force(0.0, s), TAU)?);
+        e.periods += 1;
+    }
+    Ok((e, Start::Force(0.0, s)))
+}
+
 /// Periods run from the relaxed start at most, where the orbit is neutral.
 const MAX_RELAXED: usize = 400;
 
@@ -508,6 +604,11 @@ fn rounding(w: &Walk, scale: f64) -> f64 {
     f64::EPSILON * ((w.steps as f64).sqrt() + 2.0) * scale
 }
 
+/// The events of the walk `w`, their phases in `[0, 2 pi)`.
+fn events(w: &Walk) -> Vec<PlaneEvent> {
+    w.events.iter().map(|&(tau, kind)| PlaneEvent { kind, tau: tau.rem_euclid(TAU) }).collect()
+}
+
 /// The evaluation of the period walked by `w`, whose start is within
 /// `start_error` of the orbit's: so is its force all period (the stop
 /// operator does not expand a difference of starts).
@@ -529,7 +630,7 @@ fn answer(w: &Walk, total: f64, multiplier: f64, start_error: f64, periods: usiz
         transverse_ratio: tr,
         error_estimate,
         multiplier,
-        events: w.events.iter().map(|&(tau, kind)| PlaneEvent { kind, tau: tau.rem_euclid(TAU) }).collect(),
+        events: events(w),
         periods,
     })
 }

@@ -111,3 +111,21 @@ pub(super) fn zeros(rate: f64, tol: f64) -> usize {
 pub(super) fn slips(rate: f64, tol: f64, slope: f64) -> bool {
     rate > tol || (rate >= -tol && slope > 0.0)
 }
+
+/// `int_0^t B e_perp (d th/d th_0) dtau` over a slip step from `|y0| = 1`:
+/// how the step's force integral moves with the angle it starts at. With
+/// `f = B e`, `d f/d th = B e_perp = B (-s2, c2)/n`, and `d th/d th_0 =
+/// 1/|y|^2 = e^(-2 lam t)/n` (`n = |z|^2` of [`regular`]'s scaled series,
+/// `|y0| = 1`), the integrand is `(-f_y, f_x) e^(-2 lam t)/n`, `f = (f_x,
+/// f_y)` in the clock's time as the step books it.
+pub(super) fn turning(f: [&Series; 2], n: &Series, lam: f64, t: f64) -> [f64; 2] {
+    let mut decay = [0.0; LEN];
+    let mut term = 1.0;
+    for (k, c) in decay.iter_mut().enumerate() {
+        *c = term;
+        term *= -2.0 * lam * RECIPROCALS[k];
+    }
+    let g = Series(decay).div(n);
+    let [gy, gx] = g.mul_pair(f[1], f[0]);
+    [-gy.integral(t), gx.integral(t)]
+}

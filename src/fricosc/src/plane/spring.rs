@@ -29,7 +29,7 @@ use super::clock::Clock;
 use super::drive::{Bound, Drive};
 use super::layer::{self, Layer, ON_MANIFOLD};
 use super::series::{Series, LEN, ORDER};
-use super::slip::{growth, quadratics, rate_series, regular, slip_rate, slips, slips_on_contact, zeros};
+use super::slip::{growth, quadratics, rate_series, regular, slip_rate, slips, slips_on_contact, turning, zeros};
 use crate::error::{Error, Result};
 use crate::special::Kahan;
 use crate::spring::EventKind;
@@ -56,6 +56,8 @@ pub(crate) struct Spring {
     layer: Option<Layer>,
     /// Each step's truncation target ([`STEP_TOL`] or [`COARSE_STEP_TOL`]).
     step_tol: f64,
+    /// Whether its walks find their [`Walk::sensitivity`].
+    sensing: bool,
 }
 
 /// The state between steps.
@@ -81,6 +83,8 @@ pub(crate) struct Walk {
     pub(crate) end: [f64; 2],
     /// `d end / d start` (0 once contact is lost).
     pub(crate) jacobian: [[f64; 2]; 2],
+    /// `d force / d start` ([`Walker::sense`]; from [`Spring::sensing`] only).
+    pub(crate) sensitivity: Option<[[f64; 2]; 2]>,
     /// The estimated truncation error of `force` (absolute).
     pub(crate) truncation: f64,
     /// Events `(tau, kind)`.
@@ -123,6 +127,8 @@ struct Walker<'a> {
     truncation: f64,
     /// `d f / d f_start` in stick; row 0 holds `d th / d f_start` in slip.
     jac: [[f64; 2]; 2],
+    /// `d (int f) / d f_start` so far ([`Walker::sense`]).
+    sens: Option<[[f64; 2]; 2]>,
     events: Vec<(f64, EventKind)>,
     steps: usize,
     stuck: bool,
@@ -130,7 +136,7 @@ struct Walker<'a> {
 
 impl Spring {
     pub(crate) fn new(drive: Drive, bound: Bound) -> Spring {
-        Spring { drive, bound, layer: Layer::of(&drive, &bound), step_tol: STEP_TOL }
+        Spring { drive, bound, layer: Layer::of(&drive, &bound), step_tol: STEP_TOL, sensing: false }
     }
 
     /// The same spring walked to about `1e-9` a period ([`COARSE_STEP_TOL`]):
@@ -140,7 +146,13 @@ impl Spring {
     /// does not meet (it would step on through the layer).
     pub(crate) fn coarse(&self) -> Spring {
         let step_tol = if self.layer.is_some() { STEP_TOL } else { COARSE_STEP_TOL };
-        Spring { step_tol, ..*self }
+        Spring { step_tol, sensing: false, ..*self }
+    }
+
+    /// The same spring, its exact walks with their [`Walk::sensitivity`]
+    /// (a few per cent more work a step).
+    pub(crate) fn sensing(&self) -> Spring {
+        Spring { sensing: self.is_exact(), ..*self }
     }
 
     /// Whether its walks are to full precision (not [`Spring::coarse`]).
@@ -193,6 +205,7 @@ impl Spring {
             bound: w.bound.sum,
             end: end_force,
             jacobian: w.end_jacobian(),
+            sensitivity: w.sens,
             truncation: w.truncation,
             stuck: w.stuck && matches!(w.phase, Phase::Stick { .. }),
             events: w.events,
@@ -248,6 +261,7 @@ impl<'a> Walker<'a> {
             bound: Kahan::default(),
             truncation: 0.0,
             jac: [[1.0, 0.0], [0.0, 1.0]],
+            sens: sp.sensing.then_some([[0.0; 2]; 2]),
             events: Vec::new(),
             steps: 0,
             stuck: true,
@@ -308,6 +322,25 @@ impl Walker<'_> {
         }
     }
 
+    /// `sens += d f/d f_start` integrated over a step: `v` times row `j` of
+    /// the Jacobian at the step's start, for `j` in `rows` (a stick's `f`
+    /// moves with its start by the Jacobian, `v = (t, t)` on its rows; a
+    /// slip's by `d f/d th` times row 0, `v` from [`turning`]). The force's
+    /// integral is continuous across an event (the force is), so the events'
+    /// own moves add nothing at first order. [`Spring::sensing`] only: it serves an
+    /// answer's last step to the orbit (`super::corrected`), which is
+    /// second order, so `v`'s truncation and the tail before a loss
+    /// (`LOSS_TAIL`) are far below what it could move.
+    fn sense(&mut self, v: [f64; 2], stick: bool) {
+        if let Some(sens) = &mut self.sens {
+            for (i, row) in sens.iter_mut().enumerate() {
+                let jrow = if stick { self.jac[i] } else { self.jac[0] };
+                row[0] += v[i] * jrow[0];
+                row[1] += v[i] * jrow[1];
+            }
+        }
+    }
+
     fn book(&mut self, fx: &Series, fy: &Series, b: &Series, t: f64) {
         self.bound.add(b.integral(t));
         self.force[0].add(fx.integral(t));
@@ -342,6 +375,7 @@ impl Walker<'_> {
         let fall = g.first_fall(skip, h).map_err(|()| self.stalled("stick"))?;
         let t = fall.map_or(h, |(a, c)| refine(&g, skip, a, c));
         self.book(&fx, &fy, &b, t);
+        self.sense([t, t], true);
         self.truncation += (fx.tail(h) + fy.tail(h)) * h;
         let fe = [fx.eval(t), fy.eval(t)];
         self.advance(t, horizon, target);
@@ -449,6 +483,9 @@ impl Walker<'_> {
         let fall = ev.first_fall(skip, h).map_err(|()| self.stalled("slip"))?;
         let t = fall.map_or(h, |(a, c)| refine(&ev, skip, a, c));
         self.book(&fx, &fy, &bt, t);
+        if self.sens.is_some() && self.jac[0] != [0.0; 2] {
+            self.sense(turning([&fx, &fy], &quad[0], lam, t), false);
+        }
         // The truncation of the force's integral on this step, and the
         // direction's tail (an angle), felt by a force of about this size for
         // up to a period.
