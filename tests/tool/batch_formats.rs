@@ -286,6 +286,7 @@ fn rows_in_the_plane_get_the_transverse_ratio() {
         ok(&["point", "--vhat", "0.6", "--amp", "0.5", "--transverse-amp", "1.2", "--transverse-phase", "0.7"], "");
     let p: serde_json::Value = serde_json::from_str(&point).unwrap();
     let (mu, t) = (p["mu_ratio"].as_f64().unwrap(), p["transverse_ratio"].as_f64().unwrap());
+    let reduction = p["reduction"].as_f64().unwrap();
     assert!(t.abs() > 0.1, "{p}");
     let row = r#"{"shape":"flat","vhat":0.6,"amp":0.5,"transverse_amp":1.2,"transverse_phase":0.7}"#;
     let given =
@@ -300,8 +301,7 @@ fn rows_in_the_plane_get_the_transverse_ratio() {
     let out = ok(&["batch", "--format", "csv"], csv);
     let want = format!(
         "shape,vhat,amp,transverse_amp,transverse_phase,mu_ratio,reduction,transverse_ratio\n\
-         flat,0.6,0.5,1.2,0.7,{mu:?},{:?},{t:?}\n",
-        1.0 - mu
+         flat,0.6,0.5,1.2,0.7,{mu:?},{reduction:?},{t:?}\n"
     );
     assert!(out.starts_with(&want) && out.lines().nth(2).unwrap().ends_with(",0.0"), "{out}");
     for (row, needle) in [

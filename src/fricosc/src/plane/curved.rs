@@ -107,10 +107,10 @@ fn nearest(starts: &[(f64, [f64; 2])], z: f64) -> [f64; 2] {
 }
 
 impl Springs {
-    /// The ratios `(mu, transverse)` and the estimate of the spring at `z`,
+    /// The ratios `(mu, transverse)`, the reduction and the estimate of the spring at `z`,
     /// its search from `from`, recorded with its start; `None` after the
     /// first error.
-    fn solve(&self, z: f64, spring: &Spring, precision: Precision, from: [f64; 2]) -> Option<[f64; 3]> {
+    fn solve(&self, z: f64, spring: &Spring, precision: Precision, from: [f64; 2]) -> Option<[f64; 4]> {
         if self.learned().error.is_some() {
             return None;
         }
@@ -123,7 +123,7 @@ impl Springs {
                 if let Start::Force(_, f) = start {
                     learned.starts.push((z, f));
                 }
-                Some([e.ratio.mu_ratio, e.transverse_ratio, e.error_estimate])
+                Some([e.ratio.mu_ratio, e.transverse_ratio, e.ratio.reduction, e.error_estimate])
             }
             Err(err) => {
                 learned.error.get_or_insert(err);
@@ -185,25 +185,27 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
         let b = sp.bound.period_integral() / TAU;
         let scale = sp.bound.level.abs() + amp;
         match springs.solve(z, &sp, precision, from) {
-            Some([mu, tr, err]) => ([mu * b, tr * b, b, err * b], scale),
-            None => ([0.0; 4], scale),
+            Some([mu, tr, red, err]) => ([mu * b, tr * b, red * b, b, err * b], scale),
+            None => ([0.0; 5], scale),
         }
     };
     let ladder = Ladder { tol, max_order: MAX_ORDER, noise: SPRING_ROUNDING * f64::EPSILON, difference: true };
     let scale = c.mean_normal(amp)?;
-    let (mut total, mut truncation) = (Sums::<4>::default(), 0.0);
-    // The fourth integrand, the springs' own errors, is summed by the same
-    // rule (positive weights: a bound of their share) and not converged.
+    let (mut total, mut truncation) = (Sums::<5>::default(), 0.0);
+    // The integrands: `<f_x>`, `<f_y>`, `<B - f_x>` (the reduction's, to its
+    // relative accuracy), `<B>`; the fifth, the springs' own errors, is
+    // summed by the same rule (positive weights: a bound of their share)
+    // and not converged.
     for w in edges.windows(2).filter(|w| w[1] > w[0]) {
         let r = ladder.run(
             FIRST_ORDER,
             |m| {
                 let known = springs.starts_within(w[0], w[1]);
-                cosine_pass_parallel(w[0], w[1], m, [true; 4], &|z| node(z, nearest(&known, z)))
+                cosine_pass_parallel(w[0], w[1], m, [true; 5], &|z| node(z, nearest(&known, z)))
             },
-            [scale, scale, scale, f64::INFINITY],
+            [scale, scale, scale, scale, f64::INFINITY],
         );
-        truncation += r.error[0].max(r.error[1]) + r.error[2];
+        truncation += r.error[0].max(r.error[1]) + r.error[3];
         total += r;
     }
     let learned = springs.0.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
@@ -211,18 +213,18 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
         return Err(e);
     }
     let tail = Tail::of(c, &spring, amp, (zcap, zmax), precision)?;
-    let normal = total.value[2] + tail.bound;
+    let normal = total.value[3] + tail.bound;
     if !(normal > 0.0 && normal.is_finite()) {
         return Err(Error::Internal { what: format!("mean normal force {normal:?} in the plane ({})", c.name()) });
     }
     let (mu, tr) = ((total.value[0] + tail.force[0]) / normal, (total.value[1] + tail.force[1]) / normal);
     let rounding = SPRING_ROUNDING * f64::EPSILON * total.magnitude / normal;
-    let error_estimate = (truncation + tail.error + total.value[3]) / normal + rounding;
+    let error_estimate = (truncation + tail.error + total.value[4]) / normal + rounding;
     if !(tr.is_finite() && tr.abs() <= 1.0 + error_estimate) {
         return Err(Error::Internal { what: format!("transverse_ratio = {tr:?} in the plane ({})", c.name()) });
     }
     Ok(PlaneEvaluation {
-        ratio: crate::Ratio::signed(mu, 1.0 - mu, error_estimate, &c.name())?,
+        ratio: crate::Ratio::signed(mu, (total.value[2] + tail.deficit) / normal, error_estimate, &c.name())?,
         transverse_ratio: tr,
         error_estimate,
         multiplier: learned.multiplier,
@@ -243,6 +245,8 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
 struct Tail {
     bound: f64,
     force: [f64; 2],
+    /// `int <B - f_x> dz`.
+    deficit: f64,
     error: f64,
 }
 
@@ -255,7 +259,7 @@ impl Tail {
         precision: Precision,
     ) -> Result<Tail> {
         if zcap >= zmax {
-            return Ok(Tail { bound: 0.0, force: [0.0; 2], error: 0.0 });
+            return Ok(Tail { bound: 0.0, force: [0.0; 2], deficit: 0.0, error: 0.0 });
         }
         let mean = |z: f64| ([spring(z).bound.period_integral() / TAU], 0.0);
         let bound = cosine_pass(zcap, zmax, TAIL_ORDER, [true], &mean).sum[0].max(0.0);
@@ -266,9 +270,10 @@ impl Tail {
             (Some(e), Some(h)) => {
                 let (mu, tr) = (e.ratio.mu_ratio, e.transverse_ratio);
                 let moved = (mu - h.ratio.mu_ratio).abs().max((tr - h.transverse_ratio).abs());
-                Ok(Tail { bound, force: [mu * bound, tr * bound], error: 4.0 * moved * bound })
+                let deficit = e.ratio.reduction * bound;
+                Ok(Tail { bound, force: [mu * bound, tr * bound], deficit, error: 4.0 * moved * bound })
             }
-            _ => Ok(Tail { bound, force: [0.0; 2], error: bound }),
+            _ => Ok(Tail { bound, force: [0.0; 2], deficit: bound, error: bound }),
         }
     }
 }

@@ -490,6 +490,7 @@ fn corrected(
     let gs = lin(g, s);
     let mut moved = w.clone();
     moved.force = [w.force[0] + gs[0], w.force[1] + gs[1]];
+    moved.deficit = w.deficit - gs[0];
     moved.events.clear();
     let start_error = (second + size * m * rounding(w, scale) / (1.0 - m)) / TAU;
     Some(answer(&moved, total, m, start_error, periods).map(|e| (e, [f[0] + s[0], f[1] + s[1]])))
@@ -626,7 +627,7 @@ fn answer(w: &Walk, total: f64, multiplier: f64, start_error: f64, periods: usiz
         return Err(Error::Internal { what: format!("transverse_ratio = {tr:?} in the plane") });
     }
     Ok(PlaneEvaluation {
-        ratio: crate::Ratio::signed(mu, 1.0 - mu, error_estimate, "the plane")?,
+        ratio: crate::Ratio::signed(mu, w.deficit / total, error_estimate, "the plane")?,
         transverse_ratio: tr,
         error_estimate,
         multiplier,

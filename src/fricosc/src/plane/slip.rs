@@ -59,10 +59,12 @@ pub(super) fn growth(b: &Series, xd: &[Series; 2], y0: [f64; 2]) -> f64 {
     }
 }
 
-/// `n = |y|^2`, `c2 = y2^2 - y1^2`, `s2 = 2 y1 y2`: `e = (c2, s2)/n`.
-pub(super) fn quadratics(y: &[Series; 2]) -> [Series; 3] {
+/// `n = |y|^2`, `c2 = y2^2 - y1^2`, `s2 = 2 y1 y2`: `e = (c2, s2)/n`; and
+/// `d2 = 2 y1^2 = n - c2`, so that `1 - e_x = d2/n` keeps its relative
+/// accuracy where the force is nearly along `x` (the reduction's share).
+pub(super) fn quadratics(y: &[Series; 2]) -> [Series; 4] {
     let [q0, q1, p] = Series::squares_and_product(y);
-    [q0 + q1, q1 - q0, p * 2.0]
+    [q0 + q1, q1 - q0, p * 2.0, q0 * 2.0]
 }
 
 /// The slip rate `lambda = X'.e - B'` times `n` (of any scale of `y`),
@@ -72,7 +74,7 @@ pub(super) fn quadratics(y: &[Series; 2]) -> [Series; 3] {
 /// ulp of `(|X'_x| + |X'_y| + |B'|) n`, as `c2` and `s2` carry an ulp of `n`
 /// each (a direction along an axis has a component of rounding size) and
 /// each component of `X'` an ulp of `|X'|` (a drive rotated or composed).
-pub(super) fn slip_rate(xd: &[Series; 2], bdot: &Series, [n, c2, s2]: &[Series; 3]) -> ([f64; 2], f64) {
+pub(super) fn slip_rate(xd: &[Series; 2], bdot: &Series, [n, c2, s2, _]: &[Series; 4]) -> ([f64; 2], f64) {
     let sizes = (xd[0].0[0].abs() + xd[1].0[0].abs() + bdot.0[0].abs()) * n.0[0];
     let low = |a: &Series, b: &Series| [a.0[0] * b.0[0], a.0[0] * b.0[1] + a.0[1] * b.0[0]];
     let (x, y, z) = (low(&xd[0], c2), low(&xd[1], s2), low(bdot, n));

@@ -76,6 +76,9 @@ enum Phase {
 pub(crate) struct Walk {
     /// `int f dtau`.
     pub(crate) force: [f64; 2],
+    /// `int (B - f_x) dtau`, by its own series (the reduction's share, to
+    /// its relative accuracy where `f_x` is nearly `B`).
+    pub(crate) deficit: f64,
     /// `int B dtau`, summed step by step as the force is: its difference from
     /// the closed form measures the rounding of both.
     pub(crate) bound: f64,
@@ -122,6 +125,8 @@ struct Walker<'a> {
     tau: f64,
     phase: Phase,
     force: [Kahan; 2],
+    /// `int (B - f_x)` along the walk.
+    deficit: Kahan,
     /// `int B` along the walk, by the same series as the force.
     bound: Kahan,
     truncation: f64,
@@ -202,6 +207,7 @@ impl Spring {
         };
         Ok(Walk {
             force: [w.force[0].sum, w.force[1].sum],
+            deficit: w.deficit.sum,
             bound: w.bound.sum,
             end: end_force,
             jacobian: w.end_jacobian(),
@@ -258,6 +264,7 @@ impl<'a> Walker<'a> {
             tau,
             phase: Phase::Out,
             force: [Kahan::default(), Kahan::default()],
+            deficit: Kahan::default(),
             bound: Kahan::default(),
             truncation: 0.0,
             jac: [[1.0, 0.0], [0.0, 1.0]],
@@ -341,8 +348,10 @@ impl Walker<'_> {
         }
     }
 
-    fn book(&mut self, fx: &Series, fy: &Series, b: &Series, t: f64) {
+    /// Books a step of length `t`: the force `(fx, fy)`, the bound `b`, the deficit `d = B - f_x`.
+    fn book(&mut self, [fx, fy]: [&Series; 2], b: &Series, d: &Series, t: f64) {
         self.bound.add(b.integral(t));
+        self.deficit.add(d.integral(t));
         self.force[0].add(fx.integral(t));
         self.force[1].add(fy.integral(t));
     }
@@ -374,7 +383,7 @@ impl Walker<'_> {
         }
         let fall = g.first_fall(skip, h).map_err(|()| self.stalled("stick"))?;
         let t = fall.map_or(h, |(a, c)| refine(&g, skip, a, c));
-        self.book(&fx, &fy, &b, t);
+        self.book([&fx, &fy], &b, &(b - fx), t);
         self.sense([t, t], true);
         self.truncation += (fx.tail(h) + fy.tail(h)) * h;
         let fe = [fx.eval(t), fy.eval(t)];
@@ -423,6 +432,7 @@ impl Walker<'_> {
                 self.bound.add(part);
                 self.force[0].add(e[0] * part);
                 self.force[1].add(e[1] * part);
+                self.deficit.add(2.0 * y0[0] * y0[0] / (y0[0] * y0[0] + y0[1] * y0[1]) * part);
                 self.truncation += 2.0 * part;
                 self.tau = stop;
                 return Ok(if stop == l { self.lose() } else { Phase::Slip { y: y0, regain: false } });
@@ -482,7 +492,7 @@ impl Walker<'_> {
         ev.0[0] = if skip == 1 { 0.0 } else { r0 * w0 / (quad[0].0[0] * quad[0].0[0]) };
         let fall = ev.first_fall(skip, h).map_err(|()| self.stalled("slip"))?;
         let t = fall.map_or(h, |(a, c)| refine(&ev, skip, a, c));
-        self.book(&fx, &fy, &bt, t);
+        self.book([&fx, &fy], &bt, &(bn * quad[3]), t);
         if self.sens.is_some() && self.jac[0] != [0.0; 2] {
             self.sense(turning([&fx, &fy], &quad[0], lam, t), false);
         }
@@ -577,6 +587,8 @@ impl Walker<'_> {
             w.force[0].add(f[0]);
             w.force[1].add(f[1]);
             w.bound.add(f[2]);
+            // The layer's `int B` is small: its difference keeps an ulp of the period's.
+            w.deficit.add(f[2] - f[0]);
             w.truncation += err;
         };
         self.jac = [[0.0; 2]; 2];
