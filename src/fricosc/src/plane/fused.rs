@@ -51,16 +51,17 @@ impl Series {
         [Series(sa), Series(sb), Series(p)]
     }
 
-    /// `[self * a, self * b]` by [`Mul`], in one pass (the same bits).
-    pub(crate) fn mul_pair(&self, a: &Series, b: &Series) -> [Series; 2] {
-        let (mut ra, mut rb) = ([0.0; LEN], [0.0; LEN]);
+    /// `self * o` for each `o` of `others` by [`Mul`], in one pass (the same bits).
+    pub(crate) fn mul_each<const K: usize>(&self, others: [&Series; K]) -> [Series; K] {
+        let mut r = [Series([0.0; LEN]); K];
         for (i, &s) in self.0.iter().enumerate() {
-            for ((x, y), (&u, &v)) in ra[i..].iter_mut().zip(&mut rb[i..]).zip(a.0.iter().zip(&b.0)) {
-                *x += s * u;
-                *y += s * v;
+            for j in i..LEN {
+                for (rk, o) in r.iter_mut().zip(&others) {
+                    rk.0[j] += s * o.0[j - i];
+                }
             }
         }
-        [Series(ra), Series(rb)]
+        r
     }
 }
 
@@ -87,7 +88,8 @@ mod tests {
             d.0[0] += 1.0;
             assert_eq!(Series::div_pair(&[a, b], &d), [a.div(&d), b.div(&d)]);
             assert_eq!(Series::squares_and_product(&[a, b]), [a.square(), b.square(), a * b]);
-            assert_eq!(d.mul_pair(&a, &b), [d * a, d * b]);
+            assert_eq!(d.mul_each([&a, &b]), [d * a, d * b]);
+            assert_eq!(d.mul_each([&a, &b, &d]), [d * a, d * b, d * d]);
         }
     }
 }

@@ -128,6 +128,6 @@ pub(super) fn turning(f: [&Series; 2], n: &Series, lam: f64, t: f64) -> [f64; 2]
         term *= -2.0 * lam * RECIPROCALS[k];
     }
     let g = Series(decay).div(n);
-    let [gy, gx] = g.mul_pair(f[1], f[0]);
+    let [gy, gx] = g.mul_each([f[1], f[0]]);
     [-gy.integral(t), gx.integral(t)]
 }

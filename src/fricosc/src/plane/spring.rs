@@ -471,7 +471,7 @@ impl Walker<'_> {
             Some(w) => q * w,
             None => q,
         };
-        let [fx, fy] = bn.mul_pair(&quad[1], &quad[2]);
+        let [fx, fy, deficit] = bn.mul_each([&quad[1], &quad[2], &quad[3]]);
         let st = self.sp.step_tol;
         // The force's series serve its integral, whose truncation is about
         // `h/(N + 2)` times the series' at `h` ([`Series::integral_tail`]): they may
@@ -492,7 +492,7 @@ impl Walker<'_> {
         ev.0[0] = if skip == 1 { 0.0 } else { r0 * w0 / (quad[0].0[0] * quad[0].0[0]) };
         let fall = ev.first_fall(skip, h).map_err(|()| self.stalled("slip"))?;
         let t = fall.map_or(h, |(a, c)| refine(&ev, skip, a, c));
-        self.book([&fx, &fy], &bt, &(bn * quad[3]), t);
+        self.book([&fx, &fy], &bt, &deficit, t);
         if self.sens.is_some() && self.jac[0] != [0.0; 2] {
             self.sense(turning([&fx, &fy], &quad[0], lam, t), false);
         }
