@@ -282,7 +282,9 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
                 let step = newton_step(&w.jacobian, r)
                     .filter(|s| near && s[0].hypot(s[1]) <= COARSE_UNTIL * force_scale(f))
                     .unwrap_or([0.0; 2]);
-                (cur, f) = (&exact[sensing], [f[0] + step[0], f[1] + step[1]]);
+                // Its sensitivity serves only with a visit before it ([`corrected`]).
+                let sense = sensing * usize::from(seen.is_some());
+                (cur, f) = (&exact[sense], [f[0] + step[0], f[1] + step[1]]);
                 w = cur.walk(Start::Force(0.0, f), TAU)?;
                 (periods, leaping) = (periods + 1, false);
                 continue;
