@@ -11,7 +11,11 @@
 //! derivative (`d th_end/d th_start = 1/|y_end|^2` along a slip, the identity
 //! along a stick, the projection across the circle at the events); a spring
 //! that leaves contact, or touches it (`amp = 1`), forgets its past, and one
-//! period from contact is its orbit.
+//! period from contact is its orbit. The last Newton step need not be
+//! walked: the means move with the start by the walk's own sensitivity
+//! (`corrected`), and what that leaves is second order. The reduction is
+//! the deficit `<B - f_x>` integrated as such (`B (1 - e_x) = 2 B y1^2/|y|^2`
+//! along a slip), not `1 - mu_ratio`.
 
 mod clock;
 mod curved;
@@ -256,7 +260,7 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
     }
     // Far from the orbit the walks are coarse (`Spring::coarse`); from a
     // residual of [`COARSE_UNTIL`] on, exact: Newton's next start is then
-    // within about the square of it, and two exact walks close the search.
+    // within about the square of it, and one or two exact walks close the search.
     let coarse = sp.coarse();
     // An exact walk from a start that Newton's step is not expected to
     // close finds its sensitivity ([`SENSE_ABOVE`]): it may close the search
