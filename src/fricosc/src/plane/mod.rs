@@ -262,10 +262,8 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
     // residual of [`COARSE_UNTIL`] on, exact: Newton's next start is then
     // within about the square of it, and one or two exact walks close the search.
     let coarse = sp.coarse();
-    // An exact walk from a start that Newton's step is not expected to
-    // close finds its sensitivity ([`SENSE_ABOVE`]): it may close the search
-    // itself ([`corrected`]); where the events are asked, one more walk from
-    // the orbit's start gives them (the means are the same either way).
+    // An exact walk from a start Newton's step is not expected to close finds its
+    // sensitivity ([`SENSE_ABOVE`]) to close the search itself ([`corrected`]).
     let exact = [*sp, sp.sensing()];
     let sensing = usize::from(precision != Precision::Coarse);
     let mut cur = &coarse;
@@ -287,8 +285,7 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
                     .filter(|s| near && s[0].hypot(s[1]) <= COARSE_UNTIL * force_scale(f))
                     .unwrap_or([0.0; 2]);
                 // Its sensitivity serves only with a visit before it ([`corrected`]).
-                let sense = sensing * usize::from(seen.is_some());
-                (cur, f) = (&exact[sense], [f[0] + step[0], f[1] + step[1]]);
+                (cur, f) = (&exact[sensing * usize::from(seen.is_some())], [f[0] + step[0], f[1] + step[1]]);
                 w = cur.walk(Start::Force(0.0, f), TAU)?;
                 (periods, leaping) = (periods + 1, false);
                 continue;
