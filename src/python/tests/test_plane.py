@@ -82,7 +82,7 @@ def test_mu_ratio_in_the_plane_is_the_point_at_every_element() -> None:
             p = fricosc.point("flat", vhat=0.3, amp=0.5, tangential_amp=0.4, phase=0.2, transverse_amp=float(w), transverse_phase=psi)
             assert got[i, j] == p["mu_ratio"], (psi, w)
     red = fricosc.reduction("cone", vhat=0.3, amp=1.5, transverse_amp=1.0, transverse_phase=0.7)
-    assert red == 1.0 - fricosc.point("cone", vhat=0.3, amp=1.5, transverse_amp=1.0, transverse_phase=0.7)["mu_ratio"]
+    assert red == fricosc.point("cone", vhat=0.3, amp=1.5, transverse_amp=1.0, transverse_phase=0.7)["reduction"]
     with pytest.raises(fricosc.InputError, match="transverse-amp"):
         fricosc.mu_ratio("flat", vhat=0.3, amp=0.5, transverse_amp=[1.0, -1.0])
     with pytest.raises(fricosc.InputError, match="system_stiffness"):
