@@ -477,20 +477,14 @@ fn corrected(
     let m = multiplier(j);
     let r = [w.end[0] - f[0], w.end[1] - f[1]];
     let s = newton_step(j, r)?;
-    let d = [f[0] - before.f[0], f[1] - before.f[1]];
-    let dd = d[0] * d[0] + d[1] * d[1];
-    let lin = |m: &[[f64; 2]; 2], v: [f64; 2]| [m[0][0] * v[0] + m[0][1] * v[1], m[1][0] * v[0] + m[1][1] * v[1]];
-    let (gd, jd) = (lin(g, d), lin(j, d));
-    let k = (w.force[0] - before.force[0] - gd[0]).hypot(w.force[1] - before.force[1] - gd[1]) / dd;
-    let rb = [before.end[0] - before.f[0], before.end[1] - before.f[1]];
-    let c = (r[0] - rb[0] - jd[0] + d[0]).hypot(r[1] - rb[1] - jd[1] + d[1]) / dd;
+    let [k, c] = curvatures(w, g, f, before);
     let (ss, scale) = (s[0] * s[0] + s[1] * s[1], force_scale(f));
     let size = g.iter().flatten().map(|x| x * x).sum::<f64>().sqrt();
     let second = k * ss + size * c * ss / (1.0 - m);
     if !(m < 1.0 && second <= TAU * 8.0 * f64::EPSILON * scale) {
         return None;
     }
-    let gs = lin(g, s);
+    let gs = times(g, s);
     let mut moved = w.clone();
     moved.force = [w.force[0] + gs[0], w.force[1] + gs[1]];
     moved.deficit = w.deficit - gs[0];
@@ -513,6 +507,25 @@ fn with_events(
         e.periods += 1;
     }
     Ok((e, Start::Force(0.0, s)))
+}
+
+/// `m v`.
+fn times(m: &[[f64; 2]; 2], v: [f64; 2]) -> [f64; 2] {
+    [m[0][0] * v[0] + m[0][1] * v[1], m[1][0] * v[0] + m[1][1] * v[1]]
+}
+
+/// `[K, C]` of [`corrected`]: how far the walk `w` from `f` (its
+/// sensitivity `g`) and the one from `before` differ from their linear
+/// prediction, the force's integral and the residual, over their distance
+/// squared.
+fn curvatures(w: &Walk, g: &[[f64; 2]; 2], f: [f64; 2], before: &Seen) -> [f64; 2] {
+    let d = [f[0] - before.f[0], f[1] - before.f[1]];
+    let dd = d[0] * d[0] + d[1] * d[1];
+    let (gd, jd) = (times(g, d), times(&w.jacobian, d));
+    let k = (w.force[0] - before.force[0] - gd[0]).hypot(w.force[1] - before.force[1] - gd[1]) / dd;
+    let (r, rb) = ([w.end[0] - f[0], w.end[1] - f[1]], [before.end[0] - before.f[0], before.end[1] - before.f[1]]);
+    let c = (r[0] - rb[0] - jd[0] + d[0]).hypot(r[1] - rb[1] - jd[1] + d[1]) / dd;
+    [k, c]
 }
 
 /// Periods run from the relaxed start at most, where the orbit is neutral.

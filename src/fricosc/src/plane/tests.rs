@@ -1,7 +1,7 @@
 //! The plane's solver on drives the public interface cannot express.
 use super::drive::{Bound, Drive};
 use super::spring::{Spring, Start};
-use super::{orbit, orbit_to, relaxed, PlaneEvaluation, Precision};
+use super::{curvatures, orbit, orbit_to, relaxed, PlaneEvaluation, Precision, Seen};
 use crate::{Conditions, Shape};
 use std::f64::consts::TAU;
 
@@ -410,4 +410,27 @@ fn a_curved_contacts_springs_start_near_their_orbits() {
     let d = Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7);
     let e = super::curved::solve(Shape::parabolic().contact(), d, 0.5, crate::DEFAULT_TOL).unwrap();
     assert!((575..=600).contains(&e.periods), "{}", e.periods);
+}
+
+/// The second-order constants that let a walk close a search
+/// ([`super::corrected`]): a force integral and a residual that differ from
+/// their linear prediction by `7 |d|^2` and `3 |d|^2`, built by hand around a
+/// walk's Jacobian, give `K = 7` and `C = 3`.
+#[test]
+fn the_curvatures_are_the_departures_from_linear_over_the_distance_squared() {
+    let sp = Spring::new(Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7), Bound::new(1.0, 0.5));
+    let mut w = sp.walk(Start::Force(0.0, [0.3, 0.1]), TAU).unwrap();
+    w.jacobian = [[0.5, 0.1], [0.2, 0.3]];
+    let (f, fb, g) = ([0.3, 0.1], [0.1, 0.2], [[1.0, 2.0], [3.0, 4.0]]);
+    let (d, dd) = ([0.2, -0.1], 0.05);
+    w.force = [5.0, 6.0];
+    let gd = [g[0][0] * d[0] + g[0][1] * d[1], g[1][0] * d[0] + g[1][1] * d[1]];
+    let force = [w.force[0] - gd[0] - 7.0 * dd, w.force[1] - gd[1]];
+    let r = [0.01, 0.02];
+    w.end = [f[0] + r[0], f[1] + r[1]];
+    let j = w.jacobian;
+    let jd = [j[0][0] * d[0] + j[0][1] * d[1] - d[0], j[1][0] * d[0] + j[1][1] * d[1] - d[1]];
+    let end = [fb[0] + r[0] - jd[0], fb[1] + r[1] - jd[1] - 3.0 * dd];
+    let [k, c] = curvatures(&w, &g, f, &Seen { f: fb, force, end });
+    assert!((k - 7.0).abs() < 1e-12 && (c - 3.0).abs() < 1e-12, "K {k}, C {c}");
 }
