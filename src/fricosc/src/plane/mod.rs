@@ -228,9 +228,8 @@ const MAX_HALVINGS: usize = 6;
 /// How closely an orbit is walked: to full precision, its means to full
 /// precision (the same bits; from a walk a Newton step off the orbit,
 /// [`corrected`], whose events are not the orbit's and are not given), or
-/// by [`Spring::coarse`]
-/// walks only (about `1e-9` a period, within its estimate: a band search's
-/// sequence of events, a loose tolerance).
+/// by [`Spring::coarse`] walks only (about `1e-9` a period, within its
+/// estimate: a band search's sequence of events, a loose tolerance).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Precision {
     Exact,

@@ -329,10 +329,10 @@ impl Walker<'_> {
         }
     }
 
-    /// `sens += d f/d f_start` integrated over a step: `v` times row `j` of
-    /// the Jacobian at the step's start, for `j` in `rows` (a stick's `f`
-    /// moves with its start by the Jacobian, `v = (t, t)` on its rows; a
-    /// slip's by `d f/d th` times row 0, `v` from [`turning`]). The force's
+    /// `sens += d f/d f_start` integrated over a step: `v[i]` times a row of
+    /// the Jacobian at the step's start (a stick's `f` moves with its start
+    /// by the Jacobian, row `i`, `v = (t, t)`; a slip's by `d f/d th` times
+    /// row 0, `d th/d f_start`, `v` from [`turning`]). The force's
     /// integral is continuous across an event (the force is), so the events'
     /// own moves add nothing at first order. [`Spring::sensing`] only: it serves an
     /// answer's last step to the orbit (`super::corrected`), which is
