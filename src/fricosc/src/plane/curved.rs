@@ -8,8 +8,11 @@
 //! edges where a spring's sequence of events changes
 //! ([`crate::integrate::bands`]), each band by Gauss-Legendre in `theta`
 //! (`z = a + (b - a)(1 - cos theta)/2`, which absorbs the square root at
-//! the edges) with the order doubled from 8 until two orders agree to the
-//! tolerance relative to the contact's normal force; a pass's error is its
+//! the edges) with the order doubled until two orders agree to the
+//! tolerance relative to the contact's normal force, from 8, or from 16
+//! below a tolerance of `1e-9` (where a pass of 8 nodes, whose difference
+//! from the next bounds its error, is never close enough: its nodes, a
+//! period's walk each, would be spent for nothing); a pass's error is its
 //! difference from the one before (an event that appears between two
 //! samples of the band search leaves a kink that the coefficients' decay
 //! would not see). A pass's nodes, and the search's samples, are solved on
@@ -51,8 +54,6 @@ pub(crate) const SPRING_STEPS: f64 = 5000.0;
 /// of its `<B>` at 1e-5), and [`period_steps`] does not count where the
 /// bound is below its floor.
 const MIN_PEAK: f64 = 1e-5;
-/// First Gauss-Legendre order of a band (the next doubles it).
-const FIRST_ORDER: usize = 8;
 /// Largest Gauss-Legendre order of a band.
 const MAX_ORDER: usize = 1024;
 /// Order of the tail's `int <B> dz` (a smooth integrand in `theta`).
@@ -198,7 +199,7 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     // and not converged.
     for w in edges.windows(2).filter(|w| w[1] > w[0]) {
         let r = ladder.run(
-            FIRST_ORDER,
+            ladder.first_order(),
             |m| {
                 let known = springs.starts_within(w[0], w[1]);
                 cosine_pass_parallel(w[0], w[1], m, [true; 5], &|z| node(z, nearest(&known, z)))
