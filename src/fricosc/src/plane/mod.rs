@@ -249,8 +249,9 @@ fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
 }
 
 /// The attracting orbit of `sp` walked to `precision`, and where it starts,
-/// searched from the force `from` at `tau = 0` (0, or a neighbour's start:
-/// only the way to the orbit depends on it).
+/// searched from the force `from` at `tau = 0` (a neighbour's start, or 0
+/// for none: then from [`rigid_start`]; only the way to the orbit depends
+/// on it).
 pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Result<(PlaneEvaluation, Start)> {
     let total = sp.bound.period_integral();
     if sp.bound.amp >= sp.bound.level {
@@ -269,7 +270,7 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
     // contact's node) is near from the first walk: a coarse one would only
     // tell it so, and two exact walks close it ([`corrected`]).
     let mut cur = if precision == Precision::Means && from != [0.0; 2] { &exact[0] } else { &coarse };
-    let mut f = from;
+    let mut f = if from == [0.0; 2] { rigid_start(sp) } else { from };
     let mut periods = 1;
     let mut w = cur.walk(Start::Force(0.0, f), TAU)?;
     let mut leaping = false;
@@ -352,6 +353,21 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
         };
     }
     Err(Error::Internal { what: format!("no attracting periodic orbit in the plane after {periods} periods") })
+}
+
+/// Where a search with no better start begins: where the body moves at
+/// `tau = 0` by at least its bound a radian (`|X'(0)| >= B(0) > 0`), the
+/// rigid body's force, `B(0)` along `X'(0)`, which a spring that slips
+/// there lags by about `B/|X'|` of a turn; else 0 (a slower body's spring
+/// may stick, anywhere in the disc).
+fn rigid_start(sp: &Spring) -> [f64; 2] {
+    let (v, b) = (sp.drive.velocity_at(0.0), sp.bound.at(0.0));
+    let speed = v[0].hypot(v[1]);
+    if speed >= b && b > 0.0 {
+        [b * v[0] / speed, b * v[1] / speed]
+    } else {
+        [0.0; 2]
+    }
 }
 
 /// A start of the period map and the walk of its period.

@@ -401,6 +401,22 @@ fn the_clocks_set_a_lifting_springs_steps() {
     }
 }
 
+/// A search with no start begins at the rigid body's force ([`super::rigid_start`]):
+/// at the bench point (`|X'(0)| = 0.97 >= B(0) = 0.5`) it walks 3 periods
+/// where one from 0 walks 4 (two coarse walks, not three, before the exact
+/// one), and a body slower than its bound at `tau = 0` starts from 0.
+#[test]
+fn a_search_with_no_start_begins_at_the_rigid_bodys_force() {
+    let sp = Spring::new(Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7), Bound::new(1.0, 0.5));
+    let e = orbit_to(&sp, Precision::Means, [0.0; 2]).unwrap().0;
+    assert_eq!(e.periods, 3);
+    let v = sp.drive.velocity_at(0.0);
+    let f = super::rigid_start(&sp);
+    assert!((f[0] * v[1] - f[1] * v[0]).abs() < 1e-15 && (f[0].hypot(f[1]) - 0.5).abs() < 1e-15, "{f:?}");
+    let slow = Spring::new(Drive::sliding(0.3, 0.0, 0.0, 0.2, 0.7), Bound::new(1.0, 0.5));
+    assert_eq!(super::rigid_start(&slow), [0.0; 2]);
+}
+
 /// A curved contact's nodes start their searches from their neighbours'
 /// orbits ([`super::curved`]), and walk exactly from there ([`orbit_to`]):
 /// at the bench point the paraboloid's 320 nodes walk 455 periods (208 that
