@@ -266,15 +266,13 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
     // sensitivity ([`SENSE_ABOVE`]) to close the search itself ([`corrected`]).
     let exact = [*sp, sp.sensing()];
     let sensing = usize::from(precision != Precision::Coarse);
-    // A search for exact means from a neighbour's start (not 0: a curved
-    // contact's node) is near from the first walk: a coarse one would only
-    // tell it so, and two exact walks close it ([`corrected`]).
+    // From a neighbour's start (a curved contact's node) the search is near at
+    // once: exact walks from the first, two close it ([`corrected`]).
     let mut cur = if precision == Precision::Means && from != [0.0; 2] { &exact[0] } else { &coarse };
     let mut f = if from == [0.0; 2] { rigid_start(sp) } else { from };
     let mut periods = 1;
     let mut w = cur.walk(Start::Force(0.0, f), TAU)?;
-    let mut leaping = false;
-    let mut seen: Option<Seen> = None;
+    let (mut leaping, mut seen) = (false, None::<Seen>);
     while periods < MAX_ORBIT_PERIODS {
         let res = residual(f, &w);
         if !cur.is_exact() {
