@@ -29,7 +29,7 @@ fn plane(c: &Conditions, w: f64, psi: f64) -> Evaluation {
 #[test]
 fn matches_the_independent_reference() {
     let cases = data_cases("plane-reference.json");
-    assert_eq!(cases.len(), 13);
+    assert_eq!(cases.len(), 14);
     for case in cases {
         let g = |k: &str| case[k].as_f64().unwrap();
         let c = conditions(g("vhat"), g("amp"), g("tangential_amp"), g("phase"));
@@ -67,8 +67,10 @@ fn matches_the_independent_reference() {
     }
 }
 
-/// The search for each reference orbit walks at most these periods (coarse
-/// walks until Newton is near, two exact ones to close; one period for a
+/// The search for each reference orbit walks at most these periods (from
+/// the rigid body's force where the body outruns its bound at `tau = 0`,
+/// coarse walks until Newton is near, an exact one to close and one for the
+/// events; one period for a
 /// spring that loses contact; leaps along a slow drift at `vhat` 1e-10): a
 /// search that loses its way, or closes on walks it did not need, takes more.
 /// The reduction keeps its relative accuracy where friction is nearly
@@ -94,7 +96,7 @@ fn the_reduction_keeps_its_relative_accuracy_at_a_fast_slide() {
 
 #[test]
 fn the_reference_orbits_are_found_in_few_periods() {
-    let most = [5, 1, 4, 1, 5, 4, 1, 1, 12, 1, 281, 1, 14];
+    let most = [4, 1, 4, 1, 4, 4, 1, 1, 12, 1, 281, 1, 14, 5];
     for (case, most) in data_cases("plane-reference.json").iter().zip(most) {
         let g = |k: &str| case[k].as_f64().unwrap();
         let c = conditions(g("vhat"), g("amp"), g("tangential_amp"), g("phase"));
