@@ -570,7 +570,7 @@ fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::bench::Inst
 /// The `table` workloads: what runs, the table's options and those of its
 /// one-point counterpart, its rows, and the instructions per row it is meant
 /// to take (a flat point on a system: 1.5 M, issue 59's target).
-const TABLES: [(&str, &str, &str, usize, Option<f64>); 6] = [
+const TABLES: [(&str, &str, &str, usize, Option<f64>); 8] = [
     (
         "table, 100 x 100 flat",
         "--shape flat --vbar 0:1.2:100 --amp 0:3:100",
@@ -612,6 +612,20 @@ const TABLES: [(&str, &str, &str, usize, Option<f64>); 6] = [
          --springs 64",
         "--shape parabolic --vbar 0.6 --amp 0.5 --system-stiffness 1 --frequency-ratio 0.5 --damping 0.05 --springs 64",
         4,
+        None,
+    ),
+    (
+        "table in the plane, flat: 20 vhat at du/u0 = 0.5, W 1.2, psi 0.7",
+        "--shape flat --vhat 0.1:1.2:20 --amp 0.5 --transverse-amp 1.2 --transverse-phase 0.7",
+        "--shape flat --vhat 0.3 --amp 0.5 --transverse-amp 1.2 --transverse-phase 0.7",
+        20,
+        None,
+    ),
+    (
+        "table in the plane, parabolic: 2 vhat at du/u0 = 0.5, W 1.2, psi 0.7",
+        "--shape parabolic --vhat 0.3:0.6:2 --amp 0.5 --transverse-amp 1.2 --transverse-phase 0.7",
+        "--shape parabolic --vhat 0.3 --amp 0.5 --transverse-amp 1.2 --transverse-phase 0.7",
+        2,
         None,
     ),
 ];
