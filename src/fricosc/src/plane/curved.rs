@@ -10,9 +10,9 @@
 //! (`z = a + (b - a)(1 - cos theta)/2`, which absorbs the square root at
 //! the edges) with the order doubled until two orders agree to the
 //! tolerance relative to the contact's normal force, from 8, or from 16
-//! below a tolerance of `1e-9` (where a pass of 8 nodes, whose difference
-//! from the next bounds its error, is never close enough: its nodes, a
-//! period's walk each, would be spent for nothing); a pass's error is its
+//! below a tolerance of `1e-9` (where a pass of 8 nodes is seldom within
+//! the tolerance of the next, which a band of order 16 needs: its nodes, a
+//! period's walk each, would mostly be spent for nothing); a pass's error is its
 //! difference from the one before (an event that appears between two
 //! samples of the band search leaves a kink that the coefficients' decay
 //! would not see). A pass's nodes, and the search's samples, are solved on
