@@ -463,13 +463,9 @@ pub fn run(a: BenchArgs) -> Result<()> {
         o += &format!("{}: {:.3e} points a second on one core{target}\n", t.kind, t.points_per_second_per_core);
     }
     for c in &report.instructions {
-        o += &format!(
-            "{}: {:.0} instructions per row (callgrind, {} rows){}\n",
-            c.workload,
-            c.instructions_per_row,
-            c.rows,
-            c.target.map_or(String::new(), |t| format!("; target at most {t:.0}"))
-        );
+        let (target, n, what) =
+            (c.target.map_or(String::new(), |t| format!("; target at most {t:.0}")), c.rows, &c.workload);
+        o += &format!("{what}: {:.0} instructions per row (callgrind, {n} rows){target}\n", c.instructions_per_row);
     }
     for f in &report.failures {
         o += &format!("failure: {f}\n");
@@ -493,12 +489,10 @@ fn callgrind(args: &[&str]) -> Option<f64> {
     line.rsplit(':').next()?.trim().parse().ok()
 }
 
-/// Per-row instruction counts of `batch` (JSON array, JSON Lines and CSV; flat
-/// and parabolic rows) and `table`, where valgrind is installed (none
-/// otherwise). Each is the count of a large run minus a one-row run (so that
-/// start-up is not counted), over the rows' difference. Rayon runs one thread
-/// (`RAYON_NUM_THREADS=1`): idle worker threads spin, and their instructions
-/// would count as work.
+/// Per-row instruction counts of `batch` (JSON array, JSON Lines and CSV; flat and parabolic rows) and `table`, where
+/// valgrind is installed (none otherwise). Each is the count of a large run minus a one-row run (so that start-up is
+/// not counted), over the rows' difference. Rayon runs one thread (`RAYON_NUM_THREADS=1`): idle worker threads spin,
+/// and their instructions would count as work.
 fn instruction_counts() -> Result<Vec<crate::bench::InstructionCount>> {
     // The workloads' input files go in a scratch folder of our own, removed after.
     let scratch = std::env::temp_dir().join(format!("fricosc-bench-{}", std::process::id()));
@@ -567,9 +561,8 @@ fn instruction_counts_in(dir: &std::path::Path) -> Result<Vec<crate::bench::Inst
     Ok(out)
 }
 
-/// The `table` workloads: what runs, the table's options and those of its
-/// one-point counterpart, its rows, and the instructions per row it is meant
-/// to take (a flat point on a system: 1.5 M, issue 59's target).
+/// The `table` workloads: what runs, the table's options and those of its one-point counterpart, its rows, and the
+/// instructions per row it is meant to take (a flat point on a system: 1.5 M, issue 59's target).
 const TABLES: [(&str, &str, &str, usize, Option<f64>); 8] = [
     (
         "table, 100 x 100 flat",
@@ -632,19 +625,16 @@ const TABLES: [(&str, &str, &str, usize, Option<f64>); 8] = [
 
 /// Instructions per row of `table` ([`TABLES`]), against a one-point table.
 fn table_counts() -> Vec<crate::bench::InstructionCount> {
-    let mut out = vec![];
-    for (workload, table, single, rows, target) in TABLES {
-        let args = |options: &str| format!("table {options} --format csv");
-        let count = |options: &str| callgrind(&args(options).split_whitespace().collect::<Vec<_>>());
-        if let (Some(t), Some(s)) = (count(table), count(single)) {
-            out.push(crate::bench::InstructionCount {
-                workload: workload.into(),
-                rows,
-                instructions_per_row: (t - s) / (rows - 1) as f64,
-                command: format!("valgrind --tool=callgrind fricosc {} (minus 1 point)", args(table)),
-                target,
-            });
-        }
-    }
-    out
+    let args = |options: &str| format!("table {options} --format csv");
+    let count = |options: &str| callgrind(&args(options).split_whitespace().collect::<Vec<_>>());
+    let of = |(workload, table, single, rows, target): (&str, &str, &str, usize, Option<f64>)| {
+        Some(crate::bench::InstructionCount {
+            workload: workload.into(),
+            rows,
+            instructions_per_row: (count(table)? - count(single)?) / (rows - 1) as f64,
+            command: format!("valgrind --tool=callgrind fricosc {} (minus 1 point)", args(table)),
+            target,
+        })
+    };
+    TABLES.into_iter().filter_map(of).collect()
 }
