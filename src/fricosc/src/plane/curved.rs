@@ -90,20 +90,20 @@ struct Learned {
     starts: Vec<(f64, [f64; 2])>,
 }
 
-/// A start for the spring at `z` from those recorded (0 where none is):
+/// A start for the spring at `z` from those recorded (none where none is):
 /// between the nearest on either side, linear (within about the square of
 /// their distance of the orbit's start, where Newton is near), else the
 /// nearest.
-fn nearest(starts: &[(f64, [f64; 2])], z: f64) -> [f64; 2] {
+fn nearest(starts: &[(f64, [f64; 2])], z: f64) -> Option<[f64; 2]> {
     let below = starts.iter().filter(|s| s.0 <= z).max_by(|a, b| a.0.total_cmp(&b.0));
     let above = starts.iter().filter(|s| s.0 > z).min_by(|a, b| a.0.total_cmp(&b.0));
     match (below, above) {
         (Some(&(a, fa)), Some(&(b, fb))) => {
             let t = (z - a) / (b - a);
-            [fa[0] + t * (fb[0] - fa[0]), fa[1] + t * (fb[1] - fa[1])]
+            Some([fa[0] + t * (fb[0] - fa[0]), fa[1] + t * (fb[1] - fa[1])])
         }
-        (Some(s), None) | (None, Some(s)) => s.1,
-        (None, None) => [0.0; 2],
+        (Some(s), None) | (None, Some(s)) => Some(s.1),
+        (None, None) => None,
     }
 }
 
@@ -111,7 +111,7 @@ impl Springs {
     /// The ratios `(mu, transverse)`, the reduction and the estimate of the spring at `z`,
     /// its search from `from`, recorded with its start; `None` after the
     /// first error.
-    fn solve(&self, z: f64, spring: &Spring, precision: Precision, from: [f64; 2]) -> Option<[f64; 4]> {
+    fn solve(&self, z: f64, spring: &Spring, precision: Precision, from: Option<[f64; 2]>) -> Option<[f64; 4]> {
         if self.learned().error.is_some() {
             return None;
         }
@@ -178,10 +178,10 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     // A sequence of events needs no exact means: its thresholds move by
     // about the coarse walks' error, far below [`EDGE_RESOLUTION`].
     let sequence =
-        |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit_to(&spring(z), Precision::Coarse, [0.0; 2])?.0)) };
+        |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit_to(&spring(z), Precision::Coarse, None)?.0)) };
     let precision = if tol >= COARSE_TOL { Precision::Coarse } else { Precision::Means };
     let edges = bands::edges(c, (amp, zcap), EDGE_RESOLUTION, &sequence)?;
-    let node = |z: f64, from: [f64; 2]| {
+    let node = |z: f64, from: Option<[f64; 2]>| {
         let sp = spring(z);
         let b = sp.bound.period_integral() / TAU;
         let scale = sp.bound.level.abs() + amp;
@@ -264,7 +264,7 @@ impl Tail {
         }
         let mean = |z: f64| ([spring(z).bound.period_integral() / TAU], 0.0);
         let bound = cosine_pass(zcap, zmax, TAIL_ORDER, [true], &mean).sum[0].max(0.0);
-        let ratios = |z: f64| orbit_to(&spring(z), precision, [0.0; 2]).ok().map(|(e, _)| e);
+        let ratios = |z: f64| orbit_to(&spring(z), precision, None).ok().map(|(e, _)| e);
         let last = spring(zcap).bound;
         let half = c.level(1.0 - (0.5 * (last.level + amp) - amp));
         match (ratios(zcap), (half > zcap && half < zmax).then(|| ratios(half)).flatten()) {

@@ -128,7 +128,7 @@ pub(crate) fn solve(shape: &Shape, c: &Conditions, w: Transverse, events: bool) 
     let contact = shape.contact();
     if contact.single_spring() {
         let precision = if events { Precision::Exact } else { Precision::Means };
-        orbit_to(&sp, precision, [0.0; 2]).map(|(e, _)| e)
+        orbit_to(&sp, precision, None).map(|(e, _)| e)
     } else {
         curved::solve(contact, sp.drive, c.amp(), c.tol())
     }
@@ -245,14 +245,14 @@ const COARSE_CLOSE: f64 = 1e-9;
 
 /// The attracting orbit of `sp` and where it starts at `tau = 0`, exact.
 fn orbit(sp: &Spring) -> Result<(PlaneEvaluation, Start)> {
-    orbit_to(sp, Precision::Exact, [0.0; 2])
+    orbit_to(sp, Precision::Exact, None)
 }
 
 /// The attracting orbit of `sp` walked to `precision`, and where it starts,
-/// searched from the force `from` at `tau = 0` (a neighbour's start, or 0
-/// for none: then from [`rigid_start`]; only the way to the orbit depends
-/// on it).
-pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Result<(PlaneEvaluation, Start)> {
+/// searched from the force `from` at `tau = 0` (a neighbour's start, or
+/// from [`rigid_start`] where none is given; only the way to the orbit
+/// depends on it).
+pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: Option<[f64; 2]>) -> Result<(PlaneEvaluation, Start)> {
     let total = sp.bound.period_integral();
     if sp.bound.amp >= sp.bound.level {
         let walk = sp.walk(Start::Contact(0.0), TAU)?;
@@ -268,8 +268,8 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: [f64; 2]) -> Res
     let sensing = usize::from(precision != Precision::Coarse);
     // From a neighbour's start (a curved contact's node) the search is near at
     // once: exact walks from the first, two close it ([`corrected`]).
-    let mut cur = if precision == Precision::Means && from != [0.0; 2] { &exact[0] } else { &coarse };
-    let mut f = if from == [0.0; 2] { rigid_start(sp) } else { from };
+    let mut cur = if precision == Precision::Means && from.is_some() { &exact[0] } else { &coarse };
+    let mut f = from.unwrap_or_else(|| rigid_start(sp));
     let mut periods = 1;
     let mut w = cur.walk(Start::Force(0.0, f), TAU)?;
     let (mut leaping, mut seen) = (false, None::<Seen>);

@@ -353,7 +353,7 @@ fn a_coarse_orbit_is_within_its_estimate_of_the_exact_one() {
     for (d, amp) in drives {
         let sp = Spring::new(d, Bound::new(1.0, amp));
         let (exact, start) = orbit(&sp).unwrap();
-        let coarse = orbit_to(&sp, Precision::Coarse, [0.0; 2]).unwrap().0;
+        let coarse = orbit_to(&sp, Precision::Coarse, None).unwrap().0;
         let err = (coarse.ratio.mu_ratio - exact.ratio.mu_ratio)
             .abs()
             .max((coarse.transverse_ratio - exact.transverse_ratio).abs());
@@ -365,7 +365,7 @@ fn a_coarse_orbit_is_within_its_estimate_of_the_exact_one() {
     }
     let d = Drive::sliding(0.3, 0.0, 0.0, 1.0, 0.0);
     let sp = Spring::new(d, Bound::new(0.5000000000005, 0.5));
-    let (exact, coarse) = (orbit(&sp).unwrap().0, orbit_to(&sp, Precision::Coarse, [0.0; 2]).unwrap().0);
+    let (exact, coarse) = (orbit(&sp).unwrap().0, orbit_to(&sp, Precision::Coarse, None).unwrap().0);
     assert_eq!(exact, coarse);
 }
 
@@ -378,7 +378,7 @@ fn a_search_from_a_neighbours_start_reaches_the_same_orbit() {
     let (near, far) = (Spring::new(d, Bound::new(0.9995, 0.5)), Spring::new(d, Bound::new(1.0, 0.5)));
     let Start::Force(_, from) = orbit(&near).unwrap().1 else { panic!() };
     let plain = orbit(&far).unwrap().0;
-    let warm = orbit_to(&far, Precision::Exact, from).unwrap().0;
+    let warm = orbit_to(&far, Precision::Exact, Some(from)).unwrap().0;
     let err =
         (warm.ratio.mu_ratio - plain.ratio.mu_ratio).abs().max((warm.transverse_ratio - plain.transverse_ratio).abs());
     assert!(err <= plain.error_estimate.min(warm.error_estimate), "{err:e}");
@@ -408,7 +408,7 @@ fn the_clocks_set_a_lifting_springs_steps() {
 #[test]
 fn a_search_with_no_start_begins_at_the_rigid_bodys_force() {
     let sp = Spring::new(Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7), Bound::new(1.0, 0.5));
-    let e = orbit_to(&sp, Precision::Means, [0.0; 2]).unwrap().0;
+    let e = orbit_to(&sp, Precision::Means, None).unwrap().0;
     assert_eq!(e.periods, 3);
     let v = sp.drive.velocity_at(0.0);
     let f = super::rigid_start(&sp);
