@@ -13,8 +13,11 @@ Independent of fricosc's solver (src/fricosc/src/plane/):
   isolates the roots of its series by exclusion;
 - the steady state: periods from the relaxed start (f = 0 at tau = 0, or at
   first contact; for a drift too slow for that, a start given to 9 digits)
-  until the force at the period's start repeats to 21 digits;
-  fricosc uses Newton with the period map's derivative;
+  until the force at the period's start repeats to 21 digits; where the
+  orbit contracts too slowly for that (the map's multiplier within 1e-3 of
+  1), Newton on the period map from a given start, its Jacobian by
+  differences at 32 digits, until the residual is below 1e-28;
+  fricosc uses Newton with the period map's variational derivative;
 - the means are mpmath quadratures over each phase.
 Where contact is regained into slip (a regular singular point) the slip starts
 at DELTA after contact along X'; where it is lost, the slip stops DELTA before
@@ -59,6 +62,13 @@ CASES = [
     (0.0325026, 0.039, 0.0, 0.0, 0.3244, 4.5526),
     # The transverse drive alone, as in `figures` (directions-flat, W = 0.5 0.8/0.3).
     (0.1103030303030303, 0.0, 0.0, 0.0, 1.3333333333333335, 0.0),
+    # Slow contractions (multipliers 1 - 1.1e-5 and 1 - 3.2e-4), by Newton:
+    # small drives at a constant bound, the force near the x axis; and a
+    # normal oscillation with the drive across, the force far from the axes.
+    (1.7441358384264266e-06, 0.0, 0.0016171876476415883, 3.7652110076019483, 0.0006958643998562922,
+     5.7596193737003345, ("0.9974422383331742", "-0.00011131248603770319"), "newton"),
+    (2.059814337579708e-05, 0.38730156972940577, 0.0, 2.047812812301635, 0.5284214289510268,
+     2.1360749029854107, ("0.6126859569948747", "-0.003909546946226635"), "newton"),
 ]
 
 
@@ -176,11 +186,40 @@ def mean_b(amp):
     return quad(lambda x: max(1 - amp * cos(x), 0), [0, acos(1 / amp) if amp > 1 else 0, 2 * pi - (acos(1 / amp) if amp > 1 else 0), 2 * pi]) if amp > 1 else 2 * pi
 
 
+def newton(case, f):
+    """The period map's fixed point from f by Newton, its Jacobian by
+    differences of 1e-12, at 32 digits: the sums, events and iterations."""
+    h = mpf("1e-12")
+    for periods in range(1, 12):
+        events = []
+        sums, fe = period(case, 0, f, 2 * pi, events)
+        r = (fe[0] - f[0], fe[1] - f[1])
+        print(case, periods, nstr(abs(r[0]) + abs(r[1]), 5), file=sys.stderr)
+        if abs(r[0]) + abs(r[1]) < mpf("1e-28"):
+            return sums, events, periods
+        cols = []
+        for k in range(2):
+            g = (f[0] + (h if k == 0 else 0), f[1] + (h if k == 1 else 0))
+            _, ge = period(case, 0, g, 2 * pi, [])
+            cols.append(((ge[0] - g[0] - r[0]) / h, (ge[1] - g[1] - r[1]) / h))
+        # (P - I) columns: solve (P - I) dx = -r.
+        a, c, b, d = cols[0][0], cols[0][1], cols[1][0], cols[1][1]
+        det = a * d - b * c
+        f = (f[0] - (d * r[0] - b * r[1]) / det, f[1] - (-c * r[0] + a * r[1]) / det)
+    raise RuntimeError("Newton did not close")
+
+
 def solve(case):
+    global DELTA
+    method = case[7] if len(case) > 7 else "relax"
     case, start = case[:6], case[6] if len(case) > 6 else ("0", "0")
     vhat, amp, t, phase, w, psi = case
     events = []
-    if amp > 1:
+    if method == "newton":
+        mp.dps, DELTA = 32, mpf("1e-32")
+        sums, events, periods = newton(case, (mpf(start[0]), mpf(start[1])))
+        mp.dps, DELTA = 24, mpf("1e-24")
+    elif amp > 1:
         sums, _ = period(case, 0, None, 2 * pi, events)
         periods = 1
     else:

@@ -18,6 +18,7 @@
 //! along a slip), not `1 - mu_ratio`.
 
 mod clock;
+mod close;
 mod curved;
 mod drive;
 mod fused;
@@ -31,6 +32,7 @@ use crate::error::{check_nonneg, Error, Result};
 use crate::shape::Shape;
 use crate::spring::EventKind;
 use crate::Conditions;
+use close::{closed, corrected, with_events, Seen};
 use drive::{Bound, Drive};
 use spring::{Spring, Start, Walk};
 use std::f64::consts::TAU;
@@ -300,7 +302,7 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: Option<[f64; 2]>
         };
         let before = seen.replace(Seen { f, force: w.force, end: w.end });
         if cur.is_exact() && res > close * force_scale(f) {
-            if let Some(done) = before.and_then(|b| corrected(&w, f, &b, total, periods)) {
+            if let Some(done) = before.and_then(|b| corrected(cur, &w, f, &b, (total, periods))) {
                 return with_events(done, precision, &exact[0]);
             }
             cur = &exact[sensing * usize::from(res > SENSE_ABOVE * force_scale(f))];
@@ -314,11 +316,7 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: Option<[f64; 2]>
             if m >= 1.0 - 4.0 * f64::EPSILON * (w.steps as f64 + 1.0) {
                 return relaxed(cur, total, periods);
             }
-            // Contracting at rate `m`, the start is within `(res + m e) /
-            // (1 - m)` of the orbit's, `e` the rounding of one period (the
-            // periods before the last; the last one's is the mean's own).
-            let e = rounding(&w, force_scale(f));
-            return Ok((answer(&w, total, m, (res + m * e) / (1.0 - m), periods)?, Start::Force(0.0, f)));
+            return closed(cur, (f, w), total, m, periods);
         }
         if w.stuck {
             // A period of stick only drifts by X(2 pi) - X(0): go where the drift first slips.
@@ -459,90 +457,6 @@ fn leap(sp: &Spring, f: [f64; 2], w: &Walk) -> Result<(Visit, usize, bool)> {
 /// from below it, Newton's next residual, about the square of it times the
 /// map's curvature (of order 1), is expected to close the search by itself.
 const SENSE_ABOVE: f64 = 1e-8;
-
-/// A start the orbit's search walked from: where its walk ended, and its
-/// force's integral.
-struct Seen {
-    f: [f64; 2],
-    force: [f64; 2],
-    end: [f64; 2],
-}
-
-/// The means of the orbit from the exact walk `w` that starts at `f`, a
-/// Newton step `s` short of it, without walking from `f + s`: the walk's
-/// `int f` plus `G s` (`G` its [`Walk::sensitivity`]), and the start `f + s`.
-/// What is left is second order in `s`: `K |s|^2` of the force's integral,
-/// and `C |s|^2/(1 - m)` of the start, felt `|G|` times, with `K` and `C`
-/// bounded by what the walk from the previous start `before` (a distance
-/// `d` away) shows: `|int f - int f_before - G d| / |d|^2` and `|r -
-/// r_before - (J - I) d| / |d|^2` (their rounding and truncation, and the
-/// previous walk's, only add to them). `f + s` closes the walk's own map,
-/// rounding and all: as for a closing walk, the periods before it leave
-/// `m e/(1 - m)` (`e` a period's rounding, [`rounding`]). `None` where the
-/// second-order part exceeds what a closing walk's residual (`8 eps`) would
-/// leave: then Newton's walk is taken, as for [`Precision::Exact`].
-fn corrected(
-    w: &Walk,
-    f: [f64; 2],
-    before: &Seen,
-    total: f64,
-    periods: usize,
-) -> Option<Result<(PlaneEvaluation, [f64; 2])>> {
-    let g = &w.sensitivity?;
-    let j = &w.jacobian;
-    let m = multiplier(j);
-    let r = [w.end[0] - f[0], w.end[1] - f[1]];
-    let s = newton_step(j, r)?;
-    let [k, c] = curvatures(w, g, f, before);
-    let (ss, scale) = (s[0] * s[0] + s[1] * s[1], force_scale(f));
-    let size = g.iter().flatten().map(|x| x * x).sum::<f64>().sqrt();
-    let second = k * ss + size * c * ss / (1.0 - m);
-    if !(m < 1.0 && second <= TAU * 8.0 * f64::EPSILON * scale) {
-        return None;
-    }
-    let gs = times(g, s);
-    let mut moved = w.clone();
-    moved.force = [w.force[0] + gs[0], w.force[1] + gs[1]];
-    moved.deficit = w.deficit - gs[0];
-    moved.events.clear();
-    let start_error = (second + size * m * rounding(w, scale) / (1.0 - m)) / TAU;
-    Some(answer(&moved, total, m, start_error, periods).map(|e| (e, [f[0] + s[0], f[1] + s[1]])))
-}
-
-/// An orbit's means and start from [`corrected`]: with the events of a
-/// walk from that start where [`Precision::Exact`] asks for them (the same
-/// means).
-fn with_events(
-    done: Result<(PlaneEvaluation, [f64; 2])>,
-    precision: Precision,
-    sp: &Spring,
-) -> Result<(PlaneEvaluation, Start)> {
-    let (mut e, s) = done?;
-    if precision == Precision::Exact {
-        e.events = events(&sp.walk(Start::Force(0.0, s), TAU)?);
-        e.periods += 1;
-    }
-    Ok((e, Start::Force(0.0, s)))
-}
-
-/// `m v`.
-fn times(m: &[[f64; 2]; 2], v: [f64; 2]) -> [f64; 2] {
-    [m[0][0] * v[0] + m[0][1] * v[1], m[1][0] * v[0] + m[1][1] * v[1]]
-}
-
-/// `[K, C]` of [`corrected`]: how far the walk `w` from `f` (its
-/// sensitivity `g`) and the one from `before` differ from their linear
-/// prediction, the force's integral and the residual, over their distance
-/// squared.
-fn curvatures(w: &Walk, g: &[[f64; 2]; 2], f: [f64; 2], before: &Seen) -> [f64; 2] {
-    let d = [f[0] - before.f[0], f[1] - before.f[1]];
-    let dd = d[0] * d[0] + d[1] * d[1];
-    let (gd, jd) = (times(g, d), times(&w.jacobian, d));
-    let k = (w.force[0] - before.force[0] - gd[0]).hypot(w.force[1] - before.force[1] - gd[1]) / dd;
-    let (r, rb) = ([w.end[0] - f[0], w.end[1] - f[1]], [before.end[0] - before.f[0], before.end[1] - before.f[1]]);
-    let c = (r[0] - rb[0] - jd[0] + d[0]).hypot(r[1] - rb[1] - jd[1] + d[1]) / dd;
-    [k, c]
-}
 
 /// Periods run from the relaxed start at most, where the orbit is neutral.
 const MAX_RELAXED: usize = 400;

@@ -58,6 +58,9 @@ pub(crate) struct Spring {
     step_tol: f64,
     /// Whether its walks find their [`Walk::sensitivity`].
     sensing: bool,
+    /// Each step's length relative to the one its tolerance allows (1, or
+    /// less for [`Spring::strided`]).
+    stride: f64,
 }
 
 /// The state between steps.
@@ -141,7 +144,7 @@ struct Walker<'a> {
 
 impl Spring {
     pub(crate) fn new(drive: Drive, bound: Bound) -> Spring {
-        Spring { drive, bound, layer: Layer::of(&drive, &bound), step_tol: STEP_TOL, sensing: false }
+        Spring { drive, bound, layer: Layer::of(&drive, &bound), step_tol: STEP_TOL, sensing: false, stride: 1.0 }
     }
 
     /// The same spring walked to about `1e-9` a period ([`COARSE_STEP_TOL`]):
@@ -158,6 +161,13 @@ impl Spring {
     /// (a few per cent more work a step).
     pub(crate) fn sensing(&self) -> Spring {
         Spring { sensing: self.is_exact(), ..*self }
+    }
+
+    /// The same spring walked by steps `stride` (in `(0, 1]`) times as long
+    /// as its own, stick and slip: placed elsewhere, so that their rounding
+    /// is another draw, and truncated less ([`super::start_noise`]).
+    pub(crate) fn strided(&self, stride: f64) -> Spring {
+        Spring { stride: stride.clamp(f64::MIN_POSITIVE, 1.0), sensing: false, ..*self }
     }
 
     /// Whether its walks are to full precision (not [`Spring::coarse`]).
@@ -375,7 +385,9 @@ impl Walker<'_> {
         let horizon = target - tau;
         let scale = super::force_scale(f);
         let tol = self.sp.step_tol;
-        let h = Series::step_for(&[(&fx, tol * scale), (&fy, tol * scale), (&b, tol)]).min(horizon.min(MAX_STICK_STEP));
+        let h =
+            Series::step_for(&[(&fx, tol * scale), (&fy, tol * scale), (&b, tol)]).min(MAX_STICK_STEP) * self.sp.stride;
+        let h = h.min(horizon);
         if skip > 0 && g.0[skip] < -16.0 * f64::EPSILON * (b.square() + fx.square() + fy.square()).0[skip] {
             // A stick on the circle that leaves it at once, beyond the
             // rounding of `g`, would have slipped ([`slips`]).
@@ -476,7 +488,8 @@ impl Walker<'_> {
         // The force's series serve its integral, whose truncation is about
         // `h/(N + 2)` times the series' at `h` ([`Series::integral_tail`]): they may
         // stop short of `st` by that factor, at the step the direction's allow.
-        let cap = Series::step_for(&[(&y[0], st), (&y[1], st)]).min(horizon.min(0.5 * rho));
+        let cap = Series::step_for(&[(&y[0], st), (&y[1], st)]).min(0.5 * rho) * self.sp.stride;
+        let cap = cap.min(horizon);
         let sf = st * (ORDER + 2) as f64 / cap;
         let h = Series::step_for(&[(&fx, sf), (&fy, sf)]).min(cap);
         let ([r0, r1], tol) = slip_rate(&xd_tau, &bdot, &quad);

@@ -1,7 +1,8 @@
 //! The plane's solver on drives the public interface cannot express.
+use super::close::curvatures;
 use super::drive::{Bound, Drive};
 use super::spring::{Spring, Start};
-use super::{curvatures, orbit, orbit_to, relaxed, PlaneEvaluation, Precision, Seen};
+use super::{orbit, orbit_to, relaxed, PlaneEvaluation, Precision, Seen};
 use crate::{Conditions, Shape};
 use std::f64::consts::TAU;
 

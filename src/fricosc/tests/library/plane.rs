@@ -25,11 +25,15 @@ fn plane(c: &Conditions, w: f64, psi: f64) -> Evaluation {
 /// within 1e-14 and within the error estimate, which stays within 30 times
 /// the larger error (observed: errors at most 1.4e-15, estimates 1.3 to 36
 /// times the error, floored at an ulp of 1); the events are the
-/// reference's; the reduction is `1 - mu_ratio`.
+/// reference's; the reduction is `1 - mu_ratio`. An orbit that contracts
+/// slowly (the last two cases, `1 - m` of 1.1e-5 and 3.2e-4) is found
+/// within its map's rounding over `1 - m`: there the bar is that, an ulp
+/// over `1 - m` (observed 3.0e-14 and 3.1e-13, estimates 2.1 and 6.9
+/// times; the a priori rounding put them at 1.1e-10 and 3.9e-12).
 #[test]
 fn matches_the_independent_reference() {
     let cases = data_cases("plane-reference.json");
-    assert_eq!(cases.len(), 14);
+    assert_eq!(cases.len(), 16);
     for case in cases {
         let g = |k: &str| case[k].as_f64().unwrap();
         let c = conditions(g("vhat"), g("amp"), g("tangential_amp"), g("phase"));
@@ -48,13 +52,17 @@ fn matches_the_independent_reference() {
         assert_eq!(kinds, expected, "{case}");
         // Under the slowest drift the force grazes its bound where it starts
         // to slip: that time is conditioned as the square root of the
-        // start's rounding (observed 8.6e-11).
-        let bar = if g("vhat") < 1e-9 { 1e-9 } else { 1e-13 };
+        // start's rounding (observed 8.6e-11). Under a slow contraction the
+        // start is within its map's rounding over `1 - m`, and a small drive
+        // (`T + W` 2.3e-3 in case 14) meets the bound that much slower
+        // (observed 1.1e-12).
+        let bar = if g("vhat") < 1e-9 || r.multiplier > 0.999 { 1e-9 } else { 1e-13 };
         for (e, x) in r.events.iter().zip(case["events"].as_array().unwrap()) {
             assert!(exact_error(e.tau, x[0].as_str().unwrap()) < bar, "{case}: {e:?}");
         }
+        let within = 1e-14f64.max(f64::EPSILON / (1.0 - r.multiplier));
         assert!(
-            !exceeds(worst, 1e-14) && !exceeds(worst, e.error_estimate),
+            !exceeds(worst, within) && !exceeds(worst, e.error_estimate),
             "{case}: {mu:e} {tr:e} est {:e}",
             e.error_estimate
         );
@@ -94,9 +102,25 @@ fn the_reduction_keeps_its_relative_accuracy_at_a_fast_slide() {
     }
 }
 
+/// A slowly contracting orbit (the reference's case 14, `1 - m` = 1.1e-5,
+/// the force near the `x` axis) closes on a residual of an ulp of `f_x`,
+/// whose share along the slow direction puts the start `1/(1 - m)` ulps
+/// off: Newton's remaining step is taken, and the transverse ratio is
+/// within 1e-13 (observed 3.0e-14; 1.26e-13 without that step), its
+/// estimate from the map's measured rounding (6.4e-14; 1.1e-10 a priori).
+#[test]
+fn a_slow_contraction_takes_newtons_last_step() {
+    let case = &data_cases("plane-reference.json")[14];
+    let g = |k: &str| case[k].as_f64().unwrap();
+    let c = conditions(g("vhat"), g("amp"), g("tangential_amp"), g("phase"));
+    let e = plane(&c, g("transverse_amp"), g("transverse_phase"));
+    let tr = exact_error(e.transverse_ratio.unwrap(), case["transverse_ratio"].as_str().unwrap());
+    assert!(tr < 1e-13 && e.error_estimate < 1e-12, "{tr:e} est {:e}", e.error_estimate);
+}
+
 #[test]
 fn the_reference_orbits_are_found_in_few_periods() {
-    let most = [4, 1, 4, 1, 4, 4, 1, 1, 12, 1, 281, 1, 14, 5];
+    let most = [4, 1, 4, 1, 4, 4, 1, 1, 12, 1, 281, 1, 14, 5, 35, 172];
     for (case, most) in data_cases("plane-reference.json").iter().zip(most) {
         let g = |k: &str| case[k].as_f64().unwrap();
         let c = conditions(g("vhat"), g("amp"), g("tangential_amp"), g("phase"));
