@@ -80,7 +80,8 @@ pub struct Check {
     /// The body on this system with mass and stiffness ([`crate::system`]):
     /// the table is compared with its attractors.
     pub system: Option<crate::system::System>,
-    /// The largest `|error|` accepted: rows beyond it are a finding
+    /// The largest `|error|` accepted: rows beyond it by more than the
+    /// exact value's own error estimate are a finding
     /// ([`FindingKind::MaxError`]).
     pub max_error: Option<f64>,
 }
@@ -293,7 +294,9 @@ pub enum FindingKind {
     Convention,
     /// Rows whose value is not a number or infinite: the run diverged.
     Diverged,
-    /// Rows whose `|error|` exceeds the largest accepted ([`Check::max_error`]).
+    /// Rows whose `|error|` exceeds the largest accepted ([`Check::max_error`])
+    /// by more than the exact value's error estimate (beyond it whatever
+    /// the exact value's own error).
     MaxError,
 }
 
@@ -506,7 +509,7 @@ pub fn compare(shape: &Shape, rows: &[(f64, f64, f64)], check: &Check) -> Result
         .collect();
     let mut findings = findings::findings(shape, &finite, &amps, check, critical.as_deref())?;
     findings.extend(diverged(out.iter().map(|r| (r.row, r.mu_ratio))));
-    findings.extend(beyond_max_error(out.iter().map(|r| (r.row, r.error)), check.max_error));
+    findings.extend(beyond_max_error(out.iter().map(|r| (r.row, r.error, r.exact_error_estimate)), check.max_error));
     let peer = check.peer.map(|st| PeerSummary {
         steps_per_period: st.steps_per_period,
         springs: if shape.is_flat() { 1 } else { st.springs },
@@ -540,20 +543,28 @@ pub(crate) fn diverged(values: impl Iterator<Item = (usize, f64)>) -> Option<Fin
     )
 }
 
-/// [`FindingKind::MaxError`]: the rows of `(row, error)` beyond `max_error`
-/// (a NaN error is beyond any bound).
-pub(crate) fn beyond_max_error(errors: impl Iterator<Item = (usize, f64)>, max_error: Option<f64>) -> Option<Finding> {
+/// [`FindingKind::MaxError`]: the rows of `(row, error, the exact value's
+/// estimate)` beyond `max_error` by more than that estimate (a NaN error is
+/// beyond any bound): a row within it may be exact, its error the exact
+/// value's own.
+pub(crate) fn beyond_max_error(
+    errors: impl Iterator<Item = (usize, f64, Option<f64>)>,
+    max_error: Option<f64>,
+) -> Option<Finding> {
     let bound = max_error?;
     let (mut rows, mut worst, mut diverged) = (vec![], 0.0f64, false);
-    for (i, e) in errors {
-        if e.is_nan() || e.abs() > bound {
+    for (i, e, estimate) in errors {
+        if e.is_nan() || e.abs() > bound + estimate.unwrap_or(0.0) {
             rows.push(i);
             diverged |= e.is_nan();
             worst = worst.max(e.abs());
         }
     }
     let and = if diverged { ", and rows that diverged" } else { "" };
-    let hint = format!("errors above the largest accepted (--max-error {bound:e}): up to {worst:.3e}{and}");
+    let hint = format!(
+        "errors above the largest accepted (--max-error {bound:e}) by more than the exact values' estimates: up to \
+         {worst:.3e}{and}"
+    );
     finding(FindingKind::MaxError, rows, &hint)
 }
 

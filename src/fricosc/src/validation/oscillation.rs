@@ -105,7 +105,7 @@ pub struct OscillationRow {
     pub regime: String,
     /// With a peer: the stepping peer's error on the same row.
     pub peer_error: Option<f64>,
-    /// On a system: the exact value's error estimate (a curved body's, or a
+    /// The exact value's error estimate (on a system, a curved body's, or a
     /// mean's where the response has no period).
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub exact_error_estimate: Option<f64>,
@@ -137,8 +137,8 @@ pub struct TransverseRow {
 /// reached within them; the last period is its answer).
 pub const SYSTEM_PEER_PERIODS: usize = 40;
 
-/// One row's exact answer: `mu`, its regime, its error estimate on a system,
-/// the mean force across in the plane.
+/// One row's exact answer: `mu`, its regime, its error estimate, the mean
+/// force across in the plane.
 struct Exact {
     mu: f64,
     regime: String,
@@ -165,7 +165,8 @@ fn exact_row(shape: &Shape, c: &Conditions, system: Option<&crate::system::Syste
                 format!("in the plane: {}", kinds.join(", "))
             }
         };
-        return Ok(Exact { transverse: Some(p.transverse_ratio), ..of(p.ratio.mu_ratio, regime) });
+        let (transverse, estimate) = (Some(p.transverse_ratio), Some(p.error_estimate));
+        return Ok(Exact { transverse, estimate, ..of(p.ratio.mu_ratio, regime) });
     }
     let e = crate::combined::evaluate(shape, c)?;
     let regime = match &e.spring {
@@ -174,7 +175,7 @@ fn exact_row(shape: &Shape, c: &Conditions, system: Option<&crate::system::Syste
         None if e.bands.is_empty() => "slides forward all the time".into(),
         None => e.bands.iter().map(|b| b.regime.as_str()).collect::<Vec<_>>().join(" | "),
     };
-    Ok(of(e.ratio.mu_ratio, regime))
+    Ok(Exact { estimate: Some(e.error_estimate), ..of(e.ratio.mu_ratio, regime) })
 }
 
 /// The errors of one regime.
@@ -367,7 +368,8 @@ fn findings_of(
     }
     findings.extend(super::diverged(out.iter().map(|r| (r.row, r.mu_ratio))));
     findings.extend(super::diverged(out.iter().filter_map(|r| across(r).map(|v| (r.row, v)))));
-    findings.extend(super::beyond_max_error(out.iter().map(|r| (r.row, worst_error(r))), check.max_error));
+    let errors = out.iter().map(|r| (r.row, worst_error(r), r.exact_error_estimate));
+    findings.extend(super::beyond_max_error(errors, check.max_error));
     findings
 }
 
