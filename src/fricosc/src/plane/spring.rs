@@ -165,7 +165,7 @@ impl Spring {
 
     /// The same spring walked by steps `stride` (in `(0, 1]`) times as long
     /// as its own, stick and slip: placed elsewhere, so that their rounding
-    /// is another draw, and truncated less ([`super::start_noise`]).
+    /// is another draw, and truncated less ([`super::close::start_noise`]).
     pub(crate) fn strided(&self, stride: f64) -> Spring {
         Spring { stride: stride.clamp(f64::MIN_POSITIVE, 1.0), sensing: false, ..*self }
     }

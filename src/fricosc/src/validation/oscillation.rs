@@ -147,12 +147,12 @@ struct Exact {
 }
 
 fn exact_row(shape: &Shape, c: &Conditions, system: Option<&crate::system::System>) -> Result<Exact> {
-    let of = |mu: f64, regime: String| Exact { mu, regime, estimate: None, transverse: None };
+    let of = |mu: f64, regime: String, estimate: f64| Exact { mu, regime, estimate: Some(estimate), transverse: None };
     if let Some(&sys) = system {
         let crate::Report::System(r) = shape.report(&c.with_system(sys))? else {
             return Err(Error::Internal { what: "a report on a system is the system's".into() });
         };
-        return Ok(Exact { estimate: Some(r.error_estimate), ..of(r.mu_ratio, r.regime()) });
+        return Ok(of(r.mu_ratio, r.regime(), r.error_estimate));
     }
     if c.transverse().is_some() {
         let crate::Report::Plane(p) = shape.report(c)? else {
@@ -165,8 +165,7 @@ fn exact_row(shape: &Shape, c: &Conditions, system: Option<&crate::system::Syste
                 format!("in the plane: {}", kinds.join(", "))
             }
         };
-        let (transverse, estimate) = (Some(p.transverse_ratio), Some(p.error_estimate));
-        return Ok(Exact { transverse, estimate, ..of(p.ratio.mu_ratio, regime) });
+        return Ok(Exact { transverse: Some(p.transverse_ratio), ..of(p.ratio.mu_ratio, regime, p.error_estimate) });
     }
     let e = crate::combined::evaluate(shape, c)?;
     let regime = match &e.spring {
@@ -175,7 +174,7 @@ fn exact_row(shape: &Shape, c: &Conditions, system: Option<&crate::system::Syste
         None if e.bands.is_empty() => "slides forward all the time".into(),
         None => e.bands.iter().map(|b| b.regime.as_str()).collect::<Vec<_>>().join(" | "),
     };
-    Ok(Exact { estimate: Some(e.error_estimate), ..of(e.ratio.mu_ratio, regime) })
+    Ok(of(e.ratio.mu_ratio, regime, e.error_estimate))
 }
 
 /// The errors of one regime.
