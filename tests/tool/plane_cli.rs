@@ -268,7 +268,7 @@ fn a_batch_row_across_without_normal_oscillation_is_the_points() {
 }
 
 /// `validate` reads a table in the plane from its columns: the force across
-/// is compared and written (csv), a row off across is beyond `--max-error`
+/// is compared and written (csv, with the exact value's estimate), a row off across is beyond `--max-error`
 /// (exit 1), and the correct table passes (exit 0). `--peer` runs the
 /// plane's stepper.
 #[test]
@@ -292,6 +292,11 @@ fn validate_compares_a_table_in_the_plane() {
     for name in ["transverse_amp", "transverse_phase", "transverse_ratio", "transverse_exact", "transverse_error"] {
         assert!(header.contains(&name), "{header:?}");
     }
+    // The exact value's estimate, as JSON and the library give it.
+    let mut reader = csv::Reader::from_reader(text.as_bytes());
+    let at = reader.headers().unwrap().iter().position(|h| h == "exact_error_estimate").expect("an estimate column");
+    let row = reader.records().next().unwrap().unwrap();
+    assert_eq!(row[at].parse::<f64>().unwrap(), e.error_estimate, "{text}");
     std::fs::write(&path, table(tr + 1e-6)).unwrap();
     let out = cli::run(&["validate", file, "--format", "summary", "--max-error", "1e-9"], None);
     let text = String::from_utf8(out.stdout).unwrap();

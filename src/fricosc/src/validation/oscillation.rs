@@ -105,10 +105,8 @@ pub struct OscillationRow {
     pub regime: String,
     /// With a peer: the stepping peer's error on the same row.
     pub peer_error: Option<f64>,
-    /// The exact value's error estimate (on a system, a curved body's, or a
-    /// mean's where the response has no period).
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
-    pub exact_error_estimate: Option<f64>,
+    /// The exact value's error estimate.
+    pub exact_error_estimate: f64,
     /// Across the sliding direction: the row's oscillation and the mean
     /// force across, the table's against the exact one.
     #[cfg_attr(feature = "serde", serde(flatten, skip_serializing_if = "Option::is_none"))]
@@ -142,12 +140,12 @@ pub const SYSTEM_PEER_PERIODS: usize = 40;
 struct Exact {
     mu: f64,
     regime: String,
-    estimate: Option<f64>,
+    estimate: f64,
     transverse: Option<f64>,
 }
 
 fn exact_row(shape: &Shape, c: &Conditions, system: Option<&crate::system::System>) -> Result<Exact> {
-    let of = |mu: f64, regime: String, estimate: f64| Exact { mu, regime, estimate: Some(estimate), transverse: None };
+    let of = |mu: f64, regime: String, estimate: f64| Exact { mu, regime, estimate, transverse: None };
     if let Some(&sys) = system {
         let crate::Report::System(r) = shape.report(&c.with_system(sys))? else {
             return Err(Error::Internal { what: "a report on a system is the system's".into() });
@@ -367,7 +365,7 @@ fn findings_of(
     }
     findings.extend(super::diverged(out.iter().map(|r| (r.row, r.mu_ratio))));
     findings.extend(super::diverged(out.iter().filter_map(|r| across(r).map(|v| (r.row, v)))));
-    let errors = out.iter().map(|r| (r.row, worst_error(r), r.exact_error_estimate));
+    let errors = out.iter().map(|r| (r.row, worst_error(r), Some(r.exact_error_estimate)));
     findings.extend(super::beyond_max_error(errors, check.max_error));
     findings
 }

@@ -188,7 +188,7 @@ impl OscillationValidation {
                 t.max_abs_error, t.worst_row, t.rms_error
             );
         }
-        if let Some(e) = v.rows.iter().filter_map(|r| r.exact_error_estimate).reduce(f64::max) {
+        if let Some(e) = v.rows.iter().map(|r| r.exact_error_estimate).reduce(f64::max) {
             let _ = writeln!(out, "the exact values' largest error estimate {e:.3e}");
         }
         if let Some(p) = &v.peer {

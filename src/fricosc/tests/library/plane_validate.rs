@@ -39,7 +39,7 @@ fn the_independent_reference_passes() {
     assert!(v.findings.is_empty(), "{:?}", v.findings);
     for r in &v.rows {
         let across = r.transverse.as_ref().and_then(|t| t.transverse_error).unwrap();
-        let within = 1e-14 + r.exact_error_estimate.unwrap();
+        let within = 1e-14 + r.exact_error_estimate;
         assert!(r.error.abs() < 1e-14 && across.abs() <= within, "{r:?}");
     }
     assert!(v.transverse.as_ref().unwrap().n == rows.len());
