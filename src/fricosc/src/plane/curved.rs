@@ -26,9 +26,9 @@
 //! that relaxes at the rate `|X'|/B`: its period takes about `int
 //! |X'|/(4 B) dtau` Taylor steps. The springs beyond [`SPRING_STEPS`] such
 //! steps (at the edge of the contact, `z` up to `z_max`) are not walked:
-//! their `int <B> dz` is in the normal force, their forces are the last
-//! walked spring's ratios times it, with an error from the approach of
-//! those ratios to their limit ([`Tail`]).
+//! their `int <B> dz` is in the normal force, their forces are the rigid
+//! body's plus a correction fitted to walked springs, checked on one more
+//! ([`Tail`]).
 //!
 //! # Error estimate
 //! The ladder's last differences (`|dF| + |dN|` over `N`), the tail, the
@@ -36,10 +36,11 @@
 
 use super::drive::{Bound, Drive};
 use super::spring::{Spring, Start};
+use super::tail::Tail;
 use super::{orbit_to, period_steps, PlaneEvaluation, Precision};
 use crate::contact::Contact;
 use crate::error::{Error, Result};
-use crate::integrate::{bands, cosine_pass, cosine_pass_parallel, Ladder, Sums};
+use crate::integrate::{bands, cosine_pass_parallel, Ladder, Sums};
 use crate::spring::EventKind;
 use std::f64::consts::TAU;
 use std::sync::Mutex;
@@ -56,8 +57,6 @@ pub(crate) const SPRING_STEPS: f64 = 5000.0;
 const MIN_PEAK: f64 = 1e-5;
 /// Largest Gauss-Legendre order of a band.
 const MAX_ORDER: usize = 1024;
-/// Order of the tail's `int <B> dz` (a smooth integrand in `theta`).
-const TAIL_ORDER: usize = 32;
 /// The tolerance from which the springs are walked coarsely
 /// ([`Precision::Coarse`]: each spring's means within about `1e-9` of its
 /// `<B>`, and estimated).
@@ -232,51 +231,6 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
         events: vec![],
         periods: learned.periods,
     })
-}
-
-/// The springs beyond the walked ones, `[zcap, zmax]`: their `int <B> dz`
-/// (Gauss-Legendre in `theta`, a smooth integrand), their forces as the
-/// ratios of the last walked spring times it, and the error of that. A
-/// spring's ratios approach their limit of a vanishing bound (the rigid
-/// slip) linearly in its bound's peak: the spring at half the last one's
-/// peak is half as far from it, so twice their difference bounds how far
-/// the tail's springs are from the last one (twice that again is the
-/// estimate); where it cannot be walked, the tail's forces are only known
-/// to be within their bounds.
-struct Tail {
-    bound: f64,
-    force: [f64; 2],
-    /// `int <B - f_x> dz`.
-    deficit: f64,
-    error: f64,
-}
-
-impl Tail {
-    fn of(
-        c: &dyn Contact,
-        spring: &dyn Fn(f64) -> Spring,
-        amp: f64,
-        (zcap, zmax): (f64, f64),
-        precision: Precision,
-    ) -> Result<Tail> {
-        if zcap >= zmax {
-            return Ok(Tail { bound: 0.0, force: [0.0; 2], deficit: 0.0, error: 0.0 });
-        }
-        let mean = |z: f64| ([spring(z).bound.period_integral() / TAU], 0.0);
-        let bound = cosine_pass(zcap, zmax, TAIL_ORDER, [true], &mean).sum[0].max(0.0);
-        let ratios = |z: f64| orbit_to(&spring(z), precision, None).ok().map(|(e, _)| e);
-        let last = spring(zcap).bound;
-        let half = c.level(1.0 - (0.5 * (last.level + amp) - amp));
-        match (ratios(zcap), (half > zcap && half < zmax).then(|| ratios(half)).flatten()) {
-            (Some(e), Some(h)) => {
-                let (mu, tr) = (e.ratio.mu_ratio, e.transverse_ratio);
-                let moved = (mu - h.ratio.mu_ratio).abs().max((tr - h.transverse_ratio).abs());
-                let deficit = e.ratio.reduction * bound;
-                Ok(Tail { bound, force: [mu * bound, tr * bound], deficit, error: 4.0 * moved * bound })
-            }
-            _ => Ok(Tail { bound, force: [0.0; 2], deficit: bound, error: bound }),
-        }
-    }
 }
 
 /// Whether a spring of a curved contact is walked: its bound's peak is at

@@ -27,6 +27,7 @@ mod layer;
 mod series;
 mod slip;
 mod spring;
+mod tail;
 
 use crate::error::{check_nonneg, Error, Result};
 use crate::shape::Shape;
