@@ -319,7 +319,8 @@ mod tests {
     /// A spring in contact all period, without normal oscillation, slips
     /// along the velocity `(vhat, W cos(tau + psi))`: its mean force along
     /// `x` is `B` times the rigid limit (Gauss's mean), across it 0 (`u_y`
-    /// changes sign with `cos`), and the deficit `B` less the force.
+    /// changes sign with `cos`), and the deficit `B` less the force, to its
+    /// own relative accuracy where it is tiny.
     #[test]
     fn a_spring_always_in_contact_slips_by_the_rigid_limit() {
         for (vhat, w, psi) in [(1.0, 2.0, 0.4), (0.003, 0.8, 0.7), (3.0, 100.0, 0.0)] {
@@ -330,6 +331,11 @@ mod tests {
             assert!(y.abs() <= e, "{y} {e}");
             assert!((deficit - (1.5 - limit)).abs() <= e + 2.0 * f64::EPSILON, "{deficit} {e}");
         }
+        // Nearly along `x` (`W/vhat = k` 1e-9) the deficit keeps its relative
+        // accuracy: `1 - 1/AGM(1, sqrt(1 + k^2)) = k^2/4 + O(k^4)`.
+        let sp = Spring::new(Drive::sliding(1.0, 0.0, 0.0, 1e-9, 0.3), Bound::new(1.5, 0.0));
+        let deficit = rigid(&sp, &OnceCell::new()).0[2];
+        assert!((deficit / (1.5 * 0.25e-18) - 1.0).abs() < 1e-12, "{deficit:e}");
     }
 
     /// A spring that leaves contact, sliding along `x` alone: its mean force
