@@ -459,19 +459,24 @@ mod tests {
     /// 22x what it is off. A paraboloid nearly all tail (`P0` = 0.6: no
     /// spring at `2 P0`, the last walked spring's ratios), 7x. One with
     /// normal oscillation (amp 0.5, `psi` 0.7: springs that lose contact, a
-    /// force across), from `P0` = 0.05, 25x. Each off by
-    /// at most 10x what it is now (a tail's force gone wrong with an error
-    /// to match would pass the rest).
+    /// force across), from `P0` = 0.05, 25x; nearly all tail (`P0` 0.9), 8x.
+    /// Each off by at most 10x what it is now (a tail's force gone wrong
+    /// with an error to match would pass the rest).
     #[test]
     fn the_tail_meets_its_springs_walked() {
-        for (shape, amp, drive, p0, halvings, law, ceiling) in [
-            ("parabolic", 0.0, (3.0, 100.0, 0.0), 0.02, 3, 2.0, 3e-10),
-            ("cone", 0.0, (0.003, 0.8, 0.7), 1.6e-4, 3, 1.5, 1e-11),
-            ("parabolic", 0.0, (3.0, 100.0, 0.0), 0.6, 4, 2.0, 3e-3),
-            ("parabolic", 0.5, (3.0, 100.0, 0.7), 0.05, 3, 2.0, 1.5e-11),
-        ] {
+        // The last: its pieces near `P = 2 amp` (where a spring stops
+        // leaving contact) are not smooth for Gauss-Legendre in `z`; its
+        // `<B>` is 7.5e3 ulps of the width off.
+        let cases = [
+            ("parabolic", 0.0, (3.0, 100.0, 0.0), 0.02, 3, 2.0, 3e-10, 4.0),
+            ("cone", 0.0, (0.003, 0.8, 0.7), 1.6e-4, 3, 1.5, 1e-11, 4.0),
+            ("parabolic", 0.0, (3.0, 100.0, 0.0), 0.6, 4, 2.0, 3e-3, 4.0),
+            ("parabolic", 0.5, (3.0, 100.0, 0.7), 0.05, 3, 2.0, 1.5e-11, 4.0),
+            ("parabolic", 0.5, (3.0, 100.0, 0.7), 0.9, 4, 2.0, 0.09, 8e4),
+        ];
+        for (shape, amp, drive, p0, halvings, law, ceiling, ulps) in cases {
             let [off, error, beyond, bound] = tail_against_walked(shape, amp, drive, p0, halvings, law);
-            assert!(bound < 4.0, "{shape} {bound:e}");
+            assert!(bound < ulps, "{shape} {bound:e}");
             assert!(off <= error && error < 30.0 * (off + 0.1 * beyond.abs()), "{shape} {off:e} {error:e} {beyond:e}");
             assert!(off < ceiling, "{shape} {off:e}");
         }
