@@ -146,40 +146,55 @@ pub(crate) fn cosine_pass<const N: usize>(
     active: [bool; N],
     f: &dyn Fn(f64) -> ([f64; N], f64),
 ) -> Pass<N> {
-    cosine_pass_by(a, b, m, active, |zs| zs.iter().map(|&z| f(z)).collect())
+    cosine_pass_by((a, b, Ends::Both), m, active, |zs| zs.iter().map(|&z| f(z)).collect())
+}
+
+/// Where a [`cosine_pass`] clusters its nodes: at both ends of the band,
+/// or at its lower end only (a band whose upper end is not an edge of the
+/// integrand, which is analytic across it, and whose nodes cost most there).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Ends {
+    Both,
+    Lower,
 }
 
 /// [`cosine_pass`] with the nodes spread over the cores
 /// ([`crate::numerics::par`]): for integrands that take long (a spring's
-/// steady state in the plane each); the same bits.
+/// steady state in the plane each); the same bits. With [`Ends::Lower`],
+/// Gauss-Legendre in `theta` on `[0, pi/2]`, `z = a + (b - a)(1 - cos
+/// theta)`, `dz = (b - a) sin(theta) dtheta`: the square root at `a` is
+/// absorbed as before, and at `b` (`dz/dtheta = b - a`) the nodes are
+/// spaced as plain Gauss-Legendre's, about `(b - a)/m^2` from the end where
+/// [`Ends::Both`] puts the last about `(b - a)/m^4` from it.
 pub(crate) fn cosine_pass_parallel<const N: usize>(
-    a: f64,
-    b: f64,
+    (a, b, ends): (f64, f64, Ends),
     m: usize,
     active: [bool; N],
     f: &(dyn Fn(f64) -> ([f64; N], f64) + Sync),
 ) -> Pass<N> {
-    cosine_pass_by(a, b, m, active, |zs| crate::numerics::par::map(zs, |&z| f(z)))
+    cosine_pass_by((a, b, ends), m, active, |zs| crate::numerics::par::map(zs, |&z| f(z)))
 }
 
 /// [`cosine_pass`] with the integrand evaluated at every node by `eval` (in order).
 fn cosine_pass_by<const N: usize>(
-    a: f64,
-    b: f64,
+    (a, b, ends): (f64, f64, Ends),
     m: usize,
     active: [bool; N],
     eval: impl FnOnce(&[f64]) -> Vec<([f64; N], f64)>,
 ) -> Pass<N> {
     let rule = quad::rule(m, 0.0);
-    let half = 0.5 * (b - a);
-    let angles: Vec<(f64, f64)> =
-        rule.nodes.iter().map(|&x| (0.5 * std::f64::consts::PI * (1.0 + x)).sin_cos()).collect();
-    let zs: Vec<f64> = angles.iter().map(|&(_, ct)| a + half * (1.0 - ct)).collect();
+    // `theta = span (1 + x)` over the rule's `x` in `[-1, 1]`, `z = a + reach (1 - cos theta)`.
+    let (span, reach) = match ends {
+        Ends::Both => (0.5 * std::f64::consts::PI, 0.5 * (b - a)),
+        Ends::Lower => (0.25 * std::f64::consts::PI, b - a),
+    };
+    let angles: Vec<(f64, f64)> = rule.nodes.iter().map(|&x| (span * (1.0 + x)).sin_cos()).collect();
+    let zs: Vec<f64> = angles.iter().map(|&(_, ct)| a + reach * (1.0 - ct)).collect();
     let mut acc = Acc::new(&rule, active);
     for ((v, mag), &(st, _)) in eval(&zs).into_iter().zip(&angles) {
         acc.add(v.map(|v| v * st), mag * st);
     }
-    acc.finish(&rule, 0.5 * std::f64::consts::PI * half)
+    acc.finish(&rule, span * reach)
 }
 
 /// An order ladder: its tolerance (relative), its highest order, the
@@ -367,5 +382,37 @@ mod tests {
             let rounding = 4.0 * f64::EPSILON * p.sum[0];
             assert!(err < 1e-15 && est + rounding >= err && est < bound, "order {m}: {err:e}, estimate {est:e}");
         }
+    }
+
+    /// A pass clustered at its lower end only: a square root there and an
+    /// integrand analytic at the upper end, `int_1^3 sqrt(z - 1) e^(-z) dz =
+    /// e^-1 gamma(3/2, 2)` in closed form (`gamma(3/2, x) = sqrt(pi)/2 erf(sqrt x)
+    /// - sqrt(x) e^-x`; `erf(sqrt 2)` rounded), to rounding at order 32;
+    /// the last node 1 to 4 times `(b - a)/m^2` from the
+    /// upper end (with both ends clustered, within 8 times `(b - a)/m^4`), the
+    /// first within 4 times `(b - a)/m^4` of the lower.
+    #[test]
+    fn a_pass_clustered_at_its_lower_end_keeps_its_nodes_from_the_upper() {
+        let erf = 0.954_499_736_103_641_6;
+        let exact = (-1.0f64).exp() * (std::f64::consts::PI.sqrt() / 2.0 * erf - 2.0f64.sqrt() * (-2.0f64).exp());
+        let zs = std::sync::Mutex::new(Vec::new());
+        let f = |z: f64| {
+            zs.lock().unwrap().push(z);
+            ([(z - 1.0).sqrt() * (-z).exp()], 0.0)
+        };
+        let p = cosine_pass_parallel((1.0, 3.0, Ends::Lower), 32, [true], &f);
+        assert!((p.sum[0] - exact).abs() < 4.0 * f64::EPSILON * exact, "{} {exact}", p.sum[0]);
+        let ends = |ends: Ends| {
+            zs.lock().unwrap().clear();
+            cosine_pass_parallel((1.0, 3.0, ends), 32, [true], &f);
+            let z = zs.lock().unwrap();
+            let (lo, hi) = z.iter().fold((f64::INFINITY, 0.0f64), |(l, h), &z| (l.min(z - 1.0), h.max(z)));
+            (lo, 3.0 - hi)
+        };
+        let (m2, m4) = (2.0 / 32.0f64.powi(2), 2.0 / 32.0f64.powi(4));
+        let (lower, upper) = ends(Ends::Lower);
+        assert!(lower < 4.0 * m4 && upper > m2 && upper < 4.0 * m2, "{lower:e} {upper:e}");
+        let (_, both) = ends(Ends::Both);
+        assert!(both < 8.0 * m4, "{both:e}");
     }
 }

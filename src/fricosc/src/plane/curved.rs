@@ -24,11 +24,16 @@
 //! # The edge of the contact
 //! A spring whose bound is small against the drive slips along a direction
 //! that relaxes at the rate `|X'|/B`: its period takes about `int
-//! |X'|/(4 B) dtau` Taylor steps. The springs beyond [`SPRING_STEPS`] such
+//! |X'|/(4 B) dtau` Taylor steps. The springs beyond some number of such
 //! steps (at the edge of the contact, `z` up to `z_max`) are not walked:
 //! their `int <B> dz` is in the normal force, their forces are the rigid
 //! body's plus a correction fitted to walked springs, checked on one more
-//! ([`Tail`]).
+//! ([`Tail`]). That number is the least (from [`FIRST_TAIL_STEPS`], doubled)
+//! whose tail meets [`TAIL_SHARE`] of the tolerance, at most
+//! [`SPRING_STEPS`] ([`tail_of`]). Where the last walked spring is in
+//! contact all period, the band below it clusters its nodes at its lower
+//! end only ([`Ends::Lower`]): the means are analytic across its upper end,
+//! and the springs there cost the most.
 //!
 //! # Error estimate
 //! The ladder's last differences (`|dF| + |dN|` over `N`), the tail, the
@@ -40,13 +45,14 @@ use super::tail::Tail;
 use super::{orbit_to, period_steps, PlaneEvaluation, Precision};
 use crate::contact::Contact;
 use crate::error::{Error, Result};
-use crate::integrate::{bands, cosine_pass_parallel, Ladder, Sums};
+use crate::integrate::{bands, cosine_pass_parallel, Ends, Ladder, Sums};
 use crate::spring::EventKind;
 use std::f64::consts::TAU;
 use std::sync::Mutex;
 
 /// Taylor steps a period one spring may take at most (estimated before its
-/// walk); the springs beyond, at the contact's edge, are the tail.
+/// walk); the springs beyond, at the contact's edge, are the tail
+/// (or from fewer steps: [`tail_of`]).
 pub(crate) const SPRING_STEPS: f64 = 5000.0;
 
 /// Smallest peak of a walked spring's bound, `level + amp`: a spring that
@@ -69,6 +75,9 @@ const COARSE_TOL: f64 = 1e-7;
 /// resolutions off), below the default tolerance's share of a band; the
 /// nodes nearest an edge are farther from it (`6e-5` of a band of order 64).
 const EDGE_RESOLUTION: f64 = 1e-7;
+/// The share of the tolerance (times the contact's mean normal force) the
+/// tail's forces may be off ([`Tail::of`]).
+const TAIL_SHARE: f64 = 0.1;
 /// Rounding of one spring's means, in eps of its bound's scale.
 const SPRING_ROUNDING: f64 = 8.0;
 
@@ -172,13 +181,14 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     crate::error::check_nonneg("tol", tol)?;
     let zmax = c.reach(amp)?;
     let spring = |z: f64| Spring::new(d, Bound::new(1.0 - c.equivalent_profile(z), amp));
-    let zcap = walked_up_to(&spring, zmax);
+    let precision = if tol >= COARSE_TOL { Precision::Coarse } else { Precision::Means };
+    let scale = c.mean_normal(amp)?;
+    let (zcap, tail) = tail_of(c, &spring, (amp, zmax), (precision, TAIL_SHARE * tol * scale))?;
     let springs = Springs::default();
     // A sequence of events needs no exact means: its thresholds move by
     // about the coarse walks' error, far below [`EDGE_RESOLUTION`].
     let sequence =
         |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit_to(&spring(z), Precision::Coarse, None)?.0)) };
-    let precision = if tol >= COARSE_TOL { Precision::Coarse } else { Precision::Means };
     let edges = bands::edges(c, (amp, zcap), EDGE_RESOLUTION, &sequence)?;
     let node = |z: f64, from: Option<[f64; 2]>| {
         let sp = spring(z);
@@ -190,18 +200,23 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
         }
     };
     let ladder = Ladder { tol, max_order: MAX_ORDER, noise: SPRING_ROUNDING * f64::EPSILON, difference: true };
-    let scale = c.mean_normal(amp)?;
     let (mut total, mut truncation) = (Sums::<5>::default(), 0.0);
+    // Where the walked springs end below the contact's edge at a spring in
+    // contact all period, the band's end is no edge of the integrand (a
+    // spring's means are analytic in its level while it stays in contact):
+    // its nodes, the dearest of all, are not clustered there ([`Ends`]).
+    let analytic_cap = zcap < zmax && spring(zcap).bound.edge.is_none();
     // The integrands: `<f_x>`, `<f_y>`, `<B - f_x>` (the reduction's, to its
     // relative accuracy), `<B>`; the fifth, the springs' own errors, is
     // summed by the same rule (positive weights: a bound of their share)
     // and not converged.
     for w in edges.windows(2).filter(|w| w[1] > w[0]) {
+        let ends = if w[1] == zcap && analytic_cap { Ends::Lower } else { Ends::Both };
         let r = ladder.run(
             ladder.first_order(),
             |m| {
                 let known = springs.starts_within(w[0], w[1]);
-                cosine_pass_parallel(w[0], w[1], m, [true; 5], &|z| node(z, nearest(&known, z)))
+                cosine_pass_parallel((w[0], w[1], ends), m, [true; 5], &|z| node(z, nearest(&known, z)))
             },
             [scale, scale, scale, scale, f64::INFINITY],
         );
@@ -212,7 +227,6 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     if let Some(e) = learned.error {
         return Err(e);
     }
-    let tail = Tail::of(c, &spring, amp, (zcap, zmax), precision)?;
     let normal = total.value[3] + tail.bound;
     if !(normal > 0.0 && normal.is_finite()) {
         return Err(Error::Internal { what: format!("mean normal force {normal:?} in the plane ({})", c.name()) });
@@ -233,25 +247,72 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     })
 }
 
+/// The Taylor steps a period of the first try of [`tail_of`].
+const FIRST_TAIL_STEPS: f64 = SPRING_STEPS / 16.0;
+/// How much a tail's error may fall at most as its walked springs' steps
+/// double ([`tail_of`]). Its model's misfit grows like `P^3` and the tail's
+/// `int <B> dz` like `P^2` or faster: about 64 (55 to 63 measured on a
+/// paraboloid and a cone without normal oscillation).
+const FASTEST_FALL: f64 = 128.0;
+
+/// Where the walked springs end, and the tail beyond ([`Tail`]): from the
+/// fewest steps a period ([`FIRST_TAIL_STEPS`], doubled each try) whose
+/// tail's model meets `accuracy`, else from [`SPRING_STEPS`] as it is
+/// (at once where the tries' errors, falling as measured or at most by
+/// [`FASTEST_FALL`] a doubling, would not meet it there). The model is good
+/// where the springs follow the rigid body closely (the tail's own measure
+/// of it); a try costs a few springs at its start, and the springs it
+/// spares cost the most of all.
+fn tail_of(
+    c: &dyn Contact,
+    spring: &dyn Fn(f64) -> Spring,
+    (amp, zmax): (f64, f64),
+    (precision, accuracy): (Precision, f64),
+) -> Result<(f64, Tail)> {
+    let (mut steps, mut before) = (FIRST_TAIL_STEPS, None::<f64>);
+    loop {
+        let last = steps >= SPRING_STEPS;
+        let zcap = walked_within(spring, zmax, steps);
+        let tail = Tail::of(c, spring, amp, (zcap, zmax), (precision, accuracy, last))?;
+        match tail {
+            Some(tail) if last || tail.error <= accuracy => return Ok((zcap, tail)),
+            Some(tail) => {
+                let fall = before.map_or(FASTEST_FALL, |b| b / tail.error).min(FASTEST_FALL);
+                let within = tail.error <= accuracy * fall.powf((SPRING_STEPS / steps).log2());
+                steps = if fall > 1.0 && within { 2.0 * steps } else { SPRING_STEPS };
+                before = Some(tail.error);
+            }
+            None => steps *= 2.0,
+        }
+        steps = steps.min(SPRING_STEPS);
+    }
+}
+
 /// Whether a spring of a curved contact is walked: its bound's peak is at
-/// least [`MIN_PEAK`] and its period takes at most [`SPRING_STEPS`] Taylor
-/// steps (both fail towards the contact's edge).
-fn walked(sp: &Spring) -> bool {
-    sp.bound.level + sp.bound.amp >= MIN_PEAK && period_steps(sp) <= SPRING_STEPS
+/// least [`MIN_PEAK`] and its period takes at most `steps` Taylor steps
+/// (both fail towards the contact's edge).
+fn walked(sp: &Spring, steps: f64) -> bool {
+    sp.bound.level + sp.bound.amp >= MIN_PEAK && period_steps(sp) <= steps
 }
 
 /// The largest `z` up to `zmax` whose spring takes at most [`SPRING_STEPS`]
 /// Taylor steps a period and whose bound's peak is at least [`MIN_PEAK`]
 /// (both fall towards the edge): `zmax` itself, or the bisection's.
 pub(super) fn walked_up_to(spring: &dyn Fn(f64) -> Spring, zmax: f64) -> f64 {
+    walked_within(spring, zmax, SPRING_STEPS)
+}
+
+/// [`walked_up_to`] with at most `steps` Taylor steps a period.
+fn walked_within(spring: &dyn Fn(f64) -> Spring, zmax: f64, steps: f64) -> f64 {
+    let walked = |z: f64| walked(&spring(z), steps);
     let edge = zmax * (1.0 - 1e-12);
-    if walked(&spring(edge)) {
+    if walked(edge) {
         return zmax;
     }
     let (mut lo, mut hi) = (0.0, edge);
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);
-        if walked(&spring(mid)) {
+        if walked(mid) {
             lo = mid;
         } else {
             hi = mid;
@@ -264,6 +325,26 @@ pub(super) fn walked_up_to(spring: &dyn Fn(f64) -> Spring, zmax: f64) -> f64 {
 mod tests {
     use super::*;
     use crate::plane::PlaneEvent;
+
+    /// The tail starts at the fewest steps a period whose model meets the
+    /// accuracy, and is within it there: a paraboloid at `vhat` 0.3, `W` 1
+    /// (its tail's error 7e-12 from 312 steps, falling about 60x a doubling)
+    /// from 2500 steps; at `vhat` 3, `W` 100 (4e-6 from 312 steps, which 4
+    /// doublings could not bring to the accuracy) from [`SPRING_STEPS`]
+    /// after one try.
+    #[test]
+    fn the_tail_starts_where_its_model_meets_the_accuracy() {
+        let shape = crate::Shape::parse("parabolic").unwrap();
+        let c = shape.contact();
+        let zmax = c.reach(0.0).unwrap();
+        for ((vhat, w), steps) in [((0.3, 1.0), 2500.0), ((3.0, 100.0), SPRING_STEPS)] {
+            let d = Drive::sliding(vhat, 0.0, 0.0, w, 0.0);
+            let spring = |z: f64| Spring::new(d, Bound::new(1.0 - c.equivalent_profile(z), 0.0));
+            let (zcap, tail) = tail_of(c, &spring, (0.0, zmax), (Precision::Means, 5e-16)).unwrap();
+            assert_eq!(zcap, walked_within(&spring, zmax, steps), "{vhat}");
+            assert!(steps == SPRING_STEPS || tail.error <= 5e-16, "{vhat} {:e}", tail.error);
+        }
+    }
 
     /// A spring's events as a cycle: the same phases with `tau = 0` in a
     /// different one are one sequence, a phase shorter than [`SHORT`] is
