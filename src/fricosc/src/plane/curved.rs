@@ -329,18 +329,27 @@ mod tests {
     /// The tail starts at the fewest steps a period whose model meets the
     /// accuracy, and is within it there: a paraboloid at `vhat` 0.3, `W` 1
     /// (its tail's error 7e-12 from 312 steps, falling about 60x a doubling)
-    /// from 2500 steps; at `vhat` 3, `W` 100 (4e-6 from 312 steps, which 4
-    /// doublings could not bring to the accuracy) from [`SPRING_STEPS`]
-    /// after one try.
+    /// from 2500 steps, after 4 tries; at `vhat` 3, `W` 100 (from 312 steps
+    /// no spring at `4 P0` inside the contact; 4e-6 from 625, which 3
+    /// doublings could not bring to the accuracy) from [`SPRING_STEPS`] after
+    /// two tries. A try is counted by the springs it makes: the search for
+    /// its start (61) and its quadrature (32) make 93, the springs it walks
+    /// a few more.
     #[test]
     fn the_tail_starts_where_its_model_meets_the_accuracy() {
         let shape = crate::Shape::parse("parabolic").unwrap();
         let c = shape.contact();
         let zmax = c.reach(0.0).unwrap();
-        for ((vhat, w), steps) in [((0.3, 1.0), 2500.0), ((3.0, 100.0), SPRING_STEPS)] {
+        for ((vhat, w), steps, tries) in [((0.3, 1.0), 2500.0, 4), ((3.0, 100.0), SPRING_STEPS, 3)] {
             let d = Drive::sliding(vhat, 0.0, 0.0, w, 0.0);
-            let spring = |z: f64| Spring::new(d, Bound::new(1.0 - c.equivalent_profile(z), 0.0));
+            let made = std::sync::atomic::AtomicUsize::new(0);
+            let spring = |z: f64| {
+                made.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                Spring::new(d, Bound::new(1.0 - c.equivalent_profile(z), 0.0))
+            };
             let (zcap, tail) = tail_of(c, &spring, (0.0, zmax), (Precision::Means, 5e-16)).unwrap();
+            let made = made.load(std::sync::atomic::Ordering::Relaxed);
+            assert!(made >= 93 * tries && made < 93 * (tries + 1), "{vhat}: {made}");
             assert_eq!(zcap, walked_within(&spring, zmax, steps), "{vhat}");
             assert!(steps == SPRING_STEPS || tail.error <= 5e-16, "{vhat} {:e}", tail.error);
         }
