@@ -83,7 +83,7 @@ proptest! {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(12))]
 
-    /// The same mirror for curved contacts (every built-in family drawn) at
+    /// The same mirror for curved contacts (four families drawn) at
     /// a tolerance of 1e-8: their bands, nodes and tails are found for each
     /// answer anew, and agree within the estimates.
     #[test]
