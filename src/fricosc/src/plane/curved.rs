@@ -355,6 +355,50 @@ mod tests {
         }
     }
 
+    /// The walked springs end where a spring first takes more than the
+    /// steps allowed: a flat punch as a curved contact (every bound's peak
+    /// 1.5) walks every spring up to `z_max` itself, exactly, where the
+    /// steps are not limited; a paraboloid at [`SPRING_STEPS`] stops short of
+    /// its edge, walking the spring there and not one `1e-6` beyond.
+    /// (cargo-mutants: `walked_up_to`'s constants and the edge just inside
+    /// `z_max` lived under the plane's unit tests.)
+    #[test]
+    fn the_walked_springs_end_where_their_steps_exceed_the_limit() {
+        let shape = crate::Shape::parse("parabolic").unwrap();
+        let (c, d, amp) = (shape.contact(), Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7), 0.5);
+        let zmax = c.reach(amp).unwrap();
+        let spring = |z: f64| Spring::new(d, Bound::new(1.0 - c.equivalent_profile(z), amp));
+        let flat = crate::Shape::parse("flat").unwrap();
+        let (f, fmax) = (flat.contact(), flat.contact().reach(amp).unwrap());
+        let punch = |z: f64| Spring::new(d, Bound::new(1.0 - f.equivalent_profile(z), amp));
+        assert_eq!(walked_within(&punch, fmax, f64::INFINITY), fmax);
+        let zcap = walked_up_to(&spring, zmax);
+        assert!(zcap > 0.9 * zmax && zcap < zmax, "{zcap} {zmax}");
+        assert!(walked(&spring(zcap), SPRING_STEPS) && !walked(&spring(zcap + 1e-6), SPRING_STEPS), "{zcap}");
+    }
+
+    /// A node's start from those recorded: on the line between its two
+    /// neighbours (`t = 1/4` of the way from `z = 1` to `z = 3`), the
+    /// recorded one at a `z` recorded (not `0/0` from a neighbour on
+    /// either side at the same `z`), the nearest beyond the ends, none
+    /// from none; and from a band's own starts only. The search converges
+    /// from any start, so only this test sees them (cargo-mutants: the
+    /// quotient's and difference's mutants, `>=` for the upper neighbour
+    /// and the band's `||` lived).
+    #[test]
+    fn a_start_is_on_the_line_between_its_neighbours() {
+        let starts = [(3.0, [3.0, 5.0]), (1.0, [1.0, 1.0])];
+        assert_eq!(nearest(&starts, 1.5), Some([1.5, 2.0]));
+        assert_eq!(nearest(&starts, 1.0), Some([1.0, 1.0]));
+        assert_eq!(nearest(&starts, 3.0), Some([3.0, 5.0]));
+        assert_eq!(nearest(&starts, 0.5), Some([1.0, 1.0]));
+        assert_eq!(nearest(&starts, 4.0), Some([3.0, 5.0]));
+        assert_eq!(nearest(&[], 1.0), None);
+        let springs = Springs::default();
+        springs.learned().starts.extend([(0.5, [1.0, 0.0]), (1.5, [2.0, 0.0]), (2.0, [3.0, 0.0]), (2.5, [4.0, 0.0])]);
+        assert_eq!(springs.starts_within(1.0, 2.0), vec![(1.5, [2.0, 0.0]), (2.0, [3.0, 0.0])]);
+    }
+
     /// A spring's events as a cycle: the same phases with `tau = 0` in a
     /// different one are one sequence, a phase shorter than [`SHORT`] is
     /// not named, and another order is another sequence.
