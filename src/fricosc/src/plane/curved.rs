@@ -364,14 +364,14 @@ mod tests {
     /// `z_max` lived under the plane's unit tests.)
     #[test]
     fn the_walked_springs_end_where_their_steps_exceed_the_limit() {
-        let shape = crate::Shape::parse("parabolic").unwrap();
-        let (c, d, amp) = (shape.contact(), Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7), 0.5);
-        let zmax = c.reach(amp).unwrap();
-        let spring = |z: f64| Spring::new(d, Bound::new(1.0 - c.equivalent_profile(z), amp));
-        let flat = crate::Shape::parse("flat").unwrap();
-        let (f, fmax) = (flat.contact(), flat.contact().reach(amp).unwrap());
+        let (d, amp) = (Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7), 0.5);
+        let [flat, paraboloid] = ["flat", "parabolic"].map(|s| crate::Shape::parse(s).unwrap());
+        let (f, c) = (flat.contact(), paraboloid.contact());
         let punch = |z: f64| Spring::new(d, Bound::new(1.0 - f.equivalent_profile(z), amp));
+        let fmax = f.reach(amp).unwrap();
         assert_eq!(walked_within(&punch, fmax, f64::INFINITY), fmax);
+        let spring = |z: f64| Spring::new(d, Bound::new(1.0 - c.equivalent_profile(z), amp));
+        let zmax = c.reach(amp).unwrap();
         let zcap = walked_up_to(&spring, zmax);
         assert!(zcap > 0.9 * zmax && zcap < zmax, "{zcap} {zmax}");
         assert!(walked(&spring(zcap), SPRING_STEPS) && !walked(&spring(zcap + 1e-6), SPRING_STEPS), "{zcap}");
