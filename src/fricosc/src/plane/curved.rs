@@ -42,7 +42,7 @@
 use super::drive::{Bound, Drive};
 use super::spring::{Spring, Start};
 use super::tail::Tail;
-use super::{orbit_to, period_steps, PlaneEvaluation, Precision};
+use super::{checked, orbit_to, period_steps, PlaneEvaluation, Precision};
 use crate::contact::Contact;
 use crate::error::{Error, Result};
 use crate::integrate::{bands, cosine_pass_parallel, Ends, Ladder, Sums};
@@ -234,9 +234,7 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     let (mu, tr) = ((total.value[0] + tail.force[0]) / normal, (total.value[1] + tail.force[1]) / normal);
     let rounding = SPRING_ROUNDING * f64::EPSILON * total.magnitude / normal;
     let error_estimate = (truncation + tail.error + total.value[4]) / normal + rounding;
-    if !(tr.is_finite() && tr.abs() <= 1.0 + error_estimate) {
-        return Err(Error::Internal { what: format!("transverse_ratio = {tr:?} in the plane ({})", c.name()) });
-    }
+    checked(tr, error_estimate, &c.name())?;
     Ok(PlaneEvaluation {
         ratio: crate::Ratio::signed(mu, (total.value[2] + tail.deficit) / normal, error_estimate, &c.name())?,
         transverse_ratio: tr,

@@ -560,6 +560,19 @@ fn events(w: &Walk) -> Vec<PlaneEvent> {
 /// The evaluation of the period walked by `w`, whose start is within
 /// `start_error` of the orbit's: so is its force all period (the stop
 /// operator does not expand a difference of starts).
+/// An answer's transverse ratio `tr` and estimate, checked: the estimate
+/// at least 0 (a sum of errors' sizes), the ratio finite and within it of
+/// `[-1, 1]` (`|<f_y>| <= <B>`). Either off is a bug, never an answer.
+pub(crate) fn checked(tr: f64, error_estimate: f64, context: &str) -> Result<()> {
+    if error_estimate.is_nan() || error_estimate < 0.0 {
+        return Err(Error::Internal { what: format!("error_estimate = {error_estimate:?} in the plane ({context})") });
+    }
+    if !(tr.is_finite() && tr.abs() <= 1.0 + error_estimate) {
+        return Err(Error::Internal { what: format!("transverse_ratio = {tr:?} in the plane ({context})") });
+    }
+    Ok(())
+}
+
 fn answer(w: &Walk, total: f64, multiplier: f64, start_error: f64, periods: usize) -> Result<PlaneEvaluation> {
     let (mu, tr) = (w.force[0] / total, w.force[1] / total);
     // Each step's sum rounds at about an ulp of the running total, at random;
@@ -570,9 +583,7 @@ fn answer(w: &Walk, total: f64, multiplier: f64, start_error: f64, periods: usiz
     let rounding = rounding(w, scale);
     let consistency = if w.bound > 0.0 { (w.bound - total).abs() / total * scale } else { 0.0 };
     let error_estimate = (w.truncation + TAU * start_error) / total + rounding + consistency;
-    if !(tr.is_finite() && tr.abs() <= 1.0 + error_estimate) {
-        return Err(Error::Internal { what: format!("transverse_ratio = {tr:?} in the plane") });
-    }
+    checked(tr, error_estimate, "one spring")?;
     Ok(PlaneEvaluation {
         ratio: crate::Ratio::signed(mu, w.deficit / total, error_estimate, "the plane")?,
         transverse_ratio: tr,

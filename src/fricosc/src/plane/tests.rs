@@ -2,7 +2,7 @@
 use super::close::curvatures;
 use super::drive::{Bound, Drive};
 use super::spring::{Spring, Start};
-use super::{orbit, orbit_to, relaxed, PlaneEvaluation, Precision, Seen};
+use super::{checked, orbit, orbit_to, relaxed, PlaneEvaluation, Precision, Seen};
 use crate::{Conditions, Shape};
 use std::f64::consts::TAU;
 
@@ -452,4 +452,24 @@ fn the_curvatures_are_the_departures_from_linear_over_the_distance_squared() {
     let end = [fb[0] + r[0] - jd[0], fb[1] + r[1] - jd[1] - 3.0 * dd];
     let [k, c] = curvatures(&w, &g, f, &Seen { f: fb, force, end });
     assert!((k - 7.0).abs() < 1e-12 && (c - 3.0).abs() < 1e-12, "K {k}, C {c}");
+}
+
+/// An answer's check names a negative or NaN estimate and a transverse
+/// ratio beyond `[-1, 1]` by more than the estimate (or not finite); on
+/// `1 + estimate` exactly, and with an infinite estimate, it passes.
+#[test]
+fn an_answer_is_checked_for_its_estimate_and_ratio() {
+    let fails = |tr: f64, est: f64, what: &str| {
+        let e = checked(tr, est, "a test").unwrap_err().to_string();
+        assert!(e.contains(what) && e.contains("a test"), "{tr} {est}: {e}");
+    };
+    fails(0.5, -1e-300, "error_estimate");
+    fails(0.5, f64::NAN, "error_estimate");
+    fails(1.0 + 2e-15, 1e-15, "transverse_ratio");
+    fails(-1.0 - 2e-15, 1e-15, "transverse_ratio");
+    fails(f64::NAN, 0.0, "transverse_ratio");
+    fails(f64::INFINITY, f64::INFINITY, "transverse_ratio");
+    for (tr, est) in [(0.5, 0.0), (1.0 + 0.5, 0.5), (-1.0 - 0.5, 0.5), (0.0, f64::INFINITY)] {
+        assert!(checked(tr, est, "a test").is_ok(), "{tr} {est}");
+    }
 }
