@@ -557,9 +557,6 @@ fn events(w: &Walk) -> Vec<PlaneEvent> {
     w.events.iter().map(|&(tau, kind)| PlaneEvent { kind, tau: tau.rem_euclid(TAU) }).collect()
 }
 
-/// The evaluation of the period walked by `w`, whose start is within
-/// `start_error` of the orbit's: so is its force all period (the stop
-/// operator does not expand a difference of starts).
 /// An answer's transverse ratio `tr` and estimate, checked: the estimate
 /// at least 0 (a sum of errors' sizes), the ratio finite and within it of
 /// `[-1, 1]` (`|<f_y>| <= <B>`). Either off is a bug, never an answer.
@@ -573,6 +570,9 @@ pub(crate) fn checked(tr: f64, error_estimate: f64, context: &str) -> Result<()>
     Ok(())
 }
 
+/// The evaluation of the period walked by `w`, whose start is within
+/// `start_error` of the orbit's: so is its force all period (the stop
+/// operator does not expand a difference of starts).
 fn answer(w: &Walk, total: f64, multiplier: f64, start_error: f64, periods: usize) -> Result<PlaneEvaluation> {
     let (mu, tr) = (w.force[0] / total, w.force[1] / total);
     // Each step's sum rounds at about an ulp of the running total, at random;
