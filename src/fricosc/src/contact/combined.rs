@@ -27,7 +27,7 @@
 
 use crate::conditions::Conditions;
 use crate::error::{check_nonneg, Error, Result};
-use crate::integrate::{cosine_pass, Ladder, Sums};
+use crate::integrate::{bands, cosine_pass, Ladder, Sums};
 use crate::ratio::Ratio;
 use crate::shape::Shape;
 use crate::stop::{solve, Bound, Drive, StopKind, StopSpring};
@@ -288,7 +288,8 @@ fn curved(c: &dyn crate::contact::Contact, o: &Oscillation, tol: f64) -> Result<
         let b = Bound { c: 1.0 - c.equivalent_profile(z), amp: o.amp };
         (solve(b, d), b)
     };
-    let edges = crate::integrate::bands::edges(c, (o.amp, zmax), 0.0, &|z| Ok(signature(&spring(z).0)))?;
+    let search = bands::Search { scan: bands::SCAN, resolution: 0.0 };
+    let edges = bands::edges(c, (o.amp, zmax), search, &|z| Ok(signature(&spring(z).0)))?;
     // The scale of the convergence test; the answer's normal force is the
     // quadrature's own integral of the springs' mean bounds, so that `mu` and
     // the reduction share one normalisation (they add up to 1 to rounding).

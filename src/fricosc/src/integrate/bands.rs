@@ -6,7 +6,8 @@
 //! closed form), where `G` itself is not smooth
 //! ([`crate::contact::Contact::breakpoints`]), and where the sequence changes
 //! (an event appears or disappears: found by bisection, to rounding or to
-//! a width the caller sets, between [`SCAN`] samples of each piece). What a
+//! a width the caller sets, between samples of each piece, [`SCAN`] or as
+//! many as the caller sets, [`Search`]). What a
 //! sequence is, is the caller's. Found edges within [`MERGE`] such widths
 //! of each other are one edge (their middle), and those that near a cut are
 //! the cut: a band that narrow is a sliver between two thresholds that all
@@ -18,8 +19,18 @@
 
 use crate::error::Result;
 
-/// Samples of the phase sequence per piece before bisecting for its changes.
+/// Samples of the phase sequence per piece before bisecting for its changes
+/// (where the caller does not set fewer).
 pub(crate) const SCAN: usize = 32;
+
+/// How a piece is searched for the changes of its sequence: `scan` samples
+/// (equal intervals), each change bisected to `resolution` times `z_max` (or
+/// to rounding, at 0).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Search {
+    pub(crate) scan: usize,
+    pub(crate) resolution: f64,
+}
 
 /// Found edges closer than this many resolutions are one (module docs).
 const MERGE: f64 = 4.0;
@@ -29,16 +40,18 @@ const MERGE: f64 = 4.0;
 const BISECTION_BUDGET: usize = 16 * 64;
 
 /// The bands' edges over `[0, zmax]` (module docs), `sequence(z)` the phase
-/// sequence of the spring at `z`, each change found to rounding or to
-/// `resolution` times `zmax` (a sequence known only that well: a band's edge
-/// that far off leaves the quadrature a sliver of the neighbouring band's
-/// means, whose difference vanishes at the edge).
+/// sequence of the spring at `z`, each change found between `search.scan`
+/// samples to rounding or to `search.resolution` times `zmax` (a sequence
+/// known only that well, or a tolerance that allows it: a band's edge that
+/// far off leaves the quadrature a sliver of the neighbouring band's means,
+/// whose difference vanishes at the edge).
 pub(crate) fn edges<S: PartialEq + Send>(
     c: &dyn crate::contact::Contact,
     (amp, zmax): (f64, f64),
-    resolution: f64,
+    search: Search,
     sequence: &(dyn Fn(f64) -> Result<S> + Sync),
 ) -> Result<Vec<f64>> {
+    let (scan, resolution) = (search.scan.max(1), search.resolution);
     let mut cuts = vec![0.0, zmax];
     if amp > 0.0 && amp < 1.0 {
         cuts.push(c.level(1.0 - amp));
@@ -50,12 +63,12 @@ pub(crate) fn edges<S: PartialEq + Send>(
     let mut found = vec![];
     for w in cuts.windows(2) {
         let (a, b) = (w[0], w[1]);
-        let zs: Vec<f64> = (0..=SCAN).map(|k| a + (b - a) * k as f64 / SCAN as f64).collect();
+        let zs: Vec<f64> = (0..=scan).map(|k| a + (b - a) * k as f64 / scan as f64).collect();
         // Just inside the ends: the ends themselves may sit on a threshold.
         let inside = |z: f64| z.clamp(a + (b - a) * 1e-12, b - (b - a) * 1e-12);
         let seqs = crate::numerics::par::map(&zs, |&z| sequence(inside(z))).into_iter().collect::<Result<Vec<S>>>()?;
         let (mut budget, before) = (BISECTION_BUDGET, found.len());
-        for k in 0..SCAN {
+        for k in 0..scan {
             let (lo, hi) = ((inside(zs[k]), &seqs[k]), (inside(zs[k + 1]), &seqs[k + 1]));
             changes(sequence, lo, hi, &mut found, (&mut budget, resolution * zmax))?;
         }
@@ -121,7 +134,33 @@ fn changes<S: PartialEq>(
 
 #[cfg(test)]
 mod tests {
-    use super::merged;
+    use super::{edges, merged, Search};
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    /// A search takes its samples, then bisects a change to its resolution:
+    /// one change at `z = 0.3` of `[0, 1]` costs `scan + 1` samples and
+    /// `ceil(log2(1/(scan resolution)))` bisections, and is found within half
+    /// the resolution (8 samples to `1e-3`: 9 + 7 springs; 32 to `1e-7`: 33 +
+    /// 19; to rounding, 33 + 47).
+    #[test]
+    fn a_search_samples_then_bisects_to_its_resolution() {
+        let shape = crate::Shape::parse("parabolic").unwrap();
+        let calls = AtomicUsize::new(0);
+        let sequence = |z: f64| {
+            calls.fetch_add(1, Ordering::Relaxed);
+            Ok(z > 0.3)
+        };
+        for (scan, resolution, springs) in [(8, 1e-3, 16), (32, 1e-7, 52)] {
+            calls.store(0, Ordering::Relaxed);
+            let e = edges(shape.contact(), (0.0, 1.0), Search { scan, resolution }, &sequence).unwrap();
+            assert_eq!(calls.load(Ordering::Relaxed), springs, "{scan}");
+            assert_eq!(e.len(), 3, "{e:?}");
+            assert!((e[1] - 0.3).abs() <= 0.5 * resolution, "{e:?}");
+        }
+        calls.store(0, Ordering::Relaxed);
+        let e = edges(shape.contact(), (0.0, 1.0), Search { scan: 32, resolution: 0.0 }, &sequence).unwrap();
+        assert!((e[1] - 0.3).abs() <= 1e-16 && calls.load(Ordering::Relaxed) == 33 + 47, "{e:?}");
+    }
 
     /// Two found edges `1e-7` apart are one at their middle, one `2e-7`
     /// from a cut is the cut, one farther from both stays; without a width

@@ -67,14 +67,15 @@ const MAX_ORDER: usize = 1024;
 /// ([`Precision::Coarse`]: each spring's means within about `1e-9` of its
 /// `<B>`, and estimated).
 const COARSE_TOL: f64 = 1e-7;
-/// How closely (relative to `z_max`) a band's edge is found. A phase that
-/// appears at the edge lasts like the square root of the distance from it
-/// (a touch that becomes a crossing) and changes the means like its cube,
-/// so an edge off by `d` leaves the integral about `d^2.5` off: `3e-18`
-/// here, `2e-17` for an edge merged with a neighbour ([`bands`]: up to two
-/// resolutions off), below the default tolerance's share of a band; the
-/// nodes nearest an edge are farther from it (`6e-5` of a band of order 64).
-const EDGE_RESOLUTION: f64 = 1e-7;
+/// The finest resolution (relative to `z_max`) a band's edge is found to
+/// ([`edge_search`]).
+const FINEST_EDGE: f64 = 1e-7;
+/// The share of the tolerance an edge off by its resolution may cost
+/// ([`edge_search`]).
+const EDGE_SHARE: f64 = 0.1;
+/// Samples of the band search per piece at a tolerance of
+/// [`crate::integrate::LOOSE_TOL`] or looser ([`edge_search`]).
+const LOOSE_SCAN: usize = 8;
 /// The share of the tolerance (times the contact's mean normal force) the
 /// tail's forces may be off ([`Tail::of`]).
 const TAIL_SHARE: f64 = 0.1;
@@ -186,10 +187,10 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
     let (zcap, tail) = tail_of(c, &spring, (amp, zmax), (precision, TAIL_SHARE * tol * scale))?;
     let springs = Springs::default();
     // A sequence of events needs no exact means: its thresholds move by
-    // about the coarse walks' error, far below [`EDGE_RESOLUTION`].
+    // about the coarse walks' error, far below [`FINEST_EDGE`].
     let sequence =
         |z: f64| -> Result<Vec<EventKind>> { Ok(sequence_of(&orbit_to(&spring(z), Precision::Coarse, None)?.0)) };
-    let edges = bands::edges(c, (amp, zcap), EDGE_RESOLUTION, &sequence)?;
+    let edges = bands::edges(c, (amp, zcap), edge_search(tol), &sequence)?;
     let node = |z: f64, from: Option<[f64; 2]>| {
         let sp = spring(z);
         let b = sp.bound.period_integral() / TAU;
@@ -243,6 +244,29 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
         events: vec![],
         periods: learned.periods,
     })
+}
+
+/// How the band search looks for the bands' edges at the tolerance `tol`:
+/// each edge to `(EDGE_SHARE tol)^0.4` of `z_max`, at least [`FINEST_EDGE`],
+/// and between [`LOOSE_SCAN`] samples a piece from
+/// [`crate::integrate::LOOSE_TOL`] on ([`bands::SCAN`] below).
+///
+/// A phase that appears at an edge lasts like the square root of the
+/// distance from it (a touch that becomes a crossing) and changes the means
+/// like its cube, so an edge off by `d` leaves the integral at most about
+/// `d^2.5` off: the resolution keeps that within [`EDGE_SHARE`] of the
+/// tolerance (`2e-17` at [`FINEST_EDGE`] for an edge merged with a
+/// neighbour, [`bands`]: up to two resolutions off). A band that holds an
+/// edge unfound (a missed or merged one) holds a kink, which slows its
+/// ladder and shows in its last difference. Measured on the paraboloid
+/// (`vhat` 0.3, amp 0.5, `W` 1.2, `psi` 0.7, default tolerance): edges
+/// found to `1e-5`, `1e-4`, `1e-2` of `z_max` move the answer by `1e-16`,
+/// `2e-15`, `6e-15` within estimates of `1.3e-14` to `2.4e-14`; with no
+/// edge found at all, `2e-11` within `1.2e-10`. The search's springs, a
+/// coarse orbit each, are most of a loose tolerance's work.
+fn edge_search(tol: f64) -> bands::Search {
+    let scan = if tol >= crate::integrate::LOOSE_TOL { LOOSE_SCAN } else { bands::SCAN };
+    bands::Search { scan, resolution: (EDGE_SHARE * tol).powf(0.4).max(FINEST_EDGE) }
 }
 
 /// The Taylor steps a period of the first try of [`tail_of`].
