@@ -162,6 +162,22 @@ mod tests {
         assert!((e[1] - 0.3).abs() <= 1e-16 && calls.load(Ordering::Relaxed) == 33 + 47, "{e:?}");
     }
 
+    /// A sequence that changes from one double to the next (ties of rounding, not
+    /// regimes) spends the piece's budget of bisections, [`BISECTION_BUDGET`],
+    /// and leaves the piece one band.
+    #[test]
+    fn changes_everywhere_are_one_band() {
+        let shape = crate::Shape::parse("parabolic").unwrap();
+        let calls = AtomicUsize::new(0);
+        let sequence = |z: f64| {
+            calls.fetch_add(1, Ordering::Relaxed);
+            Ok(z.to_bits() % 3)
+        };
+        let e = edges(shape.contact(), (0.0, 1.0), Search { scan: 32, resolution: 0.0 }, &sequence).unwrap();
+        assert_eq!(e, vec![0.0, 1.0]);
+        assert_eq!(calls.load(Ordering::Relaxed), 33 + super::BISECTION_BUDGET);
+    }
+
     /// Two found edges `1e-7` apart are one at their middle, one `2e-7`
     /// from a cut is the cut, one farther from both stays; without a width
     /// every edge stays (as `contact::combined` asks).
