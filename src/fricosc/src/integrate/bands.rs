@@ -162,6 +162,30 @@ mod tests {
         assert!((e[1] - 0.3).abs() <= 1e-16 && calls.load(Ordering::Relaxed) == 33 + 47, "{e:?}");
     }
 
+    /// The cuts: the ends, the level where springs start to lose contact
+    /// (`0 < amp < 1` only, and below `z_max`), the profile's breakpoints
+    /// inside; a sequence that never changes adds no edge.
+    #[test]
+    fn the_cuts_are_the_ends_the_loss_and_the_breakpoints() {
+        let shape = crate::Shape::parse("flat-tip:0.2").unwrap();
+        let c = shape.contact();
+        let same = |_: f64| Ok(0u8);
+        let search = Search { scan: 4, resolution: 0.0 };
+        let flat = c.breakpoints()[0];
+        let loss = c.level(0.5);
+        assert!(flat > 0.0 && loss > flat, "{flat} {loss}");
+        for (amp, zmax, mut want) in [
+            (0.5, 2.0 * loss, vec![0.0, flat, loss, 2.0 * loss]),
+            (0.5, 0.5 * (flat + loss), vec![0.0, flat, 0.5 * (flat + loss)]),
+            (0.0, 2.0 * loss, vec![0.0, flat, 2.0 * loss]),
+            (1.0, 2.0 * loss, vec![0.0, flat, 2.0 * loss]),
+            (0.5, 0.5 * flat, vec![0.0, 0.5 * flat]),
+        ] {
+            want.sort_by(f64::total_cmp);
+            assert_eq!(edges(c, (amp, zmax), search, &same).unwrap(), want, "{amp} {zmax}");
+        }
+    }
+
     /// A sequence that changes from one double to the next (ties of rounding, not
     /// regimes) spends the piece's budget of bisections, [`BISECTION_BUDGET`],
     /// and leaves the piece one band.
