@@ -162,6 +162,35 @@ mod tests {
         assert!((e[1] - 0.3).abs() <= 1e-16 && calls.load(Ordering::Relaxed) == 33 + 47, "{e:?}");
     }
 
+    /// A piece away from 0 on a contact of `z_max` 2 (the paraboloid at amp
+    /// 0.5: pieces `[0, sqrt(1/2)]` and `[sqrt(1/2), 2]`, 8 samples each): a
+    /// change at 1.3 bisected to `1e-3` of `z_max` (7 bisections) and found
+    /// within `1e-3`; a change exactly at the cut is the cut (no bisection: the
+    /// samples sit just inside their piece); two changes `3e-3` apart, within
+    /// 4 resolutions, are one edge at their middle.
+    #[test]
+    fn a_change_is_found_in_its_piece_and_merged_with_its_neighbours() {
+        let shape = crate::Shape::parse("parabolic").unwrap();
+        let c = shape.contact();
+        let loss = c.level(0.5);
+        assert!((loss - 0.5f64.sqrt()).abs() < 1e-15, "{loss}");
+        let calls = AtomicUsize::new(0);
+        let search = Search { scan: 8, resolution: 1e-3 };
+        let counted = |f: &(dyn Fn(f64) -> u8 + Sync)| {
+            calls.store(0, Ordering::Relaxed);
+            let seq = |z: f64| {
+                calls.fetch_add(1, Ordering::Relaxed);
+                Ok(f(z))
+            };
+            (edges(c, (0.5, 2.0), search, &seq).unwrap(), calls.load(Ordering::Relaxed))
+        };
+        let (e, n) = counted(&|z| u8::from(z > 1.3));
+        assert!(n == 18 + 7 && e.len() == 4 && e[1] == loss && (e[2] - 1.3).abs() <= 1e-3, "{n} {e:?}");
+        assert_eq!(counted(&|z| u8::from(z >= loss)), (vec![0.0, loss, 2.0], 18));
+        let (e, _) = counted(&|z| u8::from(z > 1.3) + u8::from(z > 1.303));
+        assert!(e.len() == 4 && (e[2] - 1.3015).abs() <= 1e-3, "{e:?}");
+    }
+
     /// The cuts: the ends, the level where springs start to lose contact
     /// (`0 < amp < 1` only, and below `z_max`), the profile's breakpoints
     /// inside; a sequence that never changes adds no edge.
