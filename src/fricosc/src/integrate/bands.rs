@@ -187,6 +187,7 @@ mod tests {
         let (e, n) = counted(&|z| u8::from(z > 1.3));
         assert!(n == 18 + 7 && e.len() == 4 && e[1] == loss && (e[2] - 1.3).abs() <= 1e-3, "{n} {e:?}");
         assert_eq!(counted(&|z| u8::from(z >= loss)), (vec![0.0, loss, 2.0], 18));
+        assert_eq!(counted(&|z| u8::from(z > loss)), (vec![0.0, loss, 2.0], 18));
         let (e, _) = counted(&|z| u8::from(z > 1.3) + u8::from(z > 1.303));
         assert!(e.len() == 4 && (e[2] - 1.3015).abs() <= 1e-3, "{e:?}");
     }
