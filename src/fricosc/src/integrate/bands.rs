@@ -217,7 +217,7 @@ mod tests {
     }
 
     /// A sequence that changes from one double to the next (ties of rounding, not
-    /// regimes) spends the piece's budget of bisections, [`BISECTION_BUDGET`],
+    /// regimes) spends the piece's budget of bisections, [`BISECTION_BUDGET`] (1024),
     /// and leaves the piece one band.
     #[test]
     fn changes_everywhere_are_one_band() {
@@ -229,7 +229,7 @@ mod tests {
         };
         let e = edges(shape.contact(), (0.0, 1.0), Search { scan: 32, resolution: 0.0 }, &sequence).unwrap();
         assert_eq!(e, vec![0.0, 1.0]);
-        assert_eq!(calls.load(Ordering::Relaxed), 33 + super::BISECTION_BUDGET);
+        assert_eq!(calls.load(Ordering::Relaxed), 33 + 16 * 64);
     }
 
     /// Two found edges `1e-7` apart are one at their middle, one `2e-7`
