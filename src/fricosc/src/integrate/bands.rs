@@ -137,6 +137,19 @@ mod tests {
     use super::{edges, merged, Search};
     use std::sync::atomic::{AtomicUsize, Ordering};
 
+    /// The edges of the paraboloid at `amp` up to `zmax` by `search` for the
+    /// sequence `f`, and the springs (sequences) the search asked for.
+    fn counted(amp: f64, zmax: f64, search: Search, f: &(dyn Fn(f64) -> u64 + Sync)) -> (Vec<f64>, usize) {
+        let shape = crate::Shape::parse("parabolic").unwrap();
+        let calls = AtomicUsize::new(0);
+        let sequence = |z: f64| {
+            calls.fetch_add(1, Ordering::Relaxed);
+            Ok(f(z))
+        };
+        let e = edges(shape.contact(), (amp, zmax), search, &sequence).unwrap();
+        (e, calls.load(Ordering::Relaxed))
+    }
+
     /// A search takes its samples, then bisects a change to its resolution:
     /// one change at `z = 0.3` of `[0, 1]` costs `scan + 1` samples and
     /// `ceil(log2(1/(scan resolution)))` bisections, and is found within half
@@ -144,22 +157,13 @@ mod tests {
     /// 19; to rounding, 33 + 47).
     #[test]
     fn a_search_samples_then_bisects_to_its_resolution() {
-        let shape = crate::Shape::parse("parabolic").unwrap();
-        let calls = AtomicUsize::new(0);
-        let sequence = |z: f64| {
-            calls.fetch_add(1, Ordering::Relaxed);
-            Ok(z > 0.3)
-        };
-        for (scan, resolution, springs) in [(8, 1e-3, 16), (32, 1e-7, 52)] {
-            calls.store(0, Ordering::Relaxed);
-            let e = edges(shape.contact(), (0.0, 1.0), Search { scan, resolution }, &sequence).unwrap();
-            assert_eq!(calls.load(Ordering::Relaxed), springs, "{scan}");
+        let step = |z: f64| u64::from(z > 0.3);
+        for (scan, resolution, springs) in [(8, 1e-3, 16), (32, 1e-7, 52), (32, 0.0, 33 + 47)] {
+            let (e, n) = counted(0.0, 1.0, Search { scan, resolution }, &step);
+            assert_eq!(n, springs, "{scan}");
             assert_eq!(e.len(), 3, "{e:?}");
-            assert!((e[1] - 0.3).abs() <= 0.5 * resolution, "{e:?}");
+            assert!((e[1] - 0.3).abs() <= (0.5 * resolution).max(1e-16), "{e:?}");
         }
-        calls.store(0, Ordering::Relaxed);
-        let e = edges(shape.contact(), (0.0, 1.0), Search { scan: 32, resolution: 0.0 }, &sequence).unwrap();
-        assert!((e[1] - 0.3).abs() <= 1e-16 && calls.load(Ordering::Relaxed) == 33 + 47, "{e:?}");
     }
 
     /// A piece away from 0 on a contact of `z_max` 2 (the paraboloid at amp
@@ -170,25 +174,17 @@ mod tests {
     /// 4 resolutions, are one edge at their middle.
     #[test]
     fn a_change_is_found_in_its_piece_and_merged_with_its_neighbours() {
+        let loss = 0.5f64.sqrt();
         let shape = crate::Shape::parse("parabolic").unwrap();
-        let c = shape.contact();
-        let loss = c.level(0.5);
-        assert!((loss - 0.5f64.sqrt()).abs() < 1e-15, "{loss}");
-        let calls = AtomicUsize::new(0);
+        assert!((shape.contact().level(0.5) - loss).abs() < 1e-15);
         let search = Search { scan: 8, resolution: 1e-3 };
-        let counted = |f: &(dyn Fn(f64) -> u8 + Sync)| {
-            calls.store(0, Ordering::Relaxed);
-            let seq = |z: f64| {
-                calls.fetch_add(1, Ordering::Relaxed);
-                Ok(f(z))
-            };
-            (edges(c, (0.5, 2.0), search, &seq).unwrap(), calls.load(Ordering::Relaxed))
-        };
-        let (e, n) = counted(&|z| u8::from(z > 1.3));
-        assert!(n == 18 + 7 && e.len() == 4 && e[1] == loss && (e[2] - 1.3).abs() <= 1e-3, "{n} {e:?}");
-        assert_eq!(counted(&|z| u8::from(z >= loss)), (vec![0.0, loss, 2.0], 18));
-        assert_eq!(counted(&|z| u8::from(z > loss)), (vec![0.0, loss, 2.0], 18));
-        let (e, _) = counted(&|z| u8::from(z > 1.3) + u8::from(z > 1.303));
+        let (e, n) = counted(0.5, 2.0, search, &|z| u64::from(z > 1.3));
+        assert!(n == 18 + 7 && e.len() == 4 && (e[1] - loss).abs() < 1e-15 && (e[2] - 1.3).abs() <= 1e-3, "{n} {e:?}");
+        for at_the_cut in [|z: f64| u64::from(z >= 0.5f64.sqrt()), |z: f64| u64::from(z > 0.5f64.sqrt())] {
+            let (e, n) = counted(0.5, 2.0, search, &at_the_cut);
+            assert!(n == 18 && e.len() == 3 && (e[1] - loss).abs() < 1e-15, "{n} {e:?}");
+        }
+        let (e, _) = counted(0.5, 2.0, search, &|z| u64::from(z > 1.3) + u64::from(z > 1.303));
         assert!(e.len() == 4 && (e[2] - 1.3015).abs() <= 1e-3, "{e:?}");
     }
 
@@ -221,15 +217,9 @@ mod tests {
     /// and leaves the piece one band.
     #[test]
     fn changes_everywhere_are_one_band() {
-        let shape = crate::Shape::parse("parabolic").unwrap();
-        let calls = AtomicUsize::new(0);
-        let sequence = |z: f64| {
-            calls.fetch_add(1, Ordering::Relaxed);
-            Ok(z.to_bits() % 3)
-        };
-        let e = edges(shape.contact(), (0.0, 1.0), Search { scan: 32, resolution: 0.0 }, &sequence).unwrap();
+        let (e, n) = counted(0.0, 1.0, Search { scan: 32, resolution: 0.0 }, &|z| z.to_bits() % 3);
         assert_eq!(e, vec![0.0, 1.0]);
-        assert_eq!(calls.load(Ordering::Relaxed), 33 + 16 * 64);
+        assert_eq!(n, 33 + 16 * 64);
     }
 
     /// Two found edges `1e-7` apart are one at their middle, one `2e-7`
