@@ -255,8 +255,9 @@ pub(crate) fn solve(c: &dyn Contact, d: Drive, amp: f64, tol: f64) -> Result<Pla
 /// distance from it (a touch that becomes a crossing) and changes the means
 /// like its cube, so an edge off by `d` leaves the integral at most about
 /// `d^2.5` off: the resolution keeps that within [`EDGE_SHARE`] of the
-/// tolerance (`2e-17` at [`FINEST_EDGE`] for an edge merged with a
-/// neighbour, [`bands`]: up to two resolutions off). A band that holds an
+/// tolerance for an edge found (half a resolution off at most), and within
+/// 0.6 of it for one merged with a neighbour ([`bands`]: up to two
+/// resolutions off; measured far below, next). A band that holds an
 /// edge unfound (a missed or merged one) holds a kink, which slows its
 /// ladder and shows in its last difference. Measured on the paraboloid
 /// (`vhat` 0.3, amp 0.5, `W` 1.2, `psi` 0.7, default tolerance): edges
