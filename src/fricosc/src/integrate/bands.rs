@@ -24,7 +24,7 @@ use crate::error::Result;
 pub(crate) const SCAN: usize = 32;
 
 /// How a piece is searched for the changes of its sequence: `scan` samples
-/// (equal intervals), each change bisected to `resolution` times `z_max` (or
+/// (equal intervals, at least 1: the callers' constants), each change bisected to `resolution` times `z_max` (or
 /// to rounding, at 0).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Search {
@@ -51,7 +51,7 @@ pub(crate) fn edges<S: PartialEq + Send>(
     search: Search,
     sequence: &(dyn Fn(f64) -> Result<S> + Sync),
 ) -> Result<Vec<f64>> {
-    let (scan, resolution) = (search.scan.max(1), search.resolution);
+    let (scan, resolution) = (search.scan, search.resolution);
     let mut cuts = vec![0.0, zmax];
     if amp > 0.0 && amp < 1.0 {
         cuts.push(c.level(1.0 - amp));
