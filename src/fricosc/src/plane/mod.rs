@@ -269,13 +269,17 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: Option<[f64; 2]>
     // sensitivity ([`SENSE_ABOVE`]) to close the search itself ([`corrected`]).
     let exact = [*sp, sp.sensing()];
     let sensing = usize::from(precision != Precision::Coarse);
-    // From a neighbour's start (a curved contact's node) the search is near at
-    // once: exact walks from the first, two close it ([`corrected`]).
-    let mut cur = if precision == Precision::Means && from.is_some() { &exact[0] } else { &coarse };
+    let mut cur = &coarse;
     let mut f = from.unwrap_or_else(|| rigid_start(sp));
     let mut periods = 1;
     let mut w = cur.walk(Start::Force(0.0, f), TAU)?;
     let (mut leaping, mut seen) = (false, None::<Seen>);
+    // From a neighbour's start (a curved contact's node) the search is near at once: its coarse walk
+    // is the visit before Newton's exact one, which senses and closes ([`corrected`]: the coarse
+    // walk's truncation only enlarges the curvatures it measures; where they refuse, Newton walks on).
+    if precision == Precision::Means && from.is_some() && !cur.is_exact() {
+        seen = Some(Seen { f, force: w.force, end: w.end });
+    }
     while periods < MAX_ORBIT_PERIODS {
         let res = residual(f, &w);
         if !cur.is_exact() {
