@@ -419,16 +419,16 @@ fn a_search_with_no_start_begins_at_the_rigid_bodys_force() {
 }
 
 /// A curved contact's nodes start their searches from their neighbours'
-/// orbits ([`super::curved`]), and walk exactly from there ([`orbit_to`]):
-/// at the bench point the paraboloid's 320 nodes walk 455 periods (208 that
-/// lose contact one each; 112 that keep it, most of them two: the walk from
-/// the neighbours' start and the one that closes the search), where
-/// searches from 0 walk 596.
+/// orbits ([`super::curved`]; [`orbit_to`]): at the bench point the
+/// paraboloid's 320 nodes walk 458 periods (208 that lose contact one each;
+/// 112 that keep it, most of them two: a coarse walk from the neighbours'
+/// start and Newton's exact one that closes the search), where searches
+/// from 0 walk 596.
 #[test]
 fn a_curved_contacts_springs_start_near_their_orbits() {
     let d = Drive::sliding(0.3, 0.0, 0.0, 1.2, 0.7);
     let e = super::curved::solve(Shape::parabolic().contact(), d, 0.5, crate::DEFAULT_TOL).unwrap();
-    assert!((445..=465).contains(&e.periods), "{}", e.periods);
+    assert!((448..=468).contains(&e.periods), "{}", e.periods);
 }
 
 /// The second-order constants that let a walk close a search
