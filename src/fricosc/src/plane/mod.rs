@@ -277,7 +277,7 @@ pub(crate) fn orbit_to(sp: &Spring, precision: Precision, from: Option<[f64; 2]>
     // From a neighbour's start (a curved contact's node) the search is near at once: its coarse walk
     // is the visit before Newton's exact one, which senses and closes ([`corrected`]: the coarse
     // walk's truncation only enlarges the curvatures it measures; where they refuse, Newton walks on).
-    if precision == Precision::Means && from.is_some() && !cur.is_exact() {
+    if precision == Precision::Means && from.is_some() && !coarse.is_exact() {
         seen = Some(Seen { f, force: w.force, end: w.end });
     }
     while periods < MAX_ORBIT_PERIODS {
